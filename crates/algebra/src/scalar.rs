@@ -1,0 +1,135 @@
+//! The scalar traits: every construction in rcagd is generic over them.
+//!
+//! * [`Ring`]: commutative-or-not ring operations (polynomials with quaternion
+//!   coefficients only need this);
+//! * [`Field`]: a commutative field (division by non-zero elements);
+//! * [`Scalar`]: an ordered field that approximates the reals, with conversions
+//!   from exact rationals and to `f64`. Implemented for `f64` (fast, inexact) and
+//!   [`Rational`] (exact). Quadratic extensions implement it as well.
+//!
+//! Operations take their operands by value; exact numbers are cloned where needed.
+//! This keeps the bounds short; the f64 paths that need speed use `f64` directly.
+
+use crate::rational::Rational;
+use core::fmt::Debug;
+use core::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+use num_traits::{One, Zero};
+
+/// A ring with unit. Multiplication need not commute (quaternions).
+pub trait Ring:
+    Clone
+    + Debug
+    + PartialEq
+    + Zero
+    + One
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Neg<Output = Self>
+    + AddAssign
+    + SubAssign
+    + MulAssign
+{
+    /// The image of an integer.
+    fn from_i64(n: i64) -> Self;
+}
+
+/// A commutative field.
+pub trait Field: Ring + Div<Output = Self> + DivAssign {
+    /// The multiplicative inverse, `None` for zero.
+    fn inv(&self) -> Option<Self> {
+        if self.is_zero() {
+            None
+        } else {
+            Some(Self::one() / self.clone())
+        }
+    }
+}
+
+/// An ordered field approximating the real numbers: `f64` or an exact type.
+pub trait Scalar: Field + PartialOrd {
+    /// `true` for exact types: equality is decided exactly and certificates are proofs.
+    const EXACT: bool;
+    /// The (correctly rounded, for `f64`) image of an exact rational.
+    fn from_rational(q: &Rational) -> Self;
+    /// Nearest `f64` (correctly rounded for [`Rational`]).
+    fn to_f64(&self) -> f64;
+    /// Absolute value.
+    fn abs(&self) -> Self {
+        if *self < Self::zero() {
+            -self.clone()
+        } else {
+            self.clone()
+        }
+    }
+    /// The exact rational value, if the element is rational (`f64`s are rational too:
+    /// their exact binary value is returned; NaN and infinities give `None`).
+    fn to_rational(&self) -> Option<Rational>;
+    /// Ratio of two integers.
+    fn from_ratio(p: i64, q: i64) -> Self {
+        Self::from_i64(p) / Self::from_i64(q)
+    }
+}
+
+impl Ring for f64 {
+    fn from_i64(n: i64) -> Self {
+        n as f64
+    }
+}
+impl Field for f64 {}
+impl Scalar for f64 {
+    const EXACT: bool = false;
+    fn from_rational(q: &Rational) -> Self {
+        q.to_f64().value()
+    }
+    fn to_f64(&self) -> f64 {
+        *self
+    }
+    fn abs(&self) -> Self {
+        f64::abs(*self)
+    }
+    fn to_rational(&self) -> Option<Rational> {
+        Rational::try_from(*self).ok()
+    }
+}
+
+impl Ring for Rational {
+    fn from_i64(n: i64) -> Self {
+        Rational::from(n)
+    }
+}
+impl Field for Rational {}
+impl Scalar for Rational {
+    const EXACT: bool = true;
+    fn from_rational(q: &Rational) -> Self {
+        q.clone()
+    }
+    fn to_f64(&self) -> f64 {
+        Rational::to_f64(self).value()
+    }
+    fn to_rational(&self) -> Option<Rational> {
+        Some(self.clone())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rational_to_f64_is_correctly_rounded() {
+        let third = Rational::from_ratio(1, 3);
+        assert_eq!(Scalar::to_f64(&third), 1.0 / 3.0);
+        let tenth = Rational::from_ratio(1, 10);
+        assert_eq!(Scalar::to_f64(&tenth), 0.1);
+    }
+
+    #[test]
+    fn f64_round_trips_through_rational() {
+        for x in [0.1, -3.75, 1e-300, 12345.678] {
+            let q = x.to_rational().expect("finite");
+            assert_eq!(Scalar::to_f64(&q), x);
+        }
+        assert!(f64::NAN.to_rational().is_none());
+    }
+}

@@ -1,0 +1,1 @@
+//! rcagd io (to be filled)

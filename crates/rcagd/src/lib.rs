@@ -1,0 +1,1 @@
+//! rcagd rcagd (to be filled)
