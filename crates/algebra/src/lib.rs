@@ -2,15 +2,25 @@
 //!
 //! The exact algebra that every rcagd construction is built on: the scalar traits
 //! ([`Ring`], [`Field`], [`Scalar`]) with implementations for `f64` and the exact
-//! rational [`Rational`], exact parsing of user numbers, univariate polynomials
-//! ([`Poly`]) and certificates ([`Certificate`]).
+//! rational [`Rational`], exact parsing of user numbers, quadratic extensions,
+//! complex numbers and quaternions, univariate polynomials in power and Bernstein
+//! form, multivariate polynomials, resultants, real-root isolation, exact linear
+//! algebra, and certificates ([`Certificate`]).
 //!
 //! Layer rule: this crate depends on nothing else in rcagd.
 
+pub mod bernstein;
 pub mod certificate;
+pub mod complex;
 pub mod error;
+pub mod linalg;
+pub mod mpoly;
 pub mod poly;
+pub mod quadratic;
+pub mod quaternion;
 pub mod rational;
+pub mod resultant;
+pub mod roots;
 pub mod scalar;
 
 pub use certificate::Certificate;
