@@ -24,7 +24,11 @@ pub mod roots;
 pub mod scalar;
 
 pub use certificate::Certificate;
+pub use complex::Complex;
 pub use error::AlgebraError;
+pub use linalg::{Matrix, Solution};
 pub use poly::Poly;
+pub use quadratic::QuadExt;
+pub use quaternion::Quaternion;
 pub use rational::{parse_rational, Rational};
 pub use scalar::{Field, Ring, Scalar};

@@ -1,1 +1,827 @@
-//! (in progress)
+//! Sparse multivariate polynomials over any [`Ring`].
+//!
+//! `MPoly { nvars, terms }` stores `Σ c_e x₀^{e₀} x₁^{e₁} ⋯ x_{n−1}^{e_{n−1}}` as a map
+//! from exponent vectors `e` (length `nvars`) to non-zero coefficients `c_e`; the map
+//! is ordered lexicographically by exponent vector (ascending), which is the order of
+//! [`MPoly::terms`]. The variables commute with each other and with the coefficients;
+//! for non-commutative coefficients products keep the order of the factors,
+//! `(Σ a_e xᵉ)(Σ b_f xᶠ) = Σ (a_e b_f) x^{e+f}`.
+//!
+//! **Mixed numbers of variables.** A polynomial in `x₀, …, x_{k−1}` is also a polynomial in
+//! `x₀, …, x_{n−1}` for `n ≥ k`. Arithmetic on operands with different `nvars` pads the
+//! smaller one with absent variables (the result has the larger `nvars`), and equality
+//! compares the padded polynomials, so `MPoly::zero(2) == MPoly::zero(3)`. This makes
+//! `MPoly<R>` a [`Ring`] whose `zero()`, `one()` and `from_i64` have `nvars = 0`, so
+//! `Poly<MPoly<R>>` (a polynomial in one distinguished variable with multivariate
+//! coefficients, [`MPoly::to_univariate_in`]) works.
+//!
+//! Exponents are `u32`; sums of exponents saturate at `u32::MAX` (degrees of 2³² and
+//! above are outside the supported range). Conversions to dense univariate form
+//! refuse degrees above [`MAX_DENSE_DEGREE`] instead of exhausting memory.
+//!
+//! Elimination: [`resultant_in`] eliminates one variable from two polynomials in two
+//! variables, `Res_{x_var}(f, g) ∈ ℚ[x_other]`, via [`crate::resultant::resultant_poly`].
+
+use crate::error::AlgebraError;
+use crate::poly::Poly;
+use crate::rational::Rational;
+use crate::resultant::resultant_poly;
+use crate::scalar::Ring;
+use core::fmt;
+use core::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+use std::borrow::Cow;
+use std::collections::BTreeMap;
+
+/// The largest degree that conversions to dense univariate polynomials accept.
+pub const MAX_DENSE_DEGREE: u32 = 1 << 24;
+
+/// A sparse multivariate polynomial in `x₀, …, x_{nvars−1}`; no zero coefficients are
+/// stored.
+#[derive(Debug, Clone)]
+pub struct MPoly<R> {
+    nvars: usize,
+    terms: BTreeMap<Vec<u32>, R>,
+}
+
+/// `x^k` by repeated squaring.
+fn ring_pow<R: Ring>(x: &R, k: u32) -> R {
+    let mut result = R::one();
+    let mut base = x.clone();
+    let mut e = k;
+    while e > 0 {
+        if e & 1 == 1 {
+            result *= base.clone();
+        }
+        e >>= 1;
+        if e > 0 {
+            base = base.clone() * base;
+        }
+    }
+    result
+}
+
+fn add_exps(a: &[u32], b: &[u32], n: usize) -> Vec<u32> {
+    (0..n)
+        .map(|i| {
+            let x = a.get(i).copied().unwrap_or(0);
+            let y = b.get(i).copied().unwrap_or(0);
+            x.saturating_add(y)
+        })
+        .collect()
+}
+
+impl<R: Ring> MPoly<R> {
+    /// The zero polynomial in `nvars` variables.
+    pub fn zero(nvars: usize) -> Self {
+        MPoly {
+            nvars,
+            terms: BTreeMap::new(),
+        }
+    }
+
+    /// The constant `c` in `nvars` variables.
+    pub fn constant(nvars: usize, c: R) -> Self {
+        let mut p = MPoly::zero(nvars);
+        if !c.is_zero() {
+            p.terms.insert(vec![0; nvars], c);
+        }
+        p
+    }
+
+    /// The variable `xᵢ`. If `i ≥ nvars` the result has `i + 1` variables (it is a
+    /// programming error, handled without panicking).
+    pub fn var(nvars: usize, i: usize) -> Self {
+        let n = nvars.max(i.saturating_add(1));
+        let mut e = vec![0; n];
+        e[i] = 1;
+        let mut p = MPoly::zero(n);
+        p.terms.insert(e, R::one());
+        p
+    }
+
+    /// The polynomial `Σ c·xᵉ` from `(e, c)` pairs; like terms are summed and zero sums
+    /// dropped.
+    ///
+    /// # Errors
+    /// [`AlgebraError::Mismatch`] if an exponent vector does not have length `nvars`.
+    pub fn from_terms(nvars: usize, terms: Vec<(Vec<u32>, R)>) -> Result<Self, AlgebraError> {
+        let mut p = MPoly::zero(nvars);
+        for (e, c) in terms {
+            if e.len() != nvars {
+                return Err(AlgebraError::Mismatch(format!(
+                    "exponent vector {e:?} has length {}, expected nvars = {nvars}",
+                    e.len()
+                )));
+            }
+            p.add_term(e, c);
+        }
+        Ok(p)
+    }
+
+    /// The monomial `c·xᵉ`; `e` is padded or must fit `nvars` (a longer `e` raises
+    /// `nvars` to its length).
+    pub fn monomial(nvars: usize, e: &[u32], c: R) -> Self {
+        let n = nvars.max(e.len());
+        let mut p = MPoly::zero(n);
+        p.add_term(add_exps(e, &[], n), c);
+        p
+    }
+
+    /// Adds `c·xᵉ` (`e` of length `nvars`), removing the term if it cancels.
+    fn add_term(&mut self, e: Vec<u32>, c: R) {
+        if c.is_zero() {
+            return;
+        }
+        match self.terms.get_mut(&e) {
+            Some(v) => {
+                *v += c;
+                if v.is_zero() {
+                    self.terms.remove(&e);
+                }
+            }
+            None => {
+                self.terms.insert(e, c);
+            }
+        }
+    }
+
+    /// The number of variables.
+    pub fn nvars(&self) -> usize {
+        self.nvars
+    }
+
+    /// The terms `(e, c)`, exponent vectors in ascending lexicographic order.
+    pub fn terms(&self) -> impl Iterator<Item = (&[u32], &R)> {
+        self.terms.iter().map(|(e, c)| (e.as_slice(), c))
+    }
+
+    /// The number of (non-zero) terms.
+    pub fn num_terms(&self) -> usize {
+        self.terms.len()
+    }
+
+    /// The coefficient of `xᵉ` (zero if absent; `e` is compared after padding).
+    pub fn coeff(&self, e: &[u32]) -> R {
+        if e.len() > self.nvars && e[self.nvars..].iter().any(|&k| k != 0) {
+            return R::zero();
+        }
+        let key = add_exps(e, &[], self.nvars);
+        self.terms.get(&key).cloned().unwrap_or_else(R::zero)
+    }
+
+    /// `true` for the zero polynomial.
+    pub fn is_zero(&self) -> bool {
+        self.terms.is_empty()
+    }
+
+    /// The total degree `max Σᵢ eᵢ` over the terms; `None` for the zero polynomial.
+    pub fn total_degree(&self) -> Option<usize> {
+        self.terms
+            .keys()
+            .map(|e| e.iter().map(|&k| k as usize).sum())
+            .max()
+    }
+
+    /// The degree in `xᵢ`; `None` for the zero polynomial (0 if `xᵢ` does not occur).
+    pub fn degree_in(&self, i: usize) -> Option<u32> {
+        self.terms
+            .keys()
+            .map(|e| e.get(i).copied().unwrap_or(0))
+            .max()
+    }
+
+    /// `true` if all terms have the same total degree (the zero polynomial is
+    /// homogeneous).
+    pub fn is_homogeneous(&self) -> bool {
+        let mut degs = self
+            .terms
+            .keys()
+            .map(|e| e.iter().map(|&k| k as usize).sum::<usize>());
+        match degs.next() {
+            None => true,
+            Some(d) => degs.all(|x| x == d),
+        }
+    }
+
+    /// The value `Σ c_e ∏ᵢ xᵢ^{eᵢ}` (coefficient on the left of the monomial).
+    ///
+    /// # Errors
+    /// [`AlgebraError::Mismatch`] if `x.len() != nvars`.
+    pub fn eval(&self, x: &[R]) -> Result<R, AlgebraError> {
+        if x.len() != self.nvars {
+            return Err(AlgebraError::Mismatch(format!(
+                "eval: {} values for {} variables",
+                x.len(),
+                self.nvars
+            )));
+        }
+        let mut cache: BTreeMap<(usize, u32), R> = BTreeMap::new();
+        let mut acc = R::zero();
+        for (e, c) in &self.terms {
+            let mut t = c.clone();
+            for (i, &k) in e.iter().enumerate() {
+                if k == 0 {
+                    continue;
+                }
+                let pw = cache
+                    .entry((i, k))
+                    .or_insert_with(|| ring_pow(&x[i], k))
+                    .clone();
+                t *= pw;
+            }
+            acc += t;
+        }
+        Ok(acc)
+    }
+
+    /// The partial derivative `∂/∂xᵢ` (zero if `i ≥ nvars`).
+    pub fn partial(&self, i: usize) -> Self {
+        let mut p = MPoly::zero(self.nvars);
+        for (e, c) in &self.terms {
+            let Some(&k) = e.get(i) else { continue };
+            if k == 0 {
+                continue;
+            }
+            let mut f = e.clone();
+            f[i] = k - 1;
+            p.add_term(f, R::from_i64(i64::from(k)) * c.clone());
+        }
+        p
+    }
+
+    /// Multiplies every coefficient by `c` on the right.
+    pub fn scale(&self, c: &R) -> Self {
+        let mut p = MPoly::zero(self.nvars);
+        for (e, a) in &self.terms {
+            p.add_term(e.clone(), a.clone() * c.clone());
+        }
+        p
+    }
+
+    /// `selfᵏ` (`self⁰ = 1`), by repeated squaring.
+    pub fn pow(&self, k: u32) -> Self {
+        let mut result = MPoly::constant(self.nvars, R::one());
+        let mut base = self.clone();
+        let mut e = k;
+        while e > 0 {
+            if e & 1 == 1 {
+                result = &result * &base;
+            }
+            e >>= 1;
+            if e > 0 {
+                base = &base * &base;
+            }
+        }
+        result
+    }
+
+    /// Applies `f` to every coefficient (zero images are dropped).
+    pub fn map<S: Ring>(&self, f: impl Fn(&R) -> S) -> MPoly<S> {
+        let mut p = MPoly::zero(self.nvars);
+        for (e, c) in &self.terms {
+            p.add_term(e.clone(), f(c));
+        }
+        p
+    }
+
+    /// The univariate polynomial `p(x₀(t), …, x_{n−1}(t))`.
+    ///
+    /// # Errors
+    /// [`AlgebraError::Mismatch`] if `x.len() != nvars`; [`AlgebraError::InvalidArgument`]
+    /// if the result degree bound `maxₑ Σᵢ eᵢ·deg xᵢ` exceeds [`MAX_DENSE_DEGREE`].
+    pub fn substitute_univariate(&self, x: &[Poly<R>]) -> Result<Poly<R>, AlgebraError> {
+        if x.len() != self.nvars {
+            return Err(AlgebraError::Mismatch(format!(
+                "substitute_univariate: {} polynomials for {} variables",
+                x.len(),
+                self.nvars
+            )));
+        }
+        let bound = self
+            .terms
+            .keys()
+            .map(|e| {
+                e.iter()
+                    .zip(x)
+                    .map(|(&k, xi)| u128::from(k) * xi.degree().unwrap_or(0) as u128)
+                    .sum::<u128>()
+            })
+            .max()
+            .unwrap_or(0);
+        if bound > u128::from(MAX_DENSE_DEGREE) {
+            return Err(AlgebraError::InvalidArgument(format!(
+                "substitute_univariate: result degree {bound} exceeds {MAX_DENSE_DEGREE}"
+            )));
+        }
+        let mut cache: BTreeMap<(usize, u32), Poly<R>> = BTreeMap::new();
+        let mut acc = Poly::zero();
+        for (e, c) in &self.terms {
+            let mut t = Poly::constant(c.clone());
+            for (i, &k) in e.iter().enumerate() {
+                if k == 0 {
+                    continue;
+                }
+                let pw = cache.entry((i, k)).or_insert_with(|| x[i].pow(k));
+                t = &t * pw;
+            }
+            acc = &acc + &t;
+        }
+        Ok(acc)
+    }
+
+    /// Substitutes the value `v` for `xᵢ` (the result keeps `nvars`, without `xᵢ`);
+    /// `i ≥ nvars` returns `self`.
+    pub fn specialize(&self, i: usize, v: &R) -> Self {
+        if i >= self.nvars {
+            return self.clone();
+        }
+        let mut p = MPoly::zero(self.nvars);
+        for (e, c) in &self.terms {
+            let mut f = e.clone();
+            f[i] = 0;
+            p.add_term(f, c.clone() * ring_pow(v, e[i]));
+        }
+        p
+    }
+
+    /// The homogenization `x_n^{d} p(x₀/x_n, …)` in `nvars + 1` variables, `d` the total
+    /// degree; the new variable is `x_{nvars}`.
+    pub fn homogenize(&self) -> Self {
+        let d = self.total_degree().unwrap_or(0);
+        let mut p = MPoly::zero(self.nvars + 1);
+        for (e, c) in &self.terms {
+            let s: usize = e.iter().map(|&k| k as usize).sum();
+            let mut f = e.clone();
+            f.push(u32::try_from(d - s).unwrap_or(u32::MAX));
+            p.add_term(f, c.clone());
+        }
+        p
+    }
+
+    /// The polynomial `p(t)` placed in the variable `x_var` of a polynomial with
+    /// `max(nvars, var + 1)` variables.
+    pub fn from_poly(p: &Poly<R>, nvars: usize, var: usize) -> Self {
+        let n = nvars.max(var.saturating_add(1));
+        let mut out = MPoly::zero(n);
+        for (k, c) in p.coeffs().iter().enumerate() {
+            let mut e = vec![0; n];
+            e[var] = u32::try_from(k).unwrap_or(u32::MAX);
+            out.add_term(e, c.clone());
+        }
+        out
+    }
+
+    /// `self` as a polynomial in `x_var` whose coefficients are polynomials in the other
+    /// variables: `Σₖ cₖ x_varᵏ`, each `cₖ` with the same `nvars` and no `x_var`.
+    ///
+    /// # Errors
+    /// [`AlgebraError::InvalidArgument`] if the degree in `x_var` exceeds
+    /// [`MAX_DENSE_DEGREE`].
+    pub fn to_univariate_in(&self, var: usize) -> Result<Poly<MPoly<R>>, AlgebraError> {
+        let d = self.degree_in(var).unwrap_or(0);
+        if d > MAX_DENSE_DEGREE {
+            return Err(AlgebraError::InvalidArgument(format!(
+                "to_univariate_in: degree {d} exceeds {MAX_DENSE_DEGREE}"
+            )));
+        }
+        let mut coeffs = vec![MPoly::zero(self.nvars); d as usize + 1];
+        for (e, c) in &self.terms {
+            let k = e.get(var).copied().unwrap_or(0) as usize;
+            let mut f = e.clone();
+            if let Some(x) = f.get_mut(var) {
+                *x = 0;
+            }
+            coeffs[k].add_term(f, c.clone());
+        }
+        Ok(Poly::new(coeffs))
+    }
+
+    /// The inverse of [`MPoly::to_univariate_in`]: `Σₖ cₖ x_varᵏ` (the result has the
+    /// largest `nvars` of the coefficients and `var + 1`).
+    pub fn from_univariate_in(p: &Poly<MPoly<R>>, var: usize) -> Self {
+        let n = p
+            .coeffs()
+            .iter()
+            .map(|c| c.nvars)
+            .max()
+            .unwrap_or(0)
+            .max(var.saturating_add(1));
+        let mut out = MPoly::zero(n);
+        for (k, c) in p.coeffs().iter().enumerate() {
+            let kk = u32::try_from(k).unwrap_or(u32::MAX);
+            for (e, a) in &c.terms {
+                let mut f = add_exps(e, &[], n);
+                f[var] = f[var].saturating_add(kk);
+                out.add_term(f, a.clone());
+            }
+        }
+        out
+    }
+
+    /// The bivariate view `Σᵢ (Σⱼ c_{ij} tʲ) xⁱ` with `x = x_outer`, `t = x_inner`: a
+    /// polynomial in `x_outer` with coefficients polynomials in `x_inner`.
+    ///
+    /// # Errors
+    /// [`AlgebraError::InvalidArgument`] if `outer == inner`, if another variable occurs,
+    /// or if a degree exceeds [`MAX_DENSE_DEGREE`].
+    pub fn to_bivariate(&self, outer: usize, inner: usize) -> Result<Poly<Poly<R>>, AlgebraError> {
+        if outer == inner {
+            return Err(AlgebraError::InvalidArgument(
+                "to_bivariate: the two variables must differ".into(),
+            ));
+        }
+        let dout = self.degree_in(outer).unwrap_or(0);
+        let din = self.degree_in(inner).unwrap_or(0);
+        if dout > MAX_DENSE_DEGREE || din > MAX_DENSE_DEGREE {
+            return Err(AlgebraError::InvalidArgument(format!(
+                "to_bivariate: degrees ({dout}, {din}) exceed {MAX_DENSE_DEGREE}"
+            )));
+        }
+        let mut rows: Vec<Vec<R>> = vec![Vec::new(); dout as usize + 1];
+        for (e, c) in &self.terms {
+            if let Some(v) = e
+                .iter()
+                .enumerate()
+                .position(|(i, &k)| k != 0 && i != outer && i != inner)
+            {
+                return Err(AlgebraError::InvalidArgument(format!(
+                    "to_bivariate: the variable x{v} occurs besides x{outer} and x{inner}"
+                )));
+            }
+            let i = e.get(outer).copied().unwrap_or(0) as usize;
+            let j = e.get(inner).copied().unwrap_or(0) as usize;
+            let row = &mut rows[i];
+            if row.len() <= j {
+                row.resize(j + 1, R::zero());
+            }
+            row[j] += c.clone();
+        }
+        Ok(Poly::new(rows.into_iter().map(Poly::new).collect()))
+    }
+
+    /// Pads to `n ≥ nvars` variables.
+    fn padded(&self, n: usize) -> Cow<'_, MPoly<R>> {
+        if n <= self.nvars {
+            return Cow::Borrowed(self);
+        }
+        Cow::Owned(MPoly {
+            nvars: n,
+            terms: self
+                .terms
+                .iter()
+                .map(|(e, c)| (add_exps(e, &[], n), c.clone()))
+                .collect(),
+        })
+    }
+}
+
+/// The resultant `Res_{x_var}(f, g)` of two polynomials in `x_var` and (at most) one other
+/// variable `y`, as a polynomial in `y`: `det Sylₘ,ₙ(f, g)` with `m = deg_{x_var} f`,
+/// `n = deg_{x_var} g` (see [`resultant_poly`]). `R(y₀) = 0` iff `f(·, y₀)` and
+/// `g(·, y₀)` have a common root or both leading coefficients vanish at `y₀`; the
+/// projection of the common zeros of `f` and `g` onto the `y`-axis lies in the zeros of
+/// `R`. A zero `f` or `g` gives the zero polynomial.
+///
+/// # Errors
+/// [`AlgebraError::InvalidArgument`] if, besides `x_var`, more than one variable occurs in
+/// `f` and `g` together, or a degree exceeds [`MAX_DENSE_DEGREE`].
+pub fn resultant_in(
+    f: &MPoly<Rational>,
+    g: &MPoly<Rational>,
+    var: usize,
+) -> Result<Poly<Rational>, AlgebraError> {
+    let mut others: Vec<usize> = f
+        .terms()
+        .chain(g.terms())
+        .flat_map(|(e, _)| {
+            e.iter()
+                .enumerate()
+                .filter(|&(i, &k)| k != 0 && i != var)
+                .map(|(i, _)| i)
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    others.sort_unstable();
+    others.dedup();
+    if others.len() > 1 {
+        return Err(AlgebraError::InvalidArgument(format!(
+            "resultant_in: eliminating x{var} needs bivariate input, but x{others:?} occur besides it"
+        )));
+    }
+    let other = others
+        .first()
+        .copied()
+        .unwrap_or(if var == 0 { 1 } else { 0 });
+    let fb = f.to_bivariate(var, other)?;
+    let gb = g.to_bivariate(var, other)?;
+    Ok(resultant_poly(&fb, &gb))
+}
+
+impl<R: Ring> PartialEq for MPoly<R> {
+    /// Equality as polynomials (the operand with fewer variables is padded).
+    fn eq(&self, other: &Self) -> bool {
+        let n = self.nvars.max(other.nvars);
+        self.padded(n).terms == other.padded(n).terms
+    }
+}
+
+impl<R: Ring> Add for &MPoly<R> {
+    type Output = MPoly<R>;
+    fn add(self, rhs: &MPoly<R>) -> MPoly<R> {
+        let n = self.nvars.max(rhs.nvars);
+        let mut out = self.padded(n).into_owned();
+        for (e, c) in &rhs.terms {
+            out.add_term(add_exps(e, &[], n), c.clone());
+        }
+        out
+    }
+}
+impl<R: Ring> Sub for &MPoly<R> {
+    type Output = MPoly<R>;
+    fn sub(self, rhs: &MPoly<R>) -> MPoly<R> {
+        let n = self.nvars.max(rhs.nvars);
+        let mut out = self.padded(n).into_owned();
+        for (e, c) in &rhs.terms {
+            out.add_term(add_exps(e, &[], n), -c.clone());
+        }
+        out
+    }
+}
+impl<R: Ring> Mul for &MPoly<R> {
+    type Output = MPoly<R>;
+    fn mul(self, rhs: &MPoly<R>) -> MPoly<R> {
+        let n = self.nvars.max(rhs.nvars);
+        let mut out = MPoly::zero(n);
+        for (ea, a) in &self.terms {
+            for (eb, b) in &rhs.terms {
+                out.add_term(add_exps(ea, eb, n), a.clone() * b.clone());
+            }
+        }
+        out
+    }
+}
+impl<R: Ring> Neg for &MPoly<R> {
+    type Output = MPoly<R>;
+    fn neg(self) -> MPoly<R> {
+        MPoly {
+            nvars: self.nvars,
+            terms: self
+                .terms
+                .iter()
+                .map(|(e, c)| (e.clone(), -c.clone()))
+                .collect(),
+        }
+    }
+}
+impl<R: Ring> Add for MPoly<R> {
+    type Output = MPoly<R>;
+    fn add(self, rhs: MPoly<R>) -> MPoly<R> {
+        &self + &rhs
+    }
+}
+impl<R: Ring> Sub for MPoly<R> {
+    type Output = MPoly<R>;
+    fn sub(self, rhs: MPoly<R>) -> MPoly<R> {
+        &self - &rhs
+    }
+}
+impl<R: Ring> Mul for MPoly<R> {
+    type Output = MPoly<R>;
+    fn mul(self, rhs: MPoly<R>) -> MPoly<R> {
+        &self * &rhs
+    }
+}
+impl<R: Ring> Neg for MPoly<R> {
+    type Output = MPoly<R>;
+    fn neg(self) -> MPoly<R> {
+        -&self
+    }
+}
+impl<R: Ring> AddAssign for MPoly<R> {
+    fn add_assign(&mut self, rhs: MPoly<R>) {
+        *self = &*self + &rhs;
+    }
+}
+impl<R: Ring> SubAssign for MPoly<R> {
+    fn sub_assign(&mut self, rhs: MPoly<R>) {
+        *self = &*self - &rhs;
+    }
+}
+impl<R: Ring> MulAssign for MPoly<R> {
+    fn mul_assign(&mut self, rhs: MPoly<R>) {
+        *self = &*self * &rhs;
+    }
+}
+impl<R: Ring> num_traits::Zero for MPoly<R> {
+    /// The zero polynomial with `nvars = 0` (it pads to any number of variables).
+    fn zero() -> Self {
+        MPoly::zero(0)
+    }
+    fn is_zero(&self) -> bool {
+        self.terms.is_empty()
+    }
+}
+impl<R: Ring> num_traits::One for MPoly<R> {
+    /// The constant 1 with `nvars = 0`.
+    fn one() -> Self {
+        MPoly::constant(0, R::one())
+    }
+}
+impl<R: Ring> Ring for MPoly<R> {
+    fn from_i64(n: i64) -> Self {
+        MPoly::constant(0, R::from_i64(n))
+    }
+}
+
+impl<R: Ring + fmt::Display> fmt::Display for MPoly<R> {
+    /// `c·x0^2·x1 + …`, highest exponent vector first; `0` for the zero polynomial.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.terms.is_empty() {
+            return write!(f, "0");
+        }
+        for (k, (e, c)) in self.terms.iter().rev().enumerate() {
+            if k > 0 {
+                write!(f, " + ")?;
+            }
+            let mono: Vec<String> = e
+                .iter()
+                .enumerate()
+                .filter(|(_, &d)| d > 0)
+                .map(|(i, &d)| {
+                    if d == 1 {
+                        format!("x{i}")
+                    } else {
+                        format!("x{i}^{d}")
+                    }
+                })
+                .collect();
+            if mono.is_empty() {
+                write!(f, "{c}")?;
+            } else if c.is_one() {
+                write!(f, "{}", mono.join("*"))?;
+            } else {
+                write!(f, "({c})*{}", mono.join("*"))?;
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_traits::{One, Zero};
+
+    type M = MPoly<Rational>;
+
+    fn q(n: i64) -> Rational {
+        Rational::from(n)
+    }
+
+    fn circle() -> M {
+        // x² + y² − 1
+        M::from_terms(
+            2,
+            vec![(vec![2, 0], q(1)), (vec![0, 2], q(1)), (vec![0, 0], q(-1))],
+        )
+        .expect("valid")
+    }
+
+    #[test]
+    fn construction_and_queries() {
+        let x = M::var(2, 0);
+        let y = M::var(2, 1);
+        let p = &(&x * &x) + &(&(&y * &y) - &M::constant(2, q(1)));
+        assert_eq!(p, circle());
+        assert_eq!(p.nvars(), 2);
+        assert_eq!(p.num_terms(), 3);
+        assert_eq!(p.total_degree(), Some(2));
+        assert!(!p.is_homogeneous());
+        assert!((&x * &y).is_homogeneous());
+        assert!(M::zero(3).is_homogeneous());
+        assert_eq!(M::zero(3).total_degree(), None);
+        assert_eq!(p.coeff(&[0, 2]), q(1));
+        assert_eq!(p.coeff(&[0, 0]), q(-1));
+        assert_eq!(p.coeff(&[1, 1]), q(0));
+        assert_eq!(p.degree_in(1), Some(2));
+        // like terms summed, cancellation removes terms
+        let s = M::from_terms(1, vec![(vec![1], q(2)), (vec![1], q(-2)), (vec![0], q(5))])
+            .expect("valid");
+        assert_eq!(s, M::constant(1, q(5)));
+        assert!(M::from_terms(2, vec![(vec![1], q(1))]).is_err());
+        // out-of-range variable is padded, not a panic
+        assert_eq!(M::var(1, 3).nvars(), 4);
+    }
+
+    #[test]
+    fn eval_partial_pow_map() {
+        let p = circle();
+        assert_eq!(p.eval(&[q(3), q(4)]).expect("2 values"), q(24));
+        assert!(p.eval(&[q(1)]).is_err());
+        assert_eq!(p.partial(0), M::var(2, 0).scale(&q(2)));
+        assert!(p.partial(7).is_zero());
+        let sq = p.pow(2);
+        assert_eq!(sq, &p * &p);
+        assert_eq!(p.pow(0), M::constant(2, q(1)));
+        let f = p.map(|c| Scalar::to_f64(c) * 0.5);
+        assert_eq!(f.eval(&[2.0, 0.0]).expect("2 values"), 1.5);
+        let z = p.map(|_| q(0));
+        assert!(z.is_zero());
+    }
+
+    use crate::scalar::Scalar;
+
+    #[test]
+    fn substitution_and_parametrization() {
+        // The rational parametrization ((1−t²), 2t, (1+t²)) of the circle, homogenized:
+        // X² + Y² − W² vanishes identically.
+        let h = circle().homogenize();
+        assert_eq!(h.nvars(), 3);
+        assert!(h.is_homogeneous());
+        let x = Poly::from_ints(&[1, 0, -1]);
+        let y = Poly::from_ints(&[0, 2]);
+        let w = Poly::from_ints(&[1, 0, 1]);
+        let r = h.substitute_univariate(&[x, y, w]).expect("3 polys");
+        assert!(r.is_zero());
+        assert!(h.substitute_univariate(&[Poly::x()]).is_err());
+        // specialize y = 1/2 gives x² − 3/4
+        let s = circle().specialize(1, &(q(1) / q(2)));
+        assert_eq!(
+            s,
+            M::from_terms(2, vec![(vec![2, 0], q(1)), (vec![0, 0], q(-3) / q(4))]).expect("ok")
+        );
+    }
+
+    #[test]
+    fn mixed_nvars_pad() {
+        let a = M::var(1, 0);
+        let b = M::var(3, 2);
+        let s = &a + &b;
+        assert_eq!(s.nvars(), 3);
+        assert_eq!(s.eval(&[q(2), q(5), q(7)]).expect("3 values"), q(9));
+        assert_eq!(M::zero(2), M::zero(5));
+        assert_eq!(M::var(1, 0), M::var(4, 0));
+        assert_ne!(M::var(2, 0), M::var(2, 1));
+        // Ring structure
+        let one = <M as One>::one();
+        assert_eq!(&one * &s, s);
+        assert_eq!(&<M as Zero>::zero() + &s, s);
+        assert_eq!(<M as Ring>::from_i64(3), M::constant(4, q(3)));
+    }
+
+    #[test]
+    fn univariate_views_round_trip() {
+        let p = &circle() * &M::var(2, 0);
+        let u = p.to_univariate_in(1).expect("small degree");
+        assert_eq!(u.degree(), Some(2));
+        assert_eq!(M::from_univariate_in(&u, 1), p);
+        let b = p.to_bivariate(0, 1).expect("bivariate");
+        // x³ + x y² − x: in x with coefficients in y
+        assert_eq!(b.coeff(3), Poly::from_ints(&[1]));
+        assert_eq!(b.coeff(1), Poly::from_ints(&[-1, 0, 1]));
+        assert!(p.to_bivariate(0, 0).is_err());
+        let t = &p * &M::var(3, 2);
+        assert!(t.to_bivariate(0, 1).is_err());
+        let e = M::from_poly(&Poly::from_ints(&[1, 2, 3]), 2, 1);
+        assert_eq!(e.coeff(&[0, 2]), q(3));
+    }
+
+    #[test]
+    fn resultant_in_eliminates() {
+        // circle ∩ line x = y: Res_x(x² + y² − 1, x − y) = 2y² − 1
+        let line = &M::var(2, 0) - &M::var(2, 1);
+        let r = resultant_in(&circle(), &line, 0).expect("bivariate");
+        assert_eq!(r, Poly::from_ints(&[-1, 0, 2]));
+        // eliminating y instead gives 2x² − 1
+        let r1 = resultant_in(&circle(), &line, 1).expect("bivariate");
+        assert_eq!(r1, Poly::from_ints(&[-1, 0, 2]));
+        let three = &circle() * &M::var(3, 2);
+        assert!(resultant_in(&three, &line, 0).is_err());
+        assert!(resultant_in(&M::zero(2), &line, 0).expect("ok").is_zero());
+    }
+
+    #[test]
+    fn huge_exponents_do_not_panic() {
+        let m = M::monomial(2, &[u32::MAX, 1], q(1));
+        let sq = &m * &m; // exponents saturate
+        assert_eq!(sq.degree_in(0), Some(u32::MAX));
+        assert_eq!(m.pow(3).degree_in(1), Some(3));
+        assert!(m.to_univariate_in(0).is_err());
+        assert!(m.to_bivariate(0, 1).is_err());
+        assert!(m.substitute_univariate(&[Poly::x(), Poly::x()]).is_err());
+        assert!(resultant_in(&m, &M::var(2, 0), 0).is_err());
+        assert_eq!(m.eval(&[q(-1), q(3)]).expect("2 values"), q(-3));
+        assert!(m.homogenize().is_homogeneous());
+        assert_eq!(
+            m.partial(0).coeff(&[u32::MAX - 1, 1]),
+            q(i64::from(u32::MAX))
+        );
+    }
+
+    #[test]
+    fn display() {
+        assert_eq!(format!("{}", M::zero(2)), "0");
+        let s = format!("{}", circle());
+        assert!(s.contains("x0^2") && s.contains("x1^2"), "{s}");
+    }
+}

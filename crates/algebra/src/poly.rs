@@ -248,7 +248,9 @@ impl<F: Field> Poly<F> {
             return Poly::zero();
         }
         let g = self.gcd(&self.derivative());
-        self.div_rem(&g).map(|(q, _)| q.monic()).unwrap_or_else(|_| self.monic())
+        self.div_rem(&g)
+            .map(|(q, _)| q.monic())
+            .unwrap_or_else(|_| self.monic())
     }
 }
 
@@ -312,6 +314,42 @@ impl<R: Ring> Neg for Poly<R> {
     type Output = Poly<R>;
     fn neg(self) -> Poly<R> {
         -&self
+    }
+}
+
+/// `Poly<R>` is itself a ring (`R[t]`), so polynomials with polynomial coefficients
+/// (`Poly<Poly<Rational>>`, used by [`crate::resultant::resultant_poly`]) can be built.
+impl<R: Ring> num_traits::Zero for Poly<R> {
+    fn zero() -> Self {
+        Poly { coeffs: Vec::new() }
+    }
+    fn is_zero(&self) -> bool {
+        self.coeffs.is_empty()
+    }
+}
+impl<R: Ring> num_traits::One for Poly<R> {
+    fn one() -> Self {
+        Poly::constant(R::one())
+    }
+}
+impl<R: Ring> core::ops::AddAssign for Poly<R> {
+    fn add_assign(&mut self, rhs: Poly<R>) {
+        *self = &*self + &rhs;
+    }
+}
+impl<R: Ring> core::ops::SubAssign for Poly<R> {
+    fn sub_assign(&mut self, rhs: Poly<R>) {
+        *self = &*self - &rhs;
+    }
+}
+impl<R: Ring> core::ops::MulAssign for Poly<R> {
+    fn mul_assign(&mut self, rhs: Poly<R>) {
+        *self = &*self * &rhs;
+    }
+}
+impl<R: Ring> Ring for Poly<R> {
+    fn from_i64(n: i64) -> Self {
+        Poly::constant(R::from_i64(n))
     }
 }
 

@@ -57,7 +57,8 @@ fn parse_decimal(s: &str, input: &str) -> Result<Rational, AlgebraError> {
     if int_part.is_empty() && frac_part.is_empty() {
         return Err(parse_err(input, "expected digits"));
     }
-    if !int_part.bytes().all(|b| b.is_ascii_digit()) || !frac_part.bytes().all(|b| b.is_ascii_digit())
+    if !int_part.bytes().all(|b| b.is_ascii_digit())
+        || !frac_part.bytes().all(|b| b.is_ascii_digit())
     {
         return Err(parse_err(
             input,
@@ -164,7 +165,19 @@ mod tests {
 
     #[test]
     fn rejects_non_numbers() {
-        for bad in ["", "abc", "1/0", "1.2.3", "e5", "1e", "--1", "1/", "0x10", "nan", "1e9999999"] {
+        for bad in [
+            "",
+            "abc",
+            "1/0",
+            "1.2.3",
+            "e5",
+            "1e",
+            "--1",
+            "1/",
+            "0x10",
+            "nan",
+            "1e9999999",
+        ] {
             assert!(parse_rational(bad).is_err(), "{bad:?} should not parse");
         }
     }

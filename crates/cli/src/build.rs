@@ -1,0 +1,418 @@
+//! Building recipes: check each object against its op's parameter list, run the op,
+//! and turn every problem into a located [`Diagnostic`].
+
+use crate::model::Object;
+use crate::ops::{self, OpArgs, OpError, OpSpec, ParamSpec};
+use crate::output::{self, OutFormat};
+use crate::recipe::{Recipe, RecipeObject, RecipeValue};
+use crate::source::{closest, Diagnostic, SourceFile, Span};
+use crate::value::{convert, Value};
+use crate::{EXIT_FAIL, EXIT_INPUT, EXIT_OK};
+use std::io::Read as _;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::path::Path;
+
+/// The notes listing an op's parameters.
+fn param_notes(op: &OpSpec) -> String {
+    let mut s = format!("parameters of `{}`:", op.name);
+    if op.params.is_empty() {
+        s.push_str(" none");
+    }
+    for l in op.param_lines() {
+        s.push('\n');
+        s.push_str("  ");
+        s.push_str(&l);
+    }
+    s
+}
+
+/// The typed default of a parameter (its TOML text parsed and converted).
+///
+/// # Errors
+/// A message when the op's declared default is not valid for its type (an op bug,
+/// caught by the registry tests).
+pub fn default_value(p: &ParamSpec) -> Result<Option<Value>, String> {
+    let Some(text) = p.default else {
+        return Ok(None);
+    };
+    let doc = crate::recipe::toml::parse(&format!("v = {text}"))
+        .map_err(|e| format!("default of `{}` is not TOML: {}", p.name, e.message))?;
+    let v = doc
+        .get("v")
+        .ok_or_else(|| format!("default of `{}` is empty", p.name))?;
+    convert(p.kind, &v.value)
+        .map(Some)
+        .map_err(|e| format!("default of `{}`: {}", p.name, e.message))
+}
+
+/// Checks an object's parameters against its op: unknown op, unknown, missing and
+/// ill-typed parameters.
+///
+/// # Errors
+/// Every problem found, located in `file`.
+pub fn check_object(
+    file: &SourceFile,
+    obj: &RecipeObject,
+) -> Result<(&'static OpSpec, OpArgs), Vec<Diagnostic>> {
+    let Some(op) = ops::find(&obj.op) else {
+        let mut d = file.error(obj.op_span, format!("unknown op {:?}", obj.op));
+        if let Some(s) = closest(&obj.op, ops::all().map(|o| o.name)) {
+            d = d.note(format!("did you mean {s:?}?"));
+        }
+        let names: Vec<&str> = ops::all().map(|o| o.name).collect();
+        d = d.note(format!(
+            "known ops: {} (`rcagd ops` describes them)",
+            names.join(", ")
+        ));
+        return Err(vec![d]);
+    };
+    let mut diags = Vec::new();
+    for e in &obj.params {
+        if op.param(&e.key).is_none() {
+            let mut d = file.error(
+                e.key_span,
+                format!("unknown parameter `{}` for op `{}`", e.key, op.name),
+            );
+            if let Some(s) = closest(&e.key, op.params.iter().map(|p| p.name)) {
+                d = d.note(format!("did you mean `{s}`?"));
+            }
+            diags.push(d.note(param_notes(op)));
+        }
+    }
+    let mut values = Vec::with_capacity(op.params.len());
+    for p in op.params {
+        let given: Option<&RecipeValue> = obj
+            .params
+            .iter()
+            .find(|e| e.key == p.name)
+            .map(|e| &e.value)
+            .filter(|v| !matches!(v.kind, crate::recipe::ValueKind::Null) || p.required);
+        match given {
+            Some(v) => match convert(p.kind, v) {
+                Ok(x) => values.push((p.name, x)),
+                Err(e) => diags.push(
+                    file.error(e.span, format!("parameter `{}`: {}", p.name, e.message))
+                        .note(format!(
+                            "{}: {} ({}) — {}",
+                            p.name,
+                            p.kind.type_name(),
+                            p.requirement(),
+                            p.doc
+                        )),
+                ),
+            },
+            None if p.required => diags.push(
+                file.error(
+                    obj.span,
+                    format!(
+                        "object {:?}: op `{}` needs the parameter `{}` ({})",
+                        obj.name,
+                        op.name,
+                        p.name,
+                        p.kind.type_name()
+                    ),
+                )
+                .note(param_notes(op)),
+            ),
+            None => match default_value(p) {
+                Ok(Some(x)) => values.push((p.name, x)),
+                Ok(None) => {}
+                Err(m) => diags.push(file.error(obj.op_span, format!("internal error: {m}"))),
+            },
+        }
+    }
+    if diags.is_empty() {
+        Ok((op, OpArgs::new(obj.name.clone(), op, values)))
+    } else {
+        Err(diags)
+    }
+}
+
+/// Runs an op, turning a panic into an error (no input may crash the CLI).
+pub fn run_op(op: &OpSpec, args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    match catch_unwind(AssertUnwindSafe(|| (op.build)(args))) {
+        Ok(r) => r,
+        Err(payload) => {
+            let msg = payload
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown panic".into());
+            Err(OpError::new(format!(
+                "internal error (please report): the construction panicked: {msg}"
+            )))
+        }
+    }
+}
+
+/// Checks and builds one object.
+///
+/// # Errors
+/// Parameter problems, or the construction's error located at the `op` key (or at
+/// the parameter the op names).
+pub fn build_object(file: &SourceFile, obj: &RecipeObject) -> Result<Vec<Object>, Vec<Diagnostic>> {
+    let (op, args) = check_object(file, obj)?;
+    run_op(op, &args).map_err(|e| {
+        let span = e
+            .param
+            .and_then(|p| obj.params.iter().find(|x| x.key == p))
+            .map_or(obj.op_key_span, |x| x.value.span);
+        vec![file.error(
+            span,
+            format!(
+                "cannot build {:?} (op `{}`): {}",
+                obj.name, op.name, e.message
+            ),
+        )]
+    })
+}
+
+/// Builds every object of a recipe, calling `progress(name)` after each one.
+/// Objects produced by one op under additional names are checked for uniqueness.
+///
+/// # Errors
+/// All problems of all objects.
+pub fn build_recipe(
+    recipe: &Recipe,
+    mut progress: impl FnMut(&str),
+) -> Result<Vec<Object>, Vec<Diagnostic>> {
+    let mut out: Vec<Object> = Vec::new();
+    let mut diags = Vec::new();
+    for obj in &recipe.objects {
+        match build_object(&recipe.file, obj) {
+            Ok(objs) => {
+                for o in objs {
+                    if out.iter().any(|x| x.name == o.name) {
+                        diags.push(recipe.file.error(
+                            obj.op_key_span,
+                            format!(
+                                "op `{}` produced a second object called {:?}",
+                                obj.op, o.name
+                            ),
+                        ));
+                    } else {
+                        out.push(o);
+                    }
+                }
+            }
+            Err(d) => diags.extend(d),
+        }
+        progress(&obj.name);
+    }
+    if diags.is_empty() {
+        Ok(out)
+    } else {
+        Err(diags)
+    }
+}
+
+/// Reads a recipe file (`-`: standard input).
+///
+/// # Errors
+/// The diagnostics of an unreadable or invalid recipe.
+pub fn load(path: &Path) -> Result<Recipe, Vec<Diagnostic>> {
+    let display = path.display().to_string();
+    let bytes = if display == "-" {
+        let mut buf = Vec::new();
+        std::io::stdin().read_to_end(&mut buf).map_err(|e| {
+            vec![Diagnostic::whole_file(
+                "<stdin>",
+                format!("cannot read standard input: {e}"),
+            )]
+        })?;
+        return Recipe::from_bytes("<stdin>", &buf, None);
+    } else {
+        std::fs::read(path).map_err(|e| {
+            vec![Diagnostic::whole_file(
+                &display,
+                format!("cannot read the recipe: {e}"),
+            )]
+        })?
+    };
+    Recipe::from_bytes(&display, &bytes, None)
+}
+
+fn print_diagnostics(diags: &[Diagnostic]) {
+    for d in diags {
+        err!("{d}");
+    }
+    if diags.len() > 1 {
+        errln!("{} errors", diags.len());
+    }
+}
+
+/// Runs `rcagd build`; returns the exit code (0 all certificates hold, 1 one fails,
+/// 2 usage or input error; nothing is written on an input error).
+pub fn run(path: &Path, out: Option<&Path>, formats: &[OutFormat]) -> u8 {
+    let mut formats: Vec<OutFormat> = formats.to_vec();
+    if formats.is_empty() {
+        formats.push(OutFormat::Json);
+    }
+    let mut seen = Vec::new();
+    formats.retain(|f| {
+        let new = !seen.contains(f);
+        seen.push(*f);
+        new
+    });
+    if out.is_none() && formats != [OutFormat::Json] {
+        errln!("error: --format obj/svg need --out DIR (without --out, JSON is printed to stdout)");
+        return EXIT_INPUT;
+    }
+    let recipe = match load(path) {
+        Ok(r) => r,
+        Err(d) => {
+            print_diagnostics(&d);
+            return EXIT_INPUT;
+        }
+    };
+    let objects = match build_recipe(&recipe, |_| {}) {
+        Ok(o) => o,
+        Err(d) => {
+            print_diagnostics(&d);
+            return EXIT_INPUT;
+        }
+    };
+    match out {
+        None => match output::objects_json_text(&objects) {
+            Ok(text) => outln!("{text}"),
+            Err(e) => {
+                errln!("error: {e}");
+                return EXIT_INPUT;
+            }
+        },
+        Some(dir) => {
+            if let Err(e) = output::create_dir(dir) {
+                errln!("error: {e}");
+                return EXIT_INPUT;
+            }
+            for o in &objects {
+                if let Err(e) = output::write_object(dir, o, &formats) {
+                    errln!("error: {e}");
+                    return EXIT_INPUT;
+                }
+            }
+        }
+    }
+    let mut failed = false;
+    for o in &objects {
+        let at = recipe
+            .objects
+            .iter()
+            .find(|r| r.name == o.name)
+            .map_or(Span::default(), |r| r.op_key_span);
+        for c in o.certificates.iter().filter(|c| !c.holds) {
+            failed = true;
+            err!(
+                "{}",
+                recipe
+                    .file
+                    .error(at, format!("certificate of {:?} fails: {c}", o.name))
+            );
+        }
+    }
+    if failed {
+        EXIT_FAIL
+    } else {
+        EXIT_OK
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn errors(src: &str) -> Vec<Diagnostic> {
+        let r = Recipe::parse("r.toml", src, None).unwrap();
+        build_recipe(&r, |_| {}).unwrap_err()
+    }
+
+    #[test]
+    fn every_default_is_valid() {
+        for op in ops::all() {
+            for p in op.params {
+                assert!(default_value(p).is_ok(), "{}.{}", op.name, p.name);
+                assert!(
+                    !(p.required && p.default.is_some()),
+                    "{}.{}",
+                    op.name,
+                    p.name
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn op_names_are_unique() {
+        let names: Vec<&str> = ops::all().map(|o| o.name).collect();
+        for (i, n) in names.iter().enumerate() {
+            assert!(!names[..i].contains(n), "duplicate op {n}");
+        }
+    }
+
+    #[test]
+    fn every_example_builds_and_holds() {
+        for op in ops::all() {
+            let r = Recipe::parse("example.toml", op.example, None)
+                .unwrap_or_else(|e| panic!("{}: {}", op.name, e[0]));
+            assert!(
+                r.objects.iter().any(|o| o.op == op.name),
+                "{} example does not use it",
+                op.name
+            );
+            let objs = build_recipe(&r, |_| {}).unwrap_or_else(|e| panic!("{}: {}", op.name, e[0]));
+            for o in objs {
+                assert!(
+                    o.certificates.iter().all(|c| c.holds),
+                    "{}: {:?}",
+                    op.name,
+                    o.certificates
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn located_errors() {
+        let d = errors("[[object]]\nname = \"a\"\nop = \"bezier_curv\"\n");
+        assert_eq!((d[0].line, d[0].column), (3, 6));
+        assert!(
+            d[0].to_string().contains("did you mean \"bezier_curve\""),
+            "{}",
+            d[0]
+        );
+        let d = errors(
+            "[[object]]\nname = \"a\"\nop = \"bezier_curve\"\npoints = [[0, 0]]\npoint = 1\n",
+        );
+        assert_eq!((d[0].line, d[0].column), (5, 1));
+        assert!(
+            d[0].message.contains("unknown parameter `point`"),
+            "{}",
+            d[0]
+        );
+        let d = errors("[[object]]\nname = \"a\"\nop = \"bezier_curve\"\n");
+        assert_eq!((d[0].line, d[0].column), (1, 1));
+        assert!(
+            d[0].message.contains("needs the parameter `points`"),
+            "{}",
+            d[0]
+        );
+        assert!(
+            d[0].to_string()
+                .contains("points: list of points (required)"),
+            "{}",
+            d[0]
+        );
+        let d = errors(
+            "[[object]]\nname = \"a\"\nop = \"bezier_curve\"\npoints = [[0, 0], [1, \"x\"]]\n",
+        );
+        assert_eq!((d[0].line, d[0].column), (4, 23));
+        assert!(d[0].message.contains("not a number: \"x\""), "{}", d[0]);
+        let d = errors("[[object]]\nname = \"a\"\nop = \"bezier_curve\"\npoints = [[0, 0], [1, 1]]\nweights = [1]\n");
+        assert_eq!((d[0].line, d[0].column), (5, 11));
+        assert!(
+            d[0].message.contains("2 control points but 1 weights"),
+            "{}",
+            d[0]
+        );
+    }
+}

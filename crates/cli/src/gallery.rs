@@ -1,0 +1,147 @@
+//! `rcagd gallery`: builds every object of the embedded default recipes
+//! (`examples/recipes/*.toml`, a fixed list compiled into the binary), writes
+//! `<name>.json`, `<name>.obj`, `<name>.svg` per object plus `report.json` and
+//! `index.html`, and prints a summary table.
+//!
+//! Exit code 0 if every certificate holds, 1 if one fails or an object cannot be
+//! built, 2 if the output directory cannot be written.
+
+use crate::build::build_object;
+use crate::model::Object;
+use crate::output::{self, OutFormat};
+use crate::recipe::{Format, Recipe};
+use crate::{EXIT_FAIL, EXIT_INPUT, EXIT_OK};
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use rcagd_io::report::ReportEntry;
+use std::io::IsTerminal;
+use std::path::Path;
+
+/// The embedded default recipes: (file name, text). Adding a recipe file to the
+/// gallery is one line here.
+pub const RECIPES: &[(&str, &str)] = &[(
+    "examples/recipes/kernel.toml",
+    include_str!("../../../examples/recipes/kernel.toml"),
+)];
+
+/// The formats written per gallery object.
+pub const FORMATS: &[OutFormat] = &[OutFormat::Json, OutFormat::Obj, OutFormat::Svg];
+
+/// The outcome of building the gallery (before writing anything).
+#[derive(Debug)]
+pub struct GalleryBuild {
+    /// Every object built, in recipe order.
+    pub objects: Vec<Object>,
+    /// Rendered diagnostics of objects that could not be built.
+    pub errors: Vec<String>,
+}
+
+/// Parses and builds every embedded recipe, calling `tick(name)` after each object.
+pub fn build_all(total_hint: impl FnOnce(usize), mut tick: impl FnMut(&str)) -> GalleryBuild {
+    let mut errors = Vec::new();
+    let mut recipes = Vec::new();
+    for (file, text) in RECIPES {
+        match Recipe::parse(file, text, Some(Format::Toml)) {
+            Ok(r) => recipes.push(r),
+            Err(ds) => errors.extend(ds.iter().map(ToString::to_string)),
+        }
+    }
+    total_hint(recipes.iter().map(|r| r.objects.len()).sum());
+    let mut objects: Vec<Object> = Vec::new();
+    for r in &recipes {
+        for obj in &r.objects {
+            match build_object(&r.file, obj) {
+                Ok(objs) => {
+                    for o in objs {
+                        if objects.iter().any(|x| x.name == o.name) {
+                            errors.push(format!(
+                                "{}: error: the gallery has two objects called {:?} (names must be unique across recipes)",
+                                r.file.name(),
+                                o.name
+                            ));
+                        } else {
+                            objects.push(o);
+                        }
+                    }
+                }
+                Err(ds) => errors.extend(ds.iter().map(ToString::to_string)),
+            }
+            tick(&obj.name);
+        }
+    }
+    GalleryBuild { objects, errors }
+}
+
+fn progress_bar(quiet: bool) -> ProgressBar {
+    let pb = ProgressBar::with_draw_target(Some(0), ProgressDrawTarget::stderr());
+    if quiet || !std::io::stderr().is_terminal() {
+        pb.set_draw_target(ProgressDrawTarget::hidden());
+    }
+    if let Ok(style) = ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} {wide_msg}") {
+        pb.set_style(style.progress_chars("=> "));
+    }
+    pb
+}
+
+/// Runs `rcagd gallery`; returns the exit code.
+pub fn run(out: &Path, quiet: bool) -> u8 {
+    let pb = progress_bar(quiet);
+    let built = build_all(
+        |n| pb.set_length(n as u64),
+        |name| {
+            pb.set_message(name.to_string());
+            pb.inc(1);
+        },
+    );
+    pb.finish_and_clear();
+    for e in &built.errors {
+        if e.ends_with('\n') {
+            err!("{e}");
+        } else {
+            errln!("{e}");
+        }
+    }
+    if let Err(e) = output::create_dir(out) {
+        errln!("error: {e}");
+        return EXIT_INPUT;
+    }
+    for o in &built.objects {
+        if let Err(e) = output::write_object(out, o, FORMATS) {
+            errln!("error: {e}");
+            return EXIT_INPUT;
+        }
+    }
+    let entries: Vec<ReportEntry> = built
+        .objects
+        .iter()
+        .map(|o| {
+            let mut e = ReportEntry::new(o.clone());
+            if let Ok(svg) = output::object_svg(o) {
+                e = e.with_svg(svg);
+            }
+            for f in FORMATS {
+                e = e.with_file(
+                    f.extension().to_ascii_uppercase(),
+                    format!("{}.{}", o.name, f.extension()),
+                );
+            }
+            e
+        })
+        .collect();
+    if let Err(e) = rcagd_io::report::write_report(out, &entries) {
+        errln!("error: {e}");
+        return EXIT_INPUT;
+    }
+    let failures = output::failures(&built.objects);
+    if !quiet {
+        out!("{}", output::summary_table(&built.objects));
+        outln!("wrote {}", out.display());
+    }
+    for f in &failures {
+        errln!("certificate fails: {f}");
+    }
+    if failures.is_empty() && built.errors.is_empty() {
+        EXIT_OK
+    } else {
+        EXIT_FAIL
+    }
+}

@@ -1,0 +1,56 @@
+//! # rcagd-cli
+//!
+//! The `rcagd` command-line tool as a library: recipe reading ([`recipe`]), typed
+//! parameter values ([`value`]), the op registry ([`ops`]), building ([`build`]),
+//! output ([`output`]) and the certified gallery ([`gallery`]). `src/main.rs` is the
+//! thin clap front end.
+//!
+//! Every problem with an input file is a [`source::Diagnostic`] with file, line and
+//! column; nothing that depends on input panics.
+
+/// Writes to standard output, ignoring errors (a closed pipe must not panic).
+pub fn write_stdout(s: &str) {
+    use std::io::Write as _;
+    let mut o = std::io::stdout().lock();
+    let _ = o.write_all(s.as_bytes());
+    let _ = o.flush();
+}
+
+/// Writes to standard error, ignoring errors.
+pub fn write_stderr(s: &str) {
+    use std::io::Write as _;
+    let _ = std::io::stderr().lock().write_all(s.as_bytes());
+}
+
+/// `print!` that never panics.
+macro_rules! out {
+    ($($t:tt)*) => { $crate::write_stdout(&format!($($t)*)) };
+}
+/// `println!` that never panics.
+macro_rules! outln {
+    ($($t:tt)*) => { $crate::write_stdout(&format!("{}\n", format_args!($($t)*))) };
+}
+/// `eprint!` that never panics.
+macro_rules! err {
+    ($($t:tt)*) => { $crate::write_stderr(&format!($($t)*)) };
+}
+/// `eprintln!` that never panics.
+macro_rules! errln {
+    ($($t:tt)*) => { $crate::write_stderr(&format!("{}\n", format_args!($($t)*))) };
+}
+
+pub mod build;
+pub mod gallery;
+pub mod model;
+pub mod ops;
+pub mod output;
+pub mod recipe;
+pub mod source;
+pub mod value;
+
+/// Exit code: every certificate holds.
+pub const EXIT_OK: u8 = 0;
+/// Exit code: a certificate fails (or a gallery object cannot be built).
+pub const EXIT_FAIL: u8 = 1;
+/// Exit code: a usage or input error (bad recipe, unreadable file, unwritable directory).
+pub const EXIT_INPUT: u8 = 2;

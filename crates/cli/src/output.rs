@@ -1,0 +1,208 @@
+//! Writing built objects: JSON (per DESIGN.md, via `rcagd_io::json`), OBJ and SVG
+//! (via `rcagd_io`), one file per object and format, and the summary table.
+
+use crate::model::{Geometry, Object};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// An output format of `rcagd build --format`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum OutFormat {
+    /// Exact JSON: homogeneous control points as "p/q" strings and floats, certificates.
+    Json,
+    /// Wavefront OBJ: a tessellation (patches) or polyline (curves).
+    Obj,
+    /// SVG picture: curves in the plane, patches in an axonometric view.
+    Svg,
+}
+
+impl OutFormat {
+    /// The file extension.
+    pub fn extension(self) -> &'static str {
+        match self {
+            OutFormat::Json => "json",
+            OutFormat::Obj => "obj",
+            OutFormat::Svg => "svg",
+        }
+    }
+}
+
+/// The JSON of one object (DESIGN.md: name, op, kind, degree, exact and float
+/// homogeneous control points, certificates).
+pub fn object_json(o: &Object) -> serde_json::Value {
+    rcagd_io::json::object_to_json(o)
+}
+
+/// The JSON document of several objects: `{"objects": […], "all_certificates_hold": …}`.
+pub fn objects_json_text(objects: &[Object]) -> Result<String, String> {
+    rcagd_io::json::objects_to_json_string(objects).map_err(|e| e.to_string())
+}
+
+/// The text of one object in one format.
+///
+/// # Errors
+/// The exporter's message.
+pub fn render(o: &Object, format: OutFormat) -> Result<String, String> {
+    match format {
+        OutFormat::Json => serde_json::to_string_pretty(&object_json(o)).map_err(|e| e.to_string()),
+        OutFormat::Obj => object_obj(o),
+        OutFormat::Svg => object_svg(o),
+    }
+}
+
+/// Segments per curve piece in OBJ polylines.
+pub const OBJ_CURVE_SEGMENTS: usize = 64;
+/// Grid cells per patch side in OBJ meshes.
+pub const OBJ_PATCH_SEGMENTS: usize = 16;
+
+/// The OBJ text of an object: curves as polylines (uniform in the parameter), patches
+/// as one triangle mesh with normals (a uniform grid per patch).
+///
+/// # Errors
+/// Tessellation or export errors (e.g. a point at infinity, dimension above 3).
+pub fn object_obj(o: &Object) -> Result<String, String> {
+    use rcagd_geom::tessellate::{tessellate_curve_uniform, tessellate_patch_uniform};
+    match &o.geometry {
+        Geometry::Curve(_) | Geometry::Curves(_) => {
+            let lines = o
+                .geometry
+                .curves()
+                .into_iter()
+                .map(|c| tessellate_curve_uniform(c, OBJ_CURVE_SEGMENTS).map(|p| p.points))
+                .collect::<Result<Vec<_>, _>>()
+                .map_err(|e| e.to_string())?;
+            rcagd_io::obj::polylines_to_obj(&o.name, &lines).map_err(|e| e.to_string())
+        }
+        Geometry::Patch(_) | Geometry::Patches(_) => {
+            let (mut pos, mut nor, mut tri) = (Vec::new(), Vec::new(), Vec::new());
+            for p in o.geometry.patches() {
+                let m = tessellate_patch_uniform(p, OBJ_PATCH_SEGMENTS, OBJ_PATCH_SEGMENTS)
+                    .map_err(|e| e.to_string())?;
+                let base = u32::try_from(pos.len()).map_err(|_| "mesh too large".to_string())?;
+                tri.extend(m.triangles.iter().map(|t| t.map(|i| i + base)));
+                pos.extend(m.positions);
+                nor.extend(m.normals);
+            }
+            rcagd_io::obj::mesh_to_obj(&o.name, &pos, &nor, &tri).map_err(|e| e.to_string())
+        }
+    }
+}
+
+/// The SVG picture of an object (`rcagd_io::svg::object_svg`, default options).
+///
+/// # Errors
+/// The exporter's message.
+pub fn object_svg(o: &Object) -> Result<String, String> {
+    rcagd_io::svg::object_svg(o, &rcagd_io::svg::SvgOptions::default()).map_err(|e| e.to_string())
+}
+
+/// Creates `dir` (and parents).
+///
+/// # Errors
+/// A message naming the directory.
+pub fn create_dir(dir: &Path) -> Result<(), String> {
+    std::fs::create_dir_all(dir)
+        .map_err(|e| format!("cannot create directory {}: {e}", dir.display()))
+}
+
+/// Writes `<dir>/<name>.<ext>` for every format; returns the paths written.
+///
+/// # Errors
+/// The first exporter or file-system error, naming the file.
+pub fn write_object(dir: &Path, o: &Object, formats: &[OutFormat]) -> Result<Vec<PathBuf>, String> {
+    let mut written = Vec::with_capacity(formats.len());
+    for &f in formats {
+        let path = dir.join(format!("{}.{}", o.name, f.extension()));
+        let text = render(o, f).map_err(|e| format!("{}: {e}", path.display()))?;
+        std::fs::write(&path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        written.push(path);
+    }
+    Ok(written)
+}
+
+/// `"3/3 hold"` or `"2/3 hold, 1 FAILS"`.
+pub fn certificate_summary(o: &Object) -> String {
+    let n = o.certificates.len();
+    let failed = o.certificates.iter().filter(|c| !c.holds).count();
+    if failed == 0 {
+        format!("{n}/{n} hold")
+    } else {
+        format!("{}/{n} hold, {failed} FAIL", n - failed)
+    }
+}
+
+/// The summary table: name, op, kind, degree, #control points, certificates.
+pub fn summary_table(objects: &[Object]) -> String {
+    let header = ["name", "op", "kind", "degree", "#cp", "certificates"];
+    let rows: Vec<[String; 6]> = objects
+        .iter()
+        .map(|o| {
+            [
+                o.name.clone(),
+                o.op.clone(),
+                o.kind().to_string(),
+                o.degree_summary(),
+                o.control_point_count().to_string(),
+                certificate_summary(o),
+            ]
+        })
+        .collect();
+    let mut widths = header.map(|h| h.chars().count());
+    for r in &rows {
+        for (w, c) in widths.iter_mut().zip(r) {
+            *w = (*w).max(c.chars().count());
+        }
+    }
+    let mut s = String::new();
+    let line = |s: &mut String, cells: &[String]| {
+        let mut l = String::new();
+        for (i, (c, w)) in cells.iter().zip(widths).enumerate() {
+            if i > 0 {
+                l.push_str("  ");
+            }
+            if i == 4 {
+                let _ = write!(l, "{c:>w$}");
+            } else {
+                let _ = write!(l, "{c:<w$}");
+            }
+        }
+        s.push_str(l.trim_end());
+        s.push('\n');
+    };
+    line(&mut s, &header.map(String::from));
+    line(&mut s, &widths.map(|w| "-".repeat(w)));
+    for r in &rows {
+        line(&mut s, r);
+    }
+    let total: usize = objects.iter().map(|o| o.certificates.len()).sum();
+    let failed: usize = objects
+        .iter()
+        .map(|o| o.certificates.iter().filter(|c| !c.holds).count())
+        .sum();
+    let _ = writeln!(
+        s,
+        "{} object{}, {total} certificate{}: {}",
+        objects.len(),
+        if objects.len() == 1 { "" } else { "s" },
+        if total == 1 { "" } else { "s" },
+        if failed == 0 {
+            "all hold".to_string()
+        } else {
+            format!("{failed} FAIL")
+        }
+    );
+    s
+}
+
+/// One line per failing certificate: `name: [FAILS, exact] property — residual …`.
+pub fn failures(objects: &[Object]) -> Vec<String> {
+    objects
+        .iter()
+        .flat_map(|o| {
+            o.certificates
+                .iter()
+                .filter(|c| !c.holds)
+                .map(move |c| format!("{}: {c}", o.name))
+        })
+        .collect()
+}

@@ -1,0 +1,387 @@
+//! Recipes: reading TOML or JSON files into a list of [`RecipeObject`]s with positions.
+//!
+//! A recipe is a list of objects, each with a unique `name`, an `op` and the op's
+//! parameters:
+//!
+//! ```toml
+//! [[object]]
+//! name = "quarter"
+//! op = "circle_arc"
+//! center = [0, 0]
+//! radius = 1
+//! ```
+//!
+//! or in JSON `{"object": [{"name": "quarter", "op": "circle_arc", …}]}`.
+//! The format is chosen by the file extension (`.toml`, `.json`), otherwise by the
+//! content (a document starting with `{` is JSON).
+
+pub mod json;
+pub mod toml;
+pub mod tree;
+
+use crate::source::{closest, Diagnostic, SourceFile, Span};
+pub use tree::{Entry, NumberText, RecipeValue, ValueKind};
+
+/// The two recipe syntaxes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    /// TOML, `[[object]]` tables.
+    Toml,
+    /// JSON, `{"object": [ … ]}`.
+    Json,
+}
+
+impl Format {
+    /// The format for a file name: by extension, else `None`.
+    pub fn from_extension(path: &str) -> Option<Format> {
+        let ext = std::path::Path::new(path)
+            .extension()?
+            .to_str()?
+            .to_ascii_lowercase();
+        match ext.as_str() {
+            "toml" => Some(Format::Toml),
+            "json" => Some(Format::Json),
+            _ => None,
+        }
+    }
+
+    /// Guesses the format from the text: JSON if the first non-blank character is `{`.
+    pub fn sniff(text: &str) -> Format {
+        match text
+            .trim_start_matches('\u{feff}')
+            .trim_start()
+            .chars()
+            .next()
+        {
+            Some('{') => Format::Json,
+            _ => Format::Toml,
+        }
+    }
+}
+
+/// One `[[object]]` of a recipe.
+#[derive(Debug, Clone)]
+pub struct RecipeObject {
+    /// The unique name (also the output file stem).
+    pub name: String,
+    /// The op name.
+    pub op: String,
+    /// Where the `op` key is written (construction errors point here).
+    pub op_key_span: Span,
+    /// Where the op's value is written (unknown-op errors point here).
+    pub op_span: Span,
+    /// The object's table (TOML: the `[[object]]` header; JSON: the `{ … }`).
+    pub span: Span,
+    /// All other entries: the op's parameters, in source order.
+    pub params: Vec<Entry>,
+}
+
+/// A parsed recipe: its source and its objects.
+#[derive(Debug, Clone)]
+pub struct Recipe {
+    /// The source (for positions in diagnostics).
+    pub file: SourceFile,
+    /// The objects in source order.
+    pub objects: Vec<RecipeObject>,
+}
+
+/// The longest accepted object name.
+pub const MAX_NAME_LEN: usize = 100;
+
+/// Checks that an object name is usable as a file name stem on every platform.
+pub fn check_name(name: &str) -> Result<(), String> {
+    if name.is_empty() {
+        return Err("the object name is empty".into());
+    }
+    if name.chars().count() > MAX_NAME_LEN {
+        return Err(format!(
+            "the object name is longer than {MAX_NAME_LEN} characters"
+        ));
+    }
+    if name.starts_with('.') {
+        return Err("the object name must not start with '.'".into());
+    }
+    if let Some(c) = name
+        .chars()
+        .find(|c| !(c.is_ascii_alphanumeric() || matches!(c, '_' | '-' | '.')))
+    {
+        return Err(format!(
+            "the object name contains {c:?}; use letters, digits, '_', '-' and '.' (it becomes a file name)"
+        ));
+    }
+    Ok(())
+}
+
+impl Recipe {
+    /// Reads a recipe from raw bytes; `file_name` is used for the format (by
+    /// extension) and in diagnostics.
+    ///
+    /// # Errors
+    /// All problems found, each with its position.
+    pub fn from_bytes(
+        file_name: &str,
+        bytes: &[u8],
+        format: Option<Format>,
+    ) -> Result<Recipe, Vec<Diagnostic>> {
+        match std::str::from_utf8(bytes) {
+            Ok(text) => Recipe::parse(file_name, text, format),
+            Err(e) => {
+                let lossy = String::from_utf8_lossy(bytes.get(..e.valid_up_to()).unwrap_or(&[]));
+                let file = SourceFile::new(file_name, lossy.as_ref());
+                let at = lossy.len();
+                Err(vec![file.error(
+                    Span::new(at, at),
+                    format!("the file is not valid UTF-8 (byte {})", e.valid_up_to() + 1),
+                )])
+            }
+        }
+    }
+
+    /// Parses a recipe text. `format`: forced format, else by extension of
+    /// `file_name`, else by content.
+    ///
+    /// # Errors
+    /// All problems found, each with its position.
+    pub fn parse(
+        file_name: &str,
+        text: &str,
+        format: Option<Format>,
+    ) -> Result<Recipe, Vec<Diagnostic>> {
+        let file = SourceFile::new(file_name, text);
+        let format = format
+            .or_else(|| Format::from_extension(file_name))
+            .unwrap_or_else(|| Format::sniff(text));
+        let root = match format {
+            Format::Toml => toml::parse(text),
+            Format::Json => json::parse(text),
+        }
+        .map_err(|e| {
+            let what = match format {
+                Format::Toml => "TOML",
+                Format::Json => "JSON",
+            };
+            vec![file.error(e.span, format!("{what} syntax error: {}", e.message))]
+        })?;
+        let objects = objects(&file, &root, format)?;
+        Ok(Recipe { file, objects })
+    }
+}
+
+fn objects(
+    file: &SourceFile,
+    root: &RecipeValue,
+    format: Format,
+) -> Result<Vec<RecipeObject>, Vec<Diagnostic>> {
+    let shape_note = match format {
+        Format::Toml => "a recipe is a list of [[object]] tables, each with `name`, `op` and the op's parameters",
+        Format::Json => "a JSON recipe is {\"object\": [ {\"name\": …, \"op\": …, …}, … ]}",
+    };
+    let Some(entries) = root.as_table() else {
+        return Err(vec![file
+            .error(
+                root.span,
+                format!(
+                    "expected the recipe to be a table, found {}",
+                    root.type_name()
+                ),
+            )
+            .note(shape_note)]);
+    };
+    let mut diags = Vec::new();
+    let mut list = None;
+    for e in entries {
+        if e.key == "object" {
+            list = Some(e);
+        } else {
+            let mut d = file.error(e.key_span, format!("unknown top-level key `{}`", e.key));
+            if let Some(s) = closest(&e.key, ["object"]) {
+                d = d.note(format!("did you mean `{s}`?"));
+            }
+            diags.push(d.note(shape_note));
+        }
+    }
+    let Some(list) = list else {
+        let span = match format {
+            Format::Toml => Span::new(0, 0),
+            Format::Json => root.span,
+        };
+        diags.push(
+            file.error(span, "the recipe has no objects")
+                .note(shape_note),
+        );
+        return Err(diags);
+    };
+    let Some(items) = list.value.as_array() else {
+        diags.push(
+            file.error(
+                list.value.span,
+                format!(
+                    "`object` must be an array of tables, found {}",
+                    list.value.type_name()
+                ),
+            )
+            .note(shape_note),
+        );
+        return Err(diags);
+    };
+    if items.is_empty() {
+        diags.push(
+            file.error(list.value.span, "the recipe has no objects")
+                .note(shape_note),
+        );
+    }
+    let mut out: Vec<RecipeObject> = Vec::new();
+    let mut seen: Vec<(String, Span)> = Vec::new();
+    for item in items {
+        match object(file, item) {
+            Ok(o) => {
+                if let Some((_, first)) = seen.iter().find(|(n, _)| *n == o.name) {
+                    let first = file.line_col(first.start);
+                    let at = item.get("name").map_or(item.span, |e| e.value.span);
+                    diags.push(
+                        file.error(at, format!("duplicate object name {:?}", o.name))
+                            .note(format!(
+                                "the first object called {:?} is at line {}, column {}; names must be unique",
+                                o.name, first.line, first.column
+                            )),
+                    );
+                } else {
+                    let at = item.get("name").map_or(item.span, |e| e.value.span);
+                    seen.push((o.name.clone(), at));
+                    out.push(o);
+                }
+            }
+            Err(d) => diags.push(d),
+        }
+    }
+    if diags.is_empty() {
+        Ok(out)
+    } else {
+        Err(diags)
+    }
+}
+
+fn object(file: &SourceFile, item: &RecipeValue) -> Result<RecipeObject, Diagnostic> {
+    let Some(entries) = item.as_table() else {
+        return Err(file.error(
+            item.span,
+            format!("expected an object table, found {}", item.type_name()),
+        ));
+    };
+    let string_field = |key: &str| -> Result<(&Entry, String), Diagnostic> {
+        let e = entries.iter().find(|e| e.key == key).ok_or_else(|| {
+            file.error(item.span, format!("the object has no `{key}`"))
+                .note("every object needs `name` (unique) and `op` (see `rcagd ops`)")
+        })?;
+        match &e.value.kind {
+            ValueKind::String(s) => Ok((e, s.clone())),
+            _ => Err(file.error(
+                e.value.span,
+                format!(
+                    "`{key}` must be a string, found {} {}",
+                    e.value.type_name(),
+                    e.value.preview()
+                ),
+            )),
+        }
+    };
+    let (name_entry, name) = string_field("name")?;
+    check_name(&name).map_err(|m| file.error(name_entry.value.span, m))?;
+    let (op_entry, op) = string_field("op")?;
+    Ok(RecipeObject {
+        name,
+        op,
+        op_key_span: op_entry.key_span,
+        op_span: op_entry.value.span,
+        span: item.span,
+        params: entries
+            .iter()
+            .filter(|e| e.key != "name" && e.key != "op")
+            .cloned()
+            .collect(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn first_error(name: &str, src: &str) -> Diagnostic {
+        Recipe::parse(name, src, None).unwrap_err().remove(0)
+    }
+
+    #[test]
+    fn reads_toml_and_json_alike() {
+        let t = Recipe::parse(
+            "r.toml",
+            "[[object]]\nname = \"a\"\nop = \"circle\"\nradius = 2\n",
+            None,
+        )
+        .unwrap();
+        let j = Recipe::parse(
+            "r.json",
+            "{\"object\": [{\"name\": \"a\", \"op\": \"circle\", \"radius\": 2}]}",
+            None,
+        )
+        .unwrap();
+        for r in [&t, &j] {
+            assert_eq!(r.objects.len(), 1);
+            assert_eq!(r.objects[0].name, "a");
+            assert_eq!(r.objects[0].op, "circle");
+            assert_eq!(r.objects[0].params.len(), 1);
+            assert_eq!(r.objects[0].params[0].key, "radius");
+        }
+        let p = t.file.line_col(t.objects[0].op_key_span.start);
+        assert_eq!((p.line, p.column), (3, 1));
+    }
+
+    #[test]
+    fn sniffs_format() {
+        assert_eq!(Format::sniff("  \n{\"object\": []}"), Format::Json);
+        assert_eq!(Format::sniff("[[object]]"), Format::Toml);
+        let r = Recipe::parse(
+            "recipe.txt",
+            "{\"object\": [{\"name\": \"a\", \"op\": \"x\"}]}",
+            None,
+        );
+        assert!(r.is_ok());
+    }
+
+    #[test]
+    fn structural_errors() {
+        let d = first_error("r.toml", "[[object]]\nop = \"circle\"\n");
+        assert!(d.message.contains("no `name`"), "{d}");
+        assert_eq!((d.line, d.column), (1, 1));
+        let d = first_error(
+            "r.toml",
+            "[[object]]\nname = \"a\"\nop = \"c\"\n[[object]]\nname = \"a\"\nop = \"c\"\n",
+        );
+        assert!(d.message.contains("duplicate object name"), "{d}");
+        assert_eq!((d.line, d.column), (5, 8));
+        assert!(d.to_string().contains("line 2, column 8"), "{d}");
+        let d = first_error("r.toml", "[[objects]]\nname = \"a\"\n");
+        assert!(d.message.contains("unknown top-level key"), "{d}");
+        assert!(d.to_string().contains("did you mean `object`"), "{d}");
+        let d = first_error("r.toml", "[[object]]\nname = \"a b\"\nop = \"c\"\n");
+        assert!(d.message.contains("name contains"), "{d}");
+        let d = first_error("r.json", "[1]");
+        assert!(
+            d.message.contains("expected the recipe to be a table"),
+            "{d}"
+        );
+        let d = first_error("r.toml", "");
+        assert!(d.message.contains("no objects"), "{d}");
+        let d = first_error("r.toml", "[[object]]\nname = 3\n");
+        assert!(d.message.contains("`name` must be a string"), "{d}");
+        assert_eq!((d.line, d.column), (2, 8));
+    }
+
+    #[test]
+    fn invalid_utf8() {
+        let d = Recipe::from_bytes("r.toml", b"a = 1\nb = \xff", None)
+            .unwrap_err()
+            .remove(0);
+        assert!(d.message.contains("UTF-8"), "{d}");
+        assert_eq!((d.line, d.column), (2, 5));
+    }
+}

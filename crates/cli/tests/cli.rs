@@ -1,0 +1,564 @@
+//! Integration tests of the `rcagd` binary: gallery, build (TOML, JSON, stdin),
+//! output formats, exit codes, exact numbers, and located errors of every kind.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_rcagd"))
+}
+
+/// A fresh directory under `target/` for one test.
+fn temp_dir(tag: &str) -> PathBuf {
+    let dir =
+        Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("create temp dir");
+    dir
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let p = dir.join(name);
+    std::fs::write(&p, text).expect("write recipe");
+    p
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn build(path: &Path) -> Output {
+    bin().arg("build").arg(path).output().expect("run rcagd")
+}
+
+/// Builds `text` written to a file called `name`; expects exit code 2 and an error at
+/// `line:col` whose first line contains `needle`. Returns stderr.
+fn expect_error(name: &str, text: &str, line: usize, col: usize, needle: &str) -> String {
+    let dir = temp_dir(&format!("err-{}", name.replace('.', "-")));
+    let p = write(&dir, name, text);
+    let o = build(&p);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{name}: {err}");
+    let want = format!("{}:{line}:{col}: error: ", p.display());
+    let first = err.lines().next().unwrap_or("");
+    assert!(
+        first.starts_with(&want),
+        "{name}: expected {want:?}, got:\n{err}"
+    );
+    assert!(
+        first.contains(needle),
+        "{name}: expected {needle:?} in:\n{err}"
+    );
+    assert!(stdout(&o).is_empty(), "nothing printed on error");
+    assert!(!err.contains("panicked"), "{err}");
+    err
+}
+
+const QUARTER_TOML: &str = r#"# a quarter circle
+[[object]]
+name = "quarter"
+op = "circle_arc"
+radius = 1
+from = [1, 0]
+to = [0, 1]
+"#;
+
+#[test]
+fn gallery_writes_everything_and_all_certificates_hold() {
+    let dir = temp_dir("gallery");
+    let o = bin()
+        .args(["gallery", "--out"])
+        .arg(&dir)
+        .output()
+        .expect("run rcagd gallery");
+    let out = stdout(&o);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "stdout:\n{out}\nstderr:\n{}",
+        stderr(&o)
+    );
+    // The summary table.
+    let header = out.lines().next().expect("table");
+    for col in ["name", "op", "kind", "degree", "#cp", "certificates"] {
+        assert!(header.contains(col), "{header}");
+    }
+    assert!(out.contains("all hold"), "{out}");
+    // No progress bar when stderr is not a terminal.
+    assert!(stderr(&o).is_empty(), "{}", stderr(&o));
+    let report: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.join("report.json")).expect("report.json"),
+    )
+    .expect("report is JSON");
+    assert_eq!(report["all_certificates_hold"], true);
+    let objects = report["objects"].as_array().expect("objects");
+    // Every object of every embedded recipe is in the report.
+    let mut expected = Vec::new();
+    for (file, text) in rcagd_cli::gallery::RECIPES {
+        let r = rcagd_cli::recipe::Recipe::parse(file, text, None).expect("gallery recipe parses");
+        expected.extend(r.objects.into_iter().map(|o| o.name));
+    }
+    assert!(!expected.is_empty());
+    assert_eq!(objects.len(), expected.len());
+    for name in &expected {
+        let o = objects
+            .iter()
+            .find(|o| o["name"] == name.as_str())
+            .unwrap_or_else(|| panic!("{name} missing from report.json"));
+        assert_eq!(o["all_certificates_hold"], true, "{name}");
+        assert!(
+            !o["certificates"]
+                .as_array()
+                .expect("certificates")
+                .is_empty(),
+            "{name}"
+        );
+        assert!(out.contains(name.as_str()), "{name} missing from the table");
+        for ext in ["json", "obj", "svg"] {
+            let f = dir.join(format!("{name}.{ext}"));
+            let text =
+                std::fs::read_to_string(&f).unwrap_or_else(|_| panic!("{} missing", f.display()));
+            assert!(!text.is_empty(), "{} empty", f.display());
+        }
+        let j: serde_json::Value = serde_json::from_str(
+            &std::fs::read_to_string(dir.join(format!("{name}.json"))).expect("json"),
+        )
+        .expect("object json");
+        assert_eq!(j["name"], name.as_str());
+        assert!(j["control_points"].is_array(), "{name}");
+    }
+    assert!(dir.join("index.html").exists());
+}
+
+#[test]
+fn gallery_quiet_prints_nothing() {
+    let dir = temp_dir("gallery-quiet");
+    let o = bin()
+        .args(["gallery", "--quiet", "--out"])
+        .arg(&dir)
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stdout(&o).is_empty());
+    assert!(stderr(&o).is_empty());
+    assert!(dir.join("report.json").exists());
+}
+
+#[test]
+fn build_toml_prints_exact_json() {
+    let dir = temp_dir("build-toml");
+    let p = write(&dir, "r.toml", QUARTER_TOML);
+    let o = build(&p);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).expect("stdout is JSON");
+    assert_eq!(v["all_certificates_hold"], true);
+    let q = &v["objects"][0];
+    assert_eq!(q["name"], "quarter");
+    assert_eq!(q["op"], "circle_arc");
+    assert_eq!(q["kind"], "curve");
+    assert_eq!(q["degree"], 2);
+    assert_eq!(
+        q["control_points"],
+        serde_json::json!([["1", "1", "0"], ["1", "1", "1"], ["2", "0", "2"]])
+    );
+    assert_eq!(
+        q["params"]["center"],
+        serde_json::json!(["0", "0"]),
+        "defaults are echoed"
+    );
+}
+
+#[test]
+fn build_json_recipe_and_sniffing() {
+    let dir = temp_dir("build-json");
+    let text = r#"{"object": [
+  {"name": "c", "op": "circle", "center": [0.5, "-1"], "radius": "3/2"},
+  {"name": "b", "op": "bezier_curve", "points": [[0, 0], [0.1, 1], [1, 0]]}
+]}"#;
+    for name in ["r.json", "r.recipe"] {
+        let p = write(&dir, name, text);
+        let o = build(&p);
+        assert_eq!(o.status.code(), Some(0), "{name}: {}", stderr(&o));
+        let v: serde_json::Value = serde_json::from_str(&stdout(&o)).expect("JSON");
+        assert_eq!(v["objects"][0]["kind"], "curves");
+        assert_eq!(
+            v["objects"][0]["params"]["center"],
+            serde_json::json!(["1/2", "-1"])
+        );
+        assert_eq!(
+            v["objects"][1]["control_points"][1],
+            serde_json::json!(["1", "1/10", "1"])
+        );
+    }
+}
+
+#[test]
+fn decimals_are_exact() {
+    let dir = temp_dir("exact");
+    let p = write(
+        &dir,
+        "r.toml",
+        "[[object]]\nname = \"line\"\nop = \"bezier_curve\"\npoints = [[0.1, \"0.2\"], [\"1e-3\", -0.125]]\n",
+    );
+    let o = build(&p);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).expect("JSON");
+    let obj = &v["objects"][0];
+    assert_eq!(
+        obj["control_points"],
+        serde_json::json!([["1", "1/10", "1/5"], ["1", "1/1000", "-1/8"]])
+    );
+    assert_eq!(
+        obj["params"]["points"],
+        serde_json::json!([["1/10", "1/5"], ["1/1000", "-1/8"]])
+    );
+    assert!(
+        !stdout(&o).contains("0.1000000000000000055"),
+        "never through f64"
+    );
+}
+
+#[test]
+fn build_writes_formats_to_out_dir() {
+    let dir = temp_dir("build-out");
+    let p = write(&dir, "r.toml", QUARTER_TOML);
+    let out = dir.join("out");
+    let o = bin()
+        .arg("build")
+        .arg(&p)
+        .arg("--out")
+        .arg(&out)
+        .args(["--format", "json", "--format", "obj,svg"])
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    for ext in ["json", "obj", "svg"] {
+        assert!(out.join(format!("quarter.{ext}")).exists(), "{ext}");
+    }
+    let svg = std::fs::read_to_string(out.join("quarter.svg")).expect("svg");
+    assert!(svg.contains("<svg"), "{svg}");
+    let obj = std::fs::read_to_string(out.join("quarter.obj")).expect("obj");
+    assert!(obj.contains("\nv ") && obj.contains("\nl "), "{obj}");
+    // Default format: JSON only.
+    let out2 = dir.join("out2");
+    let o = bin()
+        .arg("build")
+        .arg(&p)
+        .arg("--out")
+        .arg(&out2)
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(0));
+    assert!(out2.join("quarter.json").exists());
+    assert!(!out2.join("quarter.obj").exists());
+}
+
+#[test]
+fn build_from_stdin() {
+    let mut child = bin()
+        .args(["build", "-"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("spawn");
+    {
+        use std::io::Write as _;
+        let mut stdin = child.stdin.take().expect("stdin");
+        stdin
+            .write_all(QUARTER_TOML.as_bytes())
+            .expect("write stdin");
+    }
+    let o = child.wait_with_output().expect("wait");
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stdout(&o).contains("\"quarter\""));
+}
+
+#[test]
+fn failing_certificate_exits_1() {
+    let dir = temp_dir("cert-fails");
+    let p = write(
+        &dir,
+        "r.toml",
+        "[[object]]\nname = \"pole\"\nop = \"bezier_curve\"\npoints = [[0, 0], [1, 1], [2, 0]]\nweights = [1, -1, 1]\n",
+    );
+    let o = build(&p);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(
+        err.contains(&format!(
+            "{}:3:1: error: certificate of \"pole\" fails",
+            p.display()
+        )),
+        "{err}"
+    );
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).expect("JSON still printed");
+    assert_eq!(v["all_certificates_hold"], false);
+}
+
+#[test]
+fn usage_errors_exit_2() {
+    let o = bin().arg("frobnicate").output().expect("run");
+    assert_eq!(o.status.code(), Some(2));
+    let o = bin().args(["build"]).output().expect("run");
+    assert_eq!(o.status.code(), Some(2));
+    let o = bin()
+        .args(["build", "no/such/recipe.toml"])
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("cannot read the recipe"),
+        "{}",
+        stderr(&o)
+    );
+    let dir = temp_dir("usage");
+    let p = write(&dir, "r.toml", QUARTER_TOML);
+    let o = bin()
+        .arg("build")
+        .arg(&p)
+        .args(["--format", "obj"])
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(2), "obj without --out");
+    let o = bin()
+        .arg("build")
+        .arg(&p)
+        .args(["--format", "pdf"])
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(2));
+    let o = bin().arg("--help").output().expect("run");
+    assert_eq!(o.status.code(), Some(0));
+    assert!(stdout(&o).contains("gallery"));
+}
+
+#[test]
+fn ops_lists_every_op() {
+    let o = bin().arg("ops").output().expect("run");
+    assert_eq!(o.status.code(), Some(0));
+    let text = stdout(&o);
+    for op in rcagd_cli::ops::all() {
+        assert!(text.contains(op.name), "{} missing", op.name);
+        for p in op.params {
+            assert!(
+                text.contains(&format!("{}: {}", p.name, p.kind.type_name())),
+                "{}.{}",
+                op.name,
+                p.name
+            );
+        }
+    }
+    let o = bin().args(["ops", "circle_arc"]).output().expect("run");
+    assert_eq!(o.status.code(), Some(0));
+    assert!(stdout(&o).contains("example:"));
+    assert!(stdout(&o).contains("op = \"circle_arc\""));
+    let o = bin().args(["ops", "circle_ark"]).output().expect("run");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("did you mean \"circle_arc\""),
+        "{}",
+        stderr(&o)
+    );
+}
+
+// ---- located errors, one per kind ----------------------------------------------
+
+#[test]
+fn toml_syntax_error() {
+    expect_error(
+        "syntax.toml",
+        "[[object]]\nname = \"a\"\nop = \"circle\"\nradius = [1, 2\n",
+        4,
+        15,
+        "TOML syntax error",
+    );
+}
+
+#[test]
+fn json_syntax_error() {
+    expect_error(
+        "syntax.json",
+        "{\"object\": [\n  {\"name\": \"a\", \"op\": \"circle\", \"radius\": 1,}\n]}",
+        2,
+        45,
+        "JSON syntax error: trailing comma",
+    );
+    expect_error(
+        "syntax2.json",
+        "{\"object\": [\n  {\"name\": \"a\" \"op\": 1}]}",
+        2,
+        16,
+        "expected ',' or '}' after an object member",
+    );
+    expect_error(
+        "syntax3.json",
+        "{\"object\": [\n  {\"name\" 1}]}",
+        2,
+        11,
+        "expected ':' after the key \"name\"",
+    );
+}
+
+#[test]
+fn unknown_op_suggests() {
+    let err = expect_error(
+        "unknown-op.toml",
+        "[[object]]\nname = \"a\"\nop = \"circl_arc\"\nradius = 1\n",
+        3,
+        6,
+        "unknown op \"circl_arc\"",
+    );
+    assert!(err.contains("did you mean \"circle_arc\"?"), "{err}");
+    assert!(err.contains("known ops:"), "{err}");
+}
+
+#[test]
+fn missing_parameter_lists_expected() {
+    let err = expect_error(
+        "missing.toml",
+        "# comment\n\n[[object]]\nname = \"a\"\nop = \"circle_arc\"\nradius = 1\nfrom = [1, 0]\n",
+        3,
+        1,
+        "needs the parameter `to` (point [x, y])",
+    );
+    assert!(err.contains("parameters of `circle_arc`:"), "{err}");
+    assert!(err.contains("radius: number (required)"), "{err}");
+    assert!(
+        err.contains("center: point [x, y] (default [0, 0])"),
+        "{err}"
+    );
+    // JSON: at the object's brace.
+    expect_error(
+        "missing.json",
+        "{\"object\": [\n   {\"name\": \"a\", \"op\": \"circle\"}]}",
+        2,
+        4,
+        "needs the parameter `radius`",
+    );
+}
+
+#[test]
+fn unknown_parameter() {
+    let err = expect_error(
+        "unknown-param.toml",
+        "[[object]]\nname = \"a\"\nop = \"circle\"\nradius = 1\n  centre = [0, 0]\n",
+        5,
+        3,
+        "unknown parameter `centre` for op `circle`",
+    );
+    assert!(err.contains("did you mean `center`?"), "{err}");
+    assert!(err.contains("radius: number (required)"), "{err}");
+}
+
+#[test]
+fn wrong_type() {
+    expect_error(
+        "type.toml",
+        "[[object]]\nname = \"a\"\nop = \"circle_arc\"\nradius = 1\nfrom = [1, 0]\nto = [0, 1]\nclockwise = \"no\"\n",
+        7,
+        13,
+        "parameter `clockwise`: expected a boolean (true or false), found a string \"no\"",
+    );
+    expect_error(
+        "type.json",
+        "{\"object\": [{\"name\": \"a\", \"op\": \"circle\",\n \"radius\": [1]}]}",
+        2,
+        12,
+        "expected a number, found an array",
+    );
+}
+
+#[test]
+fn not_a_number_shows_text() {
+    expect_error(
+        "nan.toml",
+        "[[object]]\nname = \"a\"\nop = \"circle\"\nradius = \"1/x\"\n",
+        4,
+        10,
+        "not a number: \"1/x\"",
+    );
+    expect_error(
+        "inf.toml",
+        "[[object]]\nname = \"a\"\nop = \"circle\"\nradius = inf\n",
+        4,
+        10,
+        "not a number: `inf`",
+    );
+    expect_error(
+        "nan.json",
+        "{\"object\": [{\"name\": \"a\", \"op\": \"circle\", \"center\": [0, \"zero\"], \"radius\": 1}]}",
+        1,
+        57,
+        "not a number: \"zero\"",
+    );
+}
+
+#[test]
+fn wrong_array_length() {
+    expect_error(
+        "len.toml",
+        "[[object]]\nname = \"a\"\nop = \"circle\"\nradius = 1\ncenter = [0, 0, 0]\n",
+        5,
+        10,
+        "expected a point [x, y], found an array of 3 elements",
+    );
+    expect_error(
+        "ragged.toml",
+        "[[object]]\nname = \"a\"\nop = \"bezier_curve\"\npoints = [[0, 0], [1, 1, 1]]\n",
+        4,
+        19,
+        "point 1: expected a point [x, y], found an array of 3 elements",
+    );
+}
+
+#[test]
+fn construction_error_points_at_op_key() {
+    let err = expect_error(
+        "construct.toml",
+        "[[object]]\nname = \"a\"\n  op = \"circle_arc\"\nradius = 1\nfrom = [1, 0]\nto = [1, 1]\n",
+        3,
+        3,
+        "cannot build \"a\" (op `circle_arc`)",
+    );
+    assert!(err.contains("not on the circle"), "{err}");
+    expect_error(
+        "radius.toml",
+        "[[object]]\nname = \"a\"\nop = \"circle\"\nradius = -1\n",
+        3,
+        1,
+        "radius must be positive",
+    );
+}
+
+#[test]
+fn duplicate_names() {
+    let err = expect_error(
+        "dup.toml",
+        "[[object]]\nname = \"a\"\nop = \"circle\"\nradius = 1\n\n[[object]]\nname = \"a\"\nop = \"circle\"\nradius = 2\n",
+        7,
+        8,
+        "duplicate object name \"a\"",
+    );
+    assert!(err.contains("line 2, column 8"), "{err}");
+}
+
+#[test]
+fn all_errors_are_reported_at_once() {
+    let dir = temp_dir("many");
+    let p = write(
+        &dir,
+        "r.toml",
+        "[[object]]\nname = \"a\"\nop = \"circle\"\nradius = \"x\"\n\n[[object]]\nname = \"b\"\nop = \"nope\"\n",
+    );
+    let o = build(&p);
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert!(err.contains(":4:10: error:"), "{err}");
+    assert!(err.contains(":8:6: error:"), "{err}");
+    assert!(err.contains("2 errors"), "{err}");
+}

@@ -1,0 +1,154 @@
+//! `docs/recipes.md` and `examples/recipes/` stay consistent with the op registry:
+//! every op (with every parameter and its example) is documented, and every recipe in
+//! the docs and the examples builds with all certificates holding.
+
+use rcagd_cli::build::build_recipe;
+use rcagd_cli::ops::{self, describe};
+use rcagd_cli::recipe::Recipe;
+use std::path::{Path, PathBuf};
+
+fn workspace() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+fn recipes_md() -> String {
+    std::fs::read_to_string(workspace().join("docs/recipes.md")).expect("docs/recipes.md exists")
+}
+
+/// The ```toml blocks of a Markdown text, with their 1-based starting line.
+fn toml_blocks(md: &str) -> Vec<(usize, String)> {
+    let mut out = Vec::new();
+    let mut current: Option<(usize, String)> = None;
+    for (i, line) in md.lines().enumerate() {
+        match &mut current {
+            None if line.trim_start().starts_with("```toml") => {
+                current = Some((i + 2, String::new()))
+            }
+            None => {}
+            Some(_) if line.trim_start().starts_with("```") => out.extend(current.take()),
+            Some((_, text)) => {
+                text.push_str(line);
+                text.push('\n');
+            }
+        }
+    }
+    out
+}
+
+fn assert_builds_and_holds(label: &str, text: &str) -> Vec<String> {
+    let recipe = Recipe::parse(label, text, None).unwrap_or_else(|d| panic!("{label}: {}", d[0]));
+    let objects = build_recipe(&recipe, |_| {}).unwrap_or_else(|d| panic!("{label}: {}", d[0]));
+    for o in &objects {
+        for c in &o.certificates {
+            assert!(c.holds, "{label}: {}: {c}", o.name);
+        }
+    }
+    objects.into_iter().map(|o| o.op).collect()
+}
+
+#[test]
+fn every_op_is_documented() {
+    let md = recipes_md();
+    let regenerate =
+        "regenerate the op section with `rcagd ops --markdown` (or `rcagd ops NAME --markdown`)";
+    for op in ops::all() {
+        let heading = format!("### `{}`\n", op.name);
+        let start = md
+            .find(&heading)
+            .unwrap_or_else(|| panic!("docs/recipes.md has no section {heading:?}; {regenerate}"));
+        let rest = &md[start + heading.len()..];
+        let section = &rest[..rest
+            .find("\n### ")
+            .or_else(|| rest.find("\n## "))
+            .unwrap_or(rest.len())];
+        for p in op.params {
+            let row = format!("| `{}` | {} |", p.name, p.kind.type_name());
+            assert!(
+                section.contains(&row),
+                "{}: parameter row {row:?} missing; {regenerate}",
+                op.name
+            );
+        }
+        assert!(
+            section.contains(op.example.trim()),
+            "{}: the example differs from `rcagd ops {}`; {regenerate}",
+            op.name,
+            op.name
+        );
+        // The generated section matches what `rcagd ops --markdown` prints now.
+        assert!(
+            md.contains(&describe::op_markdown(op)),
+            "{}: section out of date; {regenerate}",
+            op.name
+        );
+    }
+}
+
+#[test]
+fn every_documented_op_exists() {
+    let md = recipes_md();
+    for line in md.lines() {
+        if let Some(name) = line.strip_prefix("### `").and_then(|l| l.strip_suffix('`')) {
+            assert!(
+                ops::find(name).is_some(),
+                "docs/recipes.md documents unknown op {name}"
+            );
+        }
+    }
+}
+
+#[test]
+fn every_recipe_in_the_docs_builds() {
+    let md = recipes_md();
+    let blocks = toml_blocks(&md);
+    assert!(
+        blocks.len() >= ops::all().count(),
+        "expected an example per op"
+    );
+    for (line, text) in blocks {
+        assert_builds_and_holds(&format!("docs/recipes.md (block at line {line})"), &text);
+    }
+}
+
+#[test]
+fn every_example_recipe_builds_and_is_in_the_gallery() {
+    let dir = workspace().join("examples/recipes");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .expect("examples/recipes")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| {
+            matches!(
+                p.extension().and_then(|e| e.to_str()),
+                Some("toml" | "json")
+            )
+        })
+        .collect();
+    files.sort();
+    assert!(!files.is_empty());
+    for f in files {
+        let text = std::fs::read_to_string(&f).expect("read recipe");
+        let label = format!(
+            "examples/recipes/{}",
+            f.file_name().and_then(|n| n.to_str()).unwrap_or("?")
+        );
+        assert_builds_and_holds(&label, &text);
+        assert!(
+            rcagd_cli::gallery::RECIPES
+                .iter()
+                .any(|(name, t)| *name == label && *t == text),
+            "{label} is not embedded in the gallery (add it to gallery::RECIPES)"
+        );
+    }
+}
+
+#[test]
+fn every_op_example_builds() {
+    for op in ops::all() {
+        let used = assert_builds_and_holds(&format!("example of {}", op.name), op.example);
+        assert!(
+            used.iter().any(|o| o == op.name),
+            "the example of {} does not use it",
+            op.name
+        );
+    }
+}

@@ -1,0 +1,269 @@
+//! The exchange model: a named, certified object with exact rational geometry.
+//!
+//! Every exporter (JSON, OBJ, SVG, the report) takes an [`Object`]: the result of one
+//! recipe entry, i.e. its `name`, the `op` that built it, the op's `params` (as JSON),
+//! its exact [`Geometry`] and its [`Certificate`]s.
+
+use rcagd_algebra::{Certificate, Rational};
+use rcagd_geom::{BezierCurve, BezierPatch, GeomError};
+
+/// Exact rational geometry: one or several homogeneous rational Bézier curves or
+/// tensor-product patches.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Geometry {
+    /// One curve.
+    Curve(BezierCurve<Rational>),
+    /// A chain or collection of curves (e.g. the pieces of a circle).
+    Curves(Vec<BezierCurve<Rational>>),
+    /// One patch.
+    Patch(BezierPatch<Rational>),
+    /// A collection of patches.
+    Patches(Vec<BezierPatch<Rational>>),
+}
+
+impl Geometry {
+    /// `"curve"`, `"curves"`, `"patch"` or `"patches"`.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Geometry::Curve(_) => "curve",
+            Geometry::Curves(_) => "curves",
+            Geometry::Patch(_) => "patch",
+            Geometry::Patches(_) => "patches",
+        }
+    }
+
+    /// The curves (empty for patch geometry).
+    pub fn curves(&self) -> Vec<&BezierCurve<Rational>> {
+        match self {
+            Geometry::Curve(c) => vec![c],
+            Geometry::Curves(cs) => cs.iter().collect(),
+            _ => Vec::new(),
+        }
+    }
+
+    /// The patches (empty for curve geometry).
+    pub fn patches(&self) -> Vec<&BezierPatch<Rational>> {
+        match self {
+            Geometry::Patch(p) => vec![p],
+            Geometry::Patches(ps) => ps.iter().collect(),
+            _ => Vec::new(),
+        }
+    }
+
+    /// Number of curves or patches.
+    pub fn piece_count(&self) -> usize {
+        match self {
+            Geometry::Curve(_) | Geometry::Patch(_) => 1,
+            Geometry::Curves(cs) => cs.len(),
+            Geometry::Patches(ps) => ps.len(),
+        }
+    }
+
+    /// The Euclidean dimension (the largest over the pieces; 0 when empty).
+    pub fn dim(&self) -> usize {
+        let c = self.curves().iter().map(|c| c.dim()).max();
+        let p = self.patches().iter().map(|p| p.dim()).max();
+        c.or(p).unwrap_or(0)
+    }
+
+    /// Total number of homogeneous control points.
+    pub fn control_point_count(&self) -> usize {
+        let c: usize = self.curves().iter().map(|c| c.degree() + 1).sum();
+        let p: usize = self
+            .patches()
+            .iter()
+            .map(|p| {
+                let (m, n) = p.degree();
+                (m + 1) * (n + 1)
+            })
+            .sum();
+        c + p
+    }
+
+    /// A short human-readable degree: `"degree 2"`, `"4 pieces of degree 2"`,
+    /// `"3 pieces of degree 2, 3, 3"`, `"bidegree (2, 2)"`, `"2 patches of bidegree (2, 2)"`.
+    pub fn degree_summary(&self) -> String {
+        match self {
+            Geometry::Curve(c) => format!("degree {}", c.degree()),
+            Geometry::Patch(p) => {
+                let (m, n) = p.degree();
+                format!("bidegree ({m}, {n})")
+            }
+            Geometry::Curves(cs) => {
+                let degs: Vec<usize> = cs.iter().map(|c| c.degree()).collect();
+                summarize(
+                    cs.len(),
+                    "piece",
+                    "pieces",
+                    "degree",
+                    degs.iter().map(|d| d.to_string()),
+                )
+            }
+            Geometry::Patches(ps) => {
+                let degs = ps.iter().map(|p| {
+                    let (m, n) = p.degree();
+                    format!("({m}, {n})")
+                });
+                summarize(ps.len(), "patch", "patches", "bidegree", degs)
+            }
+        }
+    }
+
+    /// The `f64` images of the curves (correctly rounded coordinates).
+    pub fn curves_f64(&self) -> Result<Vec<BezierCurve<f64>>, GeomError> {
+        self.curves().into_iter().map(curve_to_f64).collect()
+    }
+
+    /// The `f64` images of the patches (correctly rounded coordinates).
+    pub fn patches_f64(&self) -> Result<Vec<BezierPatch<f64>>, GeomError> {
+        self.patches().into_iter().map(patch_to_f64).collect()
+    }
+}
+
+fn summarize(
+    count: usize,
+    one: &str,
+    many: &str,
+    what: &str,
+    degrees: impl Iterator<Item = String>,
+) -> String {
+    let degs: Vec<String> = degrees.collect();
+    let noun = if count == 1 { one } else { many };
+    match degs.first() {
+        None => format!("0 {many}"),
+        Some(first) if degs.iter().all(|d| d == first) => {
+            format!("{count} {noun} of {what} {first}")
+        }
+        Some(_) => format!("{count} {noun} of {what} {}", degs.join(", ")),
+    }
+}
+
+/// The `f64` image of an exact curve.
+pub fn curve_to_f64(c: &BezierCurve<Rational>) -> Result<BezierCurve<f64>, GeomError> {
+    Ok(c.to_f64())
+}
+
+/// The `f64` image of an exact patch.
+pub fn patch_to_f64(p: &BezierPatch<Rational>) -> Result<BezierPatch<f64>, GeomError> {
+    Ok(p.to_f64())
+}
+
+/// One certified object: the unit of every export and of the report.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Object {
+    /// The user's name for the object (from the recipe).
+    pub name: String,
+    /// The op that built it (`"circle_arc"`, `"cylinder_patch"`, …).
+    pub op: String,
+    /// The op's parameters, as given (numbers as exact strings where possible).
+    pub params: serde_json::Value,
+    /// The exact geometry.
+    pub geometry: Geometry,
+    /// The certificates of the construction.
+    pub certificates: Vec<Certificate>,
+}
+
+impl Object {
+    /// Assembles an object.
+    pub fn new(
+        name: impl Into<String>,
+        op: impl Into<String>,
+        params: serde_json::Value,
+        geometry: Geometry,
+        certificates: Vec<Certificate>,
+    ) -> Self {
+        Object {
+            name: name.into(),
+            op: op.into(),
+            params,
+            geometry,
+            certificates,
+        }
+    }
+
+    /// `"curve"`, `"curves"`, `"patch"` or `"patches"`.
+    pub fn kind(&self) -> &'static str {
+        self.geometry.kind()
+    }
+
+    /// See [`Geometry::degree_summary`].
+    pub fn degree_summary(&self) -> String {
+        self.geometry.degree_summary()
+    }
+
+    /// Total number of homogeneous control points.
+    pub fn control_point_count(&self) -> usize {
+        self.geometry.control_point_count()
+    }
+
+    /// `true` if every certificate holds (vacuously for none).
+    pub fn all_certificates_hold(&self) -> bool {
+        Certificate::all_hold(&self.certificates)
+    }
+
+    /// The number of certificates that fail.
+    pub fn failed_certificate_count(&self) -> usize {
+        self.certificates.iter().filter(|c| !c.holds).count()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rcagd_algebra::Scalar;
+
+    fn q(p: i64, d: i64) -> Rational {
+        Rational::from_ratio(p, d)
+    }
+
+    fn quarter() -> BezierCurve<Rational> {
+        BezierCurve::from_homogeneous(vec![
+            vec![q(1, 1), q(1, 1), q(0, 1)],
+            vec![q(1, 1), q(1, 1), q(1, 1)],
+            vec![q(2, 1), q(0, 1), q(2, 1)],
+        ])
+        .expect("valid")
+    }
+
+    #[test]
+    fn summaries() {
+        let one = Geometry::Curve(quarter());
+        assert_eq!(one.degree_summary(), "degree 2");
+        assert_eq!(one.control_point_count(), 3);
+        let four = Geometry::Curves(vec![quarter(); 4]);
+        assert_eq!(four.degree_summary(), "4 pieces of degree 2");
+        assert_eq!(four.control_point_count(), 12);
+        assert_eq!(four.dim(), 2);
+        let line = BezierCurve::from_points(&[vec![q(0, 1), q(0, 1)], vec![q(1, 1), q(1, 1)]])
+            .expect("valid");
+        let mixed = Geometry::Curves(vec![quarter(), line]);
+        assert_eq!(mixed.degree_summary(), "2 pieces of degree 2, 1");
+        assert_eq!(Geometry::Curves(vec![]).degree_summary(), "0 pieces");
+        let patch = BezierPatch::from_flat(3, 2, 1, vec![q(1, 1); 24]).expect("valid");
+        assert_eq!(
+            Geometry::Patch(patch.clone()).degree_summary(),
+            "bidegree (2, 1)"
+        );
+        assert_eq!(
+            Geometry::Patches(vec![patch; 2]).degree_summary(),
+            "2 patches of bidegree (2, 1)"
+        );
+    }
+
+    #[test]
+    fn certificates_verdict() {
+        let mut o = Object::new(
+            "q",
+            "circle_arc",
+            serde_json::json!({}),
+            Geometry::Curve(quarter()),
+            vec![],
+        );
+        assert!(o.all_certificates_hold());
+        o.certificates.push(Certificate::holds("a", true));
+        o.certificates.push(Certificate::fails("b", "1/2", true));
+        assert!(!o.all_certificates_hold());
+        assert_eq!(o.failed_certificate_count(), 1);
+        assert_eq!(o.kind(), "curve");
+    }
+}
