@@ -255,7 +255,7 @@ pub fn run(path: &Path, out: Option<&Path>, formats: &[OutFormat]) -> u8 {
         new
     });
     if out.is_none() && formats != [OutFormat::Json] {
-        errln!("error: --format obj/svg need --out DIR (without --out, JSON is printed to stdout)");
+        errln!("error: --format step/iges/obj/svg need --out DIR (without --out, JSON is printed to stdout)");
         return EXIT_INPUT;
     }
     let recipe = match load(path) {

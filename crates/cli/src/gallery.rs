@@ -1,10 +1,10 @@
 //! `rcagd gallery`: builds every object of the embedded default recipes
 //! (`examples/recipes/*.toml`, a fixed list compiled into the binary), writes
-//! `<name>.json`, `<name>.obj`, `<name>.svg` per object plus `report.json` and
-//! `index.html`, and prints a summary table.
+//! `<name>.json`, `<name>.step`, `<name>.obj`, `<name>.svg` per object plus
+//! `report.json` and `index.html`, and prints a summary table.
 //!
 //! Exit code 0 if every certificate holds, 1 if one fails or an object cannot be
-//! built, 2 if the output directory cannot be written.
+//! built or exported, 2 if the output directory cannot be written.
 
 use crate::build::build_object;
 use crate::model::Object;
@@ -24,7 +24,12 @@ pub const RECIPES: &[(&str, &str)] = &[(
 )];
 
 /// The formats written per gallery object.
-pub const FORMATS: &[OutFormat] = &[OutFormat::Json, OutFormat::Obj, OutFormat::Svg];
+pub const FORMATS: &[OutFormat] = &[
+    OutFormat::Json,
+    OutFormat::Step,
+    OutFormat::Obj,
+    OutFormat::Svg,
+];
 
 /// The outcome of building the gallery (before writing anything).
 #[derive(Debug)]
@@ -82,16 +87,66 @@ fn progress_bar(quiet: bool) -> ProgressBar {
     pb
 }
 
+/// Writes one file per object and format of [`FORMATS`], `report.json` and
+/// `index.html` into `out` (created if missing), calling `tick(name)` after each
+/// object. An object that an exporter cannot write is reported in the returned list
+/// and left out of that format.
+///
+/// # Errors
+/// A file-system error (the directory or a file cannot be written).
+pub fn write_all(
+    out: &Path,
+    objects: &[Object],
+    mut tick: impl FnMut(&str),
+) -> Result<Vec<String>, String> {
+    output::create_dir(out)?;
+    let mut export_errors = Vec::new();
+    let mut entries = Vec::with_capacity(objects.len());
+    for o in objects {
+        let mut entry = ReportEntry::new(o.clone());
+        for &f in FORMATS {
+            let file = format!("{}.{}", o.name, f.extension());
+            let path = out.join(&file);
+            let text = match output::render(o, f) {
+                Ok(t) => t,
+                Err(e) => {
+                    export_errors.push(format!(
+                        "cannot export {:?} as {}: {e}",
+                        o.name,
+                        f.extension()
+                    ));
+                    continue;
+                }
+            };
+            std::fs::write(&path, &text)
+                .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+            if f == OutFormat::Svg {
+                entry = entry.with_svg(text);
+            }
+            entry = entry.with_file(f.extension().to_ascii_uppercase(), file);
+        }
+        entries.push(entry);
+        tick(&o.name);
+    }
+    rcagd_io::report::write_report(out, &entries).map_err(|e| e.to_string())?;
+    Ok(export_errors)
+}
+
 /// Runs `rcagd gallery`; returns the exit code.
 pub fn run(out: &Path, quiet: bool) -> u8 {
     let pb = progress_bar(quiet);
     let built = build_all(
-        |n| pb.set_length(n as u64),
+        // Building and writing: two steps per object.
+        |n| pb.set_length(2 * n as u64),
         |name| {
-            pb.set_message(name.to_string());
+            pb.set_message(format!("building {name}"));
             pb.inc(1);
         },
     );
+    let written = write_all(out, &built.objects, |name| {
+        pb.set_message(format!("writing {name}"));
+        pb.inc(1);
+    });
     pb.finish_and_clear();
     for e in &built.errors {
         if e.ends_with('\n') {
@@ -100,36 +155,15 @@ pub fn run(out: &Path, quiet: bool) -> u8 {
             errln!("{e}");
         }
     }
-    if let Err(e) = output::create_dir(out) {
-        errln!("error: {e}");
-        return EXIT_INPUT;
-    }
-    for o in &built.objects {
-        if let Err(e) = output::write_object(out, o, FORMATS) {
+    let export_errors = match written {
+        Ok(e) => e,
+        Err(e) => {
             errln!("error: {e}");
             return EXIT_INPUT;
         }
-    }
-    let entries: Vec<ReportEntry> = built
-        .objects
-        .iter()
-        .map(|o| {
-            let mut e = ReportEntry::new(o.clone());
-            if let Ok(svg) = output::object_svg(o) {
-                e = e.with_svg(svg);
-            }
-            for f in FORMATS {
-                e = e.with_file(
-                    f.extension().to_ascii_uppercase(),
-                    format!("{}.{}", o.name, f.extension()),
-                );
-            }
-            e
-        })
-        .collect();
-    if let Err(e) = rcagd_io::report::write_report(out, &entries) {
+    };
+    for e in &export_errors {
         errln!("error: {e}");
-        return EXIT_INPUT;
     }
     let failures = output::failures(&built.objects);
     if !quiet {
@@ -139,7 +173,7 @@ pub fn run(out: &Path, quiet: bool) -> u8 {
     for f in &failures {
         errln!("certificate fails: {f}");
     }
-    if failures.is_empty() && built.errors.is_empty() {
+    if failures.is_empty() && built.errors.is_empty() && export_errors.is_empty() {
         EXIT_OK
     } else {
         EXIT_FAIL

@@ -1,8 +1,9 @@
 //! `rcagd`: exact rational curves and surfaces with certificates.
 //!
 //! * `rcagd gallery [--out DIR] [--quiet]` — build every embedded default recipe,
-//!   write JSON/OBJ/SVG per object, `report.json` and `index.html`;
-//! * `rcagd build RECIPE [--out DIR] [--format json|obj|svg]…` — build a user's recipe;
+//!   write JSON/STEP/OBJ/SVG per object, `report.json` and `index.html`;
+//! * `rcagd build RECIPE [--out DIR] [--format json|step|iges|obj|svg]…` — build a
+//!   user's recipe;
 //! * `rcagd ops [NAME] [--markdown]` — the op reference.
 //!
 //! Exit codes: 0 all certificates hold, 1 a certificate fails (or an object of the
@@ -31,8 +32,8 @@ struct Cli {
 enum Command {
     /// Build every construction of the embedded default recipes and write a report.
     ///
-    /// Writes <name>.json, <name>.obj and <name>.svg per object, report.json and
-    /// index.html into DIR, and prints a summary table.
+    /// Writes <name>.json, <name>.step, <name>.obj and <name>.svg per object,
+    /// report.json and index.html into DIR, and prints a summary table.
     Gallery {
         /// Output directory (created if missing).
         #[arg(long, value_name = "DIR", default_value = "gallery-out")]

@@ -1,5 +1,5 @@
-//! Writing built objects: JSON (per DESIGN.md, via `rcagd_io::json`), OBJ and SVG
-//! (via `rcagd_io`), one file per object and format, and the summary table.
+//! Writing built objects: JSON (per DESIGN.md, via `rcagd_io::json`), STEP, IGES, OBJ
+//! and SVG (via `rcagd_io`), one file per object and format, and the summary table.
 
 use crate::model::{Geometry, Object};
 use std::fmt::Write as _;
@@ -10,6 +10,10 @@ use std::path::{Path, PathBuf};
 pub enum OutFormat {
     /// Exact JSON: homogeneous control points as "p/q" strings and floats, certificates.
     Json,
+    /// STEP AP214 (ISO 10303-21): exact rational B-splines rounded once to f64.
+    Step,
+    /// IGES 5.3: rational B-spline entities 126/128.
+    Iges,
     /// Wavefront OBJ: a tessellation (patches) or polyline (curves).
     Obj,
     /// SVG picture: curves in the plane, patches in an axonometric view.
@@ -21,6 +25,8 @@ impl OutFormat {
     pub fn extension(self) -> &'static str {
         match self {
             OutFormat::Json => "json",
+            OutFormat::Step => "step",
+            OutFormat::Iges => "igs",
             OutFormat::Obj => "obj",
             OutFormat::Svg => "svg",
         }
@@ -45,6 +51,12 @@ pub fn objects_json_text(objects: &[Object]) -> Result<String, String> {
 pub fn render(o: &Object, format: OutFormat) -> Result<String, String> {
     match format {
         OutFormat::Json => serde_json::to_string_pretty(&object_json(o)).map_err(|e| e.to_string()),
+        OutFormat::Step => {
+            rcagd_io::step::write_step(std::slice::from_ref(o)).map_err(|e| e.to_string())
+        }
+        OutFormat::Iges => {
+            rcagd_io::iges::write_iges(std::slice::from_ref(o)).map_err(|e| e.to_string())
+        }
         OutFormat::Obj => object_obj(o),
         OutFormat::Svg => object_svg(o),
     }

@@ -129,12 +129,22 @@ fn err(span: Span, message: impl Into<String>) -> ValueError {
 fn wrong_type(v: &RecipeValue, expected: &str) -> ValueError {
     err(
         v.span,
-        format!(
-            "expected {expected}, found {} {}",
-            a_an(v.type_name()),
-            v.preview()
-        ),
+        format!("expected {expected}, found {}", describe(v)),
     )
+}
+
+/// `a string "abc"`, `a number 1.5`, `an array of 3 elements`, `null`, …
+pub fn describe(v: &RecipeValue) -> String {
+    match &v.kind {
+        ValueKind::Null => "null".into(),
+        ValueKind::Array(items) => format!(
+            "an array of {} element{}",
+            items.len(),
+            if items.len() == 1 { "" } else { "s" }
+        ),
+        ValueKind::Table(_) => "a table".into(),
+        _ => format!("{} {}", a_an(v.type_name()), v.preview()),
+    }
 }
 
 fn a_an(word: &str) -> String {

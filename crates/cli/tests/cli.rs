@@ -118,7 +118,7 @@ fn gallery_writes_everything_and_all_certificates_hold() {
             "{name}"
         );
         assert!(out.contains(name.as_str()), "{name} missing from the table");
-        for ext in ["json", "obj", "svg"] {
+        for ext in ["json", "step", "obj", "svg"] {
             let f = dir.join(format!("{name}.{ext}"));
             let text =
                 std::fs::read_to_string(&f).unwrap_or_else(|_| panic!("{} missing", f.display()));
@@ -232,17 +232,43 @@ fn build_writes_formats_to_out_dir() {
         .arg(&p)
         .arg("--out")
         .arg(&out)
-        .args(["--format", "json", "--format", "obj,svg"])
+        .args([
+            "--format",
+            "json",
+            "--format",
+            "obj,svg",
+            "--format",
+            "step,iges",
+        ])
         .output()
         .expect("run");
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    for ext in ["json", "obj", "svg"] {
+    for ext in ["json", "obj", "svg", "step", "igs"] {
         assert!(out.join(format!("quarter.{ext}")).exists(), "{ext}");
     }
     let svg = std::fs::read_to_string(out.join("quarter.svg")).expect("svg");
     assert!(svg.contains("<svg"), "{svg}");
     let obj = std::fs::read_to_string(out.join("quarter.obj")).expect("obj");
     assert!(obj.contains("\nv ") && obj.contains("\nl "), "{obj}");
+    let step = std::fs::read_to_string(out.join("quarter.step")).expect("step");
+    assert!(step.starts_with("ISO-10303-21;"), "{step}");
+    assert!(step.contains("B_SPLINE_CURVE_WITH_KNOTS"), "{step}");
+    // An object STEP cannot write (mixed-sign weights) is an input error.
+    let bad = write(
+        &dir,
+        "bad.toml",
+        "[[object]]\nname = \"pole\"\nop = \"bezier_curve\"\npoints = [[0, 0], [1, 1], [2, 0]]\nweights = [1, -1, 1]\n",
+    );
+    let o = bin()
+        .arg("build")
+        .arg(&bad)
+        .arg("--out")
+        .arg(dir.join("out3"))
+        .args(["--format", "step"])
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("pole.step"), "{}", stderr(&o));
     // Default format: JSON only.
     let out2 = dir.join("out2");
     let o = bin()
@@ -332,6 +358,28 @@ fn usage_errors_exit_2() {
         .output()
         .expect("run");
     assert_eq!(o.status.code(), Some(2));
+    // An output directory that cannot be created.
+    let blocker = write(&dir, "blocker", "a file, not a directory");
+    let o = bin()
+        .arg("gallery")
+        .arg("--out")
+        .arg(blocker.join("sub"))
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("cannot create directory"),
+        "{}",
+        stderr(&o)
+    );
+    let o = bin()
+        .arg("build")
+        .arg(&p)
+        .arg("--out")
+        .arg(blocker.join("sub"))
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     let o = bin().arg("--help").output().expect("run");
     assert_eq!(o.status.code(), Some(0));
     assert!(stdout(&o).contains("gallery"));

@@ -215,6 +215,28 @@ pub fn eval_patch_derivatives_f64(patch: &BezierPatch<f64>, u: f64, v: f64) -> P
     PatchDerivatives { point, du, dv }
 }
 
+/// Clears `out` and reserves room for `us.len() · vs.len() · per_point` values.
+fn prepare_output<T>(
+    out: &mut Vec<T>,
+    us: &[f64],
+    vs: &[f64],
+    per_point: usize,
+) -> Result<(), GeomError> {
+    out.clear();
+    let n = us
+        .len()
+        .checked_mul(vs.len())
+        .and_then(|k| k.checked_mul(per_point));
+    match n {
+        Some(n) if out.try_reserve(n).is_ok() => Ok(()),
+        _ => Err(GeomError::Parameter(format!(
+            "a {} × {} grid is too large to allocate",
+            us.len(),
+            vs.len()
+        ))),
+    }
+}
+
 fn require_dim3(dim: usize, what: &str) -> Result<(), GeomError> {
     if dim == 3 {
         Ok(())
@@ -319,7 +341,8 @@ fn grid3_dyn(
 /// row-collapse scheme; no allocation happens inside the loops over the grid.
 ///
 /// # Errors
-/// [`GeomError::Dimension`] if the patch is not in E3 (use [`eval_patch_grid_flat`]).
+/// [`GeomError::Dimension`] if the patch is not in E3 (use [`eval_patch_grid_flat`]),
+/// [`GeomError::Parameter`] if the output cannot be allocated.
 pub fn eval_patch_grid(
     patch: &BezierPatch<f64>,
     us: &[f64],
@@ -327,8 +350,7 @@ pub fn eval_patch_grid(
     out: &mut Vec<[f64; 3]>,
 ) -> Result<(), GeomError> {
     require_dim3(patch.dim(), "eval_patch_grid")?;
-    out.clear();
-    out.reserve(us.len().saturating_mul(vs.len()));
+    prepare_output(out, us, vs, 1)?;
     let (m, n) = patch.degree();
     let net = net4(patch);
     match n {
@@ -347,13 +369,20 @@ pub fn eval_patch_grid(
 /// Evaluates a patch of any dimension `d` on the grid `us × vs`: `out` (cleared first)
 /// receives `d` coordinates per point, points row-major in `u`
 /// (`out[(i · vs.len() + j) · d ..][..d]`). Same scheme as [`eval_patch_grid`].
-pub fn eval_patch_grid_flat(patch: &BezierPatch<f64>, us: &[f64], vs: &[f64], out: &mut Vec<f64>) {
+///
+/// # Errors
+/// [`GeomError::Parameter`] if the output cannot be allocated.
+pub fn eval_patch_grid_flat(
+    patch: &BezierPatch<f64>,
+    us: &[f64],
+    vs: &[f64],
+    out: &mut Vec<f64>,
+) -> Result<(), GeomError> {
     let (m, n) = patch.degree();
     let d = patch.dim();
     let s = d + 1;
     let nv = n + 1;
-    out.clear();
-    out.reserve(us.len().saturating_mul(vs.len()).saturating_mul(d));
+    prepare_output(out, us, vs, d)?;
     let mut bv = vec![0.0; vs.len() * nv];
     for (b, &v) in bv.chunks_exact_mut(nv).zip(vs) {
         bernstein_into(n, v, b);
@@ -375,6 +404,7 @@ pub fn eval_patch_grid_flat(patch: &BezierPatch<f64>, us: &[f64], vs: &[f64], ou
             out.extend(h[1..].iter().map(|c| c * r));
         }
     }
+    Ok(())
 }
 
 /// A point of a 3-D patch with its first partial derivatives.
@@ -404,8 +434,7 @@ pub fn eval_patch_grid_derivatives(
     let (m, n) = patch.degree();
     let nv = n + 1;
     let net = net4(patch);
-    out.clear();
-    out.reserve(us.len().saturating_mul(vs.len()));
+    prepare_output(out, us, vs, 1)?;
     let mut bv = vec![0.0; vs.len() * nv];
     let mut dbv = vec![0.0; vs.len() * nv];
     for ((b, db), &v) in bv
@@ -655,7 +684,7 @@ mod tests {
                 let mut out = Vec::new();
                 eval_patch_grid(&p, &us, &vs, &mut out).expect("3-D");
                 let mut flat = Vec::new();
-                eval_patch_grid_flat(&p, &us, &vs, &mut flat);
+                eval_patch_grid_flat(&p, &us, &vs, &mut flat).expect("small");
                 let mut ders = Vec::new();
                 eval_patch_grid_derivatives(&p, &us, &vs, &mut ders).expect("3-D");
                 assert_eq!(out.len(), us.len() * vs.len());
@@ -732,7 +761,7 @@ mod tests {
             Err(GeomError::Dimension(_))
         ));
         let mut flat = Vec::new();
-        eval_patch_grid_flat(&p, &[0.5], &[0.5], &mut flat);
+        eval_patch_grid_flat(&p, &[0.5], &[0.5], &mut flat).expect("small");
         assert_eq!(flat, vec![1.0, 1.0]);
     }
 }

@@ -822,9 +822,9 @@ mod tests {
         let bu = bernstein::basis(2, &u);
         let bv = bernstein::basis(1, &v);
         let mut direct = vec![q(0, 1); 4];
-        for i in 0..=2 {
-            for j in 0..=1 {
-                let f = bu[i].clone() * bv[j].clone();
+        for (i, bi) in bu.iter().enumerate() {
+            for (j, bj) in bv.iter().enumerate() {
+                let f = bi.clone() * bj.clone();
                 for (d, x) in direct.iter_mut().zip(p.control_point(i, j)) {
                     *d += f.clone() * x.clone();
                 }

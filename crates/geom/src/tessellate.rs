@@ -27,9 +27,11 @@
 //!   `⅛ (M_uu/nu² + 2 M_uv/(nu nv) + M_vv/nv²)` with `M_uu = m(m−1) max|Δ²ᵤ Pᵢⱼ|`,
 //!   `M_uv = m n max|ΔᵤΔᵥ Pᵢⱼ|`, `M_vv = n(n−1) max|Δ²ᵥ Pᵢⱼ|` (Filip, Magedson & Markot
 //!   1986, *Surface algorithms using bounds on derivatives*, CAGD 3), and the counts make
-//!   each term `≤ tol/3`. Rational patches are not covered by that bound, so the grid is
+//!   each term `≤ tol/3` (at least the degree, at most 256 per direction). Rational patches are not covered by that bound, so the grid is
 //!   then checked: the patch is evaluated at every edge midpoint and cell centre and
 //!   compared with the mesh at the same parameters (edge midpoint, diagonal midpoint);
+//!   a cell centre's deviation is charged to the direction whose edges of that cell
+//!   deviate at least twice as much as the other's (to both when neither dominates);
 //!   each `u`- or `v`-strip whose sampled deviation exceeds `tol` is split into
 //!   `⌈1.1 √(err/tol)⌉` parts (the error shrinks like the square of the width), until
 //!   every sampled deviation is `≤ tol`. The guarantee is on these samples, not a bound
@@ -66,6 +68,15 @@ pub struct TriMesh {
 pub const MAX_CURVE_DEPTH: usize = 40;
 /// The largest segment count per direction the adaptive patch tessellation will use.
 pub const MAX_PATCH_SEGMENTS: usize = 2048;
+/// The largest number of polyline points or mesh vertices any tessellation produces
+/// (2²⁴); larger requests are a [`GeomError::Parameter`], not an out-of-memory abort.
+pub const MAX_TESSELLATION_POINTS: usize = 1 << 24;
+
+fn too_many(what: &str) -> GeomError {
+    GeomError::Parameter(format!(
+        "{what} would need more than {MAX_TESSELLATION_POINTS} points"
+    ))
+}
 
 fn check_tol(tol: f64) -> Result<(), GeomError> {
     if tol.is_finite() && tol > 0.0 {
@@ -163,13 +174,17 @@ pub fn point_segment_distance(x: [f64; 3], a: [f64; 3], b: [f64; 3]) -> f64 {
 /// A uniform polyline: `segments + 1` points at `tᵢ = i / segments`.
 ///
 /// # Errors
-/// [`GeomError::Parameter`] for zero segments, [`GeomError::Dimension`] beyond E3,
+/// [`GeomError::Parameter`] for zero segments or more than
+/// [`MAX_TESSELLATION_POINTS`] points, [`GeomError::Dimension`] beyond E3,
 /// [`GeomError::Weight`] if a sample is a point at infinity.
 pub fn tessellate_curve_uniform<F: Scalar>(
     curve: &BezierCurve<F>,
     segments: usize,
 ) -> Result<Polyline, GeomError> {
     check_segments(segments, "curve tessellation")?;
+    if segments >= MAX_TESSELLATION_POINTS {
+        return Err(too_many("the uniform polyline"));
+    }
     let c = curve3(curve)?;
     let points = linspace(0.0, 1.0, segments)
         .into_iter()
@@ -183,8 +198,9 @@ pub fn tessellate_curve_uniform<F: Scalar>(
 /// unless it sits at depth `max_depth` (clamped to [`MAX_CURVE_DEPTH`]).
 ///
 /// # Errors
-/// [`GeomError::Parameter`] for a tolerance that is not positive and finite,
-/// [`GeomError::Dimension`] beyond E3, [`GeomError::Weight`] at a point at infinity.
+/// [`GeomError::Parameter`] for a tolerance that is not positive and finite or a result
+/// of more than [`MAX_TESSELLATION_POINTS`] points, [`GeomError::Dimension`] beyond E3,
+/// [`GeomError::Weight`] at a point at infinity.
 pub fn adaptive_curve_params<F: Scalar>(
     curve: &BezierCurve<F>,
     tol: f64,
@@ -221,6 +237,11 @@ fn refine_curve(
         .max(point_segment_distance(q1, pa, pb))
         .max(point_segment_distance(q3, pa, pb));
     if err <= tol || depth_left == 0 || m <= a || m >= b {
+        if out.len() >= MAX_TESSELLATION_POINTS {
+            return Err(too_many(
+                "the adaptive polyline (chord tolerance too small)",
+            ));
+        }
         out.push(b);
         return Ok(());
     }
@@ -249,7 +270,8 @@ pub fn tessellate_curve_adaptive<F: Scalar>(
 /// A uniform `nu × nv` triangle mesh of a patch (see the module docs).
 ///
 /// # Errors
-/// [`GeomError::Parameter`] for zero segments, [`GeomError::Dimension`] beyond E3,
+/// [`GeomError::Parameter`] for zero segments or more than [`MAX_TESSELLATION_POINTS`]
+/// vertices, [`GeomError::Dimension`] beyond E3,
 /// [`GeomError::Weight`] if a vertex is a point at infinity.
 pub fn tessellate_patch_uniform<F: Scalar>(
     patch: &BezierPatch<F>,
@@ -429,8 +451,11 @@ fn net_points(p: &BezierPatch<f64>) -> Vec<[f64; 3]> {
         .collect()
 }
 
-/// Segment counts `(nu, nv)` from the second-difference bound (module docs), each at
-/// least 1 and at most [`MAX_PATCH_SEGMENTS`].
+/// The largest initial segment count per direction taken from the second-difference
+/// bound; finer grids come from the sampled strip refinement.
+const INITIAL_SEGMENTS_CAP: usize = 256;
+
+/// Initial segment counts `(nu, nv)` from the second-difference bound (module docs).
 fn counts_from_net(p: &BezierPatch<f64>, tol: f64) -> (usize, usize) {
     let (m, n) = p.degree();
     let x = net_points(p);
@@ -460,30 +485,39 @@ fn counts_from_net(p: &BezierPatch<f64>, tol: f64) -> (usize, usize) {
     let muu = (m * m.saturating_sub(1)) as f64 * duu;
     let mvv = (n * n.saturating_sub(1)) as f64 * dvv;
     let muv = (m * n) as f64 * duv;
-    // each of the three terms ≤ tol/3
-    let mut nu = (3.0 * muu / (8.0 * tol)).sqrt().ceil().max(1.0);
-    let mut nv = (3.0 * mvv / (8.0 * tol)).sqrt().ceil().max(1.0);
-    let need = 3.0 * muv / (4.0 * tol);
-    if nu * nv < need {
-        let f = (need / (nu * nv)).sqrt();
-        nu = (nu * f).ceil();
-        nv = (nv * f).ceil();
-    }
-    let clamp = |x: f64| {
+    // each of the three terms ≤ tol/3: nu ≥ a, nv ≥ b, nu·nv ≥ c, with the smallest
+    // product; then at least the degree (so every wiggle is sampled) and at most
+    // INITIAL_SEGMENTS_CAP (the strip refinement takes over from there)
+    let a = (3.0 * muu / (8.0 * tol)).sqrt().max(1.0);
+    let b = (3.0 * mvv / (8.0 * tol)).sqrt().max(1.0);
+    let c = 3.0 * muv / (4.0 * tol);
+    let (nu, nv) = if a * b >= c {
+        (a, b)
+    } else if a >= c.sqrt() {
+        (a, c / a)
+    } else if b >= c.sqrt() {
+        (c / b, b)
+    } else {
+        (c.sqrt(), c.sqrt())
+    };
+    let clamp = |x: f64, deg: usize| {
+        let lo = deg.max(1);
         if x.is_finite() {
-            (x as usize).clamp(1, MAX_PATCH_SEGMENTS)
+            (x.ceil() as usize).clamp(lo, INITIAL_SEGMENTS_CAP.max(lo))
         } else {
-            MAX_PATCH_SEGMENTS
+            INITIAL_SEGMENTS_CAP.max(lo)
         }
     };
-    (clamp(nu), clamp(nv))
+    (clamp(nu, m), clamp(nv, n))
 }
 
 /// Sampled deviations of the grid mesh on `us × vs` from the patch.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct GridChordErrors {
-    /// Per `u`-strip `[us[i], us[i+1]]`: the largest distance at the `u`-edge midpoints
-    /// `(u_{i+½}, v_j)` and the cell centres `(u_{i+½}, v_{j+½})`.
+    /// Per `u`-strip `[us[i], us[i+1]]`: the largest distance at its `u`-edge midpoints
+    /// `(u_{i+½}, v_j)` and at those cell centres `(u_{i+½}, v_{j+½})` whose error is
+    /// charged to `u` (the cell's `u`-edges deviate at least twice as much as its
+    /// `v`-edges, or neither direction dominates).
     pub u_strips: Vec<f64>,
     /// Per `v`-strip: the same with the `v`-edge midpoints `(u_i, v_{j+½})`.
     pub v_strips: Vec<f64>,
@@ -538,6 +572,7 @@ fn grid_errors(p: &BezierPatch<f64>, us: &[f64], vs: &[f64]) -> Result<GridChord
         u_strips: vec![0.0; nu],
         v_strips: vec![0.0; nv],
     };
+    let mut edge_u = vec![0.0f64; nv + 1];
     // one strip of cells at a time: rows u_i, u_{i+½}, u_{i+1}
     for (i, rows) in uh.windows(3).step_by(2).enumerate() {
         eval_patch_grid(p, rows, &vh, &mut pts)?;
@@ -548,19 +583,28 @@ fn grid_errors(p: &BezierPatch<f64>, us: &[f64], vs: &[f64]) -> Result<GridChord
             )));
         }
         let at = |r: usize, j: usize| pts[r * cols + j];
-        let mut eu = 0.0f64;
-        for j in 0..=nv {
+        for (j, e) in edge_u.iter_mut().enumerate() {
             let b = 2 * j;
-            eu = eu.max(dist(at(1, b), lerp(at(0, b), at(2, b), 0.5)));
-            if j < nv {
-                let mut ev = dist(at(0, b + 1), lerp(at(0, b), at(0, b + 2), 0.5));
-                if i + 1 == nu {
-                    ev = ev.max(dist(at(2, b + 1), lerp(at(2, b), at(2, b + 2), 0.5)));
-                }
-                let ec = dist(at(1, b + 1), lerp(at(0, b), at(2, b + 2), 0.5));
-                eu = eu.max(ec);
-                errs.v_strips[j] = errs.v_strips[j].max(ev).max(ec);
-            }
+            *e = dist(at(1, b), lerp(at(0, b), at(2, b), 0.5));
+        }
+        let mut eu = edge_u.iter().fold(0.0f64, |a, &b| a.max(b));
+        for j in 0..nv {
+            let b = 2 * j;
+            let ev = dist(at(0, b + 1), lerp(at(0, b), at(0, b + 2), 0.5))
+                .max(dist(at(2, b + 1), lerp(at(2, b), at(2, b + 2), 0.5)));
+            let ec = dist(at(1, b + 1), lerp(at(0, b), at(2, b + 2), 0.5));
+            // the centre error goes to the direction whose edges bend more; to both
+            // when neither dominates (twist)
+            let euc = edge_u[j].max(edge_u[j + 1]);
+            let (to_u, to_v) = if euc >= 2.0 * ev {
+                (ec, 0.0)
+            } else if ev >= 2.0 * euc {
+                (0.0, ec)
+            } else {
+                (ec, ec)
+            };
+            eu = eu.max(to_u);
+            errs.v_strips[j] = errs.v_strips[j].max(ev).max(to_v);
         }
         errs.u_strips[i] = eu;
     }

@@ -12,11 +12,17 @@
 //! Layer rule: depends on `rcagd-algebra` and `rcagd-geom` only.
 
 pub mod error;
+pub mod gltf;
+pub mod iges;
+pub mod iges_read;
 pub mod json;
 pub mod model;
 pub mod obj;
+pub mod ply;
 pub mod report;
 pub mod step;
+pub mod step_read;
+pub mod stl;
 pub mod svg;
 
 pub use error::IoError;

@@ -760,11 +760,9 @@ fn curve_entity(data: &mut Data, c: &NurbsCurve<Rational>, name: &str) -> Result
         knot_spec(&mults, p)
     );
     let w: Vec<Rational> = c.control_points().map(|h| h[0].clone()).collect();
-    let closed = if c.control_points().next().map(euclid) == c.control_points().last().map(euclid) {
-        ".T."
-    } else {
-        ".F."
-    };
+    // closed_curve is informational; `.T.` makes OpenCascade convert the curve to a
+    // periodic one, which changes a rational curve whose end weights differ.
+    let closed = ".F.";
     let body = if all_equal(&w) {
         format!(
             "B_SPLINE_CURVE_WITH_KNOTS({},{p},{},.UNSPECIFIED.,{closed},.F.,{knots})",

@@ -202,6 +202,8 @@ fn write_gallery_files() {
         let one = std::slice::from_ref(o);
         let step = rcagd_io::step::write_step(one).expect("step");
         std::fs::write(dir.join(format!("{stem}.step")), step).expect("write");
+        let iges = rcagd_io::iges::write_iges(one).expect("iges");
+        std::fs::write(dir.join(format!("{stem}.igs")), iges).expect("write");
         let side = rcagd_io::step::exact_sidecar(one).expect("sidecar");
         std::fs::write(
             dir.join(format!("{stem}.exact.json")),
@@ -209,8 +211,20 @@ fn write_gallery_files() {
         )
         .expect("write");
     }
+    let glb = rcagd_io::gltf::objects_to_glb(&objects, &Default::default()).expect("glb");
+    std::fs::write(dir.join("all.glb"), glb).expect("write");
+    for o in objects.iter().filter(|o| !o.geometry.patches().is_empty()) {
+        let stem = o.name.replace(' ', "_");
+        let mesh = rcagd_io::stl::object_mesh(o, &Default::default()).expect("mesh");
+        let stl = rcagd_io::stl::write_stl_binary(&o.name, &mesh).expect("stl");
+        std::fs::write(dir.join(format!("{stem}.stl")), stl).expect("write");
+        let ply = rcagd_io::ply::write_ply(&o.name, &mesh).expect("ply");
+        std::fs::write(dir.join(format!("{stem}.ply")), ply).expect("write");
+    }
     let all = rcagd_io::step::write_step(&objects).expect("step");
     std::fs::write(dir.join("all.step"), all).expect("write");
+    let iges = rcagd_io::iges::write_iges(&objects).expect("iges");
+    std::fs::write(dir.join("all.igs"), iges).expect("write");
     let side = rcagd_io::step::exact_sidecar(&objects).expect("sidecar");
     std::fs::write(
         dir.join("all.exact.json"),
@@ -218,4 +232,85 @@ fn write_gallery_files() {
     )
     .expect("write");
     let _ = Scalar::to_f64(&int(1));
+}
+
+/// Writes STEP with a fixed timestamp (for reproducible text).
+fn step_text(objects: &[Object]) -> String {
+    let opts = rcagd_io::step::StepOptions {
+        timestamp: Some("2024-01-01T00:00:00".into()),
+        ..Default::default()
+    };
+    rcagd_io::step::write_step_with(objects, &opts).expect("step")
+}
+
+#[test]
+fn step_round_trip_is_exact_with_the_sidecar() {
+    use rcagd_io::step::{exact_sidecar, exchange_object};
+    use rcagd_io::step_read::{apply_sidecar, curve_rounds_to, read_step, surface_rounds_to};
+    let objects = gallery();
+    let text = step_text(&objects);
+    let mut read = read_step(&text).expect("reads back");
+    assert_eq!(read.len(), objects.len());
+    for (o, r) in objects.iter().zip(&read) {
+        assert_eq!(o.name, r.name);
+        let x = exchange_object(o).expect("exchange");
+        let surfaces = x.surfaces().expect("surfaces");
+        assert_eq!(surfaces.len(), r.surfaces.len(), "{}", o.name);
+        assert_eq!(x.curves.len(), r.curves.len(), "{}", o.name);
+        for (a, b) in surfaces.iter().zip(&r.surfaces) {
+            assert!(surface_rounds_to(a, b), "{}", o.name);
+        }
+        for (a, b) in x.curves.iter().zip(&r.curves) {
+            assert!(curve_rounds_to(a, b), "{}", o.name);
+        }
+    }
+    let side = exact_sidecar(&objects).expect("sidecar");
+    apply_sidecar(&mut read, &side).expect("sidecar matches");
+    for (o, r) in objects.iter().zip(&read) {
+        let x = exchange_object(o).expect("exchange");
+        assert_eq!(x.surfaces().expect("surfaces"), r.surfaces);
+        assert_eq!(x.curves, r.curves);
+    }
+}
+
+fn iges_text(objects: &[Object]) -> String {
+    let opts = rcagd_io::iges::IgesOptions {
+        time: Some(1_704_067_200),
+        ..Default::default()
+    };
+    rcagd_io::iges::write_iges_with(objects, &opts).expect("iges")
+}
+
+#[test]
+fn iges_round_trip_is_exact_with_the_sidecar() {
+    use rcagd_io::iges_read::read_iges;
+    use rcagd_io::step::{exact_sidecar, exchange_object};
+    use rcagd_io::step_read::{apply_sidecar, curve_rounds_to, surface_rounds_to};
+    let objects = gallery();
+    let text = iges_text(&objects);
+    for (k, line) in text.lines().enumerate() {
+        assert_eq!(line.len(), 80, "line {} is not 80 columns: {line:?}", k + 1);
+    }
+    let mut read = read_iges(&text).expect("reads back");
+    assert_eq!(read.len(), objects.len());
+    for (o, r) in objects.iter().zip(&read) {
+        assert_eq!(o.name, r.name);
+        let x = exchange_object(o).expect("exchange");
+        let surfaces = x.surfaces().expect("surfaces");
+        assert_eq!(surfaces.len(), r.surfaces.len(), "{}", o.name);
+        assert_eq!(x.curves.len(), r.curves.len(), "{}", o.name);
+        for (a, b) in surfaces.iter().zip(&r.surfaces) {
+            assert!(surface_rounds_to(a, b), "{}", o.name);
+        }
+        for (a, b) in x.curves.iter().zip(&r.curves) {
+            assert!(curve_rounds_to(a, b), "{}", o.name);
+        }
+    }
+    let side = exact_sidecar(&objects).expect("sidecar");
+    apply_sidecar(&mut read, &side).expect("sidecar matches");
+    for (o, r) in objects.iter().zip(&read) {
+        let x = exchange_object(o).expect("exchange");
+        assert_eq!(x.surfaces().expect("surfaces"), r.surfaces);
+        assert_eq!(x.curves, r.curves);
+    }
 }

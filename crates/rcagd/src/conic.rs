@@ -43,7 +43,7 @@ use rcagd_geom::BezierCurve;
 pub type Point2<F> = [F; 2];
 
 /// The symmetric 3×3 matrix `Q` of the circle `|x − c|² = r²` in homogeneous
-/// coordinates `(W, X, Y)`: `(X, Y, W)`-form `(X − c_x W)² + (Y − c_y W)² − r²W² = Xᵀ Q X`,
+/// coordinates `X = (W, X, Y)`: `(X − c_x W)² + (Y − c_y W)² − r²W² = Xᵀ Q X`,
 ///
 /// ```text
 /// Q = [ c_x² + c_y² − r²   −c_x   −c_y ]

@@ -72,7 +72,8 @@ proptest! {
         let e = pc.bending_energy();
         let ef = pc.to_f64().bending_energy();
         if let (Ok(e), Ok(ef)) = (e, ef) {
-            prop_assert!(close(e, ef));
+            // ρ/σ³ loses digits to cancellation in f64: compare to 1e-6
+            prop_assert!((e - ef).abs() <= 1e-6 * e.abs().max(1.0), "E = {} vs {}", e, ef);
         }
     }
 

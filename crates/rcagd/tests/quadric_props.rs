@@ -535,3 +535,26 @@ proptest! {
         prop_assert!(close(&scaled, e));
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    /// Interpolation on H through ψ-images of random points at distinct parameters: the
+    /// Segre interpolant passes through them, has degree ≤ the ψ-interpolant's.
+    #[test]
+    fn segre_interpolation(ps in prop::collection::vec(hom(), 2..6)) {
+        use rcagd::quadric::paraboloid::interpolate_segre;
+        let pts: Vec<Hom<Rational>> = ps.iter().map(psi).collect();
+        if pts.iter().any(|p| p.iter().all(|x| x.is_zero())) { return Ok(()); }
+        let params: Vec<Rational> = (0..pts.len()).map(|i| q(i as i64, 3)).collect();
+        match interpolate_segre(&pts, &params) {
+            Ok(it) => {
+                assert_certs(&it.certify())?;
+                let (r, s) = it.degrees();
+                prop_assert!(r + s <= 2 * (pts.len() / 2) + 1);
+            }
+            Err(QuadricError::RepeatedPoints(..)) => {}
+            Err(e) => prop_assert!(false, "{e}"),
+        }
+    }
+}

@@ -841,3 +841,27 @@ fn schlussbemerkung_all_quadrics() {
     // the exceptional line p1 = p2 = 0 maps to zero
     assert!(cone.apply(&h([1, 0, 0, 1])).iter().all(|x| x.is_zero()));
 }
+
+/// §3 ("Interpolation auf H … analog"): interpolation on H by the decoupled linear problem
+/// of ψ. Three points on one generator need only a line (degree 1), which the even-degree
+/// ψ-images (degree 2n) cannot show; five general points need degree 4 = 2 + 2.
+#[test]
+fn interpolation_on_h_of_lowest_degree() {
+    use rcagd::quadric::paraboloid::interpolate_segre;
+    // the generator u = (1, 2) fixed: points (v0, 2v0, v1, 2v1)
+    let pts = [h([1, 2, 0, 0]), h([1, 2, 1, 2]), h([1, 2, 3, 6])];
+    let params = [r(0), q(1, 2), r(1)];
+    let it = interpolate_segre(&pts, &params).unwrap();
+    assert_eq!(it.degrees(), (0, 1));
+    assert_eq!(it.curve().degree(), 1);
+    assert_all(&it.certify());
+    // general points: ψ-images of random points
+    let mut g = Lcg(21);
+    let pts: Vec<Hom<Rational>> = (0..5).map(|_| psi(&g.hom())).collect();
+    let params: Vec<Rational> = (0..5).map(|i| q(i, 4)).collect();
+    let it = interpolate_segre(&pts, &params).unwrap();
+    assert_eq!(it.degrees(), (2, 2));
+    assert_all(&it.certify());
+    let via_psi = interpolate(&Psi, &pts, &params, 2).unwrap();
+    assert_all(&via_psi.certify());
+}

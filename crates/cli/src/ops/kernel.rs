@@ -9,10 +9,19 @@ use num_traits::{One, Zero};
 use rcagd_algebra::rational::format_rational;
 use rcagd_algebra::{Certificate, Rational};
 use rcagd::{full_circle, CircleArcs, Certified, CylinderPatch};
+use rcagd_geom::certify::curves_agree;
 use rcagd_geom::{BezierCurve, BezierPatch};
 
 /// The ops of this topic.
-pub const OPS: &[OpSpec] = &[CIRCLE_ARC, CIRCLE, CYLINDER_PATCH, BEZIER_CURVE, BEZIER_PATCH];
+pub const OPS: &[OpSpec] = &[
+    CIRCLE_ARC,
+    CIRCLE,
+    CYLINDER_PATCH,
+    BEZIER_CURVE,
+    BEZIER_PATCH,
+    DEGREE_ELEVATE,
+    SUBDIVIDE,
+];
 
 const CENTER: ParamSpec = ParamSpec::with_default(
     "center",
@@ -183,20 +192,7 @@ const POINTS_DOC: &str =
 const BEZIER_CURVE: OpSpec = OpSpec {
     name: "bezier_curve",
     summary: "a rational Bézier curve from its control points and weights",
-    params: &[
-        ParamSpec::required("points", ParamKind::Points, POINTS_DOC),
-        ParamSpec::optional(
-            "weights",
-            ParamKind::Numbers,
-            "one weight per control point (default: all 1, a polynomial curve)",
-        ),
-        ParamSpec::with_default(
-            "homogeneous",
-            ParamKind::Bool,
-            "false",
-            "the points are homogeneous (weight first); then `weights` must be absent",
-        ),
-    ],
+    params: &INLINE_CURVE_PARAMS,
     example: r#"[[object]]
 name = "quarter_circle"
 op = "bezier_curve"
@@ -204,6 +200,58 @@ points = [[1, 0], [1, 1], [0, 1]]
 weights = [1, 1, 2]
 "#,
     build: build_bezier_curve,
+};
+
+const INLINE_CURVE_PARAMS: [ParamSpec; 3] = [
+    ParamSpec::required("points", ParamKind::Points, POINTS_DOC),
+    ParamSpec::optional(
+        "weights",
+        ParamKind::Numbers,
+        "one weight per control point (default: all 1, a polynomial curve)",
+    ),
+    ParamSpec::with_default(
+        "homogeneous",
+        ParamKind::Bool,
+        "false",
+        "the points are homogeneous (weight first); then `weights` must be absent",
+    ),
+];
+
+const DEGREE_ELEVATE: OpSpec = OpSpec {
+    name: "degree_elevate",
+    summary: "the same rational curve in a higher degree (degree elevation of an inline curve)",
+    params: &[
+        INLINE_CURVE_PARAMS[0],
+        INLINE_CURVE_PARAMS[1],
+        INLINE_CURVE_PARAMS[2],
+        ParamSpec::with_default("by", ParamKind::Int, "1", "degree increase, 1 to 32"),
+    ],
+    example: r#"[[object]]
+name = "quarter_circle_cubic"
+op = "degree_elevate"
+points = [[1, 0], [1, 1], [0, 1]]
+weights = [1, 1, 2]
+by = 1
+"#,
+    build: build_degree_elevate,
+};
+
+const SUBDIVIDE: OpSpec = OpSpec {
+    name: "subdivide",
+    summary: "an inline rational curve split at a parameter into two pieces (de Casteljau)",
+    params: &[
+        INLINE_CURVE_PARAMS[0],
+        INLINE_CURVE_PARAMS[1],
+        INLINE_CURVE_PARAMS[2],
+        ParamSpec::with_default("at", ParamKind::Number, "\"1/2\"", "the parameter to split at, 0 < at < 1"),
+    ],
+    example: r#"[[object]]
+name = "cubic_halves"
+op = "subdivide"
+points = [[0, 0], [1, 2], [3, 2], [4, 0]]
+at = "1/3"
+"#,
+    build: build_subdivide,
 };
 
 const BEZIER_PATCH: OpSpec = OpSpec {
@@ -315,16 +363,78 @@ fn positive_weights_certificate<'a>(weights: impl Iterator<Item = &'a Rational>)
     )
 }
 
-fn build_bezier_curve(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// The inline curve of the `points` / `weights` / `homogeneous` parameters.
+fn inline_curve(args: &OpArgs) -> Result<BezierCurve<Rational>, OpError> {
     let hom = homogeneous_points(
         args.points("points")?,
         args.opt_numbers("weights")?,
         args.bool("homogeneous")?,
         |i| format!("control point {i}"),
     )?;
-    let curve = BezierCurve::from_homogeneous(hom).map_err(|e| OpError::param("points", e.to_string()))?;
-    let cert = positive_weights_certificate(curve.control_points().filter_map(|p| p.first()));
+    BezierCurve::from_homogeneous(hom).map_err(|e| OpError::param("points", e.to_string()))
+}
+
+fn curve_weights_certificate(curve: &BezierCurve<Rational>) -> Certificate {
+    positive_weights_certificate(curve.control_points().filter_map(|p| p.first()))
+}
+
+fn build_bezier_curve(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let curve = inline_curve(args)?;
+    let cert = curve_weights_certificate(&curve);
     Ok(vec![args.object(Geometry::Curve(curve), vec![cert])])
+}
+
+/// The largest degree increase of `degree_elevate`.
+const MAX_ELEVATION: i64 = 32;
+
+fn build_degree_elevate(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let curve = inline_curve(args)?;
+    let by = args.int("by")?;
+    let r = usize::try_from(by)
+        .ok()
+        .filter(|r| (1..=MAX_ELEVATION as usize).contains(r))
+        .ok_or_else(|| {
+            OpError::param(
+                "by",
+                format!("the degree increase must be between 1 and {MAX_ELEVATION}, got {by}"),
+            )
+        })?;
+    let elevated = curve.elevate(r);
+    let mut certs = vec![curves_agree(&curve, &elevated)?];
+    certs.push(curve_weights_certificate(&elevated));
+    Ok(vec![args.object(Geometry::Curve(elevated), certs)])
+}
+
+fn build_subdivide(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let curve = inline_curve(args)?;
+    let at = args.number("at")?;
+    if at <= Rational::zero() || at >= Rational::one() {
+        return Err(OpError::param(
+            "at",
+            format!("the subdivision parameter must satisfy 0 < at < 1, got {}", format_rational(&at)),
+        ));
+    }
+    let (left, right) = curve.subdivide(&at)?;
+    // Cross-check de Casteljau against the blossom-based affine reparametrization.
+    let mut certs = Vec::new();
+    let restricted_left = curve.restrict(&Rational::zero(), &at)?;
+    let restricted_right = curve.restrict(&at, &Rational::one())?;
+    certs.extend(prefixed(
+        &format!("left piece = P on [0, {}]: ", format_rational(&at)),
+        vec![curves_agree(&left, &restricted_left)?],
+    ));
+    certs.extend(prefixed(
+        &format!("right piece = P on [{}, 1]: ", format_rational(&at)),
+        vec![curves_agree(&right, &restricted_right)?],
+    ));
+    let joined = left.control_points().last() == right.control_points().next();
+    certs.push(Certificate::decide(
+        "left(1) = right(0): the pieces join (equal homogeneous end points)",
+        joined,
+        true,
+        || "the end points differ".to_string(),
+    ));
+    Ok(vec![args.object(Geometry::Curves(vec![left, right]), certs)])
 }
 
 fn build_bezier_patch(args: &OpArgs) -> Result<Vec<Object>, OpError> {

@@ -182,7 +182,7 @@ fn objects(
                 root.span,
                 format!(
                     "expected the recipe to be a table, found {}",
-                    root.type_name()
+                    crate::value::describe(root)
                 ),
             )
             .note(shape_note)]);
@@ -217,7 +217,7 @@ fn objects(
                 list.value.span,
                 format!(
                     "`object` must be an array of tables, found {}",
-                    list.value.type_name()
+                    crate::value::describe(&list.value)
                 ),
             )
             .note(shape_note),
@@ -265,7 +265,10 @@ fn object(file: &SourceFile, item: &RecipeValue) -> Result<RecipeObject, Diagnos
     let Some(entries) = item.as_table() else {
         return Err(file.error(
             item.span,
-            format!("expected an object table, found {}", item.type_name()),
+            format!(
+                "expected an object table, found {}",
+                crate::value::describe(item)
+            ),
         ));
     };
     let string_field = |key: &str| -> Result<(&Entry, String), Diagnostic> {
@@ -278,9 +281,8 @@ fn object(file: &SourceFile, item: &RecipeValue) -> Result<RecipeObject, Diagnos
             _ => Err(file.error(
                 e.value.span,
                 format!(
-                    "`{key}` must be a string, found {} {}",
-                    e.value.type_name(),
-                    e.value.preview()
+                    "`{key}` must be a string, found {}",
+                    crate::value::describe(&e.value)
                 ),
             )),
         }

@@ -87,6 +87,7 @@ impl<F: Scalar> PhPolyCurve<F> {
         let c2 = pdot(&c, &c);
         let s2 = &self.sigma * &self.sigma;
         let (q, rem) = c2.div_rem(&s2)?;
+        let q = trim_noise(q);
         if !poly_negligible(&rem, poly_scale(&c2)) {
             return Err(PhError::NotPh(format!(
                 "|r'×r''|² is not divisible by σ²: remainder {}",
@@ -447,19 +448,36 @@ pub(crate) fn adaptive_gauss(f: &dyn Fn(f64) -> f64, a: f64, b: f64, tol: f64, d
             .sum::<f64>()
             * h
     }
-    fn rec(f: &dyn Fn(f64) -> f64, a: f64, b: f64, whole: f64, tol: f64, depth: u32) -> f64 {
+    /// Recursion with an absolute tolerance halved per level and an evaluation budget
+    /// (so that round-off noise cannot force an exponential refinement).
+    fn rec(
+        f: &dyn Fn(f64) -> f64,
+        a: f64,
+        b: f64,
+        whole: f64,
+        eps: f64,
+        depth: u32,
+        budget: &mut u32,
+    ) -> f64 {
         let m = 0.5 * (a + b);
         let l = gl(f, a, m);
         let r = gl(f, m, b);
         if !(l + r).is_finite() {
             return f64::NAN;
         }
-        if depth == 0 || (l + r - whole).abs() <= tol * (l + r).abs().max(1e-300) {
+        *budget = budget.saturating_sub(1);
+        if depth == 0 || *budget == 0 || (l + r - whole).abs() <= eps {
             l + r
         } else {
-            rec(f, a, m, l, tol, depth - 1) + rec(f, m, b, r, tol, depth - 1)
+            rec(f, a, m, l, 0.5 * eps, depth - 1, budget)
+                + rec(f, m, b, r, 0.5 * eps, depth - 1, budget)
         }
     }
     let whole = gl(f, a, b);
-    rec(f, a, b, whole, tol, depth)
+    if !whole.is_finite() {
+        return f64::NAN;
+    }
+    let eps = tol * whole.abs().max(1e-300);
+    let mut budget = 20_000;
+    rec(f, a, b, whole, eps, depth, &mut budget)
 }

@@ -613,3 +613,17 @@ pub(crate) fn cpoly_monic_sqrt<F: Scalar>(p: &Poly<Complex<F>>) -> Option<Poly<C
         None
     }
 }
+
+/// For `f64`, drops leading coefficients that are round-off noise (`≤ 1e-9·max|cᵢ|`);
+/// exact polynomials are returned unchanged.
+pub(crate) fn trim_noise<F: Scalar>(p: Poly<F>) -> Poly<F> {
+    if F::EXACT {
+        return p;
+    }
+    let scale = poly_scale(&p);
+    let mut c = p.into_coeffs();
+    while c.last().is_some_and(|x| x.to_f64().abs() <= 1e-9 * scale) {
+        c.pop();
+    }
+    Poly::new(c)
+}

@@ -11,7 +11,8 @@
 //!
 //! * [`stereographic`]: `δ = σ∘ϑ` onto the sphere (the Hopf map), its fibre rotation
 //!   `J`, the projecting lines (fibres) of an elliptic congruence;
-//! * [`paraboloid`]: `ψ = τ∘α` onto `H`, the fibres of a hyperbolic congruence;
+//! * [`paraboloid`]: `ψ = τ∘α` onto `H`, the fibres of a hyperbolic congruence, and
+//!   interpolation on `H` of lowest (also odd) degree through the Segre factors;
 //! * [`quadratic_map`]: quadratic maps as four symmetric matrices, polar forms, exact
 //!   identity certificates of the maps themselves;
 //! * [`image`]: images of rational Bézier curves (degree `n → 2n`) and tensor-product

@@ -416,3 +416,169 @@ mod tests {
         ));
     }
 }
+
+/// An interpolating curve on `H` built from its Segre factors: `y = u⊗v`, i.e.
+/// `y = (u0v0, u1v0, u0v1, u1v1)` with `u = (q0, q1)` of degree `r` and `v = (q3, q2)` of
+/// degree `s`, so `deg y = r + s` (seed (8); `ψ(q) = u⊗v`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SegreInterpolant<F> {
+    u: Vec<[F; 2]>,
+    v: Vec<[F; 2]>,
+    curve: rcagd_geom::BezierCurve<F>,
+    params: Vec<F>,
+    points: Vec<Hom<F>>,
+}
+
+impl<F: Scalar> SegreInterpolant<F> {
+    /// The curve on `H` (degree `r + s`).
+    pub fn curve(&self) -> &rcagd_geom::BezierCurve<F> {
+        &self.curve
+    }
+    /// The Bernstein coefficients of `u = (q0, q1)` (degree `r`).
+    pub fn u(&self) -> &[[F; 2]] {
+        &self.u
+    }
+    /// The Bernstein coefficients of `v = (q3, q2)` (degree `s`).
+    pub fn v(&self) -> &[[F; 2]] {
+        &self.v
+    }
+    /// `(r, s)`.
+    pub fn degrees(&self) -> (usize, usize) {
+        (self.u.len() - 1, self.v.len() - 1)
+    }
+}
+
+impl<F: Scalar> crate::Certified for SegreInterpolant<F> {
+    /// The curve lies on `H` and passes through every point at its parameter.
+    fn certify(&self) -> Vec<Certificate> {
+        let mut out = vec![super::image::certify_curve_on_quadric(
+            &self.curve,
+            &paraboloid_matrix(),
+            "the Segre interpolant lies on H: h0h3 − h1h2 ≡ 0",
+        )];
+        for (i, (t, k)) in self.params.iter().zip(&self.points).enumerate() {
+            let y = helpers::eval_curve(&self.curve, t);
+            let ok = !helpers::is_zero_vec(&y) && helpers::parallel(&y, k);
+            out.push(Certificate::decide(
+                format!("y(t{i}) ∥ k{i}"),
+                ok,
+                F::EXACT,
+                || format!("{} vs {}", fmt_vec(&y), fmt_vec(k)),
+            ));
+        }
+        out
+    }
+}
+
+/// The lowest-degree binary polynomial `w(t)` (Bernstein coefficients) with
+/// `w(tᵢ) ∥ Wᵢ` and `w(tᵢ) ≠ 0` for all `i`.
+fn lowest_binary<F: Scalar>(targets: &[[F; 2]], params: &[F]) -> Option<Vec<[F; 2]>> {
+    for r in 0..=targets.len() {
+        let rows: Vec<Vec<F>> = targets
+            .iter()
+            .zip(params)
+            .map(|(w, t)| {
+                let b = helpers::bernstein::<F>(r, t);
+                let mut row = vec![F::zero(); 2 * (r + 1)];
+                for (j, bj) in b.iter().enumerate() {
+                    row[2 * j] = bj.clone() * w[1].clone();
+                    row[2 * j + 1] = -(bj.clone() * w[0].clone());
+                }
+                row
+            })
+            .collect();
+        let basis = helpers::null_space(&rows, 2 * (r + 1));
+        let pick = super::image::pick_member(&basis, 1, |c| {
+            params.iter().all(|t| {
+                let b = helpers::bernstein::<F>(r, t);
+                let mut w = [F::zero(), F::zero()];
+                for (j, bj) in b.iter().enumerate() {
+                    w[0] += bj.clone() * c[2 * j].clone();
+                    w[1] += bj.clone() * c[2 * j + 1].clone();
+                }
+                !helpers::all_negligible(&w, helpers::magnitude(c))
+            })
+        });
+        if let Some(c) = pick {
+            return Some(c.chunks(2).map(|p| [p[0].clone(), p[1].clone()]).collect());
+        }
+    }
+    None
+}
+
+/// Interpolation on `H` of lowest degree, odd degrees included: the conditions
+/// `u(tᵢ) ∥ Uᵢ`, `v(tᵢ) ∥ Vᵢ` for the Segre factors of `kᵢ ∥ Uᵢ⊗Vᵢ` decouple (the seed's
+/// linear problem for ψ splits into its `u`- and `v`-parts), so the lowest degrees `r`
+/// and `s` are found separately and `y = u⊗v` has the lowest degree `r + s` of all
+/// rational curves on `H` through the points at these parameters (every coprime curve on
+/// `H` is `u⊗v`, seed (8)). Points on one generator give a line (`r = 0` or `s = 0`).
+///
+/// # Errors
+/// [`QuadricError::Dimension`], [`QuadricError::NotOnQuadric`],
+/// [`QuadricError::RepeatedParameters`], [`QuadricError::RepeatedPoints`],
+/// [`QuadricError::NoInterpolant`].
+pub fn interpolate_segre<F: Scalar>(
+    points: &[Hom<F>],
+    params: &[F],
+) -> Result<SegreInterpolant<F>, QuadricError> {
+    if points.len() != params.len() || points.is_empty() {
+        return Err(QuadricError::Dimension(format!(
+            "{} points but {} parameters",
+            points.len(),
+            params.len()
+        )));
+    }
+    let q = paraboloid_matrix::<F>();
+    let mut us = Vec::new();
+    let mut vs = Vec::new();
+    for (i, k) in points.iter().enumerate() {
+        check_on_quadric(&q, k, &format!("point {i}"), "H")?;
+        for j in 0..i {
+            if helpers::negligible(
+                &(params[i].clone() - params[j].clone()),
+                helpers::magnitude(std::slice::from_ref(&params[i])),
+            ) {
+                return Err(QuadricError::RepeatedParameters(j, i));
+            }
+            if helpers::parallel(k, &points[j]) {
+                return Err(QuadricError::RepeatedPoints(j, i));
+            }
+        }
+        let (u, v) = segre_factors(k);
+        us.push(u);
+        vs.push(v);
+    }
+    let none = |what: &str| QuadricError::NoInterpolant {
+        degree: points.len(),
+        reason: format!("no admissible {what} factor"),
+    };
+    let u = lowest_binary(&us, params).ok_or_else(|| none("u"))?;
+    let v = lowest_binary(&vs, params).ok_or_else(|| none("v"))?;
+    // y = (u0v0, u1v0, u0v1, u1v1) by the Bernstein product rule
+    let (r, s) = (u.len() - 1, v.len() - 1);
+    let mut pts = vec![helpers::zero4::<F>(); r + s + 1];
+    for (i, ui) in u.iter().enumerate() {
+        for (j, vj) in v.iter().enumerate() {
+            let w = helpers::binom::<F>(r, i) * helpers::binom::<F>(s, j)
+                / helpers::binom::<F>(r + s, i + j);
+            let prod = [
+                ui[0].clone() * vj[0].clone(),
+                ui[1].clone() * vj[0].clone(),
+                ui[0].clone() * vj[1].clone(),
+                ui[1].clone() * vj[1].clone(),
+            ];
+            for (o, x) in pts[i + j].iter_mut().zip(prod) {
+                *o += w.clone() * x;
+            }
+        }
+    }
+    let curve =
+        rcagd_geom::BezierCurve::from_homogeneous(pts.into_iter().map(|p| p.to_vec()).collect())?;
+    Ok(SegreInterpolant {
+        u,
+        v,
+        curve,
+        params: params.to_vec(),
+        points: points.to_vec(),
+    })
+}

@@ -307,13 +307,13 @@ fn isqrt(n: i128) -> Option<i128> {
         return None;
     }
     let mut x = (n as f64).sqrt() as i128;
-    while x > 0 && x * x > n {
+    while x > 0 && !matches!(x.checked_mul(x), Some(sq) if sq <= n) {
         x -= 1;
     }
-    while (x + 1) * (x + 1) <= n {
+    while (x + 1).checked_mul(x + 1).is_some_and(|sq| sq <= n) {
         x += 1;
     }
-    (x * x == n).then_some(x)
+    (x.checked_mul(x) == Some(n)).then_some(x)
 }
 
 /// Searches `Σ aᵢ yᵢ² = 0` for a non-zero integer solution with `|yᵢ| ≤ h` (the last

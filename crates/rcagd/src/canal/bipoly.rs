@@ -1,0 +1,354 @@
+//! Bivariate polynomials `Σⱼ cⱼ(t) uʲ` (power basis; `cⱼ ∈ F[t]`) — the homogeneous
+//! coordinate functions of the canal-surface parametrizations — with exact division by
+//! `u² + 1`, removal of common factors in `t` and in `u`, and conversion to tensor-product
+//! Bézier patches on any parameter rectangle.
+
+use rcagd_algebra::bernstein::to_bernstein;
+use rcagd_algebra::mpoly::MPoly;
+use rcagd_algebra::{AlgebraError, Poly, Scalar};
+use rcagd_geom::{BezierPatch, GeomError};
+
+/// A polynomial `Σⱼ cⱼ(t) uʲ` in two variables (the first, `t`, inside the coefficients).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BiPoly<F> {
+    c: Vec<Poly<F>>,
+}
+
+impl<F: Scalar> BiPoly<F> {
+    /// From the coefficients `c₀(t), c₁(t), …` of `u⁰, u¹, …` (trailing zeros removed).
+    pub fn new(c: Vec<Poly<F>>) -> Self {
+        let mut b = BiPoly { c };
+        b.trim();
+        b
+    }
+
+    fn trim(&mut self) {
+        while self.c.last().is_some_and(Poly::is_zero) {
+            self.c.pop();
+        }
+    }
+
+    /// The zero polynomial.
+    pub fn zero() -> Self {
+        BiPoly { c: Vec::new() }
+    }
+
+    /// A polynomial in `t` only.
+    pub fn from_t(p: Poly<F>) -> Self {
+        BiPoly::new(vec![p])
+    }
+
+    /// A polynomial in `u` only.
+    pub fn from_u(p: &Poly<F>) -> Self {
+        BiPoly::new(p.coeffs().iter().map(|x| Poly::constant(x.clone())).collect())
+    }
+
+    /// The coefficient polynomials in `t` (index = power of `u`).
+    pub fn coeffs(&self) -> &[Poly<F>] {
+        &self.c
+    }
+
+    /// `true` for the zero polynomial.
+    pub fn is_zero(&self) -> bool {
+        self.c.is_empty()
+    }
+
+    /// The degree in `u` (`None` for zero).
+    pub fn degree_u(&self) -> Option<usize> {
+        self.c.len().checked_sub(1)
+    }
+
+    /// The degree in `t` (`None` for zero).
+    pub fn degree_t(&self) -> Option<usize> {
+        self.c.iter().filter_map(Poly::degree).max()
+    }
+
+    /// All coefficients (for identity tests).
+    pub fn all_coeffs(&self) -> Vec<F> {
+        self.c.iter().flat_map(|p| p.coeffs().iter().cloned()).collect()
+    }
+
+    /// The number of non-zero terms.
+    pub fn num_terms(&self) -> usize {
+        self.c
+            .iter()
+            .map(|p| p.coeffs().iter().filter(|x| !x.is_zero()).count())
+            .sum()
+    }
+
+    /// The value at `(t, u)`.
+    pub fn eval(&self, t: &F, u: &F) -> F {
+        let mut acc = F::zero();
+        for p in self.c.iter().rev() {
+            acc = acc * u.clone() + p.eval(t);
+        }
+        acc
+    }
+
+    /// The polynomial in `u` for fixed `t`.
+    pub fn at_t(&self, t: &F) -> Poly<F> {
+        Poly::new(self.c.iter().map(|p| p.eval(t)).collect())
+    }
+
+    /// `self + other`.
+    pub fn add(&self, other: &BiPoly<F>) -> BiPoly<F> {
+        let n = self.c.len().max(other.c.len());
+        BiPoly::new(
+            (0..n)
+                .map(|j| {
+                    let a = self.c.get(j).cloned().unwrap_or_else(Poly::zero);
+                    let b = other.c.get(j).cloned().unwrap_or_else(Poly::zero);
+                    &a + &b
+                })
+                .collect(),
+        )
+    }
+
+    /// `self − other`.
+    pub fn sub(&self, other: &BiPoly<F>) -> BiPoly<F> {
+        self.add(&other.neg())
+    }
+
+    /// `−self`.
+    pub fn neg(&self) -> BiPoly<F> {
+        BiPoly::new(self.c.iter().map(|p| -p).collect())
+    }
+
+    /// `self · other`.
+    pub fn mul(&self, other: &BiPoly<F>) -> BiPoly<F> {
+        if self.is_zero() || other.is_zero() {
+            return BiPoly::zero();
+        }
+        let mut out = vec![Poly::zero(); self.c.len() + other.c.len() - 1];
+        for (i, a) in self.c.iter().enumerate() {
+            if a.is_zero() {
+                continue;
+            }
+            for (j, b) in other.c.iter().enumerate() {
+                out[i + j] = &out[i + j] + &(a * b);
+            }
+        }
+        BiPoly::new(out)
+    }
+
+    /// `self · p(t)`.
+    pub fn mul_t(&self, p: &Poly<F>) -> BiPoly<F> {
+        BiPoly::new(self.c.iter().map(|c| c * p).collect())
+    }
+
+    /// `self · k` for a scalar.
+    pub fn scale(&self, k: &F) -> BiPoly<F> {
+        BiPoly::new(self.c.iter().map(|c| c.scale(k)).collect())
+    }
+
+    /// `∂/∂t`.
+    pub fn partial_t(&self) -> BiPoly<F> {
+        BiPoly::new(self.c.iter().map(Poly::derivative).collect())
+    }
+
+    /// `∂/∂u`.
+    pub fn partial_u(&self) -> BiPoly<F> {
+        BiPoly::new(
+            self.c
+                .iter()
+                .enumerate()
+                .skip(1)
+                .map(|(j, p)| p.scale(&F::from_i64(j as i64)))
+                .collect(),
+        )
+    }
+
+    /// The exact quotient by `u² + 1`.
+    ///
+    /// # Errors
+    /// [`AlgebraError::NotRepresentable`] if `u² + 1` does not divide `self`.
+    pub fn div_u2_plus_1(&self) -> Result<BiPoly<F>, AlgebraError> {
+        // synthetic division by the monic u² + 1: q_{j} = r_{j+2}, r_j -= q_j
+        let n = self.c.len();
+        if n < 3 {
+            if self.is_zero() {
+                return Ok(BiPoly::zero());
+            }
+            return Err(AlgebraError::NotRepresentable(
+                "u² + 1 does not divide a polynomial of u-degree < 2".into(),
+            ));
+        }
+        let mut r = self.c.clone();
+        let mut q = vec![Poly::zero(); n - 2];
+        for j in (0..n - 2).rev() {
+            let c = r[j + 2].clone();
+            r[j] = &r[j] - &c;
+            q[j] = c;
+        }
+        if r[0].is_zero() && r[1].is_zero() {
+            Ok(BiPoly::new(q))
+        } else {
+            Err(AlgebraError::NotRepresentable(
+                "u² + 1 does not divide the polynomial".into(),
+            ))
+        }
+    }
+
+    /// The content in `t`: the monic gcd of all coefficient polynomials (exact scalars).
+    pub fn content_t(&self) -> Poly<F> {
+        self.c.iter().fold(Poly::zero(), |acc, p| acc.gcd(p))
+    }
+
+    /// The exact quotient by a polynomial in `t`.
+    ///
+    /// # Errors
+    /// [`AlgebraError::NotRepresentable`] if `p` does not divide every coefficient.
+    pub fn div_t(&self, p: &Poly<F>) -> Result<BiPoly<F>, AlgebraError> {
+        Ok(BiPoly::new(
+            self.c
+                .iter()
+                .map(|c| c.div_exact(p))
+                .collect::<Result<Vec<_>, _>>()?,
+        ))
+    }
+
+    /// `t ↔ u` (the coefficient polynomials become polynomials in `u`).
+    pub fn transpose(&self) -> BiPoly<F> {
+        let nt = self.degree_t().map_or(0, |d| d + 1);
+        BiPoly::new(
+            (0..nt)
+                .map(|i| Poly::new(self.c.iter().map(|p| p.coeff(i)).collect()))
+                .collect(),
+        )
+    }
+
+    /// `uⁿ · self(t, 1/u)` for `n ≥ deg_u` (the chart at `u = ∞`).
+    pub fn reverse_u(&self, n: usize) -> BiPoly<F> {
+        let mut c = self.c.clone();
+        c.resize(n + 1, Poly::zero());
+        c.reverse();
+        BiPoly::new(c)
+    }
+
+    /// As a sparse polynomial in the variables `(t, u)` (variable 0 is `t`).
+    pub fn to_mpoly(&self) -> MPoly<F> {
+        let mut out = MPoly::zero(2);
+        for (j, p) in self.c.iter().enumerate() {
+            for (i, x) in p.coeffs().iter().enumerate() {
+                if !x.is_zero() {
+                    out = &out + &MPoly::monomial(2, &[i as u32, j as u32], x.clone());
+                }
+            }
+        }
+        out
+    }
+
+    /// The scalar type converted.
+    pub fn map_scalar<G: Scalar>(&self, f: impl Fn(&F) -> G + Copy) -> BiPoly<G> {
+        BiPoly::new(self.c.iter().map(|p| p.map(f)).collect())
+    }
+
+    /// The tensor Bernstein coefficients of degree `(m, n)` on `[t₀, t₁] × [u₀, u₁]`
+    /// (row-major in the `t` index).
+    ///
+    /// # Errors
+    /// [`AlgebraError::InvalidArgument`] if a degree exceeds `(m, n)`.
+    pub fn bernstein_on(
+        &self,
+        (t0, t1): (&F, &F),
+        (u0, u1): (&F, &F),
+        m: usize,
+        n: usize,
+    ) -> Result<Vec<F>, AlgebraError> {
+        let st = Poly::new(vec![t0.clone(), t1.clone() - t0.clone()]);
+        let su = Poly::new(vec![u0.clone(), u1.clone() - u0.clone()]);
+        // substitute t in every coefficient, then u as a polynomial with Poly coefficients
+        let ct: Vec<Poly<F>> = self.c.iter().map(|p| p.compose(&st)).collect();
+        let mut acc: Vec<Poly<F>> = Vec::new(); // coefficients in u (power of b)
+        for p in ct.iter().rev() {
+            // acc = acc * su + p
+            let mut next = vec![Poly::zero(); acc.len() + 1];
+            for (j, a) in acc.iter().enumerate() {
+                next[j] = &next[j] + &a.scale(&su.coeff(0));
+                next[j + 1] = &next[j + 1] + &a.scale(&su.coeff(1));
+            }
+            next[0] = &next[0] + p;
+            acc = next;
+        }
+        // acc[j](a) b^j: Bernstein in a for each j, then in b
+        let mut by_j: Vec<Vec<F>> = Vec::with_capacity(acc.len());
+        for p in &acc {
+            by_j.push(to_bernstein(p, m)?);
+        }
+        let mut out = vec![F::zero(); (m + 1) * (n + 1)];
+        for i in 0..=m {
+            let pu = Poly::new(by_j.iter().map(|v| v[i].clone()).collect());
+            let b = to_bernstein(&pu, n)?;
+            for (j, x) in b.into_iter().enumerate() {
+                out[i * (n + 1) + j] = x;
+            }
+        }
+        Ok(out)
+    }
+}
+
+/// The rational tensor-product Bézier patch of the homogeneous coordinates `X` on
+/// `[t₀, t₁] × [u₀, u₁]` (first patch parameter `t`, second `u`), of bidegree
+/// `(deg_t, deg_u)` of `X`.
+///
+/// # Errors
+/// [`GeomError`] for an empty coordinate list or an inconsistent layout.
+pub fn patch_of<F: Scalar>(
+    x: &[BiPoly<F>],
+    t: (&F, &F),
+    u: (&F, &F),
+) -> Result<BezierPatch<F>, GeomError> {
+    let m = x.iter().filter_map(BiPoly::degree_t).max().unwrap_or(0);
+    let n = x.iter().filter_map(BiPoly::degree_u).max().unwrap_or(0);
+    let comps: Vec<Vec<F>> = x
+        .iter()
+        .map(|c| c.bernstein_on(t, u, m, n))
+        .collect::<Result<_, _>>()?;
+    let s = x.len();
+    let mut coords = vec![F::zero(); (m + 1) * (n + 1) * s];
+    for (k, comp) in comps.iter().enumerate() {
+        for (idx, v) in comp.iter().enumerate() {
+            coords[idx * s + k] = v.clone();
+        }
+    }
+    BezierPatch::from_flat(s - 1, m, n, coords)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rcagd_algebra::Rational;
+
+    fn p(c: &[i64]) -> Poly<Rational> {
+        Poly::from_ints(c)
+    }
+
+    #[test]
+    fn division_and_bernstein() {
+        // (t + u)(u² + 1)
+        let a = BiPoly::new(vec![p(&[0, 1]), p(&[1])]);
+        let b = BiPoly::from_u(&p(&[1, 0, 1]));
+        let ab = a.mul(&b);
+        assert_eq!(ab.div_u2_plus_1().expect("div"), a);
+        assert!(a.div_u2_plus_1().is_err());
+        let q = Rational::from_ratio(3, 7);
+        let r = Rational::from(-2);
+        assert_eq!(ab.eval(&q, &r), (q.clone() + r.clone()) * Rational::from(5));
+        // patch evaluation agrees
+        let one = BiPoly::from_t(p(&[1]));
+        let patch = patch_of(
+            &[one, ab.clone()],
+            (&Rational::from(0), &Rational::from(2)),
+            (&Rational::from(-1), &Rational::from(1)),
+        )
+        .expect("patch");
+        let h = patch.eval_homogeneous(&Rational::from_ratio(1, 2), &Rational::from_ratio(1, 4));
+        // t = 1, u = −1/2
+        assert_eq!(
+            h[1].clone() / h[0].clone(),
+            ab.eval(&Rational::from(1), &Rational::from_ratio(-1, 2))
+        );
+        assert_eq!(ab.transpose().transpose(), ab);
+        assert_eq!(ab.reverse_u(3).reverse_u(3), ab);
+    }
+}

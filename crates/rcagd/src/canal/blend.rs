@@ -1,0 +1,1 @@
+//! Canal-surface blends (placeholder, filled below).

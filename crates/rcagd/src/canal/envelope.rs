@@ -1,0 +1,1015 @@
+//! The rational parametrization of a canal surface (seed 003 §2.1 (2.10)–(2.17),
+//! Peternell–Pottmann; NOTES-000-003 item 003-4, corrected) and the cyclographic
+//! construction for quadratic families (seed 003 §2.3, item 003-5).
+//!
+//! **Peternell–Pottmann recipe (003-4).** With the derivative numerators
+//! `P = (P₁, P₂, P₃, P₄) ∝ (ṁ, ṙ)` ([`CanalSpine::derivative_numerators`]) and a split
+//! `D = P₁² + P₂² + P₃² − P₄² = g₁² + g₂²` ([`super::sum_of_squares`]), pick a coordinate axis
+//! `j` and a sign `σ` with `c = P₄ + σPⱼ ≢ 0` (if `c ≡ 0` for one axis the stereographic image
+//! of the characteristic circles is a line; another axis is used), and let `a, b` be the
+//! other two axes. In the frame `(a, b, σ·j)` the unit normals of the envelope along the
+//! characteristic circle are the inverse stereographic images (centre `(0, 0, 1)`) of the
+//! circle with centre `μ = −(P_a, P_b)/c` and radius² `ρ² = D/c²` (2.13, corrected per
+//! erratum 003-E4: the denominator is squared). The rational point `δ̃ = μ + g̃`,
+//! `g̃ = (g₁, g₂)/c`, is reflected in the diameters with normals `n = (u, 1)` (2.15):
+//!
+//! ```text
+//! k(t, u) = δ̃ − 2⟨g̃, n⟩/⟨n, n⟩·n,     K₀ = c(u² + 1),
+//! K₁ = (g₁ − P_a)(u² + 1) − 2(g₁u + g₂)u,   K₂ = (g₂ − P_b)(u² + 1) − 2(g₁u + g₂),
+//! q = (2K₁K₀, 2K₂K₀, K₁² + K₂² − K₀²)/(K₀² + K₁² + K₂²)          (2.16)
+//! x(t, u) = m(t) + r(t) q(t, u)                                   (2.17)
+//! ```
+//!
+//! All four homogeneous components of `q` vanish at `u = ±i` (there `K₀ = 0` and
+//! `K₁ = ±iK₂`), so `u² + 1` is divided out: the characteristic circles get degree 2 in `u`.
+//! Common factors in `t` (and in `u`) are removed for exact scalars. For polynomial `m, r` of
+//! degree `k` the bidegree is at most `(3k − 2, 2)`.
+//!
+//! **Certificates** (polynomial identities in `(t, u)`, homogeneous `X = (X₀, X₁, X₂, X₃)`,
+//! spine `(W, M, R)`): `Σ(XᵢW − MᵢX₀)² − R²X₀² ≡ 0` (`|x − m|² = r²`),
+//! `Σ(XᵢW − MᵢX₀)Pᵢ + R X₀ P₄ ≡ 0` (`(x − m)·ṁ + r ṙ = 0`, the contact condition, sign per
+//! erratum 003-E3), `⟨x − m, x_u⟩ ≡ 0`, `⟨x − m, x_t⟩ ≡ 0` (the normal passes through the
+//! spine: the surface touches every sphere), and the split `g₁² + g₂² ≡ D`.
+//!
+//! **Degree.** The exact builder tries every admissible axis and every choice of Gaussian
+//! factors of `D` (seed 003 (2.35)) and keeps the lowest bidegree; the Krasauskas bound of
+//! seed 003 Satz 2 (2.37) is computed by [`krasauskas_bound`] for comparison — note erratum
+//! 003-E9: as printed it holds for rational `γ` and overestimates for polynomial data
+//! (e.g. `m = (t, t²/2, 0)`, `r = t`: (2.37) gives `(6, 2)`, the construction gives `(4, 2)`).
+//!
+//! **Cyclographic construction for quadratic `k` (003-5, seed 003 §2.3).** For a polynomial
+//! curve `k(p) ∈ R^{3,1}` of degree ≤ 2, `k̇(p) = a + b p` and the condition
+//! `⟨w(s,t), k̇(p)⟩_pe = 0` for the isotropic direction `w(s,t) = (2s, 2t, 1 − s² − t²,
+//! 1 + s² + t²)` is linear in `p`: `p = −⟨w, a⟩/⟨w, b⟩`, and
+//! `Γ(s, t) = π(k(p)) − k₄(p)·(w₁, w₂, w₃)/w₄` is a rational parametrization over `Q` of the
+//! whole envelope (no square root at all) — [`QuadraticCanal`].
+
+use super::bipoly::{patch_of, BiPoly};
+use super::sum_of_squares::{sum_of_two_squares_f64, GaussianSplit, SumOfSquares};
+use super::{CanalError, CanalSpine};
+use crate::error::format_scalar;
+use crate::Certified;
+use rcagd_algebra::roots::{isolate_real_roots, square_free_decomposition};
+use rcagd_algebra::{Certificate, Poly, QuadExt, Rational, Scalar};
+use rcagd_geom::certify::polynomial_is_zero_scaled;
+use rcagd_geom::BezierPatch;
+
+/// Which oriented family is enveloped: `(m; r)` or `(m; −r)` (the same surface with the
+/// opposite unit normal `q`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Orientation {
+    /// The family as given.
+    #[default]
+    Positive,
+    /// The family `(m; −r)`.
+    Negative,
+}
+
+/// The stereographic frame of the construction: `c = P₄ + sign·P_axis`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct AxisChoice {
+    /// The axis `j ∈ {0, 1, 2}` that plays the role of `x₃` in (2.13).
+    pub axis: usize,
+    /// `+1` or `−1`.
+    pub positive: bool,
+}
+
+impl AxisChoice {
+    /// The six admissible choices, `x₃` first (the seed's frame).
+    pub fn all() -> [AxisChoice; 6] {
+        let mut out = [AxisChoice {
+            axis: 2,
+            positive: true,
+        }; 6];
+        for (k, (axis, positive)) in [(2, true), (2, false), (1, true), (1, false), (0, true), (0, false)]
+            .into_iter()
+            .enumerate()
+        {
+            out[k] = AxisChoice { axis, positive };
+        }
+        out
+    }
+}
+
+/// Options of the canal-surface builders.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct CanalOptions {
+    /// The orientation of the family.
+    pub orientation: Orientation,
+    /// The choice of Gaussian factors (bit `k` picks `π̄ₖ`); `None`: the lowest degree.
+    pub choice: Option<usize>,
+    /// The stereographic axis; `None`: the lowest degree among the admissible ones.
+    pub axis: Option<AxisChoice>,
+    /// The parameter domain `[a, b]` on which the envelope must be real; `None`: all of `R`.
+    /// If `D < 0` outside `[a, b]`, the family is reparametrized by
+    /// `t = (a + b s²)/(1 + s²)` (seed 004 §4.5), which is real for all `s`.
+    pub domain: Option<(Rational, Rational)>,
+}
+
+/// The characteristic circle `K(t) ∩ K̇(t)` at one parameter (seed 003 §2.1).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CharacteristicCircle<F> {
+    /// Centre `m − (r P₄/|P_m|²) P_m`.
+    pub center: [F; 3],
+    /// The normal of its plane (the spine tangent direction `P_m ∥ ṁ`).
+    pub normal: [F; 3],
+    /// Squared radius `r² D/|P_m|²` (zero: a point).
+    pub radius_sq: F,
+}
+
+/// A rational canal surface `x(t, u)` in homogeneous coordinates with its defining data.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CanalSurface<F> {
+    spine: CanalSpine<F>,
+    numerators: [Poly<F>; 4],
+    split: [Poly<F>; 2],
+    axis: AxisChoice,
+    x: [BiPoly<F>; 4],
+    reparametrized: Option<(Rational, Rational)>,
+}
+
+fn sq<F: Scalar>(p: &Poly<F>) -> Poly<F> {
+    p * p
+}
+
+fn poly_scale<F: Scalar>(p: &Poly<F>) -> f64 {
+    p.coeffs().iter().map(|x| x.to_f64().abs()).fold(0.0, f64::max)
+}
+
+fn bi_scale<F: Scalar>(b: &BiPoly<F>) -> f64 {
+    b.coeffs().iter().map(poly_scale).fold(0.0, f64::max)
+}
+
+fn small<F: Scalar>(p: &Poly<F>, scale: f64) -> bool {
+    if F::EXACT {
+        p.is_zero()
+    } else {
+        poly_scale(p) <= 1e-9 * scale.max(1.0)
+    }
+}
+
+/// Builds `x(t, u)` for one axis choice (module docs).
+fn build<F: Scalar>(
+    spine: &CanalSpine<F>,
+    numerators: &[Poly<F>; 4],
+    g: &[Poly<F>; 2],
+    axis: AxisChoice,
+) -> Result<CanalSurface<F>, CanalError> {
+    let p = numerators;
+    let j = axis.axis.min(2);
+    let others: Vec<usize> = (0..3).filter(|&i| i != j).collect();
+    let (a, b) = (others[0], others[1]);
+    let pj = if axis.positive { p[j].clone() } else { -&p[j] };
+    let c = &p[3] + &pj;
+    let s = p.iter().map(poly_scale).fold(0.0, f64::max);
+    if small(&c, s) {
+        return Err(CanalError::DegenerateSpine(format!(
+            "ṙ {} ṁ{} ≡ 0 for this axis: the stereographic image of the characteristic circles is a line (use another axis)",
+            if axis.positive { "+" } else { "−" },
+            j + 1
+        )));
+    }
+    let [g1, g2] = g;
+    let two = F::from_i64(2);
+    let k0 = BiPoly::new(vec![c.clone(), Poly::zero(), c]);
+    let k1 = BiPoly::new(vec![g1 - &p[a], g2.scale(&-two.clone()), -&(g1 + &p[a])]);
+    let k2 = BiPoly::new(vec![-&(g2 + &p[b]), g1.scale(&-two.clone()), g2 - &p[b]]);
+    let (k00, k11, k22) = (k0.mul(&k0), k1.mul(&k1), k2.mul(&k2));
+    let q0 = k00.add(&k11).add(&k22).div_u2_plus_1()?;
+    let qa = k1.mul(&k0).scale(&two).div_u2_plus_1()?;
+    let qb = k2.mul(&k0).scale(&two).div_u2_plus_1()?;
+    let mut qj = k11.add(&k22).sub(&k00).div_u2_plus_1()?;
+    if !axis.positive {
+        qj = qj.neg();
+    }
+    let mut q: [BiPoly<F>; 3] = [BiPoly::zero(), BiPoly::zero(), BiPoly::zero()];
+    q[a] = qa;
+    q[b] = qb;
+    q[j] = qj;
+    let w = spine.weight();
+    let m = spine.center_polys();
+    let r = spine.radius_poly();
+    let mut x = [
+        q0.mul_t(w),
+        q0.mul_t(&m[0]).add(&q[0].mul_t(r)),
+        q0.mul_t(&m[1]).add(&q[1].mul_t(r)),
+        q0.mul_t(&m[2]).add(&q[2].mul_t(r)),
+    ];
+    if F::EXACT {
+        reduce(&mut x)?;
+    }
+    Ok(CanalSurface {
+        spine: spine.clone(),
+        numerators: numerators.clone(),
+        split: g.clone(),
+        axis,
+        x,
+        reparametrized: None,
+    })
+}
+
+/// Removes the common factors in `t` and in `u` of the four components (exact scalars).
+fn reduce<F: Scalar>(x: &mut [BiPoly<F>; 4]) -> Result<(), CanalError> {
+    let ct = x
+        .iter()
+        .fold(Poly::zero(), |acc: Poly<F>, b| acc.gcd(&b.content_t()));
+    if ct.degree().is_some_and(|d| d > 0) {
+        for b in x.iter_mut() {
+            *b = b.div_t(&ct)?;
+        }
+    }
+    let cu = x
+        .iter()
+        .fold(Poly::zero(), |acc: Poly<F>, b| acc.gcd(&b.transpose().content_t()));
+    if cu.degree().is_some_and(|d| d > 0) {
+        for b in x.iter_mut() {
+            *b = b.transpose().div_t(&cu)?.transpose();
+        }
+    }
+    Ok(())
+}
+
+fn degree_key<F: Scalar>(s: &CanalSurface<F>) -> (usize, usize, usize) {
+    let (dt, du) = s.degree();
+    (dt, du, s.x.iter().map(BiPoly::num_terms).sum())
+}
+
+/// Builds with the given split, trying the requested or all axes; keeps the lowest degree.
+fn build_best<F: Scalar>(
+    spine: &CanalSpine<F>,
+    g: &[Poly<F>; 2],
+    axis: Option<AxisChoice>,
+) -> Result<CanalSurface<F>, CanalError> {
+    let numerators = spine.derivative_numerators()?;
+    let axes: Vec<AxisChoice> = match axis {
+        Some(a) => vec![a],
+        None => AxisChoice::all().to_vec(),
+    };
+    let mut best: Option<CanalSurface<F>> = None;
+    let mut last_err = None;
+    for a in axes {
+        match build(spine, &numerators, g, a) {
+            Ok(s) => {
+                let better = match &best {
+                    None => true,
+                    Some(b) => degree_key(&s) < degree_key(b),
+                };
+                if better {
+                    best = Some(s);
+                }
+                if !F::EXACT {
+                    break;
+                }
+            }
+            Err(e) => last_err = Some(e),
+        }
+    }
+    best.ok_or_else(|| {
+        last_err.unwrap_or_else(|| CanalError::DegenerateSpine("no admissible axis".into()))
+    })
+}
+
+fn check_split<F: Scalar>(d: &Poly<F>, g: &[Poly<F>; 2]) -> Result<(), CanalError> {
+    let s = &sq(&g[0]) + &sq(&g[1]);
+    let r = &s - d;
+    if small(&r, poly_scale(d)) {
+        Ok(())
+    } else {
+        Err(CanalError::NotASplit(format!(
+            "g₁² + g₂² − D has {} non-zero coefficients (largest ≈ {:e})",
+            r.coeffs().iter().filter(|x| !x.is_zero()).count(),
+            poly_scale(&r)
+        )))
+    }
+}
+
+/// The canal surface of `spine` from a given split `D = g₁² + g₂²` (generic over the
+/// scalar; `D` as in [`CanalSpine::discriminant`]). The orientation and axis options apply;
+/// `choice` and `domain` are ignored (the split is given).
+///
+/// # Errors
+/// [`CanalError::NotASplit`] if `g₁² + g₂² ≠ D`; [`CanalError::DegenerateSpine`] as in
+/// [`CanalSpine::derivative_numerators`] or if no axis is admissible.
+pub fn canal_surface_with_split<F: Scalar>(
+    spine: &CanalSpine<F>,
+    g1: &Poly<F>,
+    g2: &Poly<F>,
+    options: &CanalOptions,
+) -> Result<CanalSurface<F>, CanalError> {
+    let spine = match options.orientation {
+        Orientation::Positive => spine.clone(),
+        Orientation::Negative => spine.reversed(),
+    };
+    let d = spine.discriminant()?;
+    let g = [g1.clone(), g2.clone()];
+    check_split(&d, &g)?;
+    build_best(&spine, &g, options.axis)
+}
+
+/// The result of the exact builder: over `Q`, or over one quadratic field `Q(√d)`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum CanalBuild {
+    /// A parametrization with rational coefficients.
+    Rational(CanalSurface<Rational>),
+    /// A parametrization over `Q(√radicand)` (the split of `D` needs it).
+    Extension {
+        /// The square-free radicand `d`.
+        radicand: Rational,
+        /// The surface over `Q(√d)`.
+        surface: CanalSurface<QuadExt>,
+    },
+}
+
+impl CanalBuild {
+    /// `(deg_t, deg_u)`.
+    pub fn degree(&self) -> (usize, usize) {
+        match self {
+            CanalBuild::Rational(s) => s.degree(),
+            CanalBuild::Extension { surface, .. } => surface.degree(),
+        }
+    }
+
+    /// `None` over `Q`, `Some(d)` over `Q(√d)`.
+    pub fn radicand(&self) -> Option<&Rational> {
+        match self {
+            CanalBuild::Rational(_) => None,
+            CanalBuild::Extension { radicand, .. } => Some(radicand),
+        }
+    }
+
+    /// The rational surface, if the build is rational.
+    pub fn as_rational(&self) -> Option<&CanalSurface<Rational>> {
+        match self {
+            CanalBuild::Rational(s) => Some(s),
+            CanalBuild::Extension { .. } => None,
+        }
+    }
+
+    /// The surface over `QuadExt` (rationals embedded for a rational build).
+    pub fn to_ext(&self) -> CanalSurface<QuadExt> {
+        match self {
+            CanalBuild::Rational(s) => s.map_scalar(|x| QuadExt::rational(x.clone())),
+            CanalBuild::Extension { surface, .. } => surface.clone(),
+        }
+    }
+
+    /// The surface in `f64` (for tessellation and export).
+    pub fn to_f64(&self) -> CanalSurface<f64> {
+        match self {
+            CanalBuild::Rational(s) => s.map_scalar(Scalar::to_f64),
+            CanalBuild::Extension { surface, .. } => surface.map_scalar(Scalar::to_f64),
+        }
+    }
+}
+
+impl Certified for CanalBuild {
+    fn certify(&self) -> Vec<Certificate> {
+        match self {
+            CanalBuild::Rational(s) => s.certify(),
+            CanalBuild::Extension { surface, radicand } => {
+                let mut c = surface.certify();
+                for x in &mut c {
+                    x.property = format!("{} [over Q(√{})]", x.property, format_scalar(radicand));
+                }
+                c
+            }
+        }
+    }
+}
+
+/// Reparametrizes the family by `t = (a + b s²)/(1 + s²)` (homogeneous substitution of
+/// degree `k`): real for every `s` when `D ≥ 0` on `[a, b]` (seed 004 §4.5).
+fn reparametrize(spine: &CanalSpine<Rational>, a: &Rational, b: &Rational) -> CanalSpine<Rational> {
+    let k = spine.degree();
+    let num = Poly::new(vec![a.clone(), Rational::ZERO, b.clone()]);
+    let den = Poly::new(vec![Rational::ONE, Rational::ZERO, Rational::ONE]);
+    let sub = |p: &Poly<Rational>| {
+        let mut acc = Poly::zero();
+        for (i, c) in p.coeffs().iter().enumerate() {
+            let term = &num.pow(i as u32) * &den.pow((k - i) as u32);
+            acc = &acc + &term.scale(c);
+        }
+        acc
+    };
+    let [w, m0, m1, m2, r] = spine.homogeneous();
+    CanalSpine {
+        w: sub(&w),
+        m: [sub(&m0), sub(&m1), sub(&m2)],
+        r: sub(&r),
+    }
+}
+
+/// The canal surface of a rational family, exactly: over `Q` when `D` is a sum of two
+/// rational squares, otherwise over the quadratic field it needs (said in the result),
+/// otherwise an error — never silently in `f64` (module docs, [`super::sum_of_squares`]).
+///
+/// # Errors
+/// [`CanalError::NoRealEnvelope`] naming the interval where `|ṁ| < |ṙ|` (on the domain, or
+/// on `R` without one); [`CanalError::DegenerateSpine`]; [`CanalError::NeedsLargerExtension`];
+/// [`CanalError::Factorization`].
+pub fn canal_surface(
+    spine: &CanalSpine<Rational>,
+    options: &CanalOptions,
+) -> Result<CanalBuild, CanalError> {
+    let mut spine = match options.orientation {
+        Orientation::Positive => spine.clone(),
+        Orientation::Negative => spine.reversed(),
+    };
+    let mut reparam = None;
+    if let Some((a, b)) = &options.domain {
+        spine.check_real_envelope(Some((a, b)))?;
+        if spine.check_real_envelope(None).is_err() {
+            spine = reparametrize(&spine, a, b);
+            reparam = Some((a.clone(), b.clone()));
+        }
+    } else {
+        spine.check_real_envelope(None)?;
+    }
+    let d = spine.discriminant()?;
+    let split = GaussianSplit::new(&d)?;
+    let choices: Vec<usize> = match options.choice {
+        Some(c) => vec![c],
+        None => (0..split.num_choices().min(16)).collect(),
+    };
+    let mut best: Option<CanalBuild> = None;
+    let mut last_err = None;
+    for choice in choices {
+        let sos = match split.decompose(choice) {
+            Ok(s) => s,
+            Err(e) => {
+                last_err = Some(e);
+                continue;
+            }
+        };
+        let built = match &sos {
+            SumOfSquares::Rational { g1, g2 } => {
+                build_best(&spine, &[g1.clone(), g2.clone()], options.axis).map(|mut s| {
+                    s.reparametrized = reparam.clone();
+                    CanalBuild::Rational(s)
+                })
+            }
+            SumOfSquares::Extension { radicand, g1, g2 } => {
+                let se = spine.map_scalar(|x| QuadExt::rational(x.clone()));
+                build_best(&se, &[g1.clone(), g2.clone()], options.axis).map(|mut s| {
+                    s.reparametrized = reparam.clone();
+                    CanalBuild::Extension {
+                        radicand: radicand.clone(),
+                        surface: s,
+                    }
+                })
+            }
+        };
+        match built {
+            Ok(b) => {
+                let better = match &best {
+                    None => true,
+                    Some(old) => {
+                        let (a, c) = (b.degree(), old.degree());
+                        (a.0 + a.1, a) < (c.0 + c.1, c)
+                    }
+                };
+                if better {
+                    best = Some(b);
+                }
+            }
+            Err(e) => last_err = Some(e),
+        }
+    }
+    best.ok_or_else(|| {
+        last_err.unwrap_or_else(|| CanalError::DegenerateSpine("no construction".into()))
+    })
+}
+
+/// The canal surface in `f64`: the split of `D` from its complex roots
+/// ([`sum_of_two_squares_f64`]); approximate, certificates are tolerance checks.
+///
+/// # Errors
+/// As [`canal_surface_with_split`] and [`sum_of_two_squares_f64`];
+/// [`CanalError::NoRealEnvelope`] from the exact reality check of the (exactly converted)
+/// `f64` data.
+pub fn canal_surface_f64(
+    spine: &CanalSpine<f64>,
+    options: &CanalOptions,
+) -> Result<CanalSurface<f64>, CanalError> {
+    let spine = match options.orientation {
+        Orientation::Positive => spine.clone(),
+        Orientation::Negative => spine.reversed(),
+    };
+    spine.check_real_envelope(None)?;
+    let d = spine.discriminant()?;
+    let (g1, g2) = sum_of_two_squares_f64(&d)?;
+    let opts = CanalOptions {
+        orientation: Orientation::Positive,
+        ..options.clone()
+    };
+    canal_surface_with_split(&spine, &g1, &g2, &opts)
+}
+
+impl<F: Scalar> CanalSurface<F> {
+    /// The homogeneous coordinates `(X₀, X₁, X₂, X₃)` as polynomials in `(t, u)`.
+    pub fn homogeneous(&self) -> &[BiPoly<F>; 4] {
+        &self.x
+    }
+
+    /// The family actually enveloped (after orientation and reparametrization).
+    pub fn spine(&self) -> &CanalSpine<F> {
+        &self.spine
+    }
+
+    /// The split `(g₁, g₂)` of `D` used.
+    pub fn split(&self) -> (&Poly<F>, &Poly<F>) {
+        (&self.split[0], &self.split[1])
+    }
+
+    /// The stereographic axis used.
+    pub fn axis(&self) -> AxisChoice {
+        self.axis
+    }
+
+    /// `Some((a, b))` if the family was reparametrized by `t = (a + b s²)/(1 + s²)` (the
+    /// surface parameter is then `s`).
+    pub fn reparametrization(&self) -> Option<&(Rational, Rational)> {
+        self.reparametrized.as_ref()
+    }
+
+    /// The bidegree `(deg_t, deg_u)`.
+    pub fn degree(&self) -> (usize, usize) {
+        (
+            self.x.iter().filter_map(BiPoly::degree_t).max().unwrap_or(0),
+            self.x.iter().filter_map(BiPoly::degree_u).max().unwrap_or(0),
+        )
+    }
+
+    /// The homogeneous point `X(t, u)`.
+    pub fn eval_homogeneous(&self, t: &F, u: &F) -> [F; 4] {
+        core::array::from_fn(|k| self.x[k].eval(t, u))
+    }
+
+    /// The point `x(t, u)`.
+    ///
+    /// # Errors
+    /// [`CanalError::InvalidArgument`] where `X₀ = 0`.
+    pub fn eval(&self, t: &F, u: &F) -> Result<[F; 3], CanalError> {
+        let h = self.eval_homogeneous(t, u);
+        let inv = h[0].inv().ok_or_else(|| {
+            CanalError::InvalidArgument(format!(
+                "X₀({}, {}) = 0: the point is at infinity",
+                format_scalar(t),
+                format_scalar(u)
+            ))
+        })?;
+        Ok([
+            h[1].clone() * inv.clone(),
+            h[2].clone() * inv.clone(),
+            h[3].clone() * inv,
+        ])
+    }
+
+    /// The point of the characteristic circle at `t` for `u = ∞`.
+    pub fn eval_at_u_infinity(&self, t: &F) -> [F; 4] {
+        let n = self.degree().1;
+        core::array::from_fn(|k| self.x[k].coeffs().get(n).map_or(F::zero(), |p| p.eval(t)))
+    }
+
+    /// The characteristic circle at `t` (centre, plane normal, radius²).
+    ///
+    /// # Errors
+    /// [`CanalError::DegenerateSpine`] where `W(t) = 0` or `ṁ(t) = 0`.
+    pub fn characteristic_circle(&self, t: &F) -> Result<CharacteristicCircle<F>, CanalError> {
+        let (m, r) = self.spine.eval(t)?;
+        let p: [F; 4] = core::array::from_fn(|k| self.numerators[k].eval(t));
+        let pm = [p[0].clone(), p[1].clone(), p[2].clone()];
+        let nn = crate::lines::dot(&pm, &pm);
+        let inv = nn.inv().ok_or_else(|| {
+            CanalError::DegenerateSpine(format!("ṁ({}) = 0", format_scalar(t)))
+        })?;
+        let k = r.clone() * p[3].clone() * inv.clone();
+        let d = nn.clone() - p[3].clone() * p[3].clone();
+        Ok(CharacteristicCircle {
+            center: core::array::from_fn(|i| m[i].clone() - k.clone() * pm[i].clone()),
+            normal: pm,
+            radius_sq: r.clone() * r * d * inv,
+        })
+    }
+
+    /// The characteristic circle at `t` as homogeneous polynomials in `u` (degree ≤ 2).
+    pub fn circle_polys(&self, t: &F) -> [Poly<F>; 4] {
+        core::array::from_fn(|k| self.x[k].at_t(t))
+    }
+
+    /// The Bézier patch on `[t₀, t₁] × [u₀, u₁]`.
+    ///
+    /// # Errors
+    /// Only a geometry failure underneath.
+    pub fn patch(&self, t: (&F, &F), u: (&F, &F)) -> Result<BezierPatch<F>, CanalError> {
+        Ok(patch_of(&self.x, t, u)?)
+    }
+
+    /// Two patches over `[t₀, t₁]` covering the whole characteristic circles: `u ∈ [−1, 1]`
+    /// and, in the chart `u = 1/v`, `v ∈ [−1, 1]`.
+    ///
+    /// # Errors
+    /// Only a geometry failure underneath.
+    pub fn full_patches(&self, t: (&F, &F)) -> Result<[BezierPatch<F>; 2], CanalError> {
+        let one = F::one();
+        let m1 = -F::one();
+        let n = self.degree().1;
+        let rev: Vec<BiPoly<F>> = self.x.iter().map(|b| b.reverse_u(n)).collect();
+        Ok([
+            patch_of(&self.x, t, (&m1, &one))?,
+            patch_of(&rev, t, (&m1, &one))?,
+        ])
+    }
+
+    /// The scalar type converted.
+    pub fn map_scalar<G: Scalar>(&self, f: impl Fn(&F) -> G + Copy) -> CanalSurface<G> {
+        CanalSurface {
+            spine: self.spine.map_scalar(f),
+            numerators: core::array::from_fn(|k| self.numerators[k].map(f)),
+            split: [self.split[0].map(f), self.split[1].map(f)],
+            axis: self.axis,
+            x: core::array::from_fn(|k| self.x[k].map_scalar(f)),
+            reparametrized: self.reparametrized.clone(),
+        }
+    }
+
+    /// `(XᵢW − MᵢX₀)`, `i = 1..3` (the homogeneous `x − m`).
+    fn diff_to_center(&self) -> [BiPoly<F>; 3] {
+        let w = self.spine.weight();
+        let m = self.spine.center_polys();
+        core::array::from_fn(|i| self.x[i + 1].mul_t(w).sub(&self.x[0].mul_t(&m[i])))
+    }
+}
+
+fn bi_cert<F: Scalar>(property: &str, b: &BiPoly<F>, scale: f64) -> Certificate {
+    polynomial_is_zero_scaled(property, &b.all_coeffs(), scale)
+}
+
+impl<F: Scalar> Certified for CanalSurface<F> {
+    /// The canal-surface identities as polynomial identities in `(t, u)` (module docs):
+    /// sphere `|x − m|² ≡ r²`, contact `(x − m)·ṁ + r ṙ ≡ 0`, normality `⟨x − m, x_u⟩ ≡ 0`
+    /// and `⟨x − m, x_t⟩ ≡ 0`, and the split `g₁² + g₂² ≡ D`.
+    fn certify(&self) -> Vec<Certificate> {
+        let mut out = Vec::new();
+        let dx = self.diff_to_center();
+        let x0 = &self.x[0];
+        let r = self.spine.radius_poly();
+        let p = &self.numerators;
+        let sx = self.x.iter().map(bi_scale).fold(0.0, f64::max);
+        let ss = self
+            .spine
+            .homogeneous()
+            .iter()
+            .map(poly_scale)
+            .fold(0.0, f64::max);
+        let sd = sx * ss * 4.0;
+        // sphere
+        let sphere = dx
+            .iter()
+            .fold(BiPoly::zero(), |acc, d| acc.add(&d.mul(d)))
+            .sub(&x0.mul_t(r).mul(&x0.mul_t(r)));
+        out.push(bi_cert(
+            "|x − m|² − r² ≡ 0 (x(t,u) lies on the sphere K(t), seed 003 (2.1))",
+            &sphere,
+            sd * sd,
+        ));
+        // contact
+        let sp = p.iter().map(poly_scale).fold(0.0, f64::max);
+        let contact = (0..3)
+            .fold(BiPoly::zero(), |acc, i| acc.add(&dx[i].mul_t(&p[i])))
+            .add(&x0.mul_t(&(r * &p[3])));
+        out.push(bi_cert(
+            "(x − m)·ṁ + r ṙ ≡ 0 (contact condition K̇(t), seed 003 (2.2) corrected per erratum 003-E3)",
+            &contact,
+            sd * sp * 4.0,
+        ));
+        // normality in u and t
+        for (name, dir) in [("u", 0), ("t", 1)] {
+            let xd: Vec<BiPoly<F>> = self
+                .x
+                .iter()
+                .map(|b| if dir == 0 { b.partial_u() } else { b.partial_t() })
+                .collect();
+            let tangent: Vec<BiPoly<F>> = (1..4)
+                .map(|i| xd[i].mul(x0).sub(&self.x[i].mul(&xd[0])))
+                .collect();
+            let ortho = (0..3).fold(BiPoly::zero(), |acc, i| acc.add(&dx[i].mul(&tangent[i])));
+            out.push(bi_cert(
+                &format!(
+                    "⟨x − m, x_{name}⟩ ≡ 0 (the surface normal passes through the spine point)"
+                ),
+                &ortho,
+                sd * sx * sx * 64.0,
+            ));
+        }
+        // split
+        match self.spine.discriminant() {
+            Ok(d) => {
+                let s = &(&sq(&self.split[0]) + &sq(&self.split[1])) - &d;
+                out.push(polynomial_is_zero_scaled(
+                    "g₁² + g₂² ≡ D = P₁² + P₂² + P₃² − P₄² (sum of two squares)",
+                    s.coeffs(),
+                    poly_scale(&d).max(1.0),
+                ));
+            }
+            Err(e) => out.push(Certificate::fails(
+                "g₁² + g₂² ≡ D",
+                e.to_string(),
+                F::EXACT,
+            )),
+        }
+        out
+    }
+}
+
+/// The Krasauskas degree bound of seed 003 Satz 2 (2.37) for a family `γ = (m, r)` of degree
+/// `k`: `(k + n, 2)` with `n = 2·max(k − 1, 2k − 2 − Σ⌈pᵢ/2⌉)`, the `pᵢ` the multiplicities of
+/// the complex-conjugate root pairs of `D` (2.35). Erratum 003-E9: valid for rational `γ`;
+/// for polynomial data the construction can be lower.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct KrasauskasBound {
+    /// The degree `k` of `γ`.
+    pub k: usize,
+    /// The multiplicities `pᵢ` of the conjugate root pairs of `D`.
+    pub pair_multiplicities: Vec<usize>,
+    /// `n` of (2.37).
+    pub n: usize,
+    /// The bound `(k + n, 2)`.
+    pub bidegree: (usize, usize),
+}
+
+/// [`KrasauskasBound`] of a rational family.
+///
+/// # Errors
+/// As [`CanalSpine::discriminant`].
+pub fn krasauskas_bound(spine: &CanalSpine<Rational>) -> Result<KrasauskasBound, CanalError> {
+    let d = spine.discriminant()?;
+    let k = spine.degree();
+    let mut pairs = Vec::new();
+    for (f, mult) in square_free_decomposition(&d) {
+        let real = isolate_real_roots(&f)?.len();
+        let deg = f.degree().unwrap_or(0);
+        for _ in 0..(deg.saturating_sub(real) / 2) {
+            pairs.push(mult);
+        }
+    }
+    let sum: usize = pairs.iter().map(|p| p.div_ceil(2)).sum();
+    let n = 2 * (k.saturating_sub(1)).max((2 * k).saturating_sub(2).saturating_sub(sum));
+    Ok(KrasauskasBound {
+        k,
+        pair_multiplicities: pairs,
+        n,
+        bidegree: (k + n, 2),
+    })
+}
+
+// ----------------------------------------------------------------------------------------
+// quadratic families: the cyclographic construction (seed 003 §2.3)
+// ----------------------------------------------------------------------------------------
+
+/// The envelope of a quadratic family `k(p) = k₀ + k₁p + k₂p²` in `R^{3,1}` by the
+/// cyclographic map (module docs, 003-5): a rational parametrization `Γ(s, t)` over the
+/// scalar field of `k` (no square root), covering the whole envelope as `(s, t)` ranges
+/// over `R²` (plus the point at infinity of the isotropic directions).
+#[derive(Debug, Clone, PartialEq)]
+pub struct QuadraticCanal<F> {
+    k: [Poly<F>; 4],
+    /// `p(s, t) = N/Dn`.
+    num: BiPoly<F>,
+    den: BiPoly<F>,
+    x: [BiPoly<F>; 4],
+}
+
+/// `w(s, t)` as bivariate polynomials (first variable `s`, second `t`).
+fn omega_bi<F: Scalar>() -> [BiPoly<F>; 4] {
+    let one = F::one();
+    let two = F::from_i64(2);
+    let s2 = Poly::new(vec![F::zero(), F::zero(), one.clone()]);
+    [
+        BiPoly::from_t(Poly::new(vec![F::zero(), two.clone()])),
+        BiPoly::new(vec![Poly::zero(), Poly::constant(two)]),
+        BiPoly::new(vec![
+            &Poly::constant(one.clone()) - &s2,
+            Poly::zero(),
+            Poly::constant(-one.clone()),
+        ]),
+        BiPoly::new(vec![
+            &Poly::constant(one.clone()) + &s2,
+            Poly::zero(),
+            Poly::constant(one),
+        ]),
+    ]
+}
+
+fn pe_bi<F: Scalar>(w: &[BiPoly<F>; 4], v: &[F; 4]) -> BiPoly<F> {
+    w[0].scale(&v[0])
+        .add(&w[1].scale(&v[1]))
+        .add(&w[2].scale(&v[2]))
+        .sub(&w[3].scale(&v[3]))
+}
+
+impl<F: Scalar> QuadraticCanal<F> {
+    /// From the polynomial family `k(p) = (m₁, m₂, m₃, r)(p)` of degree ≤ 2.
+    ///
+    /// # Errors
+    /// [`CanalError::InvalidArgument`] for degree > 2; [`CanalError::DegenerateSpine`] if
+    /// `k̇ ≡ const` is isotropic or zero, or `⟨w, b⟩ ≡ 0`.
+    pub fn new(k: [Poly<F>; 4]) -> Result<Self, CanalError> {
+        if k.iter().any(|p| p.degree().is_some_and(|d| d > 2)) {
+            return Err(CanalError::InvalidArgument(
+                "the cyclographic construction of seed 003 §2.3 needs a family of degree ≤ 2".into(),
+            ));
+        }
+        let a: [F; 4] = core::array::from_fn(|i| k[i].coeff(1));
+        let b: [F; 4] = core::array::from_fn(|i| F::from_i64(2) * k[i].coeff(2));
+        let w = omega_bi::<F>();
+        let num = pe_bi(&w, &a).neg();
+        let den = pe_bi(&w, &b);
+        if den.is_zero() {
+            return Err(CanalError::DegenerateSpine(
+                "k̈ = 0 (a line of R^{3,1}): the envelope is a cone or cylinder of revolution, the parameter p is not a function of the isotropic direction".into(),
+            ));
+        }
+        // K_i homogenized in (N, Dn): k_i0 Dn² + k_i1 N Dn + k_i2 N²
+        let (nn, nd, dd) = (num.mul(&num), num.mul(&den), den.mul(&den));
+        let kh: [BiPoly<F>; 4] = core::array::from_fn(|i| {
+            dd.scale(&k[i].coeff(0))
+                .add(&nd.scale(&k[i].coeff(1)))
+                .add(&nn.scale(&k[i].coeff(2)))
+        });
+        let x = [
+            dd.mul(&w[3]),
+            kh[0].mul(&w[3]).sub(&kh[3].mul(&w[0])),
+            kh[1].mul(&w[3]).sub(&kh[3].mul(&w[1])),
+            kh[2].mul(&w[3]).sub(&kh[3].mul(&w[2])),
+        ];
+        Ok(QuadraticCanal { k, num, den, x })
+    }
+
+    /// From a spine of degree ≤ 2 with constant weight.
+    ///
+    /// # Errors
+    /// [`CanalError::InvalidArgument`] for a non-constant weight; as [`Self::new`].
+    pub fn from_spine(spine: &CanalSpine<F>) -> Result<Self, CanalError> {
+        let w = spine.weight();
+        if w.degree() != Some(0) {
+            return Err(CanalError::InvalidArgument(
+                "the cyclographic construction needs a polynomial family (constant weight)".into(),
+            ));
+        }
+        let inv = w.coeff(0).inv().ok_or_else(|| {
+            CanalError::DegenerateSpine("zero weight".into())
+        })?;
+        let m = spine.center_polys();
+        Self::new([
+            m[0].scale(&inv),
+            m[1].scale(&inv),
+            m[2].scale(&inv),
+            spine.radius_poly().scale(&inv),
+        ])
+    }
+
+    /// The homogeneous coordinates `(X₀, X₁, X₂, X₃)` of `Γ(s, t)` (first variable `s`).
+    pub fn homogeneous(&self) -> &[BiPoly<F>; 4] {
+        &self.x
+    }
+
+    /// The reparametrization `p(s, t) = N/Dn` (seed 003 (2.21)).
+    pub fn parameter(&self) -> (&BiPoly<F>, &BiPoly<F>) {
+        (&self.num, &self.den)
+    }
+
+    /// `(deg_s, deg_t)`.
+    pub fn degree(&self) -> (usize, usize) {
+        (
+            self.x.iter().filter_map(BiPoly::degree_t).max().unwrap_or(0),
+            self.x.iter().filter_map(BiPoly::degree_u).max().unwrap_or(0),
+        )
+    }
+
+    /// The point `Γ(s, t)`.
+    ///
+    /// # Errors
+    /// [`CanalError::InvalidArgument`] where `X₀ = 0`.
+    pub fn eval(&self, s: &F, t: &F) -> Result<[F; 3], CanalError> {
+        let h: [F; 4] = core::array::from_fn(|k| self.x[k].eval(s, t));
+        let inv = h[0].inv().ok_or_else(|| {
+            CanalError::InvalidArgument(format!(
+                "X₀({}, {}) = 0",
+                format_scalar(s),
+                format_scalar(t)
+            ))
+        })?;
+        Ok(core::array::from_fn(|i| h[i + 1].clone() * inv.clone()))
+    }
+
+    /// The Bézier patch on `[s₀, s₁] × [t₀, t₁]`.
+    ///
+    /// # Errors
+    /// Only a geometry failure underneath.
+    pub fn patch(&self, s: (&F, &F), t: (&F, &F)) -> Result<BezierPatch<F>, CanalError> {
+        Ok(patch_of(&self.x, s, t)?)
+    }
+}
+
+impl<F: Scalar> Certified for QuadraticCanal<F> {
+    /// `|Γ − m(p)|² ≡ r(p)²` and `(Γ − m(p))·ṁ(p) + r(p)ṙ(p) ≡ 0` as polynomial identities
+    /// in `(s, t)` with `p = N/Dn` substituted homogeneously, and `⟨w, k̇(p)⟩_pe ≡ 0`.
+    fn certify(&self) -> Vec<Certificate> {
+        let (nn, nd, dd) = (
+            self.num.mul(&self.num),
+            self.num.mul(&self.den),
+            self.den.mul(&self.den),
+        );
+        let kh: Vec<BiPoly<F>> = (0..4)
+            .map(|i| {
+                dd.scale(&self.k[i].coeff(0))
+                    .add(&nd.scale(&self.k[i].coeff(1)))
+                    .add(&nn.scale(&self.k[i].coeff(2)))
+            })
+            .collect();
+        // k̇(p)·Dn = a Dn + b N
+        let kd: Vec<BiPoly<F>> = (0..4)
+            .map(|i| {
+                self.den
+                    .scale(&self.k[i].coeff(1))
+                    .add(&self.num.scale(&(F::from_i64(2) * self.k[i].coeff(2))))
+            })
+            .collect();
+        let x0 = &self.x[0];
+        let dx: Vec<BiPoly<F>> = (0..3)
+            .map(|i| self.x[i + 1].mul(&dd).sub(&kh[i].mul(x0)))
+            .collect();
+        let sc = self.x.iter().map(bi_scale).fold(1.0, f64::max)
+            * kh.iter().map(bi_scale).fold(1.0, f64::max);
+        let sphere = dx
+            .iter()
+            .fold(BiPoly::zero(), |acc, d| acc.add(&d.mul(d)))
+            .sub(&kh[3].mul(x0).mul(&kh[3].mul(x0)));
+        let contact = (0..3)
+            .fold(BiPoly::zero(), |acc, i| acc.add(&dx[i].mul(&kd[i])))
+            .add(&kh[3].mul(x0).mul(&kd[3]));
+        let w = omega_bi::<F>();
+        let iso = w[0]
+            .mul(&kd[0])
+            .add(&w[1].mul(&kd[1]))
+            .add(&w[2].mul(&kd[2]))
+            .sub(&w[3].mul(&kd[3]));
+        vec![
+            bi_cert(
+                "|Γ − m(p)|² − r(p)² ≡ 0 (seed 003 §2.3, p = N/Dn)",
+                &sphere,
+                sc * sc * 16.0,
+            ),
+            bi_cert(
+                "(Γ − m(p))·ṁ(p) + r(p)ṙ(p) ≡ 0 (contact, erratum 003-E3 sign)",
+                &contact,
+                sc * sc * 16.0,
+            ),
+            bi_cert(
+                "⟨w(s,t), k̇(p(s,t))⟩_pe ≡ 0 (the isotropic direction is orthogonal to the tangent, (2.20)/(2.21))",
+                &iso,
+                sc,
+            ),
+        ]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(c: &[i64]) -> Poly<Rational> {
+        Poly::from_ints(c)
+    }
+    fn q(n: i64, d: i64) -> Rational {
+        Rational::from_ratio(n, d)
+    }
+
+    #[test]
+    fn notes_counterexample_degree() {
+        // m = (t, t²/2, 0), r = t: D = t², split (t, 0): bidegree (4, 2) < Krasauskas (6, 2)
+        let spine = CanalSpine::polynomial(
+            [p(&[0, 1]), Poly::new(vec![q(0, 1), q(0, 1), q(1, 2)]), p(&[])],
+            p(&[0, 1]),
+        );
+        let b = canal_surface(&spine, &CanalOptions::default()).expect("build");
+        let s = b.as_rational().expect("rational");
+        assert!(b.all_hold(), "{:?}", b.certify());
+        assert_eq!(s.degree(), (4, 2));
+        let k = krasauskas_bound(&spine).expect("bound");
+        assert_eq!(k.bidegree, (6, 2));
+    }
+
+    #[test]
+    fn cone_of_revolution() {
+        // m = (0, 0, t), r = t/2: D = 1 − 1/4 = 3/4 → needs Q(√3)
+        let spine = CanalSpine::polynomial(
+            [p(&[]), p(&[]), p(&[0, 1])],
+            Poly::new(vec![q(0, 1), q(1, 2)]),
+        );
+        let b = canal_surface(&spine, &CanalOptions::default()).expect("build");
+        assert_eq!(b.radicand(), Some(&Rational::from(3)));
+        assert!(b.all_hold(), "{:?}", b.certify());
+    }
+}

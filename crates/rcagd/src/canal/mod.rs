@@ -1,0 +1,497 @@
+//! Rational canal and pipe surfaces: envelopes of one-parameter families of spheres with a
+//! rational spine `m(t)` and a rational radius `r(t)` (seed 003 ch. 2; seed 004 §2.5, §4.5;
+//! NOTES-000-003 items 003-4, 003-5, 003-7; NOTES-004 A2.3, A3.3).
+//!
+//! The sphere family `K(t): |x − m|² − r² = 0` envelops the canal surface `Γ = K ∩ K̇` with
+//! `K̇: (x − m)·ṁ + r ṙ = 0` (seed 003 (2.2), sign corrected per erratum 003-E3); the
+//! characteristic circles are real iff `D = |ṁ|² − ṙ² ≥ 0` (2.8)/(2.18).
+//!
+//! Map of the module:
+//!
+//! * [`CanalSpine`]: the curve `k(t) = (m(t), r(t))` of the cyclographic model as
+//!   homogeneous polynomials `(W, M₁, M₂, M₃, R)`, `m = M/W`, `r = R/W`; the derivative
+//!   numerators `P = W X' − W' X` (content removed, erratum 003-E8), the discriminant
+//!   `D = P₁² + P₂² + P₃² − P₄²`, and the reality check that names the parameter interval
+//!   where `|ṁ| < |ṙ|` ([`CanalError::NoRealEnvelope`]);
+//! * [`factor`]: exact factorization over `Q` and `Q(i)`;
+//! * [`sum_of_squares`]: `D = g₁² + g₂²` exactly over `Q` when possible, else over the
+//!   quadratic extension it needs (stated in the result), else an error; an explicit `f64`
+//!   path;
+//! * [`envelope`]: the Peternell–Pottmann construction (003-4) producing the rational
+//!   parametrization `x(t, u)` with its certificates, the degree choice and the Krasauskas
+//!   bound (seed 003 §2.4), the characteristic circles, both orientations; and the
+//!   cyclographic construction for quadratic `k` (003-5, seed 003 §2.3);
+//! * [`pipe`]: pipe surfaces (constant radius), in particular around PH curves where
+//!   `D = σ²` is a perfect square;
+//! * [`blend`]: canal-surface blends between two spheres (or a sphere and a plane) with
+//!   prescribed contact circles.
+
+pub mod blend;
+pub mod bipoly;
+pub mod envelope;
+pub mod factor;
+pub mod pipe;
+pub mod sum_of_squares;
+
+pub use bipoly::BiPoly;
+pub use envelope::{
+    canal_surface, canal_surface_f64, canal_surface_with_split, krasauskas_bound, AxisChoice,
+    CanalBuild, CanalOptions, CanalSurface, CharacteristicCircle, KrasauskasBound, Orientation,
+    QuadraticCanal,
+};
+pub use sum_of_squares::{sum_of_two_squares, sum_of_two_squares_f64, GaussianSplit, SumOfSquares};
+
+use crate::error::format_scalar;
+use rcagd_algebra::roots::isolate_real_roots_in;
+use rcagd_algebra::{AlgebraError, Poly, Rational, Scalar};
+use rcagd_geom::{BezierCurve, GeomError};
+use thiserror::Error;
+
+/// Errors of the canal-surface module. Every variant names the violated precondition.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+pub enum CanalError {
+    /// `|ṁ|² − ṙ² < 0` on a parameter interval: the spheres there have no real envelope
+    /// (seed 003 (2.8)/(2.18)).
+    #[error("no real envelope: |m'|² − r'² < 0 for t in ({from}, {to}) (e.g. at t = {witness}, where it is {value}); the sphere family is not enveloped there (seed 003 (2.18))")]
+    NoRealEnvelope {
+        /// Lower end of the interval (a root of `D`, or the domain end, or `−∞`).
+        from: String,
+        /// Upper end of the interval.
+        to: String,
+        /// A rational parameter inside the interval.
+        witness: String,
+        /// The value of `|m'|² − r'²` (times the positive factor `W⁴/d²`) there.
+        value: String,
+    },
+    /// The spine is degenerate (constant family, zero weight, isotropic tangents
+    /// everywhere, …).
+    #[error("degenerate spine: {0}")]
+    DegenerateSpine(String),
+    /// A given split `g₁² + g₂²` does not equal the discriminant.
+    #[error("not a sum of two squares of the discriminant: {0}")]
+    NotASplit(String),
+    /// `D` is not a sum of two squares over `Q` and no single quadratic extension suffices
+    /// (the construction would need a larger algebraic extension; use the `f64` path).
+    #[error("the discriminant needs more than one quadratic extension: {0}")]
+    NeedsLargerExtension(String),
+    /// The exact factorization gave up (too many modular factors).
+    #[error("factorization: {0}")]
+    Factorization(String),
+    /// Any other invalid argument; the message names the precondition.
+    #[error("invalid argument: {0}")]
+    InvalidArgument(String),
+    /// A failure of the geometry layer.
+    #[error(transparent)]
+    Geom(#[from] GeomError),
+    /// A failure of the algebra layer.
+    #[error(transparent)]
+    Algebra(#[from] AlgebraError),
+}
+
+/// The curve `k(t) = (m(t), r(t))` of the cyclographic model of a rational sphere family:
+/// homogeneous polynomials `(W, M₁, M₂, M₃, R)` with `m = M/W` and `r = R/W` (seed 003
+/// §2.2 (2.19)).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CanalSpine<F> {
+    w: Poly<F>,
+    m: [Poly<F>; 3],
+    r: Poly<F>,
+}
+
+impl<F: Scalar> CanalSpine<F> {
+    /// The family `m = M/W`, `r = R/W`.
+    ///
+    /// # Errors
+    /// [`CanalError::DegenerateSpine`] for `W ≡ 0`.
+    pub fn new(w: Poly<F>, m: [Poly<F>; 3], r: Poly<F>) -> Result<Self, CanalError> {
+        if w.is_zero() {
+            return Err(CanalError::DegenerateSpine(
+                "the weight polynomial W vanishes identically".into(),
+            ));
+        }
+        Ok(CanalSpine { w, m, r })
+    }
+
+    /// A polynomial spine `m(t)` with polynomial radius `r(t)` (`W = 1`).
+    pub fn polynomial(m: [Poly<F>; 3], r: Poly<F>) -> Self {
+        CanalSpine {
+            w: Poly::constant(F::one()),
+            m,
+            r,
+        }
+    }
+
+    /// From a rational Bézier curve in `R⁴ = R^{3,1}` (points `(x, y, z, r)`), the
+    /// cyclographic preimage of the family (parameter `t ∈ R`, power basis).
+    ///
+    /// # Errors
+    /// [`CanalError::InvalidArgument`] unless the curve has dimension 4;
+    /// [`CanalError::DegenerateSpine`] for a zero weight.
+    pub fn from_curve(curve: &BezierCurve<F>) -> Result<Self, CanalError> {
+        if curve.dim() != 4 {
+            return Err(CanalError::InvalidArgument(format!(
+                "the cyclographic preimage of a sphere family is a curve in R⁴ = (x, y, z, r), got dimension {}",
+                curve.dim()
+            )));
+        }
+        let p = curve.coordinate_polys();
+        Self::new(
+            p[0].clone(),
+            [p[1].clone(), p[2].clone(), p[3].clone()],
+            p[4].clone(),
+        )
+    }
+
+    /// From a rational spine curve (dimension 3) and a rational radius function given as a
+    /// Bézier curve of dimension 1 (`(w, w·r)`), on the same parameter: common weight
+    /// `W = w_m w_r / gcd(w_m, w_r)` (the gcd only for exact scalars).
+    ///
+    /// # Errors
+    /// [`CanalError::InvalidArgument`] for wrong dimensions.
+    pub fn from_spine_and_radius(
+        spine: &BezierCurve<F>,
+        radius: &BezierCurve<F>,
+    ) -> Result<Self, CanalError> {
+        if spine.dim() != 3 || radius.dim() != 1 {
+            return Err(CanalError::InvalidArgument(format!(
+                "spine must have dimension 3 and radius dimension 1, got {} and {}",
+                spine.dim(),
+                radius.dim()
+            )));
+        }
+        let sp = spine.coordinate_polys();
+        let rp = radius.coordinate_polys();
+        let (wm, wr) = (sp[0].clone(), rp[0].clone());
+        let g = if F::EXACT { wm.gcd(&wr) } else { Poly::constant(F::one()) };
+        let (fm, fr) = if F::EXACT && g.degree().is_some_and(|d| d > 0) {
+            (
+                wr.div_exact(&g).map_err(CanalError::Algebra)?,
+                wm.div_exact(&g).map_err(CanalError::Algebra)?,
+            )
+        } else {
+            (wr.clone(), wm.clone())
+        };
+        Self::new(
+            &wm * &fm,
+            [&sp[1] * &fm, &sp[2] * &fm, &sp[3] * &fm],
+            &rp[1] * &fr,
+        )
+    }
+
+    /// A constant radius `r` around a rational spine curve (a pipe family).
+    ///
+    /// # Errors
+    /// [`CanalError::InvalidArgument`] unless the spine has dimension 3.
+    pub fn constant_radius(spine: &BezierCurve<F>, r: &F) -> Result<Self, CanalError> {
+        if spine.dim() != 3 {
+            return Err(CanalError::InvalidArgument(format!(
+                "a spine curve must have dimension 3, got {}",
+                spine.dim()
+            )));
+        }
+        let p = spine.coordinate_polys();
+        let r = p[0].scale(r);
+        Self::new(p[0].clone(), [p[1].clone(), p[2].clone(), p[3].clone()], r)
+    }
+
+    /// The weight `W`.
+    pub fn weight(&self) -> &Poly<F> {
+        &self.w
+    }
+
+    /// The centre numerators `M₁, M₂, M₃`.
+    pub fn center_polys(&self) -> &[Poly<F>; 3] {
+        &self.m
+    }
+
+    /// The radius numerator `R`.
+    pub fn radius_poly(&self) -> &Poly<F> {
+        &self.r
+    }
+
+    /// `[W, M₁, M₂, M₃, R]`.
+    pub fn homogeneous(&self) -> [Poly<F>; 5] {
+        [
+            self.w.clone(),
+            self.m[0].clone(),
+            self.m[1].clone(),
+            self.m[2].clone(),
+            self.r.clone(),
+        ]
+    }
+
+    /// The degree `k` of the curve `k(t)` (largest degree of `W, M, R`).
+    pub fn degree(&self) -> usize {
+        self.homogeneous()
+            .iter()
+            .filter_map(Poly::degree)
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// The same family with the opposite orientation, `r ↦ −r` (the same canal surface,
+    /// opposite unit normal).
+    pub fn reversed(&self) -> Self {
+        CanalSpine {
+            w: self.w.clone(),
+            m: self.m.clone(),
+            r: -&self.r,
+        }
+    }
+
+    /// The centre and radius at `t`.
+    ///
+    /// # Errors
+    /// [`CanalError::DegenerateSpine`] where `W(t) = 0` (the sphere is at infinity).
+    pub fn eval(&self, t: &F) -> Result<([F; 3], F), CanalError> {
+        let w = self.w.eval(t);
+        let inv = w.inv().ok_or_else(|| {
+            CanalError::DegenerateSpine(format!(
+                "W({}) = 0: the sphere is at infinity",
+                format_scalar(t)
+            ))
+        })?;
+        Ok((
+            core::array::from_fn(|i| self.m[i].eval(t) * inv.clone()),
+            self.r.eval(t) * inv,
+        ))
+    }
+
+    /// The curve as a rational Bézier curve in `R⁴` (points `(x, y, z, r)`), degree `k`.
+    ///
+    /// # Errors
+    /// Only a geometry failure underneath.
+    pub fn to_curve(&self) -> Result<BezierCurve<F>, CanalError> {
+        Ok(BezierCurve::from_coordinate_polys(
+            &self.homogeneous(),
+            self.degree(),
+        )?)
+    }
+
+    /// The scalar type converted (into an extension field or `f64`).
+    pub fn map_scalar<G: Scalar>(&self, f: impl Fn(&F) -> G + Copy) -> CanalSpine<G> {
+        CanalSpine {
+            w: self.w.map(f),
+            m: [self.m[0].map(f), self.m[1].map(f), self.m[2].map(f)],
+            r: self.r.map(f),
+        }
+    }
+
+    /// The derivative numerators `P = W X' − W' X` for `X = (M₁, M₂, M₃, R)` (so
+    /// `(ṁ, ṙ) = P/W²`), divided by their common divisor `d` for exact scalars (the
+    /// direction `B = (ṙ, ṁ)/d` of seed 003 (2.31), corrected per erratum 003-E8).
+    ///
+    /// # Errors
+    /// [`CanalError::DegenerateSpine`] if all four vanish (a constant sphere).
+    pub fn derivative_numerators(&self) -> Result<[Poly<F>; 4], CanalError> {
+        let wd = self.w.derivative();
+        let x = [&self.m[0], &self.m[1], &self.m[2], &self.r];
+        let p: [Poly<F>; 4] =
+            core::array::from_fn(|i| &(&self.w * &x[i].derivative()) - &(&wd * x[i]));
+        if p.iter().all(Poly::is_zero) {
+            return Err(CanalError::DegenerateSpine(
+                "ṁ ≡ 0 and ṙ ≡ 0: the family is a single sphere".into(),
+            ));
+        }
+        if !F::EXACT {
+            return Ok(p);
+        }
+        let g = p
+            .iter()
+            .fold(Poly::zero(), |acc: Poly<F>, q| acc.gcd(q));
+        if g.degree().is_some_and(|d| d > 0) {
+            let mut out = p.clone();
+            for (o, q) in out.iter_mut().zip(&p) {
+                *o = q.div_exact(&g).map_err(CanalError::Algebra)?;
+            }
+            return Ok(out);
+        }
+        Ok(p)
+    }
+
+    /// The discriminant `D = P₁² + P₂² + P₃² − P₄²` (`= (|ṁ|² − ṙ²)·W⁴/d²`, seed 003 (2.34)
+    /// corrected per erratum 003-E8). Real characteristic circles iff `D ≥ 0`.
+    ///
+    /// # Errors
+    /// As [`Self::derivative_numerators`].
+    pub fn discriminant(&self) -> Result<Poly<F>, CanalError> {
+        let p = self.derivative_numerators()?;
+        Ok(&(&(&(&p[0] * &p[0]) + &(&p[1] * &p[1])) + &(&p[2] * &p[2])) - &(&p[3] * &p[3]))
+    }
+
+    /// Checks that the envelope is real on the domain (`None`: all of `R`): `D ≥ 0` there.
+    ///
+    /// # Errors
+    /// [`CanalError::NoRealEnvelope`] naming an interval (between consecutive real roots of
+    /// `D`, exact or isolated) where `D < 0`; [`CanalError::DegenerateSpine`] for `D ≡ 0`
+    /// (all tangents of `k` isotropic: the characteristic circles are points) or a
+    /// constant family.
+    pub fn check_real_envelope(&self, domain: Option<(&F, &F)>) -> Result<(), CanalError> {
+        let d = self.discriminant()?;
+        let dq = to_rational_poly(&d).ok_or_else(|| {
+            CanalError::InvalidArgument(
+                "the discriminant has irrational coefficients: the reality check needs a rational spine".into(),
+            )
+        })?;
+        let dom = match domain {
+            Some((a, b)) => {
+                let (Some(a), Some(b)) = (a.to_rational(), b.to_rational()) else {
+                    return Err(CanalError::InvalidArgument(
+                        "the parameter domain must be finite".into(),
+                    ));
+                };
+                Some((a, b))
+            }
+            None => None,
+        };
+        if let Some(neg) = negative_interval(&dq, dom.as_ref())? {
+            return Err(neg);
+        }
+        Ok(())
+    }
+}
+
+/// The exact rational coefficients of a polynomial (`None` if one is irrational).
+pub(crate) fn to_rational_poly<F: Scalar>(p: &Poly<F>) -> Option<Poly<Rational>> {
+    let c: Option<Vec<Rational>> = p.coeffs().iter().map(Scalar::to_rational).collect();
+    c.map(Poly::new)
+}
+
+fn describe_root(iv: &rcagd_algebra::roots::RootInterval, rational: &[Rational]) -> String {
+    if iv.is_exact() {
+        format_scalar(&iv.lo)
+    } else if let Some(r) = rational.iter().find(|r| iv.contains(r)) {
+        format_scalar(r)
+    } else {
+        format!(
+            "the root of D in ({}, {}) ≈ {:.6}",
+            format_scalar(&iv.lo),
+            format_scalar(&iv.hi),
+            iv.midpoint_f64()
+        )
+    }
+}
+
+/// An interval of `domain` (default `R`) where `d < 0`, as a [`CanalError::NoRealEnvelope`].
+///
+/// # Errors
+/// [`CanalError::DegenerateSpine`] for `d ≡ 0`.
+pub(crate) fn negative_interval(
+    d: &Poly<Rational>,
+    domain: Option<&(Rational, Rational)>,
+) -> Result<Option<CanalError>, CanalError> {
+    if d.is_zero() {
+        return Err(CanalError::DegenerateSpine(
+            "|ṁ|² − ṙ² ≡ 0: every tangent of the cyclographic preimage is isotropic, the characteristic circles degenerate to points".into(),
+        ));
+    }
+    // Cauchy bound for an unbounded domain
+    let lc = d.leading();
+    let cb = d
+        .coeffs()
+        .iter()
+        .map(|c| {
+            let q = c.clone() / lc.clone();
+            if q < Rational::ZERO {
+                -q
+            } else {
+                q
+            }
+        })
+        .fold(Rational::ZERO, |a, b| if b > a { b } else { a })
+        + Rational::ONE;
+    let (a, b, unbounded) = match domain {
+        Some((a, b)) => (a.clone(), b.clone(), false),
+        None => (-cb.clone(), cb, true),
+    };
+    if a > b {
+        return Err(CanalError::InvalidArgument(format!(
+            "empty parameter domain [{}, {}]",
+            format_scalar(&a),
+            format_scalar(&b)
+        )));
+    }
+    let roots = isolate_real_roots_in(d, &a, &b)?;
+    let rational = rcagd_algebra::roots::rational_roots(d);
+    // gaps: (left, left description) .. (right, right description)
+    let mut bounds: Vec<(Rational, Rational, String)> = Vec::new(); // (lo, hi, text)
+    let start_txt = if unbounded {
+        "−∞".to_string()
+    } else {
+        format_scalar(&a)
+    };
+    let end_txt = if unbounded {
+        "+∞".to_string()
+    } else {
+        format_scalar(&b)
+    };
+    bounds.push((a.clone(), a.clone(), start_txt));
+    for iv in &roots {
+        bounds.push((iv.lo.clone(), iv.hi.clone(), describe_root(iv, &rational)));
+    }
+    bounds.push((b.clone(), b.clone(), end_txt));
+    for w in bounds.windows(2) {
+        let (left, right) = (&w[0], &w[1]);
+        let s = if left.1 < right.0 {
+            (left.1.clone() + right.0.clone()) / Rational::from(2)
+        } else {
+            left.1.clone()
+        };
+        let v = d.eval(&s);
+        if v < Rational::ZERO {
+            return Ok(Some(CanalError::NoRealEnvelope {
+                from: left.2.clone(),
+                to: right.2.clone(),
+                witness: format_scalar(&s),
+                value: format_scalar(&v),
+            }));
+        }
+    }
+    Ok(None)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(n: i64) -> Rational {
+        Rational::from(n)
+    }
+    fn p(c: &[i64]) -> Poly<Rational> {
+        Poly::from_ints(c)
+    }
+
+    #[test]
+    fn discriminant_and_reality() {
+        // m = (t, 0, 0), r = t²: D = 1 − 4t² < 0 for |t| > 1/2
+        let s = CanalSpine::polynomial([p(&[0, 1]), p(&[]), p(&[])], p(&[0, 0, 1]));
+        assert_eq!(s.discriminant().expect("d"), p(&[1, 0, -4]));
+        let e = s.check_real_envelope(None).expect_err("not real");
+        match &e {
+            CanalError::NoRealEnvelope { from, to, .. } => {
+                assert_eq!(from, "−∞");
+                assert_eq!(to, "-1/2");
+            }
+            other => panic!("{other:?}"),
+        }
+        assert!(s
+            .check_real_envelope(Some((&Rational::from_ratio(-1, 2), &Rational::from_ratio(1, 2))))
+            .is_ok());
+        assert!(matches!(
+            s.check_real_envelope(Some((&q(0), &q(1)))),
+            Err(CanalError::NoRealEnvelope { .. })
+        ));
+        // constant family
+        let c = CanalSpine::polynomial([p(&[1]), p(&[2]), p(&[3])], p(&[1]));
+        assert!(matches!(
+            c.discriminant(),
+            Err(CanalError::DegenerateSpine(_))
+        ));
+        // isotropic everywhere: m = (t, 0, 0), r = t
+        let iso = CanalSpine::polynomial([p(&[0, 1]), p(&[]), p(&[])], p(&[0, 1]));
+        assert!(matches!(
+            iso.check_real_envelope(None),
+            Err(CanalError::DegenerateSpine(_))
+        ));
+    }
+}

@@ -1,0 +1,739 @@
+//! Bivariate rational functions and the polynomial helpers of the PN module.
+//!
+//! PN surfaces are rational maps of the plane `(u, v)`; their coordinates are kept as
+//! sparse polynomials ([`MPoly`], variable 0 = `u`, variable 1 = `v`) and turned into
+//! tensor-product Bézier patches on a parameter rectangle only for export. The helpers
+//! here (substitution, exact multivariate division, cancellation of known common
+//! factors, Bernstein conversion of a polynomial on a rectangle, sign decisions by
+//! Bernstein coefficients and subdivision) are not in `rcagd-algebra`/`rcagd-geom`; they
+//! are private to this module (see the report to the lead).
+
+use super::PnError;
+use crate::error::format_scalar;
+use rcagd_algebra::bernstein;
+use rcagd_algebra::mpoly::MPoly;
+use rcagd_algebra::{Certificate, Scalar};
+use rcagd_geom::certify;
+use rcagd_geom::BezierPatch;
+
+/// A rational function `num/den` of several variables (for PN surfaces: `u`, `v`).
+#[derive(Debug, Clone)]
+pub struct RatFn<F> {
+    /// Numerator.
+    pub num: MPoly<F>,
+    /// Denominator (not the zero polynomial).
+    pub den: MPoly<F>,
+}
+
+impl<F: Scalar> RatFn<F> {
+    /// `num/den`.
+    ///
+    /// # Errors
+    /// [`PnError::InvalidInput`] if `den` is the zero polynomial.
+    pub fn new(num: MPoly<F>, den: MPoly<F>) -> Result<Self, PnError> {
+        if den.is_zero() {
+            return Err(PnError::InvalidInput(
+                "a rational function needs a non-zero denominator".into(),
+            ));
+        }
+        Ok(RatFn { num, den })
+    }
+
+    /// The polynomial `p` as `p/1`.
+    pub fn poly(p: MPoly<F>) -> Self {
+        RatFn {
+            num: p,
+            den: MPoly::constant(2, F::one()),
+        }
+    }
+
+    /// The constant `c`.
+    pub fn constant(c: F) -> Self {
+        Self::poly(MPoly::constant(2, c))
+    }
+
+    /// The value at `x` (`None` where the denominator vanishes or `x` has the wrong length).
+    pub fn eval(&self, x: &[F]) -> Option<F> {
+        let n = pad_eval(&self.num, x)?;
+        let d = pad_eval(&self.den, x)?;
+        let inv = d.inv()?;
+        Some(n * inv)
+    }
+
+    /// `self + other`.
+    pub fn add(&self, other: &Self) -> Self {
+        RatFn {
+            num: &(&self.num * &other.den) + &(&other.num * &self.den),
+            den: &self.den * &other.den,
+        }
+    }
+
+    /// `self − other`.
+    pub fn sub(&self, other: &Self) -> Self {
+        RatFn {
+            num: &(&self.num * &other.den) - &(&other.num * &self.den),
+            den: &self.den * &other.den,
+        }
+    }
+
+    /// `self · other`.
+    pub fn mul(&self, other: &Self) -> Self {
+        RatFn {
+            num: &self.num * &other.num,
+            den: &self.den * &other.den,
+        }
+    }
+
+    /// `c · self`.
+    pub fn scale(&self, c: &F) -> Self {
+        RatFn {
+            num: self.num.scale(c),
+            den: self.den.clone(),
+        }
+    }
+
+    /// `∂/∂xᵢ` by the quotient rule.
+    pub fn partial(&self, i: usize) -> Self {
+        RatFn {
+            num: &(&self.num.partial(i) * &self.den) - &(&self.num * &self.den.partial(i)),
+            den: &self.den * &self.den,
+        }
+    }
+}
+
+/// Evaluates `p` at `x`, padding `x` with zeros or truncating it to `p`'s variables when
+/// the extra variables do not occur.
+pub(crate) fn pad_eval<F: Scalar>(p: &MPoly<F>, x: &[F]) -> Option<F> {
+    let n = p.nvars();
+    if x.len() >= n {
+        return p.eval(&x[..n]).ok();
+    }
+    if p.terms().any(|(e, _)| e[x.len()..].iter().any(|&k| k != 0)) {
+        return None;
+    }
+    let mut xs = x.to_vec();
+    xs.resize(n, F::zero());
+    p.eval(&xs).ok()
+}
+
+/// The constant `c` in the two variables `u`, `v`.
+pub(crate) fn cst<F: Scalar>(c: F) -> MPoly<F> {
+    MPoly::constant(2, c)
+}
+
+/// The integer `k` as a constant polynomial.
+pub(crate) fn int<F: Scalar>(k: i64) -> MPoly<F> {
+    MPoly::constant(2, F::from_i64(k))
+}
+
+/// The variable `xᵢ` (`u` = 0, `v` = 1) among two variables.
+pub(crate) fn var<F: Scalar>(i: usize) -> MPoly<F> {
+    MPoly::var(2, i)
+}
+
+/// The largest absolute coefficient (at least 1), for `f64` tolerances.
+pub(crate) fn mag<F: Scalar>(p: &MPoly<F>) -> f64 {
+    p.terms().map(|(_, c)| c.to_f64().abs()).fold(1.0, f64::max)
+}
+
+/// `a·b` for 3-vectors of polynomials.
+pub(crate) fn dot3<F: Scalar>(a: &[MPoly<F>], b: &[MPoly<F>]) -> MPoly<F> {
+    a.iter()
+        .zip(b)
+        .fold(MPoly::zero(2), |s, (x, y)| &s + &(x * y))
+}
+
+/// `a × b` for 3-vectors of polynomials.
+pub(crate) fn cross3<F: Scalar>(a: &[MPoly<F>; 3], b: &[MPoly<F>; 3]) -> [MPoly<F>; 3] {
+    [
+        &(&a[1] * &b[2]) - &(&a[2] * &b[1]),
+        &(&a[2] * &b[0]) - &(&a[0] * &b[2]),
+        &(&a[0] * &b[1]) - &(&a[1] * &b[0]),
+    ]
+}
+
+/// The determinant of a 3×3 matrix of polynomials (rows).
+pub(crate) fn det3<F: Scalar>(m: [&[MPoly<F>; 3]; 3]) -> MPoly<F> {
+    dot3(m[0], &cross3(m[1], m[2]))
+}
+
+/// The determinant of a 4×4 matrix of polynomials (rows), by Laplace expansion along the
+/// first row.
+pub(crate) fn det4<F: Scalar>(m: [&[MPoly<F>; 4]; 4]) -> MPoly<F> {
+    let mut acc = MPoly::zero(2);
+    for c in 0..4 {
+        if m[0][c].is_zero() {
+            continue;
+        }
+        let minor: Vec<[MPoly<F>; 3]> = (1..4)
+            .map(|r| {
+                let cols: Vec<MPoly<F>> = (0..4)
+                    .filter(|&k| k != c)
+                    .map(|k| m[r][k].clone())
+                    .collect();
+                [cols[0].clone(), cols[1].clone(), cols[2].clone()]
+            })
+            .collect();
+        let d = det3([&minor[0], &minor[1], &minor[2]]);
+        let t = &m[0][c] * &d;
+        acc = if c % 2 == 0 { &acc + &t } else { &acc - &t };
+    }
+    acc
+}
+
+/// The substitution `p(q₀, …, q_{n−1})` (`qs.len() ≥ nvars(p)`).
+pub(crate) fn compose<F: Scalar>(p: &MPoly<F>, qs: &[MPoly<F>]) -> MPoly<F> {
+    let mut cache: std::collections::BTreeMap<(usize, u32), MPoly<F>> = Default::default();
+    let mut acc = MPoly::zero(qs.first().map_or(2, |q| q.nvars()));
+    for (e, c) in p.terms() {
+        let mut t = MPoly::constant(2, c.clone());
+        for (i, &k) in e.iter().enumerate() {
+            if k == 0 {
+                continue;
+            }
+            let Some(q) = qs.get(i) else {
+                return MPoly::zero(2);
+            };
+            let pw = cache.entry((i, k)).or_insert_with(|| q.pow(k)).clone();
+            t = &t * &pw;
+        }
+        acc = &acc + &t;
+    }
+    acc
+}
+
+/// The exact quotient `p/d` if `d` divides `p` (lexicographic division; over `f64` a
+/// remainder below `10⁻⁹` of the coefficients counts as zero). `None` if `d` does not
+/// divide `p` or `d` is zero.
+pub(crate) fn div_exact<F: Scalar>(p: &MPoly<F>, d: &MPoly<F>) -> Option<MPoly<F>> {
+    let nv = p.nvars().max(d.nvars()).max(2);
+    let (lde, ldc) = d.terms().last().map(|(e, c)| (pad(e, nv), c.clone()))?;
+    if p.is_zero() {
+        return Some(MPoly::zero(nv));
+    }
+    let tol = if F::EXACT {
+        0.0
+    } else {
+        1e-9 * mag(p) * mag(d)
+    };
+    let mut r = p.clone();
+    let mut q = MPoly::zero(nv);
+    let mut guard = 0usize;
+    while let Some((le, lc)) = r.terms().last().map(|(e, c)| (pad(e, nv), c.clone())) {
+        guard += 1;
+        if guard > 1_000_000 {
+            return None;
+        }
+        if !F::EXACT && lc.to_f64().abs() <= tol {
+            r = &r - &MPoly::monomial(nv, &le, lc);
+            continue;
+        }
+        if le.iter().zip(&lde).any(|(a, b)| a < b) {
+            return None;
+        }
+        let e: Vec<u32> = le.iter().zip(&lde).map(|(a, b)| a - b).collect();
+        let t = MPoly::monomial(nv, &e, lc / ldc.clone());
+        r = &r - &(&t * d);
+        q = &q + &t;
+    }
+    Some(q)
+}
+
+fn pad(e: &[u32], n: usize) -> Vec<u32> {
+    let mut v = e.to_vec();
+    v.resize(n.max(e.len()), 0);
+    v
+}
+
+/// Divides every polynomial of `polys` by each candidate factor as often as the candidate
+/// divides all of them (constants and zero candidates are skipped). Returns how many
+/// divisions were made.
+pub(crate) fn cancel_common<F: Scalar>(polys: &mut [MPoly<F>], candidates: &[MPoly<F>]) -> usize {
+    let mut count = 0;
+    for c in candidates {
+        if c.total_degree().unwrap_or(0) == 0 {
+            continue;
+        }
+        loop {
+            let Some(qs) = polys
+                .iter()
+                .map(|p| div_exact(p, c))
+                .collect::<Option<Vec<_>>>()
+            else {
+                break;
+            };
+            if qs.iter().all(|q| q.is_zero()) {
+                break;
+            }
+            polys.clone_from_slice(&qs);
+            count += 1;
+        }
+    }
+    count
+}
+
+/// The greatest common divisor of two rationals (`gcd(p/q, r/s)` with Euclid on the
+/// rationals themselves; exact).
+fn rational_gcd<F: Scalar>(a: &F, b: &F) -> F {
+    let (mut a, mut b) = (a.abs(), b.abs());
+    let mut guard = 0;
+    while !b.is_zero() && guard < 10_000 {
+        guard += 1;
+        let (Some(qa), Some(qb)) = (a.to_rational(), b.to_rational()) else {
+            return F::one();
+        };
+        let quot = qa / qb.clone();
+        let fl = rcagd_algebra::Rational::from(quot.floor());
+        let r = a.clone() - F::from_rational(&fl) * b.clone();
+        a = b;
+        b = r;
+    }
+    a
+}
+
+/// Scales the polynomials by one common non-zero rational so that (for exact scalars) all
+/// coefficients become integers without a common factor, the sign chosen to make the
+/// first polynomial's last (lexicographically largest) coefficient positive. No-op for
+/// `f64` and for all-zero input.
+pub(crate) fn normalize_content<F: Scalar>(polys: &mut [MPoly<F>]) {
+    if !F::EXACT {
+        return;
+    }
+    let mut g: Option<F> = None;
+    for p in polys.iter() {
+        for (_, c) in p.terms() {
+            g = Some(match g {
+                None => c.abs(),
+                Some(g) => rational_gcd(&g, c),
+            });
+        }
+    }
+    let Some(g) = g else { return };
+    if g.is_zero() {
+        return;
+    }
+    let sign = polys
+        .iter()
+        .find_map(|p| p.terms().last().map(|(_, c)| c.clone()))
+        .map_or(
+            F::one(),
+            |c| if c < F::zero() { -F::one() } else { F::one() },
+        );
+    let f = sign / g;
+    for p in polys.iter_mut() {
+        *p = p.scale(&f);
+    }
+}
+
+/// A parameter rectangle `[u₀, u₁] × [v₀, v₁]` (`u₀ < u₁`, `v₀ < v₁`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Domain<F> {
+    /// `[u₀, u₁]`.
+    pub u: (F, F),
+    /// `[v₀, v₁]`.
+    pub v: (F, F),
+}
+
+impl<F: Scalar> Domain<F> {
+    /// The rectangle `[u₀, u₁] × [v₀, v₁]`.
+    ///
+    /// # Errors
+    /// [`PnError::InvalidInput`] unless `u₀ < u₁` and `v₀ < v₁`.
+    pub fn new(u0: F, u1: F, v0: F, v1: F) -> Result<Self, PnError> {
+        if !(u0 < u1 && v0 < v1) {
+            return Err(PnError::InvalidInput(format!(
+                "a parameter rectangle needs u0 < u1 and v0 < v1, got [{}, {}] × [{}, {}]",
+                format_scalar(&u0),
+                format_scalar(&u1),
+                format_scalar(&v0),
+                format_scalar(&v1)
+            )));
+        }
+        Ok(Domain {
+            u: (u0, u1),
+            v: (v0, v1),
+        })
+    }
+
+    /// `[0, 1]²`.
+    pub fn unit() -> Self {
+        Domain {
+            u: (F::zero(), F::one()),
+            v: (F::zero(), F::one()),
+        }
+    }
+
+    /// The point `(u₀ + s(u₁ − u₀), v₀ + t(v₁ − v₀))` of local coordinates `(s, t) ∈ [0,1]²`.
+    pub fn point(&self, s: &F, t: &F) -> [F; 2] {
+        [
+            self.u.0.clone() + s.clone() * (self.u.1.clone() - self.u.0.clone()),
+            self.v.0.clone() + t.clone() * (self.v.1.clone() - self.v.0.clone()),
+        ]
+    }
+
+    fn quarters(&self) -> [Domain<F>; 4] {
+        let two = F::from_i64(2);
+        let um = (self.u.0.clone() + self.u.1.clone()) / two.clone();
+        let vm = (self.v.0.clone() + self.v.1.clone()) / two;
+        [
+            Domain {
+                u: (self.u.0.clone(), um.clone()),
+                v: (self.v.0.clone(), vm.clone()),
+            },
+            Domain {
+                u: (um.clone(), self.u.1.clone()),
+                v: (self.v.0.clone(), vm.clone()),
+            },
+            Domain {
+                u: (self.u.0.clone(), um.clone()),
+                v: (vm.clone(), self.v.1.clone()),
+            },
+            Domain {
+                u: (um, self.u.1.clone()),
+                v: (vm, self.v.1.clone()),
+            },
+        ]
+    }
+
+    fn corners(&self) -> [[F; 2]; 4] {
+        [
+            [self.u.0.clone(), self.v.0.clone()],
+            [self.u.1.clone(), self.v.0.clone()],
+            [self.u.0.clone(), self.v.1.clone()],
+            [self.u.1.clone(), self.v.1.clone()],
+        ]
+    }
+}
+
+/// `p(u₀ + s Δu, v₀ + t Δv)` as a polynomial in the local coordinates `(s, t)`.
+pub(crate) fn to_local<F: Scalar>(p: &MPoly<F>, d: &Domain<F>) -> MPoly<F> {
+    let su = &cst(d.u.0.clone()) + &var::<F>(0).scale(&(d.u.1.clone() - d.u.0.clone()));
+    let sv = &cst(d.v.0.clone()) + &var::<F>(1).scale(&(d.v.1.clone() - d.v.0.clone()));
+    compose(p, &[su, sv])
+}
+
+/// `(deg_u, deg_v)` of a polynomial in `u, v` (0 for the zero polynomial).
+pub(crate) fn bidegree<F: Scalar>(p: &MPoly<F>) -> (usize, usize) {
+    (
+        p.degree_in(0).unwrap_or(0) as usize,
+        p.degree_in(1).unwrap_or(0) as usize,
+    )
+}
+
+/// The tensor Bernstein coefficients (row-major in `s`) of bidegree `(m, n)` of a
+/// polynomial in `(s, t)`.
+pub(crate) fn tensor_bernstein<F: Scalar>(
+    p: &MPoly<F>,
+    m: usize,
+    n: usize,
+) -> Result<Vec<F>, PnError> {
+    let mut power = vec![F::zero(); (m + 1) * (n + 1)];
+    for (e, c) in p.terms() {
+        let i = e.first().copied().unwrap_or(0) as usize;
+        let j = e.get(1).copied().unwrap_or(0) as usize;
+        if i > m || j > n || e.iter().skip(2).any(|&k| k != 0) {
+            return Err(PnError::InvalidInput(format!(
+                "polynomial term of bidegree ({i}, {j}) exceeds ({m}, {n})"
+            )));
+        }
+        power[i * (n + 1) + j] = c.clone();
+    }
+    let mut rows = Vec::with_capacity((m + 1) * (n + 1));
+    for row in power.chunks(n + 1) {
+        rows.extend(bernstein::to_bernstein_blocks(row, 1, n)?);
+    }
+    Ok(bernstein::to_bernstein_blocks(&rows, n + 1, m)?)
+}
+
+/// The rational tensor-product Bézier patch of the homogeneous polynomial map
+/// `(W, X₁, …, X_d)(u, v)` on the rectangle `domain` (local parameters `(s, t) ∈ [0,1]²`);
+/// its bidegree is the largest bidegree of the coordinates.
+pub(crate) fn patch_of<F: Scalar>(
+    coords: &[MPoly<F>],
+    domain: &Domain<F>,
+) -> Result<BezierPatch<F>, PnError> {
+    let local: Vec<MPoly<F>> = coords.iter().map(|p| to_local(p, domain)).collect();
+    let (m, n) = local
+        .iter()
+        .map(bidegree)
+        .fold((0, 0), |(a, b), (c, d)| (a.max(c), b.max(d)));
+    let bern: Vec<Vec<F>> = local
+        .iter()
+        .map(|p| tensor_bernstein(p, m, n))
+        .collect::<Result<_, _>>()?;
+    let dim = coords.len() - 1;
+    let mut flat = Vec::with_capacity((m + 1) * (n + 1) * (dim + 1));
+    for k in 0..(m + 1) * (n + 1) {
+        for b in &bern {
+            flat.push(b[k].clone());
+        }
+    }
+    Ok(BezierPatch::from_flat(dim, m, n, flat)?)
+}
+
+/// The verdict of [`sign_on_domain`].
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Sign<F> {
+    /// Strictly positive on the closed rectangle (Bernstein coefficients of every piece
+    /// positive).
+    Positive,
+    /// Strictly negative on the closed rectangle.
+    Negative,
+    /// The polynomial vanishes at this (exact) point.
+    ZeroAt([F; 2]),
+    /// The polynomial takes opposite signs at these two points (so it vanishes between).
+    SignChange([F; 2], [F; 2]),
+    /// Not decided within the subdivision budget; the polynomial may vanish near here.
+    Undecided([F; 2]),
+}
+
+/// Decides whether `p` vanishes on the closed rectangle, by Bernstein coefficients and
+/// subdivision (at most `budget` pieces): exact for exact scalars, with the relative
+/// tolerance `10⁻⁹` for `f64`.
+pub(crate) fn sign_on_domain<F: Scalar>(
+    p: &MPoly<F>,
+    domain: &Domain<F>,
+    budget: usize,
+) -> Sign<F> {
+    let scale = mag(p);
+    let tol = if F::EXACT { 0.0 } else { 1e-9 * scale };
+    let is_pos = |x: &F| x.to_f64() > tol && (!F::EXACT || *x > F::zero());
+    let is_neg = |x: &F| x.to_f64() < -tol && (!F::EXACT || *x < F::zero());
+    let mut stack = vec![domain.clone()];
+    let mut pos: Option<[F; 2]> = None;
+    let mut neg: Option<[F; 2]> = None;
+    let mut processed = 0usize;
+    while let Some(d) = stack.pop() {
+        processed += 1;
+        // corner values first: an exact zero or a sign change is a witness
+        for c in d.corners() {
+            let val = pad_eval(p, &c).unwrap_or_else(F::zero);
+            if !is_pos(&val) && !is_neg(&val) {
+                return Sign::ZeroAt(c);
+            }
+            if is_pos(&val) {
+                pos.get_or_insert(c);
+            } else {
+                neg.get_or_insert(c);
+            }
+            if let (Some(a), Some(b)) = (&pos, &neg) {
+                return Sign::SignChange(a.clone(), b.clone());
+            }
+        }
+        let local = to_local(p, &d);
+        let (m, n) = bidegree(&local);
+        let Ok(b) = tensor_bernstein(&local, m, n) else {
+            return Sign::Undecided(d.point(&F::from_ratio(1, 2), &F::from_ratio(1, 2)));
+        };
+        if b.iter().all(is_pos) || b.iter().all(is_neg) {
+            continue;
+        }
+        if processed + stack.len() + 4 > budget {
+            return Sign::Undecided(d.point(&F::from_ratio(1, 2), &F::from_ratio(1, 2)));
+        }
+        stack.extend(d.quarters());
+    }
+    if neg.is_some() {
+        Sign::Negative
+    } else {
+        Sign::Positive
+    }
+}
+
+/// The certificate `p ≡ 0` (every coefficient zero; for `f64` below `10⁻⁹ · scale`).
+pub(crate) fn zero_cert<F: Scalar>(property: &str, p: &MPoly<F>, scale: f64) -> Certificate {
+    let coeffs: Vec<F> = p.terms().map(|(_, c)| c.clone()).collect();
+    certify::polynomial_is_zero_scaled(property, &coeffs, scale)
+}
+
+/// The certificate `lhs ≡ rhs`.
+pub(crate) fn identity_cert<F: Scalar>(
+    property: &str,
+    lhs: &MPoly<F>,
+    rhs: &MPoly<F>,
+) -> Certificate {
+    let scale = 16.0 * (mag(lhs) + mag(rhs)) * (1 + lhs.num_terms() + rhs.num_terms()) as f64;
+    zero_cert(property, &(lhs - rhs), scale)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rcagd_algebra::Rational;
+
+    type Q = Rational;
+
+    fn q(p: i64, d: i64) -> Q {
+        Q::from_ratio(p, d)
+    }
+
+    fn u() -> MPoly<Q> {
+        var(0)
+    }
+    fn v() -> MPoly<Q> {
+        var(1)
+    }
+
+    #[test]
+    fn exact_division() {
+        let a = &(&u() * &u()) + &(&v() * &v()) + int(1);
+        let b = &(&u() * &v()) - &int(3);
+        let p = &a * &b;
+        assert_eq!(div_exact(&p, &a), Some(b.clone()));
+        assert_eq!(div_exact(&p, &b), Some(a.clone()));
+        assert_eq!(div_exact(&(&p + &int(1)), &a), None);
+        assert_eq!(div_exact(&p, &MPoly::zero(2)), None);
+        let mut polys = vec![&p * &b, &a * &(&b * &b), &b * &b];
+        assert_eq!(cancel_common(&mut polys, &[b.clone(), a.clone()]), 2);
+        assert_eq!(polys[2], int(1));
+        // f64 division with rounding noise
+        let pf = p.map(|c| Scalar::to_f64(c));
+        let af = a.map(|c| Scalar::to_f64(c));
+        let qf = div_exact(&pf, &af).expect("divisible");
+        assert!((qf.coeff(&[1, 1]) - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn content_and_composition() {
+        let mut polys = vec![u().scale(&q(4, 6)), v().scale(&q(-2, 9))];
+        normalize_content(&mut polys);
+        assert_eq!(polys[0], u().scale(&q(3, 1)));
+        assert_eq!(polys[1], v().scale(&q(-1, 1)));
+        let p = &(&u() * &u()) - &v();
+        let c = compose(&p, &[&v() + &int(1), u()]);
+        assert_eq!(
+            c,
+            &(&(&v() * &v()) + &v().scale(&q(2, 1))) + &(&int(1) - &u())
+        );
+    }
+
+    #[test]
+    fn bernstein_patch_and_signs() {
+        // W = u² + v² + 1 on [−1, 2] × [0, 3]: positive
+        let w = &(&(&u() * &u()) + &(&v() * &v())) + &int(1);
+        let d = Domain::new(q(-1, 1), q(2, 1), q(0, 1), q(3, 1)).expect("rect");
+        assert_eq!(sign_on_domain(&w, &d, 64), Sign::Positive);
+        assert_eq!(sign_on_domain(&(-w.clone()), &d, 64), Sign::Negative);
+        // u − v vanishes on the diagonal
+        let l = &u() - &v();
+        assert!(matches!(
+            sign_on_domain(&l, &d, 64),
+            Sign::ZeroAt(_) | Sign::SignChange(..)
+        ));
+        // u² − 1/4 − v² · 0: zero inside
+        let z = &(&u() * &u()) - &cst(q(1, 4));
+        assert!(matches!(
+            sign_on_domain(&z, &Domain::unit(), 64),
+            Sign::SignChange(..) | Sign::ZeroAt(_)
+        ));
+        // the patch reproduces the map
+        let x = &(&u() * &v()) + &int(2);
+        let patch = patch_of(&[w.clone(), x.clone()], &d).expect("patch");
+        let p = patch.eval(&q(1, 3), &q(1, 2)).expect("finite");
+        let (uu, vv) = (q(-1, 1) + q(1, 1), q(3, 2));
+        let want =
+            (uu.clone() * vv.clone() + q(2, 1)) / (uu.clone() * uu + vv.clone() * vv + q(1, 1));
+        assert_eq!(p[0], want);
+        assert!(Domain::new(q(1, 1), q(0, 1), q(0, 1), q(1, 1)).is_err());
+    }
+}
+
+impl<F: Scalar> PartialEq for RatFn<F> {
+    fn eq(&self, other: &Self) -> bool {
+        self.num == other.num && self.den == other.den
+    }
+}
+
+/// The exact square root of a scalar (`None` if it is not a rational square; for `f64`
+/// the nearest `f64` square root of a non-negative number).
+pub(crate) fn scalar_sqrt<F: Scalar>(x: &F) -> Option<F> {
+    if F::EXACT {
+        let q = x.to_rational()?;
+        rcagd_algebra::rational::rational_sqrt(&q).map(|r| F::from_rational(&r))
+    } else {
+        let v = x.to_f64();
+        if v < 0.0 {
+            return None;
+        }
+        let r = rcagd_algebra::Rational::try_from(v.sqrt()).ok()?;
+        Some(F::from_rational(&r))
+    }
+}
+
+/// The square root of a polynomial in the single variable `x₀` (`None` if it is not the
+/// square of a polynomial with coefficients in the scalar field, or involves `x₁`).
+pub(crate) fn univariate_sqrt<F: Scalar>(p: &MPoly<F>) -> Option<MPoly<F>> {
+    if p.is_zero() {
+        return Some(MPoly::zero(2));
+    }
+    if p.terms().any(|(e, _)| e.iter().skip(1).any(|&k| k != 0)) {
+        return None;
+    }
+    let deg = p.degree_in(0)? as usize;
+    if deg % 2 == 1 {
+        return None;
+    }
+    let k = deg / 2;
+    let coef = |i: usize| p.coeff(&[i as u32, 0]);
+    let mut s = vec![F::zero(); k + 1];
+    s[k] = scalar_sqrt(&coef(deg))?;
+    let two_lead = F::from_i64(2) * s[k].clone();
+    let inv = two_lead.inv()?;
+    for j in 1..=k {
+        // coefficient of t^{2k−j}: Σ_{i+l = 2k−j} s_i s_l, unknown s_{k−j} appears twice
+        let target = 2 * k - j;
+        let mut acc = F::zero();
+        for i in (k - j + 1)..=k {
+            let l = target - i;
+            if l > k - j && l <= k {
+                acc += s[i].clone() * s[l].clone();
+            }
+        }
+        s[k - j] = (coef(target) - acc) * inv.clone();
+    }
+    let root = MPoly::from_terms(
+        2,
+        s.into_iter()
+            .enumerate()
+            .map(|(i, c)| (vec![i as u32, 0], c))
+            .collect(),
+    )
+    .ok()?;
+    let diff = &(&root * &root) - p;
+    let ok = if F::EXACT {
+        diff.is_zero()
+    } else {
+        diff.terms().all(|(_, c)| c.to_f64().abs() <= 1e-9 * mag(p))
+    };
+    ok.then_some(root)
+}
+
+/// Rationals `(a, b)` with `a² + b² = c` for a non-negative rational `c`, by a bounded
+/// search over `c = n/d`: `n·d = x² + y²` with integers `x ≤ √(nd)` (up to `10⁶` steps).
+pub(crate) fn rational_two_squares<F: Scalar>(c: &F) -> Option<(F, F)> {
+    if let Some(r) = scalar_sqrt(c) {
+        return Some((r, F::zero()));
+    }
+    if !F::EXACT || *c < F::zero() {
+        return None;
+    }
+    let q = c.to_rational()?;
+    let n: i128 = i128::try_from(q.numerator()).ok()?;
+    let d: i128 = i128::try_from(q.denominator()).ok()?;
+    let nd = n.checked_mul(d)?;
+    let mut x: i128 = 0;
+    while x * x <= nd && x < 1_000_000 {
+        let rest = nd - x * x;
+        let y = (rest as f64).sqrt().round() as i128;
+        for yy in [y - 1, y, y + 1] {
+            if yy >= 0 && yy * yy == rest {
+                // (x/d)² + (yy/d)² = nd/d² = n/d
+                let a = F::from_rational(&(rcagd_algebra::Rational::from(x) / rcagd_algebra::Rational::from(d)));
+                let b = F::from_rational(&(rcagd_algebra::Rational::from(yy) / rcagd_algebra::Rational::from(d)));
+                return Some((a, b));
+            }
+        }
+        x += 1;
+    }
+    None
+}

@@ -1,0 +1,512 @@
+//! The PN surface type: point, rational unit normal, support function and cofactor as
+//! polynomials in `(u, v)`, with evaluation, Bézier export, certificates and regularity
+//! checks (seed 004 §4.1; NOTES-004 A4.1/A4.2).
+
+use super::offset::PnOffset;
+use super::poly::{
+    self, cancel_common, det4, div_exact, dot3, identity_cert, mag, normalize_content, pad_eval,
+    patch_of, sign_on_domain, zero_cert, Domain, RatFn, Sign,
+};
+use super::PnError;
+use crate::error::{format_point, format_scalar};
+use crate::laguerre::OrientedPlane;
+use crate::Certified;
+use rcagd_algebra::mpoly::MPoly;
+use rcagd_algebra::{Certificate, Scalar};
+use rcagd_geom::BezierPatch;
+
+/// A PN surface (seed 004 §4.1): the rational point `x = (X₁, X₂, X₃)/W`, the rational
+/// unit normal `n = (N₁, N₂, N₃)/N₀` with `N₁² + N₂² + N₃² ≡ N₀²`, the support function
+/// `h` of the oriented tangent plane `h + n·x = 0` (NOTES-004 §0 convention), and the
+/// cofactor `K` with `W = N₀ K`, all polynomials (or, for `h`, a rational function) in the
+/// parameters `(u, v)`.
+///
+/// The offset at oriented distance `d` is `x_d = x + d n = (X + d K N)/W` with support
+/// function `h − d` ([`Self::offset`]; NOTES-004 §0, erratum E6).
+#[derive(Debug, Clone)]
+pub struct PnSurface<F> {
+    point: [MPoly<F>; 4],
+    normal: [MPoly<F>; 4],
+    support: RatFn<F>,
+    cofactor: MPoly<F>,
+    distance: F,
+    name: String,
+}
+
+impl<F: Scalar> PnSurface<F> {
+    /// Assembles a PN surface from its parts, cancelling the given candidate common
+    /// factors and normalizing the rational content (exact scalars). `cofactor` must
+    /// satisfy `W = N₀·K`; if `None`, `K = W/N₀` is computed (and if `N₀` does not divide
+    /// `W`, the point is multiplied through by `N₀`).
+    ///
+    /// # Errors
+    /// [`PnError::NotUnitNormal`] unless `N₁² + N₂² + N₃² ≡ N₀²`;
+    /// [`PnError::InvalidInput`] if `W` or `N₀` is the zero polynomial.
+    pub(crate) fn assemble(
+        name: impl Into<String>,
+        point: [MPoly<F>; 4],
+        normal: [MPoly<F>; 4],
+        support: RatFn<F>,
+        cofactor: Option<MPoly<F>>,
+        candidates: &[MPoly<F>],
+    ) -> Result<Self, PnError> {
+        let name = name.into();
+        if point[0].is_zero() {
+            return Err(PnError::InvalidInput(format!(
+                "{name}: the weight W of the point representation is identically zero"
+            )));
+        }
+        if normal[0].is_zero() {
+            return Err(PnError::InvalidInput(format!(
+                "{name}: the normal denominator N₀ is identically zero"
+            )));
+        }
+        let cert = unit_normal_cert(&normal);
+        if !cert.holds {
+            return Err(PnError::NotUnitNormal(format!(
+                "{name}: N₁² + N₂² + N₃² − N₀² ≢ 0 ({})",
+                cert.residual.unwrap_or_default()
+            )));
+        }
+        // normal: cancel common factors, normalize content
+        let mut nn: Vec<MPoly<F>> = normal.to_vec();
+        cancel_common(&mut nn, candidates);
+        normalize_content(&mut nn);
+        if nn[0].terms().last().is_some_and(|(_, c)| *c < F::zero()) {
+            // keep N₀ with a positive leading coefficient (N₀ > 0 away from its zeros)
+            for p in nn.iter_mut() {
+                *p = -p.clone();
+            }
+        }
+        let normal = [nn[0].clone(), nn[1].clone(), nn[2].clone(), nn[3].clone()];
+        // point (with cofactor): cancel common factors
+        let mut pk: Vec<MPoly<F>> = point.to_vec();
+        let k = match cofactor {
+            Some(k) => k,
+            None => MPoly::zero(2),
+        };
+        pk.push(k);
+        cancel_common(&mut pk, candidates);
+        normalize_content(&mut pk[..4]);
+        let mut point = [pk[0].clone(), pk[1].clone(), pk[2].clone(), pk[3].clone()];
+        let cofactor = match div_exact(&point[0], &normal[0]) {
+            Some(k) => k,
+            None => {
+                let w = point[0].clone();
+                for p in point.iter_mut() {
+                    *p = &*p * &normal[0];
+                }
+                w
+            }
+        };
+        Ok(PnSurface {
+            point,
+            normal,
+            support,
+            cofactor,
+            distance: F::zero(),
+            name,
+        })
+    }
+
+    /// A PN surface from a rational point `(W, X₁, X₂, X₃)` and a rational unit normal
+    /// `(N₀, N₁, N₂, N₃)` (both homogeneous polynomials in `(u, v)`); the support function
+    /// is `h = −n·x`. The normal must be orthogonal to the surface (see [`Certified`]).
+    ///
+    /// # Errors
+    /// As the constructions: [`PnError::NotUnitNormal`] unless `N·N ≡ N₀²`,
+    /// [`PnError::InvalidInput`] for zero `W` or `N₀`.
+    pub fn from_point_normal(point: [MPoly<F>; 4], normal: [MPoly<F>; 4]) -> Result<Self, PnError> {
+        let nx = dot3(&normal[1..], &point[1..]);
+        let support = RatFn::new(-nx, &normal[0] * &point[0])?;
+        Self::assemble("PN surface", point, normal, support, None, &[])
+    }
+
+    /// A copy with another name (used in certificate texts).
+    pub fn named(mut self, name: impl Into<String>) -> Self {
+        self.name = name.into();
+        self
+    }
+
+    /// The name used in certificate texts.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// The homogeneous point polynomials `(W, X₁, X₂, X₃)`.
+    pub fn point_polys(&self) -> &[MPoly<F>; 4] {
+        &self.point
+    }
+
+    /// The unit normal polynomials `(N₀, N₁, N₂, N₃)`, `n = (N₁, N₂, N₃)/N₀`.
+    pub fn normal_polys(&self) -> &[MPoly<F>; 4] {
+        &self.normal
+    }
+
+    /// The support function `h` (tangent plane `h + n·x = 0`).
+    pub fn support(&self) -> &RatFn<F> {
+        &self.support
+    }
+
+    /// The cofactor `K = W/N₀`.
+    pub fn cofactor(&self) -> &MPoly<F> {
+        &self.cofactor
+    }
+
+    /// The oriented distance from the surface this one was offset from (0 for a base
+    /// surface).
+    pub fn distance(&self) -> &F {
+        &self.distance
+    }
+
+    /// The bidegree `(deg_u, deg_v)` of the point representation.
+    pub fn degree(&self) -> (usize, usize) {
+        self.point
+            .iter()
+            .map(poly::bidegree)
+            .fold((0, 0), |(a, b), (c, d)| (a.max(c), b.max(d)))
+    }
+
+    /// The bidegree of the normal representation.
+    pub fn normal_degree(&self) -> (usize, usize) {
+        self.normal
+            .iter()
+            .map(poly::bidegree)
+            .fold((0, 0), |(a, b), (c, d)| (a.max(c), b.max(d)))
+    }
+
+    fn at(u: &F, v: &F) -> String {
+        format_point(&[u.clone(), v.clone()])
+    }
+
+    /// The homogeneous point `(W, X₁, X₂, X₃)(u, v)`.
+    pub fn eval_homogeneous(&self, u: &F, v: &F) -> [F; 4] {
+        let x = [u.clone(), v.clone()];
+        std::array::from_fn(|i| pad_eval(&self.point[i], &x).unwrap_or_else(F::zero))
+    }
+
+    /// The point `x(u, v)`.
+    ///
+    /// # Errors
+    /// [`PnError::Singular`] where `W(u, v) = 0` (a point at infinity or an undefined
+    /// point of the parametrization).
+    pub fn eval(&self, u: &F, v: &F) -> Result<[F; 3], PnError> {
+        let h = self.eval_homogeneous(u, v);
+        let inv = h[0].inv().ok_or_else(|| PnError::Singular {
+            what: format!(
+                "{}: W = 0 (the point is at infinity or undefined)",
+                self.name
+            ),
+            at: Self::at(u, v),
+        })?;
+        Ok([1, 2, 3].map(|i| h[i].clone() * inv.clone()))
+    }
+
+    /// The unit normal `n(u, v)`.
+    ///
+    /// # Errors
+    /// [`PnError::Singular`] where `N₀(u, v) = 0`.
+    pub fn normal_at(&self, u: &F, v: &F) -> Result<[F; 3], PnError> {
+        let x = [u.clone(), v.clone()];
+        let n: [F; 4] =
+            std::array::from_fn(|i| pad_eval(&self.normal[i], &x).unwrap_or_else(F::zero));
+        let inv = n[0].inv().ok_or_else(|| PnError::Singular {
+            what: format!("{}: N₀ = 0 (the normal is undefined)", self.name),
+            at: Self::at(u, v),
+        })?;
+        Ok([1, 2, 3].map(|i| n[i].clone() * inv.clone()))
+    }
+
+    /// The oriented tangent plane `h + n·x = 0` at `(u, v)`.
+    ///
+    /// # Errors
+    /// [`PnError::Singular`] where `N₀` or the denominator of `h` vanishes.
+    pub fn tangent_plane(&self, u: &F, v: &F) -> Result<OrientedPlane<F>, PnError> {
+        let n = self.normal_at(u, v)?;
+        let h = self
+            .support
+            .eval(&[u.clone(), v.clone()])
+            .ok_or_else(|| PnError::Singular {
+                what: format!("{}: the support function is undefined", self.name),
+                at: Self::at(u, v),
+            })?;
+        Ok(OrientedPlane::new(h, n)?)
+    }
+
+    /// Checks that `W` has no zero on the closed rectangle (so the Bézier patch has
+    /// weights of one sign and no point at infinity).
+    ///
+    /// # Errors
+    /// [`PnError::Singular`] naming a parameter point where `W` vanishes, changes sign, or
+    /// may vanish (undecided after 256 subdivisions).
+    pub fn check_defined(&self, domain: &Domain<F>) -> Result<(), PnError> {
+        check_nonzero(
+            &self.point[0],
+            domain,
+            &format!("{}: W = 0 (point at infinity)", self.name),
+        )
+    }
+
+    /// The rational tensor-product Bézier patch of the point representation on the
+    /// rectangle `domain` (local parameters `[0,1]²`), homogeneous control points
+    /// `(w, wx, wy, wz)`.
+    ///
+    /// # Errors
+    /// [`PnError::Singular`] if `W` vanishes on the rectangle ([`Self::check_defined`]).
+    pub fn patch(&self, domain: &Domain<F>) -> Result<BezierPatch<F>, PnError> {
+        self.check_defined(domain)?;
+        patch_of(&self.point, domain)
+    }
+
+    /// The unit normal as a rational Bézier patch on the unit sphere (homogeneous
+    /// `(N₀, N₁, N₂, N₃)`): the Gauss image on the rectangle.
+    ///
+    /// # Errors
+    /// [`PnError::Singular`] if `N₀` vanishes on the rectangle.
+    pub fn normal_patch(&self, domain: &Domain<F>) -> Result<BezierPatch<F>, PnError> {
+        check_nonzero(&self.normal[0], domain, &format!("{}: N₀ = 0", self.name))?;
+        patch_of(&self.normal, domain)
+    }
+
+    /// The offset at oriented distance `d`: `x + d n = (X + d K N)/W`, support `h − d`
+    /// (NOTES-004 §0; seed (4.2) with `h ↦ h − d`, erratum E6). The result has the same
+    /// weight `W`, normal and bidegree (up to the degree of `K N`).
+    pub fn offset(&self, d: F) -> PnOffset<F> {
+        PnOffset::new(self, d)
+    }
+
+    /// The surface at offset `d` as a plain PN surface.
+    pub(crate) fn offset_surface(&self, d: &F) -> PnSurface<F> {
+        let kn: Vec<MPoly<F>> = self.normal[1..]
+            .iter()
+            .map(|n| (&self.cofactor * n).scale(d))
+            .collect();
+        let point = [
+            self.point[0].clone(),
+            &self.point[1] + &kn[0],
+            &self.point[2] + &kn[1],
+            &self.point[3] + &kn[2],
+        ];
+        let support = self.support.sub(&RatFn::constant(d.clone()));
+        PnSurface {
+            point,
+            normal: self.normal.clone(),
+            support,
+            cofactor: self.cofactor.clone(),
+            distance: self.distance.clone() + d.clone(),
+            name: format!("{} offset by {}", self.name, format_scalar(d)),
+        }
+    }
+
+    /// The regularity polynomial `R = det(X̂, X̂_u, X̂_v, (0, N))` with `X̂ = (W, X)`:
+    /// `det(x_u, x_v, n) = R/(W³ N₀)`, so the point map is singular exactly where
+    /// `R = 0` (for `W ≠ 0`).
+    pub fn regularity_poly(&self) -> MPoly<F> {
+        let xu: [MPoly<F>; 4] = std::array::from_fn(|i| self.point[i].partial(0));
+        let xv: [MPoly<F>; 4] = std::array::from_fn(|i| self.point[i].partial(1));
+        let n = [
+            MPoly::zero(2),
+            self.normal[1].clone(),
+            self.normal[2].clone(),
+            self.normal[3].clone(),
+        ];
+        det4([&self.point, &xu, &xv, &n])
+    }
+
+    /// Checks that the surface is defined and regular (`W ≠ 0`, `x_u × x_v ≠ 0`) on the
+    /// closed rectangle, and returns the certificate of that decision.
+    ///
+    /// # Errors
+    /// [`PnError::Singular`] naming a parameter point where `W` or the regularity
+    /// polynomial vanishes (or may vanish).
+    pub fn check_regular(&self, domain: &Domain<F>) -> Result<Certificate, PnError> {
+        self.check_defined(domain)?;
+        check_nonzero(
+            &self.regularity_poly(),
+            domain,
+            &format!("{}: singular point (x_u × x_v = 0)", self.name),
+        )?;
+        Ok(Certificate::holds(
+            format!(
+                "{}: W ≠ 0 and det(x_u, x_v, n) ≠ 0 on [{}, {}] × [{}, {}] (Bernstein signs)",
+                self.name,
+                format_scalar(&domain.u.0),
+                format_scalar(&domain.u.1),
+                format_scalar(&domain.v.0),
+                format_scalar(&domain.v.1)
+            ),
+            F::EXACT,
+        ))
+    }
+
+    /// Converts the scalar type (e.g. exact → `f64`).
+    pub fn map_scalar<G: Scalar>(&self, f: impl Fn(&F) -> G + Copy) -> PnSurface<G> {
+        PnSurface {
+            point: std::array::from_fn(|i| self.point[i].map(f)),
+            normal: std::array::from_fn(|i| self.normal[i].map(f)),
+            support: RatFn {
+                num: self.support.num.map(f),
+                den: self.support.den.map(f),
+            },
+            cofactor: self.cofactor.map(f),
+            distance: f(&self.distance),
+            name: self.name.clone(),
+        }
+    }
+}
+
+/// Fails with [`PnError::Singular`] unless `p` has no zero on the closed rectangle.
+pub(crate) fn check_nonzero<F: Scalar>(
+    p: &MPoly<F>,
+    domain: &Domain<F>,
+    what: &str,
+) -> Result<(), PnError> {
+    match sign_on_domain(p, domain, 256) {
+        Sign::Positive | Sign::Negative => Ok(()),
+        Sign::ZeroAt(x) => Err(PnError::Singular {
+            what: what.to_string(),
+            at: format_point(&x),
+        }),
+        Sign::SignChange(a, b) => Err(PnError::Singular {
+            what: format!("{what} (sign change)"),
+            at: format!(
+                "a point between {} and {}",
+                format_point(&a),
+                format_point(&b)
+            ),
+        }),
+        Sign::Undecided(x) => Err(PnError::Singular {
+            what: format!("{what} (possibly; undecided after subdivision)"),
+            at: format!("near {}", format_point(&x)),
+        }),
+    }
+}
+
+/// `N₁² + N₂² + N₃² − N₀² ≡ 0`.
+pub(crate) fn unit_normal_cert<F: Scalar>(normal: &[MPoly<F>; 4]) -> Certificate {
+    let lhs = dot3(&normal[1..], &normal[1..]);
+    let rhs = &normal[0] * &normal[0];
+    identity_cert(
+        "rational unit normal: N₁² + N₂² + N₃² ≡ N₀² (n·n ≡ 1)",
+        &lhs,
+        &rhs,
+    )
+}
+
+impl<F: Scalar> PnSurface<F> {
+    /// The defining identities of a PN surface, as exact polynomial identities in `(u, v)`.
+    pub(crate) fn base_certificates(&self) -> Vec<Certificate> {
+        let [w, x1, x2, x3] = &self.point;
+        let x = [x1.clone(), x2.clone(), x3.clone()];
+        let nvec = &self.normal[1..];
+        let mut out = vec![unit_normal_cert(&self.normal)];
+        let mut c = identity_cert(
+            "W ≡ N₀·K (common denominator of point and offsets)",
+            w,
+            &(&self.normal[0] * &self.cofactor),
+        );
+        c.property = format!("{}: {}", self.name, c.property);
+        out.push(c);
+        for (k, var) in [(0usize, "u"), (1, "v")] {
+            // x_s ∝ X_s W − X W_s
+            let ws = w.partial(k);
+            let xs: Vec<MPoly<F>> = x
+                .iter()
+                .map(|xi| &(&xi.partial(k) * w) - &(xi * &ws))
+                .collect();
+            let dotp = dot3(nvec, &xs);
+            let scale = 16.0
+                * mag(w)
+                * mag(w)
+                * nvec.iter().map(mag).fold(1.0, f64::max)
+                * (1 + dotp.num_terms()) as f64
+                * x.iter().map(mag).fold(1.0, f64::max);
+            out.push(zero_cert(
+                &format!("{}: n ⟂ x_{var}: N·(X_{var}W − X W_{var}) ≡ 0", self.name),
+                &dotp,
+                scale,
+            ));
+        }
+        // h + n·x = 0  ⇔  h_num N₀ W + h_den N·X ≡ 0
+        let lhs = &(&self.support.num * &self.normal[0]) * w;
+        let rhs = -(&self.support.den * &dot3(nvec, &x));
+        out.push(identity_cert(
+            &format!("{}: x on its tangent plane: h + n·x ≡ 0", self.name),
+            &lhs,
+            &rhs,
+        ));
+        if let Some(first) = out.first_mut() {
+            first.property = format!("{}: {}", self.name, first.property);
+        }
+        out
+    }
+}
+
+impl<F: Scalar> Certified for PnSurface<F> {
+    /// `N·N ≡ N₀²`, `W ≡ N₀K`, `n ⟂ x_u`, `n ⟂ x_v`, `h + n·x ≡ 0`.
+    fn certify(&self) -> Vec<Certificate> {
+        self.base_certificates()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pn::poly::{int, var};
+    use rcagd_algebra::Rational;
+
+    type Q = Rational;
+
+    #[test]
+    fn unit_sphere_as_pn_surface() {
+        // x = n = (2u, 2v, S − 1)/(S + 1): the unit sphere with its outward normal
+        let (u, v) = (var::<Q>(0), var::<Q>(1));
+        let s = &(&u * &u) + &(&v * &v);
+        let w = &s + &int(1);
+        let n = [
+            w.clone(),
+            u.scale(&Q::from(2)),
+            v.scale(&Q::from(2)),
+            &s - &int(1),
+        ];
+        let surf = PnSurface::from_point_normal(n.clone(), n).expect("pn");
+        assert!(surf.all_hold(), "{:?}", surf.certify());
+        assert_eq!(surf.cofactor(), &int(1));
+        let off = surf.offset(Q::from(2));
+        assert!(off.all_hold());
+        // the offset of the unit sphere by 2 is the sphere of radius 3
+        let p = off
+            .surface()
+            .eval(&Q::from_ratio(1, 3), &Q::from(2))
+            .expect("point");
+        let r2: Q = p
+            .iter()
+            .map(|x| x.clone() * x.clone())
+            .fold(Q::from(0), |a, b| a + b);
+        assert_eq!(r2, Q::from(9));
+        let d = Domain::new(Q::from(-1), Q::from(1), Q::from(-1), Q::from(1)).expect("rect");
+        assert!(surf.check_regular(&d).is_ok());
+        let patch = surf.patch(&d).expect("patch");
+        assert_eq!(patch.degree(), (2, 2));
+    }
+
+    #[test]
+    fn non_pythagorean_normal_is_rejected() {
+        let (u, v) = (var::<Q>(0), var::<Q>(1));
+        let n = [int(1), u.clone(), v.clone(), int(1)];
+        assert!(matches!(
+            PnSurface::from_point_normal(n.clone(), n),
+            Err(PnError::NotUnitNormal(_))
+        ));
+    }
+}
+
+impl<F: Scalar> PartialEq for PnSurface<F> {
+    fn eq(&self, other: &Self) -> bool {
+        self.point == other.point
+            && self.normal == other.normal
+            && self.support == other.support
+            && self.cofactor == other.cofactor
+            && self.distance == other.distance
+    }
+}
