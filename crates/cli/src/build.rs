@@ -124,6 +124,7 @@ pub fn check_object(
     if diags.is_empty() {
         Ok((op, OpArgs::new(obj.name.clone(), op, values)))
     } else {
+        diags.sort_by_key(|d| (d.line, d.column));
         Err(diags)
     }
 }
@@ -255,7 +256,7 @@ pub fn run(path: &Path, out: Option<&Path>, formats: &[OutFormat]) -> u8 {
         new
     });
     if out.is_none() && formats != [OutFormat::Json] {
-        errln!("error: --format step/iges/obj/svg need --out DIR (without --out, JSON is printed to stdout)");
+        errln!("error: formats other than json need --out DIR (without --out, JSON is printed to stdout)");
         return EXIT_INPUT;
     }
     let recipe = match load(path) {

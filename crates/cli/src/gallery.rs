@@ -121,7 +121,7 @@ pub fn write_all(
             std::fs::write(&path, &text)
                 .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
             if f == OutFormat::Svg {
-                entry = entry.with_svg(text);
+                entry = entry.with_svg(String::from_utf8_lossy(&text).into_owned());
             }
             entry = entry.with_file(f.extension().to_ascii_uppercase(), file);
         }

@@ -2,8 +2,8 @@
 //!
 //! * `rcagd gallery [--out DIR] [--quiet]` — build every embedded default recipe,
 //!   write JSON/STEP/OBJ/SVG per object, `report.json` and `index.html`;
-//! * `rcagd build RECIPE [--out DIR] [--format json|step|iges|obj|svg]…` — build a
-//!   user's recipe;
+//! * `rcagd build RECIPE [--out DIR] [--format json|step|iges|obj|stl|ply|gltf|svg]…`
+//!   — build a user's recipe;
 //! * `rcagd ops [NAME] [--markdown]` — the op reference.
 //!
 //! Exit codes: 0 all certificates hold, 1 a certificate fails (or an object of the
@@ -32,7 +32,7 @@ struct Cli {
 enum Command {
     /// Build every construction of the embedded default recipes and write a report.
     ///
-    /// Writes <name>.json, <name>.step, <name>.obj and <name>.svg per object,
+    /// Writes NAME.json, NAME.step, NAME.obj and NAME.svg per object,
     /// report.json and index.html into DIR, and prints a summary table.
     Gallery {
         /// Output directory (created if missing).

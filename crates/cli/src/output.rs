@@ -1,7 +1,8 @@
-//! Writing built objects: JSON (per DESIGN.md, via `rcagd_io::json`), STEP, IGES, OBJ
-//! and SVG (via `rcagd_io`), one file per object and format, and the summary table.
+//! Writing built objects: JSON (per DESIGN.md, via `rcagd_io::json`), STEP, IGES, OBJ,
+//! STL, PLY, glTF and SVG (all via `rcagd_io`), one file per object and format, and
+//! the summary table.
 
-use crate::model::{Geometry, Object};
+use crate::model::Object;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -14,9 +15,15 @@ pub enum OutFormat {
     Step,
     /// IGES 5.3: rational B-spline entities 126/128.
     Iges,
-    /// Wavefront OBJ: a tessellation (patches) or polyline (curves).
+    /// Wavefront OBJ: adaptive polylines (curves) or triangle meshes with normals (patches).
     Obj,
-    /// SVG picture: curves in the plane, patches in an axonometric view.
+    /// Binary STL triangle mesh (patches only).
+    Stl,
+    /// Binary PLY triangle mesh with normals (patches only).
+    Ply,
+    /// glTF 2.0 binary (.glb): meshes and line strips.
+    Gltf,
+    /// SVG picture: plane curves from the top, spatial geometry obliquely.
     Svg,
 }
 
@@ -28,6 +35,9 @@ impl OutFormat {
             OutFormat::Step => "step",
             OutFormat::Iges => "igs",
             OutFormat::Obj => "obj",
+            OutFormat::Stl => "stl",
+            OutFormat::Ply => "ply",
+            OutFormat::Gltf => "glb",
             OutFormat::Svg => "svg",
         }
     }
@@ -40,63 +50,39 @@ pub fn object_json(o: &Object) -> serde_json::Value {
 }
 
 /// The JSON document of several objects: `{"objects": […], "all_certificates_hold": …}`.
+///
+/// # Errors
+/// The serializer's message.
 pub fn objects_json_text(objects: &[Object]) -> Result<String, String> {
     rcagd_io::json::objects_to_json_string(objects).map_err(|e| e.to_string())
 }
 
-/// The text of one object in one format.
+/// The file contents of one object in one format.
 ///
 /// # Errors
-/// The exporter's message.
-pub fn render(o: &Object, format: OutFormat) -> Result<String, String> {
+/// The exporter's message (e.g. STEP needs positive weights, STL needs patches).
+pub fn render(o: &Object, format: OutFormat) -> Result<Vec<u8>, String> {
+    use rcagd_io::stl::{object_mesh, MeshOptions};
+    let one = std::slice::from_ref(o);
+    let text =
+        |r: Result<String, rcagd_io::IoError>| r.map(String::into_bytes).map_err(|e| e.to_string());
     match format {
-        OutFormat::Json => serde_json::to_string_pretty(&object_json(o)).map_err(|e| e.to_string()),
-        OutFormat::Step => {
-            rcagd_io::step::write_step(std::slice::from_ref(o)).map_err(|e| e.to_string())
+        OutFormat::Json => serde_json::to_string_pretty(&object_json(o))
+            .map(|s| (s + "\n").into_bytes())
+            .map_err(|e| e.to_string()),
+        OutFormat::Step => text(rcagd_io::step::write_step(one)),
+        OutFormat::Iges => text(rcagd_io::iges::write_iges(one)),
+        OutFormat::Obj => text(rcagd_io::obj::object_to_obj(o)),
+        OutFormat::Stl => object_mesh(o, &MeshOptions::default())
+            .and_then(|m| rcagd_io::stl::write_stl_binary(&o.name, &m))
+            .map_err(|e| e.to_string()),
+        OutFormat::Ply => object_mesh(o, &MeshOptions::default())
+            .and_then(|m| rcagd_io::ply::write_ply(&o.name, &m))
+            .map_err(|e| e.to_string()),
+        OutFormat::Gltf => {
+            rcagd_io::gltf::objects_to_glb(one, &MeshOptions::default()).map_err(|e| e.to_string())
         }
-        OutFormat::Iges => {
-            rcagd_io::iges::write_iges(std::slice::from_ref(o)).map_err(|e| e.to_string())
-        }
-        OutFormat::Obj => object_obj(o),
-        OutFormat::Svg => object_svg(o),
-    }
-}
-
-/// Segments per curve piece in OBJ polylines.
-pub const OBJ_CURVE_SEGMENTS: usize = 64;
-/// Grid cells per patch side in OBJ meshes.
-pub const OBJ_PATCH_SEGMENTS: usize = 16;
-
-/// The OBJ text of an object: curves as polylines (uniform in the parameter), patches
-/// as one triangle mesh with normals (a uniform grid per patch).
-///
-/// # Errors
-/// Tessellation or export errors (e.g. a point at infinity, dimension above 3).
-pub fn object_obj(o: &Object) -> Result<String, String> {
-    use rcagd_geom::tessellate::{tessellate_curve_uniform, tessellate_patch_uniform};
-    match &o.geometry {
-        Geometry::Curve(_) | Geometry::Curves(_) => {
-            let lines = o
-                .geometry
-                .curves()
-                .into_iter()
-                .map(|c| tessellate_curve_uniform(c, OBJ_CURVE_SEGMENTS).map(|p| p.points))
-                .collect::<Result<Vec<_>, _>>()
-                .map_err(|e| e.to_string())?;
-            rcagd_io::obj::polylines_to_obj(&o.name, &lines).map_err(|e| e.to_string())
-        }
-        Geometry::Patch(_) | Geometry::Patches(_) => {
-            let (mut pos, mut nor, mut tri) = (Vec::new(), Vec::new(), Vec::new());
-            for p in o.geometry.patches() {
-                let m = tessellate_patch_uniform(p, OBJ_PATCH_SEGMENTS, OBJ_PATCH_SEGMENTS)
-                    .map_err(|e| e.to_string())?;
-                let base = u32::try_from(pos.len()).map_err(|_| "mesh too large".to_string())?;
-                tri.extend(m.triangles.iter().map(|t| t.map(|i| i + base)));
-                pos.extend(m.positions);
-                nor.extend(m.normals);
-            }
-            rcagd_io::obj::mesh_to_obj(&o.name, &pos, &nor, &tri).map_err(|e| e.to_string())
-        }
+        OutFormat::Svg => object_svg(o).map(String::into_bytes),
     }
 }
 

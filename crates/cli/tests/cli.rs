@@ -8,13 +8,43 @@ fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_rcagd"))
 }
 
-/// A fresh directory under `target/` for one test.
-fn temp_dir(tag: &str) -> PathBuf {
+/// A fresh directory under `target/tmp` for one test, removed when the test passes
+/// (kept for inspection when it fails).
+struct TempDir(PathBuf);
+
+impl TempDir {
+    fn join(&self, p: impl AsRef<Path>) -> PathBuf {
+        self.0.join(p)
+    }
+}
+
+impl std::ops::Deref for TempDir {
+    type Target = Path;
+    fn deref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl AsRef<std::ffi::OsStr> for TempDir {
+    fn as_ref(&self) -> &std::ffi::OsStr {
+        self.0.as_os_str()
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        if !std::thread::panicking() {
+            let _ = std::fs::remove_dir_all(&self.0);
+        }
+    }
+}
+
+fn temp_dir(tag: &str) -> TempDir {
     let dir =
         Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-{tag}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("create temp dir");
-    dir
+    TempDir(dir)
 }
 
 fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
@@ -253,6 +283,37 @@ fn build_writes_formats_to_out_dir() {
     let step = std::fs::read_to_string(out.join("quarter.step")).expect("step");
     assert!(step.starts_with("ISO-10303-21;"), "{step}");
     assert!(step.contains("B_SPLINE_CURVE_WITH_KNOTS"), "{step}");
+    // Mesh formats of a patch.
+    let patch = write(
+        &dir,
+        "patch.toml",
+        "[[object]]\nname = \"cyl\"\nop = \"cylinder_patch\"\nradius = 2\nfrom = [2, 0]\nto = [0, 2]\nz0 = 0\nz1 = 3\n",
+    );
+    let out4 = dir.join("out4");
+    let o = bin()
+        .arg("build")
+        .arg(&patch)
+        .arg("--out")
+        .arg(&out4)
+        .args(["--format", "stl,ply,gltf,obj"])
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    for ext in ["stl", "ply", "glb", "obj"] {
+        let bytes = std::fs::read(out4.join(format!("cyl.{ext}"))).expect("mesh file");
+        assert!(bytes.len() > 100, "{ext}");
+    }
+    // STL of a curve: the exporter's error, exit code 2.
+    let o = bin()
+        .arg("build")
+        .arg(&p)
+        .arg("--out")
+        .arg(dir.join("out5"))
+        .args(["--format", "stl"])
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("no patches"), "{}", stderr(&o));
     // An object STEP cannot write (mixed-sign weights) is an input error.
     let bad = write(
         &dir,

@@ -212,4 +212,5 @@ fn binary_survives_broken_inputs() {
             "{name}: {err}"
         );
     }
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -55,7 +55,7 @@ struct Builder {
 
 impl Builder {
     fn view(&mut self, bytes: &[u8], target: u32) -> usize {
-        while self.bin.len() % 4 != 0 {
+        while !self.bin.len().is_multiple_of(4) {
             self.bin.push(0);
         }
         let offset = self.bin.len();
@@ -204,7 +204,7 @@ pub fn write_glb(parts: &[GlbPart]) -> Result<Vec<u8>, IoError> {
         }
         nodes.push(node);
     }
-    while b.bin.len() % 4 != 0 {
+    while !b.bin.len().is_multiple_of(4) {
         b.bin.push(0);
     }
     let mut doc = json!({

@@ -293,7 +293,7 @@ fn parse_sections(text: &str) -> Result<Iges, IoError> {
     } else {
         ';'
     };
-    if dlines.len() % 2 != 0 {
+    if !dlines.len().is_multiple_of(2) {
         return Err(line_err(
             dlines.last().map_or(0, |l| l.0),
             "the Directory Entry section has an odd number of records",
@@ -705,10 +705,10 @@ mod tests {
 
     #[test]
     fn short_and_unknown_records_are_errors() {
-        let e = read_iges("hello\n").err().expect("error").to_string();
+        let e = read_iges("hello\n").expect_err("error").to_string();
         assert!(e.contains("IGES line 1"), "{e}");
         let bad = format!("{:<72}X{:>7}\n", "", 1);
-        let e = read_iges(&bad).err().expect("error").to_string();
+        let e = read_iges(&bad).expect_err("error").to_string();
         assert!(e.contains("unknown section"), "{e}");
     }
 }

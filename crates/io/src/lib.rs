@@ -19,6 +19,8 @@ pub mod json;
 pub mod model;
 pub mod obj;
 pub mod ply;
+pub mod png;
+pub mod raster;
 pub mod report;
 pub mod step;
 pub mod step_read;

@@ -307,7 +307,7 @@ impl<'a> Lexer<'a> {
 }
 
 fn hex_units(s: &[u8], width: usize) -> Result<Vec<u32>, String> {
-    if s.len() % width != 0 {
+    if !s.len().is_multiple_of(width) {
         return Err("bad \\X2\\ or \\X4\\ escape length".into());
     }
     s.chunks(width)
@@ -1189,7 +1189,7 @@ fn json_rational(v: &Value) -> Result<Rational, IoError> {
     let s = v
         .as_str()
         .ok_or_else(|| sidecar_err(format!("expected an exact number string, found {v}")))?;
-    parse_rational(s).map_err(|e| sidecar_err(e))
+    parse_rational(s).map_err(sidecar_err)
 }
 
 fn json_list<'v>(v: &'v Value, what: &str) -> Result<&'v Vec<Value>, IoError> {
@@ -1225,7 +1225,7 @@ pub fn sidecar_curve(v: &Value) -> Result<NurbsCurve<Rational>, IoError> {
         .iter()
         .map(json_hom)
         .collect::<Result<Vec<_>, _>>()?;
-    NurbsCurve::new(p, knots, pts).map_err(|e| sidecar_err(e))
+    NurbsCurve::new(p, knots, pts).map_err(sidecar_err)
 }
 
 /// An exact surface of a sidecar (`{degree: [p, q], knots_u, knots_v, control_points}`).
@@ -1249,7 +1249,7 @@ pub fn sidecar_surface(v: &Value) -> Result<NurbsSurface<Rational>, IoError> {
                 .collect()
         })
         .collect::<Result<Vec<_>, _>>()?;
-    NurbsSurface::new((p, q), ku, kv, net).map_err(|e| sidecar_err(e))
+    NurbsSurface::new((p, q), ku, kv, net).map_err(sidecar_err)
 }
 
 /// Euclidean coordinates and weight of homogeneous points, rounded to `f64`.

@@ -32,7 +32,7 @@ pub struct MeshOptions {
 impl Default for MeshOptions {
     fn default() -> Self {
         MeshOptions {
-            relative_tolerance: 2e-4,
+            relative_tolerance: 5e-4,
         }
     }
 }

@@ -211,6 +211,11 @@ fn write_gallery_files() {
         )
         .expect("write");
     }
+    for o in &objects {
+        let stem = o.name.replace(' ', "_");
+        let png = rcagd_io::raster::render_png(o, &Default::default()).expect("png");
+        std::fs::write(dir.join(format!("{stem}.png")), png).expect("write");
+    }
     let glb = rcagd_io::gltf::objects_to_glb(&objects, &Default::default()).expect("glb");
     std::fs::write(dir.join("all.glb"), glb).expect("write");
     for o in objects.iter().filter(|o| !o.geometry.patches().is_empty()) {

@@ -558,3 +558,18 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Satz 7 transferred: bilinear patches map to biquadratic patches on an ellipsoid and a
+    /// two-sheet hyperboloid through their rational normal forms, with the Miquel
+    /// certificates (concyclic = coplanar on every quadric).
+    #[test]
+    fn miquel_on_other_oval_quadrics(c in [hom(), hom(), hom(), hom()], a in pos(), b in pos(), cc in pos(), two_sheet in any::<bool>()) {
+        let quadric = if two_sheet { Quadric::hyperboloid_two_sheets(a, b, cc) } else { Quadric::ellipsoid(a, b, cc) }.unwrap();
+        let proj = quadric.projection().unwrap();
+        let Ok(bp) = BiquadraticPatch::from_bilinear(&proj, c[0].clone(), c[1].clone(), c[2].clone(), c[3].clone()) else { return Ok(()) };
+        assert_certs(&bp.certify())?;
+    }
+}

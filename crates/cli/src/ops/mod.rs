@@ -2,7 +2,7 @@
 //!
 //! Ops live in one file per topic (`kernel.rs`, later `quadric.rs`, `ph.rs`, …); each
 //! file exports `pub const OPS: &[OpSpec]`. To add a topic, write the file and add its
-//! module name to the [`topics!`] line below — nothing else changes: `rcagd ops`,
+//! module name to the `topics!` line below — nothing else changes: `rcagd ops`,
 //! recipe checking, `docs/recipes.md` tests and the gallery pick it up.
 //!
 //! The registry checks every parameter before an op's `build` runs: unknown and

@@ -45,7 +45,7 @@
 //! whole envelope (no square root at all) — [`QuadraticCanal`].
 
 use super::bipoly::{patch_of, BiPoly};
-use super::sum_of_squares::{sum_of_two_squares_f64, GaussianSplit, SumOfSquares};
+use super::sum_of_squares::{sum_of_two_squares_approx, GaussianSplit, SumOfSquares};
 use super::{CanalError, CanalSpine};
 use crate::error::format_scalar;
 use crate::Certified;
@@ -81,9 +81,16 @@ impl AxisChoice {
             axis: 2,
             positive: true,
         }; 6];
-        for (k, (axis, positive)) in [(2, true), (2, false), (1, true), (1, false), (0, true), (0, false)]
-            .into_iter()
-            .enumerate()
+        for (k, (axis, positive)) in [
+            (2, true),
+            (2, false),
+            (1, true),
+            (1, false),
+            (0, true),
+            (0, false),
+        ]
+        .into_iter()
+        .enumerate()
         {
             out[k] = AxisChoice { axis, positive };
         }
@@ -126,6 +133,7 @@ pub struct CanalSurface<F> {
     axis: AxisChoice,
     x: [BiPoly<F>; 4],
     reparametrized: Option<(Rational, Rational)>,
+    domain: Option<(Rational, Rational)>,
 }
 
 fn sq<F: Scalar>(p: &Poly<F>) -> Poly<F> {
@@ -133,7 +141,10 @@ fn sq<F: Scalar>(p: &Poly<F>) -> Poly<F> {
 }
 
 fn poly_scale<F: Scalar>(p: &Poly<F>) -> f64 {
-    p.coeffs().iter().map(|x| x.to_f64().abs()).fold(0.0, f64::max)
+    p.coeffs()
+        .iter()
+        .map(|x| x.to_f64().abs())
+        .fold(0.0, f64::max)
 }
 
 fn bi_scale<F: Scalar>(b: &BiPoly<F>) -> f64 {
@@ -205,6 +216,7 @@ fn build<F: Scalar>(
         axis,
         x,
         reparametrized: None,
+        domain: None,
     })
 }
 
@@ -218,9 +230,9 @@ fn reduce<F: Scalar>(x: &mut [BiPoly<F>; 4]) -> Result<(), CanalError> {
             *b = b.div_t(&ct)?;
         }
     }
-    let cu = x
-        .iter()
-        .fold(Poly::zero(), |acc: Poly<F>, b| acc.gcd(&b.transpose().content_t()));
+    let cu = x.iter().fold(Poly::zero(), |acc: Poly<F>, b| {
+        acc.gcd(&b.transpose().content_t())
+    });
     if cu.degree().is_some_and(|d| d > 0) {
         for b in x.iter_mut() {
             *b = b.transpose().div_t(&cu)?.transpose();
@@ -272,7 +284,13 @@ fn build_best<F: Scalar>(
 fn check_split<F: Scalar>(d: &Poly<F>, g: &[Poly<F>; 2]) -> Result<(), CanalError> {
     let s = &sq(&g[0]) + &sq(&g[1]);
     let r = &s - d;
-    if small(&r, poly_scale(d)) {
+    // f64: rounding grows with the size of the squared terms, not of D
+    let n = (d.degree().unwrap_or(0) + 1) as f64;
+    let scale = poly_scale(d)
+        .max(poly_scale(&g[0]).powi(2))
+        .max(poly_scale(&g[1]).powi(2))
+        * n;
+    if small(&r, scale) {
         Ok(())
     } else {
         Err(CanalError::NotASplit(format!(
@@ -379,11 +397,11 @@ impl Certified for CanalBuild {
 
 /// Reparametrizes the family by `t = (a + b s²)/(1 + s²)` (homogeneous substitution of
 /// degree `k`): real for every `s` when `D ≥ 0` on `[a, b]` (seed 004 §4.5).
-fn reparametrize(spine: &CanalSpine<Rational>, a: &Rational, b: &Rational) -> CanalSpine<Rational> {
+fn reparametrize<F: Scalar>(spine: &CanalSpine<F>, a: &F, b: &F) -> CanalSpine<F> {
     let k = spine.degree();
-    let num = Poly::new(vec![a.clone(), Rational::ZERO, b.clone()]);
-    let den = Poly::new(vec![Rational::ONE, Rational::ZERO, Rational::ONE]);
-    let sub = |p: &Poly<Rational>| {
+    let num = Poly::new(vec![a.clone(), F::zero(), b.clone()]);
+    let den = Poly::new(vec![F::one(), F::zero(), F::one()]);
+    let sub = |p: &Poly<F>| {
         let mut acc = Poly::zero();
         for (i, c) in p.coeffs().iter().enumerate() {
             let term = &num.pow(i as u32) * &den.pow((k - i) as u32);
@@ -445,6 +463,7 @@ pub fn canal_surface(
             SumOfSquares::Rational { g1, g2 } => {
                 build_best(&spine, &[g1.clone(), g2.clone()], options.axis).map(|mut s| {
                     s.reparametrized = reparam.clone();
+                    s.domain = options.domain.clone();
                     CanalBuild::Rational(s)
                 })
             }
@@ -452,6 +471,7 @@ pub fn canal_surface(
                 let se = spine.map_scalar(|x| QuadExt::rational(x.clone()));
                 build_best(&se, &[g1.clone(), g2.clone()], options.axis).map(|mut s| {
                     s.reparametrized = reparam.clone();
+                    s.domain = options.domain.clone();
                     CanalBuild::Extension {
                         radicand: radicand.clone(),
                         surface: s,
@@ -480,29 +500,86 @@ pub fn canal_surface(
     })
 }
 
-/// The canal surface in `f64`: the split of `D` from its complex roots
-/// ([`sum_of_two_squares_f64`]); approximate, certificates are tolerance checks.
+/// The canal surface in `f64` from exact data: orientation, reality check, domain
+/// reparametrization, `D` and its square-free decomposition are exact; only the roots of the
+/// square-free odd part of `D` are approximated ([`sum_of_two_squares_approx`]); the
+/// parametrization is built in `f64` and its certificates are tolerance checks. For data
+/// whose exact split needs more than one quadratic field.
 ///
 /// # Errors
-/// As [`canal_surface_with_split`] and [`sum_of_two_squares_f64`];
-/// [`CanalError::NoRealEnvelope`] from the exact reality check of the (exactly converted)
-/// `f64` data.
-pub fn canal_surface_f64(
-    spine: &CanalSpine<f64>,
+/// As [`canal_surface`] (without [`CanalError::NeedsLargerExtension`]).
+pub fn canal_surface_approx(
+    spine: &CanalSpine<Rational>,
     options: &CanalOptions,
 ) -> Result<CanalSurface<f64>, CanalError> {
-    let spine = match options.orientation {
+    let mut spine = match options.orientation {
         Orientation::Positive => spine.clone(),
         Orientation::Negative => spine.reversed(),
     };
-    spine.check_real_envelope(None)?;
+    let mut reparam = None;
+    if let Some((a, b)) = &options.domain {
+        spine.check_real_envelope(Some((a, b)))?;
+        if spine.check_real_envelope(None).is_err() {
+            spine = reparametrize(&spine, a, b);
+            reparam = Some((a.clone(), b.clone()));
+        }
+    } else {
+        spine.check_real_envelope(None)?;
+    }
     let d = spine.discriminant()?;
-    let (g1, g2) = sum_of_two_squares_f64(&d)?;
+    let (g1, g2) = sum_of_two_squares_approx(&d)?;
+    // the f64 numerators are not divided by their content: scale the split accordingly
+    let content = {
+        let wd = spine.weight().derivative();
+        let x = [
+            &spine.center_polys()[0],
+            &spine.center_polys()[1],
+            &spine.center_polys()[2],
+            spine.radius_poly(),
+        ];
+        let p: Vec<Poly<Rational>> = x
+            .iter()
+            .map(|xi| &(spine.weight() * &xi.derivative()) - &(&wd * *xi))
+            .collect();
+        p.iter()
+            .fold(Poly::zero(), |acc: Poly<Rational>, q| acc.gcd(q))
+    };
+    let cf = content.map(Scalar::to_f64);
+    let sf = spine.map_scalar(Scalar::to_f64);
     let opts = CanalOptions {
         orientation: Orientation::Positive,
         ..options.clone()
     };
-    canal_surface_with_split(&spine, &g1, &g2, &opts)
+    let mut s = canal_surface_with_split(&sf, &(&g1 * &cf), &(&g2 * &cf), &opts)?;
+    s.reparametrized = reparam;
+    s.domain = options.domain.clone();
+    Ok(s)
+}
+
+/// The canal surface of an `f64` family: its coefficients are exact binary rationals, so
+/// this is [`canal_surface_approx`] of the exactly converted family.
+///
+/// # Errors
+/// As [`canal_surface_approx`]; [`CanalError::InvalidArgument`] for non-finite input.
+pub fn canal_surface_f64(
+    spine: &CanalSpine<f64>,
+    options: &CanalOptions,
+) -> Result<CanalSurface<f64>, CanalError> {
+    let conv = |p: &Poly<f64>| -> Result<Poly<Rational>, CanalError> {
+        Ok(Poly::new(
+            p.coeffs()
+                .iter()
+                .map(|x| {
+                    Scalar::to_rational(x).ok_or_else(|| {
+                        CanalError::InvalidArgument("non-finite coefficient in the family".into())
+                    })
+                })
+                .collect::<Result<Vec<_>, _>>()?,
+        ))
+    };
+    let [w, m0, m1, m2, r] = spine.homogeneous();
+    let exact = CanalSpine::new(conv(&w)?, [conv(&m0)?, conv(&m1)?, conv(&m2)?], conv(&r)?)?;
+    canal_surface_approx(&exact, options)
 }
 
 impl<F: Scalar> CanalSurface<F> {
@@ -535,8 +612,16 @@ impl<F: Scalar> CanalSurface<F> {
     /// The bidegree `(deg_t, deg_u)`.
     pub fn degree(&self) -> (usize, usize) {
         (
-            self.x.iter().filter_map(BiPoly::degree_t).max().unwrap_or(0),
-            self.x.iter().filter_map(BiPoly::degree_u).max().unwrap_or(0),
+            self.x
+                .iter()
+                .filter_map(BiPoly::degree_t)
+                .max()
+                .unwrap_or(0),
+            self.x
+                .iter()
+                .filter_map(BiPoly::degree_u)
+                .max()
+                .unwrap_or(0),
         )
     }
 
@@ -580,9 +665,9 @@ impl<F: Scalar> CanalSurface<F> {
         let p: [F; 4] = core::array::from_fn(|k| self.numerators[k].eval(t));
         let pm = [p[0].clone(), p[1].clone(), p[2].clone()];
         let nn = crate::lines::dot(&pm, &pm);
-        let inv = nn.inv().ok_or_else(|| {
-            CanalError::DegenerateSpine(format!("ṁ({}) = 0", format_scalar(t)))
-        })?;
+        let inv = nn
+            .inv()
+            .ok_or_else(|| CanalError::DegenerateSpine(format!("ṁ({}) = 0", format_scalar(t))))?;
         let k = r.clone() * p[3].clone() * inv.clone();
         let d = nn.clone() - p[3].clone() * p[3].clone();
         Ok(CharacteristicCircle {
@@ -630,14 +715,73 @@ impl<F: Scalar> CanalSurface<F> {
             axis: self.axis,
             x: core::array::from_fn(|k| self.x[k].map_scalar(f)),
             reparametrized: self.reparametrized.clone(),
+            domain: self.domain.clone(),
         }
     }
 
-    /// `(XᵢW − MᵢX₀)`, `i = 1..3` (the homogeneous `x − m`).
-    fn diff_to_center(&self) -> [BiPoly<F>; 3] {
-        let w = self.spine.weight();
-        let m = self.spine.center_polys();
-        core::array::from_fn(|i| self.x[i + 1].mul_t(w).sub(&self.x[0].mul_t(&m[i])))
+    /// The parameter domain `[a, b]` requested at construction (`None`: all of `R`).
+    pub fn domain(&self) -> Option<&(Rational, Rational)> {
+        self.domain.as_ref()
+    }
+
+    /// The characteristic circle at an end of the domain (`0`: `t = a`, `1`: `t = b`) as
+    /// homogeneous polynomials in `u`; for a reparametrized family `t = a ↔ s = 0` and
+    /// `t = b ↔ s = ∞` (the leading coefficients in `s`).
+    ///
+    /// # Errors
+    /// [`CanalError::InvalidArgument`] without a domain.
+    pub fn end_circle(&self, end: usize) -> Result<[Poly<F>; 4], CanalError> {
+        let (a, b) = self.domain.clone().ok_or_else(|| {
+            CanalError::InvalidArgument("the surface has no parameter domain".into())
+        })?;
+        if self.reparametrized.is_some() {
+            if end == 0 {
+                return Ok(self.circle_polys(&F::zero()));
+            }
+            let n = self.degree().0;
+            return Ok(core::array::from_fn(|k| {
+                Poly::new(self.x[k].coeffs().iter().map(|p| p.coeff(n)).collect())
+            }));
+        }
+        let t = if end == 0 { a } else { b };
+        Ok(self.circle_polys(&F::from_rational(&t)))
+    }
+
+    /// Bézier patches covering the parameter domain and the whole characteristic circles:
+    /// `[a, b] × (u ∈ [−1, 1], chart u = 1/v)` (2 patches), or for a reparametrized family
+    /// `s ∈ [0, 1]` and the chart `s = 1/σ`, `σ ∈ [0, 1]` (4 patches, `t = a … b`).
+    ///
+    /// # Errors
+    /// [`CanalError::InvalidArgument`] without a domain; geometry failures.
+    pub fn domain_patches(&self) -> Result<Vec<BezierPatch<F>>, CanalError> {
+        let (a, b) = self.domain.clone().ok_or_else(|| {
+            CanalError::InvalidArgument("the surface has no parameter domain".into())
+        })?;
+        let (zero, one, m1) = (F::zero(), F::one(), -F::one());
+        let nu = self.degree().1;
+        let charts = |x: &[BiPoly<F>]| -> Vec<Vec<BiPoly<F>>> {
+            vec![x.to_vec(), x.iter().map(|c| c.reverse_u(nu)).collect()]
+        };
+        let mut out = Vec::new();
+        if self.reparametrized.is_some() {
+            let nt = self.degree().0;
+            let rev: Vec<BiPoly<F>> = self
+                .x
+                .iter()
+                .map(|c| c.transpose().reverse_u(nt).transpose())
+                .collect();
+            for base in [self.x.to_vec(), rev] {
+                for ch in charts(&base) {
+                    out.push(patch_of(&ch, (&zero, &one), (&m1, &one))?);
+                }
+            }
+        } else {
+            let (fa, fb) = (F::from_rational(&a), F::from_rational(&b));
+            for ch in charts(&self.x) {
+                out.push(patch_of(&ch, (&fa, &fb), (&m1, &one))?);
+            }
+        }
+        Ok(out)
     }
 }
 
@@ -645,78 +789,92 @@ fn bi_cert<F: Scalar>(property: &str, b: &BiPoly<F>, scale: f64) -> Certificate 
     polynomial_is_zero_scaled(property, &b.all_coeffs(), scale)
 }
 
+/// The canal-surface identities of homogeneous coordinates `x` with respect to the family
+/// `spine` (derivative numerators `p`), as polynomial identities in `(t, u)`: sphere
+/// `|x − m|² ≡ r²`, contact `(x − m)·ṁ + r ṙ ≡ 0`, normality `⟨x − m, x_u⟩ ≡ 0` and
+/// `⟨x − m, x_t⟩ ≡ 0`.
+pub(crate) fn canal_certificates<F: Scalar>(
+    spine: &CanalSpine<F>,
+    p: &[Poly<F>; 4],
+    x: &[BiPoly<F>; 4],
+) -> Vec<Certificate> {
+    let mut out = Vec::new();
+    let w = spine.weight();
+    let m = spine.center_polys();
+    let dx: [BiPoly<F>; 3] = core::array::from_fn(|i| x[i + 1].mul_t(w).sub(&x[0].mul_t(&m[i])));
+    let x0 = &x[0];
+    let r = spine.radius_poly();
+    let sx = x.iter().map(bi_scale).fold(0.0, f64::max);
+    let ss = spine
+        .homogeneous()
+        .iter()
+        .map(poly_scale)
+        .fold(0.0, f64::max);
+    let sd = sx * ss * 4.0;
+    let sphere = dx
+        .iter()
+        .fold(BiPoly::zero(), |acc, d| acc.add(&d.mul(d)))
+        .sub(&x0.mul_t(r).mul(&x0.mul_t(r)));
+    out.push(bi_cert(
+        "|x − m|² − r² ≡ 0 (x(t,u) lies on the sphere K(t), seed 003 (2.1))",
+        &sphere,
+        sd * sd,
+    ));
+    let sp = p.iter().map(poly_scale).fold(0.0, f64::max);
+    let contact = (0..3)
+        .fold(BiPoly::zero(), |acc, i| acc.add(&dx[i].mul_t(&p[i])))
+        .add(&x0.mul_t(&(r * &p[3])));
+    out.push(bi_cert(
+        "(x − m)·ṁ + r ṙ ≡ 0 (contact condition K̇(t), seed 003 (2.2) corrected per erratum 003-E3)",
+        &contact,
+        sd * sp * 4.0,
+    ));
+    for (name, dir) in [("u", 0), ("t", 1)] {
+        let xd: Vec<BiPoly<F>> = x
+            .iter()
+            .map(|b| {
+                if dir == 0 {
+                    b.partial_u()
+                } else {
+                    b.partial_t()
+                }
+            })
+            .collect();
+        let tangent: Vec<BiPoly<F>> = (1..4)
+            .map(|i| xd[i].mul(x0).sub(&x[i].mul(&xd[0])))
+            .collect();
+        let ortho = (0..3).fold(BiPoly::zero(), |acc, i| acc.add(&dx[i].mul(&tangent[i])));
+        out.push(bi_cert(
+            &format!("⟨x − m, x_{name}⟩ ≡ 0 (the surface normal passes through the spine point)"),
+            &ortho,
+            sd * sx * sx * 64.0,
+        ));
+    }
+    out
+}
+
 impl<F: Scalar> Certified for CanalSurface<F> {
     /// The canal-surface identities as polynomial identities in `(t, u)` (module docs):
     /// sphere `|x − m|² ≡ r²`, contact `(x − m)·ṁ + r ṙ ≡ 0`, normality `⟨x − m, x_u⟩ ≡ 0`
     /// and `⟨x − m, x_t⟩ ≡ 0`, and the split `g₁² + g₂² ≡ D`.
     fn certify(&self) -> Vec<Certificate> {
-        let mut out = Vec::new();
-        let dx = self.diff_to_center();
-        let x0 = &self.x[0];
-        let r = self.spine.radius_poly();
-        let p = &self.numerators;
-        let sx = self.x.iter().map(bi_scale).fold(0.0, f64::max);
-        let ss = self
-            .spine
-            .homogeneous()
-            .iter()
-            .map(poly_scale)
-            .fold(0.0, f64::max);
-        let sd = sx * ss * 4.0;
-        // sphere
-        let sphere = dx
-            .iter()
-            .fold(BiPoly::zero(), |acc, d| acc.add(&d.mul(d)))
-            .sub(&x0.mul_t(r).mul(&x0.mul_t(r)));
-        out.push(bi_cert(
-            "|x − m|² − r² ≡ 0 (x(t,u) lies on the sphere K(t), seed 003 (2.1))",
-            &sphere,
-            sd * sd,
-        ));
-        // contact
-        let sp = p.iter().map(poly_scale).fold(0.0, f64::max);
-        let contact = (0..3)
-            .fold(BiPoly::zero(), |acc, i| acc.add(&dx[i].mul_t(&p[i])))
-            .add(&x0.mul_t(&(r * &p[3])));
-        out.push(bi_cert(
-            "(x − m)·ṁ + r ṙ ≡ 0 (contact condition K̇(t), seed 003 (2.2) corrected per erratum 003-E3)",
-            &contact,
-            sd * sp * 4.0,
-        ));
-        // normality in u and t
-        for (name, dir) in [("u", 0), ("t", 1)] {
-            let xd: Vec<BiPoly<F>> = self
-                .x
-                .iter()
-                .map(|b| if dir == 0 { b.partial_u() } else { b.partial_t() })
-                .collect();
-            let tangent: Vec<BiPoly<F>> = (1..4)
-                .map(|i| xd[i].mul(x0).sub(&self.x[i].mul(&xd[0])))
-                .collect();
-            let ortho = (0..3).fold(BiPoly::zero(), |acc, i| acc.add(&dx[i].mul(&tangent[i])));
-            out.push(bi_cert(
-                &format!(
-                    "⟨x − m, x_{name}⟩ ≡ 0 (the surface normal passes through the spine point)"
-                ),
-                &ortho,
-                sd * sx * sx * 64.0,
-            ));
-        }
-        // split
+        let mut out = canal_certificates(&self.spine, &self.numerators, &self.x);
         match self.spine.discriminant() {
             Ok(d) => {
                 let s = &(&sq(&self.split[0]) + &sq(&self.split[1])) - &d;
+                let n = (d.degree().unwrap_or(0) + 1) as f64;
+                let scale = poly_scale(&d)
+                    .max(poly_scale(&self.split[0]).powi(2))
+                    .max(poly_scale(&self.split[1]).powi(2))
+                    .max(1.0)
+                    * n;
                 out.push(polynomial_is_zero_scaled(
                     "g₁² + g₂² ≡ D = P₁² + P₂² + P₃² − P₄² (sum of two squares)",
                     s.coeffs(),
-                    poly_scale(&d).max(1.0),
+                    scale,
                 ));
             }
-            Err(e) => out.push(Certificate::fails(
-                "g₁² + g₂² ≡ D",
-                e.to_string(),
-                F::EXACT,
-            )),
+            Err(e) => out.push(Certificate::fails("g₁² + g₂² ≡ D", e.to_string(), F::EXACT)),
         }
         out
     }
@@ -817,7 +975,8 @@ impl<F: Scalar> QuadraticCanal<F> {
     pub fn new(k: [Poly<F>; 4]) -> Result<Self, CanalError> {
         if k.iter().any(|p| p.degree().is_some_and(|d| d > 2)) {
             return Err(CanalError::InvalidArgument(
-                "the cyclographic construction of seed 003 §2.3 needs a family of degree ≤ 2".into(),
+                "the cyclographic construction of seed 003 §2.3 needs a family of degree ≤ 2"
+                    .into(),
             ));
         }
         let a: [F; 4] = core::array::from_fn(|i| k[i].coeff(1));
@@ -857,9 +1016,10 @@ impl<F: Scalar> QuadraticCanal<F> {
                 "the cyclographic construction needs a polynomial family (constant weight)".into(),
             ));
         }
-        let inv = w.coeff(0).inv().ok_or_else(|| {
-            CanalError::DegenerateSpine("zero weight".into())
-        })?;
+        let inv = w
+            .coeff(0)
+            .inv()
+            .ok_or_else(|| CanalError::DegenerateSpine("zero weight".into()))?;
         let m = spine.center_polys();
         Self::new([
             m[0].scale(&inv),
@@ -882,8 +1042,16 @@ impl<F: Scalar> QuadraticCanal<F> {
     /// `(deg_s, deg_t)`.
     pub fn degree(&self) -> (usize, usize) {
         (
-            self.x.iter().filter_map(BiPoly::degree_t).max().unwrap_or(0),
-            self.x.iter().filter_map(BiPoly::degree_u).max().unwrap_or(0),
+            self.x
+                .iter()
+                .filter_map(BiPoly::degree_t)
+                .max()
+                .unwrap_or(0),
+            self.x
+                .iter()
+                .filter_map(BiPoly::degree_u)
+                .max()
+                .unwrap_or(0),
         )
     }
 
@@ -990,7 +1158,11 @@ mod tests {
     fn notes_counterexample_degree() {
         // m = (t, t²/2, 0), r = t: D = t², split (t, 0): bidegree (4, 2) < Krasauskas (6, 2)
         let spine = CanalSpine::polynomial(
-            [p(&[0, 1]), Poly::new(vec![q(0, 1), q(0, 1), q(1, 2)]), p(&[])],
+            [
+                p(&[0, 1]),
+                Poly::new(vec![q(0, 1), q(0, 1), q(1, 2)]),
+                p(&[]),
+            ],
             p(&[0, 1]),
         );
         let b = canal_surface(&spine, &CanalOptions::default()).expect("build");

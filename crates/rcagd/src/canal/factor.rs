@@ -17,10 +17,10 @@
 //!   `Q(i)`, and `hⱼ(t) = gⱼ(t + ki)` those of `S`. An irreducible `p ∈ Q[t]` either stays
 //!   irreducible over `Q(i)` (then `hⱼ = p` is real) or splits as `p = h·h̄`.
 
+use num_traits::One;
 use rcagd_algebra::complex::{norm_sq_poly, Complex};
 use rcagd_algebra::roots::square_free_decomposition;
 use rcagd_algebra::{Poly, Rational};
-use num_traits::One;
 
 /// The largest number of modular factors the recombination accepts (`2^(r−1)` subsets).
 pub const MAX_MODULAR_FACTORS: usize = 24;
@@ -315,11 +315,12 @@ fn kernel_mod(mut m: Vec<Vec<u64>>, p: u64) -> Vec<Vec<u64>> {
         for x in m[row].iter_mut() {
             *x = *x * inv % p;
         }
-        for r in 0..n {
-            if r != row && m[r][col] != 0 {
-                let c = m[r][col];
-                for k in 0..cols {
-                    m[r][k] = (m[r][k] + p - c * m[row][k] % p) % p;
+        let pivot_row = m[row].clone();
+        for (r, mr) in m.iter_mut().enumerate() {
+            if r != row && mr[col] != 0 {
+                let c = mr[col];
+                for (x, y) in mr.iter_mut().zip(&pivot_row) {
+                    *x = (*x + p - c * y % p) % p;
                 }
             }
         }
@@ -555,13 +556,11 @@ pub fn factor_squarefree_int(f: &Poly<Rational>) -> Result<Vec<Poly<Rational>>, 
         return Err(FactorError::TooManyModularFactors(facs.len()));
     }
     // bound
-    let maxc = f.coeffs().iter().map(abs_r).fold(Rational::ZERO, |a, b| {
-        if b > a {
-            b
-        } else {
-            a
-        }
-    });
+    let maxc = f
+        .coeffs()
+        .iter()
+        .map(abs_r)
+        .fold(Rational::ZERO, |a, b| if b > a { b } else { a });
     let bound = abs_r(&lc) * int(2).pow(n as isize) * int(n as i64 + 1) * maxc * int(2);
     let pr = Rational::from(p);
     let mut k = 1u32;
@@ -572,7 +571,11 @@ pub fn factor_squarefree_int(f: &Poly<Rational>) -> Result<Vec<Poly<Rational>>, 
     }
     // monic f mod p^k
     let linv = inv_mod_pk(&lc, p, k);
-    let fm: Zp = f.coeffs().iter().map(|c| modulo(&(c * &linv), &m)).collect();
+    let fm: Zp = f
+        .coeffs()
+        .iter()
+        .map(|c| modulo(&(c * &linv), &m))
+        .collect();
     let lifted = hensel_all(&fm, &facs, p, k);
     // recombination
     let mut remaining: Vec<usize> = (0..lifted.len()).collect();
@@ -583,9 +586,9 @@ pub fn factor_squarefree_int(f: &Poly<Rational>) -> Result<Vec<Poly<Rational>>, 
         let mut found = None;
         for subset in combinations(&remaining, s) {
             let lcc = cur.leading();
-            let prod = subset
-                .iter()
-                .fold(vec![lcc.clone()], |acc, &i| z_mod(&z_mul(&acc, &lifted[i]), &m));
+            let prod = subset.iter().fold(vec![lcc.clone()], |acc, &i| {
+                z_mod(&z_mul(&acc, &lifted[i]), &m)
+            });
             let cand: Vec<Rational> = prod.iter().map(|x| sym_mod(x, &m)).collect();
             let cand = primitive_int(&Poly::new(cand));
             if cand.degree().unwrap_or(0) == 0 {
@@ -614,7 +617,13 @@ pub fn factor_squarefree_int(f: &Poly<Rational>) -> Result<Vec<Poly<Rational>>, 
 }
 
 fn combinations(items: &[usize], k: usize) -> Vec<Vec<usize>> {
-    fn rec(items: &[usize], k: usize, start: usize, cur: &mut Vec<usize>, out: &mut Vec<Vec<usize>>) {
+    fn rec(
+        items: &[usize],
+        k: usize,
+        start: usize,
+        cur: &mut Vec<usize>,
+        out: &mut Vec<Vec<usize>>,
+    ) {
         if cur.len() == k {
             out.push(cur.clone());
             return;
@@ -630,13 +639,14 @@ fn combinations(items: &[usize], k: usize) -> Vec<Vec<usize>> {
     out
 }
 
+/// A factorization `c · ∏ fⱼ^{eⱼ}`: the constant and the `(fⱼ, eⱼ)`.
+pub type Factorization = (Rational, Vec<(Poly<Rational>, usize)>);
+
 /// The factorization `p = c · ∏ fⱼ^{eⱼ}` over `Q` with monic irreducible `fⱼ`.
 ///
 /// # Errors
 /// [`FactorError::Zero`] for `p = 0`; as [`factor_squarefree_int`].
-pub fn factor_rational(
-    p: &Poly<Rational>,
-) -> Result<(Rational, Vec<(Poly<Rational>, usize)>), FactorError> {
+pub fn factor_rational(p: &Poly<Rational>) -> Result<Factorization, FactorError> {
     if p.is_zero() {
         return Err(FactorError::Zero);
     }
@@ -735,6 +745,26 @@ mod tests {
     }
 
     #[test]
+    fn harder_factorizations() {
+        // Swinnerton-Dyer polynomial of √2, √3, √5: irreducible of degree 8
+        let sd8 = p(&[576, 0, -960, 0, 352, 0, -40, 0, 1]);
+        assert_eq!(factor_squarefree_int(&sd8).expect("f").len(), 1);
+        // x¹² − 1 = Φ₁Φ₂Φ₃Φ₄Φ₆Φ₁₂
+        let mut c = vec![0i64; 13];
+        c[0] = -1;
+        c[12] = 1;
+        let f = p(&c);
+        let fs = factor_squarefree_int(&f).expect("f");
+        assert_eq!(fs.len(), 6);
+        assert_eq!(product(&fs), f);
+        // large coefficients: (1000x² + 999)(x³ − 12345x + 7)
+        let g = &p(&[999, 0, 1000]) * &p(&[7, -12345, 0, 1]);
+        let fs = factor_squarefree_int(&g).expect("f");
+        assert_eq!(fs.len(), 2);
+        assert_eq!(product(&fs), g);
+    }
+
+    #[test]
     fn gaussian_factors() {
         // t² + 1 = (t + i)(t − i)
         let fs = factor_gaussian(&p(&[1, 0, 1])).expect("f");
@@ -748,7 +778,9 @@ mod tests {
         // t⁴ + 1 splits over Q(i) into t² ± i
         let fs = factor_gaussian(&p(&[1, 0, 0, 0, 1])).expect("f");
         assert_eq!(fs.len(), 2);
-        let prod = fs.iter().fold(GaussPoly::constant(Complex::one()), |a, b| &a * b);
+        let prod = fs
+            .iter()
+            .fold(GaussPoly::constant(Complex::one()), |a, b| &a * b);
         assert_eq!(prod, to_gauss(&p(&[1, 0, 0, 0, 1])));
     }
 }

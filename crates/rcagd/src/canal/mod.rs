@@ -26,8 +26,8 @@
 //! * [`blend`]: canal-surface blends between two spheres (or a sphere and a plane) with
 //!   prescribed contact circles.
 
-pub mod blend;
 pub mod bipoly;
+pub mod blend;
 pub mod envelope;
 pub mod factor;
 pub mod pipe;
@@ -35,11 +35,14 @@ pub mod sum_of_squares;
 
 pub use bipoly::BiPoly;
 pub use envelope::{
-    canal_surface, canal_surface_f64, canal_surface_with_split, krasauskas_bound, AxisChoice,
-    CanalBuild, CanalOptions, CanalSurface, CharacteristicCircle, KrasauskasBound, Orientation,
-    QuadraticCanal,
+    canal_surface, canal_surface_approx, canal_surface_f64, canal_surface_with_split,
+    krasauskas_bound, AxisChoice, CanalBuild, CanalOptions, CanalSurface, CharacteristicCircle,
+    KrasauskasBound, Orientation, QuadraticCanal,
 };
-pub use sum_of_squares::{sum_of_two_squares, sum_of_two_squares_f64, GaussianSplit, SumOfSquares};
+pub use sum_of_squares::{
+    sum_of_two_squares, sum_of_two_squares_approx, sum_of_two_squares_f64, GaussianSplit,
+    SumOfSquares,
+};
 
 use crate::error::format_scalar;
 use rcagd_algebra::roots::isolate_real_roots_in;
@@ -162,7 +165,11 @@ impl<F: Scalar> CanalSpine<F> {
         let sp = spine.coordinate_polys();
         let rp = radius.coordinate_polys();
         let (wm, wr) = (sp[0].clone(), rp[0].clone());
-        let g = if F::EXACT { wm.gcd(&wr) } else { Poly::constant(F::one()) };
+        let g = if F::EXACT {
+            wm.gcd(&wr)
+        } else {
+            Poly::constant(F::one())
+        };
         let (fm, fr) = if F::EXACT && g.degree().is_some_and(|d| d > 0) {
             (
                 wr.div_exact(&g).map_err(CanalError::Algebra)?,
@@ -296,9 +303,7 @@ impl<F: Scalar> CanalSpine<F> {
         if !F::EXACT {
             return Ok(p);
         }
-        let g = p
-            .iter()
-            .fold(Poly::zero(), |acc: Poly<F>, q| acc.gcd(q));
+        let g = p.iter().fold(Poly::zero(), |acc: Poly<F>, q| acc.gcd(q));
         if g.degree().is_some_and(|d| d > 0) {
             let mut out = p.clone();
             for (o, q) in out.iter_mut().zip(&p) {
@@ -475,7 +480,10 @@ mod tests {
             other => panic!("{other:?}"),
         }
         assert!(s
-            .check_real_envelope(Some((&Rational::from_ratio(-1, 2), &Rational::from_ratio(1, 2))))
+            .check_real_envelope(Some((
+                &Rational::from_ratio(-1, 2),
+                &Rational::from_ratio(1, 2)
+            )))
             .is_ok());
         assert!(matches!(
             s.check_real_envelope(Some((&q(0), &q(1)))),

@@ -35,11 +35,11 @@
 use super::factor::{factor_gaussian, GaussPoly};
 use super::{negative_interval, CanalError};
 use crate::error::format_scalar;
+use num_traits::One;
 use rcagd_algebra::complex::{conj_poly, re_im_polys, Complex};
 use rcagd_algebra::quadratic::{split_square, sqrt_in_extension};
 use rcagd_algebra::roots::square_free_decomposition;
 use rcagd_algebra::{Poly, QuadExt, Rational, Scalar};
-use num_traits::One;
 
 /// A decomposition `D = g₁² + g₂²`.
 #[derive(Debug, Clone, PartialEq)]
@@ -160,7 +160,9 @@ impl GaussianSplit {
 
     /// The number of choices `2^(#pairs)` (which of `π`, `π̄` per splitting factor).
     pub fn num_choices(&self) -> usize {
-        1usize.checked_shl(self.pairs.len() as u32).unwrap_or(usize::MAX)
+        1usize
+            .checked_shl(self.pairs.len() as u32)
+            .unwrap_or(usize::MAX)
     }
 
     /// `true` if a rational decomposition exists (module docs).
@@ -173,7 +175,11 @@ impl GaussianSplit {
             .iter()
             .enumerate()
             .fold(GaussPoly::constant(Complex::one()), |acc, (k, h)| {
-                let pick = if (choice >> k) & 1 == 1 { conj_poly(h) } else { h.clone() };
+                let pick = if (choice >> k) & 1 == 1 {
+                    conj_poly(h)
+                } else {
+                    h.clone()
+                };
                 &acc * &pick
             })
     }
@@ -250,7 +256,12 @@ impl GaussianSplit {
             )));
         };
         let to_ext = |p: &GaussPoly| -> Poly<Complex<QuadExt>> {
-            p.map(|c| Complex::new(QuadExt::rational(c.re.clone()), QuadExt::rational(c.im.clone())))
+            p.map(|c| {
+                Complex::new(
+                    QuadExt::rational(c.re.clone()),
+                    QuadExt::rational(c.im.clone()),
+                )
+            })
         };
         let g = lin
             .iter()
@@ -292,48 +303,78 @@ pub fn sum_of_two_squares(d: &Poly<Rational>) -> Result<SumOfSquares, CanalError
     GaussianSplit::new(d)?.decompose(0)
 }
 
-/// `D = g₁² + g₂²` in `f64` from the complex roots of `D` (Durand–Kerner): the roots with
-/// positive imaginary part and every second real root (real roots of a non-negative `D`
-/// have even multiplicity) give `h = √c ∏(t − z)`, `g₁ = Re h`, `g₂ = Im h`. Approximate;
-/// the caller states it.
+/// `D = g₁² + g₂²` in `f64`. The `f64` coefficients are exact binary rationals, so the
+/// square-free decomposition `D = c·A²·S` is computed exactly (multiple roots are the
+/// ill-conditioned part of root finding); the simple, non-real roots of `S` are found by
+/// Durand–Kerner and the split is `g₁ + ig₂ = √c·A·∏_{Im z > 0}(t − z)`. Approximate; the
+/// caller states it.
 ///
 /// # Errors
-/// [`CanalError::DegenerateSpine`] for the zero polynomial, [`CanalError::InvalidArgument`]
-/// for odd degree, a negative leading coefficient or roots that do not pair up.
+/// [`CanalError::DegenerateSpine`] for the zero polynomial, [`CanalError::NoRealEnvelope`]
+/// if `D` is negative somewhere, [`CanalError::InvalidArgument`] for non-finite
+/// coefficients or roots that do not separate.
 pub fn sum_of_two_squares_f64(d: &Poly<f64>) -> Result<(Poly<f64>, Poly<f64>), CanalError> {
-    let n = d
-        .degree()
-        .ok_or_else(|| CanalError::DegenerateSpine("D ≡ 0".into()))?;
-    let lc = d.leading();
-    if n % 2 == 1 || lc <= 0.0 || !lc.is_finite() {
-        return Err(CanalError::InvalidArgument(format!(
-            "D of degree {n} with leading coefficient {lc} is not non-negative"
-        )));
+    let dq: Poly<Rational> = Poly::new(
+        d.coeffs()
+            .iter()
+            .map(|x| {
+                Scalar::to_rational(x).ok_or_else(|| {
+                    CanalError::InvalidArgument("D has a non-finite coefficient".into())
+                })
+            })
+            .collect::<Result<Vec<_>, _>>()?,
+    );
+    sum_of_two_squares_approx(&dq)
+}
+
+/// `D = g₁² + g₂²` in `f64` for an exact `D`: exact square-free decomposition, numerical
+/// roots of the square-free odd part only (see [`sum_of_two_squares_f64`]).
+///
+/// # Errors
+/// As [`sum_of_two_squares_f64`].
+pub fn sum_of_two_squares_approx(
+    dq: &Poly<Rational>,
+) -> Result<(Poly<f64>, Poly<f64>), CanalError> {
+    if dq.is_zero() {
+        return Err(CanalError::DegenerateSpine("D ≡ 0".into()));
     }
-    let roots = durand_kerner(d)?;
+    if let Some(neg) = negative_interval(dq, None)? {
+        return Err(neg);
+    }
+    let lc = Scalar::to_f64(&dq.leading());
+    let mut a = Poly::constant(Rational::ONE);
+    let mut s = Poly::constant(Rational::ONE);
+    for (f, k) in square_free_decomposition(dq) {
+        a = &a * &f.pow((k / 2) as u32);
+        if k % 2 == 1 {
+            s = &s * &f;
+        }
+    }
+    let sf = s.map(Scalar::to_f64);
+    let roots = durand_kerner(&sf)?;
     let scale = roots.iter().map(|z| z.norm_sq().sqrt()).fold(1.0, f64::max);
-    let tol = 1e-6 * scale;
-    let mut upper: Vec<Complex<f64>> = roots.iter().filter(|z| z.im > tol).cloned().collect();
-    let mut real: Vec<f64> = roots
+    let upper: Vec<Complex<f64>> = roots
         .iter()
-        .filter(|z| z.im.abs() <= tol)
-        .map(|z| z.re)
+        .filter(|z| z.im > 1e-12 * scale)
+        .cloned()
         .collect();
-    real.sort_by(|a, b| a.partial_cmp(b).unwrap_or(core::cmp::Ordering::Equal));
-    if real.len() % 2 == 1 || upper.len() + real.len() / 2 != n / 2 {
+    let n = s.degree().unwrap_or(0);
+    if 2 * upper.len() != n {
         return Err(CanalError::InvalidArgument(
-            "the roots of D do not pair up: D is not non-negative (or too ill-conditioned for f64)"
+            "the roots of the square-free part of D do not separate into conjugate pairs in f64"
                 .into(),
         ));
     }
-    upper.extend(real.iter().step_by(2).map(|&x| Complex::new(x, 0.0)));
-    let h = upper.iter().fold(
-        Poly::constant(Complex::new(lc.sqrt(), 0.0)),
-        |acc, z| &acc * &Poly::new(vec![-z.clone(), Complex::new(1.0, 0.0)]),
-    );
-    Ok(re_im_polys(&h))
+    let h = upper
+        .iter()
+        .fold(Poly::constant(Complex::new(lc.sqrt(), 0.0)), |acc, z| {
+            &acc * &Poly::new(vec![-z.clone(), Complex::new(1.0, 0.0)])
+        });
+    let af = a.map(|x| Complex::new(Scalar::to_f64(x), 0.0));
+    Ok(re_im_polys(&(&h * &af)))
 }
 
+/// Durand–Kerner iteration followed by Newton polishing (for simple roots).
 fn durand_kerner(p: &Poly<f64>) -> Result<Vec<Complex<f64>>, CanalError> {
     let n = p.degree().unwrap_or(0);
     if n == 0 {
@@ -367,7 +408,7 @@ fn durand_kerner(p: &Poly<f64>) -> Result<Vec<Complex<f64>>, CanalError> {
             let mut den = Complex::new(1.0, 0.0);
             for j in 0..n {
                 if i != j {
-                    den = den * (z[i].clone() - z[j].clone());
+                    den *= z[i].clone() - z[j].clone();
                 }
             }
             if den.norm_sq() == 0.0 {
@@ -379,6 +420,27 @@ fn durand_kerner(p: &Poly<f64>) -> Result<Vec<Complex<f64>>, CanalError> {
         }
         if delta < 1e-15 * radius {
             break;
+        }
+    }
+    let dc: Vec<Complex<f64>> = c
+        .iter()
+        .enumerate()
+        .skip(1)
+        .map(|(k, a)| a.clone() * Complex::new(k as f64, 0.0))
+        .collect();
+    let deval = |z: &Complex<f64>| {
+        dc.iter()
+            .rev()
+            .fold(Complex::new(0.0, 0.0), |acc, a| acc * z.clone() + a.clone())
+    };
+    for w in z.iter_mut() {
+        for _ in 0..8 {
+            let dv = deval(w);
+            if dv.norm_sq() == 0.0 {
+                break;
+            }
+            let step = eval(w) / dv;
+            *w = w.clone() - step;
         }
     }
     if z.iter().any(|w| !w.re.is_finite() || !w.im.is_finite()) {
@@ -419,9 +481,9 @@ fn int_two_squares(n: u128) -> Option<Option<(Rational, Rational)>> {
     let mut factors: Vec<(u128, u32)> = Vec::new();
     let mut p: u128 = 2;
     while p <= 1 << 16 && p * p <= m {
-        if m % p == 0 {
+        if m.is_multiple_of(p) {
             let mut e = 0;
-            while m % p == 0 {
+            while m.is_multiple_of(p) {
                 m /= p;
                 e += 1;
             }
@@ -492,7 +554,7 @@ fn is_prime_u64(n: u64) -> bool {
         return false;
     }
     for p in [2u64, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37] {
-        if n % p == 0 {
+        if n.is_multiple_of(p) {
             return n == p;
         }
     }
@@ -527,7 +589,7 @@ fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
 }
 
 fn pollard_rho(n: u64) -> u64 {
-    if n % 2 == 0 {
+    if n.is_multiple_of(2) {
         return 2;
     }
     for c in 1..100u64 {
@@ -602,14 +664,23 @@ mod tests {
 
     #[test]
     fn rational_numbers() {
-        for (n, ok) in [(5, true), (3, false), (9, true), (12, false), (50, true), (21, false)] {
+        for (n, ok) in [
+            (5, true),
+            (3, false),
+            (9, true),
+            (12, false),
+            (50, true),
+            (21, false),
+        ] {
             let r = rational_two_squares(&Rational::from(n)).expect("decided");
             assert_eq!(r.is_some(), ok, "{n}");
             if let Some((x, y)) = r {
                 assert_eq!(x.clone() * x + y.clone() * y, Rational::from(n));
             }
         }
-        let r = rational_two_squares(&q(5, 9)).expect("decided").expect("sos");
+        let r = rational_two_squares(&q(5, 9))
+            .expect("decided")
+            .expect("sos");
         assert_eq!(r.0.clone() * r.0 + r.1.clone() * r.1, q(5, 9));
         // a large prime ≡ 1 mod 4
         let big = Rational::from(1_000_000_009i64 * 13);

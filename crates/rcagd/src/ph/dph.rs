@@ -64,8 +64,9 @@ impl<F: Scalar> PhPolyCurve<F> {
     /// As [`PhPolyCurve::rho`].
     pub fn dph_test(&self) -> Result<DphTest<F>, PhError> {
         let rho = self.rho()?;
-        let scale = poly_scale(&self.sigma).powi(2);
-        if poly_negligible(&rho, scale) {
+        // a line iff ρ = |r''|² − σ'² ≡ 0 (relative to |r''|² for f64)
+        let d2 = pderiv(&pderiv(&self.r));
+        if poly_negligible(&rho, poly_scale(&pdot(&d2, &d2))) {
             return Ok(DphTest::Line);
         }
         match scaled_square(&rho) {
@@ -410,4 +411,42 @@ pub fn dph_septic<F: Scalar>(
         &[beta0.clone(), beta1, beta2, beta3],
         start,
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rcagd_algebra::Rational;
+
+    fn r(p: i64, q: i64) -> Rational {
+        Rational::from(p) / Rational::from(q)
+    }
+
+    /// Regression: `w` with a real root (degenerate overlap); f64 must agree with exact.
+    #[test]
+    fn septic_with_real_root_of_w_f64_agrees() {
+        let w = [
+            cx(r(0, 1), r(1, 3)),
+            cx(r(2, 1), r(0, 1)),
+            cx(r(0, 1), r(0, 1)),
+        ];
+        let h = [r(1, 1)];
+        let roots = dph_septic_z_roots(&h, &w).unwrap();
+        let c = dph_septic(
+            &h,
+            &w,
+            &cx(r(0, 1), r(-1, 1)),
+            &cx(r(5, 1), r(0, 1)),
+            &cx(r(1, 1), r(0, 1)),
+            &roots[1],
+            [r(0, 1), r(0, 1), r(0, 1)],
+        )
+        .unwrap();
+        let pc = c.to_poly_curve();
+        let exact = pc.dph_test().unwrap();
+        let f = pc.to_f64();
+        let approx = f.dph_test().unwrap();
+        assert!(matches!(exact, DphTest::Dph(_)));
+        assert!(matches!(approx, DphTest::Dph(_)));
+    }
 }

@@ -133,6 +133,10 @@ pub struct HermiteSolution<K> {
     pub roots: Vec<HermiteRoot<K>>,
     /// Every interpolant (≤ 8), valid roots only.
     pub interpolants: Vec<HermiteInterpolant>,
+    /// `Some((16k_0², 16k_2²))` if a root has `r_3 = 16k_0k_2 − 5 = 0` with `r_1, r_2 ≥ 0`:
+    /// then `h = r_1d_s + r_2d_f` and every `φ` gives an interpolant (a one-parameter
+    /// family, not enumerated in [`Self::interpolants`]).
+    pub continuum: Option<(f64, f64)>,
 }
 
 impl<F: Scalar> HermiteData<F> {
@@ -304,6 +308,7 @@ fn solve_in<K: Scalar>(data: HermiteData<K>, m: K) -> Result<HermiteSolution<K>,
     let roots_iv = isolate_roots(&quartic);
     let mut roots = Vec::new();
     let mut interpolants = Vec::new();
+    let mut continuum = None;
     for (idx, iv) in roots_iv.into_iter().enumerate() {
         let (lo, hi, exact) = iv;
         let s_sign = sign_at_root(&quartic, &lo, &hi, &exact, &Poly::x());
@@ -326,6 +331,9 @@ fn solve_in<K: Scalar>(data: HermiteData<K>, m: K) -> Result<HermiteSolution<K>,
             r3,
             valid,
         });
+        if s_sign >= 0 && r2_sign >= 0 && r3_sign == 0 {
+            continuum = Some((s, r2));
+        }
         if !valid {
             continue;
         }
@@ -368,9 +376,19 @@ fn solve_in<K: Scalar>(data: HermiteData<K>, m: K) -> Result<HermiteSolution<K>,
         }
     }
     if interpolants.is_empty() {
+        if continuum.is_some() {
+            return Err(PhError::Degenerate(
+                "16k_0k_2 = 5 and h = 120Δp − 15(d_s + d_f) lies in span(d_s, d_f): every φ gives \
+                 an interpolant (a one-parameter family)"
+                    .into(),
+            ));
+        }
         return Err(PhError::NoRealSolution(format!(
-            "none of the {} real roots of the elimination quartic gives 16k_0² ≥ 0 and 16k_2² ≥ 0",
-            roots.len()
+            "none of the {} real roots of the elimination quartic gives 16k_0² ≥ 0, 16k_2² ≥ 0 \
+             and 16k_0k_2 ≠ 5 (roots s = 16k_0² ≈ {:?}, 16k_2² ≈ {:?})",
+            roots.len(),
+            roots.iter().map(|r| r.s).collect::<Vec<_>>(),
+            roots.iter().map(|r| r.r2).collect::<Vec<_>>()
         )));
     }
     let best = interpolants
@@ -388,6 +406,7 @@ fn solve_in<K: Scalar>(data: HermiteData<K>, m: K) -> Result<HermiteSolution<K>,
         r3_poly: l,
         roots,
         interpolants,
+        continuum,
     })
 }
 
@@ -715,6 +734,34 @@ type RootIv<K> = (K, K, Option<K>);
 /// Isolating intervals `(lo, hi]` of the distinct real roots of `p`, sorted, with the
 /// exact root when a split point hit it (or a nearby simple rational is a root).
 fn isolate_roots<K: Scalar>(p: &Poly<K>) -> Vec<RootIv<K>> {
+    if !K::EXACT {
+        // f64: isolate the roots of the (exactly converted) coefficients with exact
+        // Sturm sequences, so that round-off cannot invent or lose roots
+        let Some(coeffs) = p
+            .coeffs()
+            .iter()
+            .map(|c| c.to_rational())
+            .collect::<Option<Vec<Rational>>>()
+        else {
+            return Vec::new();
+        };
+        return isolate_roots(&Poly::new(coeffs))
+            .into_iter()
+            .map(|(lo, hi, ex)| {
+                let (lo, hi) = refine(
+                    &Poly::new(p.coeffs().iter().filter_map(|c| c.to_rational()).collect()),
+                    lo,
+                    hi,
+                    &ex,
+                );
+                (
+                    K::from_rational(&lo),
+                    K::from_rational(&hi),
+                    ex.map(|x| K::from_rational(&x)),
+                )
+            })
+            .collect();
+    }
     let sf = square_free(p);
     let Some(deg) = sf.degree() else {
         return Vec::new();
@@ -993,4 +1040,52 @@ pub fn seed_xi_quartic<F: Scalar>(data: &HermiteData<F>) -> Result<[f64; 5], PhE
         - 20.0 * b(&ds, &df, &v) * b(&ds, &df, &hp);
     let d0 = b(&h, &df, &u) * b(&ds, &h, &u) - b(&ds, &df, &hp).powi(2);
     Ok([d0, d1, d2, d3, d4])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn r(p: i64, q: i64) -> Rational {
+        Rational::from(p) / Rational::from(q)
+    }
+
+    /// Regression: data of a helical quintic with `16k_0k_2 = 5` (a double root of `Q`).
+    #[test]
+    fn double_root_continuum() {
+        let a0 = Quaternion::new(r(-5, 3), r(-3, 2), r(-5, 2), r(1, 2));
+        let a2 = Quaternion::new(r(-2, 1), r(0, 1), r(5, 2), r(0, 1));
+        let a1 = qadd(&qscale(&a0, &r(-1, 1)), &qscale(&a2, &r(-2, 1)));
+        let curve = PhCurve::new(vec![a0, a1, a2], [r(0, 1), r(0, 1), r(0, 1)]).unwrap();
+        let pts = curve.control_points();
+        let five = r(5, 1);
+        let d_s = scale3(&sub3(&pts[1], &pts[0]), &five);
+        let d_f = scale3(&sub3(&pts[5], &pts[4]), &five);
+        let data = HermiteData::new(pts[0].clone(), d_s, pts[5].clone(), d_f);
+        let dq = data.map(|x| QuadExt::rational(x.clone()));
+        let m2 = dot3(&dq.d_s, &dq.d_s) * dot3(&dq.d_f, &dq.d_f);
+        let m = sqrt_in_extension(&m2.to_rational().unwrap()).unwrap();
+        let ds = dq.d_s.clone();
+        let df = dq.d_f.clone();
+        let h = dq.h();
+        let nds = dot3(&ds, &ds);
+        let g = dot3(&ds, &df);
+        let a1 = nds.clone() * (m.clone() - g.clone());
+        let a2 = m.clone() * (g.clone() - m.clone());
+        let c = m.clone() * dot3(&ds, &h) - nds.clone() * dot3(&df, &h);
+        eprintln!(
+            "m = {m}, e0 = {}, e1 = {}",
+            c.clone() / a2.clone(),
+            -(a1.clone() / a2.clone())
+        );
+        match solve_in(dq.clone(), m.clone()) {
+            Ok(s) => {
+                eprintln!("quartic {:?}", s.quartic.map(|x| x.to_f64()));
+                for rt in &s.roots {
+                    eprintln!("{} {} {} {}", rt.s, rt.r2, rt.r3, rt.valid);
+                }
+            }
+            Err(e) => eprintln!("{e}"),
+        }
+    }
 }

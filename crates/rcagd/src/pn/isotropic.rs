@@ -159,7 +159,7 @@ impl<F: Scalar> IsotropicSurface<F> {
     }
 
     /// The graph `F = p·S/(S − 1)` (NOTES-004 A4.2): its PN surface is the paraboloid of
-    /// revolution `x₃ = −(x₁² + x₂²)/(2p)` (checked in the tests), with rational offsets.
+    /// revolution `x₃ = (x₁² + x₂²)/(2p)` (checked in the tests), with rational offsets.
     pub fn paraboloid(p: F) -> Self {
         let (u, v) = (var::<F>(0), var::<F>(1));
         let s = &(&u * &u) + &(&v * &v);
@@ -291,6 +291,16 @@ impl<F: Scalar> IsotropicSurface<F> {
     }
 }
 
+impl<F: Scalar> PartialEq for IsotropicSurface<F> {
+    fn eq(&self, other: &Self) -> bool {
+        self.a == other.a
+            && self.b == other.b
+            && self.c == other.c
+            && self.g == other.g
+            && self.d == other.d
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -335,15 +345,5 @@ mod tests {
             IsotropicSurface::new(u.clone(), u.clone(), int(1), var(1), int(1)).expect("valid");
         assert!(matches!(iso.to_pn_surface(), Err(PnError::Developable(_))));
         assert!(IsotropicSurface::new(u.clone(), u, MPoly::zero(2), int(1), int(1)).is_err());
-    }
-}
-
-impl<F: Scalar> PartialEq for IsotropicSurface<F> {
-    fn eq(&self, other: &Self) -> bool {
-        self.a == other.a
-            && self.b == other.b
-            && self.c == other.c
-            && self.g == other.g
-            && self.d == other.d
     }
 }

@@ -556,88 +556,6 @@ pub(crate) fn identity_cert<F: Scalar>(
     zero_cert(property, &(lhs - rhs), scale)
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use rcagd_algebra::Rational;
-
-    type Q = Rational;
-
-    fn q(p: i64, d: i64) -> Q {
-        Q::from_ratio(p, d)
-    }
-
-    fn u() -> MPoly<Q> {
-        var(0)
-    }
-    fn v() -> MPoly<Q> {
-        var(1)
-    }
-
-    #[test]
-    fn exact_division() {
-        let a = &(&u() * &u()) + &(&v() * &v()) + int(1);
-        let b = &(&u() * &v()) - &int(3);
-        let p = &a * &b;
-        assert_eq!(div_exact(&p, &a), Some(b.clone()));
-        assert_eq!(div_exact(&p, &b), Some(a.clone()));
-        assert_eq!(div_exact(&(&p + &int(1)), &a), None);
-        assert_eq!(div_exact(&p, &MPoly::zero(2)), None);
-        let mut polys = vec![&p * &b, &a * &(&b * &b), &b * &b];
-        assert_eq!(cancel_common(&mut polys, &[b.clone(), a.clone()]), 2);
-        assert_eq!(polys[2], int(1));
-        // f64 division with rounding noise
-        let pf = p.map(|c| Scalar::to_f64(c));
-        let af = a.map(|c| Scalar::to_f64(c));
-        let qf = div_exact(&pf, &af).expect("divisible");
-        assert!((qf.coeff(&[1, 1]) - 1.0).abs() < 1e-12);
-    }
-
-    #[test]
-    fn content_and_composition() {
-        let mut polys = vec![u().scale(&q(4, 6)), v().scale(&q(-2, 9))];
-        normalize_content(&mut polys);
-        assert_eq!(polys[0], u().scale(&q(3, 1)));
-        assert_eq!(polys[1], v().scale(&q(-1, 1)));
-        let p = &(&u() * &u()) - &v();
-        let c = compose(&p, &[&v() + &int(1), u()]);
-        assert_eq!(
-            c,
-            &(&(&v() * &v()) + &v().scale(&q(2, 1))) + &(&int(1) - &u())
-        );
-    }
-
-    #[test]
-    fn bernstein_patch_and_signs() {
-        // W = u² + v² + 1 on [−1, 2] × [0, 3]: positive
-        let w = &(&(&u() * &u()) + &(&v() * &v())) + &int(1);
-        let d = Domain::new(q(-1, 1), q(2, 1), q(0, 1), q(3, 1)).expect("rect");
-        assert_eq!(sign_on_domain(&w, &d, 64), Sign::Positive);
-        assert_eq!(sign_on_domain(&(-w.clone()), &d, 64), Sign::Negative);
-        // u − v vanishes on the diagonal
-        let l = &u() - &v();
-        assert!(matches!(
-            sign_on_domain(&l, &d, 64),
-            Sign::ZeroAt(_) | Sign::SignChange(..)
-        ));
-        // u² − 1/4 − v² · 0: zero inside
-        let z = &(&u() * &u()) - &cst(q(1, 4));
-        assert!(matches!(
-            sign_on_domain(&z, &Domain::unit(), 64),
-            Sign::SignChange(..) | Sign::ZeroAt(_)
-        ));
-        // the patch reproduces the map
-        let x = &(&u() * &v()) + &int(2);
-        let patch = patch_of(&[w.clone(), x.clone()], &d).expect("patch");
-        let p = patch.eval(&q(1, 3), &q(1, 2)).expect("finite");
-        let (uu, vv) = (q(-1, 1) + q(1, 1), q(3, 2));
-        let want =
-            (uu.clone() * vv.clone() + q(2, 1)) / (uu.clone() * uu + vv.clone() * vv + q(1, 1));
-        assert_eq!(p[0], want);
-        assert!(Domain::new(q(1, 1), q(0, 1), q(0, 1), q(1, 1)).is_err());
-    }
-}
-
 impl<F: Scalar> PartialEq for RatFn<F> {
     fn eq(&self, other: &Self) -> bool {
         self.num == other.num && self.den == other.den
@@ -728,12 +646,98 @@ pub(crate) fn rational_two_squares<F: Scalar>(c: &F) -> Option<(F, F)> {
         for yy in [y - 1, y, y + 1] {
             if yy >= 0 && yy * yy == rest {
                 // (x/d)² + (yy/d)² = nd/d² = n/d
-                let a = F::from_rational(&(rcagd_algebra::Rational::from(x) / rcagd_algebra::Rational::from(d)));
-                let b = F::from_rational(&(rcagd_algebra::Rational::from(yy) / rcagd_algebra::Rational::from(d)));
+                let a = F::from_rational(
+                    &(rcagd_algebra::Rational::from(x) / rcagd_algebra::Rational::from(d)),
+                );
+                let b = F::from_rational(
+                    &(rcagd_algebra::Rational::from(yy) / rcagd_algebra::Rational::from(d)),
+                );
                 return Some((a, b));
             }
         }
         x += 1;
     }
     None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rcagd_algebra::Rational;
+
+    type Q = Rational;
+
+    fn q(p: i64, d: i64) -> Q {
+        Q::from_ratio(p, d)
+    }
+
+    fn u() -> MPoly<Q> {
+        var(0)
+    }
+    fn v() -> MPoly<Q> {
+        var(1)
+    }
+
+    #[test]
+    fn exact_division() {
+        let a = &(&u() * &u()) + &(&v() * &v()) + int(1);
+        let b = &(&u() * &v()) - &int(3);
+        let p = &a * &b;
+        assert_eq!(div_exact(&p, &a), Some(b.clone()));
+        assert_eq!(div_exact(&p, &b), Some(a.clone()));
+        assert_eq!(div_exact(&(&p + &int(1)), &a), None);
+        assert_eq!(div_exact(&p, &MPoly::zero(2)), None);
+        let mut polys = vec![&p * &b, &a * &(&b * &b), &b * &b];
+        assert_eq!(cancel_common(&mut polys, &[b.clone(), a.clone()]), 2);
+        assert_eq!(polys[2], int(1));
+        // f64 division with rounding noise
+        let pf = p.map(Scalar::to_f64);
+        let af = a.map(Scalar::to_f64);
+        let qf = div_exact(&pf, &af).expect("divisible");
+        assert!((qf.coeff(&[1, 1]) - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn content_and_composition() {
+        let mut polys = vec![u().scale(&q(4, 6)), v().scale(&q(-2, 9))];
+        normalize_content(&mut polys);
+        assert_eq!(polys[0], u().scale(&q(3, 1)));
+        assert_eq!(polys[1], v().scale(&q(-1, 1)));
+        let p = &(&u() * &u()) - &v();
+        let c = compose(&p, &[&v() + &int(1), u()]);
+        assert_eq!(
+            c,
+            &(&(&v() * &v()) + &v().scale(&q(2, 1))) + &(&int(1) - &u())
+        );
+    }
+
+    #[test]
+    fn bernstein_patch_and_signs() {
+        // W = u² + v² + 1 on [−1, 2] × [0, 3]: positive
+        let w = &(&(&u() * &u()) + &(&v() * &v())) + &int(1);
+        let d = Domain::new(q(-1, 1), q(2, 1), q(0, 1), q(3, 1)).expect("rect");
+        assert_eq!(sign_on_domain(&w, &d, 64), Sign::Positive);
+        assert_eq!(sign_on_domain(&(-w.clone()), &d, 64), Sign::Negative);
+        // u − v vanishes on the diagonal
+        let l = &u() - &v();
+        assert!(matches!(
+            sign_on_domain(&l, &d, 64),
+            Sign::ZeroAt(_) | Sign::SignChange(..)
+        ));
+        // u² − 1/4 − v² · 0: zero inside
+        let z = &(&u() * &u()) - &cst(q(1, 4));
+        assert!(matches!(
+            sign_on_domain(&z, &Domain::unit(), 64),
+            Sign::SignChange(..) | Sign::ZeroAt(_)
+        ));
+        // the patch reproduces the map
+        let x = &(&u() * &v()) + &int(2);
+        let patch = patch_of(&[w.clone(), x.clone()], &d).expect("patch");
+        let p = patch.eval(&q(1, 3), &q(1, 2)).expect("finite");
+        let (uu, vv) = (q(-1, 1) + q(1, 1), q(3, 2));
+        let want =
+            (uu.clone() * vv.clone() + q(2, 1)) / (uu.clone() * uu + vv.clone() * vv + q(1, 1));
+        assert_eq!(p[0], want);
+        assert!(Domain::new(q(1, 1), q(0, 1), q(0, 1), q(1, 1)).is_err());
+    }
 }

@@ -1,1 +1,676 @@
+//! Envelopes of rational families of cones of revolution (seed 004 §4.5, Theorem 4.5,
+//! (4.5)–(4.19); NOTES-004 A4.4) and what the seed derives from them: non-developable
+//! rational ruled surfaces and their offsets (Cor. 4.2), canal surfaces with rational spine
+//! and radius (Cor. 4.3), the ellipsoid and its offsets (Theorem 4.6, §4.7; NOTES-004
+//! A4.6), surfaces of revolution with a PH profile; and the offsets of ruled 2-manifolds
+//! in `Rⁿ` (Theorem 5.2, [`RuledManifold`]).
+//!
+//! **Theorem 4.5.** Two rational cycle families `c_i(t) = (m_i; r_i)(t)` span cones of
+//! revolution `Δ(t)` (their common oriented tangent planes). In `I³` the cycles are
+//! isotropic spheres (4.5); their intersection projects to the circle `d'(t)` (4.6) with
+//! centre `n = −(M₁, M₂)/β` (4.7) and `ρ² = (|M|² − R²)/β²` (4.8), `M = m₁ − m₂`,
+//! `R = r₁ − r₂`, `β = R + M₃`. Given `p₁² + p₂² = |M|² − R²`, the point
+//! `f = (p₁ − M₁, p₂ − M₂)/β` (4.18) lies on `d'(t)`; reflecting it in the diameters with
+//! normals `c(u) = (u, 1)` gives `(y₁, y₂)(t, u) = f + 2((n − f)·c/(c·c)) c` (4.11) and
+//! (4.12) gives `y₃`. `Λ⁻¹` of this isotropic surface is the envelope, a PN surface. For
+//! `β ≡ 0` the circle is the line `M₁y₁ + M₂y₂ = M₃`, parametrized linearly.
+//!
+//! **Rationality caveat (NOTES-004 §0).** `p₁, p₂` are rational only if `|M|² − R²` is a
+//! sum of two squares over `Q(t)`. They can be given; otherwise they are found when
+//! `M_k² ≡ R²` for some `k`, when `|M|² − R²` is a square, or a rational sum of two
+//! squares times a square ([`find_two_squares`]); else [`PnError::NoRationalPoint`].
 
+use super::isotropic::IsotropicSurface;
+use super::poly::{
+    cancel_common, cross3, dot3, identity_cert, int, mag, normalize_content, pad_eval,
+    rational_two_squares, univariate_sqrt, var, zero_cert, RatFn,
+};
+use super::surface::PnSurface;
+use super::PnError;
+use crate::error::format_scalar;
+use crate::laguerre::Cycle;
+use crate::Certified;
+use rcagd_algebra::mpoly::MPoly;
+use rcagd_algebra::{Certificate, Scalar};
+
+/// `true` if the polynomial involves only the variable `x₀` (`t`).
+fn only_t<F: Scalar>(p: &MPoly<F>) -> bool {
+    p.terms().all(|(e, _)| e.iter().skip(1).all(|&k| k == 0))
+}
+
+/// A rational one-parameter family of cycles `(m(t); r(t)) = (M(t); R(t))/w(t)` (seed §4.5:
+/// centre and radius rational in the same parameter `t`, the variable `x₀`).
+#[derive(Debug, Clone)]
+pub struct CycleFamily<F> {
+    center: [MPoly<F>; 3],
+    radius: MPoly<F>,
+    den: MPoly<F>,
+}
+
+impl<F: Scalar> CycleFamily<F> {
+    /// The family `(M(t); R(t))/w(t)` with polynomials in `t`.
+    ///
+    /// # Errors
+    /// [`PnError::InvalidInput`] if `w ≡ 0` or a polynomial involves another variable.
+    pub fn new(center: [MPoly<F>; 3], radius: MPoly<F>, den: MPoly<F>) -> Result<Self, PnError> {
+        if den.is_zero() {
+            return Err(PnError::InvalidInput(
+                "a cycle family needs a non-zero denominator w(t)".into(),
+            ));
+        }
+        if !center.iter().chain([&radius, &den]).all(only_t) {
+            return Err(PnError::InvalidInput(
+                "a cycle family must depend on the single parameter t (variable 0)".into(),
+            ));
+        }
+        Ok(CycleFamily {
+            center,
+            radius,
+            den,
+        })
+    }
+
+    /// The family with rational centre coordinates and radius (brought to one denominator).
+    ///
+    /// # Errors
+    /// As [`Self::new`].
+    pub fn from_rational(center: [RatFn<F>; 3], radius: RatFn<F>) -> Result<Self, PnError> {
+        let fns = [
+            center[0].clone(),
+            center[1].clone(),
+            center[2].clone(),
+            radius,
+        ];
+        let den = fns.iter().fold(int::<F>(1), |acc, f| &acc * &f.den);
+        let mut polys: Vec<MPoly<F>> = fns
+            .iter()
+            .map(|f| {
+                let mut p = f.num.clone();
+                for g in fns.iter() {
+                    if !std::ptr::eq(g, f) {
+                        p = &p * &g.den;
+                    }
+                }
+                p
+            })
+            .collect();
+        polys.push(den);
+        let cands: Vec<MPoly<F>> = fns.iter().map(|f| f.den.clone()).collect();
+        cancel_common(&mut polys, &cands);
+        normalize_content(&mut polys);
+        let w = polys.pop().unwrap_or_else(|| int(1));
+        let r = polys.pop().unwrap_or_else(|| MPoly::zero(2));
+        Self::new([polys[0].clone(), polys[1].clone(), polys[2].clone()], r, w)
+    }
+
+    /// The family of points `(l(t); 0)`.
+    ///
+    /// # Errors
+    /// As [`Self::from_rational`].
+    pub fn points(l: [RatFn<F>; 3]) -> Result<Self, PnError> {
+        Self::from_rational(l, RatFn::constant(F::zero()))
+    }
+
+    /// `c + ċ`: the family `(m + ṁ; r + ṙ)` (Cor. 4.3: the cones `c ∨ (c + ċ)` are tangent
+    /// to the canal surface of `c`).
+    pub fn plus_derivative(&self) -> Self {
+        // (X/w)' = (X'w − Xw')/w², so X/w + (X/w)' = (Xw + X'w − Xw')/w²
+        let w = &self.den;
+        let dw = w.partial(0);
+        let f = |x: &MPoly<F>| &(&(x * w) + &(&x.partial(0) * w)) - &(x * &dw);
+        let mut polys = vec![
+            f(&self.center[0]),
+            f(&self.center[1]),
+            f(&self.center[2]),
+            f(&self.radius),
+            w * w,
+        ];
+        cancel_common(&mut polys, &[w.clone()]);
+        let den = polys.pop().unwrap_or_else(|| int(1));
+        let r = polys.pop().unwrap_or_else(|| MPoly::zero(2));
+        CycleFamily {
+            center: [polys[0].clone(), polys[1].clone(), polys[2].clone()],
+            radius: r,
+            den,
+        }
+    }
+
+    /// The numerators `(M₁, M₂, M₃, R)` and the denominator `w`.
+    pub fn parts(&self) -> ([&MPoly<F>; 3], &MPoly<F>, &MPoly<F>) {
+        (
+            [&self.center[0], &self.center[1], &self.center[2]],
+            &self.radius,
+            &self.den,
+        )
+    }
+
+    /// The cycle at `t` (`None` where `w(t) = 0`).
+    pub fn eval(&self, t: &F) -> Option<Cycle<F>> {
+        let x = [t.clone()];
+        let inv = pad_eval(&self.den, &x)?.inv()?;
+        let e = |p: &MPoly<F>| pad_eval(p, &x).map(|v| v * inv.clone());
+        Some(Cycle {
+            center: [
+                e(&self.center[0])?,
+                e(&self.center[1])?,
+                e(&self.center[2])?,
+            ],
+            radius: e(&self.radius)?,
+        })
+    }
+}
+
+/// Rational functions `p₁, p₂` of `t` with `p₁² + p₂² = P` for a polynomial `P(t)`, when
+/// `P` is a square or a rational sum of two squares times a square (module docs).
+pub fn find_two_squares<F: Scalar>(p: &MPoly<F>) -> Option<[RatFn<F>; 2]> {
+    if let Some(s) = univariate_sqrt(p) {
+        return Some([RatFn::poly(s), RatFn::poly(MPoly::zero(2))]);
+    }
+    let (_, lc) = p.terms().last()?;
+    let lc = lc.clone();
+    let monic = p.scale(&(F::one() / lc.clone()));
+    let s = univariate_sqrt(&monic)?;
+    let (a, b) = rational_two_squares(&lc)?;
+    Some([RatFn::poly(s.scale(&a)), RatFn::poly(s.scale(&b))])
+}
+
+/// The envelope of the cones of revolution spanned by two rational cycle families
+/// (Theorem 4.5), as a PN surface in the parameters `(t, u)`.
+#[derive(Debug, Clone)]
+pub struct ConeFamilyEnvelope<F> {
+    c1: CycleFamily<F>,
+    c2: CycleFamily<F>,
+    m: [MPoly<F>; 3],
+    r: MPoly<F>,
+    md: MPoly<F>,
+    p: [RatFn<F>; 2],
+    isotropic: IsotropicSurface<F>,
+    surface: PnSurface<F>,
+}
+
+impl<F: Scalar> ConeFamilyEnvelope<F> {
+    /// The envelope of the cones `c₁(t) ∨ c₂(t)`; `p = (p₁, p₂)` with
+    /// `p₁² + p₂² = |m₁ − m₂|² − (r₁ − r₂)²` (rational in `t`), or `None` to search for it.
+    ///
+    /// # Errors
+    /// [`PnError::NoRationalPoint`] if `p` is not given and not found;
+    /// [`PnError::InvalidInput`] if the given `p` violates the identity or the families
+    /// coincide; [`PnError::Developable`] if the envelope is developable (e.g. a
+    /// developable ruled surface, whose offsets are pipe surfaces).
+    pub fn new(
+        c1: CycleFamily<F>,
+        c2: CycleFamily<F>,
+        p: Option<[RatFn<F>; 2]>,
+    ) -> Result<Self, PnError> {
+        let (w1, w2) = (&c1.den, &c2.den);
+        let m: [MPoly<F>; 3] =
+            std::array::from_fn(|i| &(&c1.center[i] * w2) - &(&c2.center[i] * w1));
+        let r = &(&c1.radius * w2) - &(&c2.radius * w1);
+        let md = w1 * w2;
+        let mm = &dot3(&m, &m) - &(&r * &r);
+        if m.iter().all(|x| x.is_zero()) && r.is_zero() {
+            return Err(PnError::InvalidInput(
+                "the two cycle families coincide: they span no cone".into(),
+            ));
+        }
+        let beta = &r + &m[2];
+        let p = match p {
+            Some(p) => {
+                // (pn₁² + pn₂²)·md² ≡ (|M|² − R²)·pd₁²pd₂²   (p_i = pn_i/pd_i)
+                let lhs = &(&(&(&p[0].num * &p[0].num) * &(&p[1].den * &p[1].den))
+                    + &(&(&p[1].num * &p[1].num) * &(&p[0].den * &p[0].den)))
+                    * &(&md * &md);
+                let rhs = &mm * &(&(&p[0].den * &p[0].den) * &(&p[1].den * &p[1].den));
+                let c = identity_cert("p₁² + p₂² = |M|² − R²", &lhs, &rhs);
+                if !c.holds {
+                    return Err(PnError::InvalidInput(format!(
+                        "the given (p₁, p₂) do not satisfy p₁² + p₂² = |m₁ − m₂|² − (r₁ − r₂)²: {}",
+                        c.residual.unwrap_or_default()
+                    )));
+                }
+                p
+            }
+            None => {
+                // |M|² − R² = M_i² + M_j² when M_k² ≡ R² for the third index k
+                let pair = (0..3).rev().find_map(|k| {
+                    (&(&m[k] * &m[k]) - &(&r * &r)).is_zero().then(|| {
+                        let o: Vec<usize> = (0..3).filter(|&i| i != k).collect();
+                        [RatFn::poly(m[o[0]].clone()), RatFn::poly(m[o[1]].clone())]
+                    })
+                });
+                let found = pair.or_else(|| find_two_squares(&mm));
+                let [a, b] = found.ok_or_else(|| {
+                    PnError::NoRationalPoint(
+                        "|m₁ − m₂|² − (r₁ − r₂)² is not a recognizable sum of two squares over Q(t); pass (p₁, p₂) explicitly (NOTES-004 §0)".into(),
+                    )
+                })?;
+                // the found values are for the numerators M, R: divide by md
+                [
+                    RatFn {
+                        num: a.num,
+                        den: &a.den * &md,
+                    },
+                    RatFn {
+                        num: b.num,
+                        den: &b.den * &md,
+                    },
+                ]
+            }
+        };
+        let u = var::<F>(1);
+        let u2p1 = &(&u * &u) + &int(1);
+        let (a, b, c) = if beta.is_zero() {
+            // the line M₁y₁ + M₂y₂ = M₃
+            let c = &(&m[0] * &m[0]) + &(&m[1] * &m[1]);
+            if c.is_zero() {
+                return Err(PnError::InvalidInput(
+                    "M₁ ≡ M₂ ≡ 0 and R + M₃ ≡ 0: the cones degenerate".into(),
+                ));
+            }
+            (
+                &(&m[2] * &m[0]) - &(&u * &m[1]),
+                &(&m[2] * &m[1]) + &(&u * &m[0]),
+                c,
+            )
+        } else {
+            // A = (pn₁·Md − M₁·pd)(u²+1) − 2u·Md(pn₁u + pn₂) etc. with a common pd
+            let pd = &p[0].den * &p[1].den;
+            let pn1 = &p[0].num * &p[1].den;
+            let pn2 = &p[1].num * &p[0].den;
+            let lin = &(&(&pn1 * &u) + &pn2) * &md;
+            let two = F::from_i64(2);
+            (
+                &(&(&(&pn1 * &md) - &(&m[0] * &pd)) * &u2p1) - &(&u * &lin).scale(&two),
+                &(&(&(&pn2 * &md) - &(&m[1] * &pd)) * &u2p1) - &lin.scale(&two),
+                &(&pd * &beta) * &u2p1,
+            )
+        };
+        // (4.12) with the first family: y₃ = G/D
+        let (m1, r1, w1) = (&c1.center, &c1.radius, &c1.den);
+        let aa = &a * &a;
+        let bb = &b * &b;
+        let cc = &c * &c;
+        let two = F::from_i64(2);
+        let g = -(&(&(r1 * &(&(&aa + &bb) + &cc)) + &(&m1[2] * &(&(&aa + &bb) - &cc)))
+            + &(&(&(&m1[0] * &a) + &(&m1[1] * &b)) * &c).scale(&two));
+        let d = (w1 * &cc).scale(&two);
+        let mut parts = vec![a, b, c.clone(), g, d];
+        // common factors of (A, B, C) and of (G, D) separately
+        let mut abc = parts[..3].to_vec();
+        let cands = vec![u2p1.clone(), beta.clone(), md.clone()];
+        cancel_common(&mut abc, &cands);
+        normalize_content(&mut abc);
+        let mut gd = parts[3..].to_vec();
+        cancel_common(&mut gd, &[c.clone(), w1.clone()]);
+        parts = abc.into_iter().chain(gd).collect();
+        let isotropic = IsotropicSurface::new(
+            parts[0].clone(),
+            parts[1].clone(),
+            parts[2].clone(),
+            parts[3].clone(),
+            parts[4].clone(),
+        )?
+        .named("cone-family envelope (Theorem 4.5)");
+        let mut extra = cands;
+        extra.extend([w1.clone(), w2.clone()]);
+        let surface = isotropic.to_pn_surface_with(&extra)?;
+        Ok(ConeFamilyEnvelope {
+            c1,
+            c2,
+            m,
+            r,
+            md,
+            p,
+            isotropic,
+            surface,
+        })
+    }
+
+    /// The envelope as a PN surface in `(t, u)`.
+    pub fn surface(&self) -> &PnSurface<F> {
+        &self.surface
+    }
+
+    /// The isotropic surface `y(t, u)` (4.11)/(4.12).
+    pub fn isotropic(&self) -> &IsotropicSurface<F> {
+        &self.isotropic
+    }
+
+    /// `(p₁, p₂)` with `p₁² + p₂² = |M|² − R²`.
+    pub fn p(&self) -> &[RatFn<F>; 2] {
+        &self.p
+    }
+
+    /// `M = m₁ − m₂` and `R = r₁ − r₂` as numerators over the common denominator
+    /// `w₁w₂`: `(M₁, M₂, M₃, R, w₁w₂)`.
+    pub fn m_r(&self) -> [&MPoly<F>; 5] {
+        [&self.m[0], &self.m[1], &self.m[2], &self.r, &self.md]
+    }
+
+    /// The two cycle families.
+    pub fn families(&self) -> (&CycleFamily<F>, &CycleFamily<F>) {
+        (&self.c1, &self.c2)
+    }
+
+    /// The certificates that the tangent planes touch both cycle families:
+    /// `h + n·m_i + r_i ≡ 0`, i.e. `H N₀ w_i + L (N·M_i + N₀ R_i) ≡ 0`.
+    pub fn tangency_certificates(&self) -> Vec<Certificate> {
+        let h = self.surface.support();
+        let n = self.surface.normal_polys();
+        [(&self.c1, "c₁"), (&self.c2, "c₂")]
+            .into_iter()
+            .map(|(c, name)| {
+                let lhs = &(&h.num * &n[0]) * &c.den;
+                let rhs = -(&h.den * &(&dot3(&n[1..], &c.center) + &(&n[0] * &c.radius)));
+                identity_cert(
+                    &format!("every tangent plane touches the cycle family {name}: e0 + n·m + r ≡ 0 (seed (3.3))"),
+                    &lhs,
+                    &rhs,
+                )
+            })
+            .collect()
+    }
+}
+
+impl<F: Scalar> Certified for ConeFamilyEnvelope<F> {
+    /// The PN identities and the tangency to both cycle families (Theorem 4.5).
+    fn certify(&self) -> Vec<Certificate> {
+        let mut out = self.surface.certify();
+        out.extend(self.tangency_certificates());
+        out
+    }
+}
+
+/// A non-developable rational ruled surface `x = l(t) + v g(t)` with its PN
+/// parametrization (Cor. 4.2: Theorem 4.5 with the point families `(l; 0)`, `(l + g; 0)`).
+#[derive(Debug, Clone)]
+pub struct RuledPn<F> {
+    l: [RatFn<F>; 3],
+    g: [RatFn<F>; 3],
+    envelope: ConeFamilyEnvelope<F>,
+}
+
+impl<F: Scalar> RuledPn<F> {
+    /// The PN parametrization of the ruled surface `l(t) + v g(t)`; `p` with
+    /// `p₁² + p₂² = |g|²` or `None` to search (found at least when some `g_k ≡ 0`, or `|g|²`
+    /// is a (rational multiple of a) square).
+    ///
+    /// # Errors
+    /// As [`ConeFamilyEnvelope::new`]; [`PnError::Developable`] for a developable ruled
+    /// surface (its offsets are pipe surfaces around the edge of regression, seed §4.5).
+    pub fn new(
+        l: [RatFn<F>; 3],
+        g: [RatFn<F>; 3],
+        p: Option<[RatFn<F>; 2]>,
+    ) -> Result<Self, PnError> {
+        let lg: [RatFn<F>; 3] = std::array::from_fn(|i| l[i].add(&g[i]));
+        let c1 = CycleFamily::points(l.clone())?;
+        let c2 = CycleFamily::points(lg)?;
+        let envelope = ConeFamilyEnvelope::new(c1, c2, p).map_err(|e| match e {
+            PnError::Developable(s) => PnError::Developable(format!(
+                "the ruled surface is developable ({s}); its offsets are pipe surfaces of the edge of regression (seed §4.5)"
+            )),
+            e => e,
+        })?;
+        Ok(RuledPn { l, g, envelope })
+    }
+
+    /// The PN surface (parameters `(t, u)`; the `u`-curves are the rulings).
+    pub fn surface(&self) -> &PnSurface<F> {
+        self.envelope.surface()
+    }
+
+    /// The cone-family envelope behind it.
+    pub fn envelope(&self) -> &ConeFamilyEnvelope<F> {
+        &self.envelope
+    }
+
+    /// The certificate that every point lies on its ruling: `(x − l(t)) × g(t) ≡ 0`.
+    pub fn on_ruling_certificates(&self) -> Vec<Certificate> {
+        let x = self.surface().point_polys();
+        // x − l = (X·ld − ln·W)/(W·ld) per component; g = gn/gd
+        let d: [MPoly<F>; 3] = std::array::from_fn(|i| {
+            let l = &self.l[i];
+            let other: MPoly<F> = (0..3)
+                .filter(|&k| k != i)
+                .fold(int(1), |acc, k| &acc * &self.l[k].den);
+            &(&(&x[i + 1] * &l.den) - &(&l.num * &x[0])) * &other
+        });
+        let gg: [MPoly<F>; 3] = std::array::from_fn(|i| {
+            let other: MPoly<F> = (0..3)
+                .filter(|&k| k != i)
+                .fold(int(1), |acc, k| &acc * &self.g[k].den);
+            &self.g[i].num * &other
+        });
+        cross3(&d, &gg)
+            .iter()
+            .enumerate()
+            .map(|(k, c)| {
+                zero_cert(
+                    &format!("point on its ruling: (x − l) × g ≡ 0 (component {k})"),
+                    c,
+                    1e3 * mag(c),
+                )
+            })
+            .collect()
+    }
+}
+
+impl<F: Scalar> Certified for RuledPn<F> {
+    /// PN identities, tangency, and every point on its ruling.
+    fn certify(&self) -> Vec<Certificate> {
+        let mut out = self.envelope.certify();
+        out.extend(self.on_ruling_certificates());
+        out
+    }
+}
+
+/// A canal surface with rational spine `m(t)` and rational radius `r(t)` as a PN surface
+/// (Cor. 4.3: Theorem 4.5 with `c` and `c + ċ`); real where `|ṁ|² ≥ ṙ²`.
+#[derive(Debug, Clone)]
+pub struct CanalPn<F> {
+    family: CycleFamily<F>,
+    envelope: ConeFamilyEnvelope<F>,
+}
+
+impl<F: Scalar> CanalPn<F> {
+    /// The canal surface of the cycle family `(m; r)(t)`; `p` with
+    /// `p₁² + p₂² = |ṁ|² − ṙ²` (or `None` to search).
+    ///
+    /// # Errors
+    /// As [`ConeFamilyEnvelope::new`].
+    pub fn new(family: CycleFamily<F>, p: Option<[RatFn<F>; 2]>) -> Result<Self, PnError> {
+        let c2 = family.plus_derivative();
+        let envelope = ConeFamilyEnvelope::new(family.clone(), c2, p)?;
+        Ok(CanalPn { family, envelope })
+    }
+
+    /// The PN surface.
+    pub fn surface(&self) -> &PnSurface<F> {
+        self.envelope.surface()
+    }
+
+    /// The cone-family envelope behind it.
+    pub fn envelope(&self) -> &ConeFamilyEnvelope<F> {
+        &self.envelope
+    }
+
+    /// The certificate `x ≡ m + r n` (the contact point of the tangent plane with the
+    /// sphere `c(t)`; so `|x − m| = |r|`): `X N₀ w − W (M N₀ + R N) ≡ 0`.
+    pub fn on_spheres_certificates(&self) -> Vec<Certificate> {
+        let x = self.surface().point_polys();
+        let n = self.surface().normal_polys();
+        let (m, r, w) = (&self.family.center, &self.family.radius, &self.family.den);
+        (0..3)
+            .map(|i| {
+                let lhs = &(&x[i + 1] * &n[0]) * w;
+                let rhs = &x[0] * &(&(&m[i] * &n[0]) + &(r * &n[i + 1]));
+                identity_cert(
+                    &format!("canal surface: x ≡ m + r n (component {i}, so |x − m| = |r|)"),
+                    &lhs,
+                    &rhs,
+                )
+            })
+            .collect()
+    }
+}
+
+impl<F: Scalar> Certified for CanalPn<F> {
+    /// PN identities, tangency and `x ≡ m + r n`.
+    fn certify(&self) -> Vec<Certificate> {
+        let mut out = self.envelope.certify();
+        out.extend(self.on_spheres_certificates());
+        out
+    }
+}
+
+/// The ellipsoid `x₁²/a² + x₂²/b² + x₃²/c² = 1` (`a ≥ b ≥ c > 0`, `a > c`) as a PN surface
+/// in the frame of seed §4.7 (origin at the centre, `x₃` parallel to the normal at an
+/// umbilic point, `x₂` kept): the envelope of the cones of revolution with vertices on
+/// the focal hyperbola, `c₁ = (m₁; 0)`, `c₂ = (m₂; b)`,
+/// `m₁ = (αγ(t⁴+1), 0, ac(t⁴+1) + 2b²t²)/(b(t⁴−1))`,
+/// `m₂ = (t²−1)/(b(t²+1))·(αγ, 0, ac − b²)`, and `p = β(ρ₁, ρ₂)`,
+/// `(ρ₁, ρ₂) = bt(μ(t²+1), (a−c)t)/(act² + b²)` (NOTES-004 A4.6), with `α = √(b²−c²)`,
+/// `γ = √(a²−b²)`, `μ = √(ac)`. The ellipsoid of revolution `a = b` needs only `μ`.
+/// In this frame the ellipsoid is, in plane coordinates,
+/// `e0² = K₁₁n₁² + b²n₂² + (a²c²/b²)n₃² + 2(αγac/b²)n₁n₃`,
+/// `K₁₁ = (b²(a² + c²) − a²c²)/b²` ([`Self::dual_quadric_certificate`]).
+#[derive(Debug, Clone)]
+pub struct EllipsoidPn<F> {
+    abc: [F; 3],
+    alpha_gamma: F,
+    envelope: ConeFamilyEnvelope<F>,
+}
+
+impl<F: Scalar> EllipsoidPn<F> {
+    /// The PN ellipsoid in the umbilic frame.
+    ///
+    /// # Errors
+    /// [`PnError::InvalidInput`] unless `a ≥ b ≥ c > 0` and `a > c`;
+    /// [`PnError::NoRationalPoint`] if `√(b²−c²)·√(a²−b²)` or `√(ac)` is irrational
+    /// (e.g. `(a, b, c) = (25/3, 5, 3)` gives `α = 4, γ = 20/3, μ = 5`).
+    pub fn new(a: F, b: F, c: F) -> Result<Self, PnError> {
+        if !(c > F::zero() && b >= c && a >= b && a > c) {
+            return Err(PnError::InvalidInput(format!(
+                "the ellipsoid needs a ≥ b ≥ c > 0 and a > c, got ({}, {}, {})",
+                format_scalar(&a),
+                format_scalar(&b),
+                format_scalar(&c)
+            )));
+        }
+        let sq = |x: F, what: &str| {
+            super::poly::scalar_sqrt(&x).ok_or_else(|| {
+                PnError::NoRationalPoint(format!(
+                    "{what} = √{} is irrational: the rotation to the umbilic frame and the cone family need it rational",
+                    format_scalar(&x)
+                ))
+            })
+        };
+        let ag = sq(
+            (b.clone() * b.clone() - c.clone() * c.clone())
+                * (a.clone() * a.clone() - b.clone() * b.clone()),
+            "αγ",
+        )?;
+        let mu = sq(a.clone() * c.clone(), "μ")?;
+        let t = var::<F>(0);
+        let t2 = &t * &t;
+        let t4 = &t2 * &t2;
+        let k = |x: &F| MPoly::constant(2, x.clone());
+        let ac = a.clone() * c.clone();
+        let b2 = b.clone() * b.clone();
+        let t4p1 = &t4 + &int(1);
+        let c1 = CycleFamily::new(
+            [
+                t4p1.scale(&ag),
+                MPoly::zero(2),
+                &t4p1.scale(&ac) + &t2.scale(&(F::from_i64(2) * b2.clone())),
+            ],
+            MPoly::zero(2),
+            (&t4 - &int(1)).scale(&b),
+        )?;
+        let t2m1 = &t2 - &int(1);
+        let c2 = CycleFamily::new(
+            [
+                t2m1.scale(&ag),
+                MPoly::zero(2),
+                t2m1.scale(&(ac.clone() - b2.clone())),
+            ],
+            (&t2 + &int(1)).scale(&(b.clone() * b.clone())),
+            (&t2 + &int(1)).scale(&b),
+        )?;
+        // ρ = bt(μ(t²+1), (a−c)t)/(act² + b²); p = β ρ, β = R + M₃ (rational)
+        let rden = &t2.scale(&ac) + &k(&b2);
+        let rho1 = RatFn {
+            num: (&t * &(&t2 + &int(1))).scale(&(b.clone() * mu.clone())),
+            den: rden.clone(),
+        };
+        let rho2 = RatFn {
+            num: t2.scale(&(b.clone() * (a.clone() - c.clone()))),
+            den: rden,
+        };
+        // β = (r₁ − r₂) + (m₁₃ − m₂₃)
+        let beta = {
+            let (cm1, r1, w1) = (&c1.center, &c1.radius, &c1.den);
+            let (cm2, r2, w2) = (&c2.center, &c2.radius, &c2.den);
+            RatFn {
+                num: &(&(r1 + &cm1[2]) * w2) - &(&(r2 + &cm2[2]) * w1),
+                den: w1 * w2,
+            }
+        };
+        let p = [beta.mul(&rho1), beta.mul(&rho2)];
+        let envelope = ConeFamilyEnvelope::new(c1, c2, Some(p))?;
+        Ok(EllipsoidPn {
+            abc: [a, b, c],
+            alpha_gamma: ag,
+            envelope,
+        })
+    }
+
+    /// The PN surface of the ellipsoid (parameters `(t, u)`).
+    pub fn surface(&self) -> &PnSurface<F> {
+        self.envelope.surface()
+    }
+
+    /// The cone-family envelope behind it.
+    pub fn envelope(&self) -> &ConeFamilyEnvelope<F> {
+        &self.envelope
+    }
+
+    /// `e0² ≡ K₁₁n₁² + b²n₂² + (a²c²/b²)n₃² + 2(αγac/b²)n₁n₃` for the tangent planes of
+    /// the surface offset by `d` from the ellipsoid, with `e0 ↦ e0 + d` undone (the offsets
+    /// have `e0_d = e0 − d`): the planes of the base are tangent to the ellipsoid.
+    pub fn dual_quadric_certificate(&self, surface: &PnSurface<F>) -> Certificate {
+        let [a, b, c] = &self.abc;
+        let b2 = b.clone() * b.clone();
+        let ac = a.clone() * c.clone();
+        let k11 = (b2.clone() * (a.clone() * a.clone() + c.clone() * c.clone())
+            - ac.clone() * ac.clone())
+            / b2.clone();
+        let k33 = ac.clone() * ac.clone() / b2.clone();
+        let k13 = self.alpha_gamma.clone() * ac / b2.clone();
+        let n = surface.normal_polys();
+        let h = surface.support();
+        // e0 of the ellipsoid's own plane: h + distance
+        let e0n = &h.num + &h.den.scale(surface.distance());
+        let quad = &(&(&(&n[1] * &n[1]).scale(&k11) + &(&n[2] * &n[2]).scale(&b2))
+            + &(&n[3] * &n[3]).scale(&k33))
+            + &(&n[1] * &n[3]).scale(&(F::from_i64(2) * k13));
+        // e0 = e0n/L, n = N/N₀: e0² = nᵀK*n  ⇔  e0n²·N₀² ≡ (NᵀK*N)·L²
+        let lhs = &(&e0n * &e0n) * &(&n[0] * &n[0]);
+        let rhs = &quad * &(&h.den * &h.den);
+        identity_cert(
+            "tangent planes of the ellipsoid (umbilic frame): e0² ≡ nᵀK*n (seed §4.7, NOTES-004 A4.6)",
+            &lhs,
+            &rhs,
+        )
+    }
+}
+
+impl<F: Scalar> Certified for EllipsoidPn<F> {
+    /// PN identities, tangency to the cone families, and the dual quadric equation.
+    fn certify(&self) -> Vec<Certificate> {
+        let mut out = self.envelope.certify();
+        out.push(self.dual_quadric_certificate(self.surface()));
+        out
+    }
+}

@@ -449,6 +449,16 @@ impl<F: Scalar> Certified for PnSurface<F> {
     }
 }
 
+impl<F: Scalar> PartialEq for PnSurface<F> {
+    fn eq(&self, other: &Self) -> bool {
+        self.point == other.point
+            && self.normal == other.normal
+            && self.support == other.support
+            && self.cofactor == other.cofactor
+            && self.distance == other.distance
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -498,15 +508,5 @@ mod tests {
             PnSurface::from_point_normal(n.clone(), n),
             Err(PnError::NotUnitNormal(_))
         ));
-    }
-}
-
-impl<F: Scalar> PartialEq for PnSurface<F> {
-    fn eq(&self, other: &Self) -> bool {
-        self.point == other.point
-            && self.normal == other.normal
-            && self.support == other.support
-            && self.cofactor == other.cofactor
-            && self.distance == other.distance
     }
 }

@@ -944,7 +944,7 @@ fn example_9_1_hermite() {
 #[test]
 fn hermite_errors() {
     let z = origin();
-    let e = |d: HermiteData<Q>| d.solve_exact().err().expect("error");
+    let e = |d: HermiteData<Q>| d.solve_exact().expect_err("error");
     assert!(matches!(
         e(HermiteData::new(
             z.clone(),

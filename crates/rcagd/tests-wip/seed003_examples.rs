@@ -8,17 +8,15 @@ use rcagd::canal::{
     CanalSpine, GaussianSplit, QuadraticCanal, SumOfSquares,
 };
 use rcagd::cyclographic::{
-    causal_type, isotropic_image, line_image, lorentz, mobius_bilinear, mobius_form,
-    mobius_image, mobius_point, mobius_reflection, omega_point, pencil_type, polar_plane,
-    CausalType, LineImage, MobiusImage, OrientedSphere, PencilType,
+    causal_type, isotropic_image, line_image, lorentz, mobius_bilinear, mobius_form, mobius_image,
+    mobius_point, mobius_reflection, omega_point, pencil_type, polar_plane, CausalType, LineImage,
+    MobiusImage, OrientedSphere, PencilType,
 };
 use rcagd::lines::plucker::{incidence_matrix, klein_form, wedge};
-use rcagd::lines::{
-    reciprocal_product, CongruenceKind, Line, LinearComplex, LinearCongruence,
-};
+use rcagd::lines::{reciprocal_product, CongruenceKind, Line, LinearComplex, LinearCongruence};
 use rcagd::Certified;
 use rcagd_algebra::complex::{conj_poly, Complex};
-use rcagd_algebra::{Poly, Rational};
+use rcagd_algebra::{Poly, Rational, Scalar};
 
 fn q(n: i64) -> Rational {
     Rational::from(n)
@@ -53,8 +51,10 @@ fn s003_1_1_wedge_homogeneity_and_identity() {
     let l = wedge(&pp, &qq);
     assert_eq!(klein_form(&l), q(0));
     let (la, mu, rho, sg) = (q(3), q(-2), r(1, 2), q(5));
-    let a: [Rational; 4] = core::array::from_fn(|i| la.clone() * pp[i].clone() + mu.clone() * qq[i].clone());
-    let b: [Rational; 4] = core::array::from_fn(|i| rho.clone() * pp[i].clone() + sg.clone() * qq[i].clone());
+    let a: [Rational; 4] =
+        core::array::from_fn(|i| la.clone() * pp[i].clone() + mu.clone() * qq[i].clone());
+    let b: [Rational; 4] =
+        core::array::from_fn(|i| rho.clone() * pp[i].clone() + sg.clone() * qq[i].clone());
     let k = la * sg - mu * rho;
     assert_eq!(wedge(&a, &b), scale6(&k, &l));
     // (1.6): for affine points the moment is p × direction
@@ -93,7 +93,10 @@ fn s003_1_1_points_s_i_and_erratum_e23() {
     // erratum 003-E23: the factor can vanish, then s_i ∧ s_j = 0 is not the line
     let lx = Line::from_affine_points(&[q(0), q(0), q(0)], &[q(1), q(0), q(0)]).expect("x-axis");
     let sx = lx.coordinate_plane_points();
-    assert!(wedge(&sx[0], &sx[2]).iter().all(|c| *c == q(0)), "s1 ∧ s3 = l2·l = 0");
+    assert!(
+        wedge(&sx[0], &sx[2]).iter().all(|c| *c == q(0)),
+        "s1 ∧ s3 = l2·l = 0"
+    );
     let (a, b) = lx.points();
     assert!(Line::from_points(&a, &b).expect("pts").same_line(&lx));
 }
@@ -113,7 +116,12 @@ fn s003_1_5_axis_coordinates() {
         l[1].clone(),
         l[2].clone(),
     ];
-    let k = a.iter().zip(&swapped).find(|(_, s)| **s != q(0)).map(|(x, s)| x.clone() / s.clone()).expect("k");
+    let k = a
+        .iter()
+        .zip(&swapped)
+        .find(|(_, s)| **s != q(0))
+        .map(|(x, s)| x.clone() / s.clone())
+        .expect("k");
     assert_eq!(a, scale6(&k, &swapped));
     let from_planes = Line::from_planes(&u, &w).expect("planes");
     assert!(from_planes.same_line(&line));
@@ -140,7 +148,7 @@ fn s003_1_7_incidence_matrix() {
 fn s003_1_10_intersection_condition_and_erratum_e1() {
     // (1.8)–(1.10): g, h meet iff ⟨ḡ, h⟩ + ⟨g, h̄⟩ = 0
     let pp = [q(1), q(0), q(0)];
-    let qq = [q(0), q(1), q(2)];
+    let qq = [q(0), q(3), q(2)];
     let g = Line::from_point_direction(&pp, &[q(1), q(1), q(0)]).expect("g");
     let x = [q(3), q(2), q(0)]; // a point of g: p + 2(1,1,0)
     let h = Line::from_affine_points(&x, &qq).expect("h through a point of g");
@@ -148,13 +156,21 @@ fn s003_1_10_intersection_condition_and_erratum_e1() {
     assert!(g.meets(&h));
     let meet = g.intersection(&h).expect("meet");
     assert_eq!(
-        [meet[1].clone() / meet[0].clone(), meet[2].clone() / meet[0].clone(), meet[3].clone() / meet[0].clone()],
+        [
+            meet[1].clone() / meet[0].clone(),
+            meet[2].clone() / meet[0].clone(),
+            meet[3].clone() / meet[0].clone()
+        ],
         x
     );
     // erratum 003-E1: coplanarity is q − p ⊥ g × h, NOT q − p ⊥ g, h
     let (gd, hd) = (g.direction(), h.direction());
     let qp: Vec<Rational> = (0..3).map(|i| qq[i].clone() - pp[i].clone()).collect();
-    let dot = |a: &[Rational], b: &[Rational]| a.iter().zip(b).fold(q(0), |s, (x, y)| s + x.clone() * y.clone());
+    let dot = |a: &[Rational], b: &[Rational]| {
+        a.iter()
+            .zip(b)
+            .fold(q(0), |s, (x, y)| s + x.clone() * y.clone())
+    };
     let cross = [
         gd[1].clone() * hd[2].clone() - gd[2].clone() * hd[1].clone(),
         gd[2].clone() * hd[0].clone() - gd[0].clone() * hd[2].clone(),
@@ -223,7 +239,9 @@ fn s003_1_1_6_line_nets() {
     .expect("e");
     assert_eq!(e.kind(), CongruenceKind::Elliptic);
     assert!(e.all_hold());
-    let fibre = e.line_through(&v4([1, 0, 0, 0])).expect("real line of an elliptic net");
+    let fibre = e
+        .line_through(&v4([1, 0, 0, 0]))
+        .expect("real line of an elliptic net");
     assert!(e.contains(&fibre));
     // parabolic: regular complex ∩ singular complex whose axis lies in it (§1.1.6)
     let axis = Line::from_coords([0, 1, 0, 0, 0, 0].map(q)).expect("axis");
@@ -251,7 +269,7 @@ fn s003_1_1_8_one_four_congruence_example() {
     let xaxis = Line::from_affine_points(&[q(0), q(0), q(0)], &[q(1), q(0), q(0)]).expect("g");
     let pp = v4([1, 7, 1, 1]);
     let plane = xaxis.join_point(&pp).expect("plane"); // y = z
-    // β ∩ plane: t(4 − t²)(t − 1) = 0 → residual t = 1
+                                                       // β ∩ plane: t(4 − t²)(t − 1) = 0 → residual t = 1
     let b1 = beta(1);
     let qq = v4([1, b1[0], b1[1], b1[2]]);
     assert_eq!(
@@ -339,7 +357,10 @@ fn s003_1_2_2_images_of_lines() {
 
 fn example_2_3() -> CanalSpine<Rational> {
     // m(u) = (u, 0, u²), r(u) = u²/4 (2.19)
-    CanalSpine::polynomial([p(&[0, 1]), p(&[]), p(&[0, 0, 1])], pr(&[(0, 1), (0, 1), (1, 4)]))
+    CanalSpine::polynomial(
+        [p(&[0, 1]), p(&[]), p(&[0, 0, 1])],
+        pr(&[(0, 1), (0, 1), (1, 4)]),
+    )
 }
 
 #[test]
@@ -355,11 +376,12 @@ fn s003_2_3_example_cyclographic_reparametrization_and_gamma() {
         assert_eq!(u, printed);
         // the printed Γ
         let ss = s.clone() * s.clone() + t.clone() * t.clone();
-        let pre = q(4) * s.clone()
-            / ((q(-3) + q(5) * ss.clone()).pow(2) * (q(1) + ss.clone()));
+        let pre = q(4) * s.clone() / ((q(-3) + q(5) * ss.clone()).pow(2) * (q(1) + ss.clone()));
         let gamma = [
             pre.clone()
-                * (q(-3) + q(2) * t.clone() * t.clone() + q(5) * s.clone().pow(4)
+                * (q(-3)
+                    + q(2) * t.clone() * t.clone()
+                    + q(5) * s.clone().pow(4)
                     + q(10) * s.clone() * s.clone() * t.clone() * t.clone()
                     + q(5) * t.clone().pow(4)),
             pre.clone() * (q(-2) * s.clone() * t.clone()),
@@ -370,7 +392,10 @@ fn s003_2_3_example_cyclographic_reparametrization_and_gamma() {
     assert!(canal.all_hold(), "{:?}", canal.certify());
     // the same surface by the Peternell–Pottmann recipe (003-4) needs Q(√15):
     // D = 1 + 4u² − u²/4 = 1 + (15/4)u²
-    assert_eq!(spine.discriminant().expect("D"), pr(&[(1, 1), (0, 1), (15, 4)]));
+    assert_eq!(
+        spine.discriminant().expect("D"),
+        pr(&[(1, 1), (0, 1), (15, 4)])
+    );
     let b = canal_surface(&spine, &CanalOptions::default()).expect("build");
     assert_eq!(b.radicand(), Some(&q(15)));
     assert!(b.all_hold(), "{:?}", b.certify());
@@ -382,7 +407,11 @@ fn s003_2_3_example_cyclographic_reparametrization_and_gamma() {
     let x = canal.eval(&s, &t).expect("pt");
     let (m, rad) = spine.eval(&u).expect("sphere");
     let d: Vec<Rational> = (0..3).map(|i| x[i].clone() - m[i].clone()).collect();
-    let dot = |a: &[Rational], b: &[Rational]| a.iter().zip(b).fold(q(0), |s, (x, y)| s + x.clone() * y.clone());
+    let dot = |a: &[Rational], b: &[Rational]| {
+        a.iter()
+            .zip(b)
+            .fold(q(0), |s, (x, y)| s + x.clone() * y.clone())
+    };
     assert_eq!(dot(&d, &d), rad.clone() * rad.clone());
     let md = [q(1), q(0), q(2) * u.clone()];
     let rd = u.clone() / q(2);
@@ -401,7 +430,9 @@ fn s003_2_2_contact_sign_erratum_e3() {
     let (m, rad) = spine.eval(&u).expect("sphere");
     let md = [q(1), q(0), q(2) * u.clone()];
     let rd = u / q(2);
-    let xm: Rational = (0..3).fold(q(0), |acc, i| acc + (x[i].clone() - m[i].clone()) * md[i].clone());
+    let xm: Rational = (0..3).fold(q(0), |acc, i| {
+        acc + (x[i].clone() - m[i].clone()) * md[i].clone()
+    });
     assert_eq!(xm.clone() + rad.clone() * rd.clone(), q(0));
     assert_ne!(xm - rad * rd, q(0));
 }
@@ -410,7 +441,9 @@ fn s003_2_2_contact_sign_erratum_e3() {
 fn s003_2_11_pole_and_cone_vertex() {
     // (2.11): s = m − (r/ṙ)ṁ is the pole of K̇ w.r.t. K; (2.12) z = s − e = −ṁ/ṙ
     let (m, rr, md, rd) = ([q(1), q(2), q(0)], q(3), [q(2), q(-1), q(2)], q(2));
-    let s: Vec<Rational> = (0..3).map(|i| m[i].clone() - rr.clone() / rd.clone() * md[i].clone()).collect();
+    let s: Vec<Rational> = (0..3)
+        .map(|i| m[i].clone() - rr.clone() / rd.clone() * md[i].clone())
+        .collect();
     // polar plane of s: (s − m)·(x − m) = r² ⇔ ṁ·(x − m) = −r ṙ (corrected sign)
     let sm: Vec<Rational> = (0..3).map(|i| s[i].clone() - m[i].clone()).collect();
     for i in 0..3 {
@@ -448,7 +481,9 @@ fn s003_2_13_stereographic_circle_erratum_e4() {
     let u = rcagd_algebra::QuadExt::rational(r(3, 5));
     let x = s.eval(&t, &u).expect("pt");
     let (m, rad) = s.spine().eval(&t).expect("sphere");
-    let qv: Vec<_> = (0..3).map(|i| (x[i].clone() - m[i].clone()) / rad.clone()).collect();
+    let qv: Vec<_> = (0..3)
+        .map(|i| (x[i].clone() - m[i].clone()) / rad.clone())
+        .collect();
     // stereographic projection from (0, 0, 1): k = (q₁, q₂)/(1 − q₃)
     let one = rcagd_algebra::QuadExt::rational(q(1));
     let k1 = qv[0].clone() / (one.clone() - qv[2].clone());
@@ -535,10 +570,14 @@ fn s003_2_4_krasauskas_pieces() {
     let e = [l(1, 3), -l(1, 2), -l(0, 3), l(0, 2)];
     let ab: [Rational; 4] = core::array::from_fn(|i| a[i].clone() + b[i].clone());
     for x in [f(&a), f(&b), f(&ab)] {
-        assert_eq!((0..4).fold(q(0), |s, i| s + e[i].clone() * x[i].clone()), q(0));
+        assert_eq!(
+            (0..4).fold(q(0), |s, i| s + e[i].clone() * x[i].clone()),
+            q(0)
+        );
     }
     // (2.26)/(2.27): e((λ, μ)·a, b) = λL + μM
-    let l2 = |i: usize, j: usize| scaled[i].clone() * b[j].clone() - scaled[j].clone() * b[i].clone();
+    let l2 =
+        |i: usize, j: usize| scaled[i].clone() * b[j].clone() - scaled[j].clone() * b[i].clone();
     let e2 = [l2(1, 3), -l2(1, 2), -l2(0, 3), l2(0, 2)];
     let ll = [
         a[1].clone() * b[3].clone(),
@@ -553,7 +592,10 @@ fn s003_2_4_krasauskas_pieces() {
         -a[2].clone() * b[0].clone(),
     ];
     for i in 0..4 {
-        assert_eq!(e2[i], la.clone() * ll[i].clone() + mu.clone() * mm[i].clone());
+        assert_eq!(
+            e2[i],
+            la.clone() * ll[i].clone() + mu.clone() * mm[i].clone()
+        );
     }
 }
 
@@ -627,14 +669,15 @@ fn s003_2_33_discriminant_identity_erratum_e7() {
     ];
     let bs: Vec<C> = (0..4)
         .map(|j| {
-            C::i() * (0..4).fold(C::from_real(q(0)), |s, k| {
-                s + C::from_real(bv[k].clone()) * inv[k][j].clone()
-            })
+            C::i()
+                * (0..4).fold(C::from_real(q(0)), |s, k| {
+                    s + C::from_real(bv[k].clone()) * inv[k][j].clone()
+                })
         })
         .collect();
     let lhs = bs[0].clone() * bs[3].clone() - bs[1].clone() * bs[2].clone();
-    let corrected = bv[1].clone().pow(2) + bv[2].clone().pow(2) + bv[3].clone().pow(2)
-        - bv[0].clone().pow(2);
+    let corrected =
+        bv[1].clone().pow(2) + bv[2].clone().pow(2) + bv[3].clone().pow(2) - bv[0].clone().pow(2);
     assert_eq!(lhs, C::from_real(corrected.clone()));
     let printed = bv[1].clone().pow(2) + bv[2].clone().pow(2) + bv[0].clone().pow(2);
     assert_ne!(C::from_real(printed), lhs);
@@ -671,7 +714,10 @@ fn s003_2_35_factorizations_and_satz2_erratum_e9() {
 fn s003_sum_of_two_squares_cases() {
     // exact over Q iff D splits over Q(i) with a sum-of-two-squares constant
     let d = p(&[4, 0, 4]); // 4 + 4t² (NOTES 003-4)
-    assert!(matches!(sum_of_two_squares(&d).expect("s"), SumOfSquares::Rational { .. }));
+    assert!(matches!(
+        sum_of_two_squares(&d).expect("s"),
+        SumOfSquares::Rational { .. }
+    ));
     // D = 1 + (15/4)t² (example 2.3) needs Q(√15)
     let d = pr(&[(1, 1), (0, 1), (15, 4)]);
     assert_eq!(sum_of_two_squares(&d).expect("s").radicand(), Some(&q(15)));
@@ -726,7 +772,12 @@ fn s004_2_4_pencils_and_reality_of_canal_families() {
     // with c(t) = μ⁻¹(m(t), r(t)²) this is D = |ṁ|² − ṙ² > 0 (elliptic pencil)
     let spine = CanalSpine::polynomial([p(&[0, 1]), p(&[]), p(&[])], p(&[0, 0, 1]));
     // D = 1 − 4t²: real for |t| < 1/2
-    for (t, real) in [(r(1, 4), true), (q(1), false), (r(-1, 3), true), (q(-2), false)] {
+    for (t, real) in [
+        (r(1, 4), true),
+        (q(1), false),
+        (r(-1, 3), true),
+        (q(-2), false),
+    ] {
         let (m, rad) = spine.eval(&t).expect("sph");
         let c0 = mobius_point(&m, &(rad.clone() * rad.clone()));
         // the exact tangent: ċ = (m·ṁ − rṙ, ṁ, m·ṁ − rṙ) with m = (t, 0, 0), r = t²
@@ -773,16 +824,17 @@ fn s004_a3_4_dupin_cyclide_family() {
 #[test]
 fn s004_4_5_canal_with_cubic_spine_and_radius() {
     // Fig. 4.3: a canal surface with cubic spine and cubic radius; the construction is
-    // rational when D splits over Q(i) — m = (t, t², t³)·…, r chosen so that D is a square:
-    // m = (3t, 3t², 2t³) is PH (|ṁ| = 3 + 6t²) and r = t³/… keeps D ≥ 0? Use r = t:
-    // D = (3 + 6t²)² − 1, which is (2 + 6t²)(4 + 6t²) — over Q(i) irreducible quadratics
+    // rational when D splits suitably over Q(i). m = (3t, 3t², 2t³) is PH (|ṁ| = 3 + 6t²);
+    // with r = t:
     let spine = CanalSpine::polynomial([p(&[0, 3]), p(&[0, 0, 3]), p(&[0, 0, 0, 2])], p(&[0, 1]));
-    let b = canal_surface(&spine, &CanalOptions::default());
-    match b {
-        Ok(b) => assert!(b.all_hold()),
-        Err(CanalError::NeedsLargerExtension(_)) => {}
-        Err(e) => panic!("{e}"),
-    }
+    // D = (3 + 6t²)² − 1 = 4(3t² + 1)(3t² + 2): the two quadratic factors need Q(√3) and
+    // Q(√6) — no single quadratic field: an error, and the explicit f64 path instead
+    assert!(matches!(
+        canal_surface(&spine, &CanalOptions::default()),
+        Err(CanalError::NeedsLargerExtension(_))
+    ));
+    let sf = rcagd::canal::canal_surface_approx(&spine, &CanalOptions::default()).expect("f64");
+    assert!(sf.all_hold(), "{:?}", sf.certify());
     // a PH cubic with constant radius: always rational (pipe), degree ≤ 3k − 2 = 7
     let pipe = CanalSpine::polynomial([p(&[0, 3]), p(&[0, 0, 3]), p(&[0, 0, 0, 2])], p(&[1]));
     let b = canal_surface(&pipe, &CanalOptions::default()).expect("pipe");

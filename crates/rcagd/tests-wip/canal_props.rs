@@ -1,0 +1,377 @@
+//! Property tests of the canal-surface constructions with random exact spines and radii:
+//! every build certifies `|x − m|² ≡ r²` and `(x − m)·ṁ + r ṙ ≡ 0` exactly; every refusal is
+//! a typed error that is checked (the named interval really has `|ṁ| < |ṙ|`); `f64` agrees
+//! with the exact result.
+
+use proptest::prelude::*;
+use rcagd::canal::factor::{factor_rational, to_gauss, GaussPoly};
+use rcagd::canal::pipe::{pipe_around_ph, pipe_around_planar};
+use rcagd::canal::{
+    canal_surface, canal_surface_with_split, sum_of_two_squares, CanalBuild, CanalError,
+    CanalOptions, CanalSpine, Orientation, QuadraticCanal, SumOfSquares,
+};
+use rcagd::ph::PhCurve;
+use rcagd::Certified;
+use rcagd_algebra::complex::{conj_poly, Complex};
+use rcagd_algebra::quaternion::Quaternion;
+use rcagd_algebra::{parse_rational, Poly, Rational, Scalar};
+use rcagd_geom::BezierCurve;
+
+fn q(n: i64) -> Rational {
+    Rational::from(n)
+}
+
+fn poly(max_deg: usize) -> impl Strategy<Value = Poly<Rational>> {
+    proptest::collection::vec(-3i64..4, 0..=max_deg + 1).prop_map(|c| Poly::from_ints(&c))
+}
+
+fn check_refusal(spine: &CanalSpine<Rational>, e: &CanalError) -> Result<(), TestCaseError> {
+    match e {
+        CanalError::NoRealEnvelope { witness, .. } => {
+            let t = parse_rational(witness).expect("witness is an exact rational");
+            let d = spine.discriminant().expect("D");
+            prop_assert!(d.eval(&t) < q(0), "D({t}) must be negative");
+        }
+        CanalError::DegenerateSpine(_) | CanalError::NeedsLargerExtension(_) => {}
+        other => prop_assert!(false, "unexpected error {other}"),
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    /// Families whose spheres all touch a plane (`r = m₃ + c`): `D = ṁ₁² + ṁ₂²` is always a
+    /// sum of two rational squares, so the construction is rational.
+    #[test]
+    fn common_tangent_plane_families_are_rational(
+        m1 in poly(2), m2 in poly(2), m3 in poly(2), c in 1i64..4, neg in any::<bool>()
+    ) {
+        let r = &m3 + &Poly::constant(q(c));
+        let spine = CanalSpine::polynomial([m1.clone(), m2.clone(), m3], r);
+        let options = CanalOptions {
+            orientation: if neg { Orientation::Negative } else { Orientation::Positive },
+            ..CanalOptions::default()
+        };
+        match canal_surface(&spine, &options) {
+            Ok(b) => {
+                prop_assert!(b.as_rational().is_some(), "D = ṁ₁² + ṁ₂² must give a rational build");
+                prop_assert!(b.all_hold(), "{:?}", b.certify());
+                let (dt, du) = b.degree();
+                prop_assert!(du <= 2 && dt <= 3 * 2);
+            }
+            Err(e) => {
+                prop_assert!(m1.derivative().is_zero() && m2.derivative().is_zero(), "{e}");
+            }
+        }
+    }
+
+    /// Random spines and radii: a certified build or a checked refusal.
+    #[test]
+    fn random_spines_and_radii(
+        m in proptest::array::uniform3(poly(2)), r in poly(2)
+    ) {
+        let spine = CanalSpine::polynomial(m, r);
+        match canal_surface(&spine, &CanalOptions::default()) {
+            Ok(b) => {
+                prop_assert!(b.all_hold(), "{:?}", b.certify());
+                if let CanalBuild::Extension { radicand, .. } = &b {
+                    prop_assert!(*radicand > q(1));
+                }
+                prop_assert!(b.degree().0 <= 3 * spine.degree());
+            }
+            Err(e) => check_refusal(&spine, &e)?,
+        }
+    }
+
+    /// Random rational spines (weight `1 + t²`) with constant radius.
+    #[test]
+    fn rational_spine_pipes(
+        m in proptest::array::uniform3(poly(2)), rr in 1i64..4
+    ) {
+        let w = Poly::from_ints(&[1, 0, 1]);
+        let r = w.scale(&Rational::from_ratio(rr, 2));
+        let Ok(spine) = CanalSpine::new(w, m, r) else { return Ok(()); };
+        match canal_surface(&spine, &CanalOptions::default()) {
+            Ok(b) => prop_assert!(b.all_hold(), "{:?}", b.certify()),
+            Err(e) => check_refusal(&spine, &e)?,
+        }
+    }
+
+    /// Pipes around random PH cubics and quintics: exact over Q, and the `f64` pipe with the
+    /// same axis agrees pointwise.
+    #[test]
+    fn pipes_around_ph_curves(
+        a in proptest::collection::vec(proptest::array::uniform4(-2i64..3), 2..4),
+        rad in 1i64..4, t in -3i64..4, u in -3i64..4
+    ) {
+        let coeffs: Vec<Quaternion<Rational>> =
+            a.iter().map(|c| Quaternion::new(q(c[0]), q(c[1]), q(c[2]), q(c[3]))).collect();
+        let Ok(curve) = PhCurve::new(coeffs, [q(0), q(0), q(0)]) else { return Ok(()); };
+        let radius = Rational::from_ratio(rad, 3);
+        let s = match pipe_around_ph(&curve, &radius, &CanalOptions::default()) {
+            Ok(s) => s,
+            Err(CanalError::DegenerateSpine(_)) => return Ok(()),
+            Err(e) => return Err(TestCaseError::fail(e.to_string())),
+        };
+        prop_assert!(s.all_hold(), "{:?}", s.certify());
+        let opts = CanalOptions { axis: Some(s.axis()), ..CanalOptions::default() };
+        let sf = pipe_around_ph(&curve.to_f64(), &Scalar::to_f64(&radius), &opts).expect("f64 pipe");
+        prop_assert!(sf.all_hold());
+        let (tq, uq) = (Rational::from_ratio(t, 2), Rational::from_ratio(u, 3));
+        if let (Ok(pe), Ok(pf)) = (s.eval(&tq, &uq), sf.eval(&Scalar::to_f64(&tq), &Scalar::to_f64(&uq))) {
+            let scale = pe.iter().map(|x| Scalar::to_f64(x).abs()).fold(1.0, f64::max);
+            for k in 0..3 {
+                prop_assert!((Scalar::to_f64(&pe[k]) - pf[k]).abs() < 1e-9 * scale);
+            }
+        }
+    }
+
+    /// Planar spines give rational pipes without factorization.
+    #[test]
+    fn planar_pipes(x in poly(3), y in poly(3), rad in 1i64..4) {
+        let coords: Vec<Vec<Rational>> = (0..4)
+            .map(|i| {
+                let t = Rational::from_ratio(i, 3);
+                vec![x.eval(&t), y.eval(&t), q(2)]
+            })
+            .collect();
+        let curve = BezierCurve::from_points(&coords).expect("curve");
+        match pipe_around_planar(&curve, &q(rad), &CanalOptions::default()) {
+            Ok(s) => prop_assert!(s.all_hold(), "{:?}", s.certify()),
+            Err(CanalError::DegenerateSpine(_)) => {}
+            Err(e) => prop_assert!(false, "{e}"),
+        }
+    }
+
+    /// `c·|h|²·A²` is decomposed exactly; over `Q` iff `c` is a sum of two squares.
+    #[test]
+    fn sums_of_two_squares(
+        re in proptest::collection::vec(-3i64..4, 1..4),
+        im in proptest::collection::vec(-3i64..4, 1..4),
+        a in poly(1), c in prop::sample::select(vec![1i64, 2, 5, 3, 6])
+    ) {
+        let n = re.len().max(im.len());
+        let h: GaussPoly = Poly::new(
+            (0..n)
+                .map(|k| Complex::new(q(*re.get(k).unwrap_or(&0)), q(*im.get(k).unwrap_or(&0))))
+                .collect(),
+        );
+        let hh = &h * &conj_poly(&h);
+        let norm: Poly<Rational> = hh.map(|z| z.re.clone());
+        let a2 = &a * &a;
+        let d = (&norm * &a2).scale(&q(c));
+        if d.is_zero() {
+            return Ok(());
+        }
+        let s = sum_of_two_squares(&d).expect("a norm is a sum of two squares");
+        prop_assert!(s.verifies(&d));
+        let rational = matches!(s, SumOfSquares::Rational { .. });
+        prop_assert_eq!(rational, c != 3 && c != 6);
+        let _ = to_gauss(&d);
+    }
+
+    /// The factorization over Q reproduces the polynomial.
+    #[test]
+    fn factorization_round_trip(f in poly(3), g in poly(3), h in poly(2)) {
+        let prod = &(&f * &g) * &h;
+        if prod.is_zero() {
+            return Ok(());
+        }
+        let (c, fs) = factor_rational(&prod).expect("factor");
+        let back = fs.iter().fold(Poly::constant(c), |acc, (p, e)| &acc * &p.pow(*e as u32));
+        prop_assert_eq!(back, prod);
+        for (p, _) in &fs {
+            prop_assert!(p.leading() == q(1));
+        }
+    }
+
+    /// The cyclographic construction of quadratic families (seed 003 §2.3) is rational and
+    /// certified.
+    #[test]
+    fn quadratic_families(k in proptest::array::uniform4(poly(2))) {
+        match QuadraticCanal::new(k) {
+            Ok(c) => prop_assert!(c.all_hold(), "{:?}", c.certify()),
+            Err(CanalError::DegenerateSpine(_)) => {}
+            Err(e) => prop_assert!(false, "{e}"),
+        }
+    }
+
+    /// A given split is accepted iff it is one; `f64` with the converted split agrees.
+    #[test]
+    fn given_splits(m1 in poly(2), m2 in poly(2), c in 1i64..3) {
+        let m3 = Poly::from_ints(&[0, 1]);
+        let r = &m3 + &Poly::constant(q(c));
+        let spine = CanalSpine::polynomial([m1, m2, m3], r);
+        let Ok(p) = spine.derivative_numerators() else { return Ok(()); };
+        if p[0].is_zero() && p[1].is_zero() {
+            return Ok(());
+        }
+        let s = canal_surface_with_split(&spine, &p[0], &p[1], &CanalOptions::default())
+            .expect("the split (P₁, P₂) of D = P₁² + P₂²");
+        prop_assert!(s.all_hold());
+        let wrong = canal_surface_with_split(&spine, &p[1], &p[1], &CanalOptions::default());
+        if p[0] != p[1] && p[0] != -&p[1] {
+            prop_assert!(matches!(wrong, Err(CanalError::NotASplit(_))));
+        }
+        let sf = canal_surface_with_split(
+            &spine.map_scalar(Scalar::to_f64),
+            &p[0].map(Scalar::to_f64),
+            &p[1].map(Scalar::to_f64),
+            &CanalOptions { axis: Some(s.axis()), ..CanalOptions::default() },
+        )
+        .expect("f64");
+        prop_assert!(sf.all_hold());
+        let (t, u) = (Rational::from_ratio(1, 3), Rational::from_ratio(-1, 2));
+        if let (Ok(pe), Ok(pf)) = (s.eval(&t, &u), sf.eval(&(1.0 / 3.0), &-0.5)) {
+            for k in 0..3 {
+                prop_assert!((Scalar::to_f64(&pe[k]) - pf[k]).abs() < 1e-9 * (1.0 + pf[k].abs()));
+            }
+        }
+    }
+}
+
+#[test]
+fn domain_reparametrization() {
+    // m = (t, 0, 0), r = t²: D = 1 − 4t² ≥ 0 only on [−1/2, 1/2]
+    let spine = CanalSpine::polynomial(
+        [Poly::from_ints(&[0, 1]), Poly::zero(), Poly::zero()],
+        Poly::from_ints(&[0, 0, 1]),
+    );
+    assert!(matches!(
+        canal_surface(&spine, &CanalOptions::default()),
+        Err(CanalError::NoRealEnvelope { .. })
+    ));
+    let opts = CanalOptions {
+        domain: Some((Rational::from_ratio(-1, 2), Rational::from_ratio(1, 2))),
+        ..CanalOptions::default()
+    };
+    let b = canal_surface(&spine, &opts).expect("reparametrized");
+    assert!(b.all_hold(), "{:?}", b.certify());
+    let s = b.to_ext();
+    assert!(s.reparametrization().is_some());
+    // a domain with negative D is refused, naming the interval
+    let bad = CanalOptions {
+        domain: Some((q(0), q(1))),
+        ..CanalOptions::default()
+    };
+    match canal_surface(&spine, &bad) {
+        Err(CanalError::NoRealEnvelope { from, to, .. }) => {
+            assert_eq!(from, "1/2");
+            assert_eq!(to, "1");
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+mod blends {
+    use super::*;
+    use rcagd::canal::blend::{
+        blend_sphere_plane, blend_sphere_plane_f64, blend_spheres, blend_spheres_f64, BlendEnd,
+        BlendSpine, PlaneEnd,
+    };
+
+    #[test]
+    fn planar_great_circle_blend_is_rational() {
+        // equal radii and great-circle contact (h = 0): r ≡ 1 and a planar spine, so
+        // D = ṁ₁² + ṁ₂² and the blend is exact over Q
+        let a = BlendEnd::new([q(0), q(0), q(0)], q(1), [q(1), q(0), q(0)], q(0)).expect("a");
+        let b = BlendEnd::new([q(4), q(2), q(0)], q(1), [q(1), q(1), q(0)], q(0)).expect("b");
+        let bl = blend_spheres(&a, &b, &BlendSpine::Default).expect("blend");
+        assert!(bl.build.as_rational().is_some());
+        assert!(bl.all_hold(), "{:?}", bl.certify());
+        let patches = bl.build.to_ext().domain_patches().expect("patches");
+        assert!(!patches.is_empty());
+    }
+
+    #[test]
+    fn custom_family_is_checked() {
+        let a = BlendEnd::new([q(0), q(0), q(0)], q(1), [q(1), q(0), q(0)], q(0)).expect("a");
+        let b = BlendEnd::new([q(4), q(0), q(0)], q(1), [q(1), q(0), q(0)], q(0)).expect("b");
+        // the segment with constant radius: a cylinder piece
+        let good = CanalSpine::polynomial(
+            [Poly::from_ints(&[0, 4]), Poly::zero(), Poly::zero()],
+            Poly::from_ints(&[1]),
+        );
+        let bl = blend_spheres(&a, &b, &BlendSpine::Custom(good)).expect("cylinder");
+        assert!(bl.all_hold());
+        let bad = CanalSpine::polynomial(
+            [
+                Poly::from_ints(&[0, 4]),
+                Poly::from_ints(&[0, 1, -1]),
+                Poly::zero(),
+            ],
+            Poly::from_ints(&[1]),
+        );
+        assert!(matches!(
+            blend_spheres(&a, &b, &BlendSpine::Custom(bad)),
+            Err(CanalError::InvalidArgument(_))
+        ));
+    }
+
+    #[test]
+    fn sphere_plane() {
+        let a = BlendEnd::new(
+            [q(0), q(0), q(3)],
+            q(1),
+            [q(0), q(0), q(-1)],
+            Rational::from_ratio(1, 2),
+        )
+        .expect("a");
+        let p = PlaneEnd {
+            normal: [q(0), q(0), q(1)],
+            offset: q(0),
+            center: [q(0), q(0), q(0)],
+            radius: q(2),
+        };
+        match blend_sphere_plane(&a, &p, &BlendSpine::Default) {
+            Ok(bl) => assert!(bl.all_hold(), "{:?}", bl.certify()),
+            Err(CanalError::NeedsLargerExtension(_)) => {
+                let f = blend_sphere_plane_f64(&a, &p, &BlendSpine::Default).expect("f64");
+                assert!(f.all_hold(), "{:?}", f.certify());
+            }
+            Err(e) => panic!("{e}"),
+        }
+        // an irrational normal length is refused
+        let bad = PlaneEnd {
+            normal: [q(1), q(1), q(0)],
+            ..p
+        };
+        assert!(matches!(
+            blend_sphere_plane(&a, &bad, &BlendSpine::Default),
+            Err(CanalError::InvalidArgument(_))
+        ));
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(24))]
+
+        #[test]
+        fn random_sphere_blends(
+            c0 in proptest::array::uniform3(-3i64..4), c1 in proptest::array::uniform3(-3i64..4),
+            r0 in 1i64..3, r1 in 1i64..3,
+            n0 in proptest::array::uniform3(-2i64..3), n1 in proptest::array::uniform3(-2i64..3),
+            h0 in -1i64..2, h1 in -1i64..2
+        ) {
+            let (Ok(a), Ok(b)) = (
+                BlendEnd::new(c0.map(q), q(r0), n0.map(q), Rational::from_ratio(h0, 2)),
+                BlendEnd::new(c1.map(q), q(r1), n1.map(q), Rational::from_ratio(h1, 2)),
+            ) else {
+                return Ok(());
+            };
+            match blend_spheres(&a, &b, &BlendSpine::Default) {
+                Ok(bl) => prop_assert!(bl.all_hold(), "{:?}", bl.certify()),
+                Err(CanalError::NoRealEnvelope { witness, .. }) => {
+                    let t = parse_rational(&witness).expect("witness");
+                    prop_assert!(t >= q(0) && t <= q(1));
+                }
+                Err(CanalError::NeedsLargerExtension(_)) => {
+                    let f = blend_spheres_f64(&a, &b, &BlendSpine::Default).expect("f64 blend");
+                    prop_assert!(f.all_hold(), "{:?}", f.certify());
+                }
+                Err(CanalError::DegenerateSpine(_)) => {}
+                Err(e) => prop_assert!(false, "{e}"),
+            }
+        }
+    }
+}
