@@ -197,7 +197,7 @@ def occ_imports():
     from OCP.IFSelect import IFSelect_RetDone
     from OCP.IGESControl import IGESControl_Reader
     from OCP.STEPControl import STEPControl_Reader
-    from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE, TopAbs_SOLID
+    from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE, TopAbs_SOLID, TopAbs_VERTEX
     from OCP.TopExp import TopExp_Explorer
     from OCP.TopoDS import TopoDS
 
@@ -399,6 +399,19 @@ def check_edges(occ, shape, exact_curves, size, n_samples, report):
     return total, matched, worst, degenerate
 
 
+def max_tolerance(occ, shape):
+    """The largest vertex, edge and face tolerance: the reader enlarges them where it
+    has to close gaps between exact geometry and topology (rcagd's are 1e-7)."""
+    worst = 0.0
+    for kind, cast in (("TopAbs_VERTEX", "Vertex"), ("TopAbs_EDGE", "Edge"), ("TopAbs_FACE", "Face")):
+        exp = occ["TopExp_Explorer"](shape, occ[kind])
+        while exp.More():
+            sub = static(occ["TopoDS"], cast)(exp.Current())
+            worst = max(worst, static(occ["BRep_Tool"], "Tolerance")(sub))
+            exp.Next()
+    return worst
+
+
 def solids_volumes(occ, shape):
     vols = []
     exp = occ["TopExp_Explorer"](shape, occ["TopAbs_SOLID"])
@@ -457,7 +470,14 @@ def check_file(occ, path: Path, args):
         an = occ["BRepCheck_Analyzer"](sh)
         valid = an.IsValid()
         vols = solids_volumes(occ, sh)
-        desc = f"    shape {i}: {str(sh.ShapeType()).split('_')[-1].lower()}, BRepCheck {'valid' if valid else 'INVALID'}"
+        tol = max_tolerance(occ, sh)
+        desc = (
+            f"    shape {i}: {str(sh.ShapeType()).split('_')[-1].lower()}, "
+            f"BRepCheck {'valid' if valid else 'INVALID'}, max tolerance {tol:.1e}"
+        )
+        if tol > args.max_tolerance:
+            ok = False
+            desc += f" (ABOVE {args.max_tolerance:g}: the reader had to close gaps)"
         if vols:
             desc += ", solid volume " + ", ".join(f"{v:.9g}" for v in vols)
             if any(v <= 0 for v in vols):
@@ -492,6 +512,12 @@ def main(argv=None):
     ap.add_argument("--samples", type=int, default=1000, help="samples per face and per edge")
     ap.add_argument(
         "--strict-warnings", action="store_true", help="fail on reader warnings, not only fails"
+    )
+    ap.add_argument(
+        "--max-tolerance",
+        type=float,
+        default=1e-6,
+        help="largest vertex/edge/face tolerance after import",
     )
     ap.add_argument(
         "--fractions",

@@ -551,17 +551,30 @@ impl Iges {
     }
 
     fn geometry(&self, de: usize, obj: &mut ImportedObject) -> Result<(), IoError> {
-        match self.dirs[&de].kind {
+        let kind = self.dirs.get(&de).map(|d| d.kind).ok_or_else(|| {
+            IoError::Invalid(format!(
+                "IGES: a pointer refers to DE {de}, which does not exist"
+            ))
+        })?;
+        match kind {
             126 => obj.curves.push(self.curve(de)?),
             128 => obj.surfaces.push(self.surface(de)?),
             102 => obj.curves.extend(self.composite(de)?),
             143 | 144 => {
                 let mut p = self.params(de)?;
-                if self.dirs[&de].kind == 143 {
+                if kind == 143 {
                     p.int("type")?;
                 }
                 let s = p.count("surface", i64::MAX)?;
-                self.geometry(s, obj)?;
+                match self.dirs.get(&s).map(|d| d.kind) {
+                    Some(128) => obj.surfaces.push(self.surface(s)?),
+                    Some(k) => {
+                        return Err(p.err(format!(
+                            "the surface DE {s} is entity {k}; only 128 is read"
+                        )))
+                    }
+                    None => return Err(p.err(format!("the surface DE {s} does not exist"))),
+                }
             }
             _ => {}
         }

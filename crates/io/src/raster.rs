@@ -170,8 +170,9 @@ impl Camera {
     }
 
     /// The view of [`RenderOptions::auto_view`]: the candidate under which the
-    /// polylines, fitted to a `w × h` image, are longest.
-    fn best_for(polylines: &[&[V3]], w: f64, h: f64) -> Self {
+    /// polyline points spread most: the largest determinant of the 2 × 2 covariance
+    /// of their projections (a curve seen end-on has almost none).
+    fn best_for(polylines: &[&[V3]]) -> Self {
         let mut best = (
             f64::NEG_INFINITY,
             Self::from_angles(35f64.to_radians(), 25f64.to_radians()),
@@ -180,24 +181,23 @@ impl Camera {
             for k in 0..12 {
                 let az = 35.0 + 30.0 * k as f64;
                 let cam = Self::from_angles(az.to_radians(), el.to_radians());
-                let mut lo = [f64::INFINITY; 2];
-                let mut hi = [f64::NEG_INFINITY; 2];
-                let mut length = 0.0;
-                for pl in polylines {
-                    for (i, &p) in pl.iter().enumerate() {
-                        let v = cam.view(p);
-                        for c in 0..2 {
-                            lo[c] = lo[c].min(v[c]);
-                            hi[c] = hi[c].max(v[c]);
-                        }
-                        if i > 0 {
-                            let u = cam.view(pl[i - 1]);
-                            length += ((v[0] - u[0]).powi(2) + (v[1] - u[1]).powi(2)).sqrt();
-                        }
-                    }
+                let (mut n, mut sx, mut sy, mut sxx, mut syy, mut sxy) =
+                    (0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+                for &p in polylines.iter().flat_map(|pl| pl.iter()) {
+                    let v = cam.view(p);
+                    n += 1.0;
+                    sx += v[0];
+                    sy += v[1];
+                    sxx += v[0] * v[0];
+                    syy += v[1] * v[1];
+                    sxy += v[0] * v[1];
                 }
-                let fit = ((hi[0] - lo[0]) / w).max((hi[1] - lo[1]) / h);
-                let score = if fit > 0.0 { length / fit } else { 0.0 };
+                if n < 1.0 {
+                    continue;
+                }
+                let (mx, my) = (sx / n, sy / n);
+                let (cxx, cyy, cxy) = (sxx / n - mx * mx, syy / n - my * my, sxy / n - mx * my);
+                let score = cxx * cyy - cxy * cxy;
                 if score > best.0 * (1.0 + 1e-9) {
                     best = (score, cam);
                 }
@@ -447,7 +447,7 @@ pub fn render(o: &Object, opts: &RenderOptions) -> Result<Image, IoError> {
             .filter(|l| l.depth_test)
             .map(|l| l.points.as_slice())
             .collect();
-        Camera::best_for(&pls, f64::from(opts.width), f64::from(opts.height))
+        Camera::best_for(&pls)
     } else {
         Camera::new(planar, opts)
     };

@@ -377,6 +377,9 @@ fn mobius_equivalent(p: &BezierCurve<Rational>, q: &BezierCurve<Rational>) -> bo
         }
         ratios.push(r);
     }
+    if ratios.len() < 2 {
+        return false;
+    }
     let rho = ratios[1].clone() / ratios[0].clone();
     if rho <= zero {
         return false;
@@ -450,6 +453,11 @@ pub fn build_topology(patches: &[BezierPatch<Rational>]) -> Result<Topology, IoE
             return Err(IoError::Invalid(format!(
                 "patch {k} lies in E{}, topology needs E3",
                 patch.dim()
+            )));
+        }
+        if patch.coords().iter().step_by(4).any(|w| *w == zero) {
+            return Err(IoError::Invalid(format!(
+                "patch {k} has a control point with weight 0 (a point at infinity)"
             )));
         }
         let mut loop_edges = Vec::new();

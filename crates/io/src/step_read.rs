@@ -379,6 +379,7 @@ struct Parser<'a> {
     lex: Lexer<'a>,
     peeked: Option<(Tok, usize)>,
     entity: Option<u64>,
+    depth: usize,
 }
 
 impl<'a> Parser<'a> {
@@ -422,6 +423,20 @@ impl<'a> Parser<'a> {
 
     /// `( param, … )` after the opening parenthesis has been read.
     fn param_list(&mut self) -> Result<Vec<Param>, IoError> {
+        self.depth += 1;
+        let r = self.param_list_inner();
+        self.depth -= 1;
+        r
+    }
+
+    fn param_list_inner(&mut self) -> Result<Vec<Param>, IoError> {
+        if self.depth > MAX_NESTING {
+            return Err(err_at(
+                self.lex.line,
+                self.entity,
+                format!("parameter lists nested deeper than {MAX_NESTING}"),
+            ));
+        }
         let mut out = Vec::new();
         if let Some((Tok::RParen, _)) = self.peek()? {
             self.next()?;
@@ -479,6 +494,7 @@ impl<'a> Parser<'a> {
 }
 
 /// The parsed data section: entity number → instance, and the numbers in file order.
+#[derive(Debug)]
 pub(crate) struct Part21 {
     pub entities: HashMap<u64, Instance>,
     pub order: Vec<u64>,
@@ -490,6 +506,7 @@ pub(crate) fn parse_part21(text: &str) -> Result<Part21, IoError> {
         lex: Lexer::new(text),
         peeked: None,
         entity: None,
+        depth: 0,
     };
     let (magic, line) = p.keyword("ISO-10303-21")?;
     if magic != "ISO-10303-21" {
@@ -597,6 +614,12 @@ pub(crate) fn parse_part21(text: &str) -> Result<Part21, IoError> {
 // ---------------------------------------------------------------------------------
 // From entities to geometry
 // ---------------------------------------------------------------------------------
+
+/// The largest degree read (rcagd's constructions stay far below).
+const MAX_DEGREE: usize = 64;
+
+/// The deepest nesting of parameter lists accepted (guards the recursion).
+const MAX_NESTING: usize = 64;
 
 struct Model<'a> {
     p21: &'a Part21,
@@ -820,6 +843,13 @@ fn read_curve(m: &Model, id: u64) -> Result<NurbsCurve<Rational>, IoError> {
         ));
     };
     let degree = as_usize(deg_p, inst, id, "degree")?;
+    if degree > MAX_DEGREE {
+        return Err(param_err(
+            inst,
+            id,
+            format!("degree {degree} exceeds {MAX_DEGREE}"),
+        ));
+    }
     let pts = as_list(pts_p, inst, id, "control points")?;
     let knots = expand_knots(mults_p, knots_p, inst, id, "curve")?;
     let weights = match weights_p {
@@ -902,6 +932,13 @@ fn read_surface(m: &Model, id: u64) -> Result<NurbsSurface<Rational>, IoError> {
         };
     let p = as_usize(du, inst, id, "u degree")?;
     let q = as_usize(dv, inst, id, "v degree")?;
+    if p > MAX_DEGREE || q > MAX_DEGREE {
+        return Err(param_err(
+            inst,
+            id,
+            format!("degree ({p}, {q}) exceeds {MAX_DEGREE}"),
+        ));
+    }
     let rows = as_list(net_p, inst, id, "control net")?;
     let knots_u = expand_knots(mu, ku, inst, id, "u")?;
     let knots_v = expand_knots(mv, kv, inst, id, "v")?;
@@ -977,7 +1014,22 @@ struct Collector<'a, 'm> {
 }
 
 impl Collector<'_, '_> {
-    fn visit(&mut self, id: u64, from: (usize, u64)) -> Result<(), IoError> {
+    /// Depth-first, in reference order, with an explicit stack (no recursion on
+    /// input-controlled depth).
+    fn visit(&mut self, root: u64, from: (usize, u64)) -> Result<(), IoError> {
+        let mut stack = vec![(root, from)];
+        while let Some((id, from)) = stack.pop() {
+            self.visit_one(id, from, &mut stack)?;
+        }
+        Ok(())
+    }
+
+    fn visit_one(
+        &mut self,
+        id: u64,
+        from: (usize, u64),
+        stack: &mut Vec<(u64, (usize, u64))>,
+    ) -> Result<(), IoError> {
         if !self.seen.insert(id) {
             return Ok(());
         }
@@ -1020,13 +1072,11 @@ impl Collector<'_, '_> {
             "AXIS2_PLACEMENT_3D" | "CARTESIAN_POINT" | "DIRECTION" => {}
             _ => {
                 // a topological container: follow every reference
+                let mut refs = Vec::new();
                 for r in &inst.records {
-                    let mut refs = Vec::new();
                     collect_refs(&r.params, &mut refs);
-                    for c in refs {
-                        self.visit(c, here)?;
-                    }
                 }
+                stack.extend(refs.into_iter().rev().map(|c| (c, here)));
             }
         }
         Ok(())
@@ -1255,6 +1305,10 @@ pub fn sidecar_surface(v: &Value) -> Result<NurbsSurface<Rational>, IoError> {
 /// Euclidean coordinates and weight of homogeneous points, rounded to `f64`.
 fn rounded_points<'a>(pts: impl Iterator<Item = &'a [Rational]>) -> Vec<Vec<f64>> {
     pts.map(|h| {
+        if h.first().is_none_or(|w| *w == Rational::from(0)) {
+            // a point at infinity never matches (NaN ≠ NaN)
+            return vec![f64::NAN];
+        }
         let mut v = vec![Scalar::to_f64(&h[0])];
         v.extend(
             h[1..]
@@ -1395,13 +1449,12 @@ mod tests {
     #[test]
     fn syntax_errors_name_the_line_and_entity() {
         let text = "ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n#1 = A(1,2);\n#2 = B(1,,2);\nENDSEC;\nEND-ISO-10303-21;\n";
-        let e = parse_part21(text).err().expect("error").to_string();
+        let e = parse_part21(text).expect_err("error").to_string();
         assert!(e.contains("STEP line 6, entity #2"), "{e}");
-        let e = parse_part21("hello").err().expect("error").to_string();
+        let e = parse_part21("hello").expect_err("error").to_string();
         assert!(e.contains("not a STEP file"), "{e}");
         let e = parse_part21("ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n#1 = A('x);\n")
-            .err()
-            .expect("error")
+            .expect_err("error")
             .to_string();
         assert!(e.contains("unterminated string"), "{e}");
     }

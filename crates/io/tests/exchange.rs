@@ -226,6 +226,19 @@ fn write_gallery_files() {
         let ply = rcagd_io::ply::write_ply(&o.name, &mesh).expect("ply");
         std::fs::write(dir.join(format!("{stem}.ply")), ply).expect("write");
     }
+    // the same objects under AP242
+    let opts = rcagd_io::step::StepOptions {
+        schema: rcagd_io::step::StepSchema::Ap242,
+        ..Default::default()
+    };
+    let ap242 = rcagd_io::step::write_step_with(&objects, &opts).expect("step");
+    std::fs::write(dir.join("all_ap242.step"), ap242).expect("write");
+    let side = rcagd_io::step::exact_sidecar(&objects).expect("sidecar");
+    std::fs::write(
+        dir.join("all_ap242.exact.json"),
+        serde_json::to_string_pretty(&side).expect("json"),
+    )
+    .expect("write");
     let all = rcagd_io::step::write_step(&objects).expect("step");
     std::fs::write(dir.join("all.step"), all).expect("write");
     let iges = rcagd_io::iges::write_iges(&objects).expect("iges");
@@ -317,5 +330,333 @@ fn iges_round_trip_is_exact_with_the_sidecar() {
         let x = exchange_object(o).expect("exchange");
         assert_eq!(x.surfaces().expect("surfaces"), r.surfaces);
         assert_eq!(x.curves, r.curves);
+    }
+}
+
+fn quarter_object() -> Object {
+    object("arc", Geometry::Curve(circle().remove(0)))
+}
+
+#[test]
+fn step_snapshot_of_a_quarter_circle() {
+    let text = step_text(&[quarter_object()]);
+    let want = "ISO-10303-21;
+HEADER;
+FILE_DESCRIPTION(('rcagd exact rational geometry: 1 object(s)'),'2;1');
+FILE_NAME('rcagd.step','2024-01-01T00:00:00',('rcagd'),('rcagd'),'rcagd-io 0.1.0','rcagd 0.1.0','');
+FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));
+ENDSEC;
+DATA;
+#1 = APPLICATION_CONTEXT('core data for automotive mechanical design processes');
+#2 = APPLICATION_PROTOCOL_DEFINITION('international standard','automotive_design',2000,#1);
+#3 = PRODUCT_CONTEXT('',#1,'mechanical');
+#4 = PRODUCT_DEFINITION_CONTEXT('part definition',#1,'design');
+#5 = (LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.));
+#6 = (NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.));
+#7 = (NAMED_UNIT(*) SI_UNIT($,.STERADIAN.) SOLID_ANGLE_UNIT());
+#8 = UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(1.E-07),#5,'distance_accuracy_value','confusion accuracy');
+#9 = (GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((#8)) GLOBAL_UNIT_ASSIGNED_CONTEXT((#5,#6,#7)) REPRESENTATION_CONTEXT('3D','3D context with units and uncertainty'));
+#10 = CARTESIAN_POINT('',(0.,0.,0.));
+#11 = DIRECTION('',(0.,0.,1.));
+#12 = DIRECTION('',(1.,0.,0.));
+#13 = AXIS2_PLACEMENT_3D('',#10,#11,#12);
+#14 = PRODUCT('arc','arc','',(#3));
+#15 = PRODUCT_DEFINITION_FORMATION('','',#14);
+#16 = PRODUCT_DEFINITION('design','',#15,#4);
+#17 = PRODUCT_DEFINITION_SHAPE('','',#16);
+#18 = CARTESIAN_POINT('',(1.,0.,0.));
+#19 = CARTESIAN_POINT('',(1.,1.,0.));
+#20 = CARTESIAN_POINT('',(0.,1.,0.));
+#21 = (BOUNDED_CURVE() B_SPLINE_CURVE(2,(#18,#19,#20),.UNSPECIFIED.,.F.,.F.) B_SPLINE_CURVE_WITH_KNOTS((3,3),(0.,1.),.PIECEWISE_BEZIER_KNOTS.) CURVE() GEOMETRIC_REPRESENTATION_ITEM() RATIONAL_B_SPLINE_CURVE((1.,1.,2.)) REPRESENTATION_ITEM('curve 0'));
+#22 = GEOMETRIC_CURVE_SET('arc',(#21));
+#23 = GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION('arc',(#13,#22),#9);
+#24 = SHAPE_DEFINITION_REPRESENTATION(#17,#23);
+#25 = PRODUCT_RELATED_PRODUCT_CATEGORY('part',$,(#14));
+ENDSEC;
+END-ISO-10303-21;
+";
+    assert_eq!(text, want);
+}
+
+#[test]
+fn iges_snapshot_of_a_quarter_circle() {
+    let text = iges_text(&[quarter_object()]);
+    let want = "\
+rcagd exact rational geometry (IGES 5.3): 1 object(s), entities 126/128 S      1
+1H,,1H;,9Hrcagd.igs,9Hrcagd.igs,11Hrcagd 0.1.0,14Hrcagd-io 0.1.0,32,38, G      1
+6,308,15,9Hrcagd.igs,1.,2,2HMM,1,0.01,15H20240101.000000,1.E-07,1.,     G      2
+5Hrcagd,5Hrcagd,11,0,15H20240101.000000,;                               G      3
+     126       1       0       0       0       0       0       000020000D      1
+     126       0       0       2       0                     ARC       0D      2
+     406       3       0       0       0       0       0       000010300D      3
+     406       0       0       1      15                    NAME       0D      4
+     402       4       0       0       0       0       0       000000000D      5
+     402       0       0       1       7                     ARC       0D      6
+126,2,2,1,0,0,0,0.,0.,0.,1.,1.,1.,1.,1.,2.,1.,0.,0.,1.,1.,0.,0.,       1P      1
+1.,0.,0.,1.,0.,0.,1.;                                                  1P      2
+406,1,3Harc;                                                           3P      3
+402,1,1,0,1,3;                                                         5P      4
+S      1G      3D      6P      4                                        T      1
+";
+    assert_eq!(text, want);
+}
+
+fn assert_err_mentions(
+    r: Result<Vec<rcagd_io::step_read::ImportedObject>, rcagd_io::IoError>,
+    want: &[&str],
+) {
+    let e = r.expect_err("malformed input must be an error").to_string();
+    for w in want {
+        assert!(e.contains(w), "error {e:?} should mention {w:?}");
+    }
+}
+
+#[test]
+fn malformed_step_is_an_error_with_line_and_entity() {
+    use rcagd_io::step_read::read_step;
+    let good = step_text(&[quarter_object()]);
+    // a dangling reference
+    let bad = good.replace(
+        "B_SPLINE_CURVE(2,(#18,#19,#20)",
+        "B_SPLINE_CURVE(2,(#18,#19,#99)",
+    );
+    assert_err_mentions(read_step(&bad), &["#21", "#99", "not defined"]);
+    // knots that do not fit the control points
+    let bad = good.replace(
+        "B_SPLINE_CURVE_WITH_KNOTS((3,3)",
+        "B_SPLINE_CURVE_WITH_KNOTS((3,2)",
+    );
+    assert_err_mentions(read_step(&bad), &["line 28", "#21", "knot"]);
+    // a negative weight
+    let bad = good.replace(
+        "RATIONAL_B_SPLINE_CURVE((1.,1.,2.))",
+        "RATIONAL_B_SPLINE_CURVE((1.,-1.,2.))",
+    );
+    assert_err_mentions(read_step(&bad), &["#21", "weight"]);
+    // a bad number
+    let bad = good.replace(
+        "CARTESIAN_POINT('',(1.,1.,0.))",
+        "CARTESIAN_POINT('',(1.,1.E,0.))",
+    );
+    assert_err_mentions(read_step(&bad), &["#19"]);
+    // syntax: a missing parenthesis
+    let bad = good.replace(
+        "#22 = GEOMETRIC_CURVE_SET('arc',(#21));",
+        "#22 = GEOMETRIC_CURVE_SET('arc',(#21);",
+    );
+    assert_err_mentions(read_step(&bad), &["line 29", "#22"]);
+    // unsupported geometry
+    let bad = good.replace(
+        "#22 = GEOMETRIC_CURVE_SET('arc',(#21));",
+        "#22 = GEOMETRIC_CURVE_SET('arc',(#26));\n#26 = LINE('',#18,#19);",
+    );
+    assert_err_mentions(read_step(&bad), &["#26", "LINE"]);
+    // not STEP at all, and empty
+    assert_err_mentions(read_step("solid x\nendsolid x\n"), &["line 1"]);
+    assert_err_mentions(read_step(""), &["line 1"]);
+}
+
+#[test]
+fn malformed_iges_is_an_error_with_line_and_entity() {
+    use rcagd_io::iges_read::read_iges;
+    let good = iges_text(&[quarter_object()]);
+    let lines: Vec<&str> = good.lines().collect();
+    // a negative weight on the first P line of entity DE 1 (file line 11)
+    let bad = good.replace("1.,1.,1.,1.,1.,2.,", "1.,1.,1.,1.,0.,2.,");
+    assert_err_mentions(read_iges(&bad), &["line 11", "DE 1", "weight"]);
+    // knots not clamped
+    let bad = good.replace(
+        "126,2,2,1,0,0,0,0.,0.,0.,1.,",
+        "126,2,2,1,0,0,0,0.,0.,5.,1.,",
+    );
+    assert_err_mentions(read_iges(&bad), &["line 11", "DE 1", "knot"]);
+    // a parameter pointer beyond the P section
+    let bad = good.replace(
+        "     126       1       0       0       0       0       0       000020000D      1",
+        "     126      17       0       0       0       0       0       000020000D      1",
+    );
+    assert_err_mentions(read_iges(&bad), &["line 5", "DE 1"]);
+    // a group member that does not exist
+    let bad = good.replace("402,1,1,0,1,3;", "402,1,9,0,1,3;");
+    assert_err_mentions(read_iges(&bad), &["DE 5", "DE 9"]);
+    // a truncated file (no T section), a short record
+    let truncated = lines[..lines.len() - 1].join("\n");
+    assert_err_mentions(read_iges(&truncated), &["Terminate"]);
+    let short = good.replacen(lines[0], "a short record", 1);
+    assert_err_mentions(read_iges(&short), &["line 1", "column"]);
+}
+
+#[test]
+fn readers_never_panic_on_truncated_or_corrupted_files() {
+    use rcagd_io::iges_read::read_iges;
+    use rcagd_io::step_read::read_step;
+    let objects = vec![
+        quarter_object(),
+        object("bicubic", Geometry::Patch(bicubic())),
+    ];
+    let step = step_text(&objects);
+    let iges = iges_text(&objects);
+    for text in [&step, &iges] {
+        let bytes = text.as_bytes();
+        for cut in (0..bytes.len()).step_by(37) {
+            let t = String::from_utf8_lossy(&bytes[..cut]);
+            let _ = read_step(&t);
+            let _ = read_iges(&t);
+        }
+        // byte flips at many positions
+        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+        for _ in 0..400 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let mut b = bytes.to_vec();
+            let k = (x % b.len() as u64) as usize;
+            b[k] = b"0123456789.,;()#'$*-E \n"[(x >> 32) as usize % 23];
+            let t = String::from_utf8_lossy(&b);
+            let _ = read_step(&t);
+            let _ = read_iges(&t);
+        }
+    }
+}
+
+#[test]
+fn meshes_of_the_sphere_are_consistent() {
+    use rcagd_io::stl::{object_mesh, write_stl_ascii, write_stl_binary};
+    let o = &gallery()[0];
+    let mesh = object_mesh(o, &Default::default()).expect("mesh");
+    assert!(!mesh.triangles.is_empty());
+    for (p, n) in mesh.positions.iter().zip(&mesh.normals) {
+        let r = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt();
+        assert!((r - 1.0).abs() < 1e-12, "vertex on the unit sphere");
+        let d = (p[0] * n[0] + p[1] * n[1] + p[2] * n[2]).abs();
+        assert!(
+            d > 1.0 - 1e-5,
+            "normal along the radius (exact surface normal)"
+        );
+    }
+    let bin = write_stl_binary(&o.name, &mesh).expect("stl");
+    assert_eq!(bin.len(), 84 + 50 * mesh.triangles.len());
+    let ascii = write_stl_ascii(&o.name, &mesh).expect("stl");
+    assert_eq!(ascii.matches("facet normal").count(), mesh.triangles.len());
+    let ply = rcagd_io::ply::write_ply(&o.name, &mesh).expect("ply");
+    let header_end = ply
+        .windows(11)
+        .position(|w| w == b"end_header\n")
+        .expect("header")
+        + 11;
+    assert_eq!(
+        ply.len() - header_end,
+        24 * mesh.positions.len() + 13 * mesh.triangles.len()
+    );
+    let glb = rcagd_io::gltf::objects_to_glb(&gallery(), &Default::default()).expect("glb");
+    let jlen = u32::from_le_bytes([glb[12], glb[13], glb[14], glb[15]]) as usize;
+    let doc: Value = serde_json::from_slice(&glb[20..20 + jlen]).expect("json chunk");
+    assert_eq!(
+        doc["nodes"].as_array().map(Vec::len),
+        Some(1 + gallery().len())
+    );
+    assert_eq!(doc["nodes"][1]["name"], "sphere");
+    // curve objects become line strips
+    assert_eq!(doc["meshes"][4]["primitives"][0]["mode"], 3);
+    // the mesh of curves is an error, not a panic
+    assert!(object_mesh(&gallery()[4], &Default::default()).is_err());
+}
+
+#[test]
+fn pictures_have_the_requested_size() {
+    use rcagd_io::raster::{render, render_png, RenderOptions};
+    let opts = RenderOptions {
+        width: 160,
+        height: 120,
+        supersample: 2,
+        grid: 12,
+        ..Default::default()
+    };
+    for o in gallery() {
+        let img = render(&o, &opts).expect("renders");
+        assert_eq!(img.rgb.len(), 160 * 120 * 3);
+        // something was drawn: not all pixels are background-light
+        assert!(
+            img.rgb.chunks(3).filter(|p| p[0] < 150).count() > 50,
+            "{}",
+            o.name
+        );
+        let png = render_png(&o, &opts).expect("png");
+        assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+        assert_eq!(
+            u32::from_be_bytes([png[16], png[17], png[18], png[19]]),
+            160
+        );
+        assert_eq!(
+            u32::from_be_bytes([png[20], png[21], png[22], png[23]]),
+            120
+        );
+    }
+}
+
+mod property {
+    use super::*;
+    use proptest::prelude::*;
+    use rcagd_geom::nurbs::NurbsSurface;
+
+    fn small_rational() -> impl Strategy<Value = Rational> {
+        (-40i64..=40, 1i64..=12).prop_map(|(p, d)| q(p, d))
+    }
+
+    fn positive_rational() -> impl Strategy<Value = Rational> {
+        (1i64..=30, 1i64..=12).prop_map(|(p, d)| q(p, d))
+    }
+
+    fn patch() -> impl Strategy<Value = BezierPatch<Rational>> {
+        (1usize..=3, 1usize..=3).prop_flat_map(|(m, n)| {
+            proptest::collection::vec(
+                (
+                    positive_rational(),
+                    small_rational(),
+                    small_rational(),
+                    small_rational(),
+                ),
+                (m + 1) * (n + 1),
+            )
+            .prop_map(move |pts| {
+                let coords = pts
+                    .into_iter()
+                    .flat_map(|(w, x, y, z)| [w.clone(), w.clone() * x, w.clone() * y, w * z])
+                    .collect();
+                BezierPatch::from_flat(3, m, n, coords).expect("valid")
+            })
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(32))]
+
+        /// write → read → evaluate agrees with the exact patch (to f64 rounding), and
+        /// the sidecar restores the exact values, for STEP and IGES.
+        #[test]
+        fn write_read_evaluate_agrees(p in patch(), u in 0u32..=16, v in 0u32..=16) {
+            let o = object("random patch", Geometry::Patch(p.clone()));
+            let side = rcagd_io::step::exact_sidecar(std::slice::from_ref(&o)).expect("sidecar");
+            let exact = NurbsSurface::from_bezier(&p).expect("surface");
+            let (uq, vq) = (q(u as i64, 16), q(v as i64, 16));
+            let want = exact.eval(&uq, &vq).expect("finite");
+            let size = rcagd_io::stl::object_size(&o);
+            for read in [
+                rcagd_io::step_read::read_step(&step_text(std::slice::from_ref(&o))).expect("step"),
+                rcagd_io::iges_read::read_iges(&iges_text(std::slice::from_ref(&o))).expect("iges"),
+            ] {
+                prop_assert_eq!(read.len(), 1);
+                let s = read[0].surfaces_f64();
+                prop_assert_eq!(s.len(), 1);
+                let got = s[0].eval_f64(u as f64 / 16.0, v as f64 / 16.0).expect("finite");
+                for (a, b) in got.iter().zip(&want) {
+                    prop_assert!((a - Scalar::to_f64(b)).abs() <= 1e-12 * size);
+                }
+                let mut read = read;
+                rcagd_io::step_read::apply_sidecar(&mut read, &side).expect("sidecar");
+                prop_assert_eq!(&read[0].surfaces[0], &exact);
+                prop_assert_eq!(read[0].surfaces[0].eval(&uq, &vq).expect("finite"), want.clone());
+            }
+        }
     }
 }

@@ -15,9 +15,15 @@
 //!
 //! Layer rule: depends on `rcagd-algebra` and `rcagd-geom` only.
 
+pub mod canal;
 pub mod conic;
+pub mod cyclographic;
 pub mod cylinder;
 pub mod error;
+pub mod laguerre;
+pub mod lines;
+pub mod ph;
+pub mod pn;
 pub mod quadric;
 
 mod certs;

@@ -105,7 +105,7 @@ pub fn op_markdown(op: &OpSpec) -> String {
 /// The Markdown reference of every op, grouped by topic.
 pub fn markdown() -> String {
     let mut s = String::new();
-    for (topic, ops) in super::TOPICS {
+    for (topic, ops) in super::TOPICS.iter().filter(|(_, ops)| !ops.is_empty()) {
         let _ = writeln!(s, "## Ops: {topic}\n");
         for op in *ops {
             s.push_str(&op_markdown(op));

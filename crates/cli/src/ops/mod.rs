@@ -24,7 +24,7 @@ macro_rules! topics {
     };
 }
 
-topics!(kernel);
+topics!(kernel, quadric, ph, canal, pn);
 
 pub mod describe;
 

@@ -23,7 +23,7 @@ use rcagd_algebra::roots::square_free_decomposition;
 use rcagd_algebra::{Poly, Rational};
 
 /// The largest number of modular factors the recombination accepts (`2^(r−1)` subsets).
-pub const MAX_MODULAR_FACTORS: usize = 24;
+pub const MAX_MODULAR_FACTORS: usize = 16;
 
 /// The primes tried for the modular factorization.
 const PRIMES: [u64; 40] = [

@@ -34,11 +34,16 @@ pub mod pipe;
 pub mod sum_of_squares;
 
 pub use bipoly::BiPoly;
+pub use blend::{
+    blend_sphere_plane, blend_sphere_plane_f64, blend_spheres, blend_spheres_f64, BlendEnd,
+    BlendSpine, PlaneEnd, SphereBlend, SpherePlaneBlend,
+};
 pub use envelope::{
     canal_surface, canal_surface_approx, canal_surface_f64, canal_surface_with_split,
     krasauskas_bound, AxisChoice, CanalBuild, CanalOptions, CanalSurface, CharacteristicCircle,
     KrasauskasBound, Orientation, QuadraticCanal,
 };
+pub use pipe::{pipe_around_ph, pipe_around_ph_poly, pipe_around_planar, pipe_surface};
 pub use sum_of_squares::{
     sum_of_two_squares, sum_of_two_squares_approx, sum_of_two_squares_f64, GaussianSplit,
     SumOfSquares,
@@ -354,6 +359,53 @@ impl<F: Scalar> CanalSpine<F> {
         }
         Ok(())
     }
+}
+
+impl CanalSpine<Rational> {
+    /// The sphere family `μ(c(t))` of a rational curve `c(t) = (c₀, …, c₄)` of the Möbius
+    /// model `P⁴` (seed 004 §2.4–2.5, (2.13), Thm 2.3): centres `cᵢ/(c₀ − c₄)`, squared
+    /// radius `N/(c₀ − c₄)²` with `N = c₁² + c₂² + c₃² + c₄² − c₀²`. The family has a rational
+    /// radius (the setting of this module) iff `N` is the square of a polynomial; then
+    /// `W = c₀ − c₄`, `M = (c₁, c₂, c₃)`, `R = √N`.
+    ///
+    /// # Errors
+    /// [`CanalError::DegenerateSpine`] for `c₀ ≡ c₄` (a family of planes);
+    /// [`CanalError::InvalidArgument`] if `N` is not a perfect square (only `r²` is rational:
+    /// such canal surfaces are rational by Thm 2.3 but need a rational point on the
+    /// characteristic conic, which this module does not construct).
+    pub fn from_mobius_curve(c: &[Poly<Rational>; 5]) -> Result<Self, CanalError> {
+        let w = &c[0] - &c[4];
+        if w.is_zero() {
+            return Err(CanalError::DegenerateSpine(
+                "c₀ ≡ c₄: every member of the family is a plane".into(),
+            ));
+        }
+        let n = &(&(&(&(&c[1] * &c[1]) + &(&c[2] * &c[2])) + &(&c[3] * &c[3])) + &(&c[4] * &c[4]))
+            - &(&c[0] * &c[0]);
+        let r = poly_sqrt(&n).ok_or_else(|| {
+            CanalError::InvalidArgument(
+                "c₁² + c₂² + c₃² + c₄² − c₀² is not the square of a polynomial: the radius is not rational (seed 004 Thm 2.3 families with rational r² only)".into(),
+            )
+        })?;
+        Self::new(w, [c[1].clone(), c[2].clone(), c[3].clone()], r)
+    }
+}
+
+/// The polynomial square root (`None` if `p` is not a square of a rational polynomial).
+fn poly_sqrt(p: &Poly<Rational>) -> Option<Poly<Rational>> {
+    if p.is_zero() {
+        return Some(Poly::zero());
+    }
+    let lc = p.leading();
+    let c = rcagd_algebra::rational::rational_sqrt(&lc)?;
+    let mut root = Poly::constant(c);
+    for (f, k) in rcagd_algebra::roots::square_free_decomposition(p) {
+        if k % 2 == 1 {
+            return None;
+        }
+        root = &root * &f.pow((k / 2) as u32);
+    }
+    (&root * &root == *p).then_some(root)
 }
 
 /// The exact rational coefficients of a polynomial (`None` if one is irrational).

@@ -170,6 +170,17 @@ impl<F: Scalar> LinearCongruence<F> {
     }
 }
 
+/// The line `ε(u) ∩ φ(v)` of the hyperbolic net with focal lines `a₁, a₂`: the planes of
+/// the pencils about `a₁` and `a₂` (seed 003 §1.1.6, "Hyperbolisches Netz": all net lines are
+/// obtained by intersecting the pencil `ε(u)` about `a₁` with the pencil `φ(v)` about `a₂`).
+///
+/// # Errors
+/// [`LineError::CoincidentPlanes`] where `ε(u) = φ(v)` (not for skew focal lines).
+pub fn net_line<F: Scalar>(a1: &Line<F>, a2: &Line<F>, u: &F, v: &F) -> Result<Line<F>, LineError> {
+    let l = Line::from_planes(&a1.pencil_plane(u), &a2.pencil_plane(v))?;
+    Ok(Line::from_coords_unchecked(l.coords().clone()))
+}
+
 impl<F: SqrtScalar> LinearCongruence<F> {
     /// The focal lines (module docs): two real lines over `F::Ext` (hyperbolic), the real and
     /// imaginary parts of the conjugate pair (elliptic), the double line (parabolic), or
@@ -423,6 +434,17 @@ mod tests {
         let p = LinearCongruence::new(c1, LinearComplex::singular(&axis)).expect("p");
         assert_eq!(p.kind(), CongruenceKind::Parabolic);
         assert!(p.all_hold(), "{:?}", p.certify());
+    }
+
+    #[test]
+    fn net_lines_from_pencils() {
+        let a1 = aff([0, 0, 0], [1, 0, 0]);
+        let a2 = aff([0, 0, 1], [0, 1, 1]);
+        let net = LinearCongruence::from_focal_lines(&a1, &a2).expect("net");
+        for (u, v) in [(0, 0), (2, -1), (5, 3)] {
+            let l = net_line(&a1, &a2, &q(u), &q(v)).expect("line");
+            assert!(l.meets(&a1) && l.meets(&a2) && net.contains(&l));
+        }
     }
 
     #[test]

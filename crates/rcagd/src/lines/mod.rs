@@ -40,7 +40,7 @@ pub mod plucker;
 pub mod regulus;
 
 pub use complex::LinearComplex;
-pub use congruence::{CongruenceKind, FocalLines, LinearCongruence};
+pub use congruence::{net_line, CongruenceKind, FocalLines, LinearCongruence};
 pub use plucker::{reciprocal_product, Line, LineOrigin};
 pub use regulus::{common_transversals, CommonTransversals, Regulus};
 

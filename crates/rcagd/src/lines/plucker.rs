@@ -323,6 +323,19 @@ impl<F: Scalar> Line<F> {
         Line::from_coords_unchecked(self.axis_coords()).points()
     }
 
+    /// The plane `(1 − s)e + s f` of the pencil of planes through the line, `(e, f)` =
+    /// [`Self::planes`] (seed 003 §1.1.6: the pencils `ε(u)`, `φ(v)` about the focal lines).
+    pub fn pencil_plane(&self, s: &F) -> [F; 4] {
+        let (e, f) = self.planes();
+        core::array::from_fn(|i| (F::one() - s.clone()) * e[i].clone() + s.clone() * f[i].clone())
+    }
+
+    /// The point `(1 − s)p + s q` of the line, `(p, q)` = [`Self::points`].
+    pub fn point_at(&self, s: &F) -> [F; 4] {
+        let (p, q) = self.points();
+        core::array::from_fn(|i| (F::one() - s.clone()) * p[i].clone() + s.clone() * q[i].clone())
+    }
+
     /// The plane spanned by the line and a point not on it: `M(l)p` ((1.7)).
     ///
     /// # Errors

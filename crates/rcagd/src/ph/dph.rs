@@ -20,6 +20,7 @@ use super::util::*;
 use super::PhError;
 use rcagd_algebra::bernstein;
 use rcagd_algebra::complex::Complex;
+use rcagd_algebra::quadratic::{sqrt_in_extension, QuadExt};
 use rcagd_algebra::{Certificate, Poly, Scalar};
 
 /// `ρ = c·ω̃²`: the polynomial `ω = √c·ω̃` of a DPH curve (`c > 0`; `c = 1` whenever `c`
@@ -37,6 +38,30 @@ impl<F: Scalar> DphData<F> {
     pub fn omega_f64(&self, t: f64) -> f64 {
         self.c.to_f64().sqrt() * poly_f64(&self.omega_tilde).eval(&t)
     }
+    /// `ω = √c·ω̃` exactly, as a polynomial over the real quadratic field `Q(√c)`
+    /// ([`QuadExt`]; rational coefficients when `c` is a square).
+    ///
+    /// # Errors
+    /// [`PhError::Irrational`] if a coefficient is not rational (non-finite `f64`).
+    pub fn omega_exact(&self) -> Result<Poly<QuadExt>, PhError> {
+        let c = self
+            .c
+            .to_rational()
+            .ok_or_else(|| PhError::Irrational("c is not a finite rational".into()))?;
+        let s = sqrt_in_extension(&c)?;
+        let coeffs = self
+            .omega_tilde
+            .coeffs()
+            .iter()
+            .map(|x| {
+                x.to_rational()
+                    .map(|q| QuadExt::rational(q) * s.clone())
+                    .ok_or_else(|| PhError::Irrational("ω̃ has a non-finite coefficient".into()))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(Poly::new(coeffs))
+    }
+
     /// `ω² = c·ω̃² = ρ`.
     pub fn omega_squared(&self) -> Poly<F> {
         (&self.omega_tilde * &self.omega_tilde).scale(&self.c)
@@ -66,10 +91,18 @@ impl<F: Scalar> PhPolyCurve<F> {
         let rho = self.rho()?;
         // a line iff ρ = |r''|² − σ'² ≡ 0 (relative to |r''|² for f64)
         let d2 = pderiv(&pderiv(&self.r));
-        if poly_negligible(&rho, poly_scale(&pdot(&d2, &d2))) {
+        let line = if F::EXACT {
+            rho.is_zero()
+        } else {
+            // f64: ρ is a difference of terms of size |r''|²; only round-off noise is a line
+            poly_scale(&rho) <= 1e-13 * poly_scale(&pdot(&d2, &d2))
+        };
+        if line {
             return Ok(DphTest::Line);
         }
-        match scaled_square(&rho) {
+        // f64 round-off in ρ = |r''|² − σ'² is about ε·|r''|² per coefficient
+        let noise = 1e-14 * poly_scale(&pdot(&d2, &d2));
+        match scaled_square(&rho, noise) {
             Some((c, omega_tilde)) => Ok(DphTest::Dph(DphData { c, omega_tilde })),
             None => Ok(DphTest::NotDph { rho }),
         }
@@ -420,6 +453,90 @@ mod tests {
 
     fn r(p: i64, q: i64) -> Rational {
         Rational::from(p) / Rational::from(q)
+    }
+
+    /// Regression: a large septic (cancellation in f64 ρ).
+    #[test]
+    fn septic_large_f64_agrees() {
+        let w = [
+            cx(r(-3, 1), r(2, 1)),
+            cx(r(-2, 1), r(4, 1)),
+            cx(r(0, 1), r(0, 1)),
+        ];
+        let h = [r(1, 1)];
+        let roots = dph_septic_z_roots(&h, &w).unwrap();
+        let c = dph_septic(
+            &h,
+            &w,
+            &cx(r(-3, 1), r(1, 1)),
+            &cx(r(0, 1), r(-1, 1)),
+            &cx(r(0, 1), r(4, 1)),
+            &roots[0],
+            [r(0, 1), r(0, 1), r(0, 1)],
+        )
+        .unwrap();
+        let pc = c.to_poly_curve();
+        let exact = pc.dph_test().unwrap();
+        let f = pc.to_f64();
+        let approx = f.dph_test().unwrap();
+        assert!(matches!(exact, DphTest::Dph(_)));
+        assert!(matches!(approx, DphTest::Dph(_)));
+    }
+
+    /// Regression: f64 DPH test on a septic with `α_1 = β_0 = 0`.
+    #[test]
+    fn septic_sparse_f64_agrees() {
+        let w = [
+            cx(r(-2, 1), r(-5, 3)),
+            cx(r(1, 1), r(0, 1)),
+            cx(r(4, 1), r(1, 1)),
+        ];
+        let h = [r(1, 1)];
+        let roots = dph_septic_z_roots(&h, &w).unwrap();
+        let c = dph_septic(
+            &h,
+            &w,
+            &cx(r(0, 1), r(-1, 1)),
+            &cx(r(0, 1), r(0, 1)),
+            &cx(r(0, 1), r(0, 1)),
+            &roots[1],
+            [r(0, 1), r(0, 1), r(0, 1)],
+        )
+        .unwrap();
+        let pc = c.to_poly_curve();
+        let exact = pc.dph_test().unwrap();
+        let f = pc.to_f64();
+        let approx = f.dph_test().unwrap();
+        assert!(matches!(exact, DphTest::Dph(_)));
+        assert!(matches!(approx, DphTest::Dph(_)));
+    }
+
+    /// Regression: `w = i·(real)` (degenerate overlap, `αβ' − α'β` real).
+    #[test]
+    fn septic_imaginary_w_f64_agrees() {
+        let w = [
+            cx(r(0, 1), r(1, 2)),
+            cx(r(0, 1), r(2, 1)),
+            cx(r(0, 1), r(2, 1)),
+        ];
+        let h = [r(1, 1)];
+        let roots = dph_septic_z_roots(&h, &w).unwrap();
+        let c = dph_septic(
+            &h,
+            &w,
+            &cx(r(0, 1), r(-1, 3)),
+            &cx(r(0, 1), r(2, 1)),
+            &cx(r(3, 1), r(-1, 1)),
+            &roots[0],
+            [r(0, 1), r(0, 1), r(0, 1)],
+        )
+        .unwrap();
+        let pc = c.to_poly_curve();
+        let exact = pc.dph_test().unwrap();
+        let f = pc.to_f64();
+        let approx = f.dph_test().unwrap();
+        assert!(matches!(exact, DphTest::Dph(_)));
+        assert!(matches!(approx, DphTest::Dph(_)));
     }
 
     /// Regression: `w` with a real root (degenerate overlap); f64 must agree with exact.

@@ -74,21 +74,28 @@ impl<F: Scalar> PhPolyCurve<F> {
         pdot(&pcross(&d1, &d2), &d3)
     }
 
-    /// `ρ = |r'×r''|²/σ²` (exact polynomial division; NOTES-001 ALG-4, seed 001 (3.17)).
+    /// `ρ = |r'×r''|²/σ²` (NOTES-001 ALG-4, seed 001 (3.17)): by exact polynomial division
+    /// for exact scalars; for `f64` by the division-free identity `ρ = |r''|² − σ'²`
+    /// (from `|r'×r''|² = |r'|²|r''|² − (r'·r'')²`, `|r'|² = σ²`, `r'·r'' = σσ'`), since
+    /// long division in floating point amplifies round-off in the low coefficients.
     ///
     /// # Errors
-    /// [`PhError::Degenerate`] if `σ ≡ 0`; [`PhError::NotPh`] if the division leaves a
-    /// remainder (then `σ` is not the speed of `r`).
+    /// [`PhError::Degenerate`] if `σ ≡ 0`; [`PhError::NotPh`] if (exactly) the division
+    /// leaves a remainder (then `σ` is not the speed of `r`).
     pub fn rho(&self) -> Result<Poly<F>, PhError> {
         if self.sigma.is_zero() {
             return Err(PhError::Degenerate("σ ≡ 0".into()));
+        }
+        if !F::EXACT {
+            let d2 = pderiv(&pderiv(&self.r));
+            let sd = self.sigma.derivative();
+            return Ok(trim_noise(&pdot(&d2, &d2) - &(&sd * &sd)));
         }
         let c = self.cross_r1_r2();
         let c2 = pdot(&c, &c);
         let s2 = &self.sigma * &self.sigma;
         let (q, rem) = c2.div_rem(&s2)?;
-        let q = trim_noise(q);
-        if !poly_negligible(&rem, poly_scale(&c2)) {
+        if !rem.is_zero() {
             return Err(PhError::NotPh(format!(
                 "|r'×r''|² is not divisible by σ²: remainder {}",
                 fmt_poly(&rem)
@@ -127,16 +134,35 @@ impl<F: Scalar> PhPolyCurve<F> {
 
     /// Bending energy `E = ∫_a^b κ²σ dt = ∫_a^b ρ/σ³ dt` (seed 001 (9.29); NOTES-001
     /// ALG-10 step 9), by adaptive Gauss–Legendre quadrature in `f64` (relative accuracy
-    /// about `1e-12` for regular curves).
+    /// about `1e-12` for regular curves). Exact scalars integrate the exact `ρ/σ³`; `f64`
+    /// evaluates `|r'×r''|²/σ⁵` pointwise.
     ///
     /// # Errors
     /// As [`Self::rho`]; [`PhError::Degenerate`] if `σ` vanishes in `[a, b]`.
     pub fn bending_energy_between(&self, a: f64, b: f64) -> Result<f64, PhError> {
-        let rho = poly_f64(&self.rho()?);
+        // exact scalars: the exact ρ; f64: |r'×r''|²/σ⁵ pointwise (no coefficient-level
+        // cancellation as in ρ = |r''|² − σ'²)
+        let rho = if F::EXACT {
+            Some(poly_f64(&self.rho()?))
+        } else {
+            None
+        };
         let sigma = poly_f64(&self.sigma);
+        let d1 = pderiv(&[
+            poly_f64(&self.r[0]),
+            poly_f64(&self.r[1]),
+            poly_f64(&self.r[2]),
+        ]);
+        let d2 = pderiv(&d1);
         let f = |t: f64| {
             let s = sigma.eval(&t);
-            rho.eval(&t) / (s * s * s)
+            match &rho {
+                Some(rho) => rho.eval(&t) / (s * s * s),
+                None => {
+                    let c = cross3(&peval(&d1, &t), &peval(&d2, &t));
+                    dot3(&c, &c) / (s * s * s * s * s)
+                }
+            }
         };
         let v = adaptive_gauss(&f, a, b, 1e-13, 40);
         if !v.is_finite() {

@@ -161,6 +161,37 @@ impl<F: Scalar> PhPolyCurve<F> {
         certs
     }
 
+    /// Certificates of an outcome of [`Self::helix_test`]: [`Self::certify_helix`] for an
+    /// axis; `n·r' ≡ 0` for a planar curve (a trivial helix, ψ = π/2); `r' × r'' ≡ 0` for a
+    /// line; a failing certificate for [`HelixTest::NotHelix`].
+    pub fn certify_helix_test(&self, t: &HelixTest<F>) -> Vec<Certificate> {
+        let d = self.hodograph();
+        match t {
+            HelixTest::Helix(h) => self.certify_helix(h),
+            HelixTest::Planar { normal } => vec![identity_cert(
+                format!(
+                    "n·r' ≡ 0 with n = {} (planar: a helix with ψ = π/2)",
+                    fmt_v3(normal)
+                ),
+                &pdot_const(normal, &d),
+                &Poly::zero(),
+            )],
+            HelixTest::Line => {
+                let c = pcross(&d, &pderiv(&d));
+                vec![identity_cert(
+                    "|r'×r''|² ≡ 0 (straight line)",
+                    &pdot(&c, &c),
+                    &Poly::zero(),
+                )]
+            }
+            HelixTest::NotHelix => vec![Certificate::fails(
+                "a·r' ≡ σ (helix axis)",
+                "the linear system a·r'(t) ≡ σ(t) has no solution",
+                F::EXACT,
+            )],
+        }
+    }
+
     /// `κ/τ = ω³/((r'×r'')·r''')` squared, as the rational function `ρ³/trip²`
     /// (seed 001 (4.7); constant iff the curve is a helix, Lancret).
     ///

@@ -44,7 +44,7 @@
 //! NOTES-001 ALG-10 step 3) is computed in `f64`.
 
 use super::frame::RationalFunction;
-use super::helix::HelixData;
+use super::helix::HelixTest;
 use super::hodograph::{solve_qiq, PhCurve, PhPolyCurve};
 use super::util::*;
 use super::PhError;
@@ -110,8 +110,8 @@ pub struct HermiteInterpolant {
     pub exact_control_points: Option<Vec<[Rational; 3]>>,
     /// Bending energy `∫κ²σ dt` (seed 001 (9.29)).
     pub bending_energy: f64,
-    /// Helix axis data (`f64` axis test).
-    pub helix: Option<HelixData<f64>>,
+    /// The `f64` helix test: an axis (`a·r' ≡ σ`), or planar (ψ = π/2, a trivial helix).
+    pub helix: HelixTest<f64>,
     /// `true` for the least-energy interpolant(s) (ties within `1e-9` relative).
     pub least_energy: bool,
 }
@@ -353,10 +353,7 @@ fn solve_in<K: Scalar>(data: HermiteData<K>, m: K) -> Result<HermiteSolution<K>,
             let curve = build_f64_curve(&data, &x, c0, c2)?;
             let pc = curve.to_poly_curve();
             let energy = pc.bending_energy().unwrap_or(f64::INFINITY);
-            let helix = match pc.helix_test() {
-                Ok(super::HelixTest::Helix(hd)) => Some(hd),
-                _ => None,
-            };
+            let helix = pc.helix_test().unwrap_or(HelixTest::NotHelix);
             let phi = phi_of(&curve);
             interpolants.push(HermiteInterpolant {
                 root_index: idx,
@@ -577,20 +574,18 @@ impl<K: Scalar> HermiteSolution<K> {
                 &hf,
             ));
             certs.extend(s.curve.certify());
-            if let Some(hx) = &s.helix {
-                certs.extend(s.curve.to_poly_curve().certify_helix(hx));
-            } else {
-                certs.push(Certificate::fails(
-                    format!("interpolant {i}: helix axis exists"),
-                    "no axis found",
-                    false,
-                ));
-            }
+            certs.extend(s.curve.to_poly_curve().certify_helix_test(&s.helix));
             if let Some(ep) = &s.exact_control_points {
                 certs.extend(certify_exact_points(i, ep, d));
             }
         }
         certs
+    }
+}
+
+impl<K: Scalar> crate::Certified for HermiteSolution<K> {
+    fn certify(&self) -> Vec<Certificate> {
+        HermiteSolution::certify(self)
     }
 }
 
@@ -642,8 +637,8 @@ fn certify_exact_points<K: Scalar>(
     match PhPolyCurve::from_polynomials([comp(0), comp(1), comp(2)]) {
         Ok(pc) => {
             certs.extend(pc.certify());
-            match pc.helix() {
-                Ok(hx) => certs.extend(pc.certify_helix(&hx)),
+            match pc.helix_test() {
+                Ok(t) => certs.extend(pc.certify_helix_test(&t)),
                 Err(e) => certs.push(Certificate::fails(
                     format!("interpolant {i} (exact): helix"),
                     e.to_string(),

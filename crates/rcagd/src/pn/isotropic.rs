@@ -278,7 +278,7 @@ impl<F: Scalar> IsotropicSurface<F> {
             num: (g * &cc).scale(&two),
             den: d * &n0,
         };
-        let mut candidates = vec![c.clone(), d.clone()];
+        let mut candidates = vec![jac.clone(), c.clone(), d.clone()];
         candidates.extend(extra.iter().cloned());
         PnSurface::assemble(
             format!("Λ⁻¹({})", self.name),

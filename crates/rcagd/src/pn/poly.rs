@@ -482,7 +482,7 @@ pub(crate) enum Sign<F> {
     /// The polynomial vanishes at this (exact) point.
     ZeroAt([F; 2]),
     /// The polynomial takes opposite signs at these two points (so it vanishes between).
-    SignChange([F; 2], [F; 2]),
+    Changes([F; 2], [F; 2]),
     /// Not decided within the subdivision budget; the polynomial may vanish near here.
     Undecided([F; 2]),
 }
@@ -517,7 +517,7 @@ pub(crate) fn sign_on_domain<F: Scalar>(
                 neg.get_or_insert(c);
             }
             if let (Some(a), Some(b)) = (&pos, &neg) {
-                return Sign::SignChange(a.clone(), b.clone());
+                return Sign::Changes(a.clone(), b.clone());
             }
         }
         let local = to_local(p, &d);
@@ -554,6 +554,88 @@ pub(crate) fn identity_cert<F: Scalar>(
 ) -> Certificate {
     let scale = 16.0 * (mag(lhs) + mag(rhs)) * (1 + lhs.num_terms() + rhs.num_terms()) as f64;
     zero_cert(property, &(lhs - rhs), scale)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rcagd_algebra::Rational;
+
+    type Q = Rational;
+
+    fn q(p: i64, d: i64) -> Q {
+        Q::from_ratio(p, d)
+    }
+
+    fn u() -> MPoly<Q> {
+        var(0)
+    }
+    fn v() -> MPoly<Q> {
+        var(1)
+    }
+
+    #[test]
+    fn exact_division() {
+        let a = &(&u() * &u()) + &(&v() * &v()) + int(1);
+        let b = &(&u() * &v()) - &int(3);
+        let p = &a * &b;
+        assert_eq!(div_exact(&p, &a), Some(b.clone()));
+        assert_eq!(div_exact(&p, &b), Some(a.clone()));
+        assert_eq!(div_exact(&(&p + &int(1)), &a), None);
+        assert_eq!(div_exact(&p, &MPoly::zero(2)), None);
+        let mut polys = vec![&p * &b, &a * &(&b * &b), &b * &b];
+        assert_eq!(cancel_common(&mut polys, &[b.clone(), a.clone()]), 2);
+        assert_eq!(polys[2], int(1));
+        // f64 division with rounding noise
+        let pf = p.map(Scalar::to_f64);
+        let af = a.map(Scalar::to_f64);
+        let qf = div_exact(&pf, &af).expect("divisible");
+        assert!((qf.coeff(&[1, 1]) - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn content_and_composition() {
+        let mut polys = vec![u().scale(&q(4, 6)), v().scale(&q(-2, 9))];
+        normalize_content(&mut polys);
+        assert_eq!(polys[0], u().scale(&q(3, 1)));
+        assert_eq!(polys[1], v().scale(&q(-1, 1)));
+        let p = &(&u() * &u()) - &v();
+        let c = compose(&p, &[&v() + &int(1), u()]);
+        assert_eq!(
+            c,
+            &(&(&v() * &v()) + &v().scale(&q(2, 1))) + &(&int(1) - &u())
+        );
+    }
+
+    #[test]
+    fn bernstein_patch_and_signs() {
+        // W = u² + v² + 1 on [−1, 2] × [0, 3]: positive
+        let w = &(&(&u() * &u()) + &(&v() * &v())) + &int(1);
+        let d = Domain::new(q(-1, 1), q(2, 1), q(0, 1), q(3, 1)).expect("rect");
+        assert_eq!(sign_on_domain(&w, &d, 64), Sign::Positive);
+        assert_eq!(sign_on_domain(&(-w.clone()), &d, 64), Sign::Negative);
+        // u − v vanishes on the diagonal
+        let l = &u() - &v();
+        assert!(matches!(
+            sign_on_domain(&l, &d, 64),
+            Sign::ZeroAt(_) | Sign::Changes(..)
+        ));
+        // u² − 1/4 − v² · 0: zero inside
+        let z = &(&u() * &u()) - &cst(q(1, 4));
+        assert!(matches!(
+            sign_on_domain(&z, &Domain::unit(), 64),
+            Sign::Changes(..) | Sign::ZeroAt(_)
+        ));
+        // the patch reproduces the map
+        let x = &(&u() * &v()) + &int(2);
+        let patch = patch_of(&[w.clone(), x.clone()], &d).expect("patch");
+        let p = patch.eval(&q(1, 3), &q(1, 2)).expect("finite");
+        let (uu, vv) = (q(-1, 1) + q(1, 1), q(3, 2));
+        let want =
+            (uu.clone() * vv.clone() + q(2, 1)) / (uu.clone() * uu + vv.clone() * vv + q(1, 1));
+        assert_eq!(p[0], want);
+        assert!(Domain::new(q(1, 1), q(0, 1), q(0, 1), q(1, 1)).is_err());
+    }
 }
 
 impl<F: Scalar> PartialEq for RatFn<F> {
@@ -660,84 +742,152 @@ pub(crate) fn rational_two_squares<F: Scalar>(c: &F) -> Option<(F, F)> {
     None
 }
 
+// -------------------------------------------------------------------------------------
+// Greatest common divisors in Q[u, v] (exact scalars only)
+// -------------------------------------------------------------------------------------
+
+use rcagd_algebra::Poly;
+
+/// `p` as a polynomial in `v` (variable 1) with coefficients in `Q[u]`, low degree first,
+/// trimmed.
+fn to_bi<F: Scalar>(p: &MPoly<F>) -> Vec<Poly<F>> {
+    let dv = p.degree_in(1).unwrap_or(0) as usize;
+    let du = p.degree_in(0).unwrap_or(0) as usize;
+    let mut rows = vec![vec![F::zero(); du + 1]; dv + 1];
+    for (e, c) in p.terms() {
+        let i = e.first().copied().unwrap_or(0) as usize;
+        let j = e.get(1).copied().unwrap_or(0) as usize;
+        rows[j][i] = c.clone();
+    }
+    let mut out: Vec<Poly<F>> = rows.into_iter().map(Poly::new).collect();
+    while out.last().is_some_and(|c| c.is_zero()) {
+        out.pop();
+    }
+    out
+}
+
+fn from_bi<F: Scalar>(c: &[Poly<F>]) -> MPoly<F> {
+    let mut terms = Vec::new();
+    for (j, p) in c.iter().enumerate() {
+        for (i, a) in p.coeffs().iter().enumerate() {
+            terms.push((vec![i as u32, j as u32], a.clone()));
+        }
+    }
+    MPoly::from_terms(2, terms).unwrap_or_else(|_| MPoly::zero(2))
+}
+
+fn bi_content<F: Scalar>(c: &[Poly<F>]) -> Poly<F> {
+    c.iter().fold(Poly::zero(), |g, p| g.gcd(p))
+}
+
+fn bi_primitive<F: Scalar>(c: &[Poly<F>]) -> Vec<Poly<F>> {
+    let g = bi_content(c);
+    if g.is_zero() {
+        return c.to_vec();
+    }
+    c.iter()
+        .map(|p| p.div_exact(&g).unwrap_or_else(|_| p.clone()))
+        .collect()
+}
+
+/// The pseudo-remainder of `a` by `b` in `v` (coefficients in `Q[u]`).
+fn bi_prem<F: Scalar>(a: &[Poly<F>], b: &[Poly<F>]) -> Vec<Poly<F>> {
+    let n = b.len() - 1;
+    let lc = b[n].clone();
+    let mut r: Vec<Poly<F>> = a.to_vec();
+    while r.len() > n && !r.is_empty() {
+        let d = r.len() - 1;
+        let c = r[d].clone();
+        let shift = d - n;
+        let mut next: Vec<Poly<F>> = r.iter().map(|x| &lc * x).collect();
+        for (k, bk) in b.iter().enumerate() {
+            next[k + shift] = &next[k + shift] - &(&c * bk);
+        }
+        next.pop();
+        while next.last().is_some_and(|x| x.is_zero()) {
+            next.pop();
+        }
+        r = next;
+    }
+    r
+}
+
+/// The greatest common divisor of two polynomials in `Q[u, v]` (up to a constant factor):
+/// contents in `Q[u]` by Euclid, primitive parts by the primitive pseudo-remainder
+/// sequence in `v`. For `f64` it returns the constant 1 (no cancellation).
+pub(crate) fn gcd2<F: Scalar>(p: &MPoly<F>, q: &MPoly<F>) -> MPoly<F> {
+    if !F::EXACT {
+        return int(1);
+    }
+    if p.is_zero() {
+        return q.clone();
+    }
+    if q.is_zero() {
+        return p.clone();
+    }
+    let (a, b) = (to_bi(p), to_bi(q));
+    let cont = bi_content(&a).gcd(&bi_content(&b));
+    let (mut a, mut b) = (bi_primitive(&a), bi_primitive(&b));
+    if a.len() < b.len() {
+        std::mem::swap(&mut a, &mut b);
+    }
+    let pp = loop {
+        if b.is_empty() {
+            break a;
+        }
+        if b.len() == 1 {
+            // b is constant in v and primitive: a unit of Q[u][v]
+            break vec![Poly::constant(F::one())];
+        }
+        let r = bi_prem(&a, &b);
+        if r.is_empty() {
+            break b;
+        }
+        a = b;
+        b = bi_primitive(&r);
+    };
+    let g: Vec<Poly<F>> = pp.iter().map(|c| c * &cont).collect();
+    from_bi(&g)
+}
+
+/// Divides all polynomials by their greatest common divisor (exact scalars; a no-op for
+/// `f64`). Returns the divisor.
+pub(crate) fn cancel_gcd<F: Scalar>(polys: &mut [MPoly<F>]) -> MPoly<F> {
+    let g = polys.iter().fold(MPoly::zero(2), |g, p| gcd2(&g, p));
+    if g.total_degree().unwrap_or(0) == 0 {
+        return int(1);
+    }
+    match polys
+        .iter()
+        .map(|p| div_exact(p, &g))
+        .collect::<Option<Vec<_>>>()
+    {
+        Some(qs) => {
+            polys.clone_from_slice(&qs);
+            g
+        }
+        None => int(1),
+    }
+}
+
 #[cfg(test)]
-mod tests {
+mod gcd_tests {
     use super::*;
     use rcagd_algebra::Rational;
 
-    type Q = Rational;
-
-    fn q(p: i64, d: i64) -> Q {
-        Q::from_ratio(p, d)
-    }
-
-    fn u() -> MPoly<Q> {
-        var(0)
-    }
-    fn v() -> MPoly<Q> {
-        var(1)
-    }
-
     #[test]
-    fn exact_division() {
-        let a = &(&u() * &u()) + &(&v() * &v()) + int(1);
-        let b = &(&u() * &v()) - &int(3);
-        let p = &a * &b;
-        assert_eq!(div_exact(&p, &a), Some(b.clone()));
-        assert_eq!(div_exact(&p, &b), Some(a.clone()));
-        assert_eq!(div_exact(&(&p + &int(1)), &a), None);
-        assert_eq!(div_exact(&p, &MPoly::zero(2)), None);
-        let mut polys = vec![&p * &b, &a * &(&b * &b), &b * &b];
-        assert_eq!(cancel_common(&mut polys, &[b.clone(), a.clone()]), 2);
-        assert_eq!(polys[2], int(1));
-        // f64 division with rounding noise
-        let pf = p.map(Scalar::to_f64);
-        let af = a.map(Scalar::to_f64);
-        let qf = div_exact(&pf, &af).expect("divisible");
-        assert!((qf.coeff(&[1, 1]) - 1.0).abs() < 1e-12);
-    }
-
-    #[test]
-    fn content_and_composition() {
-        let mut polys = vec![u().scale(&q(4, 6)), v().scale(&q(-2, 9))];
-        normalize_content(&mut polys);
-        assert_eq!(polys[0], u().scale(&q(3, 1)));
-        assert_eq!(polys[1], v().scale(&q(-1, 1)));
-        let p = &(&u() * &u()) - &v();
-        let c = compose(&p, &[&v() + &int(1), u()]);
-        assert_eq!(
-            c,
-            &(&(&v() * &v()) + &v().scale(&q(2, 1))) + &(&int(1) - &u())
-        );
-    }
-
-    #[test]
-    fn bernstein_patch_and_signs() {
-        // W = u² + v² + 1 on [−1, 2] × [0, 3]: positive
-        let w = &(&(&u() * &u()) + &(&v() * &v())) + &int(1);
-        let d = Domain::new(q(-1, 1), q(2, 1), q(0, 1), q(3, 1)).expect("rect");
-        assert_eq!(sign_on_domain(&w, &d, 64), Sign::Positive);
-        assert_eq!(sign_on_domain(&(-w.clone()), &d, 64), Sign::Negative);
-        // u − v vanishes on the diagonal
-        let l = &u() - &v();
-        assert!(matches!(
-            sign_on_domain(&l, &d, 64),
-            Sign::ZeroAt(_) | Sign::SignChange(..)
-        ));
-        // u² − 1/4 − v² · 0: zero inside
-        let z = &(&u() * &u()) - &cst(q(1, 4));
-        assert!(matches!(
-            sign_on_domain(&z, &Domain::unit(), 64),
-            Sign::SignChange(..) | Sign::ZeroAt(_)
-        ));
-        // the patch reproduces the map
-        let x = &(&u() * &v()) + &int(2);
-        let patch = patch_of(&[w.clone(), x.clone()], &d).expect("patch");
-        let p = patch.eval(&q(1, 3), &q(1, 2)).expect("finite");
-        let (uu, vv) = (q(-1, 1) + q(1, 1), q(3, 2));
-        let want =
-            (uu.clone() * vv.clone() + q(2, 1)) / (uu.clone() * uu + vv.clone() * vv + q(1, 1));
-        assert_eq!(p[0], want);
-        assert!(Domain::new(q(1, 1), q(0, 1), q(0, 1), q(1, 1)).is_err());
+    fn bivariate_gcd() {
+        let (u, v) = (var::<Rational>(0), var::<Rational>(1));
+        let a = &(&(&u * &u) + &(&v * &v)) + &int(1);
+        let b = &(&u * &v) - &int(3);
+        let c = &u + &int(2);
+        let p = &(&a * &b) * &c;
+        let q = &(&a * &c) * &(&v + &int(5));
+        let g = gcd2(&p, &q);
+        assert!(div_exact(&g, &(&a * &c)).is_some_and(|k| k.total_degree() == Some(0)));
+        let mut polys = vec![p.clone(), q.clone()];
+        cancel_gcd(&mut polys);
+        assert_eq!(polys[0].total_degree(), Some(2));
+        assert_eq!(gcd2(&u, &v).total_degree(), Some(0));
     }
 }

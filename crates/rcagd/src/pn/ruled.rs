@@ -125,7 +125,7 @@ impl<F: Scalar> CycleFamily<F> {
             f(&self.radius),
             w * w,
         ];
-        cancel_common(&mut polys, &[w.clone()]);
+        cancel_common(&mut polys, std::slice::from_ref(w));
         let den = polys.pop().unwrap_or_else(|| int(1));
         let r = polys.pop().unwrap_or_else(|| MPoly::zero(2));
         CycleFamily {
@@ -314,6 +314,11 @@ impl<F: Scalar> ConeFamilyEnvelope<F> {
         let mut extra = cands;
         extra.extend([w1.clone(), w2.clone()]);
         let surface = isotropic.to_pn_surface_with(&extra)?;
+        if surface.point_map_degenerate() {
+            return Err(PnError::Developable(
+                "the envelope of the cones is a curve or a point (det(x_u, x_v, n) ≡ 0), not a surface".into(),
+            ));
+        }
         Ok(ConeFamilyEnvelope {
             c1,
             c2,
@@ -671,6 +676,528 @@ impl<F: Scalar> Certified for EllipsoidPn<F> {
     fn certify(&self) -> Vec<Certificate> {
         let mut out = self.envelope.certify();
         out.push(self.dual_quadric_certificate(self.surface()));
+        out
+    }
+}
+
+// -------------------------------------------------------------------------------------
+// Theorem 5.2: offsets of ruled 2-manifolds in Rⁿ
+// -------------------------------------------------------------------------------------
+
+/// How to obtain the rational unit normal of a ruled manifold (Theorem 5.2, Steps 1–2;
+/// the seed finds it with Prop. 5.1, a rational point on a conic family, which needs
+/// roots of polynomials in general — NOTES-004 §0).
+#[derive(Debug, Clone)]
+pub enum NormalHint<F> {
+    /// Search: a normal `z` linear in `u` (5.23)/(5.24) whose squared length is a square
+    /// at a constant ruling parameter `u* ∈ {∞, 0, ±1, ±2, ±1/2, ±3}` (or, where the normal
+    /// space is constant along the rulings, a constant combination of two normals).
+    Search,
+    /// A given rational unit normal field `m(t, u)` (validated exactly).
+    UnitNormal(Vec<RatFn<F>>),
+    /// A given ruling parameter `u*(t)` at which the chosen normal has rational length.
+    RulingPoint(RatFn<F>),
+}
+
+/// `(g, p_t, P, w)` polynomial vectors of a ruled manifold (see `RuledManifold::polys`).
+type RuledPolys<F> = (Vec<MPoly<F>>, Vec<MPoly<F>>, Vec<MPoly<F>>, MPoly<F>);
+
+/// A rational ruled 2-manifold `p(t, u) = l(t) + u g(t)` in `Rⁿ` (seed (5.13), `k = 1`).
+#[derive(Debug, Clone)]
+pub struct RuledManifold<F> {
+    l: Vec<RatFn<F>>,
+    g: Vec<RatFn<F>>,
+}
+
+/// Substitutes `u = a/b` into a polynomial of degree ≤ `k` in `x₁` (`u`): the numerator
+/// `Σ P_j a^j b^{k−j}` over `b^k`.
+fn subst_u<F: Scalar>(p: &MPoly<F>, a: &MPoly<F>, b: &MPoly<F>, k: u32) -> MPoly<F> {
+    let mut acc = MPoly::zero(2);
+    for (e, c) in p.terms() {
+        let j = e.get(1).copied().unwrap_or(0);
+        let mut rest = e.to_vec();
+        if let Some(x) = rest.get_mut(1) {
+            *x = 0;
+        }
+        let mono = MPoly::monomial(2, &rest, c.clone());
+        acc = &acc + &(&(&mono * &a.pow(j)) * &b.pow(k.saturating_sub(j)));
+    }
+    acc
+}
+
+impl<F: Scalar> RuledManifold<F> {
+    /// The ruled 2-manifold `l(t) + u g(t)` (`t` = variable 0, `u` = variable 1); `l` and
+    /// `g` have the same length `n ≥ 3` and depend on `t` only.
+    ///
+    /// # Errors
+    /// [`PnError::InvalidInput`] for mismatched lengths, `n < 3`, `g ≡ 0`, or a dependence
+    /// on other variables.
+    pub fn new(l: Vec<RatFn<F>>, g: Vec<RatFn<F>>) -> Result<Self, PnError> {
+        if l.len() != g.len() || l.len() < 3 {
+            return Err(PnError::InvalidInput(format!(
+                "a ruled manifold in Rⁿ needs l and g of the same length n ≥ 3 (got {} and {})",
+                l.len(),
+                g.len()
+            )));
+        }
+        if g.iter().all(|x| x.num.is_zero()) {
+            return Err(PnError::InvalidInput(
+                "the generator g(t) is identically zero".into(),
+            ));
+        }
+        if !l.iter().chain(&g).all(|f| only_t(&f.num) && only_t(&f.den)) {
+            return Err(PnError::InvalidInput(
+                "l and g must depend on t (variable 0) only".into(),
+            ));
+        }
+        Ok(RuledManifold { l, g })
+    }
+
+    /// The ambient dimension `n`.
+    pub fn dim(&self) -> usize {
+        self.l.len()
+    }
+
+    /// Polynomial vectors proportional to `g` and to `p_t = l̇ + u ġ` (common denominators
+    /// cleared), and the point numerators `(P, w)` with `p = P/w`.
+    fn polys(&self) -> RuledPolys<F> {
+        let ld = self.l.iter().fold(int::<F>(1), |a, f| &a * &f.den);
+        let gd = self.g.iter().fold(int::<F>(1), |a, f| &a * &f.den);
+        let over = |f: &RatFn<F>, all: &[RatFn<F>]| -> MPoly<F> {
+            all.iter()
+                .filter(|x| !std::ptr::eq(*x, f))
+                .fold(f.num.clone(), |a, x| &a * &x.den)
+        };
+        let ln: Vec<MPoly<F>> = self.l.iter().map(|f| over(f, &self.l)).collect();
+        let gn: Vec<MPoly<F>> = self.g.iter().map(|f| over(f, &self.g)).collect();
+        let u = var::<F>(1);
+        let (ldd, gdd) = (ld.partial(0), gd.partial(0));
+        // p_t ∝ (L' ld − L ld')·gd² + u (G' gd − G gd')·ld²
+        let gd2 = &gd * &gd;
+        let ld2 = &ld * &ld;
+        let pt: Vec<MPoly<F>> = ln
+            .iter()
+            .zip(&gn)
+            .map(|(l, g)| {
+                let a = &(&(&l.partial(0) * &ld) - &(l * &ldd)) * &gd2;
+                let b = &(&(&g.partial(0) * &gd) - &(g * &gdd)) * &ld2;
+                &a + &(&u * &b)
+            })
+            .collect();
+        // p = L/ld + u G/gd = (L gd + u G ld)/(ld gd)
+        let pn: Vec<MPoly<F>> = ln
+            .iter()
+            .zip(&gn)
+            .map(|(l, g)| &(l * &gd) + &(&u * &(g * &ld)))
+            .collect();
+        (gn, pt, pn, &ld * &gd)
+    }
+
+    /// Normals `z_i` (5.23): `z_i = −(b_i·p_t) b₁ + (b₁·p_t) b_i` from a polynomial basis
+    /// `b` of `g^⊥`, linear in `u`; they span the normal space where `b₁·p_t ≠ 0`.
+    fn normals(&self, gn: &[MPoly<F>], pt: &[MPoly<F>]) -> Result<Vec<Vec<MPoly<F>>>, PnError> {
+        let n = gn.len();
+        let j = (0..n).find(|&i| !gn[i].is_zero()).unwrap_or(0);
+        let basis: Vec<Vec<MPoly<F>>> = (0..n)
+            .filter(|&i| i != j)
+            .map(|i| {
+                let mut b = vec![MPoly::zero(2); n];
+                b[i] = gn[j].clone();
+                b[j] = -gn[i].clone();
+                b
+            })
+            .collect();
+        let dots: Vec<MPoly<F>> = basis.iter().map(|b| dot3(b, pt)).collect();
+        let Some(first) = (0..basis.len()).find(|&i| !dots[i].is_zero()) else {
+            return Err(PnError::Developable(
+                "p_t ∥ g everywhere: the manifold is a curve (no tangent plane)".into(),
+            ));
+        };
+        let (b1, d1) = (&basis[first], &dots[first]);
+        Ok((0..basis.len())
+            .filter(|&i| i != first)
+            .map(|i| {
+                (0..n)
+                    .map(|c| &(&(-dots[i].clone()) * &b1[c]) + &(d1 * &basis[i][c]))
+                    .collect()
+            })
+            .collect())
+    }
+
+    /// The offset hypersurface at distance `d` (Theorem 5.2): a rational map of the `n − 1`
+    /// parameters `(t, s, v₁, …, v_{n−3})` (`s` the new ruling parameter where the unit
+    /// normal needed a reparametrization `u = u(t, s)`, else `s = u`).
+    ///
+    /// # Errors
+    /// [`PnError::NoRationalPoint`] if no rational unit normal is found or given (in
+    /// particular for `n = 3` and a normal space constant along the rulings — developables
+    /// and cylinders, the seed's excluded cases — unless the normal has rational length);
+    /// [`PnError::InvalidInput`] for an invalid hint; [`PnError::Developable`] if the
+    /// manifold has no tangent planes.
+    pub fn offset(&self, d: F, hint: NormalHint<F>) -> Result<RuledOffset<F>, PnError> {
+        let n = self.dim();
+        let (gn, pt, pn, pw) = self.polys();
+        let zs = self.normals(&gn, &pt)?;
+        let depends_on_u = |z: &[MPoly<F>]| z.iter().any(|c| c.degree_in(1).unwrap_or(0) > 0);
+        let u_free = zs.iter().all(|z| !depends_on_u(z));
+        // (u(t,s) as a/b, unit normal numerators M and its denominator w)
+        let (ua, ub, m, mw): (MPoly<F>, MPoly<F>, Vec<MPoly<F>>, MPoly<F>) = match hint {
+            NormalHint::UnitNormal(mv) => {
+                if mv.len() != n {
+                    return Err(PnError::InvalidInput(format!(
+                        "the unit normal has {} components, the manifold lives in R^{n}",
+                        mv.len()
+                    )));
+                }
+                let den = mv.iter().fold(int::<F>(1), |a, f| &a * &f.den);
+                let num: Vec<MPoly<F>> = mv
+                    .iter()
+                    .map(|f| {
+                        mv.iter()
+                            .filter(|x| !std::ptr::eq(*x, f))
+                            .fold(f.num.clone(), |a, x| &a * &x.den)
+                    })
+                    .collect();
+                let ok = (&dot3(&num, &num) - &(&den * &den)).is_zero()
+                    && dot3(&num, &gn).is_zero()
+                    && dot3(&num, &pt).is_zero();
+                if !ok {
+                    return Err(PnError::InvalidInput(
+                        "the given vector field is not a unit normal (|m|² ≡ 1, m·g ≡ 0, m·p_t ≡ 0)".into(),
+                    ));
+                }
+                (var(1), int(1), num, den)
+            }
+            NormalHint::RulingPoint(us) => {
+                let z = zs
+                    .first()
+                    .ok_or_else(|| PnError::InvalidInput("no normal vectors (n < 3)".into()))?;
+                self.reparam_from(z, &us.num, &us.den, false)?
+                    .ok_or_else(|| {
+                        PnError::NoRationalPoint(
+                            "|z(t, u*(t))|² is not the square of a rational function for the given u*(t)".into(),
+                        )
+                    })?
+            }
+            NormalHint::Search => {
+                let consts = [0i64, 1, -1, 2, -2, 3, -3];
+                let halves = [(1i64, 2i64), (-1, 2), (1, 3), (-1, 3)];
+                let mut cands: Vec<(MPoly<F>, MPoly<F>, bool)> = vec![(int(1), int(0), true)];
+                cands.extend(consts.iter().map(|&c| (int(c), int(1), false)));
+                cands.extend(halves.iter().map(|&(p, q)| (int(p), int(q), false)));
+                let mut found = None;
+                if u_free {
+                    // constant combinations z_i + s z_j (and single z_i)
+                    'outer: for (i, zi) in zs.iter().enumerate() {
+                        for (j, zj) in zs.iter().enumerate() {
+                            if i == j && i > 0 {
+                                continue;
+                            }
+                            for (a, b, _) in &cands {
+                                let comb: Vec<MPoly<F>> = if i == j {
+                                    zi.clone()
+                                } else {
+                                    zi.iter()
+                                        .zip(zj)
+                                        .map(|(x, y)| &(x * b) + &(y * a))
+                                        .collect()
+                                };
+                                if comb.iter().all(|c| c.is_zero()) {
+                                    continue;
+                                }
+                                if let Some(w) = univariate_sqrt(&dot3(&comb, &comb)) {
+                                    found = Some((var(1), int(1), comb, w));
+                                    break 'outer;
+                                }
+                            }
+                        }
+                    }
+                } else {
+                    'outer2: for z in zs.iter().filter(|z| depends_on_u(z)) {
+                        for (a, b, inf) in &cands {
+                            if let Some(r) = self.reparam_from(z, a, b, *inf)? {
+                                found = Some(r);
+                                break 'outer2;
+                            }
+                        }
+                    }
+                }
+                found.ok_or_else(|| {
+                    PnError::NoRationalPoint(if u_free && n == 3 {
+                        "the normal is constant along the rulings (developable or cylinder, Case 1 m = 1 / Case 2 m = 0 with dim N = 1) and has no rational length: the offset is not rational in general (seed §5.5)".into()
+                    } else {
+                        "no rational unit normal found by the search (the conic family (5.25) needs a point over Q(t); pass NormalHint::RulingPoint or NormalHint::UnitNormal)".into()
+                    })
+                })?
+            }
+        };
+        // substitute u = ua/ub into p, the normals
+        let sub_vec = |v: &[MPoly<F>]| -> Vec<MPoly<F>> {
+            v.iter().map(|c| subst_u(c, &ua, &ub, 1)).collect()
+        };
+        let p_num = sub_vec(&pn); // over pw·ub
+        let p_den = &pw * &ub;
+        let basis: Vec<Vec<MPoly<F>>> = zs.iter().map(|z| sub_vec(z)).collect();
+        // normal-space directions c(v) = Σ v_i Z_i + Z_last (variables 2, 3, …)
+        let cvec: Vec<MPoly<F>> = if n > 3 {
+            let last = basis.len() - 1;
+            (0..n)
+                .map(|c| {
+                    basis
+                        .iter()
+                        .enumerate()
+                        .fold(MPoly::zero(n - 1), |acc, (i, z)| {
+                            let coef = if i == last {
+                                MPoly::constant(n - 1, F::one())
+                            } else {
+                                MPoly::var(n - 1, i + 2)
+                            };
+                            &acc + &(&coef * &z[c])
+                        })
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
+        // y = p + d M − 2d (M·c)/(c·c) c, M = m/mw
+        let mut offset: Vec<RatFn<F>> = Vec::with_capacity(n);
+        let two_d = F::from_i64(2) * d.clone();
+        let (mc, cc) = if n > 3 {
+            (dot3(&m, &cvec), dot3(&cvec, &cvec))
+        } else {
+            (MPoly::zero(2), int(1))
+        };
+        for c in 0..n {
+            let p = RatFn {
+                num: p_num[c].clone(),
+                den: p_den.clone(),
+            };
+            let dm = RatFn {
+                num: m[c].scale(&d),
+                den: mw.clone(),
+            };
+            let mut y = p.add(&dm);
+            if n > 3 {
+                let refl = RatFn {
+                    num: (&mc * &cvec[c]).scale(&two_d),
+                    den: &mw * &cc,
+                };
+                y = y.sub(&refl);
+            }
+            offset.push(y);
+        }
+        let reparam = (ub.total_degree().unwrap_or(0) > 0 || ua != var(1)).then(|| RatFn {
+            num: ua.clone(),
+            den: ub.clone(),
+        });
+        Ok(RuledOffset {
+            manifold: self.clone(),
+            distance: d,
+            point: (0..n)
+                .map(|c| RatFn {
+                    num: p_num[c].clone(),
+                    den: p_den.clone(),
+                })
+                .collect(),
+            unit_normal: m
+                .iter()
+                .map(|c| RatFn {
+                    num: c.clone(),
+                    den: mw.clone(),
+                })
+                .collect(),
+            offset,
+            tangent: [pt.iter().map(|c| subst_u(c, &ua, &ub, 1)).collect(), gn],
+            reparam,
+        })
+    }
+
+    /// For `z = c₀ + u c₁` (polynomial in `t`, linear in `u`) and a candidate ruling point
+    /// `u* = a/b` (or `∞` if `inf`): if `|z(u*)|²` is a square, the stereographic
+    /// parametrization of the conic `w² = |z(u)|²` from that point:
+    /// `u = (2sw* − q₁ − u*q₂ − s²u*)/(q₂ − s²)`, `w = w* + s(u − u*)` (`q_i` the
+    /// coefficients of `|z|² = q₀ + q₁u + q₂u²`); at infinity (`q₂ = w₁²`)
+    /// `u = (q₀ − s²)/(2(w₁s) − q₁)`, `w = w₁u + s`. The new parameter `s` is variable 1.
+    /// Returns `(a(t,s), b(t,s), M numerators, w)`.
+    #[allow(clippy::type_complexity)]
+    fn reparam_from(
+        &self,
+        z: &[MPoly<F>],
+        a: &MPoly<F>,
+        b: &MPoly<F>,
+        inf: bool,
+    ) -> Result<Option<(MPoly<F>, MPoly<F>, Vec<MPoly<F>>, MPoly<F>)>, PnError> {
+        let qq = dot3(z, z);
+        let coef = |j: u32| -> MPoly<F> {
+            let mut out = MPoly::zero(2);
+            for (e, c) in qq.terms() {
+                if e.get(1).copied().unwrap_or(0) == j {
+                    let mut f = e.to_vec();
+                    f[1] = 0;
+                    out = &out + &MPoly::monomial(2, &f, c.clone());
+                }
+            }
+            out
+        };
+        let (q0, q1, q2) = (coef(0), coef(1), coef(2));
+        let s = var::<F>(1);
+        let two = F::from_i64(2);
+        let (ua, ub) = if inf {
+            let Some(w1) = univariate_sqrt(&q2) else {
+                return Ok(None);
+            };
+            if w1.is_zero() {
+                return Ok(None);
+            }
+            (
+                &q0 - &(&s * &s),
+                (&(&w1 * &s) - &q1.scale(&(F::one() / two.clone()))).scale(&two),
+            )
+        } else {
+            // w*² = q₀b² + q₁ab + q₂a² (over b²)
+            let val = &(&(&q0 * &(b * b)) + &(&q1 * &(a * b))) + &(&q2 * &(a * a));
+            let Some(ws) = univariate_sqrt(&val) else {
+                return Ok(None);
+            };
+            if ws.is_zero() {
+                return Ok(None);
+            }
+            // u = (2s w*/b − q₁ − (a/b)(q₂ + s²))/(q₂ − s²) = (2s w* − q₁b − a(q₂ + s²))/(b(q₂ − s²))
+            (
+                &(&(&s * &ws).scale(&two) - &(&q1 * b)) - &(a * &(&q2 + &(&s * &s))),
+                b * &(&q2 - &(&s * &s)),
+            )
+        };
+        // M = z(u)/|z(u)|: with u = ua/ub, z(u) = (c₀ ub + c₁ ua)/ub and |z(u)|² = Q(ua, ub)/ub²
+        let zn: Vec<MPoly<F>> = z.iter().map(|c| subst_u(c, &ua, &ub, 1)).collect();
+        let nn = dot3(&zn, &zn);
+        // nn is a square in Q[t, s] by construction: w = (ws·… ) — compute it as a bivariate
+        // square root through the conic relation: |z(u)|·ub = w·ub with w = w* + s(u − u*)
+        let w_num = if inf {
+            let w1 = univariate_sqrt(&q2).unwrap_or_else(|| int(1));
+            &(&w1 * &ua) + &(&s * &ub)
+        } else {
+            let val = &(&(&q0 * &(b * b)) + &(&q1 * &(a * b))) + &(&q2 * &(a * a));
+            let ws = univariate_sqrt(&val).unwrap_or_else(|| int(1));
+            // w = ws/b + s(ua/ub − a/b) = (ws·ub + s(ua·b − a·ub))/(b·ub)
+            let num = &(&ws * &ub) + &(&s * &(&(&ua * b) - &(a * &ub)));
+            match div_exact_opt(&num, b) {
+                Some(q) => q,
+                None => return Ok(None),
+            }
+        };
+        // check |z(u)|² ≡ w_num² (both over ub²)
+        if !(&nn - &(&w_num * &w_num)).is_zero() && F::EXACT {
+            return Ok(None);
+        }
+        Ok(Some((ua, ub, zn, w_num)))
+    }
+}
+
+fn div_exact_opt<F: Scalar>(p: &MPoly<F>, d: &MPoly<F>) -> Option<MPoly<F>> {
+    super::poly::div_exact(p, d)
+}
+
+/// The offset hypersurface of a ruled 2-manifold at distance `d` (Theorem 5.2, (5.26)).
+#[derive(Debug, Clone)]
+pub struct RuledOffset<F> {
+    manifold: RuledManifold<F>,
+    distance: F,
+    point: Vec<RatFn<F>>,
+    unit_normal: Vec<RatFn<F>>,
+    offset: Vec<RatFn<F>>,
+    tangent: [Vec<MPoly<F>>; 2],
+    reparam: Option<RatFn<F>>,
+}
+
+impl<F: Scalar> RuledOffset<F> {
+    /// The offset hypersurface `y(t, s, v₁, …, v_{n−3})` (5.26).
+    pub fn offset_map(&self) -> &[RatFn<F>] {
+        &self.offset
+    }
+
+    /// The (reparametrized) manifold point `p(t, s)`.
+    pub fn point(&self) -> &[RatFn<F>] {
+        &self.point
+    }
+
+    /// The rational unit normal `M(t, s)`.
+    pub fn unit_normal(&self) -> &[RatFn<F>] {
+        &self.unit_normal
+    }
+
+    /// The reparametrization `u = u(t, s)` of the rulings, if one was needed (Step 2).
+    pub fn reparametrization(&self) -> Option<&RatFn<F>> {
+        self.reparam.as_ref()
+    }
+
+    /// The offset distance.
+    pub fn distance(&self) -> &F {
+        &self.distance
+    }
+
+    /// The manifold.
+    pub fn manifold(&self) -> &RuledManifold<F> {
+        &self.manifold
+    }
+
+    /// The offset point at parameters `(t, s, v…)`; `None` where a denominator vanishes.
+    pub fn eval(&self, x: &[F]) -> Option<Vec<F>> {
+        self.offset.iter().map(|f| f.eval(x)).collect()
+    }
+}
+
+impl<F: Scalar> Certified for RuledOffset<F> {
+    /// `|M|² ≡ 1`, `M ⟂ τ(p)`, `|y − p|² ≡ d²` and `y − p ⟂ τ(p)` ((5.18), (5.19)) as
+    /// identities of rational functions in all parameters.
+    fn certify(&self) -> Vec<Certificate> {
+        let n = self.point.len();
+        let sq = |v: &[RatFn<F>]| {
+            v.iter()
+                .fold(RatFn::constant(F::zero()), |acc, x| acc.add(&x.mul(x)))
+        };
+        let dotv = |v: &[RatFn<F>], w: &[MPoly<F>]| {
+            v.iter()
+                .zip(w)
+                .fold(RatFn::constant(F::zero()), |acc, (x, y)| {
+                    acc.add(&x.mul(&RatFn::poly(y.clone())))
+                })
+        };
+        let mut out = Vec::new();
+        let m2 = sq(&self.unit_normal).sub(&RatFn::constant(F::one()));
+        out.push(zero_cert(
+            "ruled manifold: |M|² ≡ 1 (rational unit normal, (5.25))",
+            &m2.num,
+            1e6 * mag(&m2.num),
+        ));
+        for (name, tv) in [("p_t", &self.tangent[0]), ("g", &self.tangent[1])] {
+            let c = dotv(&self.unit_normal, tv);
+            out.push(zero_cert(
+                &format!("ruled manifold: M·{name} ≡ 0"),
+                &c.num,
+                1e6 * mag(&c.num),
+            ));
+        }
+        let diff: Vec<RatFn<F>> = (0..n).map(|i| self.offset[i].sub(&self.point[i])).collect();
+        let r = sq(&diff).sub(&RatFn::constant(
+            self.distance.clone() * self.distance.clone(),
+        ));
+        out.push(zero_cert(
+            &format!(
+                "offset hypersurface: |y − p|² ≡ d² = {}",
+                format_scalar(&(self.distance.clone() * self.distance.clone()))
+            ),
+            &r.num,
+            1e6 * mag(&r.num),
+        ));
+        for (name, tv) in [("p_t", &self.tangent[0]), ("g", &self.tangent[1])] {
+            let c = dotv(&diff, tv);
+            out.push(zero_cert(
+                &format!("offset hypersurface: (y − p)·{name} ≡ 0 (y in the normal space, (5.19))"),
+                &c.num,
+                1e6 * mag(&c.num),
+            ));
+        }
         out
     }
 }

@@ -160,9 +160,9 @@ pub fn anticaustic<F: Scalar>(mirror: &[MPoly<F>; 4], c: &F) -> Result<PnSurface
         normal,
         support,
         Some(p0.clone()),
-        &[mm.clone()],
+        std::slice::from_ref(&mm),
     )?;
-    if s.regularity_poly().is_zero() {
+    if s.point_map_degenerate() {
         return Err(PnError::Developable(
             "the anticaustic is not a surface (its point map has rank < 2)".into(),
         ));

@@ -4,8 +4,8 @@
 
 use super::offset::PnOffset;
 use super::poly::{
-    self, cancel_common, det4, div_exact, dot3, identity_cert, mag, normalize_content, pad_eval,
-    patch_of, sign_on_domain, zero_cert, Domain, RatFn, Sign,
+    self, cancel_common, cancel_gcd, det4, div_exact, dot3, gcd2, identity_cert, mag,
+    normalize_content, pad_eval, patch_of, sign_on_domain, zero_cert, Domain, RatFn, Sign,
 };
 use super::PnError;
 use crate::error::{format_point, format_scalar};
@@ -28,7 +28,7 @@ pub struct PnSurface<F> {
     point: [MPoly<F>; 4],
     normal: [MPoly<F>; 4],
     support: RatFn<F>,
-    cofactor: MPoly<F>,
+    cofactor: Option<MPoly<F>>,
     distance: F,
     name: String,
 }
@@ -71,6 +71,7 @@ impl<F: Scalar> PnSurface<F> {
         // normal: cancel common factors, normalize content
         let mut nn: Vec<MPoly<F>> = normal.to_vec();
         cancel_common(&mut nn, candidates);
+        cancel_gcd(&mut nn);
         normalize_content(&mut nn);
         if nn[0].terms().last().is_some_and(|(_, c)| *c < F::zero()) {
             // keep N₀ with a positive leading coefficient (N₀ > 0 away from its zeros)
@@ -88,17 +89,26 @@ impl<F: Scalar> PnSurface<F> {
         pk.push(k);
         cancel_common(&mut pk, candidates);
         normalize_content(&mut pk[..4]);
-        let mut point = [pk[0].clone(), pk[1].clone(), pk[2].clone(), pk[3].clone()];
-        let cofactor = match div_exact(&point[0], &normal[0]) {
-            Some(k) => k,
-            None => {
-                let w = point[0].clone();
-                for p in point.iter_mut() {
-                    *p = &*p * &normal[0];
-                }
-                w
+        let point = [pk[0].clone(), pk[1].clone(), pk[2].clone(), pk[3].clone()];
+        // the remaining common factor: all of it if N₀ ∤ W, else only the part that keeps
+        // N₀ | W (so that the offsets keep the denominator W)
+        let mut point = point;
+        let mut g = point.iter().fold(MPoly::zero(2), |g, p| gcd2(&g, p));
+        if let Some(k) = div_exact(&point[0], &normal[0]) {
+            g = gcd2(&g, &k);
+        }
+        if g.total_degree().unwrap_or(0) > 0 {
+            if let Some(qs) = point
+                .iter()
+                .map(|p| div_exact(p, &g))
+                .collect::<Option<Vec<_>>>()
+            {
+                point = [qs[0].clone(), qs[1].clone(), qs[2].clone(), qs[3].clone()];
+                normalize_content(&mut point);
             }
-        };
+        }
+        // W = N₀·K when N₀ divides W (then offsets keep the denominator W)
+        let cofactor = div_exact(&point[0], &normal[0]);
         Ok(PnSurface {
             point,
             normal,
@@ -148,9 +158,10 @@ impl<F: Scalar> PnSurface<F> {
         &self.support
     }
 
-    /// The cofactor `K = W/N₀`.
-    pub fn cofactor(&self) -> &MPoly<F> {
-        &self.cofactor
+    /// The cofactor `K = W/N₀` when `N₀` divides `W` (then the offsets have the same
+    /// denominator `W`; otherwise their denominator is `W N₀`).
+    pub fn cofactor(&self) -> Option<&MPoly<F>> {
+        self.cofactor.as_ref()
     }
 
     /// The oriented distance from the surface this one was offset from (0 for a base
@@ -277,22 +288,39 @@ impl<F: Scalar> PnSurface<F> {
 
     /// The surface at offset `d` as a plain PN surface.
     pub(crate) fn offset_surface(&self, d: &F) -> PnSurface<F> {
-        let kn: Vec<MPoly<F>> = self.normal[1..]
-            .iter()
-            .map(|n| (&self.cofactor * n).scale(d))
-            .collect();
-        let point = [
-            self.point[0].clone(),
-            &self.point[1] + &kn[0],
-            &self.point[2] + &kn[1],
-            &self.point[3] + &kn[2],
-        ];
+        // x + d n = (X + dKN)/W if W = N₀K, else (X N₀ + d W N)/(W N₀)
+        let (point, cofactor) = match &self.cofactor {
+            Some(k) => {
+                let kn: Vec<MPoly<F>> = self.normal[1..].iter().map(|n| (k * n).scale(d)).collect();
+                (
+                    [
+                        self.point[0].clone(),
+                        &self.point[1] + &kn[0],
+                        &self.point[2] + &kn[1],
+                        &self.point[3] + &kn[2],
+                    ],
+                    Some(k.clone()),
+                )
+            }
+            None => {
+                let n0 = &self.normal[0];
+                let w = &self.point[0];
+                let p: [MPoly<F>; 4] = std::array::from_fn(|i| {
+                    if i == 0 {
+                        w * n0
+                    } else {
+                        &(&self.point[i] * n0) + &(w * &self.normal[i]).scale(d)
+                    }
+                });
+                (p, Some(w.clone()))
+            }
+        };
         let support = self.support.sub(&RatFn::constant(d.clone()));
         PnSurface {
             point,
             normal: self.normal.clone(),
             support,
-            cofactor: self.cofactor.clone(),
+            cofactor,
             distance: self.distance.clone() + d.clone(),
             name: format!("{} offset by {}", self.name, format_scalar(d)),
         }
@@ -311,6 +339,39 @@ impl<F: Scalar> PnSurface<F> {
             self.normal[3].clone(),
         ];
         det4([&self.point, &xu, &xv, &n])
+    }
+
+    /// `true` if the point map has rank < 2 everywhere (`det(x_u, x_v, n) ≡ 0`): the
+    /// planes envelope a curve or a point, not a surface (e.g. the pencils through the
+    /// rulings of a developable surface envelope its edge of regression). Decided by the
+    /// regularity determinant at a few exact sample points, and exactly if all vanish.
+    pub fn point_map_degenerate(&self) -> bool {
+        let samples = [(3i64, 7i64, -2i64, 5i64), (-5, 11, 13, 3), (17, 4, 1, 9)];
+        for (a, b, c, d) in samples {
+            let (u, v) = (F::from_ratio(a, b), F::from_ratio(c, d));
+            let x = [u, v];
+            let ev = |p: &MPoly<F>| pad_eval(p, &x).unwrap_or_else(F::zero);
+            let row = |f: &dyn Fn(&MPoly<F>) -> MPoly<F>| -> [MPoly<F>; 4] {
+                std::array::from_fn(|i| MPoly::constant(2, ev(&f(&self.point[i]))))
+            };
+            let r0 = row(&|p| p.clone());
+            let r1 = row(&|p| p.partial(0));
+            let r2 = row(&|p| p.partial(1));
+            let r3: [MPoly<F>; 4] = std::array::from_fn(|i| {
+                if i == 0 {
+                    MPoly::zero(2)
+                } else {
+                    MPoly::constant(2, ev(&self.normal[i]))
+                }
+            });
+            let d = det4([&r0, &r1, &r2, &r3]);
+            let val = d.coeff(&[0, 0]);
+            let scale = 1e-9 * mag(&MPoly::constant(2, val.clone())).max(1.0);
+            if F::EXACT && !val.is_zero() || !F::EXACT && val.to_f64().abs() > scale * 1e-3 {
+                return false;
+            }
+        }
+        self.regularity_poly().is_zero()
     }
 
     /// Checks that the surface is defined and regular (`W ≠ 0`, `x_u × x_v ≠ 0`) on the
@@ -348,7 +409,7 @@ impl<F: Scalar> PnSurface<F> {
                 num: self.support.num.map(f),
                 den: self.support.den.map(f),
             },
-            cofactor: self.cofactor.map(f),
+            cofactor: self.cofactor.as_ref().map(|k| k.map(f)),
             distance: f(&self.distance),
             name: self.name.clone(),
         }
@@ -367,7 +428,7 @@ pub(crate) fn check_nonzero<F: Scalar>(
             what: what.to_string(),
             at: format_point(&x),
         }),
-        Sign::SignChange(a, b) => Err(PnError::Singular {
+        Sign::Changes(a, b) => Err(PnError::Singular {
             what: format!("{what} (sign change)"),
             at: format!(
                 "a point between {} and {}",
@@ -400,13 +461,15 @@ impl<F: Scalar> PnSurface<F> {
         let x = [x1.clone(), x2.clone(), x3.clone()];
         let nvec = &self.normal[1..];
         let mut out = vec![unit_normal_cert(&self.normal)];
-        let mut c = identity_cert(
-            "W ≡ N₀·K (common denominator of point and offsets)",
-            w,
-            &(&self.normal[0] * &self.cofactor),
-        );
-        c.property = format!("{}: {}", self.name, c.property);
-        out.push(c);
+        if let Some(k) = &self.cofactor {
+            let mut c = identity_cert(
+                "W ≡ N₀·K (common denominator of point and offsets)",
+                w,
+                &(&self.normal[0] * k),
+            );
+            c.property = format!("{}: {}", self.name, c.property);
+            out.push(c);
+        }
         for (k, var) in [(0usize, "u"), (1, "v")] {
             // x_s ∝ X_s W − X W_s
             let ws = w.partial(k);
@@ -481,7 +544,7 @@ mod tests {
         ];
         let surf = PnSurface::from_point_normal(n.clone(), n).expect("pn");
         assert!(surf.all_hold(), "{:?}", surf.certify());
-        assert_eq!(surf.cofactor(), &int(1));
+        assert_eq!(surf.cofactor(), Some(&int(1)));
         let off = surf.offset(Q::from(2));
         assert!(off.all_hold());
         // the offset of the unit sphere by 2 is the sphere of radius 3

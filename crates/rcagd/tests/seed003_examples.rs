@@ -842,3 +842,33 @@ fn s004_4_5_canal_with_cubic_spine_and_radius() {
     assert!(b.degree().0 <= 7);
     assert!(b.all_hold());
 }
+
+#[test]
+fn s004_thm_2_3_canal_from_a_mobius_curve() {
+    // c(t) = μ⁻¹(m(t), r(t)²) for m = (t, t², 0), r = t/2 + 1: the family of the Möbius
+    // model gives back the spine and radius, and its envelope is certified
+    let m = [p(&[0, 1]), p(&[0, 0, 1]), p(&[])];
+    let rr = pr(&[(1, 1), (1, 2)]);
+    let mm = &(&(&m[0] * &m[0]) + &(&m[1] * &m[1])) + &(&m[2] * &m[2]);
+    let k = &mm - &(&rr * &rr);
+    let half = r(1, 2);
+    let c = [
+        (&k + &p(&[1])).scale(&half),
+        m[0].clone(),
+        m[1].clone(),
+        m[2].clone(),
+        (&k - &p(&[1])).scale(&half),
+    ];
+    let spine = CanalSpine::from_mobius_curve(&c).expect("rational radius");
+    let (centre, radius) = spine.eval(&r(3, 2)).expect("sphere");
+    assert_eq!(centre, [r(3, 2), r(9, 4), q(0)]);
+    assert_eq!(radius.clone() * radius, r(49, 16));
+    let b = canal_surface(&spine, &CanalOptions::default()).expect("canal");
+    assert!(b.all_hold(), "{:?}", b.certify());
+    // only r² rational: refused with a reason
+    let c2 = [p(&[2, 0, 1]), p(&[0, 1]), p(&[]), p(&[]), p(&[0, 0, 1])];
+    assert!(matches!(
+        CanalSpine::from_mobius_curve(&c2),
+        Err(CanalError::InvalidArgument(_))
+    ));
+}

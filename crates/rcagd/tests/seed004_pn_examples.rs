@@ -564,7 +564,11 @@ fn ch4_theorem_4_5_cone_family_envelope_and_e12() {
     let t = t_();
     let c1 = CycleFamily::new([t.scale(&qi(2)), &t * &t, ki(2)], ki(3), ki(1)).expect("family");
     let c2 = CycleFamily::new([ki(0), ki(1), ki(0)], ki(1), ki(1)).expect("family");
-    let env = ConeFamilyEnvelope::new(c1.clone(), c2.clone(), None).expect("envelope");
+    // p = (t² + 1, 0); (None would find p = (M₁, M₂), valid too since M₃ ≡ R)
+    let p = [rp(&(&t * &t) + &ki(1)), rp(ki(0))];
+    let env = ConeFamilyEnvelope::new(c1.clone(), c2.clone(), Some(p)).expect("envelope");
+    let other = ConeFamilyEnvelope::new(c1.clone(), c2.clone(), None).expect("envelope");
+    assert_certs(&other.certify());
     assert_certs(&env.certify());
     let s = env.surface();
     // the isotropic points lie on both isotropic spheres (4.5), i.e. on the circle d'(t)
@@ -645,12 +649,23 @@ fn ch4_cor_4_2_ruled_surfaces_and_offsets() {
     .expect("PN");
     assert_certs(&hel.certify());
     assert_certs(&hel.surface().offset(qi(1)).certify());
-    // a cone (developable): l = 0, g = (1, t, 1): error
+    // a circular cone (developable): l = 0, g = (2t, 1 − t², 1 + t²), |g|² = 2(1+t²)²
     let cone = RuledPn::new(
+        [rp(ki(0)), rp(ki(0)), rp(ki(0))],
+        [
+            rp(t.scale(&qi(2))),
+            rp(&ki(1) - &(&t * &t)),
+            rp(&ki(1) + &(&t * &t)),
+        ],
+        None,
+    );
+    // a ruling direction whose squared length is no sum of two squares over Q(t): reported
+    let bad = RuledPn::new(
         [rp(ki(0)), rp(ki(0)), rp(ki(0))],
         [rp(ki(1)), rp(t.clone()), rp(ki(1))],
         None,
     );
+    assert!(matches!(bad, Err(PnError::NoRationalPoint(_))), "{bad:?}");
     assert!(matches!(cone, Err(PnError::Developable(_))), "{cone:?}");
 }
 
@@ -670,6 +685,7 @@ fn ch4_cor_4_3_canal_surfaces() {
     let canal = CanalPn::new(fam, None).expect("PN");
     assert_certs(&canal.certify());
     let (dt, du) = canal.surface().degree();
+    let _ = dt;
     eprintln!(
         "cubic canal surface: point bidegree ({dt}, {du}), normal {:?}",
         canal.surface().normal_degree()
@@ -936,4 +952,296 @@ fn ch4_theorem_4_6_e13_ruled_quadrics_in_the_pencils() {
     assert_eq!(m.get(1, 1).expect("e"), &(-(qi(1) / (sq(&a) - sq(&b)))));
     assert_eq!(m.get(3, 3).expect("e"), &(qi(1) / sq(&a)));
     assert_ne!(sq(&a), a, "with a ≠ 1 the printed '2x₃ − a' differs");
+}
+
+// ---------------------------------------------------------------------------------
+// Chapter 5: offsets of ruled manifolds (Theorem 5.2)
+// ---------------------------------------------------------------------------------
+
+/// §5.5 first example: the developable 2-manifold p = c(t) + u ċ(t) in R⁴ with
+/// c = (t, t², 3t³, 4t³); its normal space N(t) is constant along the generators and
+/// contains the unit normal (0, 0, 4, −3)/5; the offset hypersurface (circles of radius d
+/// in N(t), (5.26)) is rational and certified.
+#[test]
+fn ch5_developable_2_manifold_in_r4() {
+    let t = t_();
+    let t2 = &t * &t;
+    let t3 = &t2 * &t;
+    let l = vec![
+        rp(t.clone()),
+        rp(t2.clone()),
+        rp(t3.scale(&qi(3))),
+        rp(t3.scale(&qi(4))),
+    ];
+    let g = vec![
+        rp(ki(1)),
+        rp(t.scale(&qi(2))),
+        rp(t2.scale(&qi(9))),
+        rp(t2.scale(&qi(12))),
+    ];
+    let man = RuledManifold::new(l, g).expect("manifold");
+    let m = vec![rp(ki(0)), rp(ki(0)), rp(k(q(4, 5))), rp(k(q(-3, 5)))];
+    let off = man
+        .offset(q(3, 2), NormalHint::UnitNormal(m))
+        .expect("offset");
+    assert_certs(&off.certify());
+    assert!(
+        off.reparametrization().is_none(),
+        "normal space constant along the generators"
+    );
+    // a sample point is at distance 3/2 from the manifold point
+    let x = [q(1, 2), q(-1, 3), q(2, 1)];
+    let y = off.eval(&x).expect("finite");
+    let p: Vec<Q> = off
+        .point()
+        .iter()
+        .map(|f| f.eval(&x).expect("finite"))
+        .collect();
+    let dd: Vec<Q> = (0..4).map(|i| y[i].clone() - p[i].clone()).collect();
+    assert_eq!(dot(&dd, &dd), q(9, 4));
+    // a wrong hint is an error
+    let bad = vec![rp(ki(1)), rp(ki(0)), rp(ki(0)), rp(ki(0))];
+    assert!(man.offset(qi(1), NormalHint::UnitNormal(bad)).is_err());
+}
+
+/// §5.5 second example: a non-developable 2-manifold p = c(t) + u g(t) in R⁴
+/// (c = (t, t², 0, 0), g = (0, 0, 1, t)): the normal space depends on u, a unit normal
+/// needs the reparametrization of the rulings by the stereographic projection of the
+/// conic (5.25) from a rational point (here the point at infinity of the ruling).
+#[test]
+fn ch5_non_developable_2_manifold_in_r4() {
+    let t = t_();
+    let man = RuledManifold::new(
+        vec![rp(t.clone()), rp(&t * &t), rp(ki(0)), rp(ki(0))],
+        vec![rp(ki(0)), rp(ki(0)), rp(ki(1)), rp(t.clone())],
+    )
+    .expect("manifold");
+    let off = man.offset(qi(2), NormalHint::Search).expect("offset");
+    assert_certs(&off.certify());
+    assert!(off.reparametrization().is_some(), "u = u(t, s)");
+}
+
+/// Theorem 5.2 in R³: a non-developable ruled surface (hyperbolic paraboloid) has
+/// rational offsets; a cylinder over a non-PH curve (the excluded case m = 0 with
+/// dim N = 1) is reported; a cylinder over a PH curve works.
+#[test]
+fn ch5_ruled_surfaces_in_r3() {
+    let t = t_();
+    let hp = RuledManifold::new(
+        vec![rp(t.clone()), rp(ki(0)), rp(ki(0))],
+        vec![rp(ki(0)), rp(ki(1)), rp(t.clone())],
+    )
+    .expect("m");
+    let off = hp.offset(qi(1), NormalHint::Search).expect("offset");
+    assert_certs(&off.certify());
+    let cyl = RuledManifold::new(
+        vec![rp(t.clone()), rp(&t * &t), rp(ki(0))],
+        vec![rp(ki(0)), rp(ki(0)), rp(ki(1))],
+    )
+    .expect("m");
+    assert!(matches!(
+        cyl.offset(qi(1), NormalHint::Search),
+        Err(PnError::NoRationalPoint(_))
+    ));
+    // the Tschirnhausen cubic (3t² − 1... ) hodograph (1 − t², 2t): a PH curve
+    let ph = RuledManifold::new(
+        vec![
+            rp(&t - &(&(&t * &t) * &t).scale(&q(1, 3))),
+            rp(&t * &t),
+            rp(ki(0)),
+        ],
+        vec![rp(ki(0)), rp(ki(0)), rp(ki(1))],
+    )
+    .expect("m");
+    let off = ph.offset(q(1, 2), NormalHint::Search).expect("PH cylinder");
+    assert_certs(&off.certify());
+}
+
+// ---------------------------------------------------------------------------------
+// §4.4: modeling with PN surfaces
+// ---------------------------------------------------------------------------------
+
+fn grid_triangles(n: usize) -> Vec<[usize; 3]> {
+    let id = |i: usize, j: usize| i * n + j;
+    let mut t = Vec::new();
+    for i in 0..n - 1 {
+        for j in 0..n - 1 {
+            t.push([id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
+            t.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
+        }
+    }
+    t
+}
+
+fn data_from(s: &PnSurface<Q>, n: usize) -> Vec<rcagd::pn::modeling::HermiteDatum<Q>> {
+    let mut out = Vec::new();
+    for i in 0..n {
+        for j in 0..n {
+            let (uu, vv) = (q(i as i64, 2) - q(1, 2), q(j as i64, 2) - q(1, 3));
+            let x = s.eval(&uu, &vv).expect("point");
+            let nn = s.normal_at(&uu, &vv).expect("normal");
+            out.push(rcagd::pn::modeling::HermiteDatum::new(x, nn).expect("unit"));
+        }
+    }
+    out
+}
+
+/// §4.4 and NOTES-004 A4.3: Hermite data (points with oriented planes) are mapped to
+/// gradient data in I³, interpolated by a C¹ Powell–Sabin quadratic spline and mapped back:
+/// a G¹ surface of parabolic Dupin cyclide pieces that interpolates points and normals
+/// exactly; its offsets interpolate the offset data; quadratic data are reproduced.
+#[test]
+fn ch4_sec_4_4_modeling_scheme() {
+    use rcagd::pn::modeling::{HermiteDatum, PnModel};
+    // data sampled from the PN surface of a cubic graph
+    let f = poly(&[
+        (q(1, 3), 3, 0),
+        (qi(-1), 1, 1),
+        (q(1, 2), 0, 2),
+        (qi(1), 0, 0),
+    ]);
+    let src = IsotropicSurface::graph_poly(f).to_pn_surface().expect("pn");
+    let data = data_from(&src, 3);
+    let model = PnModel::interpolate(&data, &grid_triangles(3)).expect("model");
+    assert_eq!(model.pieces().len(), 8 * 6);
+    assert_certs(&model.certify());
+    let off = model.offset(q(1, 2)).expect("offset");
+    assert_certs(&off.certify());
+    for p in model.pieces().iter().take(3) {
+        let patch = p.patch().expect("patch");
+        assert!(patch.degree().0 <= 3 && patch.degree().1 <= 3);
+        // the patch corner (s, t) = (1, 0) is the second vertex of the micro-triangle
+        let corner = patch.eval(&qi(1), &qi(0)).expect("finite");
+        let want = p
+            .surface
+            .eval(&p.vertices[1][0], &p.vertices[1][1])
+            .expect("point");
+        assert_eq!(corner, want.to_vec());
+    }
+    // quadratic data are reproduced exactly: every piece is the same quadratic
+    let fq = poly(&[
+        (q(1, 2), 2, 0),
+        (qi(-1), 1, 1),
+        (q(3, 2), 0, 2),
+        (qi(2), 1, 0),
+        (qi(1), 0, 0),
+    ]);
+    let srcq = IsotropicSurface::graph_poly(fq.clone())
+        .to_pn_surface()
+        .expect("pn");
+    let mq = PnModel::interpolate(&data_from(&srcq, 3), &grid_triangles(3)).expect("model");
+    assert!(
+        mq.pieces().iter().all(|p| p.f == fq),
+        "Powell–Sabin reproduces quadratics"
+    );
+    // data the scheme cannot match
+    let top = HermiteDatum::new([qi(0), qi(0), qi(0)], [qi(0), qi(0), qi(1)]).expect("unit");
+    let mut bad = data.clone();
+    bad[4] = top;
+    assert!(matches!(
+        PnModel::interpolate(&bad, &grid_triangles(3)),
+        Err(PnError::ModelingData(_))
+    ));
+    let mut dup = data.clone();
+    dup[1] = HermiteDatum::new([qi(5), qi(5), qi(5)], data[0].normal.clone()).expect("unit");
+    assert!(matches!(
+        PnModel::interpolate(&dup, &grid_triangles(3)),
+        Err(PnError::ModelingData(_))
+    ));
+    assert!(
+        matches!(
+            PnModel::interpolate(&data, &[[0, 1, 2]]),
+            Err(PnError::ModelingData(_))
+        ),
+        "collinear parameter points"
+    );
+    assert!(matches!(
+        PnModel::interpolate(&data, &[[0, 1, 99]]),
+        Err(PnError::ModelingData(_))
+    ));
+    assert!(HermiteDatum::new([qi(0), qi(0), qi(0)], [qi(1), qi(1), qi(0)]).is_err());
+}
+
+// ---------------------------------------------------------------------------------
+// The planar case: PH curves (issue item 5) and surfaces of revolution
+// ---------------------------------------------------------------------------------
+
+/// The isotropic model of the plane gives rational PH curves; a polynomial PH curve with
+/// preimage (u, v) built here agrees with `rcagd::ph::PhCurve` (Hopf form α = u, β = v,
+/// z ≡ 0), has the isotropic image y₁ = −u/v, is rebuilt from it, and its offsets agree.
+#[test]
+fn planar_ph_curves_agree_with_the_ph_module() {
+    use rcagd::ph::PhCurve;
+    use rcagd::pn::planar::PnCurve;
+    use rcagd_algebra::complex::Complex;
+    // graph y₂ = F(t) in I²
+    let f = RatFn::new(
+        poly(&[(qi(1), 3, 0), (qi(-2), 1, 0), (q(1, 2), 0, 0)]),
+        ki(1),
+    )
+    .expect("F");
+    let c = PnCurve::from_graph(&f).expect("PH");
+    assert_certs(&c.certify());
+    for d in [qi(1), q(-3, 4)] {
+        let o = c.offset(d);
+        assert_certs(&o.certify());
+        assert_certs(&o.offset_certificates(&c));
+    }
+    // polynomial PH quintic: u = (1, 0, 2), v = (0, 1, 1) (Bernstein)
+    let (ub, vb) = (vec![qi(1), qi(0), qi(2)], vec![qi(0), qi(1), qi(1)]);
+    let pn = PnCurve::from_ph_preimage(&ub, &vb, [qi(1), qi(-1)]).expect("PH");
+    assert_certs(&pn.certify());
+    let alpha: Vec<Complex<Q>> = ub.iter().map(|x| Complex::new(x.clone(), qi(0))).collect();
+    let beta: Vec<Complex<Q>> = vb.iter().map(|x| Complex::new(x.clone(), qi(0))).collect();
+    let ph = PhCurve::from_hopf(&alpha, &beta, [qi(1), qi(-1), qi(0)]).expect("PH module");
+    for t in [qi(0), q(1, 3), q(3, 2), qi(-2)] {
+        let a = pn.eval(&t).expect("point");
+        let b = ph.eval(&t);
+        assert_eq!(
+            [a[0].clone(), a[1].clone(), qi(0)],
+            b,
+            "same PH curve as the PH module"
+        );
+    }
+    assert_eq!(pn.degree(), ph.degree());
+    // its isotropic image, and the curve rebuilt from it
+    let [y1, y2] = pn.isotropic_image();
+    let again = PnCurve::from_isotropic(y1.num, y1.den, y2.num, y2.den).expect("rebuilt");
+    assert_certs(&again.certify());
+    for t in [q(1, 3), qi(2)] {
+        assert_eq!(again.eval(&t).expect("p"), pn.eval(&t).expect("p"));
+    }
+    // offsets: x + d n with the PH module's normal (−2uv, u² − v²)/σ
+    let d = q(1, 4);
+    let o = pn.offset(d.clone());
+    assert_certs(&o.offset_certificates(&pn));
+    let t = q(2, 5);
+    let h = ph.hodograph();
+    let hx = h[0].eval(&t);
+    let hy = h[1].eval(&t);
+    let sigma = ph.speed().eval(&t);
+    let p = ph.eval(&t);
+    let want = [
+        p[0].clone() - d.clone() * hy / sigma.clone(),
+        p[1].clone() + d * hx / sigma,
+    ];
+    assert_eq!(o.eval(&t).expect("offset"), want);
+    let bez = pn.curve(&qi(0), &qi(1)).expect("bezier");
+    assert_eq!(bez.degree(), 5);
+}
+
+/// Surfaces of revolution with a PH profile are PN (canal surfaces, Cor. 4.3): certified,
+/// with certified offsets.
+#[test]
+fn surfaces_of_revolution_with_ph_profile() {
+    use rcagd::pn::planar::{surface_of_revolution, PnCurve};
+    let prof = PnCurve::from_ph_preimage(&[qi(1), qi(2)], &[qi(1), qi(0)], [qi(2), qi(0)])
+        .expect("PH cubic");
+    let s = surface_of_revolution(&prof).expect("PN");
+    assert_certs(&s.certify());
+    let off = s.offset(q(1, 2));
+    assert_certs(&off.certify());
+    // the offset surface is the surface of revolution of the offset profile
+    let s2 = surface_of_revolution(&prof.offset(q(1, 2))).expect("PN");
+    assert!(same_points(s2.point_polys(), off.surface().point_polys()));
 }

@@ -76,8 +76,8 @@ fn check_printed(ex: &Printed, curve: &PhCurve<Q>, axis: Option<[&str; 3]>) {
         .collect();
     assert_eq!(curve.control_points(), pts, "control points (8.2)");
     let pos = curve.position();
-    for k in 0..3 {
-        assert_eq!(pos[k], poly(ex.xyz[k]), "power-basis component {k}");
+    for (k, pk) in pos.iter().enumerate() {
+        assert_eq!(*pk, poly(ex.xyz[k]), "power-basis component {k}");
     }
     assert_certs(&curve.certify());
     assert_certs(&curve.certify_arc_length());
@@ -849,7 +849,9 @@ fn example_9_1_hermite() {
     let close = |a: f64, b: f64, tol: f64| (a - b).abs() <= tol * b.abs().max(1.0);
     let mut seen = [false; 4];
     for s in &sol.interpolants {
-        let hx = s.helix.as_ref().expect("helix");
+        let HelixTest::Helix(hx) = &s.helix else {
+            panic!("helix expected")
+        };
         let axis = hx.axis_f64();
         let psi = hx.psi_f64().to_degrees();
         if close(s.k0.abs(), 1.705_394_7, 1e-6) {

@@ -44,7 +44,7 @@ fn close(a: f64, b: f64) -> bool {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(48))]
+    #![proptest_config(ProptestConfig::with_cases(400))]
 
     /// ALG-1/2/3: control points, σ, arc length certify exactly; f64 agrees.
     #[test]
@@ -72,8 +72,8 @@ proptest! {
         let e = pc.bending_energy();
         let ef = pc.to_f64().bending_energy();
         if let (Ok(e), Ok(ef)) = (e, ef) {
-            // ρ/σ³ loses digits to cancellation in f64: compare to 1e-6
-            prop_assert!((e - ef).abs() <= 1e-6 * e.abs().max(1.0), "E = {} vs {}", e, ef);
+            // f64 pointwise vs exact ρ: agree to 1e-7
+            prop_assert!((e - ef).abs() <= 1e-7 * e.abs().max(1.0), "E = {} vs {}", e, ef);
         }
     }
 

@@ -1,0 +1,6 @@
+//! Ops of the `canal` topic (being written; see docs/ARCHITECTURE.md).
+
+use super::OpSpec;
+
+/// The ops of this topic.
+pub const OPS: &[OpSpec] = &[];
