@@ -26,7 +26,7 @@ use crate::error::AlgebraError;
 use crate::poly::Poly;
 use crate::rational::Rational;
 use crate::resultant::resultant_poly;
-use crate::scalar::Ring;
+use crate::scalar::{ring_pow, Ring};
 use core::fmt;
 use core::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 use std::borrow::Cow;
@@ -41,23 +41,6 @@ pub const MAX_DENSE_DEGREE: u32 = 1 << 24;
 pub struct MPoly<R> {
     nvars: usize,
     terms: BTreeMap<Vec<u32>, R>,
-}
-
-/// `x^k` by repeated squaring.
-fn ring_pow<R: Ring>(x: &R, k: u32) -> R {
-    let mut result = R::one();
-    let mut base = x.clone();
-    let mut e = k;
-    while e > 0 {
-        if e & 1 == 1 {
-            result *= base.clone();
-        }
-        e >>= 1;
-        if e > 0 {
-            base = base.clone() * base;
-        }
-    }
-    result
 }
 
 fn add_exps(a: &[u32], b: &[u32], n: usize) -> Vec<u32> {
@@ -225,7 +208,7 @@ impl<R: Ring> MPoly<R> {
                 }
                 let pw = cache
                     .entry((i, k))
-                    .or_insert_with(|| ring_pow(&x[i], k))
+                    .or_insert_with(|| ring_pow(&x[i], k as usize))
                     .clone();
                 t *= pw;
             }
@@ -339,7 +322,7 @@ impl<R: Ring> MPoly<R> {
         for (e, c) in &self.terms {
             let mut f = e.clone();
             f[i] = 0;
-            p.add_term(f, c.clone() * ring_pow(v, e[i]));
+            p.add_term(f, c.clone() * ring_pow(v, e[i] as usize));
         }
         p
     }

@@ -6,7 +6,7 @@
 //! `(Σ aᵢtⁱ)(Σ bⱼtʲ) = Σ (aᵢbⱼ) tⁱ⁺ʲ`. Division, gcd and the like need a [`Field`].
 
 use crate::error::AlgebraError;
-use crate::scalar::{Field, Ring};
+use crate::scalar::{ring_pow, Field, Ring};
 use core::ops::{Add, Mul, Neg, Sub};
 
 /// A univariate polynomial, coefficients low degree first, trimmed.
@@ -138,19 +138,7 @@ impl<R: Ring> Poly<R> {
 
     /// `selfᵏ`.
     pub fn pow(&self, k: u32) -> Self {
-        let mut result = Poly::constant(R::one());
-        let mut base = self.clone();
-        let mut e = k;
-        while e > 0 {
-            if e & 1 == 1 {
-                result = &result * &base;
-            }
-            e >>= 1;
-            if e > 0 {
-                base = &base * &base;
-            }
-        }
-        result
+        ring_pow(self, k as usize)
     }
 
     /// Reverses the coefficient order with respect to degree `n`: `tⁿ p(1/t)`.

@@ -30,24 +30,7 @@
 use crate::error::AlgebraError;
 use crate::poly::Poly;
 use crate::rational::Rational;
-use crate::scalar::{Field, Ring};
-
-/// `x^k` by repeated squaring (`x⁰ = 1`).
-fn ring_pow<R: Ring>(x: &R, k: usize) -> R {
-    let mut result = R::one();
-    let mut base = x.clone();
-    let mut e = k;
-    while e > 0 {
-        if e & 1 == 1 {
-            result *= base.clone();
-        }
-        e >>= 1;
-        if e > 0 {
-            base = base.clone() * base;
-        }
-    }
-    result
-}
+use crate::scalar::{ring_pow, Field, Ring};
 
 /// The Sylvester matrix of `p` (degree `m`) and `q` (degree `n`): the `(m+n)×(m+n)`
 /// matrix whose first `n` rows are the shifted coefficient rows `pₘ … p₀` and whose

@@ -34,6 +34,23 @@ pub trait Ring:
     fn from_i64(n: i64) -> Self;
 }
 
+/// `xᵏ` in any ring, by repeated squaring (`x⁰ = 1`).
+pub fn ring_pow<R: Ring>(x: &R, k: usize) -> R {
+    let mut result = R::one();
+    let mut base = x.clone();
+    let mut e = k;
+    while e > 0 {
+        if e & 1 == 1 {
+            result *= base.clone();
+        }
+        e >>= 1;
+        if e > 0 {
+            base = base.clone() * base;
+        }
+    }
+    result
+}
+
 /// A commutative field.
 pub trait Field: Ring + Div<Output = Self> + DivAssign {
     /// The multiplicative inverse, `None` for zero.
@@ -110,6 +127,25 @@ impl Scalar for Rational {
     fn to_rational(&self) -> Option<Rational> {
         Some(self.clone())
     }
+}
+
+/// A scalar as text for messages and certificates: the exact fraction `"p/q"` for exact
+/// scalars, the shortest round-tripping decimal for `f64`.
+pub fn format_scalar<F: Scalar>(x: &F) -> String {
+    if F::EXACT {
+        match x.to_rational() {
+            Some(q) => crate::rational::format_rational(&q),
+            None => format!("{x:?}"),
+        }
+    } else {
+        format!("{}", x.to_f64())
+    }
+}
+
+/// A vector as text, `(x₁, …, x_k)`, each entry by [`format_scalar`].
+pub fn format_vector<F: Scalar>(v: &[F]) -> String {
+    let parts: Vec<String> = v.iter().map(format_scalar).collect();
+    format!("({})", parts.join(", "))
 }
 
 #[cfg(test)]

@@ -13,30 +13,13 @@ use crate::curve::BezierCurve;
 use crate::error::GeomError;
 use crate::patch::BezierPatch;
 use crate::polymap::Bernstein2;
-use rcagd_algebra::rational::format_rational;
 use rcagd_algebra::{bernstein, Certificate, Scalar};
 
 /// Relative tolerance of `f64` certificates.
 pub const F64_RELATIVE_TOLERANCE: f64 = 1e-9;
 
-/// A number as text: an exact fraction `p/q` for exact rational values, the nearest
-/// `f64` otherwise.
-pub fn format_scalar<F: Scalar>(x: &F) -> String {
-    if F::EXACT {
-        match x.to_rational() {
-            Some(q) => format_rational(&q),
-            None => format!("{x:?}"),
-        }
-    } else {
-        format!("{}", x.to_f64())
-    }
-}
-
-/// `(x₁, …, x_k)` as text.
-fn format_vector<F: Scalar>(v: &[F]) -> String {
-    let parts: Vec<String> = v.iter().map(format_scalar).collect();
-    format!("({})", parts.join(", "))
-}
+pub use rcagd_algebra::format_scalar;
+use rcagd_algebra::format_vector;
 
 /// `[[…], […]]` as text.
 fn format_matrix<F: Scalar>(m: &[Vec<F>]) -> String {

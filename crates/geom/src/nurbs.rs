@@ -32,26 +32,9 @@
 use crate::curve::BezierCurve;
 use crate::error::GeomError;
 use crate::patch::BezierPatch;
-use rcagd_algebra::rational::format_rational;
 use rcagd_algebra::Scalar;
+use rcagd_algebra::{format_scalar, format_vector};
 use std::cmp::Ordering;
-
-/// A short human-readable form of a scalar for error messages.
-fn show<F: Scalar>(x: &F) -> String {
-    if F::EXACT {
-        match x.to_rational() {
-            Some(q) => format_rational(&q),
-            None => format!("{x:?}"),
-        }
-    } else {
-        format!("{}", x.to_f64())
-    }
-}
-
-fn show_point<F: Scalar>(p: &[F]) -> String {
-    let parts: Vec<String> = p.iter().map(show).collect();
-    format!("({})", parts.join(", "))
-}
 
 /// Checks a clamped knot vector for degree `degree` and `num_ctrl` control points:
 /// `degree ≥ 1`, `num_ctrl ≥ degree + 1`, `len = num_ctrl + degree + 1` (`= n + p + 2`),
@@ -92,9 +75,9 @@ pub fn validate_knots<F: Scalar>(
                 return Err(GeomError::Knots(format!(
                     "not non-decreasing: knot {} = {} is followed by knot {} = {}",
                     i,
-                    show(&w[0]),
+                    format_scalar(&w[0]),
                     i + 1,
-                    show(&w[1])
+                    format_scalar(&w[1])
                 )))
             }
         }
@@ -111,7 +94,7 @@ pub fn validate_knots<F: Scalar>(
     if first.1 != p + 1 {
         return Err(GeomError::Knots(format!(
             "not clamped: first knot {} has multiplicity {}, needs p + 1 = {}",
-            show(&first.0),
+            format_scalar(&first.0),
             first.1,
             p + 1
         )));
@@ -119,7 +102,7 @@ pub fn validate_knots<F: Scalar>(
     if last.1 != p + 1 {
         return Err(GeomError::Knots(format!(
             "not clamped: last knot {} has multiplicity {}, needs p + 1 = {}",
-            show(&last.0),
+            format_scalar(&last.0),
             last.1,
             p + 1
         )));
@@ -127,7 +110,7 @@ pub fn validate_knots<F: Scalar>(
     if let Some((k, m)) = runs[1..runs.len() - 1].iter().find(|(_, m)| *m > p) {
         return Err(GeomError::Knots(format!(
             "interior knot {} has multiplicity {m} > degree {p} (the curve would be discontinuous)",
-            show(k)
+            format_scalar(k)
         )));
     }
     Ok(())
@@ -159,9 +142,9 @@ fn check_domain<F: Scalar>(knots: &[F], p: usize, num_ctrl: usize, t: &F) -> Res
     if t < a || t > b || t.partial_cmp(a).is_none() {
         return Err(GeomError::Parameter(format!(
             "parameter {} outside the domain [{}, {}]",
-            show(t),
-            show(a),
-            show(b)
+            format_scalar(t),
+            format_scalar(a),
+            format_scalar(b)
         )));
     }
     Ok(())
@@ -214,16 +197,16 @@ fn insert_knot_flat<F: Scalar>(
     if !(t > a && t < b) {
         return Err(GeomError::Parameter(format!(
             "knot insertion needs a parameter strictly inside the domain ({}, {}), got {}",
-            show(a),
-            show(b),
-            show(t)
+            format_scalar(a),
+            format_scalar(b),
+            format_scalar(t)
         )));
     }
     let mult = knots.iter().filter(|x| *x == t).count();
     if mult + r > p {
         return Err(GeomError::Knots(format!(
             "inserting {} {r} time(s) would give multiplicity {} > degree {p}",
-            show(t),
+            format_scalar(t),
             mult + r
         )));
     }
@@ -411,8 +394,8 @@ impl<F: Scalar> NurbsCurve<F> {
             return Err(GeomError::Knots(format!(
                 "breakpoints must increase strictly: breakpoint {} = {} is followed by {}",
                 i,
-                show(&breaks[i]),
-                show(&breaks[i + 1])
+                format_scalar(&breaks[i]),
+                format_scalar(&breaks[i + 1])
             )));
         }
         let mut coords: Vec<F> = first.coords().to_vec();
@@ -424,9 +407,9 @@ impl<F: Scalar> NurbsCurve<F> {
                     "pieces {} and {k} do not meet at breakpoint {} (C0 needs the end point of \
                      one to equal the start point of the next projectively): end {} vs start {}",
                     k - 1,
-                    show(&breaks[k]),
-                    show_point(&end),
-                    show_point(start)
+                    format_scalar(&breaks[k]),
+                    format_vector(&end),
+                    format_vector(start)
                 ))
             })?;
             for pt in piece.control_points().skip(1) {
@@ -511,7 +494,7 @@ impl<F: Scalar> NurbsCurve<F> {
     /// infinity.
     pub fn eval(&self, t: &F) -> Result<Vec<F>, GeomError> {
         let h = self.eval_homogeneous(t)?;
-        dehomogenize(&h, || show(t))
+        dehomogenize(&h, || format_scalar(t))
     }
 
     /// The Euclidean point at an `f64` parameter, computed in `f64` (de Boor on the
@@ -779,7 +762,9 @@ impl<F: Scalar> NurbsSurface<F> {
     /// infinity.
     pub fn eval(&self, u: &F, v: &F) -> Result<Vec<F>, GeomError> {
         let h = self.eval_homogeneous(u, v)?;
-        dehomogenize(&h, || format!("({}, {})", show(u), show(v)))
+        dehomogenize(&h, || {
+            format!("({}, {})", format_scalar(u), format_scalar(v))
+        })
     }
 
     /// The Euclidean point at `f64` parameters, computed in `f64`.

@@ -118,6 +118,27 @@ fn dot<F: Scalar>(a: &Point2<F>, b: &Point2<F>) -> F {
     a[0].clone() * b[0].clone() + a[1].clone() * b[1].clone()
 }
 
+/// Validates the input of an arc (centre, radius `> 0`, both end points exactly on the
+/// circle and different) and returns `(from − center, to − center)`.
+fn check_arc_input<F: Scalar>(
+    center: &Point2<F>,
+    radius: &F,
+    from: &Point2<F>,
+    to: &Point2<F>,
+) -> Result<(Point2<F>, Point2<F>), ConstructionError> {
+    check_center(center)?;
+    check_radius(radius)?;
+    check_on_circle(center, radius, from, "from")?;
+    check_on_circle(center, radius, to, "to")?;
+    if from == to {
+        return Err(ConstructionError::CoincidentPoints(format!(
+            "the end points of an arc must differ, from = to = {} (use full_circle for a whole circle)",
+            format_point(from)
+        )));
+    }
+    Ok((sub(from, center), sub(to, center)))
+}
+
 fn check_center<F: Scalar>(center: &Point2<F>) -> Result<(), ConstructionError> {
     check_finite("center", &[&center[0], &center[1]])
 }
@@ -157,18 +178,7 @@ impl<F: Scalar> CircleArc<F> {
         to: Point2<F>,
         clockwise: bool,
     ) -> Result<Self, ConstructionError> {
-        check_center(&center)?;
-        check_radius(&radius)?;
-        check_on_circle(&center, &radius, &from, "from")?;
-        check_on_circle(&center, &radius, &to, "to")?;
-        if from == to {
-            return Err(ConstructionError::CoincidentPoints(format!(
-                "the end points of an arc must differ, from = to = {} (use full_circle for a whole circle)",
-                format_point(&from)
-            )));
-        }
-        let d0 = sub(&from, &center);
-        let d1 = sub(&to, &center);
+        let (d0, d1) = check_arc_input(&center, &radius, &from, &to)?;
         let turn = cross(&d0, &d1);
         let oriented = if clockwise {
             -turn.clone()
@@ -381,18 +391,7 @@ impl<F: Scalar> CircleArcs<F> {
         to: Point2<F>,
         clockwise: bool,
     ) -> Result<Self, ConstructionError> {
-        check_center(&center)?;
-        check_radius(&radius)?;
-        check_on_circle(&center, &radius, &from, "from")?;
-        check_on_circle(&center, &radius, &to, "to")?;
-        if from == to {
-            return Err(ConstructionError::CoincidentPoints(format!(
-                "the end points of an arc must differ, from = to = {} (use full_circle for a whole circle)",
-                format_point(&from)
-            )));
-        }
-        let d0 = sub(&from, &center);
-        let d1 = sub(&to, &center);
+        let (d0, d1) = check_arc_input(&center, &radius, &from, &to)?;
         let turn = cross(&d0, &d1);
         let oriented = if clockwise { -turn } else { turn };
         let cosine = dot(&d0, &d1);

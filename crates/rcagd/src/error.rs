@@ -4,7 +4,6 @@
 //! equation (a point on a circle) it carries the residual, formatted exactly
 //! (`"p/q"`) for exact scalars and as a decimal for `f64`.
 
-use rcagd_algebra::rational::format_rational;
 use rcagd_algebra::{AlgebraError, Scalar};
 use rcagd_geom::GeomError;
 use thiserror::Error;
@@ -60,24 +59,9 @@ pub enum ConstructionError {
     Algebra(#[from] AlgebraError),
 }
 
-/// Formats a scalar for messages: exact `"p/q"` for exact scalars, the shortest
-/// round-tripping decimal for `f64`.
-pub fn format_scalar<F: Scalar>(x: &F) -> String {
-    if F::EXACT {
-        match x.to_rational() {
-            Some(q) => format_rational(&q),
-            None => format!("{x:?}"),
-        }
-    } else {
-        format!("{}", x.to_f64())
-    }
-}
-
+pub use rcagd_algebra::format_scalar;
 /// Formats a point `(x, y, …)` with [`format_scalar`].
-pub fn format_point<F: Scalar>(p: &[F]) -> String {
-    let parts: Vec<String> = p.iter().map(format_scalar).collect();
-    format!("({})", parts.join(", "))
-}
+pub use rcagd_algebra::format_vector as format_point;
 
 /// Fails with [`ConstructionError::NotFinite`] if an `f64` input is NaN or infinite
 /// (exact scalars are always finite).
