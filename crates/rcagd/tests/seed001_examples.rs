@@ -974,4 +974,128 @@ fn hermite_errors() {
         )),
         rcagd::ph::PhError::ParallelEndTangents(_)
     ));
+    // collinear data with antiparallel end tangents, d_s = (1,0,0), d_f = (−1,0,0),
+    // p_f − p_s = (−1,0,0): h = (−120,0,0) = r_1d_s + r_2d_f with r_1r_2 = 25 has the
+    // solution r_1 = −60 + √3625 > 0, so 16k_0k_2 = 5 and every φ interpolates — a
+    // one-parameter family, reported as a typed error (not enumerated)
+    let family = HermiteData::new(
+        z.clone(),
+        [qi(1), qi(0), qi(0)],
+        [qi(-1), qi(0), qi(0)],
+        [qi(-1), qi(0), qi(0)],
+    );
+    let ex = family.solve_exact();
+    assert!(
+        matches!(ex, Err(rcagd::ph::PhError::Degenerate(_))),
+        "{ex:?}"
+    );
+}
+
+// ------------------------------------------------------------------ chapter 6 relations
+
+/// `α_1 = α_0c_{10} + α_3c_{13}`, `α_2 = α_0c_{20} + α_3c_{23}` and the same for `β`
+/// (i.e. `A_1 = A_0c_{10} + A_3c_{13}`, … with the `c`'s multiplying on the right).
+fn check_septic_relations(curve: &PhCurve<Q>, c: [Complex<Q>; 4]) {
+    let (a, b) = curve.hopf_coefficients();
+    assert_eq!(a.len(), 4, "a septic");
+    let [c10, c13, c20, c23] = c;
+    for x in [&a, &b] {
+        assert_eq!(
+            x[1],
+            x[0].clone() * c10.clone() + x[3].clone() * c13.clone(),
+            "A_1 = A_0 c10 + A_3 c13"
+        );
+        assert_eq!(
+            x[2],
+            x[0].clone() * c20.clone() + x[3].clone() * c23.clone(),
+            "A_2 = A_0 c20 + A_3 c23"
+        );
+    }
+}
+
+/// Seed 001 (6.15) on Example 8.1 (cubic reparametrization): `c10 = 2h_3/(3k)`,
+/// `c13 = h_0/(3k)`, `c20 = h_4/(3k)`, `c23 = 2h_1/(3k)` with the Bernstein coefficients
+/// `h_i` of `f'g − fg'` and `k = f_3g_0 − f_0g_3` (real c's: a general helix).
+#[test]
+fn relations_6_15_cubic_reparametrization() {
+    let seed = LineCircle::new(ci(1, 0), ci(1, 1), ci(1, -1), ci(0, 1)).unwrap();
+    let f = [1i64, 2, 2, 1];
+    let g = [1i64, 2, 3, 3];
+    let curve = seed
+        .reparametrized_helix(&f.map(qi), &g.map(qi), origin())
+        .unwrap();
+    let h = [
+        qi(3 * (f[1] * g[0] - f[0] * g[1])),
+        q("3/2") * qi(f[2] * g[0] - f[0] * g[2]),
+        q("3/2") * qi(f[2] * g[1] - f[1] * g[2]) + q("1/2") * qi(f[3] * g[0] - f[0] * g[3]),
+        q("3/2") * qi(f[3] * g[1] - f[1] * g[3]),
+        qi(3 * (f[3] * g[2] - f[2] * g[3])),
+    ];
+    let k = qi(f[3] * g[0] - f[0] * g[3]);
+    let r = |x: Q| Complex::new(x, qi(0));
+    let k3 = qi(3) * k;
+    check_septic_relations(
+        &curve,
+        [
+            r(qi(2) * h[3].clone() / k3.clone()),
+            r(h[0].clone() / k3.clone()),
+            r(h[4].clone() / k3.clone()),
+            r(qi(2) * h[1].clone() / k3),
+        ],
+    );
+    assert!(curve.coefficients_in_real_plane());
+}
+
+/// Seed 001 (6.22) on Example 8.2 (multiplication by a quadratic `w`): `c10 = 2w_1/(3w_0)`,
+/// `c13 = w_0/(3w_2)`, `c20 = w_2/(3w_0)`, `c23 = 2w_1/(3w_2)` (complex: a monotone helix).
+#[test]
+fn relations_6_22_multiplication() {
+    let seed = LineCircle::new(ci(0, 5), ci(1, 1), ci(1, -1), ci(2, 5)).unwrap();
+    let w = [ci(1, 0), ci(1, 1), ci(1, 0)];
+    let curve = seed.multiplied_helix(&w, origin()).unwrap();
+    let three = ci(3, 0);
+    let two = ci(2, 0);
+    check_septic_relations(
+        &curve,
+        [
+            two.clone() * w[1].clone() / (three.clone() * w[0].clone()),
+            w[0].clone() / (three.clone() * w[2].clone()),
+            w[2].clone() / (three.clone() * w[0].clone()),
+            two * w[1].clone() / (three * w[2].clone()),
+        ],
+    );
+    assert!(
+        !curve.coefficients_in_real_plane(),
+        "a monotone (non-general) helix: the A_i span more than a real 2-plane"
+    );
+}
+
+/// Seed 001 (6.24) on Example 8.3 (quadratic reparametrization, then linear `w`):
+/// `c10 = (h_1w_1 + h_2w_0)/(3h_1w_0)`, `c13 = h_0w_0/(3h_1w_1)`, `c20 = h_2w_1/(3h_1w_0)`,
+/// `c23 = (h_1w_0 + h_0w_1)/(3h_1w_1)` with `h` of (6.9).
+#[test]
+fn relations_6_24_reparametrization_and_multiplication() {
+    let seed = LineCircle::new(ci(1, 1), ci(1, 0), ci(1, -1), ci(2, 0)).unwrap();
+    let f = [1i64, 2, 1];
+    let g = [1i64, 2, 2];
+    let w = [ci(1, 0), ci(1, 1)];
+    let curve = seed.helix(&f.map(qi), &g.map(qi), &w, origin()).unwrap();
+    let r = |x: i64| Complex::new(qi(x), qi(0));
+    let h = [
+        r(2 * (f[1] * g[0] - f[0] * g[1])),
+        r(f[2] * g[0] - f[0] * g[2]),
+        r(2 * (f[2] * g[1] - f[1] * g[2])),
+    ];
+    let (w0, w1) = (w[0].clone(), w[1].clone());
+    let three = r(3);
+    check_septic_relations(
+        &curve,
+        [
+            (h[1].clone() * w1.clone() + h[2].clone() * w0.clone())
+                / (three.clone() * h[1].clone() * w0.clone()),
+            h[0].clone() * w0.clone() / (three.clone() * h[1].clone() * w1.clone()),
+            h[2].clone() * w1.clone() / (three.clone() * h[1].clone() * w0.clone()),
+            (h[1].clone() * w0.clone() + h[0].clone() * w1.clone()) / (three * h[1].clone() * w1),
+        ],
+    );
 }

@@ -1,6 +1,757 @@
-//! Ops of the `ph` topic (being written; see docs/ARCHITECTURE.md).
+//! Ops of the `ph` topic: spatial Pythagorean-hodograph curves (`rcagd::ph`, seed 001,
+//! NOTES-001): a PH curve from quaternion or Hopf coefficients with optional frames,
+//! curvature comb and constant-feed (arc-length-uniform) marks; polynomial helices from a
+//! line/circle seed (reparametrization, multiplication or both); the septic DPH
+//! constructor; Hermite interpolation by helical PH quintics (seed 001 ch. 9).
+//!
+//! Extra objects are named after the main object: `<name>_frame` (frame vectors as line
+//! segments), `<name>_comb` (curvature comb: teeth `r(t) → r(t) − scale·κn(t)` and the
+//! polyline through their tips), `<name>_feed` (short marks across the curve at the
+//! arc-length-uniform parameters). Each extra object holds the curve itself as its
+//! first piece, so that its picture shows the curve with the frame, comb or marks.
 
-use super::OpSpec;
+use super::{OpArgs, OpError, OpSpec, ParamSpec};
+use crate::model::{Geometry, Object};
+use crate::value::ParamKind;
+use num_traits::{One, Zero};
+use rcagd::ph::dph::{certify_dph_septic, dph_septic, dph_septic_z_roots};
+use rcagd::ph::{
+    DphTest, HelixTest, HermiteData, HermiteInterpolant, LineCircle, PhCurve, PhPolyCurve,
+};
+use rcagd_algebra::complex::Complex;
+use rcagd_algebra::quaternion::Quaternion;
+use rcagd_algebra::rational::format_rational;
+use rcagd_algebra::{Certificate, Poly, Rational, Scalar};
+use rcagd_geom::BezierCurve;
 
 /// The ops of this topic.
-pub const OPS: &[OpSpec] = &[];
+pub const OPS: &[OpSpec] = &[PH_CURVE, PH_HELIX, PH_DPH_SEPTIC, PH_HERMITE];
+
+type Q = Rational;
+
+const START: ParamSpec =
+    ParamSpec::with_default("start", ParamKind::Point3, "[0, 0, 0]", "the start point r(0)");
+
+/// Display options shared by the curve-building ops.
+const DISPLAY_PARAMS: [ParamSpec; 6] = [
+    ParamSpec::with_default(
+        "frame",
+        ParamKind::Choice(&["none", "euler_rodrigues", "frenet"]),
+        "\"none\"",
+        "frame vectors drawn as `<name>_frame`: the rational Euler–Rodrigues frame (A i A*, A j A*, A k A*)/σ, or the Frenet frame (t, p, b) of a DPH curve (p, b rounded to f64 unless √c is rational)",
+    ),
+    ParamSpec::with_default(
+        "samples",
+        ParamKind::Int,
+        "9",
+        "number of parameters t = k/(samples−1) for frame vectors and comb teeth, 2 to 200",
+    ),
+    ParamSpec::with_default(
+        "frame_length",
+        ParamKind::Number,
+        "\"1/2\"",
+        "length of the drawn frame vectors",
+    ),
+    ParamSpec::with_default(
+        "comb",
+        ParamKind::Bool,
+        "false",
+        "draw the curvature comb `<name>_comb` (exact: κn = (σr''−σ'r')/σ³)",
+    ),
+    ParamSpec::with_default(
+        "comb_scale",
+        ParamKind::Number,
+        "1",
+        "length of a comb tooth per unit curvature",
+    ),
+    ParamSpec::with_default(
+        "feed",
+        ParamKind::Int,
+        "0",
+        "if > 0: mark the parameters of `feed` equal arc-length steps (constant feed) as `<name>_feed`, up to 200",
+    ),
+];
+
+const PH_CURVE: OpSpec = OpSpec {
+    name: "ph_curve",
+    summary: "a spatial PH curve r' = A i A* of degree 2m+1 from the quaternion (or Hopf) Bernstein coefficients of A, exact control points; optional frames, curvature comb, constant-feed marks",
+    params: &[
+        ParamSpec::optional(
+            "quaternions",
+            ParamKind::Points,
+            "Bernstein coefficients A_0..A_m of A(t), each [u, v, p, q] = u + v i + p j + q k",
+        ),
+        ParamSpec::optional(
+            "alpha",
+            ParamKind::Points,
+            "Hopf form instead of `quaternions`: Bernstein coefficients of α = u + i v, each [re, im]",
+        ),
+        ParamSpec::optional(
+            "beta",
+            ParamKind::Points,
+            "Hopf form: Bernstein coefficients of β = q + i p, each [re, im] (A = α + k β)",
+        ),
+        START,
+        DISPLAY_PARAMS[0],
+        DISPLAY_PARAMS[1],
+        DISPLAY_PARAMS[2],
+        DISPLAY_PARAMS[3],
+        DISPLAY_PARAMS[4],
+        DISPLAY_PARAMS[5],
+    ],
+    example: r#"[[object]]
+name = "ph_cubic"
+op = "ph_curve"
+quaternions = [[1, 0, 1, 0], [0, 1, 0, 1]]
+frame = "euler_rodrigues"
+samples = 5
+comb = true
+feed = 8
+"#,
+    build: build_ph_curve,
+};
+
+const PH_HELIX: OpSpec = OpSpec {
+    name: "ph_helix",
+    summary: "a polynomial helix from a line/circle seed z = (a0(1−t)+a1 t)/(b0(1−t)+b1 t): reparametrization by f/g and/or multiplication by w (seed 001 §6, NOTES-001 ALG-7); certified axis a·r' ≡ σ",
+    params: &[
+        ParamSpec::required("a0", ParamKind::Point2, "complex a0 = [re, im]"),
+        ParamSpec::required("a1", ParamKind::Point2, "complex a1"),
+        ParamSpec::required("b0", ParamKind::Point2, "complex b0"),
+        ParamSpec::required(
+            "b1",
+            ParamKind::Point2,
+            "complex b1 (a0 b1 − a1 b0 ≠ 0)",
+        ),
+        ParamSpec::with_default(
+            "f",
+            ParamKind::Numbers,
+            "[0, 1]",
+            "real Bernstein coefficients of f (reparametrization f/g; [0, 1] with g = [1, 1] is none)",
+        ),
+        ParamSpec::with_default(
+            "g",
+            ParamKind::Numbers,
+            "[1, 1]",
+            "real Bernstein coefficients of g (as many as f)",
+        ),
+        ParamSpec::with_default(
+            "w",
+            ParamKind::Points,
+            "[[1, 0]]",
+            "complex Bernstein coefficients [re, im] of the multiplier w ([[1, 0]]: none)",
+        ),
+        START,
+        DISPLAY_PARAMS[0],
+        DISPLAY_PARAMS[1],
+        DISPLAY_PARAMS[2],
+        DISPLAY_PARAMS[3],
+        DISPLAY_PARAMS[4],
+        DISPLAY_PARAMS[5],
+    ],
+    example: r#"[[object]]
+name = "helix_8_1"
+op = "ph_helix"
+a0 = [1, 0]
+a1 = [1, 1]
+b0 = [1, -1]
+b1 = [0, 1]
+f = [1, 2, 2, 1]
+g = [1, 2, 3, 3]
+"#,
+    build: build_ph_helix,
+};
+
+const PH_DPH_SEPTIC: OpSpec = OpSpec {
+    name: "ph_dph_septic",
+    summary: "a double-PH septic with αβ' − α'β = h w² (st h + 2 st w = 4) from free α0, α1, β0 and a root of the quadratic (5.12) (seed 001 §5.2, NOTES-001 ALG-9); helical or not",
+    params: &[
+        ParamSpec::required(
+            "h",
+            ParamKind::Numbers,
+            "real Bernstein coefficients of h (1, 3 or 5 of them)",
+        ),
+        ParamSpec::required(
+            "w",
+            ParamKind::Points,
+            "complex Bernstein coefficients [re, im] of w (3, 2 or 1 of them)",
+        ),
+        ParamSpec::required("alpha0", ParamKind::Point2, "complex α0 ≠ 0"),
+        ParamSpec::required("alpha1", ParamKind::Point2, "complex α1"),
+        ParamSpec::required("beta0", ParamKind::Point2, "complex β0"),
+        ParamSpec::with_default(
+            "root",
+            ParamKind::Int,
+            "0",
+            "which root z = α1β2 − α2β1 of (5.12): 0 = (3T2 + √Δ)/9, 1 = (3T2 − √Δ)/9",
+        ),
+        START,
+        DISPLAY_PARAMS[0],
+        DISPLAY_PARAMS[1],
+        DISPLAY_PARAMS[2],
+        DISPLAY_PARAMS[3],
+        DISPLAY_PARAMS[4],
+        DISPLAY_PARAMS[5],
+    ],
+    example: r#"[[object]]
+name = "dph_septic_8_4"
+op = "ph_dph_septic"
+h = [1]
+w = [[1, 0], [1, 1], [0, 1]]
+alpha0 = [1, 0]
+alpha1 = [0, 2]
+beta0 = [0, 1]
+root = 0
+"#,
+    build: build_ph_dph_septic,
+};
+
+const PH_HERMITE: OpSpec = OpSpec {
+    name: "ph_hermite",
+    summary: "every helical PH quintic with r(0) = p_s, r'(0) = d_s, r(1) = p_f, r'(1) = d_f (seed 001 ch. 9, NOTES-001 ALG-10), by increasing bending energy: the least-energy one is the object `<name>`, the others `<name>_2`, `<name>_3`, … (a tie for the least energy ends in `_min`)",
+    params: &[
+        ParamSpec::required("p_s", ParamKind::Point3, "start point"),
+        ParamSpec::required("d_s", ParamKind::Point3, "start derivative r'(0) ≠ 0"),
+        ParamSpec::required("p_f", ParamKind::Point3, "end point ≠ p_s"),
+        ParamSpec::required(
+            "d_f",
+            ParamKind::Point3,
+            "end derivative r'(1) ≠ 0, not a positive multiple of d_s",
+        ),
+    ],
+    example: r#"[[object]]
+name = "hermite_9_1"
+op = "ph_hermite"
+p_s = [0, 0, 0]
+d_s = [1, 0, 1]
+p_f = [1, 1, 1]
+d_f = [0, 1, 1]
+"#,
+    build: build_ph_hermite,
+};
+
+// ------------------------------------------------------------------ helpers
+
+fn qi(n: i64) -> Q {
+    Q::from(n)
+}
+
+fn point3(args: &OpArgs, param: &'static str) -> Result<[Q; 3], OpError> {
+    let p = args.point(param)?;
+    <[Q; 3]>::try_from(p)
+        .map_err(|_| OpError::param(param, format!("internal error: `{param}` is not a 3D point")))
+}
+
+fn complex(args: &OpArgs, param: &'static str) -> Result<Complex<Q>, OpError> {
+    let p = args.point(param)?;
+    match <[Q; 2]>::try_from(p) {
+        Ok([re, im]) => Ok(Complex::new(re, im)),
+        Err(_) => Err(OpError::param(
+            param,
+            format!("internal error: `{param}` is not a complex number [re, im]"),
+        )),
+    }
+}
+
+fn complexes(args: &OpArgs, param: &'static str) -> Result<Vec<Complex<Q>>, OpError> {
+    args.points(param)?
+        .into_iter()
+        .enumerate()
+        .map(|(k, p)| match <[Q; 2]>::try_from(p) {
+            Ok([re, im]) => Ok(Complex::new(re, im)),
+            Err(p) => Err(OpError::param(
+                param,
+                format!(
+                    "entry {k} must be a complex number [re, im], got {} numbers",
+                    p.len()
+                ),
+            )),
+        })
+        .collect()
+}
+
+fn numbers(args: &OpArgs, param: &'static str) -> Result<Vec<Q>, OpError> {
+    args.opt_numbers(param)?.ok_or_else(|| {
+        OpError::param(
+            param,
+            format!("internal error: `{param}` has no value"),
+        )
+    })
+}
+
+/// Prefixes every certificate's property with `prefix`.
+fn prefixed(prefix: &str, certs: Vec<Certificate>) -> impl Iterator<Item = Certificate> + '_ {
+    certs.into_iter().map(move |mut c| {
+        c.property = format!("{prefix}{}", c.property);
+        c
+    })
+}
+
+fn segment(a: &[Q; 3], b: &[Q; 3]) -> Result<BezierCurve<Q>, OpError> {
+    Ok(BezierCurve::from_points(&[a.to_vec(), b.to_vec()])?)
+}
+
+fn add(a: &[Q; 3], b: &[Q; 3]) -> [Q; 3] {
+    [&a[0] + &b[0], &a[1] + &b[1], &a[2] + &b[2]]
+}
+
+fn scale(a: &[Q; 3], s: &Q) -> [Q; 3] {
+    [&a[0] * s, &a[1] * s, &a[2] * s]
+}
+
+fn eval3(p: &[Poly<Q>; 3], t: &Q) -> [Q; 3] {
+    [p[0].eval(t), p[1].eval(t), p[2].eval(t)]
+}
+
+fn to_q(x: f64) -> Result<Q, OpError> {
+    Q::try_from(x).map_err(|_| OpError::new(format!("non-finite value {x} in an f64 result")))
+}
+
+/// The main curve object with the PH, arc-length and curvature certificates, plus the
+/// display objects requested by [`DISPLAY_PARAMS`].
+fn curve_objects(
+    args: &OpArgs,
+    curve: &PhCurve<Q>,
+    mut certs: Vec<Certificate>,
+) -> Result<Vec<Object>, OpError> {
+    let pc = curve.to_poly_curve();
+    for c in curve
+        .certify()
+        .into_iter()
+        .chain(curve.certify_arc_length())
+        .chain(curve.certify_curvature())
+    {
+        if !certs.iter().any(|x| x.property == c.property) {
+            certs.push(c);
+        }
+    }
+    let bez = curve.to_bezier()?;
+    let mut out = vec![args.object(Geometry::Curve(bez.clone()), certs)];
+    let samples = args.int("samples")?;
+    if !(2..=200).contains(&samples) {
+        return Err(OpError::param(
+            "samples",
+            format!("samples must be in 2..=200, got {samples}"),
+        ));
+    }
+    let ts: Vec<Q> = (0..samples)
+        .map(|k| Q::from(k) / Q::from(samples - 1))
+        .collect();
+    let name = args.name().to_string();
+    match args.string("frame")? {
+        "euler_rodrigues" => out.push(erf_object(args, &name, curve, &pc, &ts, &bez)?),
+        "frenet" => out.push(frenet_object(args, &name, &pc, &ts, &bez)?),
+        _ => {}
+    }
+    if args.bool("comb")? {
+        out.push(comb_object(args, &name, &pc, &ts, &bez)?);
+    }
+    let feed = args.int("feed")?;
+    if feed > 0 {
+        out.push(feed_object(args, &name, curve, &pc, feed, &bez)?);
+    } else if feed < 0 {
+        return Err(OpError::param("feed", format!("feed must be ≥ 0, got {feed}")));
+    }
+    Ok(out)
+}
+
+fn named(args: &OpArgs, name: String, geometry: Geometry, certs: Vec<Certificate>) -> Object {
+    let mut o = args.object(geometry, certs);
+    o.name = name;
+    o
+}
+
+fn erf_object(
+    args: &OpArgs,
+    name: &str,
+    curve: &PhCurve<Q>,
+    pc: &PhPolyCurve<Q>,
+    ts: &[Q],
+    bez: &BezierCurve<Q>,
+) -> Result<Object, OpError> {
+    let frame = curve.euler_rodrigues_frame();
+    let len = args.number("frame_length")?;
+    let mut segs = vec![bez.clone()];
+    for t in ts {
+        let Some(e) = frame.eval(t) else { continue };
+        let p = pc.eval(t);
+        for v in &e {
+            segs.push(segment(&p, &add(&p, &scale(v, &len)))?);
+        }
+    }
+    let certs = frame.certify();
+    Ok(named(
+        args,
+        format!("{name}_frame"),
+        Geometry::Curves(segs),
+        certs,
+    ))
+}
+
+fn frenet_object(
+    args: &OpArgs,
+    name: &str,
+    pc: &PhPolyCurve<Q>,
+    ts: &[Q],
+    bez: &BezierCurve<Q>,
+) -> Result<Object, OpError> {
+    let dph = match pc.dph_test()? {
+        DphTest::Dph(d) => d,
+        DphTest::Line => {
+            return Err(OpError::param(
+                "frame",
+                "a straight line has no Frenet frame (use frame = \"euler_rodrigues\")",
+            ))
+        }
+        DphTest::NotDph { .. } => {
+            return Err(OpError::param(
+                "frame",
+                "the curve is not DPH (ρ = |r'×r''|²/σ² is not c·ω̃²): its Frenet frame is not rational; use frame = \"euler_rodrigues\"",
+            ))
+        }
+    };
+    let frame = pc.frenet_frame(&dph);
+    let len = args.number("frame_length")?;
+    let root_c = rcagd_algebra::roots::rational_roots(&Poly::new(vec![
+        -frame.radicand().clone(),
+        Q::zero(),
+        Q::one(),
+    ]))
+    .into_iter()
+    .find(|r| *r > Q::zero());
+    let mut segs = vec![bez.clone()];
+    for t in ts {
+        let Some((tt, pt, bt)) = frame.eval_scaled(t) else {
+            continue;
+        };
+        let p = pc.eval(t);
+        let vecs: Vec<[Q; 3]> = match &root_c {
+            // √c rational: exact p = p̃/√c, b = b̃/√c
+            Some(r) => {
+                let inv = Q::one() / r.clone();
+                vec![tt, scale(&pt, &inv), scale(&bt, &inv)]
+            }
+            None => {
+                let k = 1.0 / Scalar::to_f64(frame.radicand()).sqrt();
+                let f = |v: &[Q; 3]| -> Result<[Q; 3], OpError> {
+                    Ok([
+                        to_q(Scalar::to_f64(&v[0]) * k)?,
+                        to_q(Scalar::to_f64(&v[1]) * k)?,
+                        to_q(Scalar::to_f64(&v[2]) * k)?,
+                    ])
+                };
+                vec![tt, f(&pt)?, f(&bt)?]
+            }
+        };
+        for v in &vecs {
+            segs.push(segment(&p, &add(&p, &scale(v, &len)))?);
+        }
+    }
+    let mut certs = pc.certify_dph(&dph);
+    certs.extend(frame.certify());
+    Ok(named(
+        args,
+        format!("{name}_frame"),
+        Geometry::Curves(segs),
+        certs,
+    ))
+}
+
+fn comb_object(
+    args: &OpArgs,
+    name: &str,
+    pc: &PhPolyCurve<Q>,
+    ts: &[Q],
+    bez: &BezierCurve<Q>,
+) -> Result<Object, OpError> {
+    let (num, den) = pc.curvature_vector();
+    let k = -args.number("comb_scale")?;
+    let mut teeth = vec![bez.clone()];
+    let mut tips: Vec<[Q; 3]> = Vec::new();
+    for t in ts {
+        let d = den.eval(t);
+        if d.is_zero() {
+            continue;
+        }
+        let p = pc.eval(t);
+        let tip = add(&p, &scale(&eval3(&num, t), &(k.clone() / d)));
+        teeth.push(segment(&p, &tip)?);
+        tips.push(tip);
+    }
+    for w in tips.windows(2) {
+        teeth.push(segment(&w[0], &w[1])?);
+    }
+    let certs = pc.certify_curvature_vector()?;
+    Ok(named(
+        args,
+        format!("{name}_comb"),
+        Geometry::Curves(teeth),
+        certs,
+    ))
+}
+
+fn feed_object(
+    args: &OpArgs,
+    name: &str,
+    curve: &PhCurve<Q>,
+    pc: &PhPolyCurve<Q>,
+    feed: i64,
+    bez: &BezierCurve<Q>,
+) -> Result<Object, OpError> {
+    if feed > 200 {
+        return Err(OpError::param("feed", format!("feed must be ≤ 200, got {feed}")));
+    }
+    let n = usize::try_from(feed).map_err(|_| OpError::param("feed", "feed must be ≥ 0"))?;
+    let tol = Q::one() / Q::from(1i64 << 40);
+    let ts = pc.constant_feed_parameters(n, &tol)?;
+    let s = pc.arc_length_poly();
+    let total = pc.arc_length();
+    let frame = curve.euler_rodrigues_frame();
+    let half = args.number("frame_length")? / qi(4);
+    // |s(t) − s*| ≤ max σ · |t − t*| ≤ (max Bernstein coefficient of σ)·tol
+    let smax = curve
+        .speed_bernstein()
+        .into_iter()
+        .fold(Q::zero(), |a, b| if b > a { b } else { a });
+    let bound = smax * tol;
+    let mut marks = vec![bez.clone()];
+    let mut worst = Q::zero();
+    for (k, t) in ts.iter().enumerate() {
+        let target = total.clone() * Q::from(k as i64) / Q::from(feed);
+        let err = (s.eval(t) - target).abs();
+        if err > worst {
+            worst = err;
+        }
+        let p = pc.eval(t);
+        let Some(e) = frame.eval(t) else { continue };
+        let off = scale(&e[1], &half);
+        let a = add(&p, &scale(&off, &-Q::one()));
+        marks.push(segment(&a, &add(&p, &off))?);
+    }
+    let certs = vec![Certificate::decide(
+        format!(
+            "|s(t_k) − k·S/{feed}| ≤ max σ · 2⁻⁴⁰ for every mark (constant feed, S = {})",
+            format_rational(&total)
+        ),
+        worst <= bound,
+        true,
+        || format!("worst |s(t_k) − k·S/N| = {}", format_rational(&worst)),
+    )];
+    Ok(named(
+        args,
+        format!("{name}_feed"),
+        Geometry::Curves(marks),
+        certs,
+    ))
+}
+
+/// The helix/DPH certificates of a constructed curve (exact): the DPH identity when it
+/// is DPH and the helix axis identities when it has an axis.
+fn shape_certificates(curve: &PhCurve<Q>) -> Result<Vec<Certificate>, OpError> {
+    let pc = curve.to_poly_curve();
+    let mut certs = Vec::new();
+    if let DphTest::Dph(d) = pc.dph_test()? {
+        certs.extend(pc.certify_dph(&d));
+    }
+    match pc.helix_test()? {
+        t @ (HelixTest::Helix(_) | HelixTest::Planar { .. }) => {
+            certs.extend(pc.certify_helix_test(&t))
+        }
+        HelixTest::Line | HelixTest::NotHelix => {}
+    }
+    Ok(certs)
+}
+
+// ------------------------------------------------------------------ builds
+
+fn build_ph_curve(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let start = point3(args, "start")?;
+    let quats = args.get("quaternions").is_some();
+    let hopf = args.get("alpha").is_some() || args.get("beta").is_some();
+    let curve = match (quats, hopf) {
+        (true, false) => {
+            let coeffs = args
+                .points("quaternions")?
+                .into_iter()
+                .enumerate()
+                .map(|(k, p)| match <[Q; 4]>::try_from(p) {
+                    Ok([u, v, p, q]) => Ok(Quaternion::new(u, v, p, q)),
+                    Err(p) => Err(OpError::param(
+                        "quaternions",
+                        format!(
+                            "A_{k} must be a quaternion [u, v, p, q], got {} numbers",
+                            p.len()
+                        ),
+                    )),
+                })
+                .collect::<Result<Vec<_>, _>>()?;
+            PhCurve::new(coeffs, start)?
+        }
+        (false, true) => {
+            if args.get("alpha").is_none() || args.get("beta").is_none() {
+                return Err(OpError::new("the Hopf form needs both `alpha` and `beta`"));
+            }
+            PhCurve::from_hopf(&complexes(args, "alpha")?, &complexes(args, "beta")?, start)?
+        }
+        (true, true) => {
+            return Err(OpError::param(
+                "quaternions",
+                "give either `quaternions` or `alpha` and `beta`, not both",
+            ))
+        }
+        (false, false) => {
+            return Err(OpError::new(
+                "a PH curve needs `quaternions` (or `alpha` and `beta`)",
+            ))
+        }
+    };
+    curve_objects(args, &curve, Vec::new())
+}
+
+fn build_ph_helix(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let seed = LineCircle::new(
+        complex(args, "a0")?,
+        complex(args, "a1")?,
+        complex(args, "b0")?,
+        complex(args, "b1")?,
+    )?;
+    let f = numbers(args, "f")?;
+    let g = numbers(args, "g")?;
+    let w = complexes(args, "w")?;
+    let curve = seed.helix(&f, &g, &w, point3(args, "start")?)?;
+    let mut certs = seed.certify_helix_construction(&curve, &f, &g, &w)?;
+    let pc = curve.to_poly_curve();
+    match pc.helix_test()? {
+        HelixTest::NotHelix => {
+            return Err(OpError::new(
+                "internal error: the constructed curve fails the helix axis test",
+            ))
+        }
+        HelixTest::Line => {
+            return Err(OpError::new(
+                "the data give a straight line (αβ' − α'β ≡ 0 after cancellation)",
+            ))
+        }
+        _ => {}
+    }
+    if let DphTest::Dph(d) = pc.dph_test()? {
+        certs.extend(pc.certify_dph(&d));
+    }
+    curve_objects(args, &curve, certs)
+}
+
+fn build_ph_dph_septic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let h = numbers(args, "h")?;
+    let w = complexes(args, "w")?;
+    let root = args.int("root")?;
+    let roots = dph_septic_z_roots(&h, &w)?;
+    let z = match root {
+        0 => &roots[0],
+        1 => &roots[1],
+        _ => {
+            return Err(OpError::param(
+                "root",
+                format!("root must be 0 or 1, got {root}"),
+            ))
+        }
+    };
+    let curve = dph_septic(
+        &h,
+        &w,
+        &complex(args, "alpha0")?,
+        &complex(args, "alpha1")?,
+        &complex(args, "beta0")?,
+        z,
+        point3(args, "start")?,
+    )?;
+    let mut certs = certify_dph_septic(&curve, &h, &w)?;
+    certs.extend(shape_certificates(&curve)?);
+    curve_objects(args, &curve, certs)
+}
+
+fn build_ph_hermite(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let data = HermiteData::new(
+        point3(args, "p_s")?,
+        point3(args, "d_s")?,
+        point3(args, "p_f")?,
+        point3(args, "d_f")?,
+    );
+    let sol = data.solve_exact()?;
+    let mut order: Vec<&HermiteInterpolant> = sol.interpolants.iter().collect();
+    order.sort_by(|a, b| a.bending_energy.total_cmp(&b.bending_energy));
+    let count = order.len();
+    let energies: Vec<f64> = order.iter().map(|i| i.bending_energy).collect();
+    let mut out = Vec::with_capacity(count);
+    for (k, s) in order.into_iter().enumerate() {
+        let exact = s.exact_control_points.is_some();
+        let pts: Vec<Vec<Q>> = match &s.exact_control_points {
+            Some(p) => p.iter().map(|v| v.to_vec()).collect(),
+            None => s
+                .curve
+                .control_points()
+                .iter()
+                .map(|v| v.iter().map(|x| to_q(*x)).collect::<Result<Vec<_>, _>>())
+                .collect::<Result<Vec<_>, _>>()?,
+        };
+        let mut certs = Vec::new();
+        let last = pts.len().saturating_sub(1);
+        let (Some(p0), Some(p1), Some(p4), Some(p5)) = (
+            pts.first(),
+            pts.get(1),
+            pts.get(last.saturating_sub(1)),
+            pts.get(last),
+        ) else {
+            return Err(OpError::new("internal error: an interpolant without control points"));
+        };
+        let five = qi(5);
+        let close = |a: &[Q], b: &[Q]| -> (bool, f64) {
+            let d = a
+                .iter()
+                .zip(b)
+                .map(|(x, y)| Scalar::to_f64(&(x - y).abs()))
+                .fold(0.0, f64::max);
+            (if exact { d == 0.0 } else { d <= 1e-9 * (1.0 + b.iter().map(|x| Scalar::to_f64(&x.abs())).fold(0.0, f64::max)) }, d)
+        };
+        let ds: Vec<Q> = p1.iter().zip(p0).map(|(a, b)| (a - b) * &five).collect();
+        let df: Vec<Q> = p5.iter().zip(p4).map(|(a, b)| (a - b) * &five).collect();
+        for (prop, a, b) in [
+            ("r(0) = p_s", p0.as_slice(), data.p_s.as_slice()),
+            ("r(1) = p_f", p5.as_slice(), data.p_f.as_slice()),
+            ("r'(0) = 5(p_1 − p_0) = d_s", ds.as_slice(), data.d_s.as_slice()),
+            ("r'(1) = 5(p_5 − p_4) = d_f", df.as_slice(), data.d_f.as_slice()),
+        ] {
+            let (ok, d) = close(a, b);
+            certs.push(Certificate::decide(prop, ok, exact, || {
+                format!("max deviation {d:e}")
+            }));
+        }
+        certs.extend(prefixed("f64 quaternion form: ", s.curve.certify()));
+        certs.extend(prefixed(
+            "f64 quaternion form: ",
+            s.curve.to_poly_curve().certify_helix_test(&s.helix),
+        ));
+        let e = s.bending_energy;
+        let least = energies.iter().all(|x| e <= *x * (1.0 + 1e-9));
+        certs.push(Certificate::decide(
+            format!(
+                "bending energy E = ∫κ²σ dt = {e:.9} (rank {} of {count}; k0 = {:.7}, k2 = {:.7}, φ = {:.7}){}",
+                k + 1,
+                s.k0,
+                s.k2,
+                s.phi,
+                if s.least_energy { ": the least of all interpolants" } else { "" }
+            ),
+            e.is_finite() && (least == s.least_energy),
+            false,
+            || format!("energies of all interpolants: {energies:?}"),
+        ));
+        let bez = BezierCurve::from_points(&pts)?;
+        let name = match (k, s.least_energy) {
+            (0, _) => args.name().to_string(),
+            (_, true) => format!("{}_{}_min", args.name(), k + 1),
+            (_, false) => format!("{}_{}", args.name(), k + 1),
+        };
+        out.push(named(args, name, Geometry::Curve(bez), certs));
+    }
+    Ok(out)
+}

@@ -349,6 +349,46 @@ fn septic_targets<F: Scalar>(h: &[F], w: &[Complex<F>]) -> Result<Vec<Complex<F>
     Ok(bernstein::product(&hc, &w2))
 }
 
+/// Certificates of a septic built by [`dph_septic`] from `h`, `w` (seed 001 (5.5);
+/// NOTES-001 ALG-9): the PH identity of [`PhCurve::certify`], the prescribed Hopf form
+/// `αβ' − α'β ≡ h·w²` (real and imaginary parts, power form), and the DPH identity
+/// `|r'×r''|² ≡ σ²·4|h w²|²` (so `ω = 2|h||w|²` is a polynomial).
+///
+/// # Errors
+/// [`PhError::DegreeMismatch`] unless `st h + 2 st w = 4`.
+pub fn certify_dph_septic<F: Scalar>(
+    curve: &PhCurve<F>,
+    h: &[F],
+    w: &[Complex<F>],
+) -> Result<Vec<Certificate>, PhError> {
+    let t = septic_targets(h, w)?;
+    let hw2 = cpoly_from_bernstein(&t);
+    let d = &curve.proportionality() - &hw2;
+    let (re, im) = (d.map(|c| c.re.clone()), d.map(|c| c.im.clone()));
+    let mut certs = curve.certify();
+    certs.push(identity_cert(
+        "Re(αβ' − α'β − h w²) ≡ 0 (seed 001 (5.5))",
+        &re,
+        &Poly::zero(),
+    ));
+    certs.push(identity_cert(
+        "Im(αβ' − α'β − h w²) ≡ 0 (seed 001 (5.5))",
+        &im,
+        &Poly::zero(),
+    ));
+    let pc = curve.to_poly_curve();
+    let cr = pc.cross_r1_r2();
+    let (hr, hi) = (hw2.map(|c| c.re.clone()), hw2.map(|c| c.im.clone()));
+    let rho = (&(&hr * &hr) + &(&hi * &hi)).scale(&F::from_i64(4));
+    let s2 = pc.speed() * pc.speed();
+    certs.push(identity_cert(
+        "|r'×r''|² ≡ σ²·4|h w²|² (DPH: ω = 2|h||w|²)",
+        &pdot(&cr, &cr),
+        &(&s2 * &rho),
+    ));
+    Ok(certs)
+}
+
 /// The two admissible values of `z = α_1β_2 − α_2β_1` for a septic DPH curve with
 /// `αβ' − α'β = h w²` (seed 001 (5.8), (5.10) corrected per erratum 16, (5.12)):
 /// `27z² − 18T_2 z − (T_0T_4 − 4T_1T_3) = 0`, i.e. `z = (3T_2 ± √Δ)/9` with

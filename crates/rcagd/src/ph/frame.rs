@@ -104,6 +104,42 @@ impl<F: Scalar> PhPolyCurve<F> {
         Ok(q)
     }
 
+    /// The curvature vector `κ·n = (σr'' − σ'r')/σ³` of a PH curve, as the numerator
+    /// `σr'' − σ'r'` and the denominator `σ³`: rational for every PH curve (no `√ρ`),
+    /// since `d t/ds = (r'/σ)'/σ` (NOTES-001 ALG-4/5; seed 001 (4.3) with `κ = ω/σ²`,
+    /// `p = (σr'' − σ'r')/(σω)`). Used for curvature combs.
+    pub fn curvature_vector(&self) -> ([Poly<F>; 3], Poly<F>) {
+        let d1 = pderiv(&self.r);
+        let d2 = pderiv(&d1);
+        let sd = self.sigma.derivative();
+        (
+            psub(&pscale_poly(&d2, &self.sigma), &pscale_poly(&d1, &sd)),
+            self.sigma.pow(3),
+        )
+    }
+
+    /// Certificates of [`Self::curvature_vector`]: `|σr''−σ'r'|² ≡ σ²ρ` (so
+    /// `|κn|² = ρ/σ⁴ = κ²`) and `(σr''−σ'r')·r' ≡ 0` (normal to the tangent).
+    ///
+    /// # Errors
+    /// As [`Self::rho`].
+    pub fn certify_curvature_vector(&self) -> Result<Vec<Certificate>, PhError> {
+        let (num, _) = self.curvature_vector();
+        let rho = self.rho()?;
+        Ok(vec![
+            identity_cert(
+                "|σr''−σ'r'|² ≡ σ²ρ (|κn| = κ, NOTES-001 ALG-4)",
+                &pdot(&num, &num),
+                &(&(&self.sigma * &self.sigma) * &rho),
+            ),
+            identity_cert(
+                "(σr''−σ'r')·r' ≡ 0 (κn ⊥ t)",
+                &pdot(&num, &pderiv(&self.r)),
+                &Poly::zero(),
+            ),
+        ])
+    }
+
     /// `κ² = ρ/σ⁴ = |r'×r''|²/σ⁶` (NOTES-001 ALG-4).
     ///
     /// # Errors
@@ -133,20 +169,56 @@ impl<F: Scalar> PhPolyCurve<F> {
     }
 
     /// Bending energy `E = ∫_a^b κ²σ dt = ∫_a^b ρ/σ³ dt` (seed 001 (9.29); NOTES-001
-    /// ALG-10 step 9), by adaptive Gauss–Legendre quadrature in `f64` (relative accuracy
-    /// about `1e-12` for regular curves). Exact scalars integrate the exact `ρ/σ³`; `f64`
-    /// evaluates `|r'×r''|²/σ⁵` pointwise.
+    /// ALG-10 step 9) with an error estimate; see [`BendingEnergy`].
+    ///
+    /// The integrand is rational with poles at the (complex) roots of `σ`. A PH curve with
+    /// a root pair of `σ` close to the real axis has a sharp peak of `1/σ³` at the nearby
+    /// local minimum of `σ` (width ≈ `√(σ/σ'')` there), which a fixed or depth-first
+    /// adaptive rule can miss or under-resolve (the defect that made the `f64` and the
+    /// exact path disagree by 5e-6 and both be wrong by a factor 2 on a septic with roots
+    /// of `σ` at `0.14 ± 0.087i`, `0.81 ± 0.083i`: true `E = 86.33508777895…`).
+    /// Therefore the interval is first split at the real roots of `σ'` (every peak of
+    /// `1/σ³` lies at such a critical point, computed by exact real-root isolation of
+    /// Bernstein subdivision of `σ'` in `f64`, variation diminishing), and then integrated by
+    /// *globally* adaptive
+    /// Gauss–Kronrod (7, 15) quadrature: the interval with the largest error estimate
+    /// `|K15 − G7|` is bisected until the summed estimate is below `1e-13·E` (or the
+    /// interval budget of 4000 is spent). The two integrand paths are
+    /// exact scalars: the exact `ρ` (converted to `f64` coefficients), `ρ(t)/σ(t)³`;
+    /// `f64`: `|r'(t)×r''(t)|²/σ(t)⁵` pointwise (no coefficient-level cancellation as in
+    /// `ρ = |r''|² − σ'²`).
     ///
     /// # Errors
-    /// As [`Self::rho`]; [`PhError::Degenerate`] if `σ` vanishes in `[a, b]`.
-    pub fn bending_energy_between(&self, a: f64, b: f64) -> Result<f64, PhError> {
-        // exact scalars: the exact ρ; f64: |r'×r''|²/σ⁵ pointwise (no coefficient-level
-        // cancellation as in ρ = |r''|² − σ'²)
+    /// As [`Self::rho`]; [`PhError::OutOfRange`] unless `a ≤ b` are finite;
+    /// [`PhError::Degenerate`] if `σ` vanishes in `[a, b]` (decided exactly for exact
+    /// scalars; for `f64` when the quadrature does not stay finite).
+    pub fn bending_energy_with_error(&self, a: f64, b: f64) -> Result<BendingEnergy, PhError> {
+        if !(a.is_finite() && b.is_finite() && a <= b) {
+            return Err(PhError::OutOfRange(format!(
+                "bending energy needs finite a ≤ b, got [{a}, {b}]"
+            )));
+        }
+        if F::EXACT {
+            if let (Some(s), Some(lo), Some(hi)) = (
+                poly_rational(&self.sigma),
+                rcagd_algebra::Rational::try_from(a).ok(),
+                rcagd_algebra::Rational::try_from(b).ok(),
+            ) {
+                if !s.is_zero() && rcagd_algebra::roots::count_real_roots_in(&s, &lo, &hi)? > 0 {
+                    return Err(PhError::Degenerate(format!(
+                        "σ vanishes in [{a}, {b}]: the bending energy diverges"
+                    )));
+                }
+            }
+        }
         let rho = if F::EXACT {
             Some(poly_f64(&self.rho()?))
         } else {
             None
         };
+        if self.sigma.is_zero() {
+            return Err(PhError::Degenerate("σ ≡ 0".into()));
+        }
         let sigma = poly_f64(&self.sigma);
         let d1 = pderiv(&[
             poly_f64(&self.r[0]),
@@ -164,13 +236,26 @@ impl<F: Scalar> PhPolyCurve<F> {
                 }
             }
         };
-        let v = adaptive_gauss(&f, a, b, 1e-13, 40);
-        if !v.is_finite() {
-            return Err(PhError::Degenerate(
-                "σ vanishes on the interval: the bending energy diverges".into(),
-            ));
+        // break points: the critical points of σ inside (a, b)
+        let mut cuts = vec![a];
+        sign_changes_f64(&sigma.derivative(), a, b, &mut cuts);
+        cuts.retain(|&t| t >= a && t < b);
+        cuts.push(b);
+        let (value, error) = gauss_kronrod(&f, &cuts, 1e-13, 4000);
+        if !(value.is_finite() && error.is_finite()) {
+            return Err(PhError::Degenerate(format!(
+                "σ vanishes (numerically) in [{a}, {b}]: the bending energy diverges"
+            )));
         }
-        Ok(v)
+        Ok(BendingEnergy { value, error })
+    }
+
+    /// Bending energy on `[a, b]`, the value of [`Self::bending_energy_with_error`].
+    ///
+    /// # Errors
+    /// As [`Self::bending_energy_with_error`].
+    pub fn bending_energy_between(&self, a: f64, b: f64) -> Result<f64, PhError> {
+        self.bending_energy_with_error(a, b).map(|e| e.value)
     }
 
     /// Bending energy on `[0, 1]`; see [`Self::bending_energy_between`].
@@ -445,65 +530,245 @@ impl<F: Scalar> PhCurve<F> {
     }
 }
 
-/// Adaptive Gauss–Legendre (7-point) quadrature of `f` on `[a, b]`.
-pub(crate) fn adaptive_gauss(f: &dyn Fn(f64) -> f64, a: f64, b: f64, tol: f64, depth: u32) -> f64 {
-    const X: [f64; 7] = [
-        -0.949_107_912_342_758_5,
-        -0.741_531_185_599_394_4,
-        -0.405_845_151_377_397_2,
-        0.0,
-        0.405_845_151_377_397_2,
-        0.741_531_185_599_394_4,
+/// A bending energy with the quadrature's error estimate (the sum over the final
+/// intervals of `|K15 − G7|`, a conservative bound for smooth integrands).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BendingEnergy {
+    /// The value `∫ ρ/σ³ dt`.
+    pub value: f64,
+    /// The estimated absolute error.
+    pub error: f64,
+}
+
+/// Appends to `out` the parameters in `(a, b)` where the `f64` polynomial `p` changes sign
+/// (to about `1e-12·(b − a)`), by Bernstein subdivision: the Bernstein coefficients of `p`
+/// on `[a, b]` bound its sign changes (variation diminishing), a piece without a sign
+/// change in its coefficients has no root, a piece with one sign change and opposite end
+/// values is bisected, anything else is split by de Casteljau at the midpoint.
+pub(crate) fn sign_changes_f64(p: &Poly<f64>, a: f64, b: f64, out: &mut Vec<f64>) {
+    let c = p.coeffs();
+    let n = c.len();
+    if n < 2 || a.is_nan() || b.is_nan() || b <= a {
+        return;
+    }
+    // q(u) = p(a + (b − a)u): Taylor shift by a, then scale
+    let mut q: Vec<f64> = c.to_vec();
+    for i in 0..n {
+        for j in (i..n - 1).rev() {
+            q[j] += a * q[j + 1];
+        }
+    }
+    let mut hk = 1.0;
+    for x in q.iter_mut() {
+        *x *= hk;
+        hk *= b - a;
+    }
+    // power → Bernstein: b_k = Σ_{j ≤ k} C(k, j)/C(n−1, j) q_j
+    let deg = n - 1;
+    let binom = |n: usize, k: usize| -> f64 {
+        (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
+    };
+    let bern: Vec<f64> = (0..n)
+        .map(|k| {
+            (0..=k)
+                .map(|j| binom(k, j) / binom(deg, j) * q[j])
+                .sum::<f64>()
+        })
+        .collect();
+    let eval = |t: f64| p.eval(&t);
+    fn rec(
+        bern: &[f64],
+        a: f64,
+        b: f64,
+        min_w: f64,
+        depth: u32,
+        eval: &dyn Fn(f64) -> f64,
+        out: &mut Vec<f64>,
+    ) {
+        let changes = bern
+            .windows(2)
+            .filter(|w| (w[0] < 0.0 && w[1] > 0.0) || (w[0] > 0.0 && w[1] < 0.0))
+            .count();
+        if changes == 0 {
+            return;
+        }
+        let (Some(&first), Some(&last)) = (bern.first(), bern.last()) else {
+            return;
+        };
+        if changes == 1 && first * last < 0.0 {
+            // exactly one simple root: bisection
+            let (mut lo, mut hi) = (a, b);
+            let slo = first < 0.0;
+            while hi - lo > min_w {
+                let m = 0.5 * (lo + hi);
+                if (eval(m) < 0.0) == slo {
+                    lo = m;
+                } else {
+                    hi = m;
+                }
+            }
+            out.push(0.5 * (lo + hi));
+            return;
+        }
+        if depth == 0 || b - a <= min_w {
+            out.push(0.5 * (a + b));
+            return;
+        }
+        // de Casteljau at 1/2
+        let n = bern.len();
+        let mut left = Vec::with_capacity(n);
+        let mut right = vec![0.0; n];
+        let mut w = bern.to_vec();
+        left.push(w[0]);
+        right[n - 1] = w[n - 1];
+        for r in 1..n {
+            for i in 0..n - r {
+                w[i] = 0.5 * (w[i] + w[i + 1]);
+            }
+            left.push(w[0]);
+            right[n - 1 - r] = w[n - 1 - r];
+        }
+        let m = 0.5 * (a + b);
+        rec(&left, a, m, min_w, depth - 1, eval, out);
+        rec(&right, m, b, min_w, depth - 1, eval, out);
+    }
+    rec(&bern, a, b, 1e-12 * (b - a), 60, &eval, out);
+}
+
+/// Gauss–Kronrod (7, 15) on `[a, b]`: `(K15, |K15 − G7|)` (QUADPACK `qk15` nodes).
+fn gk15(f: &dyn Fn(f64) -> f64, a: f64, b: f64) -> (f64, f64) {
+    const XGK: [f64; 8] = [
+        0.991_455_371_120_812_6,
         0.949_107_912_342_758_5,
+        0.864_864_423_359_769_1,
+        0.741_531_185_599_394_4,
+        0.586_087_235_467_691_1,
+        0.405_845_151_377_397_2,
+        0.207_784_955_007_898_5,
+        0.0,
     ];
-    const W: [f64; 7] = [
+    const WGK: [f64; 8] = [
+        0.022_935_322_010_529_22,
+        0.063_092_092_629_978_55,
+        0.104_790_010_322_250_2,
+        0.140_653_259_715_525_9,
+        0.169_004_726_639_267_9,
+        0.190_350_578_064_785_4,
+        0.204_432_940_075_298_9,
+        0.209_482_141_084_727_8,
+    ];
+    const WG: [f64; 4] = [
         0.129_484_966_168_869_7,
         0.279_705_391_489_276_7,
         0.381_830_050_505_118_9,
         0.417_959_183_673_469_4,
-        0.381_830_050_505_118_9,
-        0.279_705_391_489_276_7,
-        0.129_484_966_168_869_7,
     ];
-    fn gl(f: &dyn Fn(f64) -> f64, a: f64, b: f64) -> f64 {
-        let h = 0.5 * (b - a);
-        let c = 0.5 * (a + b);
-        X.iter()
-            .zip(W.iter())
-            .map(|(x, w)| w * f(c + h * x))
-            .sum::<f64>()
-            * h
+    let h = 0.5 * (b - a);
+    let c = 0.5 * (a + b);
+    let fc = f(c);
+    let mut k = WGK[7] * fc;
+    let mut g = WG[3] * fc;
+    for j in 0..7 {
+        let x = h * XGK[j];
+        let s = f(c - x) + f(c + x);
+        k += WGK[j] * s;
+        if j % 2 == 1 {
+            g += WG[j / 2] * s;
+        }
     }
-    /// Recursion with an absolute tolerance halved per level and an evaluation budget
-    /// (so that round-off noise cannot force an exponential refinement).
-    fn rec(
-        f: &dyn Fn(f64) -> f64,
-        a: f64,
-        b: f64,
-        whole: f64,
-        eps: f64,
-        depth: u32,
-        budget: &mut u32,
-    ) -> f64 {
+    (k * h, ((k - g) * h).abs())
+}
+
+/// Globally adaptive Gauss–Kronrod (7, 15) quadrature of `f` over the consecutive
+/// intervals of `cuts` (sorted): the interval with the largest error estimate is bisected
+/// until the summed estimate is at most `rel_tol·|I|` or `max_intervals` is reached
+/// (intervals shorter than `1e-14` of the whole are not split further, so round-off
+/// cannot force an endless refinement). Returns `(I, error estimate)`; NaN on a
+/// non-finite integrand value.
+pub(crate) fn gauss_kronrod(
+    f: &dyn Fn(f64) -> f64,
+    cuts: &[f64],
+    rel_tol: f64,
+    max_intervals: usize,
+) -> (f64, f64) {
+    let (Some(&first), Some(&last)) = (cuts.first(), cuts.last()) else {
+        return (0.0, 0.0);
+    };
+    let min_width = 1e-14 * (last - first).abs().max(f64::MIN_POSITIVE);
+    // (a, b, value, error)
+    let mut parts: Vec<(f64, f64, f64, f64)> = Vec::new();
+    for w in cuts.windows(2) {
+        if w[1] > w[0] {
+            let (v, e) = gk15(f, w[0], w[1]);
+            if !(v.is_finite() && e.is_finite()) {
+                return (f64::NAN, f64::NAN);
+            }
+            parts.push((w[0], w[1], v, e));
+        }
+    }
+    loop {
+        let total: f64 = parts.iter().map(|p| p.2).sum();
+        let err: f64 = parts.iter().map(|p| p.3).sum();
+        if err <= rel_tol * total.abs() || parts.len() >= max_intervals {
+            return (total, err);
+        }
+        // the splittable interval with the largest error
+        let worst = parts
+            .iter()
+            .enumerate()
+            .filter(|(_, p)| p.1 - p.0 > min_width)
+            .max_by(|x, y| x.1 .3.total_cmp(&y.1 .3))
+            .map(|(i, _)| i);
+        let Some(i) = worst else {
+            return (total, err);
+        };
+        let (a, b, _, _) = parts.swap_remove(i);
         let m = 0.5 * (a + b);
-        let l = gl(f, a, m);
-        let r = gl(f, m, b);
-        if !(l + r).is_finite() {
-            return f64::NAN;
-        }
-        *budget = budget.saturating_sub(1);
-        if depth == 0 || *budget == 0 || (l + r - whole).abs() <= eps {
-            l + r
-        } else {
-            rec(f, a, m, l, 0.5 * eps, depth - 1, budget)
-                + rec(f, m, b, r, 0.5 * eps, depth - 1, budget)
+        for (x, y) in [(a, m), (m, b)] {
+            let (v, e) = gk15(f, x, y);
+            if !(v.is_finite() && e.is_finite()) {
+                return (f64::NAN, f64::NAN);
+            }
+            parts.push((x, y, v, e));
         }
     }
-    let whole = gl(f, a, b);
-    if !whole.is_finite() {
-        return f64::NAN;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sign_changes_of_a_cubic() {
+        // (t − 0.2)(t − 0.25)(t − 0.9) on [0, 1]; two of the roots are close
+        let p = &(&Poly::new(vec![-0.2, 1.0]) * &Poly::new(vec![-0.25, 1.0]))
+            * &Poly::new(vec![-0.9, 1.0]);
+        let mut out = Vec::new();
+        sign_changes_f64(&p, 0.0, 1.0, &mut out);
+        assert_eq!(out.len(), 3, "{out:?}");
+        for (x, r) in out.iter().zip([0.2, 0.25, 0.9]) {
+            assert!((x - r).abs() < 1e-10, "{out:?}");
+        }
+        // on a sub-interval, and a polynomial without real roots
+        let mut out = Vec::new();
+        sign_changes_f64(&p, 0.22, 2.0, &mut out);
+        assert_eq!(out.len(), 2, "{out:?}");
+        let mut out = Vec::new();
+        sign_changes_f64(&Poly::new(vec![1.0, 0.0, 1.0]), -3.0, 3.0, &mut out);
+        assert!(out.is_empty());
     }
-    let eps = tol * whole.abs().max(1e-300);
-    let mut budget = 20_000;
-    rec(f, a, b, whole, eps, depth, &mut budget)
+
+    #[test]
+    fn gauss_kronrod_peak() {
+        // ∫_0^1 ε/((t − 1/2)² + ε²) dt = 2 atan(1/(2ε)), sharp peak at 1/2
+        let eps = 1e-4;
+        let f = |t: f64| eps / ((t - 0.5) * (t - 0.5) + eps * eps);
+        let exact = 2.0 * (0.5 / eps).atan();
+        let (v, e) = gauss_kronrod(&f, &[0.0, 0.5, 1.0], 1e-13, 4000);
+        assert!(
+            (v - exact).abs() <= 1e-11 * exact,
+            "{v} vs {exact}, est {e}"
+        );
+        assert!(e <= 1e-12 * exact);
+    }
 }

@@ -498,6 +498,41 @@ impl<F: Scalar> LineCircle<F> {
         self.helix(&[F::zero(), F::one()], &[F::one(), F::one()], w, start)
     }
 
+    /// Certificates of a curve built by [`Self::helix`] from `f`, `g`, `w`: the PH
+    /// identity, the predicted proportionality polynomial
+    /// `αβ' − α'β ≡ (f'g − fg')(a_0b_1 − a_1b_0)w²` (seed 001 §6.2), and the certificates
+    /// of the axis test ([`PhPolyCurve::certify_helix_test`]: `a·r' ≡ σ` and Lancret's
+    /// constant `κ/τ`, or the plane of a planar curve); a curve without an axis gets a
+    /// failing certificate.
+    ///
+    /// # Errors
+    /// As [`PhPolyCurve::rho`].
+    pub fn certify_helix_construction(
+        &self,
+        curve: &PhCurve<F>,
+        f: &[F],
+        g: &[F],
+        w: &[Complex<F>],
+    ) -> Result<Vec<Certificate>, PhError> {
+        let mut certs = curve.certify();
+        let d = &curve.proportionality() - &self.predicted_proportionality(f, g, w);
+        let (re, im) = (d.map(|c| c.re.clone()), d.map(|c| c.im.clone()));
+        certs.push(identity_cert(
+            "Re(αβ' − α'β − (f'g − fg')(a0b1 − a1b0)w²) ≡ 0 (seed 001 §6.2)",
+            &re,
+            &Poly::zero(),
+        ));
+        certs.push(identity_cert(
+            "Im(αβ' − α'β − (f'g − fg')(a0b1 − a1b0)w²) ≡ 0 (seed 001 §6.2)",
+            &im,
+            &Poly::zero(),
+        ));
+        let pc = curve.to_poly_curve();
+        let t = pc.helix_test()?;
+        certs.extend(pc.certify_helix_test(&t));
+        Ok(certs)
+    }
+
     /// The predicted proportionality polynomial `(f'g − fg')(a_0b_1 − a_1b_0)w²`.
     pub fn predicted_proportionality(
         &self,

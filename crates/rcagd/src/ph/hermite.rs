@@ -730,8 +730,10 @@ type RootIv<K> = (K, K, Option<K>);
 /// exact root when a split point hit it (or a nearby simple rational is a root).
 fn isolate_roots<K: Scalar>(p: &Poly<K>) -> Vec<RootIv<K>> {
     if !K::EXACT {
-        // f64: isolate the roots of the (exactly converted) coefficients with exact
-        // Sturm sequences, so that round-off cannot invent or lose roots
+        // f64: isolate the roots of the (exactly converted) coefficients exactly
+        // (integer Sturm/Descartes isolation of `rcagd_algebra::roots`), so that round-off
+        // cannot invent or lose roots; each interval is refined exactly to ~1e-13
+        // relative, and its endpoints are rounded to f64
         let Some(coeffs) = p
             .coeffs()
             .iter()
@@ -740,20 +742,26 @@ fn isolate_roots<K: Scalar>(p: &Poly<K>) -> Vec<RootIv<K>> {
         else {
             return Vec::new();
         };
-        return isolate_roots(&Poly::new(coeffs))
+        let pq = Poly::new(coeffs);
+        let Ok(ivs) = rcagd_algebra::roots::isolate_real_roots(&pq) else {
+            return Vec::new();
+        };
+        return ivs
             .into_iter()
-            .map(|(lo, hi, ex)| {
-                let (lo, hi) = refine(
-                    &Poly::new(p.coeffs().iter().filter_map(|c| c.to_rational()).collect()),
-                    lo,
-                    hi,
-                    &ex,
-                );
-                (
-                    K::from_rational(&lo),
-                    K::from_rational(&hi),
-                    ex.map(|x| K::from_rational(&x)),
-                )
+            .map(|mut iv| {
+                if iv.is_exact() {
+                    let x = K::from_rational(&iv.lo);
+                    return (x.clone(), x.clone(), Some(x));
+                }
+                let mag = iv.midpoint_f64().abs().max(1.0);
+                if let Ok(w) = Rational::try_from(1e-13 * mag) {
+                    let _ = iv.refine(&pq, &w);
+                }
+                if iv.is_exact() {
+                    let x = K::from_rational(&iv.lo);
+                    return (x.clone(), x.clone(), Some(x));
+                }
+                (K::from_rational(&iv.lo), K::from_rational(&iv.hi), None)
             })
             .collect();
     }

@@ -39,7 +39,7 @@ pub mod speed;
 mod util;
 
 pub use dph::{DphClass, DphData, DphTest, ProportionalityFactors, QuinticDphKind};
-pub use frame::{EulerRodriguesFrame, FrenetFrame, RationalFunction};
+pub use frame::{BendingEnergy, EulerRodriguesFrame, FrenetFrame, RationalFunction};
 pub use helix::{HelixData, HelixTest, LineCircle, LineOrCircle, QuinticHelixKind};
 pub use hermite::{HermiteData, HermiteInterpolant, HermiteSolution};
 pub use hodograph::{solve_qiq, PhCurve, PhPolyCurve};

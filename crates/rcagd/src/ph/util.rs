@@ -243,6 +243,16 @@ pub(crate) fn poly_f64<F: Scalar>(p: &Poly<F>) -> Poly<f64> {
     p.map(|c| c.to_f64())
 }
 
+/// The exact rational coefficients of a polynomial (`None` for a non-finite `f64`).
+pub(crate) fn poly_rational<F: Scalar>(p: &Poly<F>) -> Option<Poly<rcagd_algebra::Rational>> {
+    let c = p
+        .coeffs()
+        .iter()
+        .map(|c| c.to_rational())
+        .collect::<Option<Vec<_>>>()?;
+    Some(Poly::new(c))
+}
+
 // ------------------------------------------------------------------ polynomial square roots
 
 /// The square root with positive leading coefficient of a polynomial, if `p` is the
