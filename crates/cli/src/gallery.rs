@@ -27,6 +27,10 @@ pub const RECIPES: &[(&str, &str)] = &[
         "examples/recipes/ph.toml",
         include_str!("../../../examples/recipes/ph.toml"),
     ),
+    (
+        "examples/recipes/canal.toml",
+        include_str!("../../../examples/recipes/canal.toml"),
+    ),
 ];
 
 /// The formats written per gallery object.

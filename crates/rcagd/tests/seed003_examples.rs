@@ -819,6 +819,32 @@ fn s004_a3_4_dupin_cyclide_family() {
     let b = canal_surface(&spine, &CanalOptions::default()).expect("cyclide");
     assert!(b.as_rational().is_some());
     assert!(b.all_hold(), "{:?}", b.certify());
+    // the quartic of A3.4, (X² + Y² + Z² − μ² + b²)² = 4(aX − cμ)² + 4b²Y², with the axes
+    // relabelled (X = y, Y = x; semi-axes a = 5ρ/4, b = ρ, c = −3ρ/4, μ = r₀):
+    // (|x|² − 5)² − 4((5/2)y + 9/2)² − 16x² ≡ 0 as a polynomial identity in (t, u)
+    let x = b.as_rational().expect("rational").homogeneous();
+    let x00 = x[0].mul(&x[0]);
+    let sum = x[1]
+        .mul(&x[1])
+        .add(&x[2].mul(&x[2]))
+        .add(&x[3].mul(&x[3]))
+        .sub(&x00.scale(&q(5)));
+    let l = x[2].mul(&x[0]).scale(&r(5, 2)).add(&x00.scale(&r(9, 2)));
+    let quartic = sum
+        .mul(&sum)
+        .sub(&l.mul(&l).scale(&q(4)))
+        .sub(&x[1].mul(&x[1]).mul(&x00).scale(&q(16)));
+    assert!(
+        quartic.is_zero(),
+        "the Dupin cyclide quartic of NOTES-004 A3.4"
+    );
+    // with the sign of c flipped (the other relabelling) it fails: the check is not vacuous
+    let l2 = x[2].mul(&x[0]).scale(&r(5, 2)).sub(&x00.scale(&r(9, 2)));
+    let wrong = sum
+        .mul(&sum)
+        .sub(&l2.mul(&l2).scale(&q(4)))
+        .sub(&x[1].mul(&x[1]).mul(&x00).scale(&q(16)));
+    assert!(!wrong.is_zero());
 }
 
 #[test]

@@ -1,6 +1,1164 @@
-//! Ops of the `canal` topic (being written; see docs/ARCHITECTURE.md).
+//! Ops of the `canal` topic: line geometry in Plücker coordinates (`rcagd::lines`, seed 003
+//! §1.1) and rational canal and pipe surfaces (`rcagd::canal`, seed 003 ch. 2, seed 004
+//! §2.5): lines from points or planes, common transversals, reguli, canal surfaces from a
+//! spine and a radius, pipes (around PH curves and other rational spines), sphere–sphere
+//! and sphere–plane blends, tori and Dupin-like canal surfaces.
+//!
+//! Every canal object is exact over `Q`: when the sum-of-two-squares step needs a quadratic
+//! field `Q(√d)` the op fails and says which field (the exchange model holds rational
+//! geometry only; `rcagd::canal` builds such surfaces over `Q(√d)` in the library).
 
-use super::OpSpec;
+use super::{OpArgs, OpError, OpSpec, ParamSpec};
+use crate::model::{Geometry, Object};
+use crate::value::ParamKind;
+use num_traits::{One, Zero};
+use rcagd::canal::bipoly::{patch_of, BiPoly};
+use rcagd::canal::blend::PlaneEnd;
+use rcagd::canal::{
+    blend_sphere_plane, blend_spheres, canal_surface_pole_free, pipe_around_ph_pole_free,
+    pipe_surface, BlendEnd, BlendSpine, CanalBuild, CanalError, CanalOptions, CanalSpine,
+    CanalSurface, Orientation,
+};
+use rcagd::lines::{common_transversals, CommonTransversals, Line, Regulus};
+use rcagd::ph::PhCurve;
+use rcagd::Certified;
+use rcagd_algebra::quaternion::Quaternion;
+use rcagd_algebra::rational::format_rational;
+use rcagd_algebra::{Certificate, Poly, QuadExt, Rational, Scalar};
+use rcagd_geom::certify::{patch_on_quadric, polynomial_is_zero};
+use rcagd_geom::{BezierCurve, BezierPatch};
 
 /// The ops of this topic.
-pub const OPS: &[OpSpec] = &[];
+pub const OPS: &[OpSpec] = &[
+    LINE_THROUGH_POINTS,
+    LINE_OF_PLANES,
+    COMMON_TRANSVERSALS,
+    REGULUS,
+    CANAL_SURFACE,
+    PIPE_PH,
+    PIPE,
+    CANAL_BLEND_SPHERES,
+    CANAL_BLEND_SPHERE_PLANE,
+    TORUS,
+    DUPIN_CANAL,
+];
+
+// ----------------------------------------------------------------------------------------
+// helpers
+// ----------------------------------------------------------------------------------------
+
+fn fmt_vec(v: &[Rational]) -> String {
+    let parts: Vec<String> = v.iter().map(format_rational).collect();
+    format!("({})", parts.join(", "))
+}
+
+fn point3(args: &OpArgs, param: &'static str) -> Result<[Rational; 3], OpError> {
+    let p = args.point(param)?;
+    <[Rational; 3]>::try_from(p)
+        .map_err(|_| OpError::param(param, format!("`{param}` must be a point [x, y, z]")))
+}
+
+fn vec4(p: Vec<Rational>, param: &'static str, what: &str) -> Result<[Rational; 4], OpError> {
+    <[Rational; 4]>::try_from(p).map_err(|v| {
+        OpError::param(
+            param,
+            format!("{what} needs exactly 4 numbers, got {}", v.len()),
+        )
+    })
+}
+
+fn prefixed(prefix: &str, certs: Vec<Certificate>) -> impl Iterator<Item = Certificate> + '_ {
+    certs.into_iter().map(move |mut c| {
+        c.property = format!("{prefix}{}", c.property);
+        c
+    })
+}
+
+/// The segment between two homogeneous points (a degree-1 rational Bézier curve).
+fn segment(p: &[Rational; 4], q: &[Rational; 4]) -> Result<BezierCurve<Rational>, OpError> {
+    BezierCurve::from_homogeneous(vec![p.to_vec(), q.to_vec()])
+        .map_err(|e| OpError::new(e.to_string()))
+}
+
+fn affine(p: &[Rational; 3]) -> [Rational; 4] {
+    [Rational::one(), p[0].clone(), p[1].clone(), p[2].clone()]
+}
+
+/// Lines given as rows of two affine points `[[p, q], …]` (exactly `n` rows).
+fn lines_param(args: &OpArgs, param: &'static str, n: usize) -> Result<Vec<Line<Rational>>, OpError> {
+    let net = args.net(param)?;
+    if net.len() != n || net.iter().any(|r| r.len() != 2) {
+        return Err(OpError::param(
+            param,
+            format!("give exactly {n} lines, each as two points [[x, y, z], [x, y, z]]"),
+        ));
+    }
+    let mut out = Vec::with_capacity(n);
+    for (i, row) in net.iter().enumerate() {
+        let pts: Vec<[Rational; 3]> = row
+            .iter()
+            .map(|p| {
+                <[Rational; 3]>::try_from(p.clone()).map_err(|_| {
+                    OpError::param(param, format!("line {i}: points must be [x, y, z]"))
+                })
+            })
+            .collect::<Result<_, _>>()?;
+        let l = Line::from_affine_points(&pts[0], &pts[1])
+            .map_err(|e| OpError::param(param, format!("line {i}: {e}")))?;
+        out.push(l);
+    }
+    Ok(out)
+}
+
+/// The Plücker coordinates in a certificate's property (the "output" of a line op).
+fn line_certs(name: &str, l: &Line<Rational>) -> Vec<Certificate> {
+    let coords = fmt_vec(l.coords());
+    prefixed(&format!("{name} l = {coords}: "), l.certify()).collect()
+}
+
+/// `Ω(g, h) = 0` for every pair (transversal, given line), exactly.
+fn meets_cert(name: &str, g: &Line<Rational>, h: &Line<Rational>, hname: &str) -> Certificate {
+    let w = g.reciprocal_product(h);
+    Certificate::decide(
+        format!("{name} meets {hname}: Ω(g, h) = 0 (seed 003 (1.10))"),
+        w.is_zero(),
+        true,
+        || format_rational(&w),
+    )
+}
+
+/// Blames a canal error on the parameter that controls it.
+fn canal_err(e: CanalError, spine_param: &'static str, radius_param: &'static str) -> OpError {
+    match &e {
+        CanalError::NoRealEnvelope { .. } => OpError::param(radius_param, e.to_string()),
+        CanalError::DegenerateSpine(_) => OpError::param(spine_param, e.to_string()),
+        _ => OpError::new(e.to_string()),
+    }
+}
+
+/// The exact rational surface of a build, or an error naming the quadratic field.
+fn rational_build<'a>(
+    b: &'a CanalBuild,
+    param: &'static str,
+) -> Result<&'a CanalSurface<Rational>, OpError> {
+    match b {
+        CanalBuild::Rational(s) => Ok(s),
+        CanalBuild::Extension { radicand, .. } => Err(OpError::param(
+            param,
+            format!(
+                "|ṁ|² − ṙ² is not a sum of two squares over Q: the exact canal surface needs the field Q(√{}) (the library builds it there, rcagd::canal::canal_surface); recipes export rational geometry only — change the data so that the discriminant splits over Q (e.g. a PH spine for a pipe)",
+                format_rational(radicand)
+            ),
+        )),
+    }
+}
+
+fn orientation(args: &OpArgs) -> Result<Orientation, OpError> {
+    Ok(match args.string("orientation")? {
+        "negative" => Orientation::Negative,
+        _ => Orientation::Positive,
+    })
+}
+
+/// The largest number of halvings of [`positive_pieces`] in the circle direction (second
+/// patch parameter) and in the spine direction.
+const MAX_SPLITS: (usize, usize) = (4, 4);
+
+/// Splits every patch with a Bernstein weight ≤ 0 at parameter 1/2 — first in the circle
+/// direction (a characteristic circle over `u ∈ [−1, 1]` may cover more than a half circle,
+/// whose quadratic Bézier form has a weight ≤ 0 in the middle), then along the spine — until
+/// all weights are positive, and certifies the result: all weights positive ⇒ the weight
+/// function has no zero on the patches (no pole, no base point).
+fn positive_pieces(
+    patches: Vec<BezierPatch<Rational>>,
+) -> Result<(Vec<BezierPatch<Rational>>, Certificate), OpError> {
+    let half = Rational::from_ratio(1, 2);
+    let positive = |p: &BezierPatch<Rational>| p.weights().iter().all(|w| *w > Rational::zero());
+    let geo = |e: rcagd_geom::GeomError| OpError::new(e.to_string());
+    let mut out = Vec::new();
+    let mut todo: Vec<(BezierPatch<Rational>, usize, usize)> =
+        patches.into_iter().rev().map(|p| (p, 0, 0)).collect();
+    let mut bad = 0usize;
+    while let Some((p, dv, du)) = todo.pop() {
+        if positive(&p) {
+            out.push(p);
+        } else if dv < MAX_SPLITS.0 {
+            let (a, b) = p.subdivide_v(&half).map_err(geo)?;
+            todo.push((b, dv + 1, du));
+            todo.push((a, dv + 1, du));
+        } else if du < MAX_SPLITS.1 {
+            let (a, b) = p.subdivide_u(&half).map_err(geo)?;
+            todo.push((b, dv, du + 1));
+            todo.push((a, dv, du + 1));
+        } else {
+            bad += 1;
+            out.push(p);
+        }
+    }
+    let n = out.len();
+    let cert = Certificate::decide(
+        format!("every Bernstein weight of the {n} patches is > 0 (the weight has no zero: no pole, no base point)"),
+        bad == 0,
+        true,
+        || format!("{bad} patches keep a weight ≤ 0 after the largest subdivision"),
+    );
+    Ok((out, cert))
+}
+
+fn canal_err_plain(e: CanalError) -> OpError {
+    OpError::new(e.to_string())
+}
+
+/// The bidegree of a canal surface against the construction's bound and the Krasauskas
+/// bound of seed 003 Satz 2 (2.37).
+fn degree_cert(s: &CanalSurface<Rational>) -> Certificate {
+    let (dt, du) = s.degree();
+    // x = q₀·(W, M) + q·R with deg_t q ≤ 2·deg P (the split has deg g ≤ deg P): the
+    // construction gives deg_t ≤ 2·deg P + k, deg_u ≤ 2 (circles are conics)
+    let k = s.spine().degree();
+    let dp = s
+        .spine()
+        .derivative_numerators()
+        .map(|p| p.iter().filter_map(Poly::degree).max().unwrap_or(0))
+        .unwrap_or(0);
+    let bound = 2 * dp + k;
+    let kras = rcagd::canal::krasauskas_bound(s.spine())
+        .map(|b| format!("; Krasauskas bound (2.37) for this family: ({}, {}) (erratum 003-E9: an overestimate for polynomial data)", b.bidegree.0, b.bidegree.1))
+        .unwrap_or_default();
+    Certificate::decide(
+        format!("bidegree (deg_t, deg_u) = ({dt}, {du}) ≤ ({bound}, 2) = (2·deg P + deg k, 2) of the construction (seed 003 §2.1){kras}"),
+        du <= 2 && dt <= bound,
+        true,
+        || format!("({dt}, {du})"),
+    )
+}
+
+// ----------------------------------------------------------------------------------------
+// lines
+// ----------------------------------------------------------------------------------------
+
+const LINE_THROUGH_POINTS: OpSpec = OpSpec {
+    name: "line_through_points",
+    summary: "the line p ∧ q through two points in Plücker coordinates (given in the certificates) and the segment pq",
+    params: &[
+        ParamSpec::required("p", ParamKind::Point3, "first point"),
+        ParamSpec::required("q", ParamKind::Point3, "second point, different from p"),
+    ],
+    example: r#"[[object]]
+name = "line_pq"
+op = "line_through_points"
+p = [0, 1, 2]
+q = [3, -1, 1]
+"#,
+    build: build_line_through_points,
+};
+
+fn build_line_through_points(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let (p, q) = (point3(args, "p")?, point3(args, "q")?);
+    let l = Line::from_affine_points(&p, &q).map_err(|e| OpError::param("q", e.to_string()))?;
+    let curve = segment(&affine(&p), &affine(&q))?;
+    Ok(vec![args.object(Geometry::Curve(curve), line_certs("line", &l))])
+}
+
+const LINE_OF_PLANES: OpSpec = OpSpec {
+    name: "line_of_planes",
+    summary: "the line u ∩ v of two planes (u₀ + u₁x + u₂y + u₃z = 0) in Plücker coordinates and a segment of it around the foot point of the origin",
+    params: &[
+        ParamSpec::required("u", ParamKind::Point, "first plane [u0, u1, u2, u3]"),
+        ParamSpec::required("v", ParamKind::Point, "second plane [v0, v1, v2, v3], not parallel to u"),
+        ParamSpec::with_default("extent", ParamKind::Number, "1", "the segment is F ± extent·d (F the point nearest to the origin, d = l₁₂₃ the direction), > 0"),
+    ],
+    example: r#"[[object]]
+name = "line_uv"
+op = "line_of_planes"
+u = [-1, 1, 0, 0]
+v = [-2, 0, 1, 1]
+extent = "1/2"
+"#,
+    build: build_line_of_planes,
+};
+
+fn build_line_of_planes(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let u = vec4(args.point("u")?, "u", "a plane [u0, u1, u2, u3]")?;
+    let v = vec4(args.point("v")?, "v", "a plane [v0, v1, v2, v3]")?;
+    let extent = args.number("extent")?;
+    if extent <= Rational::zero() {
+        return Err(OpError::param("extent", "the extent must be positive"));
+    }
+    let l = Line::from_planes(&u, &v).map_err(|e| OpError::param("v", e.to_string()))?;
+    if l.is_at_infinity() {
+        return Err(OpError::param(
+            "v",
+            "the planes are parallel: their line is at infinity (no segment)",
+        ));
+    }
+    let d = l.direction();
+    let m = l.moment();
+    let dd = d.iter().fold(Rational::zero(), |a, x| a + x.clone() * x.clone());
+    // foot point F = (d × m)/|d|²
+    let f = [
+        (d[1].clone() * m[2].clone() - d[2].clone() * m[1].clone()) / dd.clone(),
+        (d[2].clone() * m[0].clone() - d[0].clone() * m[2].clone()) / dd.clone(),
+        (d[0].clone() * m[1].clone() - d[1].clone() * m[0].clone()) / dd,
+    ];
+    let a: [Rational; 3] = core::array::from_fn(|i| f[i].clone() - extent.clone() * d[i].clone());
+    let b: [Rational; 3] = core::array::from_fn(|i| f[i].clone() + extent.clone() * d[i].clone());
+    let mut certs = line_certs("line", &l);
+    for (name, x) in [("F − e·d", &a), ("F + e·d", &b)] {
+        let h = affine(x);
+        certs.push(Certificate::decide(
+            format!("segment end {name} lies on the line: M(l)·X = 0 (seed 003 (1.7))"),
+            l.contains_point(&h),
+            true,
+            || fmt_vec(x),
+        ));
+    }
+    let curve = segment(&affine(&a), &affine(&b))?;
+    Ok(vec![args.object(Geometry::Curve(curve), certs)])
+}
+
+const COMMON_TRANSVERSALS: OpSpec = OpSpec {
+    name: "common_transversals",
+    summary: "the real common transversals of four lines (lines meeting all four, seed 003 §1.1), as segments between their outermost meeting points",
+    params: &[ParamSpec::required(
+        "lines",
+        ParamKind::Net,
+        "four lines, each as two points: [[p, q], [p, q], [p, q], [p, q]]",
+    )],
+    example: r#"[[object]]
+name = "transversals"
+op = "common_transversals"
+lines = [
+  [[0, 0, 0], [1, 0, 0]],
+  [[0, 0, 1], [0, 1, 1]],
+  [[0, 1, 2], [1, 1, 2]],
+  [[1, 0, 3], [1, 1, 3]],
+]
+"#,
+    build: build_common_transversals,
+};
+
+/// The segment of `t` between the two farthest of its meeting points with `lines`.
+fn transversal_segment(
+    t: &Line<Rational>,
+    lines: &[Line<Rational>],
+) -> Result<BezierCurve<Rational>, OpError> {
+    let mut pts: Vec<[Rational; 3]> = Vec::new();
+    for l in lines {
+        if let Ok(x) = t.intersection(l) {
+            if !x[0].is_zero() {
+                let w = x[0].clone();
+                pts.push([x[1].clone() / w.clone(), x[2].clone() / w.clone(), x[3].clone() / w]);
+            }
+        }
+    }
+    let mut best: Option<(Rational, usize, usize)> = None;
+    for i in 0..pts.len() {
+        for j in i + 1..pts.len() {
+            let d2 = (0..3).fold(Rational::zero(), |a, k| {
+                let d = pts[i][k].clone() - pts[j][k].clone();
+                a + d.clone() * d
+            });
+            if best.as_ref().is_none_or(|b| d2 > b.0) {
+                best = Some((d2, i, j));
+            }
+        }
+    }
+    match best {
+        Some((d2, i, j)) if !d2.is_zero() => segment(&affine(&pts[i]), &affine(&pts[j])),
+        _ => {
+            // all meeting points coincide or lie at infinity: a unit piece along the direction
+            let (p, q) = t.points();
+            segment(&p, &q)
+        }
+    }
+}
+
+fn build_common_transversals(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let lines = lines_param(args, "lines", 4)?;
+    let res = common_transversals([&lines[0], &lines[1], &lines[2], &lines[3]])
+        .map_err(|e| OpError::param("lines", e.to_string()))?;
+    let found: Vec<Line<Rational>> = match res {
+        CommonTransversals::One(l) => vec![l],
+        CommonTransversals::Two(ls) => {
+            let mut out = Vec::new();
+            for l in &ls {
+                let c: Option<Vec<Rational>> = l.coords().iter().map(QuadExt::to_rational).collect();
+                let Some(c) = c else {
+                    let d = l
+                        .coords()
+                        .iter()
+                        .find(|x| !x.is_rational())
+                        .map(|x| format_rational(x.d()))
+                        .unwrap_or_default();
+                    return Err(OpError::param(
+                        "lines",
+                        format!(
+                            "the two real transversals are defined over Q(√{d}) only, not over Q (≈ ({})); recipes export rational geometry",
+                            l.coords()
+                                .iter()
+                                .map(|x| format!("{:.6}", x.to_f64()))
+                                .collect::<Vec<_>>()
+                                .join(", ")
+                        ),
+                    ));
+                };
+                let arr: [Rational; 6] = core::array::from_fn(|k| c[k].clone());
+                out.push(Line::from_coords(arr).map_err(|e| OpError::new(e.to_string()))?);
+            }
+            out
+        }
+        CommonTransversals::ComplexPair { .. } => {
+            return Err(OpError::param(
+                "lines",
+                "the four lines have no real common transversal (a conjugate complex pair)",
+            ))
+        }
+        CommonTransversals::Infinitely(_) => {
+            return Err(OpError::param(
+                "lines",
+                "the four lines have infinitely many common transversals (they lie in one regulus or a special position)",
+            ))
+        }
+    };
+    let mut certs = Vec::new();
+    let mut curves = Vec::new();
+    for (k, t) in found.iter().enumerate() {
+        let name = format!("transversal {k}");
+        certs.extend(line_certs(&name, t));
+        for (i, l) in lines.iter().enumerate() {
+            certs.push(meets_cert(&name, t, l, &format!("line {i}")));
+        }
+        curves.push(transversal_segment(t, &lines)?);
+    }
+    let geometry = if curves.len() == 1 {
+        Geometry::Curve(curves.remove(0))
+    } else {
+        Geometry::Curves(curves)
+    };
+    Ok(vec![args.object(geometry, certs)])
+}
+
+const REGULUS: OpSpec = OpSpec {
+    name: "regulus",
+    summary: "the regulus through three pairwise skew lines a, b, c as a bilinear rational patch of its carrier quadric (rulings: transversals from a to c)",
+    params: &[ParamSpec::required(
+        "lines",
+        ParamKind::Net,
+        "three pairwise skew lines, each as two points: [[p, q], [p, q], [p, q]]; the patch spans the segment pq of the first line",
+    )],
+    example: r#"[[object]]
+name = "hyperboloid_piece"
+op = "regulus"
+lines = [
+  [[1, 0, 0], [1, 2, 2]],
+  [[-1, -1, 1], [-1, 1, -1]],
+  [[-1, 1, 1], [1, 1, -1]],
+]
+"#,
+    build: build_regulus,
+};
+
+fn build_regulus(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let net = args.net("lines")?;
+    let lines = lines_param(args, "lines", 3)?;
+    let reg = Regulus::from_lines(&lines[0], &lines[1], &lines[2])
+        .map_err(|e| OpError::param("lines", e.to_string()))?;
+    // P(s) on a between the given points; Q(s) = c ∩ plane(P(s), b), linear in s
+    let pa: Vec<[Rational; 4]> = net
+        .first()
+        .map(|r| {
+            r.iter()
+                .map(|p| {
+                    let a: [Rational; 3] = core::array::from_fn(|k| p.get(k).cloned().unwrap_or_else(Rational::zero));
+                    affine(&a)
+                })
+                .collect()
+        })
+        .unwrap_or_default();
+    let (Some(p0), Some(p1)) = (pa.first(), pa.get(1)) else {
+        return Err(OpError::param("lines", "the first line needs two points"));
+    };
+    let [_, b, c] = reg.lines();
+    let mut q = Vec::new();
+    for p in [p0, p1] {
+        let u = b
+            .join_point(p)
+            .map_err(|e| OpError::param("lines", e.to_string()))?;
+        let x = c
+            .meet_plane(&u)
+            .map_err(|e| OpError::param("lines", e.to_string()))?;
+        q.push(x);
+    }
+    let (w0, w1) = (q[0][0].clone(), q[1][0].clone());
+    if w0.is_zero() || w1.is_zero() || (w0 > Rational::zero()) != (w1 > Rational::zero()) {
+        return Err(OpError::param(
+            "lines",
+            "the transversals through the segment of the first line meet the third line at infinity (choose another segment on the first line)",
+        ));
+    }
+    if w0 < Rational::zero() {
+        for x in &mut q {
+            for v in x.iter_mut() {
+                *v = -v.clone();
+            }
+        }
+    }
+    let net = vec![
+        vec![p0.to_vec(), q[0].to_vec()],
+        vec![p1.to_vec(), q[1].to_vec()],
+    ];
+    let patch = BezierPatch::from_homogeneous(net).map_err(|e| OpError::new(e.to_string()))?;
+    let mut certs: Vec<Certificate> = prefixed("regulus: ", reg.certify()).collect();
+    match reg.quadric() {
+        Ok(qm) => {
+            let rows: Vec<Vec<Rational>> = qm.iter().map(|r| r.to_vec()).collect();
+            match patch_on_quadric(&patch, &rows) {
+                Ok(c) => certs.push(c),
+                Err(e) => certs.push(Certificate::fails("patch on the carrier quadric", e.to_string(), true)),
+            }
+        }
+        Err(e) => certs.push(Certificate::fails("carrier quadric", e.to_string(), true)),
+    }
+    let weights = patch.weights();
+    certs.push(Certificate::decide(
+        "every weight > 0 (no pole on the patch)",
+        weights.iter().all(|w| *w > Rational::zero()),
+        true,
+        || fmt_vec(&weights),
+    ));
+    Ok(vec![args.object(Geometry::Patch(patch), certs)])
+}
+
+// ----------------------------------------------------------------------------------------
+// canal surfaces
+// ----------------------------------------------------------------------------------------
+
+const ORIENTATION: ParamSpec = ParamSpec::with_default(
+    "orientation",
+    ParamKind::Choice(&["positive", "negative"]),
+    "\"positive\"",
+    "envelope the oriented family (m; r) or (m; −r): the same surface with the opposite unit normal and the other choice of rational parametrization",
+);
+
+const CANAL_SURFACE: OpSpec = OpSpec {
+    name: "canal_surface",
+    summary: "the rational canal surface (envelope of spheres) of a rational spine and a polynomial radius on t ∈ [0, 1], exact over Q (seed 003 §2.1, Peternell–Pottmann)",
+    params: &[
+        ParamSpec::required("points", ParamKind::Points, "control points [x, y, z] of the spine m(t), t ∈ [0, 1]"),
+        ParamSpec::optional("weights", ParamKind::Numbers, "spine weights (default all 1)"),
+        ParamSpec::required("radius", ParamKind::Numbers, "Bernstein control values of the radius r(t) (any degree)"),
+        ORIENTATION,
+    ],
+    example: r#"[[object]]
+name = "canal_parabola"
+op = "canal_surface"
+points = [[0, 0, 0], [0, 2, 0], [4, 4, 0]]
+radius = ["1/2", "81/50"]
+"#,
+    build: build_canal_surface,
+};
+
+fn spine_curve(args: &OpArgs) -> Result<BezierCurve<Rational>, OpError> {
+    let pts = args.points("points")?;
+    if pts.iter().any(|p| p.len() != 3) {
+        return Err(OpError::param("points", "spine control points must be [x, y, z]"));
+    }
+    let weights = args
+        .opt_numbers("weights")?
+        .unwrap_or_else(|| vec![Rational::one(); pts.len()]);
+    if weights.len() != pts.len() {
+        return Err(OpError::param(
+            "weights",
+            format!("{} control points but {} weights", pts.len(), weights.len()),
+        ));
+    }
+    if let Some(i) = weights.iter().position(|w| *w <= Rational::zero()) {
+        return Err(OpError::param(
+            "weights",
+            format!("weight {i} is not positive: the spine would have a pole on [0, 1]"),
+        ));
+    }
+    let hom: Vec<Vec<Rational>> = pts
+        .iter()
+        .zip(&weights)
+        .map(|(p, w)| {
+            let mut h = vec![w.clone()];
+            h.extend(p.iter().map(|x| x * w));
+            h
+        })
+        .collect();
+    BezierCurve::from_homogeneous(hom).map_err(|e| OpError::param("points", e.to_string()))
+}
+
+/// The surface patches on the domain and the certificates of a rational canal build.
+fn canal_object(
+    args: &OpArgs,
+    s: &CanalSurface<Rational>,
+    extra: Vec<Certificate>,
+) -> Result<Object, OpError> {
+    let (patches, wcert) = positive_pieces(s.domain_patches().map_err(canal_err_plain)?)?;
+    let mut certs = s.certify();
+    certs.push(degree_cert(s));
+    certs.push(wcert);
+    certs.extend(extra);
+    Ok(args.object(Geometry::Patches(patches), certs))
+}
+
+fn build_canal_surface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let spine = spine_curve(args)?;
+    let radius = args.opt_numbers("radius")?.unwrap_or_default();
+    if radius.is_empty() {
+        return Err(OpError::param("radius", "give at least one radius control value"));
+    }
+    let rc = BezierCurve::from_homogeneous(
+        radius
+            .iter()
+            .map(|r| vec![Rational::one(), r.clone()])
+            .collect(),
+    )
+    .map_err(|e| OpError::param("radius", e.to_string()))?;
+    let family = CanalSpine::from_spine_and_radius(&spine, &rc)
+        .map_err(|e| canal_err(e, "points", "radius"))?;
+    let options = CanalOptions {
+        orientation: orientation(args)?,
+        domain: Some((Rational::zero(), Rational::one())),
+        ..CanalOptions::default()
+    };
+    let build =
+        canal_surface_pole_free(&family, &options).map_err(|e| canal_err(e, "points", "radius"))?;
+    let s = rational_build(&build, "radius")?;
+    Ok(vec![canal_object(args, s, Vec::new())?])
+}
+
+const PIPE_PH: OpSpec = OpSpec {
+    name: "pipe_ph",
+    summary: "the exact rational pipe surface of constant radius around a spatial PH curve in quaternion form (split D = σ², no factorization), t ∈ [0, 1]",
+    params: &[
+        ParamSpec::required("coefficients", ParamKind::Points, "Bernstein coefficients A₀ … A_m of the quaternion preimage, each [a, b, c, d] = a + b i + c j + d k (curve degree 2m + 1)"),
+        ParamSpec::with_default("start", ParamKind::Point3, "[0, 0, 0]", "start point r(0)"),
+        ParamSpec::required("radius", ParamKind::Number, "pipe radius, ≠ 0"),
+        ORIENTATION,
+    ],
+    example: r#"[[object]]
+name = "pipe_ph_quintic"
+op = "pipe_ph"
+coefficients = [[1, 0, 0, 0], [0, 1, 0, 1], [1, 0, 1, 0]]
+radius = "1/4"
+"#,
+    build: build_pipe_ph,
+};
+
+fn build_pipe_ph(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let coeffs = args
+        .points("coefficients")?
+        .into_iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let [a, b, c, d] = vec4(p, "coefficients", &format!("quaternion A_{i}"))?;
+            Ok(Quaternion::new(a, b, c, d))
+        })
+        .collect::<Result<Vec<_>, OpError>>()?;
+    let curve = PhCurve::new(coeffs, point3(args, "start")?)
+        .map_err(|e| OpError::param("coefficients", e.to_string()))?;
+    let radius = args.number("radius")?;
+    let (zero, one) = (Rational::zero(), Rational::one());
+    let s = pipe_around_ph_pole_free(&curve, &radius, (&zero, &one), orientation(args)?)
+        .map_err(|e| match e {
+        CanalError::InvalidArgument(_) => OpError::param("radius", e.to_string()),
+        other => canal_err(other, "coefficients", "radius"),
+    })?;
+    let patches = s
+        .full_patches((&Rational::zero(), &Rational::one()))
+        .map_err(canal_err_plain)?;
+    let (patches, wcert) = positive_pieces(patches.to_vec())?;
+    let mut certs = s.certify();
+    certs.push(degree_cert(&s));
+    certs.push(wcert);
+    certs.extend(prefixed("spine: ", curve.certify()));
+    Ok(vec![args.object(Geometry::Patches(patches), certs)])
+}
+
+const PIPE: OpSpec = OpSpec {
+    name: "pipe",
+    summary: "the pipe surface of constant radius around a rational spine on t ∈ [0, 1], exact over Q when |m'|² is a sum of two rational squares (planar and PH spines always)",
+    params: &[
+        ParamSpec::required("points", ParamKind::Points, "control points [x, y, z] of the spine"),
+        ParamSpec::optional("weights", ParamKind::Numbers, "spine weights (default all 1)"),
+        ParamSpec::required("radius", ParamKind::Number, "pipe radius, ≠ 0"),
+        ORIENTATION,
+    ],
+    example: r#"[[object]]
+name = "pipe_quarter_circle"
+op = "pipe"
+points = [[1, 0, 0], [1, 1, 0], [0, 1, 0]]
+weights = [1, 1, 2]
+radius = "1/5"
+"#,
+    build: build_pipe,
+};
+
+fn build_pipe(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let spine = spine_curve(args)?;
+    let radius = args.number("radius")?;
+    let options = CanalOptions {
+        orientation: orientation(args)?,
+        domain: Some((Rational::zero(), Rational::one())),
+        ..CanalOptions::default()
+    };
+    let build = pipe_surface(&spine, &radius, &options).map_err(|e| match e {
+        CanalError::InvalidArgument(_) => OpError::param("radius", e.to_string()),
+        other => canal_err(other, "points", "radius"),
+    })?;
+    let s = rational_build(&build, "points")?;
+    Ok(vec![canal_object(args, s, Vec::new())?])
+}
+
+const BLEND_PARAMS_SPHERE0: [ParamSpec; 4] = [
+    ParamSpec::required("center0", ParamKind::Point3, "centre of the first sphere"),
+    ParamSpec::required("radius0", ParamKind::Number, "radius of the first sphere (signed: the orientation)"),
+    ParamSpec::required("normal0", ParamKind::Point3, "normal n₀ of the contact plane (y − c₀)·n₀ = h₀; also the spine direction leaving the sphere"),
+    ParamSpec::with_default("offset0", ParamKind::Number, "0", "h₀, with h₀² < r₀²|n₀|² (a real contact circle)"),
+];
+
+const CANAL_BLEND_SPHERES: OpSpec = OpSpec {
+    name: "canal_blend_spheres",
+    summary: "a canal-surface blend between two spheres touching each along a prescribed circle (cubic Hermite spine/radius in R^{3,1}, t ∈ [0, 1]), exact over Q",
+    params: &[
+        BLEND_PARAMS_SPHERE0[0],
+        BLEND_PARAMS_SPHERE0[1],
+        BLEND_PARAMS_SPHERE0[2],
+        BLEND_PARAMS_SPHERE0[3],
+        ParamSpec::required("center1", ParamKind::Point3, "centre of the second sphere"),
+        ParamSpec::required("radius1", ParamKind::Number, "radius of the second sphere"),
+        ParamSpec::required("normal1", ParamKind::Point3, "normal of its contact plane; the spine direction arriving there"),
+        ParamSpec::with_default("offset1", ParamKind::Number, "0", "h₁ of the second contact plane"),
+        ParamSpec::optional("lambda0", ParamKind::Number, "tangent magnitude at the start, ≠ 0 (default ≈ chord/|n₀|)"),
+        ParamSpec::optional("lambda1", ParamKind::Number, "tangent magnitude at the end, ≠ 0 (default ≈ chord/|n₁|)"),
+    ],
+    example: r#"[[object]]
+name = "blend_two_spheres"
+op = "canal_blend_spheres"
+center0 = [0, 0, 0]
+radius0 = 1
+normal0 = ["29/10", "14/5", 0]
+offset0 = "1/2"
+center1 = ["21/10", "11/5", 0]
+radius1 = "1/2"
+normal1 = ["29/10", "14/5", 0]
+offset1 = "1/4"
+lambda0 = 1
+lambda1 = 1
+"#,
+    build: build_blend_spheres,
+};
+
+fn blend_end(args: &OpArgs, k: usize) -> Result<BlendEnd<Rational>, OpError> {
+    let names: [[&'static str; 4]; 2] = [
+        ["center0", "radius0", "normal0", "offset0"],
+        ["center1", "radius1", "normal1", "offset1"],
+    ];
+    let n = names.get(k).ok_or_else(|| OpError::new("internal: blend end index"))?;
+    BlendEnd::new(
+        point3(args, n[0])?,
+        args.number(n[1])?,
+        point3(args, n[2])?,
+        args.number(n[3])?,
+    )
+    .map_err(|e| OpError::param(n[3], e.to_string()))
+}
+
+fn blend_spine(args: &OpArgs) -> Result<BlendSpine<Rational>, OpError> {
+    Ok(match (args.opt_number("lambda0")?, args.opt_number("lambda1")?) {
+        (None, None) => BlendSpine::Default,
+        (l0, l1) => {
+            let l0 = l0.unwrap_or_else(Rational::one);
+            let l1 = l1.unwrap_or_else(Rational::one);
+            if l0.is_zero() {
+                return Err(OpError::param("lambda0", "λ₀ must be non-zero"));
+            }
+            if l1.is_zero() {
+                return Err(OpError::param("lambda1", "λ₁ must be non-zero"));
+            }
+            BlendSpine::Hermite {
+                lambda0: l0,
+                lambda1: l1,
+            }
+        }
+    })
+}
+
+fn build_blend_spheres(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let a = blend_end(args, 0)?;
+    let b = blend_end(args, 1)?;
+    let blend = blend_spheres(&a, &b, &blend_spine(args)?)
+        .map_err(|e| canal_err(e, "center1", "lambda0"))?;
+    let s = rational_build(&blend.build, "lambda0")?;
+    let (patches, wcert) = positive_pieces(s.domain_patches().map_err(canal_err_plain)?)?;
+    let mut certs = blend.certify();
+    certs.push(degree_cert(s));
+    certs.push(wcert);
+    Ok(vec![args.object(Geometry::Patches(patches), certs)])
+}
+
+const CANAL_BLEND_SPHERE_PLANE: OpSpec = OpSpec {
+    name: "canal_blend_sphere_plane",
+    summary: "a canal-surface blend between a sphere (prescribed contact circle) and a plane (prescribed circle in it), by a Möbius inversion of a sphere–sphere blend, exact over Q when the inverted family's |ṁ|² − ṙ² splits over Q (e.g. when the inverted blend is a cone: the example)",
+    params: &[
+        BLEND_PARAMS_SPHERE0[0],
+        BLEND_PARAMS_SPHERE0[1],
+        BLEND_PARAMS_SPHERE0[2],
+        BLEND_PARAMS_SPHERE0[3],
+        ParamSpec::required("plane_normal", ParamKind::Point3, "normal n of the plane n·y = e; |n| must be rational"),
+        ParamSpec::required("plane_offset", ParamKind::Number, "e of the plane n·y = e"),
+        ParamSpec::required("circle_center", ParamKind::Point3, "centre of the contact circle, on the plane"),
+        ParamSpec::required("circle_radius", ParamKind::Number, "radius of the contact circle, > 0"),
+        ParamSpec::optional("lambda0", ParamKind::Number, "tangent magnitude at the sphere (inverted space), ≠ 0"),
+        ParamSpec::optional("lambda1", ParamKind::Number, "tangent magnitude at the plane (inverted space), ≠ 0"),
+    ],
+    example: r#"[[object]]
+name = "blend_sphere_plane"
+op = "canal_blend_sphere_plane"
+center0 = [0, 0, 5]
+radius0 = -2
+normal0 = [0, 0, -1]
+offset0 = 0
+plane_normal = [0, 0, 1]
+plane_offset = 0
+circle_center = [0, 0, 0]
+circle_radius = 3
+lambda0 = 2
+lambda1 = "2/3"
+"#,
+    build: build_blend_sphere_plane,
+};
+
+fn build_blend_sphere_plane(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let a = blend_end(args, 0)?;
+    let plane = PlaneEnd {
+        normal: point3(args, "plane_normal")?,
+        offset: args.number("plane_offset")?,
+        center: point3(args, "circle_center")?,
+        radius: args.number("circle_radius")?,
+    };
+    let blend = blend_sphere_plane(&a, &plane, &blend_spine(args)?).map_err(|e| match e {
+        CanalError::InvalidArgument(_) => OpError::param("plane_normal", e.to_string()),
+        other => canal_err(other, "center0", "lambda0"),
+    })?;
+    let x: Option<Vec<BiPoly<Rational>>> = blend
+        .surface
+        .x
+        .iter()
+        .map(|b| {
+            let ok = b.all_coeffs().iter().all(|c| QuadExt::to_rational(c).is_some());
+            ok.then(|| b.map_scalar(|c| QuadExt::to_rational(c).unwrap_or_else(Rational::zero)))
+        })
+        .collect();
+    let Some(x) = x else {
+        return Err(OpError::param(
+            "lambda0",
+            "the blend needs a quadratic field Q(√d) (|ṁ|² − ṙ² of the inverted family is no sum of two rational squares); recipes export rational geometry — try other λ₀, λ₁",
+        ));
+    };
+    let nu = x.iter().filter_map(BiPoly::degree_u).max().unwrap_or(0);
+    let (zero, one, m1) = (Rational::zero(), Rational::one(), -Rational::one());
+    let mut patches = Vec::new();
+    let charts_t: Vec<Vec<BiPoly<Rational>>> = if blend.surface.reparametrized.is_some() {
+        let nt = x.iter().filter_map(BiPoly::degree_t).max().unwrap_or(0);
+        vec![
+            x.clone(),
+            x.iter().map(|c| c.transpose().reverse_u(nt).transpose()).collect(),
+        ]
+    } else {
+        vec![x.clone()]
+    };
+    for base in charts_t {
+        let rev: Vec<BiPoly<Rational>> = base.iter().map(|c| c.reverse_u(nu)).collect();
+        for ch in [base, rev] {
+            patches.push(patch_of(&ch, (&zero, &one), (&m1, &one)).map_err(|e| OpError::new(e.to_string()))?);
+        }
+    }
+    let (patches, wcert) = positive_pieces(patches)?;
+    let mut certs = blend.certify();
+    certs.push(wcert);
+    Ok(vec![args.object(Geometry::Patches(patches), certs)])
+}
+
+const TORUS: OpSpec = OpSpec {
+    name: "torus",
+    summary: "a ring torus (axis ∥ z) as the exact rational pipe around a circle: spine (R(1 − t²), 2Rt, 0)/(1 + t²), constant radius ρ; built in four pieces without base points, patches with positive weights",
+    params: &[
+        ParamSpec::with_default("center", ParamKind::Point3, "[0, 0, 0]", "centre"),
+        ParamSpec::required("major_radius", ParamKind::Number, "radius R of the spine circle, > 0"),
+        ParamSpec::required("minor_radius", ParamKind::Number, "tube radius ρ, 0 < ρ < R"),
+    ],
+    example: r#"[[object]]
+name = "ring_torus"
+op = "torus"
+major_radius = 2
+minor_radius = "1/2"
+"#,
+    build: build_torus,
+};
+
+/// The implicit equation of a closed canal surface: its formula (for the certificate) and the
+/// homogeneous polynomial it gives on `x(t, u)`.
+type Implicit<'a> = (&'a str, &'a dyn Fn(&[BiPoly<Rational>; 4]) -> BiPoly<Rational>);
+
+/// `p(1/s)·sᵏ` (the homogeneous reversal to degree `k`).
+fn reverse_poly(p: &Poly<Rational>, k: usize) -> Poly<Rational> {
+    let mut c: Vec<Rational> = (0..=k).map(|i| p.coeff(i)).collect();
+    c.reverse();
+    Poly::new(c)
+}
+
+/// The closed surface of a family defined for all `t ∈ R ∪ {∞}` in four pieces: `t ∈ [−1, 0]`,
+/// `[0, 1]` and, in the chart `t = 1/s`, `s ∈ [−1, 0]`, `[0, 1]`; each piece is built in a frame
+/// without base points on it (`rcagd::canal::frame`), and covered by two patches (`u` and
+/// `1/u`).
+fn closed_canal(
+    args: &OpArgs,
+    family: &CanalSpine<Rational>,
+    spine_param: &'static str,
+    radius_param: &'static str,
+    implicit: Implicit<'_>,
+    extra: Vec<Certificate>,
+) -> Result<Vec<Object>, OpError> {
+    let k = family.degree();
+    let [w, m0, m1, m2, r] = family.homogeneous();
+    let rev = CanalSpine::new(
+        reverse_poly(&w, k),
+        [reverse_poly(&m0, k), reverse_poly(&m1, k), reverse_poly(&m2, k)],
+        reverse_poly(&r, k),
+    )
+    .map_err(|e| canal_err(e, spine_param, radius_param))?;
+    let (m1r, zero, one) = (-Rational::one(), Rational::zero(), Rational::one());
+    let mut patches = Vec::new();
+    let mut certs = Vec::new();
+    let pieces = [
+        ("t ∈ [−1, 0]", family, (&m1r, &zero)),
+        ("t ∈ [0, 1]", family, (&zero, &one)),
+        ("t = 1/s, s ∈ [−1, 0]", &rev, (&m1r, &zero)),
+        ("t = 1/s, s ∈ [0, 1]", &rev, (&zero, &one)),
+    ];
+    for (name, sp, (a, b)) in pieces {
+        let options = CanalOptions {
+            domain: Some((a.clone(), b.clone())),
+            ..CanalOptions::default()
+        };
+        let build = canal_surface_pole_free(sp, &options)
+            .map_err(|e| canal_err(e, spine_param, radius_param))?;
+        let s = rational_build(&build, radius_param)?;
+        patches.extend(s.domain_patches().map_err(canal_err_plain)?);
+        certs.extend(prefixed(&format!("piece {name}: "), s.certify()));
+        certs.push(degree_cert(s));
+        let q = (implicit.1)(s.homogeneous());
+        certs.push(polynomial_is_zero(
+            &format!("piece {name}: {} ≡ 0 (x(t, u) on the implicit surface)", implicit.0),
+            &q.all_coeffs(),
+        ));
+    }
+    certs.extend(extra);
+    let (patches, wcert) = positive_pieces(patches)?;
+    certs.push(wcert);
+    Ok(vec![args.object(Geometry::Patches(patches), certs)])
+}
+
+fn build_torus(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c = point3(args, "center")?;
+    let big = args.number("major_radius")?;
+    let rho = args.number("minor_radius")?;
+    if big <= Rational::zero() {
+        return Err(OpError::param("major_radius", "R must be positive"));
+    }
+    if rho <= Rational::zero() || rho >= big {
+        return Err(OpError::param(
+            "minor_radius",
+            format!(
+                "a ring torus needs 0 < ρ < R = {}, got ρ = {}",
+                format_rational(&big),
+                format_rational(&rho)
+            ),
+        ));
+    }
+    let w = Poly::new(vec![Rational::one(), Rational::zero(), Rational::one()]);
+    let m = [
+        &Poly::new(vec![big.clone(), Rational::zero(), -big.clone()]) + &w.scale(&c[0]),
+        &Poly::new(vec![Rational::zero(), big.clone() * Rational::from(2)]) + &w.scale(&c[1]),
+        w.scale(&c[2]),
+    ];
+    let family = CanalSpine::new(w.clone(), m, w.scale(&rho)).map_err(|e| canal_err(e, "major_radius", "minor_radius"))?;
+    let r2 = big.clone() * big.clone();
+    let k = r2.clone() - rho.clone() * rho.clone();
+    let quartic = move |x: &[BiPoly<Rational>; 4]| {
+        // (|x − c|² + R² − ρ²)² − 4R²((x − c₁)² + (y − c₂)²), homogeneous
+        let d = shifted(x, &c);
+        let xy = d[1].mul(&d[1]).add(&d[2].mul(&d[2]));
+        let s = xy.add(&d[3].mul(&d[3])).add(&d[0].mul(&d[0]).scale(&k));
+        s.mul(&s)
+            .sub(&xy.mul(&d[0]).mul(&d[0]).scale(&(r2.clone() * Rational::from(4))))
+    };
+    closed_canal(
+        args,
+        &family,
+        "major_radius",
+        "minor_radius",
+        ("(|x − c|² + R² − ρ²)² − 4R²((x − c₁)² + (y − c₂)²)", &quartic),
+        Vec::new(),
+    )
+}
+
+/// `(X₀, X₁ − c₁X₀, X₂ − c₂X₀, X₃ − c₃X₀)`.
+fn shifted(x: &[BiPoly<Rational>; 4], c: &[Rational; 3]) -> [BiPoly<Rational>; 4] {
+    [
+        x[0].clone(),
+        x[1].sub(&x[0].scale(&c[0])),
+        x[2].sub(&x[0].scale(&c[1])),
+        x[3].sub(&x[0].scale(&c[2])),
+    ]
+}
+
+const DUPIN_CANAL: OpSpec = OpSpec {
+    name: "dupin_canal",
+    summary: "a Dupin cyclide as the canal surface of a pe-circle of R^{3,1} (NOTES-004 A3.4): spine (ρ cos θ, ρ a sin θ, 0), radius r₀ + ρ b sin θ with a = (1 + s²)/(1 − s²), b = 2s/(1 − s²)",
+    params: &[
+        ParamSpec::with_default("center", ParamKind::Point3, "[0, 0, 0]", "centre"),
+        ParamSpec::required("rho", ParamKind::Number, "ρ ≠ 0 (size of the pe-circle)"),
+        ParamSpec::required("r0", ParamKind::Number, "radius of the middle sphere r₀"),
+        ParamSpec::with_default("s", ParamKind::Number, "\"1/3\"", "tilt of the pe-circle, |s| < 1 (s = 1/3: a = 5/4, b = 3/4; s = 0: a torus)"),
+    ],
+    example: r#"[[object]]
+name = "dupin_cyclide"
+op = "dupin_canal"
+rho = 2
+r0 = 3
+s = "1/3"
+"#,
+    build: build_dupin_canal,
+};
+
+fn build_dupin_canal(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c = point3(args, "center")?;
+    let rho = args.number("rho")?;
+    let r0 = args.number("r0")?;
+    let s = args.number("s")?;
+    if rho.is_zero() {
+        return Err(OpError::param("rho", "ρ must be non-zero"));
+    }
+    let one = Rational::one();
+    let den = one.clone() - s.clone() * s.clone();
+    if den <= Rational::zero() {
+        return Err(OpError::param("s", "the tilt must satisfy |s| < 1 (a spacelike pe-circle)"));
+    }
+    let a = (one.clone() + s.clone() * s.clone()) / den.clone();
+    let b = Rational::from(2) * s / den;
+    let (a2, b2) = (a.clone(), b.clone());
+    // cos θ = (1 − t²)/(1 + t²), sin θ = 2t/(1 + t²)
+    let w = Poly::new(vec![one.clone(), Rational::zero(), one.clone()]);
+    let cos = Poly::new(vec![one.clone(), Rational::zero(), -one]);
+    let sin = Poly::new(vec![Rational::zero(), Rational::from(2)]);
+    let m = [
+        &cos.scale(&rho) + &w.scale(&c[0]),
+        &sin.scale(&(rho.clone() * a.clone())) + &w.scale(&c[1]),
+        w.scale(&c[2]),
+    ];
+    let r = &w.scale(&r0) + &sin.scale(&(rho.clone() * b.clone()));
+    let family = CanalSpine::new(w, m, r).map_err(|e| canal_err(e, "rho", "r0"))?;
+    // the pe-circle: ⟨U, U⟩ = ⟨V, V⟩ = 1, ⟨U, V⟩ = 0 for U = (1, 0, 0, 0), V = (0, a, 0, b)
+    let pe = a.clone() * a - b.clone() * b;
+    let pe_cert = Certificate::decide(
+        "V = (0, a, 0, b) is a pe-unit vector: a² − b² = 1 (the spine is a pe-circle, Dupin cyclide, NOTES-004 A3.4)",
+        pe == Rational::one(),
+        true,
+        move || format_rational(&pe),
+    );
+    // the cyclide (|x − c|² − r₀² + ρ²)² = 4(ρa(y − c₂) + ρb r₀)² + 4ρ²(x − c₁)² (NOTES-004
+    // A3.4 with the axes relabelled: semi-axes ρa along y, ρ along x, c = ρb, μ = r₀)
+    let (rr, la, lb) = (rho.clone() * rho.clone(), rho.clone() * a2, rho.clone() * b2 * r0.clone());
+    let k = rr.clone() - r0.clone() * r0;
+    let quartic = move |x: &[BiPoly<Rational>; 4]| {
+        let d = shifted(x, &c);
+        let x00 = d[0].mul(&d[0]);
+        let s = d[1]
+            .mul(&d[1])
+            .add(&d[2].mul(&d[2]))
+            .add(&d[3].mul(&d[3]))
+            .add(&x00.scale(&k));
+        let l = d[2].mul(&d[0]).scale(&la).add(&x00.scale(&lb));
+        let four = Rational::from(4);
+        s.mul(&s)
+            .sub(&l.mul(&l).scale(&four))
+            .sub(&d[1].mul(&d[1]).mul(&x00).scale(&(four * rr.clone())))
+    };
+    closed_canal(
+        args,
+        &family,
+        "rho",
+        "r0",
+        ("(|x − c|² − r₀² + ρ²)² − 4(ρa(y − c₂) + ρb r₀)² − 4ρ²(x − c₁)² (Dupin cyclide quartic, NOTES-004 A3.4)", &quartic),
+        vec![pe_cert],
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::build::build_recipe;
+    use crate::recipe::Recipe;
+
+    /// Builds a one-object recipe; `Err(message)` with the diagnostic's line and message.
+    fn build(text: &str) -> Result<Vec<crate::model::Object>, (usize, String)> {
+        let recipe = Recipe::parse("t.toml", text, None).map_err(|d| (d[0].line, d[0].message.clone()))?;
+        build_recipe(&recipe, |_| {}).map_err(|d| (d[0].line, d[0].message.clone()))
+    }
+
+    #[test]
+    fn coincident_points_are_an_error_at_the_point() {
+        let e = build("[[object]]\nname = \"l\"\nop = \"line_through_points\"\np = [1, 2, 3]\nq = [1, 2, 3]\n")
+            .expect_err("coincident");
+        assert_eq!(e.0, 5, "{e:?}");
+        assert!(e.1.contains("coincident points"), "{e:?}");
+    }
+
+    #[test]
+    fn lines_through_points_and_planes_give_pluecker_coordinates() {
+        let o = build("[[object]]\nname = \"l\"\nop = \"line_through_points\"\np = [0, 0, 0]\nq = [1, 2, 3]\n")
+            .expect("line");
+        assert!(o[0].certificates.iter().all(|c| c.holds));
+        assert!(o[0].certificates[0].property.contains("l = (1, 2, 3, 0, 0, 0)"), "{:?}", o[0].certificates[0]);
+        let e = build("[[object]]\nname = \"l\"\nop = \"line_of_planes\"\nu = [0, 1, 0, 0]\nv = [2, 2, 0, 0]\n")
+            .expect_err("parallel planes");
+        assert!(e.1.contains("parallel"), "{e:?}");
+    }
+
+    #[test]
+    fn regulus_needs_skew_lines() {
+        let e = build("[[object]]\nname = \"r\"\nop = \"regulus\"\nlines = [[[0, 0, 0], [1, 0, 0]], [[0, 0, 0], [0, 1, 0]], [[0, 0, 1], [1, 1, 1]]]\n")
+            .expect_err("meeting lines");
+        assert_eq!(e.0, 4, "{e:?}");
+        assert!(e.1.contains("must be skew"), "{e:?}");
+    }
+
+    #[test]
+    fn no_real_envelope_names_the_interval_at_the_radius() {
+        // m = (t, 0, 0) on [0, 1], r = 2t: |m'| = 1 < |r'| = 2 everywhere
+        let e = build("[[object]]\nname = \"c\"\nop = \"canal_surface\"\npoints = [[0, 0, 0], [1, 0, 0]]\nradius = [1, 3]\n")
+            .expect_err("no envelope");
+        assert_eq!(e.0, 5, "{e:?}");
+        assert!(e.1.contains("no real envelope") && e.1.contains("(0, 1)"), "{e:?}");
+    }
+
+    #[test]
+    fn degenerate_spine_is_an_error() {
+        let e = build("[[object]]\nname = \"c\"\nop = \"pipe\"\npoints = [[1, 1, 1], [1, 1, 1]]\nradius = 1\n")
+            .expect_err("constant spine");
+        assert!(e.1.contains("degenerate spine"), "{e:?}");
+    }
+
+    #[test]
+    fn extension_fields_are_named() {
+        // m = (3t, 3t², 2t³) (a PH cubic), r = t: D = 4(3t² + 1)(3t² + 2) needs √3 and √6
+        let e = build("[[object]]\nname = \"c\"\nop = \"canal_surface\"\npoints = [[0, 0, 0], [1, 0, 0], [2, 1, 0], [3, 3, 2]]\nradius = [0, \"1/3\", \"2/3\", 1]\n")
+            .expect_err("extension");
+        assert!(e.1.contains("extension") || e.1.contains("Q(√"), "{e:?}");
+    }
+}

@@ -12,7 +12,8 @@
 //!   points and tangents (`λᵢ` default: the chord length over `|nᵢ|`, rounded to two decimals,
 //!   or given); a user family is accepted after checking its ends (sphere and contact plane)
 //!   exactly.
-//! * **Construction.** [`super::canal_surface`] on the domain `[0, 1]` (reparametrized by
+//! * **Construction.** [`super::canal_surface_pole_free`] on the domain `[0, 1]` (in a frame
+//!   without base points there, [`super::frame`]; reparametrized by
 //!   `t = s²/(1 + s²)` when `|ṁ| < |ṙ|` outside `[0, 1]`): exact over `Q` or over the quadratic
 //!   field it needs; an interval of `[0, 1]` with `|ṁ| < |ṙ|` is named in the error (choose
 //!   other `λ`).
@@ -32,7 +33,7 @@
 //! identities in `u`; for the plane end also the tangency `n·x_t ≡ 0` along `C`.
 
 use super::bipoly::BiPoly;
-use super::envelope::{canal_certificates, canal_surface, CanalBuild, CanalOptions};
+use super::envelope::{canal_certificates, CanalBuild, CanalOptions};
 use super::{CanalError, CanalSpine};
 use crate::error::format_scalar;
 use crate::lines::{dot, fmt_vec};
@@ -230,7 +231,7 @@ pub struct SphereBlend {
 /// # Errors
 /// [`CanalError::InvalidArgument`] for `λ = 0` or a custom family that misses an end;
 /// [`CanalError::NoRealEnvelope`] naming the interval of `[0, 1]` with `|ṁ| < |ṙ|`; as
-/// [`canal_surface`] ([`CanalError::NeedsLargerExtension`]: use [`blend_spheres_f64`]).
+/// [`super::canal_surface`] ([`CanalError::NeedsLargerExtension`]: use [`blend_spheres_f64`]).
 pub fn blend_spheres(
     a: &BlendEnd<Rational>,
     b: &BlendEnd<Rational>,
@@ -258,7 +259,7 @@ pub fn blend_spheres(
         domain: Some((Rational::ZERO, Rational::ONE)),
         ..CanalOptions::default()
     };
-    let build = canal_surface(&family, &options)?;
+    let build = super::frame::canal_surface_pole_free(&family, &options)?;
     Ok(SphereBlend {
         ends: [a.clone(), b.clone()],
         spine: family,

@@ -719,6 +719,36 @@ impl<F: Scalar> CanalSurface<F> {
         }
     }
 
+    /// The surface mapped by the orthogonal matrix `q` (`x ↦ q x`), re-attached to `spine`,
+    /// which must be the family of `self` mapped by the same `q` (for example the surface
+    /// built in a rotated or reflected frame, mapped back to the user's frame; the canal
+    /// identities and the split `g₁² + g₂² = D` are invariant under orthogonal maps). The
+    /// reported [`Self::axis`] stays the one of the construction frame.
+    ///
+    /// # Errors
+    /// As [`CanalSpine::derivative_numerators`] of `spine`.
+    pub fn transformed(
+        &self,
+        q: &[[F; 3]; 3],
+        spine: &CanalSpine<F>,
+    ) -> Result<CanalSurface<F>, CanalError> {
+        let mut x = self.x.clone();
+        for (i, row) in q.iter().enumerate() {
+            x[i + 1] = (0..3).fold(BiPoly::zero(), |acc, j| {
+                acc.add(&self.x[j + 1].scale(&row[j]))
+            });
+        }
+        Ok(CanalSurface {
+            spine: spine.clone(),
+            numerators: spine.derivative_numerators()?,
+            split: self.split.clone(),
+            axis: self.axis,
+            x,
+            reparametrized: self.reparametrized.clone(),
+            domain: self.domain.clone(),
+        })
+    }
+
     /// The parameter domain `[a, b]` requested at construction (`None`: all of `R`).
     pub fn domain(&self) -> Option<&(Rational, Rational)> {
         self.domain.as_ref()

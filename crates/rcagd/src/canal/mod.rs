@@ -21,15 +21,33 @@
 //!   parametrization `x(t, u)` with its certificates, the degree choice and the Krasauskas
 //!   bound (seed 003 §2.4), the characteristic circles, both orientations; and the
 //!   cyclographic construction for quadratic `k` (003-5, seed 003 §2.3);
+//! * [`frame`]: the choice of the stereographic frame (a rational Householder reflection)
+//!   that makes the parametrization free of base points on a parameter interval;
 //! * [`pipe`]: pipe surfaces (constant radius), in particular around PH curves where
 //!   `D = σ²` is a perfect square;
 //! * [`blend`]: canal-surface blends between two spheres (or a sphere and a plane) with
 //!   prescribed contact circles.
+//!
+//! **Known gap: Krasauskas' degree reduction (seed 003 §2.4 (2.36)).** The pair `(a, b)` of
+//! directrices of the ruled surface of Krasauskas' construction can be reduced by the
+//! operations `(a, b) ≈ (a + ρb, b)` (`ρ ∈ R[t]`, `deg ρb ≤ deg a`) and
+//! `(a, b) ∼ (a/σ, σ̄b)` (`σ ∈ C[t]`, `a = σa'`) to the minimal degree of Satz 2 (2.37).
+//! This reduction is **not implemented**: the library builds the Peternell–Pottmann
+//! parametrization (003-4), tries every stereographic axis and every choice of Gaussian factors
+//! of `D`, keeps the lowest bidegree, and reports the bound (2.37) beside it
+//! ([`krasauskas_bound`]; erratum 003-E9: for polynomial data the bound can exceed what the
+//! construction achieves, e.g. `(6, 2)` against `(4, 2)`). For rational families whose `D`
+//! has conjugate root pairs of high multiplicity the construction can stay above (2.37); the
+//! pieces of Krasauskas' method that are implemented and tested are the quadric
+//! `x₀x₃ − x₁x₂` (2.22), the map `f(U)` and `Φ` (2.28)/(2.29), the gcd recovery (2.32) and the
+//! discriminant identity (2.33) (tests `seed003_examples::s003_2_4_*`, `s003_2_29_*`,
+//! `s003_2_33_*`).
 
 pub mod bipoly;
 pub mod blend;
 pub mod envelope;
 pub mod factor;
+pub mod frame;
 pub mod pipe;
 pub mod sum_of_squares;
 
@@ -43,6 +61,7 @@ pub use envelope::{
     krasauskas_bound, AxisChoice, CanalBuild, CanalOptions, CanalSurface, CharacteristicCircle,
     KrasauskasBound, Orientation, QuadraticCanal,
 };
+pub use frame::{canal_surface_pole_free, pipe_around_ph_pole_free, pole_free_direction};
 pub use pipe::{pipe_around_ph, pipe_around_ph_poly, pipe_around_planar, pipe_surface};
 pub use sum_of_squares::{
     sum_of_two_squares, sum_of_two_squares_approx, sum_of_two_squares_f64, GaussianSplit,
@@ -414,17 +433,24 @@ pub(crate) fn to_rational_poly<F: Scalar>(p: &Poly<F>) -> Option<Poly<Rational>>
     c.map(Poly::new)
 }
 
-fn describe_root(iv: &rcagd_algebra::roots::RootInterval, rational: &[Rational]) -> String {
+/// A root of `d` for messages: exact when rational, else its isolating interval (refined to
+/// width ≤ 2⁻²⁰ by the caller) and the correctly rounded `f64` value of the root.
+fn describe_root(
+    iv: &rcagd_algebra::roots::RootInterval,
+    rational: &[Rational],
+    d: &Poly<Rational>,
+) -> String {
     if iv.is_exact() {
         format_scalar(&iv.lo)
     } else if let Some(r) = rational.iter().find(|r| iv.contains(r)) {
         format_scalar(r)
     } else {
+        let approx = iv.root_f64(d).unwrap_or_else(|_| iv.midpoint_f64());
         format!(
             "the root of D in ({}, {}) ≈ {:.6}",
             format_scalar(&iv.lo),
             format_scalar(&iv.hi),
-            iv.midpoint_f64()
+            approx
         )
     }
 }
@@ -468,8 +494,16 @@ pub(crate) fn negative_interval(
             format_scalar(&b)
         )));
     }
-    let roots = isolate_real_roots_in(d, &a, &b)?;
+    let mut roots = isolate_real_roots_in(d, &a, &b)?;
     let rational = rcagd_algebra::roots::rational_roots(d);
+    // tight isolating intervals for the message (the root's value, not the midpoint of a
+    // coarse interval)
+    let width = Rational::from_ratio(1, 1 << 20);
+    for iv in &mut roots {
+        if !iv.is_exact() && !rational.iter().any(|r| iv.contains(r)) {
+            iv.refine(d, &width)?;
+        }
+    }
     // gaps: (left, left description) .. (right, right description)
     let mut bounds: Vec<(Rational, Rational, String)> = Vec::new(); // (lo, hi, text)
     let start_txt = if unbounded {
@@ -484,7 +518,11 @@ pub(crate) fn negative_interval(
     };
     bounds.push((a.clone(), a.clone(), start_txt));
     for iv in &roots {
-        bounds.push((iv.lo.clone(), iv.hi.clone(), describe_root(iv, &rational)));
+        bounds.push((
+            iv.lo.clone(),
+            iv.hi.clone(),
+            describe_root(iv, &rational, d),
+        ));
     }
     bounds.push((b.clone(), b.clone(), end_txt));
     for w in bounds.windows(2) {

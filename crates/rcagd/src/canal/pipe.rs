@@ -108,7 +108,8 @@ pub fn pipe_around_planar<F: Scalar>(
 
 /// The pipe of radius `r` around any rational spine, exactly: over `Q` when `|ṁ|²` (cleared)
 /// is a sum of two rational squares, else over the quadratic field it needs (stated), else
-/// an error ([`super::sum_of_squares`]).
+/// an error ([`super::sum_of_squares`]). With a domain in `options` the frame is chosen
+/// so that the parametrization has no base point there ([`super::frame`]).
 ///
 /// # Errors
 /// As [`canal_surface`]; [`CanalError::InvalidArgument`] for `r = 0`.
@@ -119,7 +120,11 @@ pub fn pipe_surface(
 ) -> Result<CanalBuild, CanalError> {
     check_radius(radius)?;
     let s = CanalSpine::constant_radius(spine, radius)?;
-    canal_surface(&s, options)
+    if options.domain.is_some() {
+        super::frame::canal_surface_pole_free(&s, options)
+    } else {
+        canal_surface(&s, options)
+    }
 }
 
 #[cfg(test)]
