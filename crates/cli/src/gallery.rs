@@ -1,7 +1,10 @@
 //! `rcagd gallery`: builds every object of the embedded default recipes
 //! (`examples/recipes/*.toml`, a fixed list compiled into the binary), writes
-//! `<name>.json`, `<name>.step`, `<name>.obj`, `<name>.svg` per object plus
-//! `report.json` and `index.html`, and prints a summary table.
+//! `<name>.json`, `<name>.step`, `<name>.igs`, `<name>.obj`, `<name>.svg` and
+//! `<name>.png` per object, the exact sidecar `<name>.exact.json`
+//! (`rcagd_io::step::exact_sidecar`), all objects in `gallery-all.step` / `.igs` /
+//! `.exact.json`, plus `report.json` and `index.html` (each card shows the PNG render
+//! for surfaces, the inline SVG plot for curves), and prints a summary table.
 //!
 //! Exit code 0 if every certificate holds, 1 if one fails or an object cannot be
 //! built or exported, 2 if the output directory cannot be written.
@@ -12,7 +15,7 @@ use crate::output::{self, OutFormat};
 use crate::recipe::{Format, Recipe};
 use crate::{EXIT_FAIL, EXIT_INPUT, EXIT_OK};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use rcagd_io::report::ReportEntry;
+use rcagd_io::report::{FileLink, ReportEntry};
 use std::io::IsTerminal;
 use std::path::Path;
 
@@ -37,8 +40,11 @@ pub const RECIPES: &[(&str, &str)] = &[
 pub const FORMATS: &[OutFormat] = &[
     OutFormat::Json,
     OutFormat::Step,
+    OutFormat::Iges,
     OutFormat::Obj,
     OutFormat::Svg,
+    OutFormat::Png,
+    OutFormat::Exact,
 ];
 
 /// The outcome of building the gallery (before writing anything).
@@ -130,16 +136,84 @@ pub fn write_all(
             };
             std::fs::write(&path, &text)
                 .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-            if f == OutFormat::Svg {
-                entry = entry.with_svg(String::from_utf8_lossy(&text).into_owned());
+            match f {
+                OutFormat::Svg => {
+                    entry = entry.with_svg(String::from_utf8_lossy(&text).into_owned());
+                }
+                // surfaces read best shaded; curves keep their (sharper) SVG plot
+                OutFormat::Png if !o.geometry.patches().is_empty() => {
+                    entry = entry.with_picture(file.clone());
+                }
+                _ => {}
             }
-            entry = entry.with_file(f.extension().to_ascii_uppercase(), file);
+            entry = entry.with_file(f.label(), file);
         }
         entries.push(entry);
         tick(&o.name);
     }
-    rcagd_io::report::write_report(out, &entries).map_err(|e| e.to_string())?;
+    let links = write_combined(out, objects, &mut export_errors)?;
+    rcagd_io::report::write_report_with(out, &entries, &links).map_err(|e| e.to_string())?;
     Ok(export_errors)
+}
+
+/// The stem of the files holding every object: [`ALL_STEM`]`.step`, `.igs` and
+/// `.exact.json`.
+pub const ALL_STEM: &str = "gallery-all";
+
+fn write_json(path: &Path, v: &serde_json::Value) -> Result<(), String> {
+    let text = serde_json::to_string_pretty(v).map_err(|e| e.to_string())? + "\n";
+    std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))
+}
+
+/// Writes every object that STEP can hold into one STEP and one IGES file (one
+/// product / group per object, named after it) with their exact sidecar; returns
+/// the links for the report's header.
+fn write_combined(
+    out: &Path,
+    objects: &[Object],
+    export_errors: &mut Vec<String>,
+) -> Result<Vec<FileLink>, String> {
+    let ok: Vec<Object> = objects
+        .iter()
+        .filter(|o| rcagd_io::step::exact_sidecar(std::slice::from_ref(*o)).is_ok())
+        .cloned()
+        .collect();
+    let mut links = Vec::new();
+    if ok.is_empty() {
+        return Ok(links);
+    }
+    let files = [
+        (OutFormat::Step, rcagd_io::step::write_step(&ok)),
+        (OutFormat::Iges, rcagd_io::iges::write_iges(&ok)),
+    ];
+    for (f, r) in files {
+        let ext = f.extension();
+        match r {
+            Ok(bytes) => {
+                let file = format!("{ALL_STEM}.{ext}");
+                let path = out.join(&file);
+                std::fs::write(&path, bytes)
+                    .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+                links.push(FileLink {
+                    label: format!("all objects as {}", f.label()),
+                    path: file,
+                });
+            }
+            Err(e) => export_errors.push(format!("cannot export the whole gallery as {ext}: {e}")),
+        }
+    }
+    match rcagd_io::step::exact_sidecar(&ok) {
+        Ok(side) => {
+            let file = format!("{ALL_STEM}.exact.json");
+            write_json(&out.join(&file), &side)?;
+            links.push(FileLink {
+                label: "their exact NURBS".into(),
+                path: file,
+            });
+        }
+        Err(e) => export_errors.push(format!("cannot write the exact sidecar: {e}")),
+    }
+    Ok(links)
 }
 
 /// Runs `rcagd gallery`; returns the exit code.

@@ -1,8 +1,8 @@
 //! `rcagd`: exact rational curves and surfaces with certificates.
 //!
 //! * `rcagd gallery [--out DIR] [--quiet]` — build every embedded default recipe,
-//!   write JSON/STEP/OBJ/SVG per object, `report.json` and `index.html`;
-//! * `rcagd build RECIPE [--out DIR] [--format json|step|iges|obj|stl|ply|gltf|svg]…`
+//!   write JSON/STEP/IGES/OBJ/SVG/PNG and the exact sidecar per object, `report.json` and `index.html`;
+//! * `rcagd build RECIPE [--out DIR] [--format json|step|iges|exact|obj|stl|ply|gltf|svg|png]…`
 //!   — build a user's recipe;
 //! * `rcagd ops [NAME] [--markdown]` — the op reference.
 //!
@@ -32,8 +32,8 @@ struct Cli {
 enum Command {
     /// Build every construction of the embedded default recipes and write a report.
     ///
-    /// Writes NAME.json, NAME.step, NAME.obj and NAME.svg per object,
-    /// report.json and index.html into DIR, and prints a summary table.
+    /// Writes NAME.json, NAME.step, NAME.igs, NAME.obj, NAME.svg and NAME.png per
+    /// object, report.json and index.html into DIR, and prints a summary table.
     Gallery {
         /// Output directory (created if missing).
         #[arg(long, value_name = "DIR", default_value = "gallery-out")]

@@ -1,5 +1,5 @@
 //! Writing built objects: JSON (per DESIGN.md, via `rcagd_io::json`), STEP, IGES, OBJ,
-//! STL, PLY, glTF and SVG (all via `rcagd_io`), one file per object and format, and
+//! STL, PLY, glTF, SVG and PNG (all via `rcagd_io`), one file per object and format, and
 //! the summary table.
 
 use crate::model::Object;
@@ -25,6 +25,12 @@ pub enum OutFormat {
     Gltf,
     /// SVG picture: plane curves from the top, spatial geometry obliquely.
     Svg,
+    /// The exact NURBS behind the STEP and IGES numbers (`NAME.exact.json`,
+    /// `rcagd_io::step::exact_sidecar`): for exact round trips and `scripts/occ_check.sh`.
+    Exact,
+    /// PNG picture rendered in software: shaded patches with iso-parameter lines,
+    /// curves as lines (`rcagd_io::raster`).
+    Png,
 }
 
 impl OutFormat {
@@ -39,6 +45,24 @@ impl OutFormat {
             OutFormat::Ply => "ply",
             OutFormat::Gltf => "glb",
             OutFormat::Svg => "svg",
+            OutFormat::Png => "png",
+            OutFormat::Exact => "exact.json",
+        }
+    }
+
+    /// The name shown in the report's file links.
+    pub fn label(self) -> &'static str {
+        match self {
+            OutFormat::Json => "JSON",
+            OutFormat::Step => "STEP",
+            OutFormat::Iges => "IGES",
+            OutFormat::Obj => "OBJ",
+            OutFormat::Stl => "STL",
+            OutFormat::Ply => "PLY",
+            OutFormat::Gltf => "glTF",
+            OutFormat::Svg => "SVG",
+            OutFormat::Png => "PNG",
+            OutFormat::Exact => "exact NURBS",
         }
     }
 }
@@ -83,6 +107,14 @@ pub fn render(o: &Object, format: OutFormat) -> Result<Vec<u8>, String> {
             rcagd_io::gltf::objects_to_glb(one, &MeshOptions::default()).map_err(|e| e.to_string())
         }
         OutFormat::Svg => object_svg(o).map(String::into_bytes),
+        OutFormat::Exact => rcagd_io::step::exact_sidecar(one)
+            .and_then(|v| Ok(serde_json::to_string_pretty(&v)? + "\n"))
+            .map(String::into_bytes)
+            .map_err(|e| e.to_string()),
+        OutFormat::Png => {
+            rcagd_io::raster::render_png(o, &rcagd_io::raster::RenderOptions::default())
+                .map_err(|e| e.to_string())
+        }
     }
 }
 

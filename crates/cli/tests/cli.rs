@@ -148,12 +148,17 @@ fn gallery_writes_everything_and_all_certificates_hold() {
             "{name}"
         );
         assert!(out.contains(name.as_str()), "{name} missing from the table");
-        for ext in ["json", "step", "obj", "svg"] {
+        for ext in ["json", "step", "igs", "obj", "svg"] {
             let f = dir.join(format!("{name}.{ext}"));
             let text =
                 std::fs::read_to_string(&f).unwrap_or_else(|_| panic!("{} missing", f.display()));
             assert!(!text.is_empty(), "{} empty", f.display());
         }
+        let png = std::fs::read(dir.join(format!("{name}.png"))).expect("png");
+        assert!(
+            png.starts_with(b"\x89PNG\r\n\x1a\n"),
+            "{name}.png is not a PNG"
+        );
         let j: serde_json::Value = serde_json::from_str(
             &std::fs::read_to_string(dir.join(format!("{name}.json"))).expect("json"),
         )
@@ -161,7 +166,37 @@ fn gallery_writes_everything_and_all_certificates_hold() {
         assert_eq!(j["name"], name.as_str());
         assert!(j["control_points"].is_array(), "{name}");
     }
-    assert!(dir.join("index.html").exists());
+    // All objects in one STEP and one IGES file, named, read back by rcagd's readers
+    // and restored exactly from the sidecar.
+    let side: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.join("gallery-all.exact.json")).expect("sidecar"),
+    )
+    .expect("sidecar JSON");
+    let step = std::fs::read_to_string(dir.join("gallery-all.step")).expect("step");
+    let iges = std::fs::read_to_string(dir.join("gallery-all.igs")).expect("iges");
+    for mut read in [
+        rcagd_io::step_read::read_step(&step).expect("STEP reads"),
+        rcagd_io::iges_read::read_iges(&iges).expect("IGES reads"),
+    ] {
+        let names: Vec<&str> = read.iter().map(|o| o.name.as_str()).collect();
+        assert_eq!(names, expected, "objects of the combined file");
+        rcagd_io::step_read::apply_sidecar(&mut read, &side).expect("exact round trip");
+    }
+    // The report shows every object: a PNG render for surfaces, an inline SVG plot
+    // for curves, and links to the files.
+    let html = std::fs::read_to_string(dir.join("index.html")).expect("index.html");
+    for o in objects {
+        let name = o["name"].as_str().expect("name");
+        assert!(html.contains(&format!("href=\"{name}.igs\"")), "{name}");
+        assert!(
+            html.contains(&format!("href=\"{name}.exact.json\"")),
+            "{name}"
+        );
+        if o["kind"] == "patch" || o["kind"] == "patches" {
+            assert!(html.contains(&format!("<img src=\"{name}.png\"")), "{name}");
+        }
+    }
+    assert!(html.contains("href=\"gallery-all.step\""));
 }
 
 #[test]
@@ -303,6 +338,19 @@ fn build_writes_formats_to_out_dir() {
         let bytes = std::fs::read(out4.join(format!("cyl.{ext}"))).expect("mesh file");
         assert!(bytes.len() > 100, "{ext}");
     }
+    // A PNG render of a patch and of a curve.
+    let o = bin()
+        .arg("build")
+        .arg(&patch)
+        .arg("--out")
+        .arg(&out4)
+        .args(["--format", "png"])
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let png = std::fs::read(out4.join("cyl.png")).expect("png");
+    assert!(png.starts_with(b"\x89PNG\r\n\x1a\n"));
+    assert!(png.len() > 1000);
     // STL of a curve: the exporter's error, exit code 2.
     let o = bin()
         .arg("build")

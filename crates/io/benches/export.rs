@@ -1,11 +1,13 @@
 //! Exchange formats: export and import time and file size per object, and tessellation
 //! throughput against a peer, in the same run.
 //!
-//! * `export/*` — the exact torus of 16 rational biquadratic patches (a closed solid):
-//!   STEP (with topology: shared edges, orientation), IGES, the exact JSON sidecar,
-//!   meshing ([`object_mesh`]), binary STL, glTF binary, a 320 × 240 PNG (2 × 2
-//!   supersampling); the file sizes are printed once.
-//! * `import/*` — reading the torus back from STEP and IGES (exact rationals).
+//! * `export/OBJECT/*` for three objects — the exact torus of 16 rational biquadratic
+//!   patches (a closed solid), a rational bicubic patch (open) and the unit circle
+//!   (4 rational quadratic arcs): JSON, STEP (with topology: shared edges,
+//!   orientation), IGES, the exact JSON sidecar, OBJ, glTF binary, meshing
+//!   ([`rcagd_io::stl::object_mesh`]) and binary STL (patches), a 320 × 240 PNG
+//!   (2 × 2 supersampling); the file sizes are printed once per object.
+//! * `import/OBJECT/*` — reading the object back from STEP and IGES (exact rationals).
 //! * `tessellation/*` — one rational bicubic patch with non-trivial weights:
 //!   `rcagd_uniform_64x64` ([`tessellate_patch_uniform`]: 65 × 65 points with unit
 //!   normals from the exact partials, 8192 triangles) against
@@ -138,77 +140,146 @@ fn curvo_grid_mesh(s: &NurbsSurface3D<f64>, n: usize) -> TriMesh {
     }
 }
 
+/// The unit circle as four exact rational quadratic arcs (a planar curve object).
+fn circle() -> Object {
+    let arcs = (0..4)
+        .map(|k| {
+            rcagd_geom::BezierCurve::from_homogeneous(
+                quarter(k).iter().map(|p| p.to_vec()).collect(),
+            )
+            .expect("valid")
+        })
+        .collect();
+    Object::new(
+        "circle",
+        "bench",
+        serde_json::Value::Null,
+        Geometry::Curves(arcs),
+        Vec::new(),
+    )
+}
+
+/// [`bicubic`] with exact rational coordinates (an open patch object).
+fn bicubic_object() -> Object {
+    let q = |n: i64, d: i64| Rational::from(n) / Rational::from(d);
+    let ws = [q(1, 1), q(5, 4), q(3, 2), q(2, 1)];
+    let net = (0..4i64)
+        .map(|i| {
+            (0..4i64)
+                .map(|j| {
+                    let w = ws[((i + 2 * j + i * j) % 4) as usize].clone();
+                    let x = q(i, 3) + q(j, 16);
+                    let y = q(j, 3) - q(i, 8);
+                    let z = q((i * 3 + j * 5) % 7, 4) - q(3, 4);
+                    vec![w.clone(), w.clone() * x, w.clone() * y, w * z]
+                })
+                .collect()
+        })
+        .collect();
+    Object::new(
+        "bicubic",
+        "bench",
+        serde_json::Value::Null,
+        Geometry::Patch(BezierPatch::from_homogeneous(net).expect("valid")),
+        Vec::new(),
+    )
+}
+
 fn export(c: &mut Criterion) {
-    let o = torus();
-    let objs = std::slice::from_ref(&o);
-    let step = rcagd_io::step::write_step(objs).expect("step");
-    let iges = rcagd_io::iges::write_iges(objs).expect("iges");
-    let side = serde_json::to_string(&rcagd_io::step::exact_sidecar(objs).expect("sidecar"))
-        .expect("json");
-    let mesh = rcagd_io::stl::object_mesh(&o, &Default::default()).expect("mesh");
-    let stl = rcagd_io::stl::write_stl_binary(&o.name, &mesh).expect("stl");
-    let glb = rcagd_io::gltf::objects_to_glb(objs, &Default::default()).expect("glb");
     let ropts = rcagd_io::raster::RenderOptions {
         width: 320,
         height: 240,
         supersample: 2,
         ..Default::default()
     };
-    let png = rcagd_io::raster::render_png(&o, &ropts).expect("png");
-    eprintln!(
-        "torus (16 biquadratic patches): STEP {} B, IGES {} B, sidecar {} B, mesh {} triangles, \
-         STL {} B, GLB {} B, PNG 320x240 {} B",
-        step.len(),
-        iges.len(),
-        side.len(),
-        mesh.triangles.len(),
-        stl.len(),
-        glb.len(),
-        png.len()
-    );
-    let mut g = c.benchmark_group("export");
-    g.bench_function("step", |b| {
-        b.iter(|| black_box(rcagd_io::step::write_step(black_box(objs))))
-    });
-    g.bench_function("iges", |b| {
-        b.iter(|| black_box(rcagd_io::iges::write_iges(black_box(objs))))
-    });
-    g.bench_function("sidecar", |b| {
-        b.iter(|| black_box(rcagd_io::step::exact_sidecar(black_box(objs))))
-    });
-    g.bench_function("object_mesh", |b| {
-        b.iter(|| {
-            black_box(rcagd_io::stl::object_mesh(
-                black_box(&o),
-                &Default::default(),
-            ))
-        })
-    });
-    g.bench_function("stl_binary", |b| {
-        b.iter(|| black_box(rcagd_io::stl::write_stl_binary("torus", black_box(&mesh))))
-    });
-    g.bench_function("glb", |b| {
-        b.iter(|| {
-            black_box(rcagd_io::gltf::objects_to_glb(
-                black_box(objs),
-                &Default::default(),
-            ))
-        })
-    });
-    g.sample_size(10);
-    g.bench_function("png_320x240", |b| {
-        b.iter(|| black_box(rcagd_io::raster::render_png(black_box(&o), &ropts)))
-    });
-    g.finish();
+    let objects = [torus(), bicubic_object(), circle()];
+    for o in &objects {
+        let name = o.name.as_str();
+        let objs = std::slice::from_ref(o);
+        let step = rcagd_io::step::write_step(objs).expect("step");
+        let iges = rcagd_io::iges::write_iges(objs).expect("iges");
+        let side = serde_json::to_string(&rcagd_io::step::exact_sidecar(objs).expect("sidecar"))
+            .expect("json");
+        let json = serde_json::to_string(&rcagd_io::json::object_to_json(o)).expect("json");
+        let obj = rcagd_io::obj::object_to_obj(o).expect("obj");
+        let glb = rcagd_io::gltf::objects_to_glb(objs, &Default::default()).expect("glb");
+        let svg = rcagd_io::svg::object_svg(o, &Default::default()).expect("svg");
+        let png = rcagd_io::raster::render_png(o, &ropts).expect("png");
+        let mesh = rcagd_io::stl::object_mesh(o, &Default::default()).ok();
+        let stl = mesh
+            .as_ref()
+            .map(|m| rcagd_io::stl::write_stl_binary(name, m).expect("stl"));
+        eprintln!(
+            "{name} ({}, {} control points): JSON {} B, STEP {} B, IGES {} B, sidecar {} B, \
+             OBJ {} B, GLB {} B, SVG {} B, PNG 320x240 {} B{}",
+            o.degree_summary(),
+            o.control_point_count(),
+            json.len(),
+            step.len(),
+            iges.len(),
+            side.len(),
+            obj.len(),
+            glb.len(),
+            svg.len(),
+            png.len(),
+            match (&mesh, &stl) {
+                (Some(m), Some(s)) =>
+                    format!(", mesh {} triangles, STL {} B", m.triangles.len(), s.len()),
+                _ => String::new(),
+            }
+        );
+        let mut g = c.benchmark_group(format!("export/{name}"));
+        g.bench_function("json", |b| {
+            b.iter(|| black_box(rcagd_io::json::object_to_json(black_box(o))))
+        });
+        g.bench_function("step", |b| {
+            b.iter(|| black_box(rcagd_io::step::write_step(black_box(objs))))
+        });
+        g.bench_function("iges", |b| {
+            b.iter(|| black_box(rcagd_io::iges::write_iges(black_box(objs))))
+        });
+        g.bench_function("sidecar", |b| {
+            b.iter(|| black_box(rcagd_io::step::exact_sidecar(black_box(objs))))
+        });
+        g.bench_function("obj", |b| {
+            b.iter(|| black_box(rcagd_io::obj::object_to_obj(black_box(o))))
+        });
+        g.bench_function("glb", |b| {
+            b.iter(|| {
+                black_box(rcagd_io::gltf::objects_to_glb(
+                    black_box(objs),
+                    &Default::default(),
+                ))
+            })
+        });
+        if let Some(mesh) = &mesh {
+            g.bench_function("object_mesh", |b| {
+                b.iter(|| {
+                    black_box(rcagd_io::stl::object_mesh(
+                        black_box(o),
+                        &Default::default(),
+                    ))
+                })
+            });
+            g.bench_function("stl_binary", |b| {
+                b.iter(|| black_box(rcagd_io::stl::write_stl_binary(name, black_box(mesh))))
+            });
+        }
+        g.sample_size(10);
+        g.bench_function("png_320x240", |b| {
+            b.iter(|| black_box(rcagd_io::raster::render_png(black_box(o), &ropts)))
+        });
+        g.finish();
 
-    let mut g = c.benchmark_group("import");
-    g.bench_function("step", |b| {
-        b.iter(|| black_box(rcagd_io::step_read::read_step(black_box(&step))))
-    });
-    g.bench_function("iges", |b| {
-        b.iter(|| black_box(rcagd_io::iges_read::read_iges(black_box(&iges))))
-    });
-    g.finish();
+        let mut g = c.benchmark_group(format!("import/{name}"));
+        g.bench_function("step", |b| {
+            b.iter(|| black_box(rcagd_io::step_read::read_step(black_box(&step))))
+        });
+        g.bench_function("iges", |b| {
+            b.iter(|| black_box(rcagd_io::iges_read::read_iges(black_box(&iges))))
+        });
+        g.finish();
+    }
 }
 
 fn tessellation(c: &mut Criterion) {

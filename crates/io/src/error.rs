@@ -35,4 +35,62 @@ pub enum IoError {
     /// the message names the violated precondition.
     #[error("invalid input for export: {0}")]
     Invalid(String),
+    /// A file being read is malformed or outside the subset the readers accept. The
+    /// message names the format, the line (1-based, where known) and the entity
+    /// (`#7` in STEP, `type 126 at DE 5` in IGES), e.g.
+    /// `STEP line 12, entity #7: expected a list of weights`.
+    #[error("{format}{}{}: {message}", line_part(.line), entity_part(.entity))]
+    Read {
+        /// `"STEP"`, `"IGES"` or `"sidecar"`.
+        format: &'static str,
+        /// The 1-based line of the file, where known.
+        line: Option<usize>,
+        /// The entity (`#7`, `type 126 at DE 5`), where known.
+        entity: Option<String>,
+        /// What is wrong.
+        message: String,
+    },
+}
+
+fn line_part(line: &Option<usize>) -> String {
+    line.map_or_else(String::new, |l| format!(" line {l}"))
+}
+
+fn entity_part(entity: &Option<String>) -> String {
+    entity
+        .as_ref()
+        .map_or_else(String::new, |e| format!(", entity {e}"))
+}
+
+impl IoError {
+    /// A [`IoError::Read`] error.
+    pub fn read(
+        format: &'static str,
+        line: Option<usize>,
+        entity: Option<String>,
+        message: impl std::fmt::Display,
+    ) -> Self {
+        IoError::Read {
+            format,
+            line,
+            entity,
+            message: message.to_string(),
+        }
+    }
+
+    /// The line of a [`IoError::Read`] error.
+    pub fn line(&self) -> Option<usize> {
+        match self {
+            IoError::Read { line, .. } => *line,
+            _ => None,
+        }
+    }
+
+    /// The entity of a [`IoError::Read`] error.
+    pub fn entity(&self) -> Option<&str> {
+        match self {
+            IoError::Read { entity, .. } => entity.as_deref(),
+            _ => None,
+        }
+    }
 }

@@ -17,8 +17,8 @@
 //! Without groups, every independent (subordinate switch `00`) 126, 128 or 102 is an
 //! object, and so is the surface of an independent 143/144 (its trimming is not read).
 //! Numbers are read exactly (`0.1` is `1/10`); [`crate::step_read::apply_sidecar`]
-//! restores rcagd's exact values. Errors name the line: `IGES line 12 (P section,
-//! entity DE 5): …`.
+//! restores rcagd's exact values. Errors ([`IoError::Read`]) name the line and entity:
+//! `IGES line 12, entity type 126 at DE 5: …`.
 
 use crate::step_read::ImportedObject;
 use crate::IoError;
@@ -28,7 +28,7 @@ use rcagd_geom::BezierCurve;
 use std::collections::{HashMap, HashSet};
 
 fn line_err(line: usize, msg: impl std::fmt::Display) -> IoError {
-    IoError::Invalid(format!("IGES line {line}: {msg}"))
+    IoError::read("IGES", Some(line), None, msg)
 }
 
 /// A directory entry.
@@ -137,10 +137,12 @@ struct Params<'a> {
 
 impl Params<'_> {
     fn err(&self, msg: impl std::fmt::Display) -> IoError {
-        IoError::Invalid(format!(
-            "IGES line {} (P section, entity {} at DE {}): {msg}",
-            self.dir.pline, self.dir.kind, self.de
-        ))
+        IoError::read(
+            "IGES",
+            Some(self.dir.pline),
+            Some(format!("type {} at DE {}", self.dir.kind, self.de)),
+            msg,
+        )
     }
 
     fn next(&mut self, what: &str) -> Result<Tok, IoError> {
@@ -268,12 +270,15 @@ fn parse_sections(text: &str) -> Result<Iges, IoError> {
         }
     }
     if !seen_t {
-        return Err(IoError::Invalid(
-            "IGES: no Terminate (T) section; the file is truncated".into(),
+        return Err(IoError::read(
+            "IGES",
+            Some(text.lines().count().max(1)),
+            None,
+            "the file ends without a Terminate (T) section; it is truncated",
         ));
     }
     if global.trim().is_empty() {
-        return Err(IoError::Invalid("IGES: no Global (G) section".into()));
+        return Err(IoError::read("IGES", None, None, "no Global (G) section"));
     }
     // delimiters: `1Hx` or a default (empty) field
     let g: Vec<char> = global.trim_start().chars().collect();
@@ -282,8 +287,11 @@ fn parse_sections(text: &str) -> Result<Iges, IoError> {
     } else if g.len() >= 4 && g[0] == '1' && (g[1] == 'H' || g[1] == 'h') {
         (g[2], 4)
     } else {
-        return Err(IoError::Invalid(
-            "IGES Global section: cannot read the parameter delimiter".into(),
+        return Err(IoError::read(
+            "IGES",
+            None,
+            None,
+            "Global section: cannot read the parameter delimiter",
         ));
     };
     let record = if g.get(rest) == Some(&delim) || g.get(rest) == Some(&';') {
@@ -383,23 +391,28 @@ fn parse_sections(text: &str) -> Result<Iges, IoError> {
             text.push_str(&l[..64]);
         }
         let toks = tokenize(&text, delim, record).map_err(|m| {
-            IoError::Invalid(format!(
-                "IGES line {} (P section, entity {} at DE {de}): {m}",
-                plines[start - 1].0,
-                d.kind
-            ))
+            IoError::read(
+                "IGES",
+                Some(plines[start - 1].0),
+                Some(format!("type {} at DE {de}", d.kind)),
+                m,
+            )
         })?;
         let first = match toks.first() {
             Some(Tok::Text(t)) => t.parse::<i64>().ok(),
             _ => None,
         };
         if first != Some(d.kind) {
-            return Err(IoError::Invalid(format!(
-                "IGES line {} (P section, DE {de}): the parameters start with {:?}, expected the entity type {}",
-                plines[start - 1].0,
-                toks.first(),
-                d.kind
-            )));
+            return Err(IoError::read(
+                "IGES",
+                Some(plines[start - 1].0),
+                Some(format!("type {} at DE {de}", d.kind)),
+                format!(
+                    "the parameters start with {:?}, expected the entity type {}",
+                    toks.first(),
+                    d.kind
+                ),
+            ));
         }
         params.insert(de, toks);
     }
@@ -413,15 +426,16 @@ fn parse_sections(text: &str) -> Result<Iges, IoError> {
 impl Iges {
     fn params(&self, de: usize) -> Result<Params<'_>, IoError> {
         let dir = self.dirs.get(&de).ok_or_else(|| {
-            IoError::Invalid(format!(
-                "IGES: a pointer refers to DE {de}, which does not exist"
-            ))
+            IoError::read(
+                "IGES",
+                None,
+                Some(format!("DE {de}")),
+                "a pointer refers to this directory entry, which does not exist",
+            )
         })?;
-        let toks = self
-            .params
-            .get(&de)
-            .cloned()
-            .ok_or_else(|| IoError::Invalid(format!("IGES: DE {de} has no parameters")))?;
+        let toks = self.params.get(&de).cloned().ok_or_else(|| {
+            IoError::read("IGES", None, Some(format!("DE {de}")), "no parameters")
+        })?;
         Ok(Params {
             toks,
             pos: 1,
@@ -552,9 +566,12 @@ impl Iges {
 
     fn geometry(&self, de: usize, obj: &mut ImportedObject) -> Result<(), IoError> {
         let kind = self.dirs.get(&de).map(|d| d.kind).ok_or_else(|| {
-            IoError::Invalid(format!(
-                "IGES: a pointer refers to DE {de}, which does not exist"
-            ))
+            IoError::read(
+                "IGES",
+                None,
+                Some(format!("DE {de}")),
+                "a pointer refers to this directory entry, which does not exist",
+            )
         })?;
         match kind {
             126 => obj.curves.push(self.curve(de)?),
@@ -615,7 +632,7 @@ fn join_pieces(curves: Vec<NurbsCurve<Rational>>) -> Vec<NurbsCurve<Rational>> {
 /// Reads the objects of an IGES file (module docs).
 ///
 /// # Errors
-/// [`IoError::Invalid`] naming the line (and entity) for a malformed record, a
+/// [`IoError::Read`] naming the line (and entity) for a malformed record, a
 /// dangling pointer, invalid B-spline data, periodic or trimmed geometry.
 pub fn read_iges(text: &str) -> Result<Vec<ImportedObject>, IoError> {
     let iges = parse_sections(text)?;

@@ -15,14 +15,22 @@
 //!    with a 6 % margin.
 //! 3. **Rasterization** at `s × s` supersampling: triangles by edge functions with a
 //!    z-buffer (larger `p·d` is nearer), the normal interpolated barycentrically and
-//!    shaded per pixel — ambient 0.28, Lambert `max(0, n·l)` from a key light above
-//!    left (0.62) and a fill light (0.18), Blinn-Phong highlight `0.22 (n·h)³²`.
+//!    shaded per pixel (deferred, after the z-buffer is complete) — ambient 0.3,
+//!    Lambert `max(0, n·l)` from a key light at the upper left, mostly from the side
+//!    (`l ∝ −0.6 r + 0.35 up + 0.7 d`, weight 0.7, so that vertical surfaces such as
+//!    cylinders show their curvature) and a fill light from the right (0.2),
+//!    Blinn-Phong highlight `0.25 (n·h)²⁴`.
 //!    Faces seen from behind (`n·d < 0`) are shaded with their flipped normal in a
-//!    paler colour, so the inside of an open surface is recognisable.
+//!    warm sand colour, so the inside of an open surface is recognisable; when most
+//!    visible pixels show the back (an open patch seen from its other side), the two
+//!    sides are swapped, so the side facing the viewer is always blue.
 //! 4. **Lines on top**: each polyline is walked in steps of half a (supersampled)
 //!    pixel; where its depth is within `10⁻³·(depth range) + ` the mesh's chord error of
 //!    the z-buffer at that pixel (it lies on the visible surface) a disc of the line's
-//!    radius is stamped. Hidden parts of lines are not drawn.
+//!    radius is stamped. Hidden parts of lines are not drawn. Interior iso-parameter
+//!    lines darken the shaded surface under them (× 0.62, through a mask, so each
+//!    pixel once): they stay visible on light and dark shading alike; patch
+//!    boundaries and curves are drawn in their own colours on top.
 //! 5. **Anti-aliasing**: the `s × s` blocks are averaged (box filter), then the image
 //!    is encoded by [`crate::png`].
 
@@ -144,6 +152,9 @@ struct Line {
     /// radius in output pixels
     radius: f64,
     depth_test: bool,
+    /// Drawn by darkening the shaded surface under it (interior iso-parameter
+    /// lines: visible on light and dark shading alike) instead of in `color`.
+    darken: bool,
 }
 
 struct Mesh {
@@ -301,6 +312,7 @@ fn scene(o: &Object, opts: &RenderOptions) -> Result<(Vec<Mesh>, Vec<Line>), IoE
                         },
                         radius: opts.line_width * if boundary { 0.9 } else { 0.5 },
                         depth_test: true,
+                        darken: !boundary,
                     });
                 }
             }
@@ -317,6 +329,7 @@ fn scene(o: &Object, opts: &RenderOptions) -> Result<(Vec<Mesh>, Vec<Line>), IoE
                     color: [0.45, 0.45, 0.45],
                     radius: 0.4,
                     depth_test: false,
+                    darken: false,
                 });
             }
             for j in 0..=n {
@@ -325,6 +338,7 @@ fn scene(o: &Object, opts: &RenderOptions) -> Result<(Vec<Mesh>, Vec<Line>), IoE
                     color: [0.45, 0.45, 0.45],
                     radius: 0.4,
                     depth_test: false,
+                    darken: false,
                 });
             }
         }
@@ -349,6 +363,7 @@ fn scene(o: &Object, opts: &RenderOptions) -> Result<(Vec<Mesh>, Vec<Line>), IoE
             color: CURVE_COLORS[k % CURVE_COLORS.len()],
             radius: 0.5 * opts.curve_width,
             depth_test: true,
+            darken: false,
         });
         if opts.control_net {
             if let Ok(pts) = c.euclidean_control_points() {
@@ -366,6 +381,7 @@ fn scene(o: &Object, opts: &RenderOptions) -> Result<(Vec<Mesh>, Vec<Line>), IoE
                     color: [0.5, 0.5, 0.5],
                     radius: 0.4,
                     depth_test: false,
+                    darken: false,
                 });
             }
         }
@@ -387,6 +403,7 @@ fn scene(o: &Object, opts: &RenderOptions) -> Result<(Vec<Mesh>, Vec<Line>), IoE
                 color: [0.80, 0.81, 0.84],
                 radius: l.radius,
                 depth_test: false,
+                darken: false,
             });
         }
     }
@@ -398,6 +415,7 @@ fn scene(o: &Object, opts: &RenderOptions) -> Result<(Vec<Mesh>, Vec<Line>), IoE
             color: [0.15, 0.15, 0.18],
             radius: 0.5 * d,
             depth_test: true,
+            darken: false,
         });
     }
     if meshes.is_empty() && lines.is_empty() {
@@ -507,9 +525,9 @@ pub fn render(o: &Object, opts: &RenderOptions) -> Result<Image, IoError> {
     }
 
     let key = normalize([
-        -0.35 * cam.r[0] + 0.45 * cam.up[0] + 0.8 * cam.d[0],
-        -0.35 * cam.r[1] + 0.45 * cam.up[1] + 0.8 * cam.d[1],
-        -0.35 * cam.r[2] + 0.45 * cam.up[2] + 0.8 * cam.d[2],
+        -0.6 * cam.r[0] + 0.35 * cam.up[0] + 0.7 * cam.d[0],
+        -0.6 * cam.r[1] + 0.35 * cam.up[1] + 0.7 * cam.d[1],
+        -0.6 * cam.r[2] + 0.35 * cam.up[2] + 0.7 * cam.d[2],
     ]);
     let fill = normalize([
         0.7 * cam.r[0] - 0.2 * cam.up[0] + 0.5 * cam.d[0],
@@ -525,8 +543,8 @@ pub fn render(o: &Object, opts: &RenderOptions) -> Result<Image, IoError> {
             // the back side: a warm sand colour, so insides read as such
             col = [0.86, 0.74, 0.52];
         }
-        let lambert = 0.28 + 0.62 * dot(n, key).max(0.0) + 0.18 * dot(n, fill).max(0.0);
-        let spec = 0.22 * dot(n, half).max(0.0).powi(32);
+        let lambert = 0.3 + 0.7 * dot(n, key).max(0.0) + 0.2 * dot(n, fill).max(0.0);
+        let spec = 0.25 * dot(n, half).max(0.0).powi(24);
         [
             (col[0] * lambert + spec).min(1.0) as f32,
             (col[1] * lambert + spec).min(1.0) as f32,
@@ -534,7 +552,10 @@ pub fn render(o: &Object, opts: &RenderOptions) -> Result<Image, IoError> {
         ]
     };
 
-    for (m, vm) in meshes.iter().zip(&vmeshes) {
+    const NONE: u32 = u32::MAX;
+    let mut normals = vec![[0f32; 3]; w * h];
+    let mut owner = vec![NONE; w * h];
+    for (mi, (m, vm)) in meshes.iter().zip(&vmeshes).enumerate() {
         let sp: Vec<V3> = vm.iter().map(|&p| to_screen(p)).collect();
         for t in &m.mesh.triangles {
             let [a, b, c] = t.map(|i| i as usize);
@@ -564,21 +585,65 @@ pub fn render(o: &Object, opts: &RenderOptions) -> Result<Image, IoError> {
                         continue;
                     }
                     frame.depth[k] = z;
-                    let n = [
-                        wa * na[0] + wb * nb[0] + wc * nc[0],
-                        wa * na[1] + wb * nb[1] + wc * nc[1],
-                        wa * na[2] + wb * nb[2] + wc * nc[2],
+                    normals[k] = [
+                        (wa * na[0] + wb * nb[0] + wc * nc[0]) as f32,
+                        (wa * na[1] + wb * nb[1] + wc * nc[1]) as f32,
+                        (wa * na[2] + wb * nb[2] + wc * nc[2]) as f32,
                     ];
-                    frame.color[k] = shade(n, m.color);
+                    owner[k] = mi as u32;
                 }
             }
+        }
+    }
+    // Deferred shading. An open surface has no preferred side: when most of what is
+    // seen is its back, the sides are swapped, so the side facing the viewer is drawn
+    // in the front colour (a closed, outward oriented shell never shows its back).
+    let facing = |n: [f32; 3]| {
+        f64::from(n[0]) * cam.d[0] + f64::from(n[1]) * cam.d[1] + f64::from(n[2]) * cam.d[2]
+    };
+    let (mut front, mut back) = (0usize, 0usize);
+    for (n, &o) in normals.iter().zip(&owner) {
+        if o != NONE {
+            if facing(*n) >= 0.0 {
+                front += 1;
+            } else {
+                back += 1;
+            }
+        }
+    }
+    let sign = if back > front { -1.0 } else { 1.0 };
+    for (k, (n, &o)) in normals.iter().zip(&owner).enumerate() {
+        if let Some(m) = meshes.get(o as usize) {
+            let n = [
+                sign * f64::from(n[0]),
+                sign * f64::from(n[1]),
+                sign * f64::from(n[2]),
+            ];
+            frame.color[k] = shade(n, m.color);
         }
     }
 
     // lines: chord error of the mesh bounds how far an exact curve lies behind it
     let chord = depth_range * 2.5 / (opts.grid.max(1) as f64).powi(2);
     let eps = 1e-3 * depth_range + chord;
-    for (l, vl) in lines.iter().zip(&vlines) {
+    // darkening lines first, through a mask (a pixel is darkened once however often
+    // it is stamped), then the others on top in their colours
+    let mut darkened = vec![false; w * h];
+    let order = lines
+        .iter()
+        .zip(&vlines)
+        .filter(|(l, _)| l.darken)
+        .chain(lines.iter().zip(&vlines).filter(|(l, _)| !l.darken));
+    let mut mask_applied = false;
+    for (l, vl) in order {
+        if !l.darken && !mask_applied {
+            for (c, &d) in frame.color.iter_mut().zip(&darkened) {
+                if d {
+                    *c = c.map(|x| x * 0.62);
+                }
+            }
+            mask_applied = true;
+        }
         let r = l.radius * ss as f64;
         let col = [l.color[0] as f32, l.color[1] as f32, l.color[2] as f32];
         let sp: Vec<V3> = vl.iter().map(|&p| to_screen(p)).collect();
@@ -602,7 +667,18 @@ pub fn render(o: &Object, opts: &RenderOptions) -> Result<Image, IoError> {
                         }
                     }
                 }
-                stamp(&mut frame, p, r, col);
+                if l.darken {
+                    stamp_mask((w, h), &mut darkened, p, r);
+                } else {
+                    stamp(&mut frame, p, r, col);
+                }
+            }
+        }
+    }
+    if !mask_applied {
+        for (c, &d) in frame.color.iter_mut().zip(&darkened) {
+            if d {
+                *c = c.map(|x| x * 0.62);
             }
         }
     }
@@ -656,6 +732,26 @@ pub fn render(o: &Object, opts: &RenderOptions) -> Result<Image, IoError> {
         height: opts.height,
         rgb,
     })
+}
+
+/// Marks the pixels of a disc of radius `r` (supersampled pixels) centred at `p`.
+fn stamp_mask((w, h): (usize, usize), marks: &mut [bool], p: V3, r: f64) {
+    let r = r.max(0.5);
+    let x0 = (p[0] - r).floor().max(0.0) as usize;
+    let y0 = (p[1] - r).floor().max(0.0) as usize;
+    let x1 = ((p[0] + r).ceil() as isize).clamp(0, w as isize) as usize;
+    let y1 = ((p[1] + r).ceil() as isize).clamp(0, h as isize) as usize;
+    for y in y0..y1 {
+        for x in x0..x1 {
+            let dx = x as f64 + 0.5 - p[0];
+            let dy = y as f64 + 0.5 - p[1];
+            if dx * dx + dy * dy <= r * r {
+                if let Some(m) = marks.get_mut(y * w + x) {
+                    *m = true;
+                }
+            }
+        }
+    }
 }
 
 /// Paints a disc of radius `r` (supersampled pixels) centred at `p`.
@@ -749,5 +845,61 @@ mod tests {
             vec![],
         );
         assert!(render(&empty, &opts).is_err());
+    }
+
+    /// A flat square in z = 0 whose normal points down (`flip`) or up.
+    fn square(flip: bool) -> Object {
+        let net: Vec<Vec<Vec<Rational>>> = (0..2i64)
+            .map(|i| {
+                (0..2i64)
+                    .map(|j| {
+                        // swapping the parameters reverses the normal
+                        let (x, y) = if flip { (j, i) } else { (i, j) };
+                        vec![q(1), q(x), q(y), q(0)]
+                    })
+                    .collect()
+            })
+            .collect();
+        Object::new(
+            "square",
+            "t",
+            serde_json::Value::Null,
+            Geometry::Patch(BezierPatch::from_homogeneous(net).expect("valid")),
+            vec![],
+        )
+    }
+
+    /// Pixels of the front colour (blue dominates) and of the back colour (sand: red
+    /// dominates).
+    fn front_back(img: &Image) -> (usize, usize) {
+        let front = img
+            .rgb
+            .chunks(3)
+            .filter(|p| u16::from(p[2]) > u16::from(p[0]) + 40)
+            .count();
+        let back = img
+            .rgb
+            .chunks(3)
+            .filter(|p| u16::from(p[0]) > u16::from(p[2]) + 40)
+            .count();
+        (front, back)
+    }
+
+    #[test]
+    fn an_open_patch_shows_its_front_colour_from_either_side() {
+        let opts = RenderOptions {
+            width: 80,
+            height: 60,
+            supersample: 1,
+            iso_lines: 0,
+            ..Default::default()
+        };
+        for flip in [false, true] {
+            let img = render(&square(flip), &opts).expect("renders");
+            let (front, back) = front_back(&img);
+            assert!(front > 1000, "flip {flip}: {front} front pixels");
+            // (the red x axis of the tripod counts as "back" too)
+            assert!(back < 60, "flip {flip}: {back} back pixels");
+        }
     }
 }

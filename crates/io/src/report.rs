@@ -1,9 +1,10 @@
 //! The report: `report.json` and a self-contained `index.html`.
 //!
 //! `index.html` needs no server and no network: styles are inline, pictures are either
-//! inlined SVG or relative links to files next to it. One card per object shows its
-//! picture, op, parameters, degree, control-point count, certificates (with holds /
-//! FAILS badges and residuals) and links to its files.
+//! inlined SVG or relative links to files next to it (PNG renders of surfaces). One
+//! card per object shows its picture, op, parameters, degree, control-point count,
+//! certificates (with holds / FAILS badges and residuals) and links to its files; the
+//! header may link files of the whole report ([`report_html_with`]).
 //!
 //! `report.json` is
 //!
@@ -39,6 +40,9 @@ pub struct ReportEntry {
     pub object: Object,
     /// An SVG picture to inline into the card (the text of an `<svg>` element).
     pub svg: Option<String>,
+    /// A picture file (PNG) beside the report, relative path; shown instead of the
+    /// inline SVG when set.
+    pub picture: Option<String>,
     /// The object's files.
     pub files: Vec<FileLink>,
 }
@@ -49,8 +53,16 @@ impl ReportEntry {
         ReportEntry {
             object,
             svg: None,
+            picture: None,
             files: Vec::new(),
         }
+    }
+
+    /// Sets the picture file (a relative path, e.g. `"torus.png"`), shown in the card
+    /// in place of the inline SVG.
+    pub fn with_picture(mut self, path: impl Into<String>) -> Self {
+        self.picture = Some(path.into());
+        self
     }
 
     /// Sets the inline picture.
@@ -158,19 +170,19 @@ fn card(e: &ReportEntry) -> String {
         .files
         .iter()
         .find(|f| f.path.to_ascii_lowercase().ends_with(".svg"));
-    match (&e.svg, svg_file) {
-        (Some(svg), _) => {
-            let _ = write!(s, r#"<div class="pic">{}</div>"#, inline_svg(svg));
-        }
-        (None, Some(f)) => {
+    match (&e.picture, &e.svg, svg_file) {
+        (Some(path), _, _) | (None, None, Some(FileLink { path, .. })) => {
             let _ = write!(
                 s,
-                r#"<div class="pic"><img src="{}" alt="{}"></div>"#,
-                escape_xml(&f.path),
+                r#"<div class="pic"><img src="{}" alt="{}" loading="lazy"></div>"#,
+                escape_xml(path),
                 escape_xml(&o.name)
             );
         }
-        (None, None) => {}
+        (None, Some(svg), _) => {
+            let _ = write!(s, r#"<div class="pic">{}</div>"#, inline_svg(svg));
+        }
+        (None, None, None) => {}
     }
     let n = o.certificates.len();
     let failed = o.failed_certificate_count();
@@ -246,6 +258,12 @@ fn card(e: &ReportEntry) -> String {
 
 /// The self-contained `index.html` (module docs).
 pub fn report_html(entries: &[ReportEntry]) -> String {
+    report_html_with(entries, &[])
+}
+
+/// [`report_html`] with links to files of the whole report in its header (e.g. one
+/// STEP file holding every object).
+pub fn report_html_with(entries: &[ReportEntry], links: &[FileLink]) -> String {
     let certs: usize = entries.iter().map(|e| e.object.certificates.len()).sum();
     let failed: usize = entries
         .iter()
@@ -269,7 +287,7 @@ pub fn report_html(entries: &[ReportEntry]) -> String {
         s,
         "</h1><p>{} object{}, {certs} certificate{} ({} exact). Exact rational geometry: \
          homogeneous control points <code>(w, wx, wy[, wz])</code>; exact certificates are \
-         decided in exact rational arithmetic (polynomial identities over Q). Data: <a href=\"report.json\">report.json</a>.</p></header><main>",
+         decided in exact rational arithmetic (polynomial identities over Q). Data: <a href=\"report.json\">report.json</a>{}.</p></header><main>",
         entries.len(),
         if entries.len() == 1 { "" } else { "s" },
         if certs == 1 { "" } else { "s" },
@@ -277,7 +295,16 @@ pub fn report_html(entries: &[ReportEntry]) -> String {
             .iter()
             .flat_map(|e| &e.object.certificates)
             .filter(|c| c.exact)
-            .count()
+            .count(),
+        links.iter().fold(String::new(), |mut acc, f| {
+            let _ = write!(
+                acc,
+                r#", <a href="{}">{}</a>"#,
+                escape_xml(&f.path),
+                escape_xml(&f.label)
+            );
+            acc
+        })
     );
     for e in entries {
         s.push_str(&card(e));
@@ -302,11 +329,34 @@ fn write_file(path: &Path, contents: &str) -> Result<(), IoError> {
 /// [`IoError::CreateDir`] / [`IoError::Write`] on file-system failures,
 /// [`IoError::Json`] if serialization fails.
 pub fn write_report(dir: &Path, entries: &[ReportEntry]) -> Result<(), IoError> {
+    write_report_with(dir, entries, &[])
+}
+
+/// [`write_report`] with header links to files of the whole report
+/// ([`report_html_with`]; also listed as `"files"` in `report.json`).
+///
+/// # Errors
+/// As [`write_report`].
+pub fn write_report_with(
+    dir: &Path,
+    entries: &[ReportEntry],
+    links: &[FileLink],
+) -> Result<(), IoError> {
     std::fs::create_dir_all(dir).map_err(|source| IoError::CreateDir {
         path: dir.to_path_buf(),
         source,
     })?;
-    let json = serde_json::to_string_pretty(&report_json(entries))?;
+    let mut json = report_json(entries);
+    if let Value::Object(map) = &mut json {
+        if !links.is_empty() {
+            let files = links
+                .iter()
+                .map(|f| json!({"label": f.label, "path": f.path}))
+                .collect();
+            map.insert("files".into(), Value::Array(files));
+        }
+    }
+    let json = serde_json::to_string_pretty(&json)?;
     write_file(&dir.join("report.json"), &(json + "\n"))?;
-    write_file(&dir.join("index.html"), &report_html(entries))
+    write_file(&dir.join("index.html"), &report_html_with(entries, links))
 }

@@ -20,7 +20,7 @@
 //! of the file's text; [`apply_sidecar`] replaces it by the exact values of an
 //! [`crate::step::exact_sidecar`] after checking that they round to the file's numbers.
 //!
-//! Errors are values: a malformed file gives [`IoError::Invalid`] naming the line and,
+//! Errors are values: a malformed file gives [`IoError::Read`] naming the line and,
 //! inside the data section, the entity (`STEP line 12, entity #7: …`).
 
 use crate::IoError;
@@ -119,10 +119,7 @@ enum Tok {
 }
 
 fn err_at(line: usize, entity: Option<u64>, msg: impl std::fmt::Display) -> IoError {
-    match entity {
-        Some(e) => IoError::Invalid(format!("STEP line {line}, entity #{e}: {msg}")),
-        None => IoError::Invalid(format!("STEP line {line}: {msg}")),
-    }
+    IoError::read("STEP", Some(line), entity.map(|e| format!("#{e}")), msg)
 }
 
 struct Lexer<'a> {
@@ -1160,7 +1157,7 @@ fn product_name(m: &Model, pds: u64, from: (usize, u64)) -> Result<String, IoErr
 /// Reads the objects of a STEP file (module docs).
 ///
 /// # Errors
-/// [`IoError::Invalid`] naming the line (and entity) for a syntax error, a dangling
+/// [`IoError::Read`] naming the line (and entity) for a syntax error, a dangling
 /// reference, unsupported geometry in a part, or invalid B-spline data (knots,
 /// weights, counts).
 pub fn read_step(text: &str) -> Result<Vec<ImportedObject>, IoError> {
@@ -1232,7 +1229,7 @@ pub fn read_step(text: &str) -> Result<Vec<ImportedObject>, IoError> {
 // ---------------------------------------------------------------------------------
 
 fn sidecar_err(msg: impl std::fmt::Display) -> IoError {
-    IoError::Invalid(format!("sidecar: {msg}"))
+    IoError::read("sidecar", None, None, msg)
 }
 
 fn json_rational(v: &Value) -> Result<Rational, IoError> {
@@ -1267,7 +1264,7 @@ fn json_usize(v: &Value, what: &str) -> Result<usize, IoError> {
 /// An exact curve of a sidecar (`{degree, knots, control_points}`).
 ///
 /// # Errors
-/// [`IoError::Invalid`] for a malformed entry or invalid NURBS data.
+/// [`IoError::Read`] for a malformed entry or invalid NURBS data.
 pub fn sidecar_curve(v: &Value) -> Result<NurbsCurve<Rational>, IoError> {
     let p = json_usize(&v["degree"], "degree")?;
     let knots = json_knots(&v["knots"], "knots")?;
@@ -1281,7 +1278,7 @@ pub fn sidecar_curve(v: &Value) -> Result<NurbsCurve<Rational>, IoError> {
 /// An exact surface of a sidecar (`{degree: [p, q], knots_u, knots_v, control_points}`).
 ///
 /// # Errors
-/// [`IoError::Invalid`] for a malformed entry or invalid NURBS data.
+/// [`IoError::Read`] for a malformed entry or invalid NURBS data.
 pub fn sidecar_surface(v: &Value) -> Result<NurbsSurface<Rational>, IoError> {
     let d = json_list(&v["degree"], "degree")?;
     if d.len() != 2 {
@@ -1349,7 +1346,7 @@ pub fn surface_rounds_to(exact: &NurbsSurface<Rational>, file: &NurbsSurface<Rat
 /// [`curve_rounds_to`]). Works for STEP and IGES imports.
 ///
 /// # Errors
-/// [`IoError::Invalid`] naming the object and piece where file and sidecar disagree
+/// [`IoError::Read`] naming the object and piece where file and sidecar disagree
 /// (nothing is replaced then), or for a malformed sidecar.
 pub fn apply_sidecar(objects: &mut [ImportedObject], sidecar: &Value) -> Result<(), IoError> {
     if sidecar["format"] != "rcagd-exact-nurbs" {

@@ -7,6 +7,7 @@
 use rcagd_algebra::{Rational, Scalar};
 use rcagd_geom::{BezierCurve, BezierPatch};
 use rcagd_io::model::{Geometry, Object};
+use rcagd_io::IoError;
 use serde_json::Value;
 
 fn q(p: i64, d: i64) -> Rational {
@@ -486,6 +487,20 @@ fn malformed_iges_is_an_error_with_line_and_entity() {
     assert_err_mentions(read_iges(&short), &["line 1", "column"]);
 }
 
+/// A reader's error must be [`IoError::Read`] naming the format and a line or entity.
+fn assert_located(r: &Result<Vec<rcagd_io::step_read::ImportedObject>, IoError>, what: &str) {
+    if let Err(e) = r {
+        assert!(
+            matches!(e, IoError::Read { .. }),
+            "{what}: not a read error: {e:?}"
+        );
+        assert!(
+            e.line().is_some() || e.entity().is_some(),
+            "{what}: the error names neither line nor entity: {e}"
+        );
+    }
+}
+
 #[test]
 fn readers_never_panic_on_truncated_or_corrupted_files() {
     use rcagd_io::iges_read::read_iges;
@@ -493,17 +508,32 @@ fn readers_never_panic_on_truncated_or_corrupted_files() {
     let objects = vec![
         quarter_object(),
         object("bicubic", Geometry::Patch(bicubic())),
+        object("sphere", Geometry::Patches(sphere([0, 0, 0], 2))),
     ];
     let step = step_text(&objects);
     let iges = iges_text(&objects);
-    for text in [&step, &iges] {
+    let mut errors = 0usize;
+    for (is_step, text) in [(true, &step), (false, &iges)] {
         let bytes = text.as_bytes();
+        // Truncated files: an error (with its line) whenever the end is cut off; the
+        // IGES reader accepts a T record cut after its column 73.
         for cut in (0..bytes.len()).step_by(37) {
             let t = String::from_utf8_lossy(&bytes[..cut]);
-            let _ = read_step(&t);
-            let _ = read_iges(&t);
+            let (a, b) = (read_step(&t), read_iges(&t));
+            assert_located(&a, "truncated, STEP reader");
+            assert_located(&b, "truncated, IGES reader");
+            if cut + 10 < bytes.len() {
+                let r = if is_step { &a } else { &b };
+                assert!(
+                    r.is_err(),
+                    "a file cut at byte {cut} of {} reads",
+                    bytes.len()
+                );
+                errors += 1;
+            }
         }
-        // byte flips at many positions
+        // Garbled files: byte flips at many positions give a located error or a
+        // result, never a panic.
         let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
         for _ in 0..400 {
             x ^= x << 13;
@@ -513,10 +543,38 @@ fn readers_never_panic_on_truncated_or_corrupted_files() {
             let k = (x % b.len() as u64) as usize;
             b[k] = b"0123456789.,;()#'$*-E \n"[(x >> 32) as usize % 23];
             let t = String::from_utf8_lossy(&b);
-            let _ = read_step(&t);
-            let _ = read_iges(&t);
+            let r = if is_step {
+                read_step(&t)
+            } else {
+                read_iges(&t)
+            };
+            assert_located(&r, "garbled");
+            errors += usize::from(r.is_err());
+            let other = if is_step {
+                read_iges(&t)
+            } else {
+                read_step(&t)
+            };
+            assert_located(&other, "garbled, other reader");
+        }
+        // Lines deleted or duplicated.
+        let lines: Vec<&str> = text.lines().collect();
+        for k in (0..lines.len()).step_by(5) {
+            let mut del = lines.clone();
+            del.remove(k);
+            let mut dup = lines.clone();
+            dup.insert(k, lines[k]);
+            for t in [del.join("\n"), dup.join("\n")] {
+                let r = if is_step {
+                    read_step(&t)
+                } else {
+                    read_iges(&t)
+                };
+                assert_located(&r, "lines deleted/duplicated");
+            }
         }
     }
+    assert!(errors > 100, "only {errors} malformed files were rejected");
 }
 
 #[test]

@@ -256,6 +256,26 @@ fn report_files() {
         html
     );
     let _ = std::fs::remove_dir_all(&dir);
+
+    // a PNG picture replaces the inline SVG; header links to whole-report files
+    let entries = vec![ReportEntry::new(patch_object())
+        .with_svg(object_svg(&patch_object(), &SvgOptions::default()).expect("drawable"))
+        .with_picture("wall.png")];
+    let links = [rcagd_io::FileLink {
+        label: "all objects as STEP".into(),
+        path: "all.step".into(),
+    }];
+    let html = rcagd_io::report::report_html_with(&entries, &links);
+    assert!(html.contains("<img src=\"wall.png\""));
+    assert_eq!(count(&html, "<svg"), 0);
+    assert!(html.contains("<a href=\"all.step\">all objects as STEP</a>"));
+    let dir = std::env::temp_dir().join(format!("rcagd-io-report2-{}", std::process::id()));
+    rcagd_io::report::write_report_with(&dir, &entries, &links).expect("writes");
+    let back: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("report.json")).expect("read"))
+            .expect("json");
+    assert_eq!(back["files"][0]["path"], "all.step");
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
