@@ -27,6 +27,10 @@ pub const RECIPES: &[(&str, &str)] = &[
         include_str!("../../../examples/recipes/kernel.toml"),
     ),
     (
+        "examples/recipes/quadric.toml",
+        include_str!("../../../examples/recipes/quadric.toml"),
+    ),
+    (
         "examples/recipes/ph.toml",
         include_str!("../../../examples/recipes/ph.toml"),
     ),

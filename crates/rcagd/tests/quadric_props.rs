@@ -573,3 +573,33 @@ proptest! {
         assert_certs(&bp.certify())?;
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// The whole-sphere cover mapped onto a random ellipsoid: every certificate holds
+    /// exactly (on the ellipsoid, positive weights, watertight), the patches' points
+    /// satisfy the ellipsoid's equation, and the f64 construction agrees.
+    #[test]
+    fn sphere_cover_on_random_ellipsoids(c in [rat(), rat(), rat()], r in [pos(), pos(), pos()], u in 0i64..=4, v in 0i64..=4) {
+        let cover = rcagd::quadric::sphere_cover(c.clone(), r.clone()).unwrap();
+        assert_certs(&cover.certify())?;
+        prop_assert_eq!(cover.patches().len(), 16);
+        let (u, v) = (q(u, 4), q(v, 4));
+        for p in cover.patches() {
+            let x = p.eval(&u, &v).unwrap();
+            let s: Rational = (0..3)
+                .map(|i| {
+                    let d = (x[i].clone() - c[i].clone()) / r[i].clone();
+                    d.clone() * d
+                })
+                .fold(Rational::from(0), |a, b| a + b);
+            prop_assert_eq!(s, Rational::from(1));
+        }
+        let f = rcagd::quadric::sphere_cover(c.clone().map(|x| fl(&x)), r.clone().map(|x| fl(&x))).unwrap();
+        prop_assert!(f.all_hold());
+        for (pe, pf) in cover.patches().iter().zip(f.patches()) {
+            prop_assert!(close(pf.coords(), pe.coords()));
+        }
+    }
+}

@@ -1,6 +1,744 @@
-//! Ops of the `quadric` topic (being written; see docs/ARCHITECTURE.md).
+//! Quadric ops (`rcagd::quadric`, seed 000): rational curves and patches exactly on the
+//! sphere and on any quadric with a rational point, by the generalized stereographic
+//! projection — interpolation, images of Bézier curves and patches, biquadratic patches
+//! from a Miquel configuration, and an exact cover of the whole sphere.
+//!
+//! Every op takes the same quadric parameters: `quadric` (a name, default the unit sphere
+//! with the seed's δ; `"seed_paraboloid"` uses the seed's ψ; every other quadric its
+//! rational normal form `B∘N_{a,e}`), `coefficients` (the named quadric's numbers),
+//! `matrix` (a symmetric 4×4 matrix, with `quadric = "matrix"`) and `rational_point`.
 
-use super::OpSpec;
+use super::{OpArgs, OpError, OpSpec, ParamSpec};
+use crate::model::{Geometry, Object};
+use crate::value::ParamKind;
+use num_traits::{One, Zero};
+use rcagd::quadric::interpolation::HermiteDatum;
+use rcagd::quadric::{
+    curve_image, interpolate_hermite, interpolate_lowest_degree, patch_image, sphere_cover,
+    BiquadraticPatch, Delta, GeneralizedProjection, Hom, Psi, Quadric, QuadricError,
+};
+use rcagd::Certified;
+use rcagd_algebra::rational::format_rational;
+use rcagd_algebra::{Certificate, Rational};
+use rcagd_geom::{BezierCurve, BezierPatch};
 
 /// The ops of this topic.
-pub const OPS: &[OpSpec] = &[];
+pub const OPS: &[OpSpec] = &[
+    QUADRIC_INTERPOLATE,
+    QUADRIC_CURVE_IMAGE,
+    QUADRIC_PATCH_IMAGE,
+    QUADRIC_MIQUEL_PATCH,
+    SPHERE_COVER,
+];
+
+/// The quadric names of the `quadric` parameter.
+const QUADRIC_NAMES: &[&str] = &[
+    "unit_sphere",
+    "sphere",
+    "ellipsoid",
+    "hyperboloid_one_sheet",
+    "hyperboloid_two_sheets",
+    "elliptic_paraboloid",
+    "hyperbolic_paraboloid",
+    "seed_paraboloid",
+    "cone",
+    "elliptic_cylinder",
+    "hyperbolic_cylinder",
+    "parabolic_cylinder",
+    "matrix",
+];
+
+const QUADRIC: ParamSpec = ParamSpec::with_default(
+    "quadric",
+    ParamKind::Choice(QUADRIC_NAMES),
+    "\"unit_sphere\"",
+    "the quadric: unit_sphere (seed δ), seed_paraboloid h0h3 = h1h2 (seed ψ), a named quadric with `coefficients`, or \"matrix\"",
+);
+const COEFFICIENTS: ParamSpec = ParamSpec::with_default(
+    "coefficients",
+    ParamKind::Numbers,
+    "[]",
+    "the named quadric's numbers: sphere [cx, cy, cz, r]; ellipsoid, hyperboloids, cone [a, b, c]; paraboloids, elliptic/hyperbolic cylinder [a, b]; parabolic_cylinder [a]",
+);
+const MATRIX: ParamSpec = ParamSpec::optional(
+    "matrix",
+    ParamKind::Grid,
+    "with quadric = \"matrix\": the symmetric 4×4 matrix Q of Xᵀ Q X = 0, X = (w, x, y, z)",
+);
+const RATIONAL_POINT: ParamSpec = ParamSpec::optional(
+    "rational_point",
+    ParamKind::Point,
+    "a rational point of the quadric, [x, y, z] or homogeneous [w, x, y, z] (default: the named quadric's, or one found exactly)",
+);
+
+const POINTS_DOC: &str = "points on the quadric, [x, y, z] or homogeneous [w, w·x, w·y, w·z]";
+
+const QUADRIC_INTERPOLATE: OpSpec = OpSpec {
+    name: "quadric_interpolate",
+    summary: "a rational curve exactly on a quadric (default the unit sphere) through given points, optionally with tangents, of the lowest possible degree (seed 000 §2: a linear problem)",
+    params: &[
+        ParamSpec::required("points", ParamKind::Points, POINTS_DOC),
+        ParamSpec::optional(
+            "params",
+            ParamKind::Numbers,
+            "one parameter per point, pairwise distinct (default 0, 1/(N−1), …, 1)",
+        ),
+        ParamSpec::optional(
+            "tangents",
+            ParamKind::Points,
+            "one tangent direction [vx, vy, vz] per point, in the tangent plane there; [0, 0, 0] for none",
+        ),
+        ParamSpec::optional(
+            "degree",
+            ParamKind::Int,
+            "the preimage degree n (the curve has degree 2n); default the lowest that works",
+        ),
+        QUADRIC,
+        COEFFICIENTS,
+        MATRIX,
+        RATIONAL_POINT,
+    ],
+    example: r#"[[object]]
+name = "spherical_quartic"
+op = "quadric_interpolate"
+points = [[1, 0, 0], [0, 1, 0], [0, 0, 1], ["3/5", 0, "-4/5"], ["2/3", "-2/3", "1/3"]]
+"#,
+    build: build_interpolate,
+};
+
+const CURVE_DOC: &str =
+    "control points [x, y, z] of the preimage curve in 3-space (with `homogeneous = true`: [w, w·x, w·y, w·z])";
+
+const QUADRIC_CURVE_IMAGE: OpSpec = OpSpec {
+    name: "quadric_curve_image",
+    summary: "the image of a rational Bézier curve of degree n under the generalized stereographic projection: a curve of degree 2n exactly on the quadric (notes 000-2)",
+    params: &[
+        ParamSpec::required("points", ParamKind::Points, CURVE_DOC),
+        ParamSpec::optional("weights", ParamKind::Numbers, "one weight per control point (default all 1)"),
+        ParamSpec::with_default(
+            "homogeneous",
+            ParamKind::Bool,
+            "false",
+            "the points are homogeneous (weight first); then `weights` must be absent",
+        ),
+        QUADRIC,
+        COEFFICIENTS,
+        MATRIX,
+        RATIONAL_POINT,
+    ],
+    example: r#"[[object]]
+name = "delta_of_a_cubic"
+op = "quadric_curve_image"
+points = [[0, 0, 0], [1, 2, 0], [2, -1, 1], [3, 1, 2]]
+"#,
+    build: build_curve_image,
+};
+
+const QUADRIC_PATCH_IMAGE: OpSpec = OpSpec {
+    name: "quadric_patch_image",
+    summary: "the image of a rational tensor-product patch of bidegree (m, n): a patch of bidegree (2m, 2n) exactly on the quadric (notes 000-3)",
+    params: &[
+        ParamSpec::required(
+            "net",
+            ParamKind::Net,
+            "control net of the preimage patch in 3-space: rows of [x, y, z] (with `homogeneous = true`: [w, w·x, w·y, w·z])",
+        ),
+        ParamSpec::optional(
+            "weights",
+            ParamKind::Grid,
+            "one weight per control point, rows like `net` (default all 1)",
+        ),
+        ParamSpec::with_default(
+            "homogeneous",
+            ParamKind::Bool,
+            "false",
+            "the points are homogeneous (weight first); then `weights` must be absent",
+        ),
+        QUADRIC,
+        COEFFICIENTS,
+        MATRIX,
+        RATIONAL_POINT,
+    ],
+    example: r#"[[object]]
+name = "ellipsoid_patch"
+op = "quadric_patch_image"
+net = [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, "1/2"]]]
+quadric = "ellipsoid"
+coefficients = [3, 2, 1]
+"#,
+    build: build_patch_image,
+};
+
+const QUADRIC_MIQUEL_PATCH: OpSpec = OpSpec {
+    name: "quadric_miquel_patch",
+    summary: "a biquadratic patch on the sphere (or an oval quadric) with four given corners and boundary circles, which exists iff the corners are in Miquel position (seed 000 Satz 7, notes 000-8)",
+    params: &[
+        ParamSpec::required(
+            "corners",
+            ParamKind::Points,
+            "the 4 corners p1 = y(0,0), p2 = y(1,0), p3 = y(1,1), p4 = y(0,1) on the quadric",
+        ),
+        ParamSpec::required(
+            "circle_points",
+            ParamKind::Points,
+            "a third point on each boundary circle C12 (v = 0), C23 (u = 1), C34 (v = 1), C41 (u = 0)",
+        ),
+        ParamSpec::with_default(
+            "weight",
+            ParamKind::Number,
+            "1",
+            "the essential weight (of the corner c11 of the bilinear preimage), ≠ 0",
+        ),
+        QUADRIC,
+        COEFFICIENTS,
+        MATRIX,
+        RATIONAL_POINT,
+    ],
+    example: r#"[[object]]
+name = "miquel_patch"
+op = "quadric_miquel_patch"
+corners = [[0, 0, -1], [1, 0, 0], ["2/3", "2/3", "1/3"], [0, 1, 0]]
+circle_points = [["4/5", 0, "-3/5"], ["8/9", "4/9", "1/9"], ["4/9", "8/9", "1/9"], [0, "4/5", "-3/5"]]
+"#,
+    build: build_miquel_patch,
+};
+
+const SPHERE_COVER: OpSpec = OpSpec {
+    name: "sphere_cover",
+    summary: "an exact cover of the whole sphere or ellipsoid by four rational biquadratic patches (δ of the four sign quadrants of the plane p3 = 0)",
+    params: &[
+        ParamSpec::with_default("center", ParamKind::Point3, "[0, 0, 0]", "the centre"),
+        ParamSpec::with_default(
+            "radii",
+            ParamKind::Point3,
+            "[1, 1, 1]",
+            "the semi-axes [a, b, c] along x, y, z (all equal: a sphere), each ≠ 0",
+        ),
+    ],
+    example: r#"[[object]]
+name = "unit_sphere_cover"
+op = "sphere_cover"
+"#,
+    build: build_sphere_cover,
+};
+
+/// A projection chosen from the quadric parameters, with the certificates of the
+/// projection itself (empty for the seed's δ and ψ, which the image certificates cover).
+struct Target {
+    proj: Box<dyn GeneralizedProjection<Rational>>,
+    certs: Vec<Certificate>,
+}
+
+/// Which parameter to blame for an error of the quadric itself.
+fn quadric_param(args: &OpArgs) -> &'static str {
+    match args.string("quadric") {
+        Ok("matrix") => "matrix",
+        Ok(_) if args.get("coefficients").is_some_and(|v| v != &crate::value::Value::Numbers(Vec::new())) => {
+            "coefficients"
+        }
+        _ => "quadric",
+    }
+}
+
+/// A homogeneous point from `[x, y, z]` or `[w, x, y, z]`.
+fn hom(p: &[Rational], param: &'static str, what: &str) -> Result<Hom<Rational>, OpError> {
+    match p {
+        [x, y, z] => Ok([Rational::one(), x.clone(), y.clone(), z.clone()]),
+        [w, x, y, z] => Ok([w.clone(), x.clone(), y.clone(), z.clone()]),
+        _ => Err(OpError::param(
+            param,
+            format!(
+                "{what} must be [x, y, z] or homogeneous [w, w·x, w·y, w·z], it has {} coordinates",
+                p.len()
+            ),
+        )),
+    }
+}
+
+fn target(args: &OpArgs) -> Result<Target, OpError> {
+    let name = args.string("quadric")?;
+    let coefficients = args.opt_numbers("coefficients")?.unwrap_or_default();
+    let matrix = args.opt_grid("matrix")?;
+    let point = args
+        .opt_point("rational_point")?
+        .map(|p| hom(&p, "rational_point", "the rational point"))
+        .transpose()?;
+    let blame = quadric_param(args);
+    if name != "matrix" && matrix.is_some() {
+        return Err(OpError::param(
+            "matrix",
+            format!("a `matrix` is given but quadric = \"{name}\": set quadric = \"matrix\" to use it"),
+        ));
+    }
+    if name == "matrix" && !coefficients.is_empty() {
+        return Err(OpError::param(
+            "coefficients",
+            "quadric = \"matrix\" takes no `coefficients` (the matrix defines it)",
+        ));
+    }
+    if point.is_none() {
+        match name {
+            "unit_sphere" if coefficients.is_empty() => {
+                return Ok(Target {
+                    proj: Box::new(Delta),
+                    certs: Vec::new(),
+                })
+            }
+            "seed_paraboloid" if coefficients.is_empty() => {
+                return Ok(Target {
+                    proj: Box::new(Psi),
+                    certs: Vec::new(),
+                })
+            }
+            _ => {}
+        }
+    }
+    let quadric = if name == "matrix" {
+        let rows = matrix.ok_or_else(|| {
+            OpError::param("quadric", "quadric = \"matrix\" needs the `matrix` parameter (a symmetric 4×4 grid)")
+        })?;
+        Quadric::from_rows(&rows)
+            .map_err(|e| OpError::param("matrix", e.to_string()))?
+            .named("the quadric of `matrix`")
+    } else {
+        Quadric::by_name(name, &coefficients).map_err(|e| OpError::param(blame, e.to_string()))?
+    };
+    let quadric = match point {
+        Some(p) => quadric
+            .with_point(p)
+            .map_err(|e| OpError::param("rational_point", e.to_string()))?,
+        None => quadric,
+    };
+    let proj = quadric.projection().map_err(|e| {
+        let param = match e {
+            QuadricError::Exceptional { .. } if args.get("rational_point").is_some() => {
+                "rational_point"
+            }
+            _ => blame,
+        };
+        OpError::param(param, e.to_string())
+    })?;
+    let certs = prefixed("projection: ", proj.certify());
+    Ok(Target {
+        proj: Box::new(proj),
+        certs,
+    })
+}
+
+/// Prefixes every certificate's property.
+fn prefixed(prefix: &str, certs: Vec<Certificate>) -> Vec<Certificate> {
+    certs
+        .into_iter()
+        .map(|mut c| {
+            c.property = format!("{prefix}{}", c.property);
+            c
+        })
+        .collect()
+}
+
+/// The index in messages like `"point 3"`, `"corner p2"`, `"tangent 1"`.
+fn mentions(msg: &str, word: &str) -> bool {
+    msg.contains(word)
+}
+
+/// Maps a construction error to the parameter that caused it.
+fn located(e: QuadricError, point_param: &'static str) -> OpError {
+    let msg = e.to_string();
+    let param = match &e {
+        QuadricError::NotOnQuadric { what, .. } | QuadricError::ZeroPoint(what) => {
+            if mentions(what, "tangent") {
+                Some("tangents")
+            } else if mentions(what, "circle point") {
+                Some("circle_points")
+            } else if mentions(what, "corner") {
+                Some("corners")
+            } else if mentions(what, "given point") {
+                Some("rational_point")
+            } else {
+                Some(point_param)
+            }
+        }
+        QuadricError::NotFinite(_) | QuadricError::RepeatedPoints(..) => Some(point_param),
+        QuadricError::RepeatedParameters(..) => Some("params"),
+        QuadricError::NotTangent { .. } => Some("tangents"),
+        QuadricError::MiquelFails { .. } => Some("circle_points"),
+        QuadricError::InvalidArgument(m) if m.contains("weight") => Some("weight"),
+        _ => None,
+    };
+    OpError {
+        message: msg,
+        param,
+    }
+}
+
+/// The most interpolation points (the linear system has `4(n+1)` unknowns for degree `2n`).
+const MAX_POINTS: usize = 64;
+
+fn build_interpolate(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let t = target(args)?;
+    let raw = args.points("points")?;
+    let pts = raw
+        .iter()
+        .enumerate()
+        .map(|(i, p)| hom(p, "points", &format!("point {i}")))
+        .collect::<Result<Vec<_>, _>>()?;
+    let n = pts.len();
+    if n > MAX_POINTS {
+        return Err(OpError::param(
+            "points",
+            format!("at most {MAX_POINTS} interpolation points, got {n}"),
+        ));
+    }
+    let params = match args.opt_numbers("params")? {
+        Some(ps) => {
+            if ps.len() != n {
+                return Err(OpError::param(
+                    "params",
+                    format!("{n} points but {} parameters", ps.len()),
+                ));
+            }
+            ps
+        }
+        None => (0..n)
+            .map(|i| {
+                if n == 1 {
+                    Rational::zero()
+                } else {
+                    Rational::from(i) / Rational::from(n - 1)
+                }
+            })
+            .collect(),
+    };
+    let tangents = match args.get("tangents") {
+        None => vec![None; n],
+        Some(_) => {
+            let ts = args.points("tangents")?;
+            if ts.len() != n {
+                return Err(OpError::param(
+                    "tangents",
+                    format!("{n} points but {} tangents (use [0, 0, 0] for none)", ts.len()),
+                ));
+            }
+            ts.into_iter()
+                .enumerate()
+                .map(|(i, v)| match v.as_slice() {
+                    [x, y, z] => Ok((!(x.is_zero() && y.is_zero() && z.is_zero()))
+                        .then(|| [Rational::zero(), x.clone(), y.clone(), z.clone()])),
+                    _ => Err(OpError::param(
+                        "tangents",
+                        format!("tangent {i} must be a direction [vx, vy, vz], it has {} coordinates", v.len()),
+                    )),
+                })
+                .collect::<Result<Vec<_>, _>>()?
+        }
+    };
+    let data: Vec<HermiteDatum<Rational>> = pts
+        .into_iter()
+        .zip(params)
+        .zip(tangents)
+        .map(|((k, t), tan)| match tan {
+            // the direction (0, v) is a second point of the tangent line
+            Some(v) => HermiteDatum::with_tangent(t, k, v),
+            None => HermiteDatum::point(t, k),
+        })
+        .collect();
+    let proj = t.proj.as_ref();
+    let degree = args.get("degree").map(|_| args.int("degree")).transpose()?;
+    let interpolant = match degree {
+        Some(d) => {
+            let n = usize::try_from(d)
+                .ok()
+                .filter(|d| *d <= 32)
+                .ok_or_else(|| OpError::param("degree", format!("the preimage degree must be between 0 and 32, got {d}")))?;
+            interpolate_hermite(proj, &data, n).map_err(|e| match e {
+                QuadricError::NoInterpolant { .. } => OpError::param("degree", e.to_string()),
+                e => located(e, "points"),
+            })?
+        }
+        None => interpolate_lowest_degree(proj, &data).map_err(|e| located(e, "points"))?,
+    };
+    let mut certs = t.certs;
+    certs.extend(interpolant.certify());
+    let n = interpolant.preimage_degree();
+    if degree.is_none() && n > 0 {
+        // the lowest degree: the linear problem of preimage degree n − 1 has no admissible
+        // solution (decided exactly)
+        let lower = interpolate_hermite(proj, &data, n - 1);
+        certs.push(Certificate::decide(
+            format!(
+                "lowest degree: no interpolant of degree {} (preimage degree {}) exists",
+                2 * (n - 1),
+                n - 1
+            ),
+            matches!(lower, Err(QuadricError::NoInterpolant { .. })),
+            true,
+            || "an interpolant of lower degree exists".to_string(),
+        ));
+    }
+    let (geometry, extra) = exportable_curve(interpolant.curve().clone(), &proj.quadric())?;
+    certs.extend(extra);
+    Ok(vec![args.object(geometry, certs)])
+}
+
+/// The homogeneous point `(w, w·p)`.
+fn homogenize(p: &[Rational], w: &Rational) -> Vec<Rational> {
+    let mut h = Vec::with_capacity(p.len() + 1);
+    h.push(w.clone());
+    h.extend(p.iter().map(|x| x * w));
+    h
+}
+
+/// Homogeneous control points in 3-space from points / weights / homogeneous.
+fn control_points(
+    points: Vec<Vec<Rational>>,
+    weights: Option<Vec<Rational>>,
+    homogeneous: bool,
+    points_param: &'static str,
+    label: impl Fn(usize) -> String,
+) -> Result<Vec<Vec<Rational>>, OpError> {
+    let want = if homogeneous { 4 } else { 3 };
+    if let Some(i) = points.iter().position(|p| p.len() != want) {
+        return Err(OpError::param(
+            points_param,
+            format!(
+                "{} must be {} (the preimage lives in 3-space), it has {} coordinates",
+                label(i),
+                if homogeneous { "homogeneous [w, w·x, w·y, w·z]" } else { "[x, y, z]" },
+                points.get(i).map_or(0, Vec::len)
+            ),
+        ));
+    }
+    if homogeneous {
+        if weights.is_some() {
+            return Err(OpError::param(
+                "weights",
+                "give the weights either in `weights` or as the first coordinate of homogeneous points, not both",
+            ));
+        }
+        return Ok(points);
+    }
+    let weights = weights.unwrap_or_else(|| vec![Rational::one(); points.len()]);
+    if weights.len() != points.len() {
+        return Err(OpError::param(
+            "weights",
+            format!("{} control points but {} weights", points.len(), weights.len()),
+        ));
+    }
+    if let Some(i) = weights.iter().position(Zero::is_zero) {
+        return Err(OpError::param(
+            "weights",
+            format!("the weight of {} is zero (use homogeneous = true for points at infinity)", label(i)),
+        ));
+    }
+    Ok(points.iter().zip(&weights).map(|(p, w)| homogenize(p, w)).collect())
+}
+
+fn build_curve_image(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let t = target(args)?;
+    let hom = control_points(
+        args.points("points")?,
+        args.opt_numbers("weights")?,
+        args.bool("homogeneous")?,
+        "points",
+        |i| format!("control point {i}"),
+    )?;
+    let curve = BezierCurve::from_homogeneous(hom).map_err(|e| OpError::param("points", e.to_string()))?;
+    let img = curve_image(t.proj.as_ref(), &curve).map_err(|e| located(e, "points"))?;
+    let mut certs = t.certs;
+    certs.extend(img.certify());
+    let (geometry, extra) = exportable_curve(img.into_image(), &t.proj.quadric())?;
+    certs.extend(extra);
+    Ok(vec![args.object(geometry, certs)])
+}
+
+fn build_patch_image(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let t = target(args)?;
+    let net = args.net("net")?;
+    let weights = args.opt_grid("weights")?;
+    let homogeneous = args.bool("homogeneous")?;
+    if let Some(w) = &weights {
+        let cols = net.first().map_or(0, Vec::len);
+        if w.len() != net.len() || w.iter().any(|r| r.len() != cols) {
+            return Err(OpError::param(
+                "weights",
+                format!("the net has {} rows of {cols} points, the weights do not have the same shape", net.len()),
+            ));
+        }
+    }
+    let mut rows = Vec::with_capacity(net.len());
+    for (i, row) in net.into_iter().enumerate() {
+        let w = weights.as_ref().and_then(|w| w.get(i)).cloned();
+        rows.push(control_points(row, w, homogeneous, "net", |j| format!("control point ({i}, {j})"))?);
+    }
+    let patch = BezierPatch::from_homogeneous(rows).map_err(|e| OpError::param("net", e.to_string()))?;
+    let img = patch_image(t.proj.as_ref(), &patch).map_err(|e| located(e, "net"))?;
+    let mut certs = t.certs;
+    certs.extend(img.certify());
+    let (geometry, extra) = exportable_patch(img.into_image(), &t.proj.quadric())?;
+    certs.extend(extra);
+    Ok(vec![args.object(geometry, certs)])
+}
+
+/// Exactly four homogeneous points from a `Points` parameter.
+fn four(args: &OpArgs, param: &'static str, what: &str) -> Result<[Hom<Rational>; 4], OpError> {
+    let pts = args.points(param)?;
+    if pts.len() != 4 {
+        return Err(OpError::param(param, format!("give exactly 4 {what}, got {}", pts.len())));
+    }
+    let v = pts
+        .iter()
+        .enumerate()
+        .map(|(i, p)| hom(p, param, &format!("{what} {}", i + 1)))
+        .collect::<Result<Vec<_>, _>>()?;
+    <[Hom<Rational>; 4]>::try_from(v).map_err(|_| OpError::param(param, format!("give exactly 4 {what}")))
+}
+
+fn build_miquel_patch(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let t = target(args)?;
+    let corners = four(args, "corners", "corners")?;
+    let circle = four(args, "circle_points", "circle points")?;
+    let weight = args.number("weight")?;
+    if weight.is_zero() {
+        return Err(OpError::param("weight", "the weight must be non-zero"));
+    }
+    let p = BiquadraticPatch::from_corners(t.proj.as_ref(), corners, circle, weight)
+        .map_err(|e| located(e, "corners"))?;
+    // F(−x) = F(x): the corners may be negated without moving the image corners; this
+    // picks, among the 8 sign choices, the first whose boundary arcs give weights of one
+    // sign (arcs under 180° on the sphere), else keeps the construction as it is.
+    let p = {
+        let [c00, c10, c11, c01] = p.bilinear().clone();
+        let neg = |c: &Hom<Rational>, f: bool| if f { c.clone().map(|x| -x) } else { c.clone() };
+        let stride = p.patch().dim() + 1;
+        let mut chosen = None;
+        if !one_sign(p.patch().coords(), stride) {
+            for flips in 1u8..8 {
+                let cand = BiquadraticPatch::from_bilinear(
+                    t.proj.as_ref(),
+                    c00.clone(),
+                    neg(&c10, flips & 1 != 0),
+                    neg(&c11, flips & 2 != 0),
+                    neg(&c01, flips & 4 != 0),
+                );
+                if let Ok(c) = cand {
+                    if one_sign(c.patch().coords(), stride) {
+                        chosen = Some(c);
+                        break;
+                    }
+                }
+            }
+        }
+        chosen.unwrap_or(p)
+    };
+    let mut certs = t.certs;
+    certs.extend(p.certify());
+    let (geometry, extra) = exportable_patch(p.patch().clone(), &t.proj.quadric())?;
+    certs.extend(extra);
+    Ok(vec![args.object(geometry, certs)])
+}
+
+fn build_sphere_cover(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c = args.point("center")?;
+    let r = args.point("radii")?;
+    let (Ok(c), Ok(r)) = (<[Rational; 3]>::try_from(c), <[Rational; 3]>::try_from(r)) else {
+        return Err(OpError::new("internal error: `center`/`radii` are not 3D points"));
+    };
+    if let Some(i) = r.iter().position(Zero::is_zero) {
+        return Err(OpError::param(
+            "radii",
+            format!("the semi-axis {} is {}: it must be non-zero", ["a", "b", "c"][i], format_rational(&r[i])),
+        ));
+    }
+    let cover = sphere_cover(c, r).map_err(|e| OpError::param("radii", e.to_string()))?;
+    let certs = cover.certify();
+    Ok(vec![args.object(Geometry::Patches(cover.into_patches()), certs)])
+}
+
+/// The deepest bisection level of [`exportable_curve`] / [`exportable_patch`].
+const MAX_SPLIT: u32 = 4;
+
+/// `true` if the weights (every `stride`-th coordinate) are all > 0 or all < 0 (an
+/// all-negative piece is the same projective object; exporters negate it).
+fn one_sign(coords: &[Rational], stride: usize) -> bool {
+    let w: Vec<&Rational> = coords.iter().step_by(stride).collect();
+    w.iter().all(|x| **x > Rational::zero()) || w.iter().all(|x| **x < Rational::zero())
+}
+
+/// The curve, or — if its weights have mixed signs while its weight function has no zero
+/// on `[0, 1]` (e.g. `k0 = |x|² > 0` on the sphere) — its restrictions to the `2^L`
+/// intervals `[i/2^L, (i+1)/2^L]` for the least `L ≤ MAX_SPLIT` that gives every piece
+/// weights of one sign (Bernstein coefficients converge to the function under
+/// subdivision). STEP/IGES need such weights. The certificates: every piece on the
+/// quadric (`Xᵀ Q X ≡ 0`, exact), consecutive pieces join exactly.
+fn exportable_curve(
+    curve: BezierCurve<Rational>,
+    q: &rcagd::quadric::Mat4<Rational>,
+) -> Result<(Geometry, Vec<Certificate>), OpError> {
+    let s = curve.dim() + 1;
+    if one_sign(curve.coords(), s) {
+        return Ok((Geometry::Curve(curve), Vec::new()));
+    }
+    for level in 1..=MAX_SPLIT {
+        let k = 1u32 << level;
+        let at = |i: u32| Rational::from(i) / Rational::from(k);
+        let pieces = (0..k)
+            .map(|i| curve.restrict(&at(i), &at(i + 1)))
+            .collect::<Result<Vec<_>, _>>()?;
+        if pieces.iter().all(|p| one_sign(p.coords(), s)) {
+            let mut certs = vec![Certificate::decide(
+                format!("split into {k} pieces [i/{k}, (i+1)/{k}] with weights of one sign (export); every piece lies on the quadric: Xᵀ Q X ≡ 0"),
+                pieces.iter().all(|p| {
+                    rcagd::quadric::image::certify_curve_on_quadric(p, q, "").holds
+                }),
+                true,
+                || "a piece is off the quadric".to_string(),
+            )];
+            let joined = pieces.windows(2).all(|w| match w {
+                [a, b] => a.control_points().last() == b.control_points().next(),
+                _ => true,
+            });
+            certs.push(Certificate::decide(
+                "consecutive pieces join exactly (equal homogeneous end points)",
+                joined,
+                true,
+                || "two pieces do not join".to_string(),
+            ));
+            return Ok((Geometry::Curves(pieces), certs));
+        }
+    }
+    Ok((Geometry::Curve(curve), Vec::new()))
+}
+
+/// As [`exportable_curve`] for a patch: its restrictions to the `2^L × 2^L` sub-squares.
+fn exportable_patch(
+    patch: BezierPatch<Rational>,
+    q: &rcagd::quadric::Mat4<Rational>,
+) -> Result<(Geometry, Vec<Certificate>), OpError> {
+    let s = patch.dim() + 1;
+    if one_sign(patch.coords(), s) {
+        return Ok((Geometry::Patch(patch), Vec::new()));
+    }
+    for level in 1..=MAX_SPLIT.min(3) {
+        let k = 1u32 << level;
+        let at = |i: u32| Rational::from(i) / Rational::from(k);
+        let mut pieces = Vec::new();
+        for i in 0..k {
+            for j in 0..k {
+                pieces.push(patch.restrict(&at(i), &at(i + 1), &at(j), &at(j + 1))?);
+            }
+        }
+        if pieces.iter().all(|p| one_sign(p.coords(), s)) {
+            let on = pieces
+                .iter()
+                .all(|p| rcagd::quadric::image::certify_patch_on_quadric(p, q, "").holds);
+            let cert = Certificate::decide(
+                format!("split into {k}×{k} sub-patches with weights of one sign (export); every sub-patch lies on the quadric: Xᵀ Q X ≡ 0"),
+                on,
+                true,
+                || "a sub-patch is off the quadric".to_string(),
+            );
+            return Ok((Geometry::Patches(pieces), vec![cert]));
+        }
+    }
+    Ok((Geometry::Patch(patch), Vec::new()))
+}

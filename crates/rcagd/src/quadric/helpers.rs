@@ -2,33 +2,31 @@
 //! bases, 4×4 and general exact linear algebra, and homogeneous polynomials in four
 //! variables (for the identity certificates of the maps themselves).
 //!
-//! Note for the lead: these duplicate pieces of `rcagd_algebra::{linalg, mpoly, bernstein}`
-//! and of `rcagd_geom` evaluation, written here because those files were still in
-//! progress when this module was written. They can be replaced one by one.
+//! What the algebra and geometry crates provide is used from there: number formatting
+//! (`rcagd_geom::certify::format_scalar`), binomials and the Bernstein basis
+//! (`rcagd_algebra::bernstein`), evaluation (`BezierCurve`/`BezierPatch`), exact
+//! elimination, kernels, determinants and inverses (`rcagd_algebra::linalg::Matrix`) and
+//! polynomials in `p0..p3` (`rcagd_algebra::mpoly::MPoly`). What stays here is
+//! quadric-specific: fixed-size 4-vector/4×4 arithmetic, the `f64` tolerance policy of
+//! this module, and elimination with that tolerance for `f64` (linalg's generic
+//! elimination tests pivots for exact zero, and its `f64` kernel is an SVD with an
+//! orthonormal basis, not the free-variable basis the interpolation code uses).
 
 // Index loops mirror the matrix formulas (Q_ij, M_k[i][j]) of the notes.
 #![allow(clippy::needless_range_loop)]
 
 use super::Hom;
-use rcagd_algebra::rational::format_rational;
+use rcagd_algebra::linalg::Matrix;
+use rcagd_algebra::mpoly::MPoly;
 use rcagd_algebra::Scalar;
 use rcagd_geom::{BezierCurve, BezierPatch};
-use std::collections::BTreeMap;
 
-/// Relative tolerance of the `f64` decisions.
-pub(crate) const TOL: f64 = 1e-9;
+pub(crate) use rcagd_algebra::bernstein::{basis as bernstein, binomial as binom};
+pub(crate) use rcagd_geom::certify::format_scalar as fmt_scalar;
 
-/// A scalar as text: `"p/q"` for exact scalars, a decimal for `f64`.
-pub(crate) fn fmt_scalar<F: Scalar>(x: &F) -> String {
-    if F::EXACT {
-        match x.to_rational() {
-            Some(q) => format_rational(&q),
-            None => format!("{:?}", x),
-        }
-    } else {
-        format!("{}", x.to_f64())
-    }
-}
+/// `x == 0` exactly for exact scalars; `|x| ≤ TOL · max(scale, 1)` for `f64` (the
+/// relative tolerance `1e-9` of `rcagd_geom::certify`).
+pub(crate) use crate::certs::is_negligible as negligible;
 
 /// A vector as text `(a, b, …)`.
 pub(crate) fn fmt_vec<F: Scalar>(v: &[F]) -> String {
@@ -41,16 +39,6 @@ pub(crate) fn magnitude<F: Scalar>(v: &[F]) -> f64 {
     v.iter().map(|x| x.to_f64().abs()).fold(1.0, f64::max)
 }
 
-/// `x == 0` exactly for exact scalars; `|x| ≤ TOL · max(scale, 1)` for `f64`.
-pub(crate) fn negligible<F: Scalar>(x: &F, scale: f64) -> bool {
-    if F::EXACT {
-        x.is_zero()
-    } else {
-        let v = x.to_f64();
-        v.is_finite() && v.abs() <= TOL * scale.max(1.0)
-    }
-}
-
 /// All entries negligible relative to `scale`.
 pub(crate) fn all_negligible<F: Scalar>(v: &[F], scale: f64) -> bool {
     v.iter().all(|x| negligible(x, scale))
@@ -59,36 +47,6 @@ pub(crate) fn all_negligible<F: Scalar>(v: &[F], scale: f64) -> bool {
 /// `true` if every entry is finite (always for exact scalars).
 pub(crate) fn all_finite<F: Scalar>(v: &[F]) -> bool {
     F::EXACT || v.iter().all(|x| x.to_f64().is_finite())
-}
-
-/// Binomial coefficient as a scalar (exact for exact scalars).
-pub(crate) fn binom<F: Scalar>(n: usize, k: usize) -> F {
-    if k > n {
-        return F::zero();
-    }
-    let k = k.min(n - k);
-    let mut r = F::one();
-    for i in 0..k {
-        r = r * F::from_i64((n - i) as i64) / F::from_i64((i + 1) as i64);
-    }
-    r
-}
-
-/// The Bernstein basis `Bⱼⁿ(t) = C(n,j) tʲ (1−t)ⁿ⁻ʲ`, `j = 0..=n`.
-pub(crate) fn bernstein<F: Scalar>(n: usize, t: &F) -> Vec<F> {
-    let s = F::one() - t.clone();
-    (0..=n)
-        .map(|j| {
-            let mut v = binom::<F>(n, j);
-            for _ in 0..j {
-                v *= t.clone();
-            }
-            for _ in j..n {
-                v *= s.clone();
-            }
-            v
-        })
-        .collect()
 }
 
 /// Derivatives of the Bernstein basis: `Bⱼⁿ'(t) = n (Bⱼ₋₁ⁿ⁻¹(t) − Bⱼⁿ⁻¹(t))`.
@@ -121,45 +79,44 @@ pub(crate) fn to_hom<F: Scalar>(p: &[F]) -> Hom<F> {
     [g(0), g(1), g(2), g(3)]
 }
 
-/// The homogeneous point of a curve at `t` (Bernstein sum).
-pub(crate) fn eval_curve<F: Scalar>(curve: &BezierCurve<F>, t: &F) -> Hom<F> {
-    let b = bernstein::<F>(curve.degree(), t);
+/// `Σ cⱼ Pⱼ` for 4-vectors `Pⱼ`.
+fn combine<'a, F: Scalar + 'a>(c: &[F], pts: impl Iterator<Item = &'a [F]>) -> Hom<F> {
     let mut out = zero4::<F>();
-    for (bj, p) in b.iter().zip(curve.control_points()) {
+    for (cj, p) in c.iter().zip(pts) {
         for (o, x) in out.iter_mut().zip(p) {
-            *o += bj.clone() * x.clone();
+            *o += cj.clone() * x.clone();
         }
     }
     out
+}
+
+/// The homogeneous point of a curve at `t`: the Bernstein sum with the basis values of
+/// `rcagd_algebra::bernstein::basis` (for exact scalars about 5× cheaper than de
+/// Casteljau's `BezierCurve::eval_homogeneous` at degree 6, which matters for the
+/// certificates that evaluate on `(2n+1)²` nodes).
+pub(crate) fn eval_curve<F: Scalar>(curve: &BezierCurve<F>, t: &F) -> Hom<F> {
+    combine(&bernstein(curve.degree(), t), curve.control_points())
 }
 
 /// The homogeneous derivative of a curve at `t`.
 pub(crate) fn eval_curve_derivative<F: Scalar>(curve: &BezierCurve<F>, t: &F) -> Hom<F> {
-    let b = bernstein_derivative::<F>(curve.degree(), t);
-    let mut out = zero4::<F>();
-    for (bj, p) in b.iter().zip(curve.control_points()) {
-        for (o, x) in out.iter_mut().zip(p) {
-            *o += bj.clone() * x.clone();
-        }
-    }
-    out
+    combine(
+        &bernstein_derivative(curve.degree(), t),
+        curve.control_points(),
+    )
 }
 
-/// The homogeneous point of a patch at `(u, v)`.
+/// The homogeneous point of a patch at `(u, v)` (Bernstein sums, as [`eval_curve`]).
 pub(crate) fn eval_patch<F: Scalar>(patch: &BezierPatch<F>, u: &F, v: &F) -> Hom<F> {
     let (m, n) = patch.degree();
     let bu = bernstein::<F>(m, u);
     let bv = bernstein::<F>(n, v);
-    let mut out = zero4::<F>();
-    for (i, bi) in bu.iter().enumerate() {
-        for (j, bj) in bv.iter().enumerate() {
-            let w = bi.clone() * bj.clone();
-            for (o, x) in out.iter_mut().zip(patch.control_point(i, j)) {
-                *o += w.clone() * x.clone();
-            }
-        }
-    }
-    out
+    let weights: Vec<F> = bu
+        .iter()
+        .flat_map(|bi| bv.iter().map(move |bj| bi.clone() * bj.clone()))
+        .collect();
+    let pts = (0..=m).flat_map(|i| (0..=n).map(move |j| (i, j)));
+    combine(&weights, pts.map(|(i, j)| patch.control_point(i, j)))
 }
 
 /// `[0, 0, 0, 0]`.
@@ -264,9 +221,23 @@ pub(crate) fn is_zero_vec<F: Scalar>(v: &[F]) -> bool {
     }
 }
 
-/// The rank of a list of row vectors (Gaussian elimination; `f64` with a relative tolerance).
+/// The rows as a [`Matrix`] with `ncols` columns (short rows padded with zeros).
+fn matrix<F: Scalar>(rows: &[Vec<F>], ncols: usize) -> Matrix<F> {
+    Matrix::from_fn(rows.len(), ncols, |i, j| {
+        rows.get(i)
+            .and_then(|r| r.get(j))
+            .cloned()
+            .unwrap_or_else(F::zero)
+    })
+}
+
+/// The rank of a list of row vectors (exact: [`Matrix::rank`]; `f64`: elimination with
+/// the relative tolerance of this module).
 pub(crate) fn rank<F: Scalar>(rows: &[Vec<F>]) -> usize {
     let ncols = rows.iter().map(|r| r.len()).max().unwrap_or(0);
+    if F::EXACT {
+        return matrix(rows, ncols).rank();
+    }
     let (_, pivots) = rref(rows, ncols);
     pivots.len()
 }
@@ -288,8 +259,9 @@ pub(crate) fn parallel<F: Scalar>(a: &[F], b: &[F]) -> bool {
     }
 }
 
-/// Reduced row echelon form of the rows (`ncols` columns); returns the reduced rows and
-/// the pivot columns. `f64`: partial pivoting, entries below `TOL · max|entry|` are zero.
+/// Reduced row echelon form of the rows (`ncols` columns), `f64` path: partial
+/// pivoting, entries below `TOL · max|entry|` are zero; returns the non-zero rows and
+/// the pivot columns. Exact scalars use [`Matrix::rref`] (see [`null_space`]).
 pub(crate) fn rref<F: Scalar>(rows: &[Vec<F>], ncols: usize) -> (Vec<Vec<F>>, Vec<usize>) {
     let mut a: Vec<Vec<F>> = rows
         .iter()
@@ -357,8 +329,12 @@ pub(crate) fn rref<F: Scalar>(rows: &[Vec<F>], ncols: usize) -> (Vec<Vec<F>>, Ve
 }
 
 /// A basis of the null space `{x : rows · x = 0}` (`ncols` unknowns), one vector per free
-/// column (free variable = 1, others 0).
+/// column (free variable = 1, others 0): [`Matrix::null_space`] for exact scalars, the
+/// same construction on the tolerant [`rref`] for `f64`.
 pub(crate) fn null_space<F: Scalar>(rows: &[Vec<F>], ncols: usize) -> Vec<Vec<F>> {
+    if F::EXACT {
+        return matrix(rows, ncols).null_space();
+    }
     let (r, pivots) = rref(rows, ncols);
     let mut basis = Vec::new();
     for free in 0..ncols {
@@ -375,67 +351,20 @@ pub(crate) fn null_space<F: Scalar>(rows: &[Vec<F>], ncols: usize) -> Vec<Vec<F>
     basis
 }
 
-/// The inverse of a 4×4 matrix (`None` if singular).
+/// The inverse of a 4×4 matrix (`None` if singular), by [`Matrix::inverse`].
 pub(crate) fn inverse4<F: Scalar>(a: &[[F; 4]; 4]) -> Option<[[F; 4]; 4]> {
-    let rows: Vec<Vec<F>> = (0..4)
-        .map(|i| {
-            let mut r = a[i].to_vec();
-            r.extend((0..4).map(|j| if i == j { F::one() } else { F::zero() }));
-            r
-        })
-        .collect();
-    let (red, pivots) = rref(&rows, 8);
-    if pivots.len() < 4 || pivots[..4] != [0, 1, 2, 3] {
-        return None;
-    }
-    let mut out = [zero4::<F>(), zero4(), zero4(), zero4()];
-    for i in 0..4 {
-        for j in 0..4 {
-            out[i][j] = red[i][4 + j].clone();
-        }
-    }
-    Some(out)
+    let inv = Matrix::from_fn(4, 4, |i, j| a[i][j].clone())
+        .inverse()
+        .ok()?;
+    let rows: Vec<Vec<F>> = inv.row_iter().map(<[F]>::to_vec).collect();
+    Some([0, 1, 2, 3].map(|i| to_hom(rows.get(i).map_or(&[][..], Vec::as_slice))))
 }
 
-/// Determinant of a square matrix (Gaussian elimination).
+/// Determinant of a square matrix ([`Matrix::determinant`], fraction-free Bareiss).
 pub(crate) fn det<F: Scalar>(a: &[Vec<F>]) -> F {
-    let n = a.len();
-    let mut m: Vec<Vec<F>> = a.to_vec();
-    let mut d = F::one();
-    for col in 0..n {
-        let p = if F::EXACT {
-            (col..n).find(|&r| !m[r][col].is_zero())
-        } else {
-            (col..n)
-                .filter(|&r| m[r][col].to_f64() != 0.0)
-                .max_by(|&x, &y| {
-                    m[x][col]
-                        .to_f64()
-                        .abs()
-                        .total_cmp(&m[y][col].to_f64().abs())
-                })
-        };
-        let Some(p) = p else {
-            return F::zero();
-        };
-        if p != col {
-            m.swap(p, col);
-            d = -d;
-        }
-        let piv = m[col][col].clone();
-        d *= piv.clone();
-        for r in col + 1..n {
-            if m[r][col].is_zero() {
-                continue;
-            }
-            let f = m[r][col].clone() / piv.clone();
-            for c in col..n {
-                let v = m[col][c].clone();
-                m[r][c] = m[r][c].clone() - f.clone() * v;
-            }
-        }
-    }
-    d
+    matrix(a, a.len())
+        .determinant()
+        .unwrap_or_else(|_| F::zero())
 }
 
 /// Covectors spanning the annihilator of the given vectors (a basis of
@@ -448,95 +377,43 @@ pub(crate) fn annihilator<F: Scalar>(vectors: &[Hom<F>]) -> Vec<Hom<F>> {
         .collect()
 }
 
-/// A homogeneous polynomial (or any polynomial) in the four variables `p0..p3`, stored
-/// sparsely by exponent vector. Only what the identity certificates of the maps need.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct Poly4<F> {
-    terms: BTreeMap<[u8; 4], F>,
+/// The variable `pᵢ` as a polynomial in `p0..p3`.
+pub(crate) fn poly_var<F: Scalar>(i: usize) -> MPoly<F> {
+    MPoly::var(4, i)
 }
 
-impl<F: Scalar> Poly4<F> {
-    pub(crate) fn zero() -> Self {
-        Poly4 {
-            terms: BTreeMap::new(),
+/// `true` if every coefficient is negligible relative to `scale`.
+pub(crate) fn poly_negligible<F: Scalar>(p: &MPoly<F>, scale: f64) -> bool {
+    p.terms().all(|(_, c)| negligible(c, scale))
+}
+
+/// The first non-negligible terms of a polynomial in `p0..p3`, formatted (for a failing
+/// certificate).
+pub(crate) fn poly_describe<F: Scalar>(p: &MPoly<F>, scale: f64) -> String {
+    const NAMES: [&str; 4] = ["p0", "p1", "p2", "p3"];
+    let mut parts = Vec::new();
+    for (e, c) in p.terms() {
+        if negligible(c, scale) {
+            continue;
         }
-    }
-    pub(crate) fn var(i: usize) -> Self {
-        let mut e = [0u8; 4];
-        e[i] = 1;
-        let mut terms = BTreeMap::new();
-        terms.insert(e, F::one());
-        Poly4 { terms }
-    }
-    fn insert(&mut self, e: [u8; 4], c: F) {
-        let entry = self.terms.entry(e).or_insert_with(F::zero);
-        *entry = entry.clone() + c;
-        if F::EXACT && entry.is_zero() {
-            self.terms.remove(&e);
-        }
-    }
-    pub(crate) fn add(&self, o: &Self) -> Self {
-        let mut r = self.clone();
-        for (e, c) in &o.terms {
-            r.insert(*e, c.clone());
-        }
-        r
-    }
-    pub(crate) fn sub(&self, o: &Self) -> Self {
-        let mut r = self.clone();
-        for (e, c) in &o.terms {
-            r.insert(*e, -c.clone());
-        }
-        r
-    }
-    pub(crate) fn scale(&self, c: &F) -> Self {
-        let mut r = Self::zero();
-        for (e, x) in &self.terms {
-            r.insert(*e, c.clone() * x.clone());
-        }
-        r
-    }
-    pub(crate) fn mul(&self, o: &Self) -> Self {
-        let mut r = Self::zero();
-        for (e1, c1) in &self.terms {
-            for (e2, c2) in &o.terms {
-                let e = [0, 1, 2, 3].map(|i| e1[i] + e2[i]);
-                r.insert(e, c1.clone() * c2.clone());
+        let mut mono = String::new();
+        for (name, &k) in NAMES.iter().zip(e) {
+            if k == 1 {
+                mono.push_str(name);
+            } else if k > 1 {
+                mono.push_str(&format!("{name}^{k}"));
             }
         }
-        r
-    }
-    /// `true` if every coefficient is negligible relative to `scale`.
-    pub(crate) fn is_negligible(&self, scale: f64) -> bool {
-        self.terms.values().all(|c| negligible(c, scale))
-    }
-    /// The first non-negligible term, formatted (for a failing certificate).
-    pub(crate) fn describe(&self, scale: f64) -> String {
-        const NAMES: [&str; 4] = ["p0", "p1", "p2", "p3"];
-        let mut parts = Vec::new();
-        for (e, c) in &self.terms {
-            if negligible(c, scale) {
-                continue;
-            }
-            let mut mono = String::new();
-            for (i, &k) in e.iter().enumerate() {
-                if k == 1 {
-                    mono.push_str(NAMES[i]);
-                } else if k > 1 {
-                    mono.push_str(&format!("{}^{}", NAMES[i], k));
-                }
-            }
-            parts.push(format!("{}·{}", fmt_scalar(c), mono));
-            if parts.len() == 4 {
-                parts.push("…".into());
-                break;
-            }
+        parts.push(format!("{}·{}", fmt_scalar(c), mono));
+        if parts.len() == 4 {
+            parts.push("…".into());
+            break;
         }
-        if parts.is_empty() {
-            "0".into()
-        } else {
-            parts.join(" + ")
-        }
+    }
+    if parts.is_empty() {
+        "0".into()
+    } else {
+        parts.join(" + ")
     }
 }
 

@@ -123,72 +123,31 @@ pub(crate) fn polar_rule_patch<F: Scalar, T>(
     out
 }
 
-/// Certifies `Xᵀ Q X ≡ 0` along a curve: the Bernstein coefficients of the quartic
-/// (degree `2·deg`) form, computed by the polar-form rule, all vanish.
+/// The rows of a 4×4 matrix, for `rcagd_geom::certify`.
+fn rows<F: Scalar>(q: &Mat4<F>) -> Vec<Vec<F>> {
+    q.iter().map(|r| r.to_vec()).collect()
+}
+
+/// Certifies `Xᵀ Q X ≡ 0` along a curve: every Bernstein coefficient of the form (degree
+/// `2·deg`) vanishes exactly (`rcagd_geom::certify::curve_on_quadric`).
 pub fn certify_curve_on_quadric<F: Scalar>(
     curve: &BezierCurve<F>,
     q: &Mat4<F>,
     property: &str,
 ) -> Certificate {
-    let Ok(pts) = curve_points(curve) else {
-        return Certificate::fails(property, "the curve is not in 3-space", F::EXACT);
-    };
-    let coeffs = polar_rule_curve::<F, Hom<F>>(&pts, 1, &|a, b| vec![helpers::bilinear(q, a, b)]);
-    let scale = pts
-        .iter()
-        .map(|p| helpers::magnitude(p))
-        .fold(1.0, f64::max)
-        .powi(2)
-        * helpers::magnitude(&q.concat());
-    match coeffs
-        .iter()
-        .position(|c| !helpers::negligible(&c[0], scale))
-    {
-        None => Certificate::holds(property, F::EXACT),
-        Some(k) => Certificate::fails(
-            property,
-            format!(
-                "Bernstein coefficient {k} of Xᵀ Q X (degree {}) is {}",
-                coeffs.len() - 1,
-                fmt_scalar(&coeffs[k][0])
-            ),
-            F::EXACT,
-        ),
-    }
+    crate::certs::curve_on_quadric(curve, &rows(q), property)
+        .unwrap_or_else(|e| Certificate::fails(property, e.to_string(), F::EXACT))
 }
 
-/// Certifies `Xᵀ Q X ≡ 0` on a patch (all Bernstein coefficients of bidegree `(2m, 2n)`).
+/// Certifies `Xᵀ Q X ≡ 0` on a patch (all Bernstein coefficients of bidegree `(2m, 2n)`,
+/// `rcagd_geom::certify::patch_on_quadric`).
 pub fn certify_patch_on_quadric<F: Scalar>(
     patch: &BezierPatch<F>,
     q: &Mat4<F>,
     property: &str,
 ) -> Certificate {
-    let Ok(net) = patch_net(patch) else {
-        return Certificate::fails(property, "the patch is not in 3-space", F::EXACT);
-    };
-    let coeffs = polar_rule_patch::<F, Hom<F>>(&net, 1, &|a, b| vec![helpers::bilinear(q, a, b)]);
-    let scale = net
-        .iter()
-        .flatten()
-        .map(|p| helpers::magnitude(p))
-        .fold(1.0, f64::max)
-        .powi(2)
-        * helpers::magnitude(&q.concat());
-    for (k, row) in coeffs.iter().enumerate() {
-        for (l, c) in row.iter().enumerate() {
-            if !helpers::negligible(&c[0], scale) {
-                return Certificate::fails(
-                    property,
-                    format!(
-                        "Bernstein coefficient ({k}, {l}) of Xᵀ Q X is {}",
-                        fmt_scalar(&c[0])
-                    ),
-                    F::EXACT,
-                );
-            }
-        }
-    }
-    Certificate::holds(property, F::EXACT)
+    crate::certs::patch_on_quadric(patch, &rows(q), property)
+        .unwrap_or_else(|e| Certificate::fails(property, e.to_string(), F::EXACT))
 }
 
 /// The image of a curve: `F(x)` of degree `2n` (notes 000-2).

@@ -21,6 +21,8 @@
 //!   in `E³` meeting the projecting lines), lowest degree, free parameters, Hermite data;
 //! * [`sphere_patch`]: biquadratic patches from bilinear ones, the Miquel condition
 //!   (Satz 7) and its converse;
+//! * [`cover`]: an exact, watertight cover of the whole sphere (and of any axis-parallel
+//!   ellipsoid) by sixteen biquadratic patches with positive weights;
 //! * [`general`]: any quadric `Xᵀ Q X = 0` (symmetric 4×4 rational matrix, or by name):
 //!   classification, a rational normal form from a rational point, the generalized
 //!   stereographic projection onto it, and the degenerate quadrics (cones, cylinders)
@@ -31,6 +33,7 @@
 //! Every map implements [`GeneralizedProjection`]; the constructions are generic over it
 //! and over the scalar ([`Scalar`]: exact [`rcagd_algebra::Rational`] or `f64`).
 
+pub mod cover;
 pub mod general;
 pub(crate) mod helpers;
 pub mod image;
@@ -41,6 +44,7 @@ pub mod rational_points;
 pub mod sphere_patch;
 pub mod stereographic;
 
+pub use cover::{sphere_cover, SphereCover};
 pub use general::{AnyProjection, ConeProjection, Quadric, QuadricKind, QuadricProjection};
 pub use image::{
     curve_image, curve_preimage, patch_image, patch_preimage, ImageCurve, ImagePatch, Preimage,

@@ -11,8 +11,9 @@
 // Index loops mirror the matrix formulas (Q_ij, M_k[i][j]) of the notes.
 #![allow(clippy::needless_range_loop)]
 
-use super::helpers::{self, Poly4};
+use super::helpers::{self, poly_describe, poly_negligible, poly_var};
 use super::{Hom, Mat4, QuadricError};
+use rcagd_algebra::mpoly::MPoly;
 use rcagd_algebra::{Certificate, Scalar};
 
 /// A quadratic map `p ↦ (pᵀ M₀ p, …, pᵀ M₃ p)` of homogeneous coordinates.
@@ -132,16 +133,15 @@ impl<F: Scalar> QuadraticMap<F> {
     }
 
     /// The components as polynomials in `p0..p3`.
-    pub(crate) fn components(&self) -> [Poly4<F>; 4] {
+    pub(crate) fn components(&self) -> [MPoly<F>; 4] {
         [0, 1, 2, 3].map(|k| {
-            let mut f = Poly4::zero();
+            let mut f = MPoly::zero(4);
             for i in 0..4 {
                 for j in 0..4 {
                     if self.m[k][i][j].is_zero() {
                         continue;
                     }
-                    let t = Poly4::var(i).mul(&Poly4::var(j)).scale(&self.m[k][i][j]);
-                    f = f.add(&t);
+                    f = &f + &(poly_var(i) * poly_var(j)).scale(&self.m[k][i][j]);
                 }
             }
             f
@@ -152,13 +152,13 @@ impl<F: Scalar> QuadraticMap<F> {
     /// map lands on the quadric (seed (5)/(6) with (7)/(8)).
     pub fn certify_on_quadric(&self, q: &Mat4<F>, property: &str) -> Certificate {
         let c = self.components();
-        let mut s = Poly4::zero();
+        let mut s = MPoly::zero(4);
         for k in 0..4 {
             for l in 0..4 {
                 if q[k][l].is_zero() {
                     continue;
                 }
-                s = s.add(&c[k].mul(&c[l]).scale(&q[k][l]));
+                s = &s + &(&c[k] * &c[l]).scale(&q[k][l]);
             }
         }
         decide_poly(
@@ -178,17 +178,17 @@ impl<F: Scalar> QuadraticMap<F> {
         property: &str,
     ) -> Certificate {
         let comp = self.components();
-        let mut s = Poly4::zero();
+        let mut s = MPoly::zero(4);
         for k in 0..4 {
             for l in 0..4 {
                 if c[k][l].is_zero() {
                     continue;
                 }
-                s = s.add(&comp[k].mul(&comp[l]).scale(&c[k][l]));
+                s = &s + &(&comp[k] * &comp[l]).scale(&c[k][l]);
             }
         }
-        let rhs = quad_poly(factor).mul(&quad_poly(target));
-        let d = s.sub(&rhs);
+        let rhs = quad_poly(factor) * quad_poly(target);
+        let d = &s - &rhs;
         let scale = self.magnitude().powi(2) * helpers::magnitude(&c.concat())
             + helpers::magnitude(&factor.concat()) * helpers::magnitude(&target.concat());
         decide_poly(property, &d, scale)
@@ -198,13 +198,16 @@ impl<F: Scalar> QuadraticMap<F> {
     pub fn certify_equals(&self, other: &QuadraticMap<F>, property: &str) -> Certificate {
         let a = self.components();
         let b = other.components();
-        let diff: Vec<Poly4<F>> = (0..4).map(|k| a[k].sub(&b[k])).collect();
+        let diff: Vec<MPoly<F>> = (0..4).map(|k| &a[k] - &b[k]).collect();
         let scale = self.magnitude().max(other.magnitude());
-        match diff.iter().position(|d| !d.is_negligible(scale)) {
+        match diff.iter().position(|d| !poly_negligible(d, scale)) {
             None => Certificate::holds(property, F::EXACT),
             Some(k) => Certificate::fails(
                 property,
-                format!("component {k} differs by {}", diff[k].describe(scale)),
+                format!(
+                    "component {k} differs by {}",
+                    poly_describe(&diff[k], scale)
+                ),
                 F::EXACT,
             ),
         }
@@ -224,20 +227,20 @@ impl<F: Scalar> QuadraticMap<F> {
         let co = outer.m.clone();
         let ct = target.components();
         let f = quad_poly(factor);
-        let mut worst: Option<(usize, Poly4<F>)> = None;
+        let mut worst: Option<(usize, MPoly<F>)> = None;
         let scale = outer.magnitude() * inner.magnitude().powi(2) + target.magnitude();
         for k in 0..4 {
-            let mut lhs = Poly4::zero();
+            let mut lhs = MPoly::zero(4);
             for i in 0..4 {
                 for j in 0..4 {
                     if co[k][i][j].is_zero() {
                         continue;
                     }
-                    lhs = lhs.add(&ci[i].mul(&ci[j]).scale(&co[k][i][j]));
+                    lhs = &lhs + &(&ci[i] * &ci[j]).scale(&co[k][i][j]);
                 }
             }
-            let d = lhs.sub(&f.mul(&ct[k]));
-            if !d.is_negligible(scale) && worst.is_none() {
+            let d = &lhs - &(&f * &ct[k]);
+            if !poly_negligible(&d, scale) && worst.is_none() {
                 worst = Some((k, d));
             }
         }
@@ -245,7 +248,7 @@ impl<F: Scalar> QuadraticMap<F> {
             None => Certificate::holds(property, F::EXACT),
             Some((k, d)) => Certificate::fails(
                 property,
-                format!("component {k}: residual {}", d.describe(scale)),
+                format!("component {k}: residual {}", poly_describe(&d, scale)),
                 F::EXACT,
             ),
         }
@@ -296,21 +299,21 @@ impl<F: Scalar> QuadraticMap<F> {
 }
 
 /// The quadratic form `pᵀ M p` as a polynomial.
-fn quad_poly<F: Scalar>(m: &Mat4<F>) -> Poly4<F> {
-    let mut f = Poly4::zero();
+fn quad_poly<F: Scalar>(m: &Mat4<F>) -> MPoly<F> {
+    let mut f = MPoly::zero(4);
     for i in 0..4 {
         for j in 0..4 {
             if !m[i][j].is_zero() {
-                f = f.add(&Poly4::var(i).mul(&Poly4::var(j)).scale(&m[i][j]));
+                f = &f + &(poly_var(i) * poly_var(j)).scale(&m[i][j]);
             }
         }
     }
     f
 }
 
-fn decide_poly<F: Scalar>(property: &str, s: &Poly4<F>, scale: f64) -> Certificate {
-    Certificate::decide(property, s.is_negligible(scale), F::EXACT, || {
-        format!("residual {}", s.describe(scale))
+fn decide_poly<F: Scalar>(property: &str, s: &MPoly<F>, scale: f64) -> Certificate {
+    Certificate::decide(property, poly_negligible(s, scale), F::EXACT, || {
+        format!("residual {}", poly_describe(s, scale))
     })
 }
 
