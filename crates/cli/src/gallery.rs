@@ -35,6 +35,10 @@ pub const RECIPES: &[(&str, &str)] = &[
         include_str!("../../../examples/recipes/ph.toml"),
     ),
     (
+        "examples/recipes/ph_planar.toml",
+        include_str!("../../../examples/recipes/ph_planar.toml"),
+    ),
+    (
         "examples/recipes/canal.toml",
         include_str!("../../../examples/recipes/canal.toml"),
     ),

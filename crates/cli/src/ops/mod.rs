@@ -24,7 +24,7 @@ macro_rules! topics {
     };
 }
 
-topics!(kernel, quadric, ph, canal, pn);
+topics!(kernel, quadric, ph, canal, pn, ph_planar);
 
 pub mod describe;
 

@@ -35,7 +35,11 @@ pub mod frame;
 pub mod helix;
 pub mod hermite;
 pub mod hodograph;
+pub mod planar;
+pub mod planar_hermite;
+pub mod spatial_hermite;
 pub mod speed;
+pub mod spline;
 mod util;
 
 pub use dph::{DphClass, DphData, DphTest, ProportionalityFactors, QuinticDphKind};
@@ -43,7 +47,15 @@ pub use frame::{BendingEnergy, EulerRodriguesFrame, FrenetFrame, RationalFunctio
 pub use helix::{HelixData, HelixTest, LineCircle, LineOrCircle, QuinticHelixKind};
 pub use hermite::{HermiteData, HermiteInterpolant, HermiteSolution};
 pub use hodograph::{solve_qiq, PhCurve, PhPolyCurve};
+pub use planar::{complex_sqrt, PlanarOffset, PlanarPhCurve};
+pub use planar_hermite::{
+    PlanarHermiteData, PlanarHermiteInterpolant, PlanarHermiteResult, PlanarHermiteSolution,
+};
+pub use spatial_hermite::{
+    rotation_from_half_tangent, SpatialHermiteData, SpatialHermiteQuintic, SpatialHermiteResult,
+};
 pub use speed::ArcLengthParameter;
+pub use spline::{PhQuinticSpline, SplineEnds};
 
 use rcagd_algebra::AlgebraError;
 use rcagd_geom::GeomError;

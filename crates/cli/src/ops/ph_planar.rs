@@ -1,0 +1,379 @@
+//! Ops of the `ph_planar` topic (issue 5 part B, `rcagd::ph::{planar, planar_hermite,
+//! spline, spatial_hermite}`): planar PH curves from a complex preimage, their exact
+//! rational offsets, planar PH quintic Hermite interpolants, C2 PH quintic splines and
+//! spatial PH quintic Hermite interpolants.
+//!
+//! Results solved in `f64` (irrational square roots, Newton–Raphson) are stored as the
+//! exact PH curve of the preimage rounded to rationals: its PH certificates are exact,
+//! and the interpolation conditions are checked to a tolerance (reported, `f64`).
+
+use super::{OpArgs, OpError, OpSpec, ParamSpec};
+use crate::model::{Geometry, Object};
+use crate::value::ParamKind;
+use rcagd::ph::{
+    PhCurve, PhQuinticSpline, PlanarHermiteData, PlanarHermiteInterpolant, PlanarHermiteResult,
+    PlanarPhCurve, SpatialHermiteData, SpatialHermiteQuintic, SpatialHermiteResult, SplineEnds,
+};
+use rcagd_algebra::{Certificate, Complex, Quaternion, Rational, Scalar};
+
+/// The ops of this topic.
+pub const OPS: &[OpSpec] = &[
+    PH_PLANAR_CURVE,
+    PH_PLANAR_OFFSET,
+    PH_PLANAR_HERMITE,
+    PH_PLANAR_SPLINE,
+    PH_SPATIAL_HERMITE,
+];
+
+const PREIMAGE: ParamSpec = ParamSpec::required(
+    "preimage",
+    ParamKind::Points,
+    "Bernstein coefficients [re, im] of the complex preimage w(t); the curve has r' = w², degree 2·len − 1",
+);
+const START: ParamSpec =
+    ParamSpec::with_default("start", ParamKind::Point2, "[0, 0]", "start point r(0)");
+
+const PH_PLANAR_CURVE: OpSpec = OpSpec {
+    name: "ph_planar_curve",
+    summary: "a planar PH curve r' = w² from the Bernstein coefficients of a complex polynomial w(t) (exact control points, σ = |w|², arc length)",
+    params: &[PREIMAGE, START],
+    example: r#"[[object]]
+name = "tschirnhausen_cubic"
+op = "ph_planar_curve"
+preimage = [[1, 0], [1, 1]]
+start = [0, 0]
+"#,
+    build: build_curve,
+};
+
+const PH_PLANAR_OFFSET: OpSpec = OpSpec {
+    name: "ph_planar_offset",
+    summary: "the exact rational offset r + d·n (degree 2n − 1) of a planar PH curve given by its complex preimage",
+    params: &[
+        PREIMAGE,
+        START,
+        ParamSpec::required(
+            "distance",
+            ParamKind::Number,
+            "signed offset distance d (positive: to the right of the direction of travel)",
+        ),
+    ],
+    example: r#"[[object]]
+name = "tschirnhausen_offset"
+op = "ph_planar_offset"
+preimage = [[1, 0], [1, 1]]
+distance = "-1/4"
+"#,
+    build: build_offset,
+};
+
+const PH_PLANAR_HERMITE: OpSpec = OpSpec {
+    name: "ph_planar_hermite",
+    summary: "planar PH quintic C1 Hermite interpolants (Farouki–Neff): the best (least absolute rotation index) or all four; exact when the square roots are rational",
+    params: &[
+        ParamSpec::required("p0", ParamKind::Point2, "start point"),
+        ParamSpec::required("d0", ParamKind::Point2, "start derivative r'(0), non-zero"),
+        ParamSpec::required("p1", ParamKind::Point2, "end point, ≠ p0"),
+        ParamSpec::required("d1", ParamKind::Point2, "end derivative r'(1), non-zero"),
+        ParamSpec::with_default(
+            "select",
+            ParamKind::Choice(&["best", "all"]),
+            "\"best\"",
+            "the best interpolant only, or all four",
+        ),
+    ],
+    example: r#"[[object]]
+name = "ph_quintic_hermite"
+op = "ph_planar_hermite"
+p0 = [0, 0]
+d0 = [1, 0]
+p1 = ["2/15", "2/3"]
+d1 = [0, 2]
+select = "all"
+"#,
+    build: build_hermite,
+};
+
+const PH_PLANAR_SPLINE: OpSpec = OpSpec {
+    name: "ph_planar_spline",
+    summary: "a C2 PH quintic spline through points (open with natural or given end derivatives, or closed), by Newton–Raphson; exact PH segments, exact C2 junctions",
+    params: &[
+        ParamSpec::required("points", ParamKind::Points, "the points [x, y] (at least 2; 3 for closed)"),
+        ParamSpec::with_default(
+            "ends",
+            ParamKind::Choice(&["natural", "derivatives", "closed"]),
+            "\"natural\"",
+            "end conditions: r'' = 0 at the ends, given end derivatives d0 and d1, or a closed loop",
+        ),
+        ParamSpec::optional("d0", ParamKind::Point2, "start derivative (ends = \"derivatives\")"),
+        ParamSpec::optional("d1", ParamKind::Point2, "end derivative (ends = \"derivatives\")"),
+    ],
+    example: r#"[[object]]
+name = "ph_spline_wave"
+op = "ph_planar_spline"
+points = [[0, 0], [1, 1], [2, 0], [3, 1], [4, 0]]
+ends = "natural"
+"#,
+    build: build_spline,
+};
+
+const PH_SPATIAL_HERMITE: OpSpec = OpSpec {
+    name: "ph_spatial_hermite",
+    summary: "a spatial PH quintic C1 Hermite interpolant (Farouki–al-Kandari–Sakkalis) with free angles φ0, φ2; exact when the square roots are rational",
+    params: &[
+        ParamSpec::required("p0", ParamKind::Point3, "start point"),
+        ParamSpec::required("d0", ParamKind::Point3, "start derivative, non-zero"),
+        ParamSpec::required("p1", ParamKind::Point3, "end point, ≠ p0"),
+        ParamSpec::required("d1", ParamKind::Point3, "end derivative, non-zero"),
+        ParamSpec::optional(
+            "tau0",
+            ParamKind::Number,
+            "tan(φ0/2) (φ0 = −π/2 is −1); with tau2 selects the member; default: the least bending energy of φ0, φ2 ∈ {−π/2, 0, π/2, π}",
+        ),
+        ParamSpec::optional("tau2", ParamKind::Number, "tan(φ2/2)"),
+    ],
+    example: r#"[[object]]
+name = "spatial_ph_quintic"
+op = "ph_spatial_hermite"
+p0 = [0, 0, 0]
+d0 = [1, 0, 0]
+p1 = ["-1/15", "9/5", "-1/15"]
+d1 = [-1, 2, 2]
+tau0 = 0
+tau2 = 0
+"#,
+    build: build_spatial,
+};
+
+fn point2(v: &[Rational], param: &'static str) -> Result<[Rational; 2], OpError> {
+    <[Rational; 2]>::try_from(v.to_vec())
+        .map_err(|_| OpError::param(param, format!("`{param}` needs points [x, y]")))
+}
+
+fn arg2(args: &OpArgs, param: &'static str) -> Result<[Rational; 2], OpError> {
+    point2(&args.point(param)?, param)
+}
+
+fn arg3(args: &OpArgs, param: &'static str) -> Result<[Rational; 3], OpError> {
+    <[Rational; 3]>::try_from(args.point(param)?)
+        .map_err(|_| OpError::param(param, format!("`{param}` needs a point [x, y, z]")))
+}
+
+fn prefixed(prefix: &str, certs: Vec<Certificate>) -> impl Iterator<Item = Certificate> + '_ {
+    certs.into_iter().map(move |mut c| {
+        c.property = format!("{prefix}{}", c.property);
+        c
+    })
+}
+
+fn planar_curve(args: &OpArgs) -> Result<PlanarPhCurve<Rational>, OpError> {
+    let w = args
+        .points("preimage")?
+        .iter()
+        .map(|p| point2(p, "preimage").map(|[a, b]| Complex::new(a, b)))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(PlanarPhCurve::new(w, arg2(args, "start")?)?)
+}
+
+fn build_curve(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c = planar_curve(args)?;
+    let certs = c.certify();
+    Ok(vec![args.object(Geometry::Curve(c.to_bezier()?), certs)])
+}
+
+fn build_offset(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c = planar_curve(args)?;
+    let off = c.offset(&args.number("distance")?)?;
+    let mut certs: Vec<Certificate> = prefixed("base: ", c.certify()).collect();
+    certs.extend(off.certify());
+    Ok(vec![args.object(Geometry::Curve(off.curve), certs)])
+}
+
+fn rat(x: f64) -> Result<Rational, OpError> {
+    Rational::try_from(x).map_err(|_| OpError::new("non-finite f64 result"))
+}
+
+/// An f64 planar interpolant as the exact PH curve of its rounded preimage.
+fn round_planar(c: &PlanarPhCurve<f64>, p0: &[Rational; 2]) -> Result<PlanarPhCurve<Rational>, OpError> {
+    let w = c
+        .preimage_coefficients()
+        .iter()
+        .map(|z| Ok(Complex::new(rat(z.re)?, rat(z.im)?)))
+        .collect::<Result<Vec<_>, OpError>>()?;
+    Ok(PlanarPhCurve::new(w, p0.clone())?)
+}
+
+/// Hermite conditions of an exact curve checked to a tolerance (the rounded case).
+fn planar_residual_cert(c: &PlanarPhCurve<Rational>, d: &PlanarHermiteData<Rational>) -> Certificate {
+    let z = Rational::from(0);
+    let o = Rational::from(1);
+    let pairs = [
+        (c.eval(&z), &d.p0),
+        (c.derivative_at(&z), &d.d0),
+        (c.eval(&o), &d.p1),
+        (c.derivative_at(&o), &d.d1),
+    ];
+    let mut res = 0.0_f64;
+    let mut scale = 1.0_f64;
+    for (a, b) in &pairs {
+        for k in 0..2 {
+            res = res.max(Scalar::to_f64(&(a[k].clone() - b[k].clone())).abs());
+            scale = scale.max(Scalar::to_f64(&b[k]).abs());
+        }
+    }
+    let tol = 1e-9 * scale;
+    Certificate::decide(
+        format!("Hermite conditions r(0) = p0, r'(0) = d0, r(1) = p1, r'(1) = d1 to {tol:e} (preimage rounded from f64)"),
+        res <= tol,
+        false,
+        || format!("{res:e}"),
+    )
+}
+
+fn build_hermite(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let data = PlanarHermiteData::new(
+        arg2(args, "p0")?,
+        arg2(args, "d0")?,
+        arg2(args, "p1")?,
+        arg2(args, "d1")?,
+    );
+    let all = args.string("select")? == "all";
+    let mut curves = Vec::new();
+    let mut certs = Vec::new();
+    let keep = |best: bool| all || best;
+    match data.solve_auto()? {
+        PlanarHermiteResult::Exact(s) => {
+            for (k, c) in s.interpolants.iter().enumerate() {
+                if !keep(c.best) {
+                    continue;
+                }
+                let tag = tag(k, c);
+                let one = rcagd::ph::PlanarHermiteSolution {
+                    data: s.data.clone(),
+                    interpolants: vec![c.clone()],
+                    exact: true,
+                };
+                certs.extend(prefixed(&tag, one.certify()));
+                curves.push(c.curve.to_bezier()?);
+            }
+        }
+        PlanarHermiteResult::Float(s) => {
+            for (k, c) in s.interpolants.iter().enumerate() {
+                if !keep(c.best) {
+                    continue;
+                }
+                let tag = tag(k, c);
+                let exact = round_planar(&c.curve, &data.p0)?;
+                certs.extend(prefixed(&tag, exact.certify()));
+                certs.push(planar_residual_cert(&exact, &data));
+                curves.push(exact.to_bezier()?);
+            }
+        }
+    }
+    let geometry = if curves.len() == 1 {
+        Geometry::Curve(curves.remove(0))
+    } else {
+        Geometry::Curves(curves)
+    };
+    Ok(vec![args.object(geometry, certs)])
+}
+
+fn tag<F>(k: usize, c: &PlanarHermiteInterpolant<F>) -> String {
+    format!(
+        "interpolant {k} (R = {:.4}, E = {:.4}{}): ",
+        c.absolute_rotation_index,
+        c.bending_energy,
+        if c.best { ", best" } else { "" }
+    )
+}
+
+fn build_spline(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let pts = args
+        .points("points")?
+        .iter()
+        .map(|p| point2(p, "points"))
+        .collect::<Result<Vec<_>, _>>()?;
+    let ends = match args.string("ends")? {
+        "closed" => SplineEnds::Closed,
+        "derivatives" => {
+            let d0 = args
+                .opt_point("d0")?
+                .ok_or_else(|| OpError::param("d0", "ends = \"derivatives\" needs d0"))?;
+            let d1 = args
+                .opt_point("d1")?
+                .ok_or_else(|| OpError::param("d1", "ends = \"derivatives\" needs d1"))?;
+            SplineEnds::Derivatives(point2(&d0, "d0")?, point2(&d1, "d1")?)
+        }
+        _ => SplineEnds::Natural,
+    };
+    let s = PhQuinticSpline::interpolate(&pts, &ends)?;
+    let certs = s.certify();
+    let curves = s
+        .segments
+        .iter()
+        .map(|c| c.to_bezier())
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(vec![args.object(Geometry::Curves(curves), certs)])
+}
+
+fn spatial_float(
+    s: &SpatialHermiteQuintic<f64>,
+    data: &SpatialHermiteData<Rational>,
+) -> Result<(PhCurve<Rational>, Vec<Certificate>), OpError> {
+    let coeffs = s
+        .curve
+        .coefficients()
+        .iter()
+        .map(|a| Ok(Quaternion::new(rat(a.w)?, rat(a.x)?, rat(a.y)?, rat(a.z)?)))
+        .collect::<Result<Vec<_>, OpError>>()?;
+    let curve = PhCurve::new(coeffs, data.p0.clone())?;
+    let exact = SpatialHermiteQuintic {
+        data: data.clone(),
+        rotation0: (Rational::from(1), Rational::from(0)),
+        rotation2: (Rational::from(1), Rational::from(0)),
+        curve: curve.clone(),
+        bending_energy: s.bending_energy,
+    };
+    let res = exact.residual();
+    let scale = [&data.p0, &data.d0, &data.p1, &data.d1]
+        .iter()
+        .flat_map(|v| v.iter().map(|x| Scalar::to_f64(x).abs()))
+        .fold(1.0, f64::max);
+    let tol = 1e-9 * scale;
+    let mut certs = curve.certify();
+    certs.push(Certificate::decide(
+        format!("Hermite conditions to {tol:e} (preimage rounded from f64; bending energy {:.6})", s.bending_energy),
+        res <= tol,
+        false,
+        || format!("{res:e}"),
+    ));
+    Ok((curve, certs))
+}
+
+fn build_spatial(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let data = SpatialHermiteData::new(
+        arg3(args, "p0")?,
+        arg3(args, "d0")?,
+        arg3(args, "p1")?,
+        arg3(args, "d1")?,
+    );
+    let t0 = args.opt_number("tau0")?;
+    let t2 = args.opt_number("tau2")?;
+    let (curve, certs) = match (t0, t2) {
+        (Some(a), Some(b)) => match data.solve_auto(&a, &b)? {
+            SpatialHermiteResult::Exact(s) => {
+                let c = s.certify();
+                (s.curve, c)
+            }
+            SpatialHermiteResult::Float(s) => spatial_float(&s, &data)?,
+        },
+        (None, None) => spatial_float(&data.default_f64()?, &data)?,
+        _ => {
+            return Err(OpError::param(
+                "tau2",
+                "give both tau0 and tau2, or neither (least bending energy default)",
+            ))
+        }
+    };
+    Ok(vec![args.object(Geometry::Curve(curve.to_bezier()?), certs)])
+}
