@@ -24,7 +24,7 @@ macro_rules! topics {
     };
 }
 
-topics!(kernel, quadric, ph, canal, pn, ph_planar);
+topics!(kernel, quadric, ph, ph_planar, canal, pn);
 
 pub mod describe;
 
