@@ -18,10 +18,16 @@ use std::path::Path;
 
 /// The embedded default recipes: (file name, text). Adding a recipe file to the
 /// gallery is one line here.
-pub const RECIPES: &[(&str, &str)] = &[(
-    "examples/recipes/kernel.toml",
-    include_str!("../../../examples/recipes/kernel.toml"),
-)];
+pub const RECIPES: &[(&str, &str)] = &[
+    (
+        "examples/recipes/kernel.toml",
+        include_str!("../../../examples/recipes/kernel.toml"),
+    ),
+    (
+        "examples/recipes/pn.toml",
+        include_str!("../../../examples/recipes/pn.toml"),
+    ),
+];
 
 /// The formats written per gallery object.
 pub const FORMATS: &[OutFormat] = &[
