@@ -42,6 +42,10 @@ pub const RECIPES: &[(&str, &str)] = &[
         "examples/recipes/canal.toml",
         include_str!("../../../examples/recipes/canal.toml"),
     ),
+    (
+        "examples/recipes/pn.toml",
+        include_str!("../../../examples/recipes/pn.toml"),
+    ),
 ];
 
 /// The formats written per gallery object.

@@ -2,10 +2,16 @@
 //!
 //! Two PN surfaces of seed 004 on a parameter rectangle, offset at a rational distance:
 //!
-//! * the PN surface of the cubic graph `F = u³/3 − uv + v²/2 + 1` of the isotropic model
-//!   (Theorem 4.3) on `[−1/2, 1/2]²`, `d = 1/4`;
+//! * the PN surface of the cubic graph `F = u³/3 − uv + v²/2 + 5` of the isotropic model
+//!   (Theorem 4.3) on `[−1/2, 1/2]²`, `d = 1/4` (the gallery surface `pn_cubic_graph`;
+//!   with constant term 1 instead of 5 it has parabolic, i.e. singular, points there);
 //! * the ellipsoid of revolution `(a, b, c) = (4, 4, 1)` of §4.7 (Theorem 4.5 in the
-//!   umbilic frame) on `[1/4, 3/4] × [−1/2, 1/2]`, `d = 1/2`.
+//!   umbilic frame) on `[1/4, 3/4] × [−1/2, 1/2]`, `d = 1/2`;
+//! * the hyperbolic paraboloid `z = xy` as a PN ruled surface (Cor. 4.2) on
+//!   `[1/4, 5/4] × [1/2, 2]`, `d = 1/2`.
+//!
+//! Both the surface and its offset are checked regular on the rectangle (exact Bernstein
+//! signs of `det(x_u, x_v, n)`) before anything is measured.
 //!
 //! The exact offset `x + d n = (X + dKN)/W` is a rational Bézier patch with deviation 0
 //! (certified: `x_d − x ≡ d n`). The approximated offset is what a kernel without PN
@@ -21,8 +27,8 @@
 //! Run: `cargo bench -p rcagd --bench pn_offset -- --warm-up-time 1 --measurement-time 3`
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use rcagd::pn::ruled::EllipsoidPn;
-use rcagd::pn::{Domain, IsotropicSurface, PnSurface};
+use rcagd::pn::ruled::{EllipsoidPn, RuledPn};
+use rcagd::pn::{Domain, IsotropicSurface, PnSurface, RatFn};
 use rcagd::Certified;
 use rcagd_algebra::mpoly::MPoly;
 use rcagd_algebra::{Rational, Scalar};
@@ -48,12 +54,20 @@ fn cases() -> Vec<Case> {
             (vec![3, 0], q(1, 3)),
             (vec![1, 1], q(-1, 1)),
             (vec![0, 2], q(1, 2)),
-            (vec![0, 0], q(1, 1)),
+            (vec![0, 0], q(5, 1)),
         ],
     )
     .expect("2 vars");
     let graph = IsotropicSurface::graph_poly(f).to_pn_surface().expect("pn");
     let ell = EllipsoidPn::new(q(4, 1), q(4, 1), q(1, 1)).expect("rational");
+    let t = MPoly::var(2, 0);
+    let c = |k: i64| RatFn::poly(MPoly::constant(2, q(k, 1)));
+    let hp = RuledPn::new(
+        [RatFn::poly(t.clone()), c(0), c(0)],
+        [c(0), c(1), RatFn::poly(t)],
+        None,
+    )
+    .expect("non-developable");
     vec![
         Case {
             name: "cubic graph (Thm 4.3)",
@@ -65,6 +79,12 @@ fn cases() -> Vec<Case> {
             name: "ellipsoid of revolution (§4.7)",
             surface: ell.surface().clone(),
             domain: Domain::new(q(1, 4), q(3, 4), q(-1, 2), q(1, 2)).expect("rect"),
+            d: q(1, 2),
+        },
+        Case {
+            name: "hyperbolic paraboloid (Cor. 4.2)",
+            surface: hp.surface().clone(),
+            domain: Domain::new(q(1, 4), q(5, 4), q(1, 2), q(2, 1)).expect("rect"),
             d: q(1, 2),
         },
     ]
@@ -257,6 +277,8 @@ fn report() {
     for c in cases() {
         let off = c.surface.offset(c.d.clone());
         assert!(off.all_hold(), "exact offset certified");
+        c.surface.check_regular(&c.domain).expect("regular surface");
+        off.check_regular(&c.domain).expect("regular offset");
         let patch = off.patch(&c.domain).expect("patch");
         let (m, n) = patch.degree();
         let sf = off.surface().map_scalar(Scalar::to_f64);

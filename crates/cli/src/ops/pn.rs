@@ -1,6 +1,1099 @@
-//! Ops of the `pn` topic (being written; see docs/ARCHITECTURE.md).
+//! PN-surface ops (`rcagd::pn`, `rcagd::laguerre`; seed 004 ch. 3–5): PN surfaces from a
+//! function of the isotropic model or from a support function, the §4.4 modeling scheme,
+//! PN ruled surfaces, canal surfaces, surfaces of revolution and ellipsoids, Laguerre
+//! images, planar PH curves from the isotropic model, anticaustics — each with its exact
+//! offsets at every distance of `distances` (one extra object per distance, named
+//! `<name>_offset<k>`).
+//!
+//! Every surface is exported as rational Bézier patches over the parameter rectangle
+//! `domain = [u0, u1, v0, v1]`; it must be regular there (`W ≠ 0`, `x_u × x_v ≠ 0`,
+//! decided exactly by Bernstein signs), and so must every offset: a distance equal to a
+//! principal radius of curvature somewhere on the rectangle is an error on `distances`
+//! that names the parameter point.
 
-use super::OpSpec;
+use super::{OpArgs, OpError, OpSpec, ParamSpec};
+use crate::model::{Geometry, Object};
+use crate::value::ParamKind;
+use rcagd::laguerre::LaguerreMap;
+use rcagd::pn::modeling::{HermiteDatum, PnModel};
+use rcagd::pn::planar::{surface_of_revolution, PnCurve};
+use rcagd::pn::ruled::{CanalPn, CycleFamily, EllipsoidPn, RuledPn};
+use rcagd::pn::support::{anticaustic, anticaustic_certificates, from_support_function};
+use rcagd::pn::{Domain, IsotropicSurface, PnError, PnSurface, RatFn};
+use rcagd::Certified;
+use rcagd_algebra::mpoly::MPoly;
+use rcagd_algebra::rational::format_rational;
+use rcagd_algebra::{Certificate, Rational};
+
+type Q = Rational;
 
 /// The ops of this topic.
-pub const OPS: &[OpSpec] = &[];
+pub const OPS: &[OpSpec] = &[
+    PN_GRAPH,
+    PN_SUPPORT,
+    PN_MODEL,
+    PN_LOFT,
+    PN_RULED,
+    PN_CANAL,
+    PN_REVOLUTION,
+    PN_ELLIPSOID,
+    PN_LAGUERRE,
+    PN_ANTICAUSTIC,
+    PN_PLANAR,
+];
+
+// ---------------------------------------------------------------------------------
+// shared parameters and helpers
+// ---------------------------------------------------------------------------------
+
+const DOMAIN: ParamSpec = ParamSpec::with_default(
+    "domain",
+    ParamKind::Numbers,
+    "[-1, 1, -1, 1]",
+    "parameter rectangle [u0, u1, v0, v1] of the exported patch (u0 < u1, v0 < v1)",
+);
+const DISTANCES: ParamSpec = ParamSpec::optional(
+    "distances",
+    ParamKind::Numbers,
+    "oriented offset distances d (x + d n); one extra object `<name>_offset<k>` per distance",
+);
+const OFFSET: ParamSpec = ParamSpec::optional(
+    "offset",
+    ParamKind::Number,
+    "build the offset x + d n at this oriented distance instead of the input itself (certified as its offset; `distances` stay relative to the input)",
+);
+const COEFFICIENTS: ParamSpec = ParamSpec::required(
+    "coefficients",
+    ParamKind::Grid,
+    "power-basis coefficients c[i][j] of u^i v^j of the numerator of F(u, v)",
+);
+const DENOMINATOR: ParamSpec = ParamSpec::optional(
+    "denominator",
+    ParamKind::Grid,
+    "power-basis coefficients of the denominator of F (default 1)",
+);
+
+/// `Σ c[i][j] u^i v^j`.
+fn poly_from_grid(grid: &[Vec<Q>]) -> Result<MPoly<Q>, OpError> {
+    let mut terms = Vec::new();
+    for (i, row) in grid.iter().enumerate() {
+        for (j, c) in row.iter().enumerate() {
+            if !c.is_zero() {
+                terms.push((vec![exp(i)?, exp(j)?], c.clone()));
+            }
+        }
+    }
+    MPoly::from_terms(2, terms).map_err(|e| OpError::new(e.to_string()))
+}
+
+/// `Σ c[k] t^k` (a polynomial in the first parameter).
+fn poly_from_list(list: &[Q]) -> Result<MPoly<Q>, OpError> {
+    let mut terms = Vec::new();
+    for (k, c) in list.iter().enumerate() {
+        if !c.is_zero() {
+            terms.push((vec![exp(k)?, 0], c.clone()));
+        }
+    }
+    MPoly::from_terms(2, terms).map_err(|e| OpError::new(e.to_string()))
+}
+
+fn exp(k: usize) -> Result<u32, OpError> {
+    u32::try_from(k).map_err(|_| OpError::new("a polynomial degree is too large"))
+}
+
+/// The rational function `numerator/denominator` of two grid parameters.
+fn ratfn(args: &OpArgs, num: &'static str, den: &'static str) -> Result<RatFn<Q>, OpError> {
+    let n = poly_from_grid(&args.opt_grid(num)?.unwrap_or_default())?;
+    let d = match args.opt_grid(den)? {
+        Some(g) => poly_from_grid(&g)?,
+        None => MPoly::constant(2, Q::from(1)),
+    };
+    RatFn::new(n, d).map_err(|e| OpError::param(den, e.to_string()))
+}
+
+/// Three polynomials in `t` from a grid of three rows of power coefficients.
+fn three_polys(args: &OpArgs, param: &'static str) -> Result<[RatFn<Q>; 3], OpError> {
+    let g = args.opt_grid(param)?.unwrap_or_default();
+    if g.len() != 3 {
+        return Err(OpError::param(
+            param,
+            format!(
+                "give three rows (x, y, z) of power coefficients in t, got {} rows",
+                g.len()
+            ),
+        ));
+    }
+    Ok([
+        RatFn::poly(poly_from_list(&g[0])?),
+        RatFn::poly(poly_from_list(&g[1])?),
+        RatFn::poly(poly_from_list(&g[2])?),
+    ])
+}
+
+fn domain(args: &OpArgs) -> Result<Domain<Q>, OpError> {
+    let d = args.opt_numbers("domain")?.unwrap_or_default();
+    if d.len() != 4 {
+        return Err(OpError::param(
+            "domain",
+            format!("give four numbers [u0, u1, v0, v1], got {}", d.len()),
+        ));
+    }
+    Domain::new(d[0].clone(), d[1].clone(), d[2].clone(), d[3].clone())
+        .map_err(|e| OpError::param("domain", e.to_string()))
+}
+
+fn distances(args: &OpArgs) -> Result<Vec<Q>, OpError> {
+    Ok(args.opt_numbers("distances")?.unwrap_or_default())
+}
+
+fn prefixed(prefix: &str, certs: Vec<Certificate>) -> Vec<Certificate> {
+    certs
+        .into_iter()
+        .map(|mut c| {
+            c.property = format!("{prefix}{}", c.property);
+            c
+        })
+        .collect()
+}
+
+/// A construction error, blamed on `param`.
+fn blame(param: &'static str) -> impl Fn(PnError) -> OpError {
+    move |e| OpError::param(param, e.to_string())
+}
+
+/// The object of `surface` on `dom` (certified and checked regular, errors blamed on
+/// `param`) followed by one object per offset distance (errors blamed on `distances`).
+fn surface_objects(
+    args: &OpArgs,
+    surface: &PnSurface<Q>,
+    dom: &Domain<Q>,
+    mut certs: Vec<Certificate>,
+    param: &'static str,
+) -> Result<Vec<Object>, OpError> {
+    certs.extend(surface.certify());
+    certs.push(surface.check_regular(dom).map_err(|e| {
+        OpError::param(
+            param,
+            format!("the input surface is not regular on the domain: {e}"),
+        )
+    })?);
+    let patch = match main_offset(args)? {
+        None => surface.patch(dom).map_err(blame("domain"))?,
+        Some(d) => {
+            let off = surface.offset(d);
+            certs.extend(off.certify());
+            certs.push(off.check_regular(dom).map_err(blame("offset"))?);
+            off.patch(dom).map_err(blame("offset"))?
+        }
+    };
+    let mut out = vec![args.object(Geometry::Patch(patch), certs)];
+    for (k, d) in distances(args)?.into_iter().enumerate() {
+        let off = surface.offset(d.clone());
+        let mut c = off.certify();
+        c.push(off.check_regular(dom).map_err(|e| {
+            OpError::param(
+                "distances",
+                format!("distance {} (entry {k}): {e}", format_rational(&d)),
+            )
+        })?);
+        let patch = off.patch(dom).map_err(blame("distances"))?;
+        out.push(offset_object(args, k, &d, Geometry::Patch(patch), c));
+    }
+    Ok(out)
+}
+
+/// The `offset` parameter, if given and non-zero.
+fn main_offset(args: &OpArgs) -> Result<Option<Q>, OpError> {
+    Ok(args.opt_number("offset")?.filter(|d| !d.is_zero()))
+}
+
+fn offset_object(
+    args: &OpArgs,
+    k: usize,
+    d: &Q,
+    geometry: Geometry,
+    certificates: Vec<Certificate>,
+) -> Object {
+    let mut params = args.params_json();
+    if let Some(m) = params.as_object_mut() {
+        m.insert(
+            "offset_distance".into(),
+            serde_json::Value::String(format_rational(d)),
+        );
+    }
+    Object {
+        name: format!("{}_offset{}", args.name(), k + 1),
+        op: args.op().name.to_string(),
+        params,
+        geometry,
+        certificates,
+    }
+}
+
+// ---------------------------------------------------------------------------------
+// PN surface from a function of the isotropic model (Theorem 4.3/4.4, A4.2)
+// ---------------------------------------------------------------------------------
+
+const PN_GRAPH: OpSpec = OpSpec {
+    name: "pn_graph",
+    summary: "the PN surface Λ⁻¹ of the graph y₃ = F(u, v) of the isotropic model (seed 004 Thm 4.3/4.4, closed formula), with exact offsets (F ↦ F − (d/2)(u² + v² + 1))",
+    params: &[COEFFICIENTS, DENOMINATOR, DOMAIN, OFFSET, DISTANCES],
+    example: r#"[[object]]
+name = "pn_cubic_graph"
+op = "pn_graph"
+# F(u, v) = 1 + v²/2 − u v + u³/3
+coefficients = [[1, 0, "1/2"], [0, -1, 0], [0, 0, 0], ["1/3", 0, 0]]
+domain = [0, "1/2", 0, "1/2"]
+distances = ["1/4", "-1/4"]
+"#,
+    build: build_graph,
+};
+
+fn build_graph(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let f = ratfn(args, "coefficients", "denominator")?;
+    let surface = IsotropicSurface::graph(&f)
+        .to_pn_surface()
+        .map_err(blame("coefficients"))?;
+    surface_objects(args, &surface, &domain(args)?, Vec::new(), "coefficients")
+}
+
+// ---------------------------------------------------------------------------------
+// PN surface from its support function ((4.2))
+// ---------------------------------------------------------------------------------
+
+const PN_SUPPORT: OpSpec = OpSpec {
+    name: "pn_support",
+    summary: "the PN surface with tangent planes h + n·x = 0, n = (2ac, 2bc, a² + b² − c²)/(a² + b² + c²) (seed 004 (4.2); default a = u, b = v, c = 1) and rational support function h, with offsets (h ↦ h − d)",
+    params: &[
+        ParamSpec::required(
+            "support",
+            ParamKind::Grid,
+            "power coefficients c[i][j] of u^i v^j of the numerator of h",
+        ),
+        ParamSpec::optional(
+            "support_denominator",
+            ParamKind::Grid,
+            "power coefficients of the denominator of h (default 1)",
+        ),
+        ParamSpec::optional("a", ParamKind::Grid, "polynomial a(u, v) (default u)"),
+        ParamSpec::optional("b", ParamKind::Grid, "polynomial b(u, v) (default v)"),
+        ParamSpec::optional("c", ParamKind::Grid, "polynomial c(u, v) (default 1)"),
+        DOMAIN,
+        OFFSET,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_from_support"
+op = "pn_support"
+# h(u, v) = 2 + u² v
+support = [[2, 0], [0, 0], [0, 1]]
+domain = [0, "1/2", 0, "1/2"]
+distances = ["1/2"]
+"#,
+    build: build_support,
+};
+
+fn opt_poly(args: &OpArgs, param: &'static str, default: MPoly<Q>) -> Result<MPoly<Q>, OpError> {
+    match args.opt_grid(param)? {
+        Some(g) => poly_from_grid(&g),
+        None => Ok(default),
+    }
+}
+
+fn build_support(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let h = ratfn(args, "support", "support_denominator")?;
+    let a = opt_poly(args, "a", MPoly::var(2, 0))?;
+    let b = opt_poly(args, "b", MPoly::var(2, 1))?;
+    let c = opt_poly(args, "c", MPoly::constant(2, Q::from(1)))?;
+    let surface = from_support_function(a, b, c, &h).map_err(blame("c"))?;
+    surface_objects(args, &surface, &domain(args)?, Vec::new(), "support")
+}
+
+// ---------------------------------------------------------------------------------
+// §4.4 modeling scheme
+// ---------------------------------------------------------------------------------
+
+const PN_MODEL: OpSpec = OpSpec {
+    name: "pn_model",
+    summary: "a G¹ PN surface of parabolic Dupin cyclide pieces interpolating points with unit normals (seed 004 §4.4: Hermite data → gradient data in I³ → C¹ Powell–Sabin quadratic spline → Λ⁻¹), with offsets",
+    params: &[
+        ParamSpec::required("points", ParamKind::Points, "data points A_i [x, y, z]"),
+        ParamSpec::required(
+            "normals",
+            ParamKind::Points,
+            "exact rational unit normals n_i [n1, n2, n3] of the tangent planes (n ≠ (0, 0, 1))",
+        ),
+        ParamSpec::required(
+            "triangles",
+            ParamKind::Points,
+            "triangulation of the isotropic parameter points: index triples [i, j, k] into `points`",
+        ),
+        OFFSET,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_modeled_patch"
+op = "pn_model"
+# data sampled from the PN surface of F = u² + v²/2 at (u, v) = (0,0), (1/2,0), (0,1/2), (1/2,1/2)
+points = [[0, 0, 0], ["-4/5", 0, "-2/5"], [0, "-2/5", "-1/5"], ["-3/4", "-1/4", "-1/2"]]
+normals = [[0, 0, -1], ["4/5", 0, "-3/5"], [0, "4/5", "-3/5"], ["2/3", "2/3", "-1/3"]]
+triangles = [[0, 1, 3], [0, 3, 2]]
+"#,
+    build: build_model,
+};
+
+fn point3(p: &[Q], param: &'static str, i: usize) -> Result<[Q; 3], OpError> {
+    <[Q; 3]>::try_from(p.to_vec()).map_err(|_| {
+        OpError::param(
+            param,
+            format!("entry {i} must have three coordinates, got {}", p.len()),
+        )
+    })
+}
+
+fn model_error(e: PnError) -> OpError {
+    let msg = e.to_string();
+    let param = if msg.contains("triangle") || msg.contains("edge") || msg.contains("index") {
+        "triangles"
+    } else {
+        "normals"
+    };
+    OpError::param(param, msg)
+}
+
+fn build_model(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let points = args.points("points")?;
+    let normals = args.points("normals")?;
+    if points.len() != normals.len() {
+        return Err(OpError::param(
+            "normals",
+            format!(
+                "{} points but {} normals: give one unit normal per point",
+                points.len(),
+                normals.len()
+            ),
+        ));
+    }
+    let mut data = Vec::with_capacity(points.len());
+    for (i, (p, n)) in points.iter().zip(&normals).enumerate() {
+        data.push(
+            HermiteDatum::new(point3(p, "points", i)?, point3(n, "normals", i)?)
+                .map_err(|e| OpError::param("normals", format!("datum {i}: {e}")))?,
+        );
+    }
+    let mut triangles = Vec::new();
+    for (k, t) in args.points("triangles")?.iter().enumerate() {
+        let idx: Option<Vec<usize>> = t
+            .iter()
+            .map(|x| {
+                if x.is_int() {
+                    usize::try_from(x.numerator()).ok()
+                } else {
+                    None
+                }
+            })
+            .collect();
+        match idx.as_deref() {
+            Some([a, b, c]) => triangles.push([*a, *b, *c]),
+            _ => {
+                return Err(OpError::param(
+                    "triangles",
+                    format!("triangle {k} must be three non-negative integer indices"),
+                ))
+            }
+        }
+    }
+    let model = PnModel::interpolate(&data, &triangles).map_err(model_error)?;
+    model_objects(args, &model, "normals")
+}
+
+/// The model's object (with its offsets, one object per distance).
+fn model_objects(
+    args: &OpArgs,
+    model: &PnModel<Q>,
+    param: &'static str,
+) -> Result<Vec<Object>, OpError> {
+    let patches = |m: &PnModel<Q>| -> Result<Vec<_>, OpError> {
+        m.pieces()
+            .iter()
+            .map(|p| p.patch().map_err(|e| OpError::new(e.to_string())))
+            .collect()
+    };
+    let mut certs = model.certify();
+    certs.push(regularity_cert(model, param)?);
+    let main = match main_offset(args)? {
+        None => patches(model)?,
+        Some(d) => {
+            let off = model.offset(d).map_err(blame("offset"))?;
+            certs.extend(prefixed("offset model: ", off.certify()));
+            certs.push(regularity_cert(&off, "offset")?);
+            patches(&off)?
+        }
+    };
+    let mut out = vec![args.object(Geometry::Patches(main), certs)];
+    for (k, d) in distances(args)?.into_iter().enumerate() {
+        let off = model.offset(d.clone()).map_err(blame("distances"))?;
+        let mut c = off.certify();
+        c.push(regularity_cert(&off, "distances").map_err(|e| OpError {
+            message: format!("distance {} (entry {k}): {}", format_rational(&d), e.message),
+            param: e.param,
+        })?);
+        out.push(offset_object(args, k, &d, Geometry::Patches(patches(&off)?), c));
+    }
+    Ok(out)
+}
+
+fn regularity_cert(model: &PnModel<Q>, param: &'static str) -> Result<Certificate, OpError> {
+    model.check_regular().map_err(|e| {
+        OpError::param(
+            param,
+            format!("the modeled surface has a singular point (point regularity is not guaranteed by §4.4): {e}"),
+        )
+    })?;
+    Ok(Certificate::holds(
+        "every cyclide piece is regular on its micro-triangle (W ≠ 0, x_u × x_v ≠ 0)",
+        true,
+    ))
+}
+
+const PN_LOFT: OpSpec = OpSpec {
+    name: "pn_loft",
+    summary: "a G¹ PN surface of parabolic Dupin cyclide pieces between two boundary curves with rational unit normal fields (surface strips), sampled and interpolated by the §4.4 scheme (seed 004), with offsets",
+    params: &[
+        ParamSpec::required(
+            "curve0",
+            ParamKind::Grid,
+            "first boundary curve, homogeneous: four rows (W, X1, X2, X3) of power coefficients in t ∈ [0, 1]",
+        ),
+        ParamSpec::required(
+            "normal0",
+            ParamKind::Grid,
+            "its unit normal field, four rows (N0, N1, N2, N3) with N1² + N2² + N3² = N0²",
+        ),
+        ParamSpec::required("curve1", ParamKind::Grid, "second boundary curve, like `curve0`"),
+        ParamSpec::required("normal1", ParamKind::Grid, "its unit normal field, like `normal0`"),
+        ParamSpec::with_default(
+            "samples",
+            ParamKind::Int,
+            "4",
+            "samples per curve at t = k/(samples − 1), 2 to 32; the strip between is split into triangles",
+        ),
+        OFFSET,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_torus_loft"
+op = "pn_loft"
+# two latitude circles (quarter arcs) of the torus R = 2, r = 1 with the torus normals
+# (cos φ, sin φ) = (4/5, ±3/5): x = (2 + r cos φ)(c, s, 0) + (0, 0, r sin φ), c = (1 − t²)/(1 + t²)
+curve0 = [[1, 0, 1], ["14/5", 0, "-14/5"], [0, "28/5", 0], ["3/5", 0, "3/5"]]
+normal0 = [[1, 0, 1], ["4/5", 0, "-4/5"], [0, "8/5", 0], ["3/5", 0, "3/5"]]
+curve1 = [[1, 0, 1], ["14/5", 0, "-14/5"], [0, "28/5", 0], ["-3/5", 0, "-3/5"]]
+normal1 = [[1, 0, 1], ["4/5", 0, "-4/5"], [0, "8/5", 0], ["-3/5", 0, "-3/5"]]
+samples = 5
+"#,
+    build: build_loft,
+};
+
+/// A surface strip: a curve and its unit normal field, rational functions of `t`.
+type Strip = ([RatFn<Q>; 3], [RatFn<Q>; 3]);
+
+/// A strip `(point, normal)` of rational functions in `t` from two homogeneous grids.
+fn strip(
+    args: &OpArgs,
+    curve: &'static str,
+    normal: &'static str,
+) -> Result<Strip, OpError> {
+    let four = |param: &'static str| -> Result<Vec<MPoly<Q>>, OpError> {
+        let g = args.opt_grid(param)?.unwrap_or_default();
+        if g.len() != 4 {
+            return Err(OpError::param(
+                param,
+                format!("give four rows (weight first) of power coefficients in t, got {}", g.len()),
+            ));
+        }
+        g.iter().map(|r| poly_from_list(r)).collect()
+    };
+    let rat = |v: &[MPoly<Q>], param: &'static str| -> Result<[RatFn<Q>; 3], OpError> {
+        let f = |k: usize| {
+            RatFn::new(v[k].clone(), v[0].clone()).map_err(|e| OpError::param(param, e.to_string()))
+        };
+        Ok([f(1)?, f(2)?, f(3)?])
+    };
+    let c = four(curve)?;
+    let n = four(normal)?;
+    Ok((rat(&c, curve)?, rat(&n, normal)?))
+}
+
+fn build_loft(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let count = args.int("samples")?;
+    let n = usize::try_from(count)
+        .ok()
+        .filter(|n| (2..=32).contains(n))
+        .ok_or_else(|| OpError::param("samples", format!("give 2 to 32 samples, got {count}")))?;
+    let params: Vec<Q> = (0..n)
+        .map(|k| Q::from(k as i64) / Q::from((n - 1) as i64))
+        .collect();
+    let (c0, n0) = strip(args, "curve0", "normal0")?;
+    let (c1, n1) = strip(args, "curve1", "normal1")?;
+    let mut data = HermiteDatum::sample_strip(&c0, &n0, &params).map_err(blame("normal0"))?;
+    data.extend(HermiteDatum::sample_strip(&c1, &n1, &params).map_err(blame("normal1"))?);
+    let mut triangles = Vec::with_capacity(2 * (n - 1));
+    for k in 0..n - 1 {
+        triangles.push([k, k + 1, n + k + 1]);
+        triangles.push([k, n + k + 1, n + k]);
+    }
+    let model = PnModel::interpolate(&data, &triangles)
+        .map_err(|e| OpError::param("normal1", e.to_string()))?;
+    model_objects(args, &model, "normal1")
+}
+
+// ---------------------------------------------------------------------------------
+// ruled surfaces, canal surfaces, surfaces of revolution, ellipsoids
+// ---------------------------------------------------------------------------------
+
+const PN_RULED: OpSpec = OpSpec {
+    name: "pn_ruled",
+    summary: "the PN parametrization of a non-developable ruled surface l(t) + v g(t) (seed 004 Cor. 4.2 via Thm 4.5) with exact rational offsets",
+    params: &[
+        ParamSpec::required(
+            "directrix",
+            ParamKind::Grid,
+            "l(t): three rows (x, y, z) of power coefficients in t",
+        ),
+        ParamSpec::required(
+            "ruling",
+            ParamKind::Grid,
+            "g(t): three rows (x, y, z) of power coefficients in t",
+        ),
+        DOMAIN,
+        OFFSET,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_hyperbolic_paraboloid"
+op = "pn_ruled"
+# l(t) = (t, 0, 0), g(t) = (0, 1, t): z = x y
+directrix = [[0, 1], [0, 0], [0, 0]]
+ruling = [[0, 0], [1, 0], [0, 1]]
+domain = ["1/4", 1, "1/4", 1]
+distances = ["1/4"]
+"#,
+    build: build_ruled,
+};
+
+fn build_ruled(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let l = three_polys(args, "directrix")?;
+    let g = three_polys(args, "ruling")?;
+    let ruled = RuledPn::new(l, g, None).map_err(blame("ruling"))?;
+    // every point on its ruling, tangent planes through both point families (l; 0), (l + g; 0)
+    let mut certs = prefixed("ruled: ", ruled.on_ruling_certificates());
+    certs.extend(prefixed("ruled: ", ruled.envelope().tangency_certificates()));
+    surface_objects(args, ruled.surface(), &domain(args)?, certs, "domain")
+}
+
+const PN_CANAL: OpSpec = OpSpec {
+    name: "pn_canal",
+    summary: "a canal surface with polynomial spine m(t) and radius r(t) as a PN surface (seed 004 Cor. 4.3), with exact offsets (radius r + d)",
+    params: &[
+        ParamSpec::required(
+            "spine",
+            ParamKind::Grid,
+            "m(t): three rows (x, y, z) of power coefficients in t",
+        ),
+        ParamSpec::required(
+            "radius",
+            ParamKind::Numbers,
+            "power coefficients of the signed radius r(t)",
+        ),
+        DOMAIN,
+        OFFSET,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_pipe"
+op = "pn_canal"
+# pipe of radius 1/2 around the parabola (t, t², 0)
+spine = [[0, 1, 0], [0, 0, 1], [0, 0, 0]]
+radius = ["1/2"]
+domain = [0, 1, 0, 1]
+distances = ["1/4"]
+"#,
+    build: build_canal,
+};
+
+fn build_canal(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let m = three_polys(args, "spine")?;
+    let r = poly_from_list(&args.opt_numbers("radius")?.unwrap_or_default())?;
+    let one = MPoly::constant(2, Q::from(1));
+    let fam = CycleFamily::new([m[0].num.clone(), m[1].num.clone(), m[2].num.clone()], r, one)
+        .map_err(blame("spine"))?;
+    let canal = CanalPn::new(fam, None).map_err(blame("radius"))?;
+    let certs = prefixed("canal: ", canal.on_spheres_certificates());
+    surface_objects(args, canal.surface(), &domain(args)?, certs, "domain")
+}
+
+const PN_REVOLUTION: OpSpec = OpSpec {
+    name: "pn_revolution",
+    summary: "the surface of revolution (about the z-axis) of a polynomial PH profile with preimage (u(t), v(t)) — a PN surface whose offsets are the surfaces of revolution of the profile's offsets",
+    params: &[
+        ParamSpec::required(
+            "u",
+            ParamKind::Numbers,
+            "Bernstein coefficients of the preimage u(t) on [0, 1] (hodograph (u² − v², 2uv) in the (ρ, z) half-plane)",
+        ),
+        ParamSpec::required(
+            "v",
+            ParamKind::Numbers,
+            "Bernstein coefficients of v(t), as many as u",
+        ),
+        ParamSpec::with_default(
+            "start",
+            ParamKind::Point2,
+            "[1, 0]",
+            "profile start point (ρ, z)",
+        ),
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[0, 1, 0, 1]",
+            "rectangle [t0, t1, s0, s1]: profile parameter t, rotation parameter s (angle 2 atan s)",
+        ),
+        OFFSET,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_revolution_ph_cubic"
+op = "pn_revolution"
+u = [1, 2]
+v = [1, 0]
+start = [2, 0]
+distances = ["1/2"]
+"#,
+    build: build_revolution,
+};
+
+fn build_revolution(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let u = args.opt_numbers("u")?.unwrap_or_default();
+    let v = args.opt_numbers("v")?.unwrap_or_default();
+    let start = args.point("start")?;
+    let start: [Q; 2] = <[Q; 2]>::try_from(start)
+        .map_err(|_| OpError::param("start", "the start point needs two coordinates"))?;
+    let profile = PnCurve::from_ph_preimage(&u, &v, start).map_err(blame("v"))?;
+    let surface = surface_of_revolution(&profile).map_err(blame("u"))?;
+    let certs = prefixed("profile: ", profile.certify());
+    surface_objects(args, &surface, &domain(args)?, certs, "domain")
+}
+
+const PN_ELLIPSOID: OpSpec = OpSpec {
+    name: "pn_ellipsoid",
+    summary: "the ellipsoid x²/a² + y²/b² + z²/c² = 1 as a PN surface in the umbilic frame of seed 004 §4.7 (envelope of cones of revolution with vertices on the focal hyperbola), with exact rational offsets",
+    params: &[
+        ParamSpec::required("a", ParamKind::Number, "largest semi-axis"),
+        ParamSpec::required("b", ParamKind::Number, "middle semi-axis (a ≥ b ≥ c > 0, a > c)"),
+        ParamSpec::required(
+            "c",
+            ParamKind::Number,
+            "smallest semi-axis; √(b²−c²)·√(a²−b²) and √(ac) must be rational",
+        ),
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[\"1/4\", \"3/4\", -1, 1]",
+            "parameter rectangle [t0, t1, u0, u1] (t = ±1 are poles)",
+        ),
+        OFFSET,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_ellipsoid_4_7"
+op = "pn_ellipsoid"
+# the triaxial ellipsoid of seed §4.7: α = 4, γ = 20/3, μ = 5
+a = "25/3"
+b = 5
+c = 3
+domain = ["1/4", "1/2", 0, "1/2"]
+distances = [1]
+"#,
+    build: build_ellipsoid,
+};
+
+fn build_ellipsoid(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let ell = EllipsoidPn::new(args.number("a")?, args.number("b")?, args.number("c")?)
+        .map_err(blame("c"))?;
+    let mut objs = surface_objects(args, ell.surface(), &domain(args)?, Vec::new(), "domain")?;
+    // the dual quadric identity e0² = nᵀK*n for the base and every offset (with h − d)
+    if let Some(first) = objs.first_mut() {
+        first
+            .certificates
+            .push(ell.dual_quadric_certificate(ell.surface()));
+    }
+    if let (Some(d), Some(first)) = (main_offset(args)?, objs.first_mut()) {
+        let off = ell.surface().offset(d);
+        first
+            .certificates
+            .push(ell.dual_quadric_certificate(off.surface()));
+    }
+    for (k, d) in distances(args)?.into_iter().enumerate() {
+        if let Some(o) = objs.get_mut(k + 1) {
+            let off = ell.surface().offset(d);
+            o.certificates
+                .push(ell.dual_quadric_certificate(off.surface()));
+        }
+    }
+    Ok(objs)
+}
+
+// ---------------------------------------------------------------------------------
+// Laguerre images (Theorem 4.2)
+// ---------------------------------------------------------------------------------
+
+const PN_LAGUERRE: OpSpec = OpSpec {
+    name: "pn_laguerre",
+    summary: "the image of the PN surface of a graph F(u, v) of the isotropic model under the Laguerre map x ↦ λ·B·(x + (t, d)) of the cyclographic model (B a rational Lorentz boost; dilatation d = offset), seed 004 (3.8), Thm 4.2",
+    params: &[
+        COEFFICIENTS,
+        DENOMINATOR,
+        ParamSpec::with_default("scale", ParamKind::Number, "1", "similarity factor λ ≠ 0"),
+        ParamSpec::with_default(
+            "boost_axis",
+            ParamKind::Int,
+            "0",
+            "axis 0, 1 or 2 of the Lorentz boost in the (x_axis, r) plane",
+        ),
+        ParamSpec::with_default(
+            "boost",
+            ParamKind::Number,
+            "0",
+            "boost parameter s (cosh = (1 + s²)/(1 − s²)), s² ≠ 1",
+        ),
+        ParamSpec::with_default(
+            "translation",
+            ParamKind::Point3,
+            "[0, 0, 0]",
+            "translation t of the points",
+        ),
+        ParamSpec::with_default(
+            "dilatation",
+            ParamKind::Number,
+            "0",
+            "dilatation r ↦ r + d (the offset at distance d, E6 sign)",
+        ),
+        DOMAIN,
+        OFFSET,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_boosted_cyclide"
+op = "pn_laguerre"
+# the parabolic Dupin cyclide F = u²/2 − v², boosted (s = 1/3) and dilated by 1/2
+coefficients = [[0, 0, -1], [0, 0, 0], ["1/2", 0, 0]]
+boost_axis = 2
+boost = "1/3"
+dilatation = "1/2"
+domain = [0, "1/2", 0, "1/2"]
+"#,
+    build: build_laguerre,
+};
+
+fn build_laguerre(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let f = ratfn(args, "coefficients", "denominator")?;
+    let base = IsotropicSurface::graph(&f)
+        .to_pn_surface()
+        .map_err(blame("coefficients"))?;
+    let axis = usize::try_from(args.int("boost_axis")?)
+        .map_err(|_| OpError::param("boost_axis", "the boost axis must be 0, 1 or 2"))?;
+    let t = args.point("translation")?;
+    let t: [Q; 3] = <[Q; 3]>::try_from(t)
+        .map_err(|_| OpError::param("translation", "the translation needs three coordinates"))?;
+    let map = LaguerreMap::similarity(args.number("scale")?)
+        .map_err(|e| OpError::param("scale", e.to_string()))?
+        .compose(
+            &LaguerreMap::boost(axis, args.number("boost")?)
+                .map_err(|e| OpError::param("boost", e.to_string()))?,
+        )
+        .compose(&LaguerreMap::translation(t))
+        .compose(&LaguerreMap::dilatation(args.number("dilatation")?));
+    let image = base.laguerre_image(&map).map_err(blame("boost"))?;
+    let certs = prefixed("Laguerre map: ", map.certify());
+    surface_objects(args, &image, &domain(args)?, certs, "domain")
+}
+
+// ---------------------------------------------------------------------------------
+// anticaustic (§3.6, Theorem 4.1, (3.18) corrected)
+// ---------------------------------------------------------------------------------
+
+const PN_ANTICAUSTIC: OpSpec = OpSpec {
+    name: "pn_anticaustic",
+    summary: "the anticaustic of the mirror z = F(u, v) for light parallel to the z-axis (seed 004 §3.6, (3.18) corrected per E8): a PN surface orthogonal to the reflected rays; other levels c give its offsets",
+    params: &[
+        ParamSpec::required(
+            "mirror",
+            ParamKind::Grid,
+            "power coefficients c[i][j] of u^i v^j of the mirror height F(u, v) (polynomial)",
+        ),
+        ParamSpec::with_default(
+            "level",
+            ParamKind::Number,
+            "0",
+            "the level c: the wavefront z = c before reflection",
+        ),
+        DOMAIN,
+        OFFSET,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_anticaustic_cubic_mirror"
+op = "pn_anticaustic"
+# mirror F = u²/3 + u v − v³/5
+mirror = [[0, 0, 0, "-1/5"], [0, 1, 0, 0], ["1/3", 0, 0, 0]]
+level = -1
+domain = [0, "1/2", 0, "1/2"]
+"#,
+    build: build_anticaustic,
+};
+
+fn build_anticaustic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let g = args.opt_grid("mirror")?.unwrap_or_default();
+    let f = poly_from_grid(&g)?;
+    let mirror = [
+        MPoly::constant(2, Q::from(1)),
+        MPoly::var(2, 0),
+        MPoly::var(2, 1),
+        f,
+    ];
+    let c = args.number("level")?;
+    let surface = anticaustic(&mirror, &c).map_err(blame("mirror"))?;
+    let certs = prefixed("anticaustic: ", anticaustic_certificates(&mirror, &surface));
+    surface_objects(args, &surface, &domain(args)?, certs, "mirror")
+}
+
+// ---------------------------------------------------------------------------------
+// planar case: PH curves from the isotropic model of the plane
+// ---------------------------------------------------------------------------------
+
+const PN_PLANAR: OpSpec = OpSpec {
+    name: "pn_planar",
+    summary: "the planar PH curve of the graph y₂ = F(t) of the isotropic model of the plane (x = ((t² − 1)F' − 2tF, 2(F − tF'))/(t² + 1)) with exact rational offsets",
+    params: &[
+        ParamSpec::required(
+            "function",
+            ParamKind::Numbers,
+            "power coefficients of the numerator of F(t)",
+        ),
+        ParamSpec::optional(
+            "denominator",
+            ParamKind::Numbers,
+            "power coefficients of the denominator of F (default 1)",
+        ),
+        ParamSpec::with_default(
+            "interval",
+            ParamKind::Numbers,
+            "[-1, 1]",
+            "parameter interval [t0, t1], t0 < t1",
+        ),
+        OFFSET,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_planar_ph"
+op = "pn_planar"
+# F(t) = 1/2 − 2t + t³
+function = ["1/2", -2, 0, 1]
+interval = [0, "1/2"]
+distances = ["1/10", "-1/10"]
+"#,
+    build: build_planar,
+};
+
+fn build_planar(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let num = poly_from_list(&args.opt_numbers("function")?.unwrap_or_default())?;
+    let den = match args.opt_numbers("denominator")? {
+        Some(d) => poly_from_list(&d)?,
+        None => MPoly::constant(2, Q::from(1)),
+    };
+    let f = RatFn::new(num, den).map_err(blame("denominator"))?;
+    let iv = args.opt_numbers("interval")?.unwrap_or_default();
+    let [t0, t1]: [Q; 2] = <[Q; 2]>::try_from(iv)
+        .map_err(|_| OpError::param("interval", "give two numbers [t0, t1]"))?;
+    let curve = PnCurve::from_graph(&f).map_err(blame("function"))?;
+    let mut certs = curve.certify();
+    certs.push(curve.check_regular(&t0, &t1).map_err(blame("interval"))?);
+    let bez = match main_offset(args)? {
+        None => curve.curve(&t0, &t1).map_err(blame("interval"))?,
+        Some(d) => {
+            let off = curve.offset(d);
+            certs.extend(off.certify());
+            certs.extend(off.offset_certificates(&curve));
+            certs.push(off.check_regular(&t0, &t1).map_err(blame("offset"))?);
+            off.curve(&t0, &t1).map_err(blame("offset"))?
+        }
+    };
+    let mut out = vec![args.object(Geometry::Curve(bez), certs)];
+    for (k, d) in distances(args)?.into_iter().enumerate() {
+        let off = curve.offset(d.clone());
+        let mut c = off.certify();
+        c.extend(off.offset_certificates(&curve));
+        c.push(off.check_regular(&t0, &t1).map_err(|e| {
+            OpError::param(
+                "distances",
+                format!("distance {} (entry {k}): {e}", format_rational(&d)),
+            )
+        })?);
+        let bez = off.curve(&t0, &t1).map_err(blame("interval"))?;
+        out.push(offset_object(args, k, &d, Geometry::Curve(bez), c));
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::value::Value;
+
+    fn q(p: i64, d: i64) -> Q {
+        Q::from(p) / Q::from(d)
+    }
+    fn nums(xs: &[(i64, i64)]) -> Value {
+        Value::Numbers(xs.iter().map(|&(p, d)| q(p, d)).collect())
+    }
+    fn grid(rows: &[&[i64]]) -> Value {
+        Value::Grid(
+            rows.iter()
+                .map(|r| r.iter().map(|&x| Q::from(x)).collect())
+                .collect(),
+        )
+    }
+    fn run(op: &'static OpSpec, values: Vec<(&'static str, Value)>) -> Result<Vec<Object>, OpError> {
+        (op.build)(&OpArgs::new("t", op, values))
+    }
+
+    /// F = u² + v² is the isotropic sphere of the cycle ((0, 0, −1); −1): its offset at
+    /// d = 1 collapses to a point — reported on `distances` with the parameter point;
+    /// d = 1/4 is fine and gives a second object.
+    #[test]
+    fn degenerate_offset_distance_blames_distances() {
+        let base = || {
+            vec![
+                ("coefficients", grid(&[&[0, 0, 1], &[0, 0, 0], &[1, 0, 0]])),
+                ("domain", nums(&[(0, 1), (1, 2), (0, 1), (1, 2)])),
+            ]
+        };
+        let mut ok = base();
+        ok.push(("distances", nums(&[(1, 4)])));
+        let objs = run(&PN_GRAPH, ok).expect("regular offset");
+        assert_eq!(objs.len(), 2);
+        assert_eq!(objs[1].name, "t_offset1");
+        assert!(objs.iter().all(|o| o.certificates.iter().all(|c| c.holds)));
+        let mut bad = base();
+        bad.push(("distances", nums(&[(1, 4), (1, 1)])));
+        let e = run(&PN_GRAPH, bad).expect_err("d = 1 degenerates");
+        assert_eq!(e.param, Some("distances"));
+        assert!(e.message.contains("(0, 0)"), "{}", e.message);
+    }
+
+    /// The planar analogue: F = t² is the circle of radius −1; the offset at d = 1 has a
+    /// cusp (here: collapses), reported on `distances` with the parameter.
+    #[test]
+    fn planar_cusp_blames_distances() {
+        let vals = |d: (i64, i64)| {
+            vec![
+                ("function", nums(&[(0, 1), (0, 1), (1, 1)])),
+                ("interval", nums(&[(-1, 1), (1, 1)])),
+                ("distances", nums(&[d])),
+            ]
+        };
+        assert_eq!(run(&PN_PLANAR, vals((1, 2))).expect("fine").len(), 2);
+        let e = run(&PN_PLANAR, vals((1, 1))).expect_err("cusp");
+        assert_eq!(e.param, Some("distances"));
+        assert!(e.message.contains("t = "), "{}", e.message);
+    }
+
+    /// Data the §4.4 scheme cannot match, a developable ruled surface and a non-regular
+    /// domain are errors located at the right parameter.
+    #[test]
+    fn construction_errors_are_located() {
+        let pt = |x: [(i64, i64); 3]| x.iter().map(|&(p, d)| q(p, d)).collect::<Vec<Q>>();
+        let model = |n0: [(i64, i64); 3]| {
+            vec![
+                (
+                    "points",
+                    Value::Points(vec![
+                        pt([(0, 1), (0, 1), (0, 1)]),
+                        pt([(-4, 5), (0, 1), (-2, 5)]),
+                        pt([(0, 1), (-2, 5), (-1, 5)]),
+                    ]),
+                ),
+                (
+                    "normals",
+                    Value::Points(vec![
+                        pt(n0),
+                        pt([(4, 5), (0, 1), (-3, 5)]),
+                        pt([(0, 1), (4, 5), (-3, 5)]),
+                    ]),
+                ),
+                ("triangles", Value::Points(vec![pt([(0, 1), (1, 1), (2, 1)])])),
+            ]
+        };
+        assert!(run(&PN_MODEL, model([(0, 1), (0, 1), (-1, 1)])).is_ok());
+        let e = run(&PN_MODEL, model([(0, 1), (0, 1), (1, 1)])).expect_err("n = (0,0,1)");
+        assert_eq!(e.param, Some("normals"));
+        let e = run(&PN_MODEL, model([(1, 1), (1, 1), (0, 1)])).expect_err("not unit");
+        assert_eq!(e.param, Some("normals"));
+        // a circular cone l = 0, g = (2t, 1 − t², 1 + t²) is developable
+        let e = run(
+            &PN_RULED,
+            vec![
+                ("directrix", grid(&[&[0], &[0], &[0]])),
+                ("ruling", grid(&[&[0, 2, 0], &[1, 0, -1], &[1, 0, 1]])),
+                ("domain", nums(&[(0, 1), (1, 1), (0, 1), (1, 1)])),
+            ],
+        )
+        .expect_err("developable");
+        assert_eq!(e.param, Some("ruling"));
+        // the cubic graph F = 1 + v²/2 − uv + u³/3 has parabolic (singular) points in
+        // [−1/2, 1/2]²: reported on `coefficients`
+        let e = run(
+            &PN_GRAPH,
+            vec![
+                (
+                    "coefficients",
+                    Value::Grid(vec![
+                        vec![q(1, 1), q(0, 1), q(1, 2)],
+                        vec![q(0, 1), q(-1, 1), q(0, 1)],
+                        vec![q(0, 1); 3],
+                        vec![q(1, 3), q(0, 1), q(0, 1)],
+                    ]),
+                ),
+                ("domain", nums(&[(-1, 2), (1, 2), (-1, 2), (1, 2)])),
+            ],
+        )
+        .expect_err("singular");
+        assert_eq!(e.param, Some("coefficients"));
+        let e = run(
+            &PN_ELLIPSOID,
+            vec![
+                ("a", Value::Number(q(3, 1))),
+                ("b", Value::Number(q(2, 1))),
+                ("c", Value::Number(q(1, 1))),
+                ("domain", nums(&[(1, 4), (3, 4), (-1, 1), (1, 1)])),
+            ],
+        )
+        .expect_err("irrational μ");
+        assert_eq!(e.param, Some("c"));
+        // a loft with too few samples, and a normal field that is not a unit field
+        let row = |xs: &[i64]| xs.iter().map(|&x| Q::from(x)).collect::<Vec<Q>>();
+        let loft = |samples: i64, n3: i64| {
+            vec![
+                ("curve0", Value::Grid(vec![row(&[1]), row(&[0]), row(&[1, 1]), row(&[0])])),
+                ("normal0", Value::Grid(vec![row(&[1]), row(&[0]), row(&[0]), row(&[n3])])),
+                ("curve1", Value::Grid(vec![row(&[1]), row(&[1]), row(&[1, 1]), row(&[0])])),
+                ("normal1", Value::Grid(vec![row(&[1]), row(&[0]), row(&[0]), row(&[-1])])),
+                ("samples", Value::Int(samples)),
+            ]
+        };
+        assert_eq!(run(&PN_LOFT, loft(1, -1)).expect_err("samples").param, Some("samples"));
+        assert_eq!(run(&PN_LOFT, loft(3, 2)).expect_err("not unit").param, Some("normal0"));
+    }
+
+}

@@ -77,6 +77,15 @@ pub enum PnError {
         /// The parameter point (exact for exact scalars).
         at: String,
     },
+    /// A plane curve is singular or undefined at a parameter `t` of its interval (for an
+    /// offset: the distance equals the radius of curvature there).
+    #[error("{what} at t = {at}")]
+    CurveSingular {
+        /// What vanishes.
+        what: String,
+        /// The parameter (exact for exact scalars), or the interval where it lies.
+        at: String,
+    },
     /// The offset at distance `d` is singular at a parameter point: `d` is a principal
     /// radius of curvature there.
     #[error("the offset at distance {distance} degenerates at (u, v) = {at}: {detail}")]

@@ -323,6 +323,64 @@ impl<F: Scalar> PnCurve<F> {
         Ok(BezierCurve::from_coordinate_polys(&polys, deg)?)
     }
 
+    /// Checks that the curve is defined and regular on `[a, b]`: `W ≠ 0` there and the
+    /// tangential speed `λ = (X'W − XW')·(−N₂, N₁)` (with `x' = λ (−n₂, n₁)/(W² N₀)`, since
+    /// `x' ⟂ n`) has no zero. For an offset at distance `d`, a zero of `λ` is a point where
+    /// `d` equals the signed radius of curvature of the base curve (a cusp of the offset).
+    ///
+    /// # Errors
+    /// [`PnError::InvalidInput`] unless `a < b`; [`PnError::CurveSingular`] naming the
+    /// parameter `t` where `W` or `λ` vanishes (or changes sign, or may vanish).
+    pub fn check_regular(&self, a: &F, b: &F) -> Result<Certificate, PnError> {
+        if a >= b {
+            return Err(PnError::InvalidInput("the interval needs a < b".into()));
+        }
+        let dom = super::poly::Domain::new(a.clone(), b.clone(), F::zero(), F::one())?;
+        let [w, x1, x2] = &self.point;
+        let [_, n1, n2] = &self.normal;
+        let check = |p: &MPoly<F>, what: String| -> Result<(), PnError> {
+            use super::poly::Sign;
+            let at = match super::poly::sign_on_domain(p, &dom, 256) {
+                Sign::Positive | Sign::Negative => return Ok(()),
+                Sign::ZeroAt(x) => format_scalar(&x[0]),
+                Sign::Changes(x, y) => format!(
+                    "a point between {} and {} (sign change)",
+                    format_scalar(&x[0]),
+                    format_scalar(&y[0])
+                ),
+                Sign::Undecided(x) => {
+                    format!(
+                        "near {} (possibly; undecided after subdivision)",
+                        format_scalar(&x[0])
+                    )
+                }
+            };
+            Err(PnError::CurveSingular { what, at })
+        };
+        check(w, "W = 0 (point at infinity)".into())?;
+        let wp = w.partial(0);
+        let t1 = &(&x1.partial(0) * w) - &(x1 * &wp);
+        let t2 = &(&x2.partial(0) * w) - &(x2 * &wp);
+        let speed = &(n1 * &t2) - &(n2 * &t1);
+        let what = if self.distance.is_zero() {
+            "x' = 0 (singular point of the curve)".to_string()
+        } else {
+            format!(
+                "the offset at distance {} has a cusp (x'_d = 0: the distance equals the radius of curvature of the base curve)",
+                format_scalar(&self.distance)
+            )
+        };
+        check(&speed, what)?;
+        Ok(Certificate::holds(
+            format!(
+                "planar PH: W ≠ 0 and x' ≠ 0 on [{}, {}] (Bernstein signs)",
+                format_scalar(a),
+                format_scalar(b)
+            ),
+            F::EXACT,
+        ))
+    }
+
     /// The certificates of an offset of `base` at distance `d`: `x_d − x ≡ d n`.
     pub fn offset_certificates(&self, base: &PnCurve<F>) -> Vec<Certificate> {
         let d = self.distance.clone() - base.distance.clone();
