@@ -1205,6 +1205,10 @@ pub fn read_step(text: &str) -> Result<Vec<ImportedObject>, IoError> {
         for it in items {
             c.visit(it, (0, it))?;
         }
+        // File order (entity ids), not traversal order: rcagd writes the geometry of an
+        // object in patch/curve order, and shells visit faces in a different order.
+        c.surfaces.sort_unstable();
+        c.curves.sort_unstable();
         let surfaces = c
             .surfaces
             .iter()
