@@ -289,7 +289,7 @@ weights = [[1, 1, 1], [1, 2, 1], [1, 1, 1]]
 };
 
 /// The homogeneous point `(w, w·p)` of a Euclidean point `p` with weight `w ≠ 0`.
-fn homogenize(p: &[Rational], w: &Rational) -> Vec<Rational> {
+pub(super) fn homogenize(p: &[Rational], w: &Rational) -> Vec<Rational> {
     let mut h = Vec::with_capacity(p.len() + 1);
     h.push(w.clone());
     h.extend(p.iter().map(|x| x * w));
@@ -297,7 +297,7 @@ fn homogenize(p: &[Rational], w: &Rational) -> Vec<Rational> {
 }
 
 /// Homogeneous control points from the `points`/`weights`/`homogeneous` parameters.
-fn homogeneous_points(
+pub(super) fn homogeneous_points(
     points: Vec<Vec<Rational>>,
     weights: Option<Vec<Rational>>,
     homogeneous: bool,

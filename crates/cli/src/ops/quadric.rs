@@ -480,14 +480,6 @@ fn build_interpolate(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     Ok(vec![args.object(geometry, certs)])
 }
 
-/// The homogeneous point `(w, w·p)`.
-fn homogenize(p: &[Rational], w: &Rational) -> Vec<Rational> {
-    let mut h = Vec::with_capacity(p.len() + 1);
-    h.push(w.clone());
-    h.extend(p.iter().map(|x| x * w));
-    h
-}
-
 /// Homogeneous control points in 3-space from points / weights / homogeneous.
 fn control_points(
     points: Vec<Vec<Rational>>,
@@ -508,29 +500,7 @@ fn control_points(
             ),
         ));
     }
-    if homogeneous {
-        if weights.is_some() {
-            return Err(OpError::param(
-                "weights",
-                "give the weights either in `weights` or as the first coordinate of homogeneous points, not both",
-            ));
-        }
-        return Ok(points);
-    }
-    let weights = weights.unwrap_or_else(|| vec![Rational::one(); points.len()]);
-    if weights.len() != points.len() {
-        return Err(OpError::param(
-            "weights",
-            format!("{} control points but {} weights", points.len(), weights.len()),
-        ));
-    }
-    if let Some(i) = weights.iter().position(Zero::is_zero) {
-        return Err(OpError::param(
-            "weights",
-            format!("the weight of {} is zero (use homogeneous = true for points at infinity)", label(i)),
-        ));
-    }
-    Ok(points.iter().zip(&weights).map(|(p, w)| homogenize(p, w)).collect())
+    super::kernel::homogeneous_points(points, weights, homogeneous, label)
 }
 
 fn build_curve_image(args: &OpArgs) -> Result<Vec<Object>, OpError> {
