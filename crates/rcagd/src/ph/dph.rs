@@ -495,115 +495,102 @@ mod tests {
         Rational::from(p) / Rational::from(q)
     }
 
-    /// Regression: a large septic (cancellation in f64 ρ).
-    #[test]
-    fn septic_large_f64_agrees() {
-        let w = [
-            cx(r(-3, 1), r(2, 1)),
-            cx(r(-2, 1), r(4, 1)),
-            cx(r(0, 1), r(0, 1)),
-        ];
+    /// The septic DPH curve of `w`, `h = 1`, `(α₀, α₁, β₀)` and root `which` of the
+    /// z-quadratic (start at the origin): the exact and the `f64` DPH tests both accept it.
+    fn assert_septic_dph_agrees(
+        w: [Complex<Rational>; 3],
+        ab: [Complex<Rational>; 3],
+        which: usize,
+    ) {
         let h = [r(1, 1)];
         let roots = dph_septic_z_roots(&h, &w).unwrap();
+        let [a0, a1, b0] = ab;
         let c = dph_septic(
             &h,
             &w,
-            &cx(r(-3, 1), r(1, 1)),
-            &cx(r(0, 1), r(-1, 1)),
-            &cx(r(0, 1), r(4, 1)),
-            &roots[0],
+            &a0,
+            &a1,
+            &b0,
+            &roots[which],
             [r(0, 1), r(0, 1), r(0, 1)],
         )
         .unwrap();
         let pc = c.to_poly_curve();
         let exact = pc.dph_test().unwrap();
-        let f = pc.to_f64();
-        let approx = f.dph_test().unwrap();
+        let approx = pc.to_f64().dph_test().unwrap();
         assert!(matches!(exact, DphTest::Dph(_)));
         assert!(matches!(approx, DphTest::Dph(_)));
+    }
+
+    /// Regression: a large septic (cancellation in f64 ρ).
+    #[test]
+    fn septic_large_f64_agrees() {
+        assert_septic_dph_agrees(
+            [
+                cx(r(-3, 1), r(2, 1)),
+                cx(r(-2, 1), r(4, 1)),
+                cx(r(0, 1), r(0, 1)),
+            ],
+            [
+                cx(r(-3, 1), r(1, 1)),
+                cx(r(0, 1), r(-1, 1)),
+                cx(r(0, 1), r(4, 1)),
+            ],
+            0,
+        );
     }
 
     /// Regression: f64 DPH test on a septic with `α_1 = β_0 = 0`.
     #[test]
     fn septic_sparse_f64_agrees() {
-        let w = [
-            cx(r(-2, 1), r(-5, 3)),
-            cx(r(1, 1), r(0, 1)),
-            cx(r(4, 1), r(1, 1)),
-        ];
-        let h = [r(1, 1)];
-        let roots = dph_septic_z_roots(&h, &w).unwrap();
-        let c = dph_septic(
-            &h,
-            &w,
-            &cx(r(0, 1), r(-1, 1)),
-            &cx(r(0, 1), r(0, 1)),
-            &cx(r(0, 1), r(0, 1)),
-            &roots[1],
-            [r(0, 1), r(0, 1), r(0, 1)],
-        )
-        .unwrap();
-        let pc = c.to_poly_curve();
-        let exact = pc.dph_test().unwrap();
-        let f = pc.to_f64();
-        let approx = f.dph_test().unwrap();
-        assert!(matches!(exact, DphTest::Dph(_)));
-        assert!(matches!(approx, DphTest::Dph(_)));
+        assert_septic_dph_agrees(
+            [
+                cx(r(-2, 1), r(-5, 3)),
+                cx(r(1, 1), r(0, 1)),
+                cx(r(4, 1), r(1, 1)),
+            ],
+            [
+                cx(r(0, 1), r(-1, 1)),
+                cx(r(0, 1), r(0, 1)),
+                cx(r(0, 1), r(0, 1)),
+            ],
+            1,
+        );
     }
 
     /// Regression: `w = i·(real)` (degenerate overlap, `αβ' − α'β` real).
     #[test]
     fn septic_imaginary_w_f64_agrees() {
-        let w = [
-            cx(r(0, 1), r(1, 2)),
-            cx(r(0, 1), r(2, 1)),
-            cx(r(0, 1), r(2, 1)),
-        ];
-        let h = [r(1, 1)];
-        let roots = dph_septic_z_roots(&h, &w).unwrap();
-        let c = dph_septic(
-            &h,
-            &w,
-            &cx(r(0, 1), r(-1, 3)),
-            &cx(r(0, 1), r(2, 1)),
-            &cx(r(3, 1), r(-1, 1)),
-            &roots[0],
-            [r(0, 1), r(0, 1), r(0, 1)],
-        )
-        .unwrap();
-        let pc = c.to_poly_curve();
-        let exact = pc.dph_test().unwrap();
-        let f = pc.to_f64();
-        let approx = f.dph_test().unwrap();
-        assert!(matches!(exact, DphTest::Dph(_)));
-        assert!(matches!(approx, DphTest::Dph(_)));
+        assert_septic_dph_agrees(
+            [
+                cx(r(0, 1), r(1, 2)),
+                cx(r(0, 1), r(2, 1)),
+                cx(r(0, 1), r(2, 1)),
+            ],
+            [
+                cx(r(0, 1), r(-1, 3)),
+                cx(r(0, 1), r(2, 1)),
+                cx(r(3, 1), r(-1, 1)),
+            ],
+            0,
+        );
     }
 
     /// Regression: `w` with a real root (degenerate overlap); f64 must agree with exact.
     #[test]
     fn septic_with_real_root_of_w_f64_agrees() {
-        let w = [
-            cx(r(0, 1), r(1, 3)),
-            cx(r(2, 1), r(0, 1)),
-            cx(r(0, 1), r(0, 1)),
-        ];
-        let h = [r(1, 1)];
-        let roots = dph_septic_z_roots(&h, &w).unwrap();
-        let c = dph_septic(
-            &h,
-            &w,
-            &cx(r(0, 1), r(-1, 1)),
-            &cx(r(5, 1), r(0, 1)),
-            &cx(r(1, 1), r(0, 1)),
-            &roots[1],
-            [r(0, 1), r(0, 1), r(0, 1)],
-        )
-        .unwrap();
-        let pc = c.to_poly_curve();
-        let exact = pc.dph_test().unwrap();
-        let f = pc.to_f64();
-        let approx = f.dph_test().unwrap();
-        assert!(matches!(exact, DphTest::Dph(_)));
-        assert!(matches!(approx, DphTest::Dph(_)));
+        assert_septic_dph_agrees(
+            [
+                cx(r(0, 1), r(1, 3)),
+                cx(r(2, 1), r(0, 1)),
+                cx(r(0, 1), r(0, 1)),
+            ],
+            [
+                cx(r(0, 1), r(-1, 1)),
+                cx(r(5, 1), r(0, 1)),
+                cx(r(1, 1), r(0, 1)),
+            ],
+            1,
+        );
     }
 }
