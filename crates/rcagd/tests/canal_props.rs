@@ -125,6 +125,49 @@ proptest! {
         }
     }
 
+    /// Krasauskas' reduced pencil (seed 003 §2.4) on random rational families tangent to a
+    /// plane (`r = m₃ + c`, weight `1 + t²`, so `D = P₁² + P₂²` splits over `Q`): a certified
+    /// build whose pencil degree never grows, of bidegree at most `(k + 2·deg(a, b), 2)`, and
+    /// the lowest build is never above either construction alone.
+    #[test]
+    fn krasauskas_pencils(
+        m in proptest::array::uniform3(poly(2)), c in 1i64..4
+    ) {
+        use rcagd::canal::{Construction, Method};
+        let w = Poly::from_ints(&[1, 0, 1]);
+        let r = &m[2] + &w.scale(&q(c));
+        let Ok(spine) = CanalSpine::new(w, m, r) else { return Ok(()); };
+        let build = |method| canal_surface(&spine, &CanalOptions { method, ..CanalOptions::default() });
+        let kras = match build(Method::Krasauskas) {
+            Ok(b) => b,
+            Err(e) => return check_refusal(&spine, &e),
+        };
+        prop_assert!(kras.all_hold(), "{:?}", kras.certify());
+        let s = kras.as_rational().expect("D = P₁² + P₂² splits over Q");
+        let Construction::Krasauskas { initial_degree, reduced_degree, .. } = s.construction() else {
+            return Err(TestCaseError::fail("not a Krasauskas build"));
+        };
+        prop_assert!(reduced_degree <= initial_degree);
+        prop_assert!(s.degree().0 <= spine.degree() + 2 * reduced_degree);
+        prop_assert_eq!(s.degree().1, 2);
+        let pp = build(Method::PeternellPottmann).expect("Peternell–Pottmann builds too");
+        let lowest = build(rcagd::canal::Method::Lowest).expect("lowest");
+        prop_assert!(lowest.degree().0 <= pp.degree().0.min(s.degree().0));
+        // the iso-curve t = 1/2 of the pencil build is the characteristic circle of the
+        // Peternell–Pottmann build (its centre, plane and radius)
+        let t = Rational::from_ratio(1, 2);
+        let Some(pp) = pp.as_rational() else { return Ok(()); };
+        let Ok(circle) = pp.characteristic_circle(&t) else { return Ok(()); };
+        for u in [-2i64, 0, 1, 3] {
+            let Ok(x) = s.eval(&t, &q(u)) else { continue; };
+            let d: Vec<Rational> = (0..3).map(|i| x[i].clone() - circle.center[i].clone()).collect();
+            let d2 = d.iter().fold(q(0), |a, b| a + b.clone() * b.clone());
+            let dn = (0..3).fold(q(0), |a, i| a + d[i].clone() * circle.normal[i].clone());
+            prop_assert_eq!(d2, circle.radius_sq.clone());
+            prop_assert_eq!(dn, q(0));
+        }
+    }
+
     /// Random rational spines (weight `1 + t²`) with constant radius.
     #[test]
     fn rational_spine_pipes(

@@ -898,3 +898,87 @@ fn s004_thm_2_3_canal_from_a_mobius_curve() {
         Err(CanalError::InvalidArgument(_))
     ));
 }
+
+/// Seed 003 §2.4.2 (2.36)/(2.37): Krasauskas' reduced pencil against Peternell–Pottmann and
+/// the bound of Satz 2, on rational circle spines (ring torus, Dupin cyclide) and a rational
+/// quadratic family whose `D` splits over `Q(i)` into two irreducible quadratics.
+#[test]
+fn s003_2_4_krasauskas_reduction() {
+    use rcagd::canal::{Construction, Method};
+    let w = p(&[1, 0, 1]);
+    let cases: Vec<(&str, CanalSpine<Rational>)> = vec![
+        (
+            "torus",
+            CanalSpine::new(
+                w.clone(),
+                [p(&[1, 0, -1]), p(&[0, 2]), p(&[])],
+                w.scale(&r(1, 2)),
+            )
+            .expect("spine"),
+        ),
+        (
+            "dupin",
+            CanalSpine::new(
+                w.clone(),
+                [p(&[5, 0, -5]), p(&[0, 8]), p(&[])],
+                &w.scale(&q(2)) - &p(&[3, 0, -3]),
+            )
+            .expect("spine"),
+        ),
+        (
+            "quadratic",
+            CanalSpine::new(
+                w.clone(),
+                [p(&[3, 1, 3]), p(&[-1, 1, -1]), p(&[2, 0, -1])],
+                p(&[-1, -1, 1]),
+            )
+            .expect("spine"),
+        ),
+    ];
+    // (Peternell–Pottmann, Krasauskas, lowest, bound (2.37)). The bound of Satz 2 is over C:
+    // for "quadratic" D = (t² − (4 + 2i)t − 1)(t² − (4 − 2i)t − 1) its factors are
+    // irreducible over Q(i), the reduction over Q(i) stops at pencil degree 2.
+    let expected = [
+        ((4, 2), (2, 2), (2, 2), (4, 2)),
+        ((4, 2), (2, 2), (2, 2), (4, 2)),
+        ((6, 2), (6, 2), (6, 2), (4, 2)),
+    ];
+    for ((name, spine), want) in cases.into_iter().zip(expected) {
+        let bound = krasauskas_bound(&spine).expect("bound");
+        let mut degs = Vec::new();
+        for method in [
+            Method::PeternellPottmann,
+            Method::Krasauskas,
+            Method::Lowest,
+        ] {
+            let options = CanalOptions {
+                method,
+                ..CanalOptions::default()
+            };
+            let b = match canal_surface(&spine, &options) {
+                Ok(b) => b,
+                Err(e) => panic!("{name} {method:?}: {e}"),
+            };
+            assert!(b.all_hold(), "{name} {method:?}: {:?}", b.certify());
+            let s = b.as_rational().expect("rational");
+            degs.push(b.degree());
+            if method == Method::Krasauskas {
+                let Construction::Krasauskas {
+                    initial_degree,
+                    reduced_degree,
+                    ..
+                } = s.construction()
+                else {
+                    panic!("{name}: not a Krasauskas build");
+                };
+                assert_eq!(initial_degree, 2, "{name}");
+                // (k + 2·deg(a, b), 2) before common factors in t cancel
+                assert!(
+                    b.degree().0 <= 2 * reduced_degree + spine.degree(),
+                    "{name}"
+                );
+            }
+        }
+        assert_eq!((degs[0], degs[1], degs[2], bound.bidegree), want, "{name}");
+    }
+}

@@ -225,8 +225,24 @@ fn degree_cert(s: &CanalSurface<Rational>) -> Certificate {
     let kras = rcagd::canal::krasauskas_bound(s.spine())
         .map(|b| format!("; Krasauskas bound (2.37) for this family: ({}, {}) (erratum 003-E9: an overestimate for polynomial data)", b.bidegree.0, b.bidegree.1))
         .unwrap_or_default();
+    let method = match s.construction() {
+        rcagd::canal::Construction::PeternellPottmann => {
+            "; construction: Peternell–Pottmann".to_string()
+        }
+        rcagd::canal::Construction::Krasauskas {
+            initial_degree,
+            reduced_degree,
+            steps,
+        } => format!("; construction: Krasauskas pencil, degree {initial_degree} reduced to {reduced_degree} in {steps} steps (2.36)"),
+    };
+    let bound = match s.construction() {
+        rcagd::canal::Construction::Krasauskas { reduced_degree, .. } => {
+            2 * reduced_degree + k
+        }
+        rcagd::canal::Construction::PeternellPottmann => bound,
+    };
     Certificate::decide(
-        format!("bidegree (deg_t, deg_u) = ({dt}, {du}) ≤ ({bound}, 2) = (2·deg P + deg k, 2) of the construction (seed 003 §2.1){kras}"),
+        format!("bidegree (deg_t, deg_u) = ({dt}, {du}) ≤ ({bound}, 2) of the construction (seed 003 §2.1, §2.4){kras}{method}"),
         du <= 2 && dt <= bound,
         true,
         || format!("({dt}, {du})"),

@@ -32,10 +32,12 @@
 //! spine: the surface touches every sphere), and the split `g₁² + g₂² ≡ D`.
 //!
 //! **Degree.** The exact builder tries every admissible axis and every choice of Gaussian
-//! factors of `D` (seed 003 (2.35)) and keeps the lowest bidegree; the Krasauskas bound of
-//! seed 003 Satz 2 (2.37) is computed by [`krasauskas_bound`] for comparison — note erratum
-//! 003-E9: as printed it holds for rational `γ` and overestimates for polynomial data
-//! (e.g. `m = (t, t²/2, 0)`, `r = t`: (2.37) gives `(6, 2)`, the construction gives `(4, 2)`).
+//! factors of `D` (seed 003 (2.35)) with this construction and with Krasauskas' reduced
+//! pencil ([`super::krasauskas`], over `Q`), and keeps the lowest bidegree ([`Method`]); the
+//! Krasauskas bound of seed 003 Satz 2 (2.37) is computed by [`krasauskas_bound`] for
+//! comparison — note erratum 003-E9: as printed it holds for rational `γ` and overestimates
+//! for polynomial data (e.g. `m = (t, t²/2, 0)`, `r = t`: (2.37) gives `(6, 2)`, the
+//! construction gives `(4, 2)`).
 //!
 //! **Cyclographic construction for quadratic `k` (003-5, seed 003 §2.3).** For a polynomial
 //! curve `k(p) ∈ R^{3,1}` of degree ≤ 2, `k̇(p) = a + b p` and the condition
@@ -45,6 +47,7 @@
 //! whole envelope (no square root at all) — [`QuadraticCanal`].
 
 use super::bipoly::{patch_of, BiPoly};
+use super::krasauskas;
 use super::sum_of_squares::{sum_of_two_squares_approx, GaussianSplit, SumOfSquares};
 use super::{CanalError, CanalSpine};
 use crate::error::format_scalar;
@@ -111,6 +114,23 @@ pub struct CanalOptions {
     /// If `D < 0` outside `[a, b]`, the family is reparametrized by
     /// `t = (a + b s²)/(1 + s²)` (seed 004 §4.5), which is real for all `s`.
     pub domain: Option<(Rational, Rational)>,
+    /// Which constructions the exact builder may use ([`Method::Lowest`]: every one, the
+    /// lowest bidegree wins).
+    pub method: Method,
+}
+
+/// The constructions [`canal_surface`] may use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Method {
+    /// Try Peternell–Pottmann and Krasauskas' reduced pencil for every axis and split, keep
+    /// the lowest bidegree.
+    #[default]
+    Lowest,
+    /// Only the Peternell–Pottmann construction (seed 003 §2.1).
+    PeternellPottmann,
+    /// Only Krasauskas' reduced pencil (seed 003 §2.4; over `Q` only — a build that needs
+    /// `Q(√d)` falls back to Peternell–Pottmann).
+    Krasauskas,
 }
 
 /// The characteristic circle `K(t) ∩ K̇(t)` at one parameter (seed 003 §2.1).
@@ -134,6 +154,24 @@ pub struct CanalSurface<F> {
     x: [BiPoly<F>; 4],
     reparametrized: Option<(Rational, Rational)>,
     domain: Option<(Rational, Rational)>,
+    construction: Construction,
+}
+
+/// Which construction produced a [`CanalSurface`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Construction {
+    /// Peternell–Pottmann (seed 003 §2.1, (2.10)–(2.17); module docs).
+    #[default]
+    PeternellPottmann,
+    /// Krasauskas' pencil `f_s(a + u b)` reduced by (2.36) ([`super::krasauskas`]).
+    Krasauskas {
+        /// `max(deg a, deg b)` of the first pencil.
+        initial_degree: usize,
+        /// `max(deg a, deg b)` after the reduction.
+        reduced_degree: usize,
+        /// The number of reduction steps.
+        steps: usize,
+    },
 }
 
 fn sq<F: Scalar>(p: &Poly<F>) -> Poly<F> {
@@ -217,6 +255,7 @@ fn build<F: Scalar>(
         x,
         reparametrized: None,
         domain: None,
+        construction: Construction::PeternellPottmann,
     })
 }
 
@@ -279,6 +318,83 @@ fn build_best<F: Scalar>(
     best.ok_or_else(|| {
         last_err.unwrap_or_else(|| CanalError::DegenerateSpine("no admissible axis".into()))
     })
+}
+
+/// Builds `x(t, u)` from Krasauskas' reduced pencil for one axis choice
+/// ([`super::krasauskas`]).
+fn build_krasauskas(
+    spine: &CanalSpine<Rational>,
+    numerators: &[Poly<Rational>; 4],
+    g: &[Poly<Rational>; 2],
+    axis: AxisChoice,
+) -> Result<CanalSurface<Rational>, CanalError> {
+    let pencil = krasauskas::reduced_pencil(numerators, g, axis, &krasauskas::gaussian_factors_of)?;
+    let d = spine.discriminant()?;
+    if krasauskas::has_interior_base_point(&pencil, &d)? {
+        return Err(CanalError::DegenerateSpine(
+            "the reduced Krasauskas pencil collapses a characteristic circle (det(a, b) has a real root where D ≠ 0)".into(),
+        ));
+    }
+    let mut x = krasauskas::envelope_of_pencil(spine, &pencil, axis);
+    reduce(&mut x)?;
+    if x.iter().all(BiPoly::is_zero) {
+        return Err(CanalError::DegenerateSpine(
+            "the Krasauskas pencil gives the zero point".into(),
+        ));
+    }
+    Ok(CanalSurface {
+        spine: spine.clone(),
+        numerators: numerators.clone(),
+        split: g.clone(),
+        axis,
+        x,
+        reparametrized: None,
+        domain: None,
+        construction: Construction::Krasauskas {
+            initial_degree: pencil.initial_degree,
+            reduced_degree: pencil.degree(),
+            steps: pencil.steps,
+        },
+    })
+}
+
+/// [`build_best`] over `Q`, also trying Krasauskas' reduced pencil for every admissible axis.
+fn build_best_rational(
+    spine: &CanalSpine<Rational>,
+    g: &[Poly<Rational>; 2],
+    axis: Option<AxisChoice>,
+    method: Method,
+) -> Result<CanalSurface<Rational>, CanalError> {
+    let pp = match method {
+        Method::Krasauskas => Err(CanalError::DegenerateSpine(
+            "no admissible axis for Krasauskas' pencil".into(),
+        )),
+        _ => build_best(spine, g, axis),
+    };
+    if method == Method::PeternellPottmann {
+        return pp;
+    }
+    let numerators = spine.derivative_numerators()?;
+    let axes: Vec<AxisChoice> = match axis {
+        Some(a) => vec![a],
+        None => AxisChoice::all().to_vec(),
+    };
+    let mut best = pp.as_ref().ok().cloned();
+    for a in axes {
+        if let Ok(s) = build_krasauskas(spine, &numerators, g, a) {
+            let better = match &best {
+                None => true,
+                Some(b) => degree_key(&s) < degree_key(b),
+            };
+            if better {
+                best = Some(s);
+            }
+        }
+    }
+    match best {
+        Some(b) => Ok(b),
+        None => pp,
+    }
 }
 
 fn check_split<F: Scalar>(d: &Poly<F>, g: &[Poly<F>; 2]) -> Result<(), CanalError> {
@@ -460,13 +576,17 @@ pub fn canal_surface(
             }
         };
         let built = match &sos {
-            SumOfSquares::Rational { g1, g2 } => {
-                build_best(&spine, &[g1.clone(), g2.clone()], options.axis).map(|mut s| {
-                    s.reparametrized = reparam.clone();
-                    s.domain = options.domain.clone();
-                    CanalBuild::Rational(s)
-                })
-            }
+            SumOfSquares::Rational { g1, g2 } => build_best_rational(
+                &spine,
+                &[g1.clone(), g2.clone()],
+                options.axis,
+                options.method,
+            )
+            .map(|mut s| {
+                s.reparametrized = reparam.clone();
+                s.domain = options.domain.clone();
+                CanalBuild::Rational(s)
+            }),
             SumOfSquares::Extension { radicand, g1, g2 } => {
                 let se = spine.map_scalar(|x| QuadExt::rational(x.clone()));
                 build_best(&se, &[g1.clone(), g2.clone()], options.axis).map(|mut s| {
@@ -598,6 +718,11 @@ impl<F: Scalar> CanalSurface<F> {
         (&self.split[0], &self.split[1])
     }
 
+    /// The construction that produced the parametrization.
+    pub fn construction(&self) -> Construction {
+        self.construction
+    }
+
     /// The stereographic axis used.
     pub fn axis(&self) -> AxisChoice {
         self.axis
@@ -716,6 +841,7 @@ impl<F: Scalar> CanalSurface<F> {
             x: core::array::from_fn(|k| self.x[k].map_scalar(f)),
             reparametrized: self.reparametrized.clone(),
             domain: self.domain.clone(),
+            construction: self.construction,
         }
     }
 
@@ -746,6 +872,7 @@ impl<F: Scalar> CanalSurface<F> {
             x,
             reparametrized: self.reparametrized.clone(),
             domain: self.domain.clone(),
+            construction: self.construction,
         })
     }
 

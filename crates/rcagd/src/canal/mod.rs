@@ -28,26 +28,26 @@
 //! * [`blend`]: canal-surface blends between two spheres (or a sphere and a plane) with
 //!   prescribed contact circles.
 //!
-//! **Known gap: Krasauskas' degree reduction (seed 003 §2.4 (2.36)).** The pair `(a, b)` of
-//! directrices of the ruled surface of Krasauskas' construction can be reduced by the
-//! operations `(a, b) ≈ (a + ρb, b)` (`ρ ∈ R[t]`, `deg ρb ≤ deg a`) and
-//! `(a, b) ∼ (a/σ, σ̄b)` (`σ ∈ C[t]`, `a = σa'`) to the minimal degree of Satz 2 (2.37).
-//! This reduction is **not implemented**: the library builds the Peternell–Pottmann
-//! parametrization (003-4), tries every stereographic axis and every choice of Gaussian factors
-//! of `D`, keeps the lowest bidegree, and reports the bound (2.37) beside it
-//! ([`krasauskas_bound`]; erratum 003-E9: for polynomial data the bound can exceed what the
-//! construction achieves, e.g. `(6, 2)` against `(4, 2)`). For rational families whose `D`
-//! has conjugate root pairs of high multiplicity the construction can stay above (2.37); the
-//! pieces of Krasauskas' method that are implemented and tested are the quadric
-//! `x₀x₃ − x₁x₂` (2.22), the map `f(U)` and `Φ` (2.28)/(2.29), the gcd recovery (2.32) and the
-//! discriminant identity (2.33) (tests `seed003_examples::s003_2_4_*`, `s003_2_29_*`,
-//! `s003_2_33_*`).
+//! * [`krasauskas`]: Krasauskas' construction (seed 003 §2.4): the circles of normals as
+//!   `f_s(a(t) + u b(t))` of a real pencil in `C²`, reduced by the operations (2.36) (and
+//!   their combination, which also removes collapsed circles). [`canal_surface`] tries it
+//!   beside Peternell–Pottmann for every axis and split ([`Method`]) and keeps the lowest
+//!   bidegree: the ring torus and the Dupin cyclide from rational circle spines come out
+//!   biquadratic `(2, 2)` (Peternell–Pottmann: `(4, 2)`; bound (2.37): `(4, 2)`).
+//!
+//! **Limits of the degree reduction.** The bound of Satz 2 (2.37) ([`krasauskas_bound`]) is
+//! over `C`; the reduction works over the field of the data (`Q(i)`), so when the factors of
+//! `det(a, b)` are irreducible over `Q(i)` of degree > 1 it can stop above the bound (test
+//! `seed003_examples::s003_2_4_krasauskas_reduction`: `(6, 2)` against `(4, 2)`); builds
+//! over `Q(√d)` use Peternell–Pottmann only. Erratum 003-E9: for polynomial data the bound
+//! can be *above* what the constructions reach.
 
 pub mod bipoly;
 pub mod blend;
 pub mod envelope;
 pub mod factor;
 pub mod frame;
+pub mod krasauskas;
 pub mod pipe;
 pub mod sum_of_squares;
 
@@ -59,7 +59,7 @@ pub use blend::{
 pub use envelope::{
     canal_surface, canal_surface_approx, canal_surface_f64, canal_surface_with_split,
     krasauskas_bound, AxisChoice, CanalBuild, CanalOptions, CanalSurface, CharacteristicCircle,
-    KrasauskasBound, Orientation, QuadraticCanal,
+    Construction, KrasauskasBound, Method, Orientation, QuadraticCanal,
 };
 pub use frame::{canal_surface_pole_free, pipe_around_ph_pole_free, pole_free_direction};
 pub use pipe::{pipe_around_ph, pipe_around_ph_poly, pipe_around_planar, pipe_surface};

@@ -1,0 +1,539 @@
+//! Krasauskas' degree reduction of rational canal surfaces (seed 003 §2.4.2, (2.29)–(2.37);
+//! NOTES-000-003 item 003-7 and errata 003-E7, 003-E9).
+//!
+//! **The construction.** The unit normals `q` of the envelope along the characteristic
+//! circle at `t` are the points of the unit sphere in the plane `B(t)ᵀ(1, q) = 0`,
+//! `B = (P₄, P₁, P₂, P₃) ∝ (ṙ, ṁ)` (2.31). Through the map
+//!
+//! ```text
+//! f_s(U₀, U₁) = (|U₀|² + |U₁|², 2 Re U₀Ū₁, 2 Im U₀Ū₁, |U₀|² − |U₁|²)          (2.29)
+//! ```
+//!
+//! `Bᵀ f_s(U) = U* H U` is a Hermitian form with
+//! `H = [[α, β], [β̄, γ]]`, `α = P₄ + σPⱼ`, `γ = P₄ − σPⱼ`, `β = P_a + iP_b` (for the axis
+//! choice `(j, σ)` and the other axes `a, b`, as in [`super::envelope`]) and
+//! `det H = −D`. Every circle of normals is the image `f_s(a(t) + u b(t))`, `u ∈ R ∪ ∞`, of a
+//! real pencil in `C²`: the ruled surface `R(t, u) = a + u b` of seed 003 §2.4.2, and the
+//! envelope is
+//!
+//! ```text
+//! x(t, u) = m(t) + r(t) · (x₁, x₂, x₃)/x₀,   x = f_s(a(t) + u b(t)),   bidegree (k + 2·deg(a, b), 2)
+//! ```
+//!
+//! **A first pencil.** With `w = g₁ + i g₂`, `w w̄ = D` (the split of
+//! [`super::sum_of_squares`]), `U(v) = (−β + w v, α)` is isotropic for `|v| = 1`
+//! (`U*HU = α(|w v|² − D) = 0`); `v = (1 + iu)/(1 − iu)` gives the pencil
+//! `a = (w − β, α)`, `b = i(w + β, −α)` of degree `deg(a, b) ≤ max(deg P)`, with
+//! `det(a, b) = −2iαw`.
+//!
+//! **The reduction (2.36).** The pencil can be changed without changing the circles:
+//! `(a, b) ≈ (a + ρb, b)` for real `ρ ∈ R[t]` (a shift of `u`), `(a, b) ∼ (a/σ, σ̄ b)` for
+//! `σ ∈ C[t]` dividing `a` (the scaling `u ↦ |σ|²u` and division by `σ`), `(a, b) ∼ (a/π, b)`
+//! for a real `π` dividing `a`, and a common factor of all of `a, b` may be divided out
+//! (`f_s(νU) = |ν|² f_s(U)`). The reduction here applies, while they lower
+//! `(max(deg a, deg b), deg a + deg b)`:
+//! 1. `a ← a − r t^{deg a − deg b} b` when the leading coefficient vectors are real
+//!    multiples;
+//! 2. division of `a` by its real content, or by a complex factor `σ` of
+//!    `gcd(a₀, a₁)` with `deg a − deg b ≥ 2 deg σ`;
+//! 3. the combination of both seed operations: for an irreducible factor `σ` of
+//!    `det(a, b)` over the coefficient field (with `i`), a real `ρ` of degree
+//!    `≤ deg a − deg b` with `σ | a + ρb` (a linear system over the field), then
+//!    `(a, b) ← ((a + ρb)/σ, σ̄b)`.
+//!
+//! **What it reaches.** Seed 003 Satz 2 states the degree `(k + n, 2)`,
+//! `n = 2 max(k − 1, 2k − 2 − Σ⌈pᵢ/2⌉)` ([`super::krasauskas_bound`]), over `C`: the
+//! operations may need the roots of `D`. Over the field of the data (`Q(i)`, or
+//! `Q(√d)(i)`), step 3 needs the irreducible factors of `det(a, b)` over that field; when
+//! they are of higher degree the reduction can stop above the bound, and the result says
+//! which degree it reached. Erratum 003-E9: for polynomial data the bound (2.37) itself can
+//! be exceeded by the construction's own degree being lower. The builders of
+//! [`super::canal_surface`] try this construction and the Peternell–Pottmann one for every
+//! axis and split and keep the lowest bidegree (e.g. the ring torus and the Dupin cyclide
+//! from rational circle spines come out biquadratic, `(2, 2)`, where the first pencil gives
+//! `(6, 2)`).
+//!
+//! **Base points.** A real root `t₀` of `det(a, b)` with `D(t₀) ≠ 0` would collapse the
+//! iso-curve `x(t₀, ·)` to a point; a pencil with such a root is rejected
+//! ([`CanalError::DegenerateSpine`]) and the other constructions are used.
+
+use super::bipoly::BiPoly;
+use super::{CanalError, CanalSpine};
+use num_traits::{One, Zero};
+use rcagd_algebra::complex::{conj_poly, re_im_polys};
+use rcagd_algebra::linalg::{solve, Matrix};
+use rcagd_algebra::roots::isolate_real_roots;
+use rcagd_algebra::{Complex, Poly, Rational, Scalar};
+
+type CPoly<F> = Poly<Complex<F>>;
+
+/// A real pencil `a + u b` in `C²` (module docs) and its reduction history.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Pencil<F> {
+    /// `a(t) ∈ C[t]²`.
+    pub a: [CPoly<F>; 2],
+    /// `b(t) ∈ C[t]²`.
+    pub b: [CPoly<F>; 2],
+    /// The degree `max(deg a, deg b)` of the first pencil.
+    pub initial_degree: usize,
+    /// The number of reduction steps applied.
+    pub steps: usize,
+}
+
+fn cdeg<F: Scalar>(v: &[CPoly<F>; 2]) -> Option<usize> {
+    match (v[0].degree(), v[1].degree()) {
+        (None, None) => None,
+        (x, y) => Some(x.unwrap_or(0).max(y.unwrap_or(0))),
+    }
+}
+
+fn deg_or_zero<F: Scalar>(v: &[CPoly<F>; 2]) -> usize {
+    cdeg(v).unwrap_or(0)
+}
+
+fn cpoly<F: Scalar>(p: &Poly<F>) -> CPoly<F> {
+    p.map(|c| Complex::from_real(c.clone()))
+}
+
+fn times_i<F: Scalar>(p: &CPoly<F>) -> CPoly<F> {
+    p.scale(&Complex::i())
+}
+
+impl<F: Scalar> Pencil<F> {
+    /// The first pencil `a = (w − β, α)`, `b = i(w + β, −α)` (module docs).
+    ///
+    /// # Errors
+    /// [`CanalError::DegenerateSpine`] if `α ≡ 0` (choose another axis).
+    pub fn initial(alpha: &Poly<F>, beta: &CPoly<F>, w: &CPoly<F>) -> Result<Self, CanalError> {
+        if alpha.is_zero() {
+            return Err(CanalError::DegenerateSpine(
+                "α = P₄ + σPⱼ ≡ 0 for this axis (Krasauskas pencil)".into(),
+            ));
+        }
+        let al = cpoly(alpha);
+        let a = [w - beta, al.clone()];
+        let b = [times_i(&(w + beta)), times_i(&-&al)];
+        let mut p = Pencil {
+            initial_degree: 0,
+            a,
+            b,
+            steps: 0,
+        };
+        p.initial_degree = p.degree();
+        Ok(p)
+    }
+
+    /// `max(deg a, deg b)`: the surface has bidegree `(k + 2·degree, 2)` before cancellation.
+    pub fn degree(&self) -> usize {
+        deg_or_zero(&self.a).max(deg_or_zero(&self.b))
+    }
+
+    /// `det(a, b) = a₀b₁ − a₁b₀` (the Plücker coordinate `l₀₁` of seed 003 (2.33)).
+    pub fn det(&self) -> CPoly<F> {
+        &(&self.a[0] * &self.b[1]) - &(&self.a[1] * &self.b[0])
+    }
+
+    fn key(&self) -> (usize, usize) {
+        let (da, db) = (deg_or_zero(&self.a), deg_or_zero(&self.b));
+        (da.max(db), da + db)
+    }
+
+    /// Divides all four entries by their common factor (exact scalars).
+    fn remove_content(&mut self) {
+        let g = self
+            .a
+            .iter()
+            .chain(self.b.iter())
+            .fold(CPoly::<F>::zero(), |acc, p| acc.gcd(p));
+        if g.degree().is_some_and(|d| d > 0) {
+            if let (Ok(a0), Ok(a1), Ok(b0), Ok(b1)) = (
+                self.a[0].div_exact(&g),
+                self.a[1].div_exact(&g),
+                self.b[0].div_exact(&g),
+                self.b[1].div_exact(&g),
+            ) {
+                self.a = [a0, a1];
+                self.b = [b0, b1];
+            }
+        }
+    }
+
+    fn swap_if_needed(&mut self) {
+        if deg_or_zero(&self.a) < deg_or_zero(&self.b) {
+            std::mem::swap(&mut self.a, &mut self.b);
+        }
+    }
+
+    /// Step 1: `a ← a − r tᵉ b` if the leading coefficient vectors are real multiples.
+    fn shift_leading(&mut self) -> bool {
+        let (Some(da), Some(db)) = (cdeg(&self.a), cdeg(&self.b)) else {
+            return false;
+        };
+        let la = [self.a[0].coeff(da), self.a[1].coeff(da)];
+        let lb = [self.b[0].coeff(db), self.b[1].coeff(db)];
+        let Some(k) = (0..2).find(|&k| !lb[k].is_zero()) else {
+            return false;
+        };
+        let Some(inv) = lb[k].inverse() else {
+            return false;
+        };
+        let r = la[k].clone() * inv;
+        if !r.im.is_zero() || r.re.is_zero() {
+            return false;
+        }
+        if (0..2).any(|i| la[i] != lb[i].clone() * r.clone()) {
+            return false;
+        }
+        let m = Poly::monomial(r, da - db);
+        let new = [
+            &self.a[0] - &(&m * &self.b[0]),
+            &self.a[1] - &(&m * &self.b[1]),
+        ];
+        self.a = new;
+        true
+    }
+
+    /// Step 2: divide `a` by its real content or by a complex factor of it.
+    fn divide_a(&mut self) -> bool {
+        let g = self.a[0].gcd(&self.a[1]);
+        if g.degree().is_none_or(|d| d == 0) {
+            return false;
+        }
+        let real = g.gcd(&conj_poly(&g));
+        let (da, db) = (deg_or_zero(&self.a), deg_or_zero(&self.b));
+        if real.degree().is_some_and(|d| d > 0) {
+            if let (Ok(a0), Ok(a1)) = (self.a[0].div_exact(&real), self.a[1].div_exact(&real)) {
+                self.a = [a0, a1];
+                return true;
+            }
+            return false;
+        }
+        let d = g.degree().unwrap_or(0);
+        if da < db + 2 * d {
+            return false;
+        }
+        self.divide_by(&g, None)
+    }
+
+    /// `(a, b) ← ((a + ρb)/σ, σ̄b)`.
+    fn divide_by(&mut self, sigma: &CPoly<F>, rho: Option<&CPoly<F>>) -> bool {
+        let num = match rho {
+            Some(r) => [
+                &self.a[0] + &(r * &self.b[0]),
+                &self.a[1] + &(r * &self.b[1]),
+            ],
+            None => self.a.clone(),
+        };
+        let (Ok(a0), Ok(a1)) = (num[0].div_exact(sigma), num[1].div_exact(sigma)) else {
+            return false;
+        };
+        let sc = conj_poly(sigma);
+        self.b = [&sc * &self.b[0], &sc * &self.b[1]];
+        self.a = [a0, a1];
+        true
+    }
+
+    /// Step 3 for one irreducible factor `σ` of `det(a, b)` (module docs). For a real `σ`
+    /// (a real root of `det`: a collapsed circle of the pencil) `ρ` has degree `< deg σ`,
+    /// `b` is kept and the step is always taken (it lowers `deg det`); for a complex `σ` it is
+    /// taken when it lowers the degree.
+    fn shift_and_divide(&mut self, sigma: &CPoly<F>) -> bool {
+        let (da, db) = (deg_or_zero(&self.a), deg_or_zero(&self.b));
+        let Some(ds) = sigma.degree() else {
+            return false;
+        };
+        let real = sigma == &conj_poly(sigma);
+        if ds == 0 || (!real && da < db + 2 * ds) {
+            return false;
+        }
+        let e = if real { ds - 1 } else { da - db };
+        // unknowns ρ₀..ρₑ (real); equations: Re and Im of the coefficients of
+        // (a_k + ρ b_k) mod σ, k = 0, 1
+        let rem = |p: &CPoly<F>| p.div_rem(sigma).map(|(_, r)| r);
+        let mut rows: Vec<Vec<F>> = Vec::new();
+        let mut rhs: Vec<F> = Vec::new();
+        let mut cols: Vec<[CPoly<F>; 2]> = Vec::new();
+        for i in 0..=e {
+            let ti = Poly::monomial(Complex::one(), i);
+            let (Ok(r0), Ok(r1)) = (rem(&(&ti * &self.b[0])), rem(&(&ti * &self.b[1]))) else {
+                return false;
+            };
+            cols.push([r0, r1]);
+        }
+        for k in 0..2 {
+            let Ok(ak) = rem(&self.a[k]) else {
+                return false;
+            };
+            for c in 0..ds {
+                let (re_row, im_row): (Vec<F>, Vec<F>) = cols
+                    .iter()
+                    .map(|col| {
+                        let z = col[k].coeff(c);
+                        (z.re, z.im)
+                    })
+                    .unzip();
+                let z = ak.coeff(c);
+                rows.push(re_row);
+                rhs.push(-z.re);
+                rows.push(im_row);
+                rhs.push(-z.im);
+            }
+        }
+        let Ok(m) = Matrix::from_rows(rows) else {
+            return false;
+        };
+        let Ok(sol) = solve(&m, &rhs) else {
+            return false;
+        };
+        let Some(rho) = sol.particular() else {
+            return false;
+        };
+        let rho = Poly::new(rho.iter().map(|x| Complex::from_real(x.clone())).collect());
+        if real {
+            let num = [
+                &self.a[0] + &(&rho * &self.b[0]),
+                &self.a[1] + &(&rho * &self.b[1]),
+            ];
+            return match (num[0].div_exact(sigma), num[1].div_exact(sigma)) {
+                (Ok(a0), Ok(a1)) => {
+                    self.a = [a0, a1];
+                    true
+                }
+                _ => false,
+            };
+        }
+        let before = self.key();
+        let saved = self.clone();
+        if !self.divide_by(sigma, Some(&rho)) {
+            *self = saved;
+            return false;
+        }
+        if self.key() >= before {
+            *self = saved;
+            return false;
+        }
+        true
+    }
+
+    /// Applies the reduction steps (module docs) while they lower the degree;
+    /// `factors(l)` returns irreducible factors of `l = det(a, b)` over the coefficient field
+    /// (an empty list disables step 3).
+    pub fn reduce(&mut self, factors: &dyn Fn(&CPoly<F>) -> Vec<CPoly<F>>) {
+        if !F::EXACT {
+            return;
+        }
+        self.remove_content();
+        let cap = 4 * (self.degree() + 2) + 16;
+        for _ in 0..cap {
+            self.swap_if_needed();
+            if self.shift_leading() || self.divide_a() {
+                self.steps += 1;
+                self.remove_content();
+                continue;
+            }
+            let l = self.det();
+            let mut done = false;
+            let mut fs = factors(&l);
+            fs.sort_by_key(|f| f.degree().unwrap_or(0));
+            for f in &fs {
+                if self.shift_and_divide(f) {
+                    done = true;
+                    break;
+                }
+                if f == &conj_poly(f) {
+                    // a real factor: the shift may have to go the other way
+                    std::mem::swap(&mut self.a, &mut self.b);
+                    if self.shift_and_divide(f) {
+                        done = true;
+                        break;
+                    }
+                    std::mem::swap(&mut self.a, &mut self.b);
+                }
+            }
+            if !done {
+                break;
+            }
+            self.steps += 1;
+            self.remove_content();
+        }
+        self.swap_if_needed();
+    }
+
+    /// The homogeneous point `f_s(a + u b)` as four polynomials in `(t, u)` of degree 2 in
+    /// `u` (2.29), in the order `(x₀, Re-part, Im-part, difference)`.
+    pub fn sphere_image(&self) -> [BiPoly<F>; 4] {
+        let two = F::from_i64(2);
+        let herm = |p: &CPoly<F>, q: &CPoly<F>| &p.clone() * &conj_poly(q);
+        let [a0, a1] = &self.a;
+        let [b0, b1] = &self.b;
+        // |U0|² and |U1|² as (1, u, u²) coefficient triples, U = a + u b
+        let sq = |a: &CPoly<F>, b: &CPoly<F>| -> [Poly<F>; 3] {
+            let aa = re_im_polys(&herm(a, a)).0;
+            let ab = re_im_polys(&herm(a, b)).0.scale(&two);
+            let bb = re_im_polys(&herm(b, b)).0;
+            [aa, ab, bb]
+        };
+        let n0 = sq(a0, b0);
+        let n1 = sq(a1, b1);
+        // z = U0 Ū1 = a0ā1 + u(a0b̄1 + b0ā1) + u² b0b̄1
+        let z = [herm(a0, a1), &herm(a0, b1) + &herm(b0, a1), herm(b0, b1)];
+        let zr: Vec<Poly<F>> = z.iter().map(|c| re_im_polys(c).0.scale(&two)).collect();
+        let zi: Vec<Poly<F>> = z.iter().map(|c| re_im_polys(c).1.scale(&two)).collect();
+        let sum: Vec<Poly<F>> = (0..3).map(|i| &n0[i] + &n1[i]).collect();
+        let diff: Vec<Poly<F>> = (0..3).map(|i| &n0[i] - &n1[i]).collect();
+        [
+            BiPoly::new(sum),
+            BiPoly::new(zr),
+            BiPoly::new(zi),
+            BiPoly::new(diff),
+        ]
+    }
+}
+
+/// `true` if `det(a, b)` has a real root where `D ≠ 0` (a collapsed iso-curve).
+///
+/// # Errors
+/// From real-root isolation.
+pub(crate) fn has_interior_base_point(
+    pencil: &Pencil<Rational>,
+    d: &Poly<Rational>,
+) -> Result<bool, CanalError> {
+    let l = pencil.det();
+    let (re, im) = re_im_polys(&l);
+    let mut g = re.gcd(&im);
+    if g.is_zero() {
+        return Ok(true);
+    }
+    // remove the factors shared with D
+    loop {
+        let c = g.gcd(d);
+        if c.degree().is_none_or(|k| k == 0) {
+            break;
+        }
+        match g.div_exact(&c) {
+            Ok(q) => g = q,
+            Err(_) => break,
+        }
+    }
+    if g.degree().is_none_or(|k| k == 0) {
+        return Ok(false);
+    }
+    Ok(!isolate_real_roots(&g)?.is_empty())
+}
+
+/// The Krasauskas pencil of a spine for one axis and split (module docs), reduced.
+///
+/// # Errors
+/// [`CanalError::DegenerateSpine`] if `α ≡ 0` for this axis.
+pub(crate) fn reduced_pencil<F: Scalar>(
+    numerators: &[Poly<F>; 4],
+    g: &[Poly<F>; 2],
+    axis: super::AxisChoice,
+    factors: &dyn Fn(&CPoly<F>) -> Vec<CPoly<F>>,
+) -> Result<Pencil<F>, CanalError> {
+    let p = numerators;
+    let j = axis.axis.min(2);
+    let others: Vec<usize> = (0..3).filter(|&i| i != j).collect();
+    let (ia, ib) = (others[0], others[1]);
+    let pj = if axis.positive { p[j].clone() } else { -&p[j] };
+    let alpha = &p[3] + &pj;
+    let beta = &cpoly(&p[ia]) + &times_i(&cpoly(&p[ib]));
+    let w = &cpoly(&g[0]) + &times_i(&cpoly(&g[1]));
+    let mut pencil = Pencil::initial(&alpha, &beta, &w)?;
+    pencil.reduce(factors);
+    Ok(pencil)
+}
+
+/// The homogeneous envelope `X = (W x₀, M x₀ + R (x₁, x₂, x₃))` of a pencil for an axis
+/// choice: the unit normal `q = (x_a, x_b, σ x_j)/x₀` in the frame `(a, b, j)`.
+pub(crate) fn envelope_of_pencil<F: Scalar>(
+    spine: &CanalSpine<F>,
+    pencil: &Pencil<F>,
+    axis: super::AxisChoice,
+) -> [BiPoly<F>; 4] {
+    let j = axis.axis.min(2);
+    let others: Vec<usize> = (0..3).filter(|&i| i != j).collect();
+    let [x0, xr, xi, xd] = pencil.sphere_image();
+    let mut q: [BiPoly<F>; 3] = [BiPoly::zero(), BiPoly::zero(), BiPoly::zero()];
+    q[others[0]] = xr;
+    q[others[1]] = xi;
+    q[j] = if axis.positive { xd } else { xd.neg() };
+    let w = spine.weight();
+    let m = spine.center_polys();
+    let r = spine.radius_poly();
+    [
+        x0.mul_t(w),
+        x0.mul_t(&m[0]).add(&q[0].mul_t(r)),
+        x0.mul_t(&m[1]).add(&q[1].mul_t(r)),
+        x0.mul_t(&m[2]).add(&q[2].mul_t(r)),
+    ]
+}
+
+/// Irreducible factors over `Q(i)` of a Gaussian polynomial `l` (through the norm `l l̄`),
+/// those that divide `l`; empty if the factorization gives up.
+pub(crate) fn gaussian_factors_of(l: &CPoly<Rational>) -> Vec<CPoly<Rational>> {
+    use rcagd_algebra::complex::norm_sq_poly;
+    use rcagd_algebra::roots::square_free_decomposition;
+    let n = norm_sq_poly(l);
+    if n.degree().is_none_or(|d| d == 0) {
+        return Vec::new();
+    }
+    let mut out: Vec<CPoly<Rational>> = Vec::new();
+    for (f, _) in square_free_decomposition(&n) {
+        let Ok(fs) = super::factor::factor_gaussian(&f) else {
+            continue;
+        };
+        for h in fs {
+            if l.div_rem(&h).is_ok_and(|(_, r)| r.is_zero()) && !out.contains(&h) {
+                out.push(h);
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::canal::AxisChoice;
+
+    #[test]
+    fn pencil_is_isotropic_and_reduces() {
+        // ring torus: circle spine (1 − t², 2t, 0)/(1 + t²), r = 1/2
+        let w = Poly::from_ints(&[1, 0, 1]);
+        let m = [
+            Poly::from_ints(&[1, 0, -1]),
+            Poly::from_ints(&[0, 2]),
+            Poly::zero(),
+        ];
+        let r = w.scale(&Rational::from_ratio(1, 2));
+        let spine = CanalSpine::new(w, m, r).expect("spine");
+        let p = spine.derivative_numerators().expect("P");
+        let d = spine.discriminant().expect("D");
+        // P = (−4t, 2 − 2t², 0, 0), D = 4(1 + t²)²: w = 2(1 + t²)
+        assert_eq!(d, Poly::from_ints(&[4, 0, 8, 0, 4]));
+        let g = [Poly::from_ints(&[2, 0, 2]), Poly::zero()];
+        let axis = AxisChoice {
+            axis: 0,
+            positive: true,
+        };
+        let pencil = reduced_pencil(&p, &g, axis, &gaussian_factors_of).expect("pencil");
+        assert!(pencil.degree() < pencil.initial_degree || pencil.degree() <= 1);
+        // Bᵀ f_s ≡ 0
+        let s = pencil.sphere_image();
+        let j = 0;
+        let (ia, ib) = (1, 2);
+        let b0 = &p[3];
+        let plane = s[0]
+            .mul_t(b0)
+            .add(&s[1].mul_t(&p[ia]))
+            .add(&s[2].mul_t(&p[ib]))
+            .add(&s[3].mul_t(&p[j]));
+        assert!(plane.is_zero());
+        // sphere identity: x0² = xr² + xi² + xd²
+        let lhs = s[0].mul(&s[0]);
+        let rhs = s[1].mul(&s[1]).add(&s[2].mul(&s[2])).add(&s[3].mul(&s[3]));
+        assert!(lhs.sub(&rhs).is_zero());
+        assert!(!has_interior_base_point(&pencil, &d).expect("roots"));
+    }
+}
