@@ -327,8 +327,11 @@ fn build_krasauskas(
     numerators: &[Poly<Rational>; 4],
     g: &[Poly<Rational>; 2],
     axis: AxisChoice,
+    balance_at: &Rational,
 ) -> Result<CanalSurface<Rational>, CanalError> {
-    let pencil = krasauskas::reduced_pencil(numerators, g, axis, &krasauskas::gaussian_factors_of)?;
+    let mut pencil =
+        krasauskas::reduced_pencil(numerators, g, axis, &krasauskas::gaussian_factors_of)?;
+    pencil.balance_at(balance_at);
     let d = spine.discriminant()?;
     if krasauskas::has_interior_base_point(&pencil, &d)? {
         return Err(CanalError::DegenerateSpine(
@@ -364,6 +367,7 @@ fn build_best_rational(
     g: &[Poly<Rational>; 2],
     axis: Option<AxisChoice>,
     method: Method,
+    balance_at: &Rational,
 ) -> Result<CanalSurface<Rational>, CanalError> {
     let pp = match method {
         Method::Krasauskas => Err(CanalError::DegenerateSpine(
@@ -381,7 +385,7 @@ fn build_best_rational(
     };
     let mut best = pp.as_ref().ok().cloned();
     for a in axes {
-        if let Ok(s) = build_krasauskas(spine, &numerators, g, a) {
+        if let Ok(s) = build_krasauskas(spine, &numerators, g, a, balance_at) {
             let better = match &best {
                 None => true,
                 Some(b) => degree_key(&s) < degree_key(b),
@@ -533,18 +537,14 @@ fn reparametrize<F: Scalar>(spine: &CanalSpine<F>, a: &F, b: &F) -> CanalSpine<F
     }
 }
 
-/// The canal surface of a rational family, exactly: over `Q` when `D` is a sum of two
-/// rational squares, otherwise over the quadratic field it needs (said in the result),
-/// otherwise an error — never silently in `f64` (module docs, [`super::sum_of_squares`]).
-///
-/// # Errors
-/// [`CanalError::NoRealEnvelope`] naming the interval where `|ṁ| < |ṙ|` (on the domain, or
-/// on `R` without one); [`CanalError::DegenerateSpine`]; [`CanalError::NeedsLargerExtension`];
-/// [`CanalError::Factorization`].
-pub fn canal_surface(
+/// The family oriented per `options`, checked for a real envelope on the domain (or on `R`),
+/// and reparametrized by `t = (a + b s²)/(1 + s²)` when `D < 0` outside the domain `[a, b]`
+/// (then `Some((a, b))` is returned beside it).
+#[allow(clippy::type_complexity)]
+fn oriented_on_domain(
     spine: &CanalSpine<Rational>,
     options: &CanalOptions,
-) -> Result<CanalBuild, CanalError> {
+) -> Result<(CanalSpine<Rational>, Option<(Rational, Rational)>), CanalError> {
     let mut spine = match options.orientation {
         Orientation::Positive => spine.clone(),
         Orientation::Negative => spine.reversed(),
@@ -559,8 +559,30 @@ pub fn canal_surface(
     } else {
         spine.check_real_envelope(None)?;
     }
+    Ok((spine, reparam))
+}
+
+/// The canal surface of a rational family, exactly: over `Q` when `D` is a sum of two
+/// rational squares, otherwise over the quadratic field it needs (said in the result),
+/// otherwise an error — never silently in `f64` (module docs, [`super::sum_of_squares`]).
+///
+/// # Errors
+/// [`CanalError::NoRealEnvelope`] naming the interval where `|ṁ| < |ṙ|` (on the domain, or
+/// on `R` without one); [`CanalError::DegenerateSpine`]; [`CanalError::NeedsLargerExtension`];
+/// [`CanalError::Factorization`].
+pub fn canal_surface(
+    spine: &CanalSpine<Rational>,
+    options: &CanalOptions,
+) -> Result<CanalBuild, CanalError> {
+    let (spine, reparam) = oriented_on_domain(spine, options)?;
     let d = spine.discriminant()?;
     let split = GaussianSplit::new(&d)?;
+    // the Krasauskas pencil is balanced at the middle of the domain (s = 0 after the
+    // reparametrization of a domain, t = 0 without one)
+    let mid = match (&options.domain, &reparam) {
+        (Some((a, b)), None) => (a.clone() + b.clone()) / Rational::from(2),
+        _ => Rational::ZERO,
+    };
     let choices: Vec<usize> = match options.choice {
         Some(c) => vec![c],
         None => (0..split.num_choices().min(16)).collect(),
@@ -581,6 +603,7 @@ pub fn canal_surface(
                 &[g1.clone(), g2.clone()],
                 options.axis,
                 options.method,
+                &mid,
             )
             .map(|mut s| {
                 s.reparametrized = reparam.clone();
@@ -632,20 +655,7 @@ pub fn canal_surface_approx(
     spine: &CanalSpine<Rational>,
     options: &CanalOptions,
 ) -> Result<CanalSurface<f64>, CanalError> {
-    let mut spine = match options.orientation {
-        Orientation::Positive => spine.clone(),
-        Orientation::Negative => spine.reversed(),
-    };
-    let mut reparam = None;
-    if let Some((a, b)) = &options.domain {
-        spine.check_real_envelope(Some((a, b)))?;
-        if spine.check_real_envelope(None).is_err() {
-            spine = reparametrize(&spine, a, b);
-            reparam = Some((a.clone(), b.clone()));
-        }
-    } else {
-        spine.check_real_envelope(None)?;
-    }
+    let (spine, reparam) = oriented_on_domain(spine, options)?;
     let d = spine.discriminant()?;
     let (g1, g2) = sum_of_two_squares_approx(&d)?;
     // the f64 numerators are not divided by their content: scale the split accordingly
@@ -919,6 +929,12 @@ impl<F: Scalar> CanalSurface<F> {
         let charts = |x: &[BiPoly<F>]| -> Vec<Vec<BiPoly<F>>> {
             vec![x.to_vec(), x.iter().map(|c| c.reverse_u(nu)).collect()]
         };
+        // Krasauskas builds: u ∈ [−1, 0] and [0, 1] per chart (the weight |a + u b|² is
+        // balanced at u = 0, see `krasauskas::Pencil::balance_at`)
+        let u_ranges: Vec<(&F, &F)> = match self.construction {
+            Construction::Krasauskas { .. } => vec![(&m1, &zero), (&zero, &one)],
+            Construction::PeternellPottmann => vec![(&m1, &one)],
+        };
         let mut out = Vec::new();
         if self.reparametrized.is_some() {
             let nt = self.degree().0;
@@ -929,13 +945,17 @@ impl<F: Scalar> CanalSurface<F> {
                 .collect();
             for base in [self.x.to_vec(), rev] {
                 for ch in charts(&base) {
-                    out.push(patch_of(&ch, (&zero, &one), (&m1, &one))?);
+                    for u in &u_ranges {
+                        out.push(patch_of(&ch, (&zero, &one), *u)?);
+                    }
                 }
             }
         } else {
             let (fa, fb) = (F::from_rational(&a), F::from_rational(&b));
             for ch in charts(&self.x) {
-                out.push(patch_of(&ch, (&fa, &fb), (&m1, &one))?);
+                for u in &u_ranges {
+                    out.push(patch_of(&ch, (&fa, &fb), *u)?);
+                }
             }
         }
         Ok(out)

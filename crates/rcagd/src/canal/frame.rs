@@ -28,7 +28,7 @@
 //! construction (certified, but possibly with a base point).
 
 use super::envelope::{canal_surface, canal_surface_with_split, CanalBuild, CanalOptions};
-use super::envelope::{AxisChoice, CanalSurface, Orientation};
+use super::envelope::{AxisChoice, CanalSurface, Construction, Method, Orientation};
 use super::pipe::pipe_around_ph_parts;
 use super::{CanalError, CanalSpine};
 use crate::ph::PhCurve;
@@ -210,9 +210,39 @@ fn oriented(spine: &CanalSpine<Rational>, o: Orientation) -> CanalSpine<Rational
 /// reparametrization of the domain, `W` vanishes on it, the axis is fixed by `options`, or no
 /// direction is found, this is [`canal_surface`] itself.
 ///
+/// With [`Method::Lowest`] a Krasauskas build (its weight `W·|a + u b|²` is positive where
+/// the pencil has no base point, but its Bernstein weights on the domain charts `u ∈ [−1, 1]`
+/// need not be) is kept only if every weight of [`CanalSurface::domain_patches`] is positive;
+/// otherwise the Peternell–Pottmann build of the pole-free frame is returned.
+///
 /// # Errors
 /// As [`canal_surface`]; [`CanalError::InvalidArgument`] without a domain.
 pub fn canal_surface_pole_free(
+    spine: &CanalSpine<Rational>,
+    options: &CanalOptions,
+) -> Result<CanalBuild, CanalError> {
+    let built = pole_free_any(spine, options)?;
+    let keep = match &built {
+        CanalBuild::Rational(s) if options.method == Method::Lowest => {
+            !matches!(s.construction(), Construction::Krasauskas { .. })
+                || s.domain_patches().is_ok_and(|ps| {
+                    ps.iter()
+                        .all(|p| p.weights().iter().all(|w| *w > Rational::ZERO))
+                })
+        }
+        _ => true,
+    };
+    if keep {
+        return Ok(built);
+    }
+    let opts = CanalOptions {
+        method: Method::PeternellPottmann,
+        ..options.clone()
+    };
+    pole_free_any(spine, &opts)
+}
+
+fn pole_free_any(
     spine: &CanalSpine<Rational>,
     options: &CanalOptions,
 ) -> Result<CanalBuild, CanalError> {

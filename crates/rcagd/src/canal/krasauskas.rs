@@ -390,6 +390,39 @@ impl<F: Scalar> Pencil<F> {
     }
 }
 
+impl Pencil<Rational> {
+    /// A constant real change of the pencil basis (a real Möbius map of `u`, which keeps the
+    /// circles and the degree) that makes `a(t₀)` and `b(t₀)` orthogonal
+    /// (`Re⟨a, b⟩ = 0`) and of nearly equal length (a rational factor within 1/64 of
+    /// `|a|/|b|`): then the weight `|a + u b|²` at `t₀` is `|a|²(1 + u²)`-like, and its
+    /// Bernstein coefficients on the charts `u ∈ [−1, 0], [0, 1]` (and `u ↦ 1/u`) are
+    /// positive near `t₀`.
+    pub fn balance_at(&mut self, t0: &Rational) {
+        let z = Complex::from_real(t0.clone());
+        let ev = |p: &CPoly<Rational>| p.eval(&z);
+        let (a0, a1) = (ev(&self.a[0]), ev(&self.a[1]));
+        let (b0, b1) = (ev(&self.b[0]), ev(&self.b[1]));
+        let aa = a0.norm_sq() + a1.norm_sq();
+        if aa.is_zero() {
+            return;
+        }
+        let ab = (a0.clone() * b0.conj() + a1.clone() * b1.conj()).re;
+        let mu = Complex::from_real(ab / aa.clone());
+        let b = [
+            &self.b[0] - &self.a[0].scale(&mu),
+            &self.b[1] - &self.a[1].scale(&mu),
+        ];
+        let bb = ev(&b[0]).norm_sq() + ev(&b[1]).norm_sq();
+        if bb.is_zero() {
+            return;
+        }
+        let ratio = Scalar::to_f64(&(aa / bb)).sqrt();
+        let num = (ratio * 64.0).round().clamp(1.0, 1e12) as i64;
+        let lambda = Complex::from_real(Rational::from_ratio(num, 64));
+        self.b = [b[0].scale(&lambda), b[1].scale(&lambda)];
+    }
+}
+
 /// `true` if `det(a, b)` has a real root where `D ≠ 0` (a collapsed iso-curve).
 ///
 /// # Errors
