@@ -6,7 +6,7 @@ use rcagd::ph::dph::{certify_dph_septic, dph_septic, dph_septic_z_roots};
 use rcagd::ph::*;
 use rcagd_algebra::complex::Complex;
 use rcagd_algebra::quaternion::Quaternion;
-use rcagd_algebra::{Certificate, Rational, Scalar};
+use rcagd_algebra::{Certificate, Poly, Rational, Scalar};
 
 type Q = Rational;
 
@@ -217,7 +217,17 @@ proptest! {
                 DphTest::Dph(d) => {
                     prop_assert!(holds_exact(&pc.certify_dph(&d)));
                     prop_assert!(holds_exact(&pc.frenet_frame(&d).certify()));
-                    prop_assert!(matches!(pc.to_f64().dph_test().unwrap(), DphTest::Dph(_)));
+                    // f64 agrees unless the problem is ill-conditioned: ρ = |r''|² − σ'²
+                    // cancels to ~1e-12 of |r''|² for some septics with large coefficients
+                    // (found by proptest), below what f64 power-basis arithmetic resolves;
+                    // there the f64 test answers `Line` or `NotDph`
+                    if !matches!(pc.to_f64().dph_test().unwrap(), DphTest::Dph(_)) {
+                        let r2 = pc.position().clone().map(|x| x.derivative().derivative());
+                        let s2 = r2.iter().fold(Poly::zero(), |a, x| &a + &(x * x));
+                        let scale = |p: &Poly<Q>| p.coeffs().iter().map(|c| Scalar::to_f64(c).abs()).fold(0.0, f64::max);
+                        let rel = scale(&pc.rho().unwrap()) / scale(&s2);
+                        prop_assert!(rel <= 1e-9, "f64 DPH test disagrees on a well-conditioned curve: ρ/|r''|² = {:e}", rel);
+                    }
                 }
                 DphTest::Line => {}
                 DphTest::NotDph { .. } => prop_assert!(false, "septic constructor gave a non-DPH curve"),

@@ -56,6 +56,7 @@ pub use spatial_hermite::{
 };
 pub use speed::ArcLengthParameter;
 pub use spline::{PhQuinticSpline, SplineEnds};
+pub use util::ExactOrFloat;
 
 use rcagd_algebra::AlgebraError;
 use rcagd_geom::GeomError;

@@ -63,28 +63,8 @@ pub struct PlanarHermiteSolution<F> {
 }
 
 /// The result of [`PlanarHermiteData::solve_auto`].
-#[derive(Debug, Clone, PartialEq)]
-pub enum PlanarHermiteResult {
-    /// Every square root was rational: exact solution.
-    Exact(Box<PlanarHermiteSolution<Rational>>),
-    /// Some square root was irrational: solved in `f64`.
-    Float(Box<PlanarHermiteSolution<f64>>),
-}
-
-impl PlanarHermiteResult {
-    /// `true` for an exact solution.
-    pub fn is_exact(&self) -> bool {
-        matches!(self, PlanarHermiteResult::Exact(_))
-    }
-
-    /// The certificates of the solution.
-    pub fn certify(&self) -> Vec<Certificate> {
-        match self {
-            PlanarHermiteResult::Exact(s) => s.certify(),
-            PlanarHermiteResult::Float(s) => s.certify(),
-        }
-    }
-}
+pub type PlanarHermiteResult =
+    super::util::ExactOrFloat<PlanarHermiteSolution<Rational>, PlanarHermiteSolution<f64>>;
 
 fn cx<F: Scalar>(p: &[F; 2]) -> C<F> {
     C::new(p[0].clone(), p[1].clone())

@@ -56,28 +56,8 @@ pub struct SpatialHermiteQuintic<F> {
 }
 
 /// The result of [`SpatialHermiteData::solve_auto`].
-#[derive(Debug, Clone, PartialEq)]
-pub enum SpatialHermiteResult {
-    /// All square roots rational: exact.
-    Exact(Box<SpatialHermiteQuintic<Rational>>),
-    /// Solved in `f64`.
-    Float(Box<SpatialHermiteQuintic<f64>>),
-}
-
-impl SpatialHermiteResult {
-    /// `true` for an exact result.
-    pub fn is_exact(&self) -> bool {
-        matches!(self, SpatialHermiteResult::Exact(_))
-    }
-
-    /// The certificates.
-    pub fn certify(&self) -> Vec<Certificate> {
-        match self {
-            SpatialHermiteResult::Exact(s) => s.certify(),
-            SpatialHermiteResult::Float(s) => s.certify(),
-        }
-    }
-}
+pub type SpatialHermiteResult =
+    super::util::ExactOrFloat<SpatialHermiteQuintic<Rational>, SpatialHermiteQuintic<f64>>;
 
 /// `(cos φ, sin φ) = ((1 − τ²)/(1 + τ²), 2τ/(1 + τ²))` for `τ = tan(φ/2)` (exact for
 /// rational `τ`; `τ = −1` gives `φ = −π/2`).

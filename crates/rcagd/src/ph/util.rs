@@ -705,3 +705,29 @@ pub(crate) fn trim_noise<F: Scalar>(p: Poly<F>) -> Poly<F> {
     }
     Poly::new(c)
 }
+
+/// The result of a solver that is exact when every square root it meets is rational and
+/// falls back to `f64` otherwise (the PH Hermite solvers' `solve_auto`): the exact solution
+/// `E` or the floating-point one `F`, said in the type, never silently.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ExactOrFloat<E, F> {
+    /// Every square root was rational: the exact solution.
+    Exact(Box<E>),
+    /// Some square root was irrational: solved in `f64`.
+    Float(Box<F>),
+}
+
+impl<E: crate::Certified, F: crate::Certified> ExactOrFloat<E, F> {
+    /// `true` for an exact solution.
+    pub fn is_exact(&self) -> bool {
+        matches!(self, ExactOrFloat::Exact(_))
+    }
+
+    /// The certificates of the solution.
+    pub fn certify(&self) -> Vec<Certificate> {
+        match self {
+            ExactOrFloat::Exact(s) => s.certify(),
+            ExactOrFloat::Float(s) => s.certify(),
+        }
+    }
+}
