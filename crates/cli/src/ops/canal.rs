@@ -17,7 +17,7 @@ use rcagd::canal::blend::PlaneEnd;
 use rcagd::canal::{
     blend_sphere_plane, blend_spheres, canal_surface_pole_free, pipe_around_ph_pole_free,
     pipe_surface, BlendEnd, BlendSpine, CanalBuild, CanalError, CanalOptions, CanalSpine,
-    CanalSurface, Orientation,
+    CanalSurface, Method, Orientation,
 };
 use rcagd::lines::{common_transversals, CommonTransversals, Line, Regulus};
 use rcagd::ph::PhCurve;
@@ -559,12 +559,18 @@ const ORIENTATION: ParamSpec = ParamSpec::with_default(
 
 const CANAL_SURFACE: OpSpec = OpSpec {
     name: "canal_surface",
-    summary: "the rational canal surface (envelope of spheres) of a rational spine and a polynomial radius on t ∈ [0, 1], exact over Q (seed 003 §2.1, Peternell–Pottmann)",
+    summary: "the rational canal surface (envelope of spheres) of a rational spine and a polynomial radius on t ∈ [0, 1], exact over Q, of the lowest bidegree found by Peternell–Pottmann (seed 003 §2.1) and Krasauskas' reduced pencil (§2.4)",
     params: &[
         ParamSpec::required("points", ParamKind::Points, "control points [x, y, z] of the spine m(t), t ∈ [0, 1]"),
         ParamSpec::optional("weights", ParamKind::Numbers, "spine weights (default all 1)"),
         ParamSpec::required("radius", ParamKind::Numbers, "Bernstein control values of the radius r(t) (any degree)"),
         ORIENTATION,
+        ParamSpec::with_default(
+            "method",
+            ParamKind::Choice(&["lowest", "peternell-pottmann", "krasauskas"]),
+            "\"lowest\"",
+            "the construction: \"lowest\" keeps the lower bidegree of both (Krasauskas' only where its Bernstein weights on the domain are positive), or exactly the one named (Krasauskas' pencil is built over Q only)",
+        ),
     ],
     example: r#"[[object]]
 name = "canal_parabola"
@@ -636,9 +642,15 @@ fn build_canal_surface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     .map_err(|e| OpError::param("radius", e.to_string()))?;
     let family = CanalSpine::from_spine_and_radius(&spine, &rc)
         .map_err(|e| canal_err(e, "points", "radius"))?;
+    let method = match args.string("method")? {
+        "peternell-pottmann" => Method::PeternellPottmann,
+        "krasauskas" => Method::Krasauskas,
+        _ => Method::Lowest,
+    };
     let options = CanalOptions {
         orientation: orientation(args)?,
         domain: Some((Rational::zero(), Rational::one())),
+        method,
         ..CanalOptions::default()
     };
     let build =
@@ -1125,6 +1137,28 @@ mod tests {
     fn build(text: &str) -> Result<Vec<crate::model::Object>, (usize, String)> {
         let recipe = Recipe::parse("t.toml", text, None).map_err(|d| (d[0].line, d[0].message.clone()))?;
         build_recipe(&recipe, |_| {}).map_err(|d| (d[0].line, d[0].message.clone()))
+    }
+
+    /// The pipe of radius 1/4 around the quarter circle `((1 − t²), 2t)/(1 + t²)` (weights
+    /// 1, 1, 2): Krasauskas' pencil gives biquadratic patches, Peternell–Pottmann (4, 2).
+    #[test]
+    fn canal_surface_methods_give_their_degrees() {
+        let recipe = |method: &str| {
+            format!("[[object]]\nname = \"c\"\nop = \"canal_surface\"\npoints = [[1, 0, 0], [1, 1, 0], [0, 1, 0]]\nweights = [1, 1, 2]\nradius = [\"1/4\"]\nmethod = \"{method}\"\n")
+        };
+        let degrees = |method: &str| -> Vec<(usize, usize)> {
+            let o = build(&recipe(method)).expect("canal surface");
+            assert!(o[0].certificates.iter().all(|c| c.holds), "{method}: {:?}", o[0].certificates);
+            match &o[0].geometry {
+                crate::model::Geometry::Patches(ps) => ps.iter().map(|p| p.degree()).collect(),
+                g => panic!("{method}: unexpected geometry {}", g.kind()),
+            }
+        };
+        assert!(degrees("lowest").iter().all(|&d| d == (2, 2)));
+        assert!(degrees("krasauskas").iter().all(|&d| d == (2, 2)));
+        assert!(degrees("peternell-pottmann").iter().all(|&d| d == (4, 2)));
+        let e = build(&recipe("bezier")).expect_err("unknown method");
+        assert_eq!(e.0, 7, "{e:?}");
     }
 
     #[test]

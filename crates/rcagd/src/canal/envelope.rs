@@ -610,6 +610,11 @@ pub fn canal_surface(
                 s.domain = options.domain.clone();
                 CanalBuild::Rational(s)
             }),
+            SumOfSquares::Extension { .. } if options.method == Method::Krasauskas => {
+                Err(CanalError::NeedsLargerExtension(
+                    "Krasauskas' pencil is built over Q(i) only, and this split of D needs a quadratic field (use the method lowest or peternell-pottmann)".into(),
+                ))
+            }
             SumOfSquares::Extension { radicand, g1, g2 } => {
                 let se = spine.map_scalar(|x| QuadExt::rational(x.clone()));
                 build_best(&se, &[g1.clone(), g2.clone()], options.axis).map(|mut s| {
