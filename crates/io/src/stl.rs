@@ -101,8 +101,9 @@ pub fn object_mesh(o: &Object, opts: &MeshOptions) -> Result<TriMesh, IoError> {
     }
     let tol = opts.relative_tolerance * object_size(o);
     let mut out = TriMesh::default();
-    for p in patches {
-        let m = tessellate_patch_adaptive(p, tol)?;
+    // pieces with weights of one sign (a weight zero inside would mesh a spike)
+    for (_, p) in o.geometry.drawable_patches()? {
+        let m = tessellate_patch_adaptive(&p, tol)?;
         append_mesh(&mut out, &m)?;
     }
     Ok(out)
