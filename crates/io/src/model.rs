@@ -352,4 +352,76 @@ mod tests {
         assert_eq!(o.failed_certificate_count(), 1);
         assert_eq!(o.kind(), "curve");
     }
+
+    /// The arc `(1 − t², 2t)/(1 + t²)`, `t ∈ [−1, 3]`: weight `1 + t² > 0` with a
+    /// negative middle Bernstein coefficient.
+    fn long_arc() -> BezierCurve<Rational> {
+        BezierCurve::from_homogeneous(vec![
+            vec![q(2, 1), q(0, 1), q(-2, 1)],
+            vec![q(-2, 1), q(4, 1), q(2, 1)],
+            vec![q(10, 1), q(-8, 1), q(6, 1)],
+        ])
+        .expect("valid")
+    }
+
+    #[test]
+    fn drawing_splits_mixed_weights_and_refuses_zeros() {
+        use crate::svg::{geometry_svg, SvgOptions};
+        // a zero-free weight with mixed Bernstein signs: split, drawn
+        let g = Geometry::Curve(long_arc());
+        let pieces = g.drawable_curves().expect("splits");
+        assert!(pieces.len() > 1);
+        assert!(geometry_svg(&g, &SvgOptions::default()).is_ok());
+        // the cylinder over that arc: patches split in the arc direction
+        let lift = |z: i64| {
+            BezierCurve::from_homogeneous(
+                long_arc()
+                    .control_points()
+                    .map(|h| {
+                        vec![
+                            h[0].clone(),
+                            h[1].clone(),
+                            h[2].clone(),
+                            h[0].clone() * q(z, 1),
+                        ]
+                    })
+                    .collect(),
+            )
+            .expect("valid")
+        };
+        let cyl = BezierPatch::from_curves_ruled(&lift(0), &lift(1)).expect("ruled");
+        let g = Geometry::Patch(cyl);
+        let pieces = g.drawable_patches().expect("splits");
+        assert!(pieces.len() > 1 && pieces.iter().all(|(k, _)| *k == 0));
+        assert!(geometry_svg(&g, &SvgOptions::default()).is_ok());
+        // a pole inside (weight 1 − 2t): a clear error, no picture
+        let pole = BezierCurve::from_homogeneous(vec![
+            vec![q(1, 1), q(0, 1), q(0, 1)],
+            vec![q(-1, 1), q(1, 1), q(1, 1)],
+        ])
+        .expect("valid");
+        let e = geometry_svg(&Geometry::Curve(pole), &SvgOptions::default()).expect_err("pole");
+        assert!(e.to_string().contains("weight function has a zero"), "{e}");
+        // a weight vanishing on the whole edge u = 0: a clear error from every writer
+        let net = vec![
+            vec![
+                vec![q(0, 1), q(1, 1), q(0, 1), q(0, 1)],
+                vec![q(0, 1), q(1, 1), q(1, 1), q(0, 1)],
+            ],
+            vec![
+                vec![q(1, 1), q(1, 1), q(0, 1), q(0, 1)],
+                vec![q(1, 1), q(1, 1), q(1, 1), q(0, 1)],
+            ],
+        ];
+        let p = BezierPatch::from_homogeneous(net).expect("valid");
+        let o = Object::new("z", "t", serde_json::json!({}), Geometry::Patch(p), vec![]);
+        let e = geometry_svg(&o.geometry, &SvgOptions::default()).expect_err("edge at infinity");
+        assert!(
+            e.to_string().contains("vanishes on the whole edge u = 0"),
+            "{e}"
+        );
+        assert!(crate::stl::object_mesh(&o, &Default::default()).is_err());
+        assert!(crate::raster::render(&o, &Default::default()).is_err());
+        assert!(crate::obj::geometry_to_obj("z", &o.geometry, 1e-3).is_err());
+    }
 }

@@ -233,7 +233,9 @@ fn curve_e3(c: &BezierCurve<Rational>, what: &str) -> Result<BezierCurve<Rationa
     }
     let mut coords = pad3(c.coords(), c.dim());
     positive_weights(&mut coords).map_err(|m| IoError::Invalid(format!("{what}: {m}")))?;
-    Ok(crate::balance::balance_curve(&BezierCurve::from_flat(3, coords)?))
+    Ok(crate::balance::balance_curve(&BezierCurve::from_flat(
+        3, coords,
+    )?))
 }
 
 /// The patch in E3 with positive weights.
@@ -962,7 +964,10 @@ fn degenerate_edge(
     let vertex = match vertices.get(&at) {
         Some(&v) => v,
         None => {
-            let xyz = at.iter().map(rational_real).collect::<Result<Vec<_>, _>>()?;
+            let xyz = at
+                .iter()
+                .map(rational_real)
+                .collect::<Result<Vec<_>, _>>()?;
             let p = data.point(&xyz);
             let v = data.add(format!("VERTEX_POINT('',#{p})"));
             vertices.insert(at, v);
@@ -975,7 +980,9 @@ fn degenerate_edge(
     let ctx = data.param_context();
     let rep = data.add(format!("DEFINITIONAL_REPRESENTATION('',(#{pc_id}),#{ctx})"));
     let pcurve_id = data.add(format!("PCURVE('',#{surf},#{rep})"));
-    let geom = data.add(format!("SURFACE_CURVE('',#{c3},(#{pcurve_id}),.PCURVE_S1.)"));
+    let geom = data.add(format!(
+        "SURFACE_CURVE('',#{c3},(#{pcurve_id}),.PCURVE_S1.)"
+    ));
     Ok(data.add(format!("EDGE_CURVE('',#{vertex},#{vertex},#{geom},.T.)")))
 }
 

@@ -713,8 +713,11 @@ pub fn patches_svg(patches: &[BezierPatch<f64>], opts: &SvgOptions) -> Result<St
 pub fn geometry_svg(g: &Geometry, opts: &SvgOptions) -> Result<String, IoError> {
     match g {
         Geometry::Curve(_) | Geometry::Curves(_) => {
-            let curves: Vec<BezierCurve<f64>> =
-                g.drawable_curves()?.iter().map(BezierCurve::to_f64).collect();
+            let curves: Vec<BezierCurve<f64>> = g
+                .drawable_curves()?
+                .iter()
+                .map(BezierCurve::to_f64)
+                .collect();
             curves_svg(&curves, opts)
         }
         Geometry::Patch(_) | Geometry::Patches(_) => {

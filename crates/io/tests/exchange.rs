@@ -655,7 +655,6 @@ fn pictures_have_the_requested_size() {
 mod property {
     use super::*;
     use proptest::prelude::*;
-    use rcagd_geom::nurbs::NurbsSurface;
 
     fn small_rational() -> impl Strategy<Value = Rational> {
         (-40i64..=40, 1i64..=12).prop_map(|(p, d)| q(p, d))
@@ -695,7 +694,12 @@ mod property {
         fn write_read_evaluate_agrees(p in patch(), u in 0u32..=16, v in 0u32..=16) {
             let o = object("random patch", Geometry::Patch(p.clone()));
             let side = rcagd_io::step::exact_sidecar(std::slice::from_ref(&o)).expect("sidecar");
-            let exact = NurbsSurface::from_bezier(&p).expect("surface");
+            // the exchanged surface: `p` itself or `p` with balanced weights (an exact
+            // Möbius reparametrization, rcagd_io::balance)
+            let x = rcagd_io::step::exchange_object(&o).expect("exchange");
+            let exact = x.surfaces().expect("surfaces").remove(0);
+            let bal = rcagd_io::balance::patch_balance(&p);
+            prop_assert_eq!(&x.patches[0], &rcagd_io::balance::apply_patch(&p, bal));
             let (uq, vq) = (q(u as i64, 16), q(v as i64, 16));
             let want = exact.eval(&uq, &vq).expect("finite");
             let size = rcagd_io::stl::object_size(&o);
@@ -748,4 +752,73 @@ fn multi_shell_objects_round_trip_in_patch_order() {
     apply_sidecar(&mut read, &side).expect("STEP: sidecar matches, in patch order");
     let mut read = rcagd_io::iges_read::read_iges(&iges_text(&objects)).expect("IGES reads");
     apply_sidecar(&mut read, &side).expect("IGES: sidecar matches, in patch order");
+}
+
+/// `(start vertex, end vertex)` of every `EDGE_CURVE` line of STEP text.
+fn edge_curves(text: &str) -> Vec<(String, String)> {
+    text.lines()
+        .filter_map(|l| l.split_once("= EDGE_CURVE('',"))
+        .map(|(_, rest)| {
+            let mut it = rest.split(',');
+            let a = it.next().unwrap_or_default().to_string();
+            let b = it.next().unwrap_or_default().to_string();
+            (a, b)
+        })
+        .collect()
+}
+
+/// The number of oriented edges of every `EDGE_LOOP` of STEP text.
+fn loop_sizes(text: &str) -> Vec<usize> {
+    text.lines()
+        .filter_map(|l| l.split_once("= EDGE_LOOP('',"))
+        .map(|(_, rest)| rest.matches('#').count())
+        .collect()
+}
+
+/// Regression (issue 8): a patch side that collapses to a point (a pole) is written as a
+/// degenerate edge — an `EDGE_CURVE` from the pole's vertex to itself with the side's
+/// parameter line as `PCURVE` — and every edge carries its parameter lines on its faces.
+/// Without them OpenCascade closed the loops itself, straight across the parameter
+/// square where two adjacent sides collapse, and grew the tolerance to 0.31.
+#[test]
+fn collapsed_sides_are_degenerate_edges_with_parameter_lines() {
+    use rcagd_io::step_read::read_step;
+    // 8 octants, each collapsed at u = 0: 12 shared edges, 8 degenerate ones
+    let text = step_text(&[object("sphere", Geometry::Patches(sphere([0, 0, 0], 1)))]);
+    let edges = edge_curves(&text);
+    assert_eq!(edges.len(), 12 + 8);
+    assert_eq!(edges.iter().filter(|(a, b)| a == b).count(), 8);
+    assert_eq!(loop_sizes(&text), vec![4; 8]);
+    // 2 parameter lines per shared edge, 1 per degenerate edge
+    assert_eq!(text.matches("PCURVE('',").count(), 2 * 12 + 8);
+    assert_eq!(text.matches("SURFACE_CURVE(").count(), 12 + 8);
+    assert!(text.contains("MANIFOLD_SOLID_BREP"));
+    let back = read_step(&text).expect("reads back");
+    assert_eq!(back[0].surfaces.len(), 8);
+
+    // a biquadratic patch whose sides u = 1 and v = 1 both collapse to one point (as
+    // four of the 16 patches of `sphere_cover`): two degenerate edges in one loop
+    let pole = [int(1), int(0), int(0), int(2)];
+    let net: Vec<Vec<Vec<Rational>>> = (0..3)
+        .map(|i| {
+            (0..3)
+                .map(|j| {
+                    if i == 2 || j == 2 {
+                        pole.iter().map(|x| x.clone() * int(1 + i + j)).collect()
+                    } else {
+                        let w = int(1 + i * j);
+                        vec![w.clone(), w.clone() * int(i), w.clone() * int(j), int(0)]
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    let corner = BezierPatch::from_homogeneous(net).expect("valid");
+    let text = step_text(&[object("corner", Geometry::Patch(corner))]);
+    let edges = edge_curves(&text);
+    assert_eq!(edges.len(), 4, "{edges:?}");
+    assert_eq!(edges.iter().filter(|(a, b)| a == b).count(), 2);
+    assert_eq!(loop_sizes(&text), vec![4]);
+    let back = read_step(&text).expect("reads back");
+    assert_eq!(back[0].surfaces.len(), 1);
 }
