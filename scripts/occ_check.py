@@ -493,7 +493,7 @@ def check_file(occ, path: Path, args):
     lines.append(
         f"    faces: {tm}/{tf} matched, max deviation {wf:.3e} ({rel_f:.3e} of size {size:.6g}); "
         f"edges: {tem}/{te} matched, max deviation {we:.3e} ({rel_e:.3e})"
-        + (f"; {tdeg} degenerated edge(s) added by the reader" if tdeg else "")
+        + (f"; {tdeg} degenerated edge(s) (collapsed sides: poles)" if tdeg else "")
     )
     for r in report[:20]:
         lines.append(f"    {r}")

@@ -16,8 +16,14 @@
 //! * **Patches** become `B_SPLINE_SURFACE_WITH_KNOTS` on `[0, 1]²` (knots
 //!   `0ᵐ⁺¹ 1ᵐ⁺¹`, `0ⁿ⁺¹ 1ⁿ⁺¹`), each the geometry of an `ADVANCED_FACE` bounded by
 //!   its boundary curves (`EDGE_CURVE`s on exact B-spline curves, `VERTEX_POINT`s at
-//!   the corners). Boundary curves that collapse to a point (a sphere's pole) are left
-//!   out of the loop. Two patches share an edge when their boundary curves are the same
+//!   the corners). Every `EDGE_CURVE` is a `SURFACE_CURVE` carrying its parameter lines
+//!   (`PCURVE`s) on its faces: the side of the parameter square, exact, a rational line
+//!   with weights `1, 1/ρ` where the face's boundary is a Möbius reparametrization of
+//!   the edge curve (see below). A boundary curve that collapses to a point (a sphere's
+//!   pole; detected exactly: all Euclidean control points equal) is a degenerate edge of
+//!   its face alone: an `EDGE_CURVE` from the pole's vertex to itself on the collapsed
+//!   curve, with the side's parameter line, which OpenCascade reads as a degenerated
+//!   edge (it does not count for the shell's closedness). Two patches share an edge when their boundary curves are the same
 //!   curve exactly: the same rational parametrization
 //!   ([`BezierCurve::same_parametrization`]) or one related to it by an
 //!   end-point-preserving Möbius reparametrization `Qᵢ = λ ρⁱ Pᵢ`, `ρ > 0` (in either
