@@ -219,7 +219,9 @@ pub fn default_tolerance(g: &Geometry) -> f64 {
 ///
 /// # Errors
 /// [`IoError::Geom`] if tessellation fails (dimension above 3, a point at infinity,
-/// a bad tolerance), [`IoError::Invalid`] as in [`mesh_to_obj`].
+/// a bad tolerance), [`IoError::Invalid`] as in [`mesh_to_obj`] and for a curve or
+/// patch whose weight function has a zero (pieces with weights of mixed sign are split
+/// into pieces of one sign first, [`Geometry::drawable_patches`]).
 pub fn geometry_to_obj(name: &str, g: &Geometry, tol: f64) -> Result<String, IoError> {
     match g {
         Geometry::Curve(_) | Geometry::Curves(_) => {

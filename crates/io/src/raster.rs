@@ -439,7 +439,10 @@ struct Frame {
 ///
 /// # Errors
 /// [`IoError::Invalid`] for a bad image size or supersampling factor, no drawable
-/// geometry, or geometry beyond E3; [`IoError::Geom`] from the tessellation.
+/// geometry, geometry beyond E3, or a curve or patch whose weight function has a zero
+/// (pieces with weights of mixed sign are drawn as pieces of one sign,
+/// [`crate::model::Geometry::drawable_patches`]); [`IoError::Geom`] from the
+/// tessellation.
 pub fn render(o: &Object, opts: &RenderOptions) -> Result<Image, IoError> {
     if opts.width == 0 || opts.height == 0 || opts.width > 8192 || opts.height > 8192 {
         return Err(IoError::Invalid(format!(

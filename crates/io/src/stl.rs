@@ -82,8 +82,10 @@ pub fn object_size(o: &Object) -> f64 {
 /// meshes concatenated.
 ///
 /// # Errors
-/// [`IoError::Invalid`] for an object without patches or a bad tolerance,
-/// [`IoError::Geom`] from the tessellation (a point at infinity, dimension above 3).
+/// [`IoError::Invalid`] for an object without patches, a bad tolerance or a patch whose
+/// weight function has a zero (patches with weights of mixed sign are meshed as pieces
+/// of one sign, [`crate::model::Geometry::drawable_patches`]), [`IoError::Geom`] from
+/// the tessellation (a point at infinity, dimension above 3).
 pub fn object_mesh(o: &Object, opts: &MeshOptions) -> Result<TriMesh, IoError> {
     let patches = o.geometry.patches();
     if patches.is_empty() {
