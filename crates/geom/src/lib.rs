@@ -11,6 +11,7 @@ pub mod nurbs;
 pub mod patch;
 pub mod polymap;
 pub mod tessellate;
+pub mod weight_sign;
 
 pub use curve::BezierCurve;
 pub use error::GeomError;

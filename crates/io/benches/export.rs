@@ -27,57 +27,16 @@ use rcagd_geom::BezierPatch;
 use rcagd_io::model::{Geometry, Object};
 use std::hint::black_box;
 
-fn int(p: i64) -> Rational {
-    Rational::from(p)
-}
+#[path = "../tests/samples/mod.rs"]
+mod samples;
 
-/// The rational quarter circle rotated by `k` quarter turns: `(w, w cos, w sin)`.
-fn quarter(k: usize) -> [[Rational; 3]; 3] {
-    let base = [
-        [int(1), int(1), int(0)],
-        [int(1), int(1), int(1)],
-        [int(2), int(0), int(2)],
-    ];
-    base.map(|[w, c, s]| {
-        let (mut c, mut s) = (c, s);
-        for _ in 0..k % 4 {
-            (c, s) = (-s, c);
-        }
-        [w, c, s]
-    })
-}
-
-/// The torus `R = 3`, `r = 1` as 16 exact biquadratic patches.
+/// The torus `R = 3`, `r = 1` as 16 exact biquadratic patches ([`samples::torus`]).
 fn torus() -> Object {
-    let (big, small) = (int(3), int(1));
-    let mut patches = Vec::new();
-    for a in 0..4 {
-        for b in 0..4 {
-            let net = quarter(a)
-                .iter()
-                .map(|[wu, c, s]| {
-                    quarter(b)
-                        .iter()
-                        .map(|[wv, cc, ss]| {
-                            let rad = big.clone() * wv.clone() + small.clone() * cc.clone();
-                            vec![
-                                wu.clone() * wv.clone(),
-                                rad.clone() * c.clone(),
-                                rad * s.clone(),
-                                small.clone() * ss.clone() * wu.clone(),
-                            ]
-                        })
-                        .collect()
-                })
-                .collect();
-            patches.push(BezierPatch::from_homogeneous(net).expect("valid"));
-        }
-    }
     Object::new(
         "torus",
         "bench",
         serde_json::Value::Null,
-        Geometry::Patches(patches),
+        Geometry::Patches(samples::torus(samples::int(3), samples::int(1))),
         Vec::new(),
     )
 }
@@ -140,21 +99,13 @@ fn curvo_grid_mesh(s: &NurbsSurface3D<f64>, n: usize) -> TriMesh {
     }
 }
 
-/// The unit circle as four exact rational quadratic arcs (a planar curve object).
+/// The unit circle as four exact rational quadratic arcs ([`samples::circle`]).
 fn circle() -> Object {
-    let arcs = (0..4)
-        .map(|k| {
-            rcagd_geom::BezierCurve::from_homogeneous(
-                quarter(k).iter().map(|p| p.to_vec()).collect(),
-            )
-            .expect("valid")
-        })
-        .collect();
     Object::new(
         "circle",
         "bench",
         serde_json::Value::Null,
-        Geometry::Curves(arcs),
+        Geometry::Curves(samples::circle()),
         Vec::new(),
     )
 }
@@ -337,7 +288,7 @@ fn tessellation(c: &mut Criterion) {
         b.iter(|| black_box(s.tessellate(Some(copts.clone()))))
     });
     g.finish();
-    let _ = Scalar::to_f64(&int(0));
+    let _ = Scalar::to_f64(&samples::int(0));
 }
 
 criterion_group!(benches, export, tessellation);

@@ -264,8 +264,8 @@ pub fn objects_to_glb(objects: &[Object], opts: &MeshOptions) -> Result<Vec<u8>,
         let tol = opts.relative_tolerance * object_size(o);
         let pls = o
             .geometry
-            .curves()
-            .into_iter()
+            .drawable_curves()?
+            .iter()
             .map(|c| tessellate_curve_adaptive(c, tol, 12).map(|p| p.points))
             .collect::<Result<Vec<_>, _>>()?;
         lines.push(pls);

@@ -11,6 +11,7 @@
 //!
 //! Layer rule: depends on `rcagd-algebra` and `rcagd-geom` only.
 
+pub mod balance;
 pub mod error;
 pub mod gltf;
 pub mod iges;

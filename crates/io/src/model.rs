@@ -4,8 +4,19 @@
 //! recipe entry, i.e. its `name`, the `op` that built it, the op's `params` (as JSON),
 //! its exact [`Geometry`] and its [`Certificate`]s.
 
+use crate::IoError;
 use rcagd_algebra::{Certificate, Rational};
+use rcagd_geom::weight_sign::{
+    curve_has_one_sign, patch_has_one_sign, split_curve_uniform, split_patches_adaptive,
+    zero_weight_edge, SignRule,
+};
 use rcagd_geom::{BezierCurve, BezierPatch, GeomError};
+
+/// The deepest uniform split ([`split_curve_uniform`]) of a curve for drawing.
+const DRAW_CURVE_LEVEL: u32 = 6;
+/// The most bisections in `v` and in `u` ([`split_patches_adaptive`]) of a patch for
+/// drawing.
+const DRAW_PATCH_SPLITS: (usize, usize) = (4, 4);
 
 /// Exact rational geometry: one or several homogeneous rational Bézier curves or
 /// tensor-product patches.
@@ -107,6 +118,81 @@ impl Geometry {
                 summarize(ps.len(), "patch", "patches", "bidegree", degs)
             }
         }
+    }
+
+    /// The curves as pieces whose weights have one sign (module
+    /// [`rcagd_geom::weight_sign`]), for pictures and meshes: a piece whose weight
+    /// function vanishes inside would be drawn as a spike to infinity. Curves that
+    /// already have weights of one sign are returned as they are.
+    ///
+    /// # Errors
+    /// [`IoError::Invalid`] for a curve whose weight function has a zero on `[0, 1]`
+    /// (a point at infinity: no split into `2⁶` pieces has weights of one sign).
+    pub fn drawable_curves(&self) -> Result<Vec<BezierCurve<Rational>>, IoError> {
+        let mut out = Vec::new();
+        for (k, c) in self.curves().into_iter().enumerate() {
+            if curve_has_one_sign(c) {
+                out.push(c.clone());
+                continue;
+            }
+            match split_curve_uniform(c, DRAW_CURVE_LEVEL)? {
+                Some(pieces) => out.extend(pieces),
+                None => {
+                    return Err(IoError::Invalid(format!(
+                        "curve {k} cannot be drawn: its weight function has a zero on [0, 1] \
+                         (a point at infinity); no split into {} pieces has weights of one sign",
+                        1u32 << DRAW_CURVE_LEVEL
+                    )))
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// The patches as pieces whose weights have one sign (as [`Self::drawable_curves`]),
+    /// each with the index of the patch it comes from. Patches that already have
+    /// weights of one sign are returned as they are.
+    ///
+    /// # Errors
+    /// [`IoError::Invalid`] for a patch whose weight vanishes on a whole boundary edge
+    /// (the edge lies at infinity) or whose weight function has a zero on `[0, 1]²`
+    /// (no split by [`split_patches_adaptive`] with up to 4 bisections in each
+    /// direction gives weights of one sign).
+    pub fn drawable_patches(&self) -> Result<Vec<(usize, BezierPatch<Rational>)>, IoError> {
+        let patches = self.patches();
+        if patches.iter().all(|p| patch_has_one_sign(p)) {
+            return Ok(patches.into_iter().cloned().enumerate().collect());
+        }
+        const EDGES: [&str; 4] = ["v = 0", "u = 1", "v = 1", "u = 0"];
+        for (k, p) in patches.iter().enumerate() {
+            if let Some(e) = zero_weight_edge(p) {
+                return Err(IoError::Invalid(format!(
+                    "patch {k} cannot be drawn: its weight vanishes on the whole edge {} \
+                     (the edge lies at infinity)",
+                    EDGES[e]
+                )));
+            }
+        }
+        let split = split_patches_adaptive(
+            patches.into_iter().cloned().collect(),
+            SignRule::OneSign,
+            DRAW_PATCH_SPLITS,
+        )?;
+        if split.failed > 0 {
+            let k = split
+                .pieces
+                .iter()
+                .zip(&split.source)
+                .find(|(p, _)| !patch_has_one_sign(p))
+                .map_or(0, |(_, &k)| k);
+            return Err(IoError::Invalid(format!(
+                "patch {k} cannot be drawn: its weight function has a zero on [0, 1]² (a pole \
+                 or point at infinity); {} bisections in v and {} in u leave pieces whose \
+                 weights change sign",
+                DRAW_PATCH_SPLITS.0, DRAW_PATCH_SPLITS.1
+            )));
+        }
+        Ok(split.source.into_iter().zip(split.pieces).collect())
     }
 
     /// The `f64` images of the curves (correctly rounded coordinates).
@@ -265,5 +351,77 @@ mod tests {
         assert!(!o.all_certificates_hold());
         assert_eq!(o.failed_certificate_count(), 1);
         assert_eq!(o.kind(), "curve");
+    }
+
+    /// The arc `(1 − t², 2t)/(1 + t²)`, `t ∈ [−1, 3]`: weight `1 + t² > 0` with a
+    /// negative middle Bernstein coefficient.
+    fn long_arc() -> BezierCurve<Rational> {
+        BezierCurve::from_homogeneous(vec![
+            vec![q(2, 1), q(0, 1), q(-2, 1)],
+            vec![q(-2, 1), q(4, 1), q(2, 1)],
+            vec![q(10, 1), q(-8, 1), q(6, 1)],
+        ])
+        .expect("valid")
+    }
+
+    #[test]
+    fn drawing_splits_mixed_weights_and_refuses_zeros() {
+        use crate::svg::{geometry_svg, SvgOptions};
+        // a zero-free weight with mixed Bernstein signs: split, drawn
+        let g = Geometry::Curve(long_arc());
+        let pieces = g.drawable_curves().expect("splits");
+        assert!(pieces.len() > 1);
+        assert!(geometry_svg(&g, &SvgOptions::default()).is_ok());
+        // the cylinder over that arc: patches split in the arc direction
+        let lift = |z: i64| {
+            BezierCurve::from_homogeneous(
+                long_arc()
+                    .control_points()
+                    .map(|h| {
+                        vec![
+                            h[0].clone(),
+                            h[1].clone(),
+                            h[2].clone(),
+                            h[0].clone() * q(z, 1),
+                        ]
+                    })
+                    .collect(),
+            )
+            .expect("valid")
+        };
+        let cyl = BezierPatch::from_curves_ruled(&lift(0), &lift(1)).expect("ruled");
+        let g = Geometry::Patch(cyl);
+        let pieces = g.drawable_patches().expect("splits");
+        assert!(pieces.len() > 1 && pieces.iter().all(|(k, _)| *k == 0));
+        assert!(geometry_svg(&g, &SvgOptions::default()).is_ok());
+        // a pole inside (weight 1 − 2t): a clear error, no picture
+        let pole = BezierCurve::from_homogeneous(vec![
+            vec![q(1, 1), q(0, 1), q(0, 1)],
+            vec![q(-1, 1), q(1, 1), q(1, 1)],
+        ])
+        .expect("valid");
+        let e = geometry_svg(&Geometry::Curve(pole), &SvgOptions::default()).expect_err("pole");
+        assert!(e.to_string().contains("weight function has a zero"), "{e}");
+        // a weight vanishing on the whole edge u = 0: a clear error from every writer
+        let net = vec![
+            vec![
+                vec![q(0, 1), q(1, 1), q(0, 1), q(0, 1)],
+                vec![q(0, 1), q(1, 1), q(1, 1), q(0, 1)],
+            ],
+            vec![
+                vec![q(1, 1), q(1, 1), q(0, 1), q(0, 1)],
+                vec![q(1, 1), q(1, 1), q(1, 1), q(0, 1)],
+            ],
+        ];
+        let p = BezierPatch::from_homogeneous(net).expect("valid");
+        let o = Object::new("z", "t", serde_json::json!({}), Geometry::Patch(p), vec![]);
+        let e = geometry_svg(&o.geometry, &SvgOptions::default()).expect_err("edge at infinity");
+        assert!(
+            e.to_string().contains("vanishes on the whole edge u = 0"),
+            "{e}"
+        );
+        assert!(crate::stl::object_mesh(&o, &Default::default()).is_err());
+        assert!(crate::raster::render(&o, &Default::default()).is_err());
+        assert!(crate::obj::geometry_to_obj("z", &o.geometry, 1e-3).is_err());
     }
 }

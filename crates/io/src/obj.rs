@@ -219,22 +219,24 @@ pub fn default_tolerance(g: &Geometry) -> f64 {
 ///
 /// # Errors
 /// [`IoError::Geom`] if tessellation fails (dimension above 3, a point at infinity,
-/// a bad tolerance), [`IoError::Invalid`] as in [`mesh_to_obj`].
+/// a bad tolerance), [`IoError::Invalid`] as in [`mesh_to_obj`] and for a curve or
+/// patch whose weight function has a zero (pieces with weights of mixed sign are split
+/// into pieces of one sign first, [`Geometry::drawable_patches`]).
 pub fn geometry_to_obj(name: &str, g: &Geometry, tol: f64) -> Result<String, IoError> {
     match g {
         Geometry::Curve(_) | Geometry::Curves(_) => {
             let lines = g
-                .curves()
-                .into_iter()
+                .drawable_curves()?
+                .iter()
                 .map(|c| tessellate_curve_adaptive(c, tol, 16))
                 .collect::<Result<Vec<_>, _>>()?;
             polyline_list_to_obj(name, &lines)
         }
         Geometry::Patch(_) | Geometry::Patches(_) => {
             let meshes = g
-                .patches()
-                .into_iter()
-                .map(|p| tessellate_patch_adaptive(p, tol))
+                .drawable_patches()?
+                .iter()
+                .map(|(_, p)| tessellate_patch_adaptive(p, tol))
                 .collect::<Result<Vec<_>, _>>()?;
             trimesh_to_obj(name, &merge_meshes(&meshes)?)
         }

@@ -276,8 +276,9 @@ fn scene(o: &Object, opts: &RenderOptions) -> Result<(Vec<Mesh>, Vec<Line>), IoE
             .map(|t| t.faces.iter().map(|f| f.flipped).collect())
             .unwrap_or_default()
     };
-    for (k, p) in patches.iter().enumerate() {
-        let p3 = patch3(p)?;
+    // pieces with weights of one sign (a weight zero inside would draw a spike)
+    for (k, p) in o.geometry.drawable_patches()? {
+        let p3 = patch3(&p)?;
         let mut mesh = tessellate_patch_uniform(&p3, grid, grid)?;
         if flips.get(k) == Some(&true) {
             for n in &mut mesh.normals {
@@ -345,7 +346,7 @@ fn scene(o: &Object, opts: &RenderOptions) -> Result<(Vec<Mesh>, Vec<Line>), IoE
     }
     let mut dots: Vec<(V3, f64)> = Vec::new();
     let mut curve_points: Vec<V3> = Vec::new();
-    for (k, c) in o.geometry.curves().into_iter().enumerate() {
+    for (k, c) in o.geometry.drawable_curves()?.iter().enumerate() {
         if c.dim() > 3 {
             return Err(IoError::Invalid(format!(
                 "a picture needs geometry in E1, E2 or E3; curve {k} lies in E{}",
@@ -438,7 +439,10 @@ struct Frame {
 ///
 /// # Errors
 /// [`IoError::Invalid`] for a bad image size or supersampling factor, no drawable
-/// geometry, or geometry beyond E3; [`IoError::Geom`] from the tessellation.
+/// geometry, geometry beyond E3, or a curve or patch whose weight function has a zero
+/// (pieces with weights of mixed sign are drawn as pieces of one sign,
+/// [`crate::model::Geometry::drawable_patches`]); [`IoError::Geom`] from the
+/// tessellation.
 pub fn render(o: &Object, opts: &RenderOptions) -> Result<Image, IoError> {
     if opts.width == 0 || opts.height == 0 || opts.width > 8192 || opts.height > 8192 {
         return Err(IoError::Invalid(format!(

@@ -16,8 +16,14 @@
 //! * **Patches** become `B_SPLINE_SURFACE_WITH_KNOTS` on `[0, 1]²` (knots
 //!   `0ᵐ⁺¹ 1ᵐ⁺¹`, `0ⁿ⁺¹ 1ⁿ⁺¹`), each the geometry of an `ADVANCED_FACE` bounded by
 //!   its boundary curves (`EDGE_CURVE`s on exact B-spline curves, `VERTEX_POINT`s at
-//!   the corners). Boundary curves that collapse to a point (a sphere's pole) are left
-//!   out of the loop. Two patches share an edge when their boundary curves are the same
+//!   the corners). Every `EDGE_CURVE` is a `SURFACE_CURVE` carrying its parameter lines
+//!   (`PCURVE`s) on its faces: the side of the parameter square, exact, a rational line
+//!   with weights `1, 1/ρ` where the face's boundary is a Möbius reparametrization of
+//!   the edge curve (see below). A boundary curve that collapses to a point (a sphere's
+//!   pole; detected exactly: all Euclidean control points equal) is a degenerate edge of
+//!   its face alone: an `EDGE_CURVE` from the pole's vertex to itself on the collapsed
+//!   curve, with the side's parameter line, which OpenCascade reads as a degenerated
+//!   edge (it does not count for the shell's closedness). Two patches share an edge when their boundary curves are the same
 //!   curve exactly: the same rational parametrization
 //!   ([`BezierCurve::same_parametrization`]) or one related to it by an
 //!   end-point-preserving Möbius reparametrization `Qᵢ = λ ρⁱ Pᵢ`, `ρ > 0` (in either
@@ -45,7 +51,10 @@
 //! ([`crate::step_read::apply_sidecar`]).
 //!
 //! Weights must be positive (CAD kernels reject others): a piece whose weights are all
-//! negative is negated (the same curve), zero or mixed signs are an error. Geometry in
+//! negative is negated (the same curve), zero or mixed signs are an error. Pieces whose
+//! weights vary by more than 16× or leave `[2⁻⁸, 2⁸]` are balanced by an exact Möbius
+//! reparametrization and a power-of-2 scale ([`crate::balance`]) before anything is
+//! written, so the files and the sidecar carry the same, balanced, weights. Geometry in
 //! E1 or E2 is embedded in E3 (`z = 0`); dimensions above 3 are an error.
 
 use crate::json::rational_to_json;
@@ -230,7 +239,9 @@ fn curve_e3(c: &BezierCurve<Rational>, what: &str) -> Result<BezierCurve<Rationa
     }
     let mut coords = pad3(c.coords(), c.dim());
     positive_weights(&mut coords).map_err(|m| IoError::Invalid(format!("{what}: {m}")))?;
-    Ok(BezierCurve::from_flat(3, coords)?)
+    Ok(crate::balance::balance_curve(&BezierCurve::from_flat(
+        3, coords,
+    )?))
 }
 
 /// The patch in E3 with positive weights.
@@ -244,7 +255,9 @@ fn patch_e3(p: &BezierPatch<Rational>, what: &str) -> Result<BezierPatch<Rationa
     }
     let mut coords = pad3(p.coords(), p.dim());
     positive_weights(&mut coords).map_err(|m| IoError::Invalid(format!("{what}: {m}")))?;
-    Ok(BezierPatch::from_flat(3, m, n, coords)?)
+    Ok(crate::balance::balance_patch(&BezierPatch::from_flat(
+        3, m, n, coords,
+    )?))
 }
 
 /// The Euclidean point of a homogeneous point with non-zero weight.
@@ -327,6 +340,9 @@ pub struct TopoFace {
     pub edges: Vec<(usize, bool)>,
     /// `true` if the face normal is `−∂ᵤx × ∂ᵥx` in its shell.
     pub flipped: bool,
+    /// For each entry of `edges`, the side of the patch it bounds: 0 `v = 0`, 1 `u = 1`,
+    /// 2 `v = 1`, 3 `u = 0` (the order of [`BezierPatch::boundary_curves`]).
+    pub sides: Vec<usize>,
 }
 
 /// A connected set of faces.
@@ -358,40 +374,45 @@ fn collapsed(c: &BezierCurve<Rational>) -> bool {
     c.control_points().all(|p| euclid(p) == first)
 }
 
-/// `true` if `q` is `p` reparametrized by an end-point-preserving Möbius map:
-/// `Qᵢ = λ ρⁱ Pᵢ` for some `λ ≠ 0`, `ρ > 0`.
-fn mobius_equivalent(p: &BezierCurve<Rational>, q: &BezierCurve<Rational>) -> bool {
+/// `ρ` if `q` is `p` reparametrized by an end-point-preserving Möbius map:
+/// `Qᵢ = λ ρⁱ Pᵢ` for some `λ ≠ 0`, `ρ > 0`; then `Q(s) = P(φ_ρ(s))` with
+/// `φ_ρ(s) = ρs / ((1 − s) + ρs)` (projectively).
+fn mobius_ratio(p: &BezierCurve<Rational>, q: &BezierCurve<Rational>) -> Option<Rational> {
     if p.degree() != q.degree() || p.dim() != q.dim() {
-        return false;
+        return None;
     }
     let zero = Rational::from(0);
     // rᵢ with Qᵢ = rᵢ Pᵢ
     let mut ratios = Vec::with_capacity(p.degree() + 1);
     for (a, b) in p.control_points().zip(q.control_points()) {
-        let Some(k) = a.iter().position(|x| *x != zero) else {
-            return false;
-        };
+        let k = a.iter().position(|x| *x != zero)?;
         let r = b[k].clone() / a[k].clone();
         if r == zero || a.iter().zip(b).any(|(x, y)| *y != r.clone() * x.clone()) {
-            return false;
+            return None;
         }
         ratios.push(r);
     }
     if ratios.len() < 2 {
-        return false;
+        return None;
     }
     let rho = ratios[1].clone() / ratios[0].clone();
     if rho <= zero {
-        return false;
+        return None;
     }
     let mut expect = ratios[0].clone();
     for r in &ratios {
         if *r != expect {
-            return false;
+            return None;
         }
         expect *= rho.clone();
     }
-    true
+    Some(rho)
+}
+
+/// `true` if `q` is `p` reparametrized by an end-point-preserving Möbius map
+/// ([`mobius_ratio`]).
+fn mobius_equivalent(p: &BezierCurve<Rational>, q: &BezierCurve<Rational>) -> bool {
+    mobius_ratio(p, q).is_some()
 }
 
 fn same_curve(a: &BezierCurve<Rational>, b: &BezierCurve<Rational>) -> bool {
@@ -461,7 +482,8 @@ pub fn build_topology(patches: &[BezierPatch<Rational>]) -> Result<Topology, IoE
             )));
         }
         let mut loop_edges = Vec::new();
-        for c in patch.boundary_curves() {
+        let mut sides = Vec::new();
+        for (side, c) in patch.boundary_curves().into_iter().enumerate() {
             let (h0, h1) = (c.control_point(0), c.control_point(c.degree()));
             if h0[0] == zero || h1[0] == zero {
                 return Err(IoError::Invalid(format!(
@@ -508,11 +530,13 @@ pub fn build_topology(patches: &[BezierPatch<Rational>]) -> Result<Topology, IoE
                 }
             };
             loop_edges.push(use_);
+            sides.push(side);
         }
         faces.push(TopoFace {
             patch: k,
             edges: loop_edges,
             flipped: false,
+            sides,
         });
     }
     // edge → uses (face, forward)
@@ -677,9 +701,25 @@ fn iso_timestamp(secs: i64) -> String {
 struct Data {
     entities: Vec<String>,
     points: HashMap<String, usize>,
+    /// The shared 2D context of the parameter-space curves, once written.
+    param_ctx: Option<usize>,
 }
 
 impl Data {
+    /// The `GEOMETRIC_REPRESENTATION_CONTEXT(2)` of the parameter lines (one per file).
+    fn param_context(&mut self) -> usize {
+        if let Some(id) = self.param_ctx {
+            return id;
+        }
+        let id = self.add(
+            "(GEOMETRIC_REPRESENTATION_CONTEXT(2) PARAMETRIC_REPRESENTATION_CONTEXT() \
+             REPRESENTATION_CONTEXT('2D SPACE',''))"
+                .into(),
+        );
+        self.param_ctx = Some(id);
+        id
+    }
+
     fn add(&mut self, body: String) -> usize {
         self.entities.push(body);
         self.entities.len()
@@ -869,6 +909,89 @@ fn unique_ids(objects: &[ExchangeObject]) -> Vec<String> {
         .collect()
 }
 
+/// The corner `(u, v)` where the parameter line of patch side `side` (the order of
+/// [`BezierPatch::boundary_curves`]) is at its own parameter `s ∈ {0, 1}`.
+fn side_point(side: usize, s: i64) -> [i64; 2] {
+    match side {
+        0 => [s, 0],
+        1 => [1, s],
+        2 => [1 - s, 1],
+        _ => [0, 1 - s],
+    }
+}
+
+/// The parameter line (pcurve) of an edge on a face: the edge curve `E` traverses the
+/// patch side `side` (`fwd`: in the side's direction) as `along` (the side's boundary
+/// curve, reversed if `!fwd`). With `along = E ∘ φ_ρ` ([`mobius_ratio`]; `ρ = 1` for the
+/// same parametrization) the face parameter at the edge parameter `t` is the side's
+/// corner-to-corner line at `φ_ρ⁻¹(t) = φ_{1/ρ}(t)`: the rational line with weights
+/// `1, 1/ρ` (an exact degree-1 rational B-spline in the `(u, v)` plane).
+fn pcurve(
+    edge: &BezierCurve<Rational>,
+    along: &BezierCurve<Rational>,
+    side: usize,
+    fwd: bool,
+) -> Result<NurbsCurve<Rational>, IoError> {
+    let sigma = match mobius_ratio(edge, along) {
+        Some(rho) => Rational::from(1) / rho,
+        None => Rational::from(1),
+    };
+    let (a, b) = if fwd {
+        (side_point(side, 0), side_point(side, 1))
+    } else {
+        (side_point(side, 1), side_point(side, 0))
+    };
+    let h = |w: &Rational, p: [i64; 2]| {
+        vec![
+            w.clone(),
+            w.clone() * Rational::from(p[0]),
+            w.clone() * Rational::from(p[1]),
+        ]
+    };
+    let line = BezierCurve::from_homogeneous(vec![h(&Rational::from(1), a), h(&sigma, b)])?;
+    Ok(NurbsCurve::from_bezier(&line)?)
+}
+
+/// A degenerate edge for the collapsed side `side` (boundary curve `c`, one point) of a
+/// face on the surface entity `surf`: an `EDGE_CURVE` from the point's vertex to itself
+/// whose `SURFACE_CURVE` is the collapsed boundary curve with the side's parameter line
+/// as `PCURVE`. OpenCascade reads it as a degenerated edge (`BRep_Tool::Degenerated`),
+/// as its own writer's faces at a pole; without it the reader closes the loop itself,
+/// straight across the parameter square where two adjacent sides collapse, and grows
+/// the vertex tolerance to the gap.
+fn degenerate_edge(
+    data: &mut Data,
+    c: &BezierCurve<Rational>,
+    side: usize,
+    surf: usize,
+    vertices: &mut HashMap<Vec<Rational>, usize>,
+) -> Result<usize, IoError> {
+    let at = euclid(c.control_point(0));
+    let vertex = match vertices.get(&at) {
+        Some(&v) => v,
+        None => {
+            let xyz = at
+                .iter()
+                .map(rational_real)
+                .collect::<Result<Vec<_>, _>>()?;
+            let p = data.point(&xyz);
+            let v = data.add(format!("VERTEX_POINT('',#{p})"));
+            vertices.insert(at, v);
+            v
+        }
+    };
+    let c3 = curve_entity(data, &NurbsCurve::from_bezier(c)?, "")?;
+    let pc = pcurve(c, c, side, true)?;
+    let pc_id = curve_entity(data, &pc, "")?;
+    let ctx = data.param_context();
+    let rep = data.add(format!("DEFINITIONAL_REPRESENTATION('',(#{pc_id}),#{ctx})"));
+    let pcurve_id = data.add(format!("PCURVE('',#{surf},#{rep})"));
+    let geom = data.add(format!(
+        "SURFACE_CURVE('',#{c3},(#{pcurve_id}),.PCURVE_S1.)"
+    ));
+    Ok(data.add(format!("EDGE_CURVE('',#{vertex},#{vertex},#{geom},.T.)")))
+}
+
 /// The representation items of one object and the representation's entity name.
 fn object_items(
     data: &mut Data,
@@ -897,19 +1020,63 @@ fn object_items(
         let p = data.point(&xyz);
         vertex_ids.push(data.add(format!("VERTEX_POINT('',#{p})")));
     }
+    let surface_ids = topo
+        .faces
+        .iter()
+        .map(|f| surface_entity(data, &surfaces[f.patch], ""))
+        .collect::<Result<Vec<_>, _>>()?;
+    // the parameter lines of every edge on its faces (module docs)
+    let mut pcurves: Vec<Vec<(usize, usize)>> = vec![Vec::new(); topo.edges.len()];
+    for (fi, f) in topo.faces.iter().enumerate() {
+        let boundary = o.patches[f.patch].boundary_curves();
+        for (&(e, fwd), &side) in f.edges.iter().zip(&f.sides) {
+            let c = &boundary[side];
+            let along = if fwd { c.clone() } else { c.reverse() };
+            let pc = pcurve(&topo.edges[e].curve, &along, side, fwd)?;
+            let pc_id = curve_entity(data, &pc, "")?;
+            let ctx = data.param_context();
+            let rep = data.add(format!("DEFINITIONAL_REPRESENTATION('',(#{pc_id}),#{ctx})"));
+            let id = data.add(format!("PCURVE('',#{},#{rep})", surface_ids[fi]));
+            pcurves[e].push((fi, id));
+        }
+    }
     let mut edge_ids = Vec::with_capacity(topo.edges.len());
-    for e in &topo.edges {
+    for (e, pcs) in topo.edges.iter().zip(&pcurves) {
         let nc = NurbsCurve::from_bezier(&e.curve)?;
         let c = curve_entity(data, &nc, "")?;
+        let ids: Vec<usize> = pcs.iter().map(|&(_, id)| id).collect();
+        let seam = pcs.len() == 2 && pcs[0].0 == pcs[1].0;
+        let geom = data.add(format!(
+            "{}('',#{c},{},.PCURVE_S1.)",
+            if seam { "SEAM_CURVE" } else { "SURFACE_CURVE" },
+            refs(&ids)
+        ));
         edge_ids.push(data.add(format!(
-            "EDGE_CURVE('',#{},#{},#{c},.T.)",
+            "EDGE_CURVE('',#{},#{},#{geom},.T.)",
             vertex_ids[e.start], vertex_ids[e.end]
         )));
     }
     let mut face_ids = Vec::with_capacity(topo.faces.len());
-    for f in &topo.faces {
-        let surf = surface_entity(data, &surfaces[f.patch], "")?;
-        let mut loop_uses: Vec<(usize, bool)> = f.edges.clone();
+    // VERTEX_POINTs by exact position (the topology's, and poles of collapsed sides)
+    let mut pole_ids: HashMap<Vec<Rational>, usize> = topo
+        .vertices
+        .iter()
+        .cloned()
+        .zip(vertex_ids.iter().copied())
+        .collect();
+    for (fi, f) in topo.faces.iter().enumerate() {
+        let surf = surface_ids[fi];
+        // the loop in side order: shared edges, and a degenerate edge (a vertex of the
+        // surface's pole, with its parameter line) for every collapsed side
+        let boundary = o.patches[f.patch].boundary_curves();
+        let mut loop_uses: Vec<(usize, bool)> = Vec::with_capacity(4);
+        for (side, c) in boundary.iter().enumerate() {
+            if let Some(i) = f.sides.iter().position(|&x| x == side) {
+                loop_uses.push((edge_ids[f.edges[i].0], f.edges[i].1));
+            } else if collapsed(c) {
+                loop_uses.push((degenerate_edge(data, c, side, surf, &mut pole_ids)?, true));
+            }
+        }
         if f.flipped {
             loop_uses.reverse();
             for u in &mut loop_uses {
@@ -920,7 +1087,7 @@ fn object_items(
         for (e, fwd) in loop_uses {
             oe.push(data.add(format!(
                 "ORIENTED_EDGE('',*,*,#{},{})",
-                edge_ids[e],
+                e,
                 if fwd { ".T." } else { ".F." }
             )));
         }
@@ -1001,6 +1168,7 @@ pub fn write_step_with(objects: &[Object], opts: &StepOptions) -> Result<String,
     let mut data = Data {
         entities: Vec::new(),
         points: HashMap::new(),
+        param_ctx: None,
     };
     let (schema, app_ctx, apd) = match opts.schema {
         StepSchema::Ap214 => (

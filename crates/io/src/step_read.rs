@@ -794,50 +794,64 @@ fn homogeneous(x: &[Rational], w: &Rational) -> Vec<Rational> {
     h
 }
 
-/// A B-spline curve entity (simple or complex).
-fn read_curve(m: &Model, id: u64) -> Result<NurbsCurve<Rational>, IoError> {
-    let inst = m.get(id, (0, id))?;
-    // (degree, points, mults, knots, weights)
-    let (deg_p, pts_p, mults_p, knots_p, weights_p): (
-        &Param,
-        &Param,
-        &Param,
-        &Param,
-        Option<&Param>,
-    ) = if inst.is_simple("B_SPLINE_CURVE_WITH_KNOTS") {
+/// The parameters of a B-spline curve or surface entity (`kind` `"CURVE"` or
+/// `"SURFACE"`), simple or complex, and its weights (`None`: polynomial). The simple
+/// entity `B_SPLINE_{kind}_WITH_KNOTS` has the parameters at the indices `simple`; the
+/// complex one splits them into the `B_SPLINE_{kind}` record (indices `base`) followed by
+/// the `B_SPLINE_{kind}_WITH_KNOTS` record (indices `knots`), with the weights as the
+/// first parameter of `RATIONAL_B_SPLINE_{kind}`.
+fn bspline_params<'i>(
+    inst: &'i Instance,
+    id: u64,
+    kind: &str,
+    simple: &[usize],
+    base: &[usize],
+    knots: &[usize],
+) -> Result<(Vec<&'i Param>, Option<&'i Param>), IoError> {
+    let with_knots = format!("B_SPLINE_{kind}_WITH_KNOTS");
+    if inst.is_simple(&with_knots) {
         let r = &inst.records[0];
-        (
-            get_param(r, 1, inst, id)?,
-            get_param(r, 2, inst, id)?,
-            get_param(r, 6, inst, id)?,
-            get_param(r, 7, inst, id)?,
-            None,
-        )
-    } else if let (Some(b), Some(k)) = (
-        inst.record("B_SPLINE_CURVE"),
-        inst.record("B_SPLINE_CURVE_WITH_KNOTS"),
-    ) {
-        let w = match inst.record("RATIONAL_B_SPLINE_CURVE") {
-            Some(r) => Some(get_param(r, 0, inst, id)?),
-            None => None,
-        };
-        (
-            get_param(b, 0, inst, id)?,
-            get_param(b, 1, inst, id)?,
-            get_param(k, 0, inst, id)?,
-            get_param(k, 1, inst, id)?,
-            w,
-        )
-    } else {
+        let ps = simple
+            .iter()
+            .map(|&i| get_param(r, i, inst, id))
+            .collect::<Result<Vec<_>, _>>()?;
+        return Ok((ps, None));
+    }
+    let (Some(b), Some(k)) = (
+        inst.record(&format!("B_SPLINE_{kind}")),
+        inst.record(&with_knots),
+    ) else {
         let names: Vec<&str> = inst.records.iter().map(|r| r.name.as_str()).collect();
         return Err(param_err(
             inst,
             id,
             format!(
-                "unsupported curve {}: rcagd reads B_SPLINE_CURVE_WITH_KNOTS",
+                "unsupported {} {}: rcagd reads {with_knots}",
+                kind.to_lowercase(),
                 names.join(" ")
             ),
         ));
+    };
+    let w = match inst.record(&format!("RATIONAL_B_SPLINE_{kind}")) {
+        Some(r) => Some(get_param(r, 0, inst, id)?),
+        None => None,
+    };
+    let mut ps = Vec::with_capacity(base.len() + knots.len());
+    for &i in base {
+        ps.push(get_param(b, i, inst, id)?);
+    }
+    for &i in knots {
+        ps.push(get_param(k, i, inst, id)?);
+    }
+    Ok((ps, w))
+}
+
+/// A B-spline curve entity (simple or complex).
+fn read_curve(m: &Model, id: u64) -> Result<NurbsCurve<Rational>, IoError> {
+    let inst = m.get(id, (0, id))?;
+    let (params, weights_p) = bspline_params(inst, id, "CURVE", &[1, 2, 6, 7], &[0, 1], &[0, 1])?;
+    let [deg_p, pts_p, mults_p, knots_p] = params[..] else {
+        return Err(param_err(inst, id, "internal: B-spline curve parameters"));
     };
     let degree = as_usize(deg_p, inst, id, "degree")?;
     if degree > MAX_DEGREE {
@@ -884,49 +898,17 @@ fn read_curve(m: &Model, id: u64) -> Result<NurbsCurve<Rational>, IoError> {
 /// A B-spline surface entity (simple or complex).
 fn read_surface(m: &Model, id: u64) -> Result<NurbsSurface<Rational>, IoError> {
     let inst = m.get(id, (0, id))?;
-    type P<'x> = &'x Param;
-    let (du, dv, net_p, mu, mv, ku, kv, w_p): (P, P, P, P, P, P, P, Option<P>) =
-        if inst.is_simple("B_SPLINE_SURFACE_WITH_KNOTS") {
-            let r = &inst.records[0];
-            (
-                get_param(r, 1, inst, id)?,
-                get_param(r, 2, inst, id)?,
-                get_param(r, 3, inst, id)?,
-                get_param(r, 8, inst, id)?,
-                get_param(r, 9, inst, id)?,
-                get_param(r, 10, inst, id)?,
-                get_param(r, 11, inst, id)?,
-                None,
-            )
-        } else if let (Some(b), Some(k)) = (
-            inst.record("B_SPLINE_SURFACE"),
-            inst.record("B_SPLINE_SURFACE_WITH_KNOTS"),
-        ) {
-            let w = match inst.record("RATIONAL_B_SPLINE_SURFACE") {
-                Some(r) => Some(get_param(r, 0, inst, id)?),
-                None => None,
-            };
-            (
-                get_param(b, 0, inst, id)?,
-                get_param(b, 1, inst, id)?,
-                get_param(b, 2, inst, id)?,
-                get_param(k, 0, inst, id)?,
-                get_param(k, 1, inst, id)?,
-                get_param(k, 2, inst, id)?,
-                get_param(k, 3, inst, id)?,
-                w,
-            )
-        } else {
-            let names: Vec<&str> = inst.records.iter().map(|r| r.name.as_str()).collect();
-            return Err(param_err(
-                inst,
-                id,
-                format!(
-                    "unsupported surface {}: rcagd reads B_SPLINE_SURFACE_WITH_KNOTS",
-                    names.join(" ")
-                ),
-            ));
-        };
+    let (params, w_p) = bspline_params(
+        inst,
+        id,
+        "SURFACE",
+        &[1, 2, 3, 8, 9, 10, 11],
+        &[0, 1, 2],
+        &[0, 1, 2, 3],
+    )?;
+    let [du, dv, net_p, mu, mv, ku, kv] = params[..] else {
+        return Err(param_err(inst, id, "internal: B-spline surface parameters"));
+    };
     let p = as_usize(du, inst, id, "u degree")?;
     let q = as_usize(dv, inst, id, "v degree")?;
     if p > MAX_DEGREE || q > MAX_DEGREE {

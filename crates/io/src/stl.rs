@@ -82,8 +82,10 @@ pub fn object_size(o: &Object) -> f64 {
 /// meshes concatenated.
 ///
 /// # Errors
-/// [`IoError::Invalid`] for an object without patches or a bad tolerance,
-/// [`IoError::Geom`] from the tessellation (a point at infinity, dimension above 3).
+/// [`IoError::Invalid`] for an object without patches, a bad tolerance or a patch whose
+/// weight function has a zero (patches with weights of mixed sign are meshed as pieces
+/// of one sign, [`crate::model::Geometry::drawable_patches`]), [`IoError::Geom`] from
+/// the tessellation (a point at infinity, dimension above 3).
 pub fn object_mesh(o: &Object, opts: &MeshOptions) -> Result<TriMesh, IoError> {
     let patches = o.geometry.patches();
     if patches.is_empty() {
@@ -101,8 +103,9 @@ pub fn object_mesh(o: &Object, opts: &MeshOptions) -> Result<TriMesh, IoError> {
     }
     let tol = opts.relative_tolerance * object_size(o);
     let mut out = TriMesh::default();
-    for p in patches {
-        let m = tessellate_patch_adaptive(p, tol)?;
+    // pieces with weights of one sign (a weight zero inside would mesh a spike)
+    for (_, p) in o.geometry.drawable_patches()? {
+        let m = tessellate_patch_adaptive(&p, tol)?;
         append_mesh(&mut out, &m)?;
     }
     Ok(out)

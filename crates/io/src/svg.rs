@@ -703,14 +703,31 @@ pub fn patches_svg(patches: &[BezierPatch<f64>], opts: &SvgOptions) -> Result<St
     Ok(document(b, opts, &body))
 }
 
-/// The picture of exact geometry (converted to `f64`).
+/// The picture of exact geometry (converted to `f64`), curves and patches split into
+/// pieces whose weights have one sign ([`Geometry::drawable_curves`],
+/// [`Geometry::drawable_patches`]).
 ///
 /// # Errors
-/// As [`curves_svg`] / [`patches_svg`].
+/// As [`curves_svg`] / [`patches_svg`]; [`IoError::Invalid`] for a piece whose weight
+/// function has a zero (a point at infinity would be drawn as a spike).
 pub fn geometry_svg(g: &Geometry, opts: &SvgOptions) -> Result<String, IoError> {
     match g {
-        Geometry::Curve(_) | Geometry::Curves(_) => curves_svg(&g.curves_f64()?, opts),
-        Geometry::Patch(_) | Geometry::Patches(_) => patches_svg(&g.patches_f64()?, opts),
+        Geometry::Curve(_) | Geometry::Curves(_) => {
+            let curves: Vec<BezierCurve<f64>> = g
+                .drawable_curves()?
+                .iter()
+                .map(BezierCurve::to_f64)
+                .collect();
+            curves_svg(&curves, opts)
+        }
+        Geometry::Patch(_) | Geometry::Patches(_) => {
+            let patches: Vec<BezierPatch<f64>> = g
+                .drawable_patches()?
+                .iter()
+                .map(|(_, p)| p.to_f64())
+                .collect();
+            patches_svg(&patches, opts)
+        }
     }
 }
 

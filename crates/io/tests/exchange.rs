@@ -5,174 +5,14 @@
 //! to `DIR` (for `scripts/occ_check.sh DIR`, the OpenCascade check).
 
 use rcagd_algebra::{Rational, Scalar};
-use rcagd_geom::{BezierCurve, BezierPatch};
+use rcagd_geom::BezierPatch;
 use rcagd_io::model::{Geometry, Object};
 use rcagd_io::IoError;
 use serde_json::Value;
 
-fn q(p: i64, d: i64) -> Rational {
-    Rational::from_ratio(p, d)
-}
+mod samples;
 
-fn int(p: i64) -> Rational {
-    Rational::from(p)
-}
-
-/// The quarter circle `(1−t², 2t)/(1+t²)` as homogeneous `(w, w·cos, w·sin)` control
-/// points, rotated by `k` quarter turns.
-fn quarter(k: usize) -> [[Rational; 3]; 3] {
-    let base = [
-        [int(1), int(1), int(0)],
-        [int(1), int(1), int(1)],
-        [int(2), int(0), int(2)],
-    ];
-    base.map(|[w, c, s]| {
-        let (mut c, mut s) = (c, s);
-        for _ in 0..k % 4 {
-            (c, s) = (-s, c);
-        }
-        [w, c, s]
-    })
-}
-
-/// One octant of the unit sphere (biquadratic, degenerate at the pole `u = 0`),
-/// reflected by the signs `(sx, sy, sz)`.
-fn sphere_octant(
-    sx: i64,
-    sy: i64,
-    sz: i64,
-    center: [i64; 3],
-    radius: i64,
-) -> BezierPatch<Rational> {
-    // meridian (w, w·r, w·z) from the pole to the equator
-    let mer = [
-        [int(1), int(0), int(1)],
-        [int(1), int(1), int(1)],
-        [int(2), int(2), int(0)],
-    ];
-    let eq = quarter(0);
-    let net = mer
-        .iter()
-        .map(|m| {
-            eq.iter()
-                .map(|e| {
-                    let w = m[0].clone() * e[0].clone();
-                    let r = int(radius);
-                    vec![
-                        w.clone(),
-                        int(sx) * r.clone() * m[1].clone() * e[1].clone()
-                            + w.clone() * int(center[0]),
-                        int(sy) * r.clone() * m[1].clone() * e[2].clone()
-                            + w.clone() * int(center[1]),
-                        int(sz) * r * m[2].clone() * e[0].clone() + w * int(center[2]),
-                    ]
-                })
-                .collect()
-        })
-        .collect();
-    BezierPatch::from_homogeneous(net).expect("valid net")
-}
-
-/// The whole sphere as 8 exact biquadratic patches (a closed shell).
-pub fn sphere(center: [i64; 3], radius: i64) -> Vec<BezierPatch<Rational>> {
-    let mut out = Vec::new();
-    for sz in [1, -1] {
-        for sy in [1, -1] {
-            for sx in [1, -1] {
-                out.push(sphere_octant(sx, sy, sz, center, radius));
-            }
-        }
-    }
-    out
-}
-
-/// A torus with radii `big > small` as 16 exact biquadratic patches:
-/// `x = (R + r cos v) cos u`, `y = (R + r cos v) sin u`, `z = r sin v`, each circle
-/// as four rational quarter circles; homogeneous `W = wᵤ w_v`,
-/// `X = (R w_v + r c_v) cᵤ`, `Y = (R w_v + r c_v) sᵤ`, `Z = r s_v wᵤ`.
-pub fn torus(big: Rational, small: Rational) -> Vec<BezierPatch<Rational>> {
-    let mut out = Vec::new();
-    for a in 0..4 {
-        for b in 0..4 {
-            let (cu, cv) = (quarter(a), quarter(b));
-            let net = cu
-                .iter()
-                .map(|[wu, c, s]| {
-                    cv.iter()
-                        .map(|[wv, cc, ss]| {
-                            let rad = big.clone() * wv.clone() + small.clone() * cc.clone();
-                            vec![
-                                wu.clone() * wv.clone(),
-                                rad.clone() * c.clone(),
-                                rad * s.clone(),
-                                small.clone() * ss.clone() * wu.clone(),
-                            ]
-                        })
-                        .collect()
-                })
-                .collect();
-            out.push(BezierPatch::from_homogeneous(net).expect("valid net"));
-        }
-    }
-    out
-}
-
-/// An open tube: the cylinder `x² + y² = 1`, `0 ≤ z ≤ 2` as 4 ruled patches.
-pub fn tube() -> Vec<BezierPatch<Rational>> {
-    (0..4)
-        .map(|k| {
-            let arc = |z: i64| {
-                BezierCurve::from_homogeneous(
-                    quarter(k)
-                        .iter()
-                        .map(|[w, c, s]| vec![w.clone(), c.clone(), s.clone(), w.clone() * int(z)])
-                        .collect(),
-                )
-                .expect("valid")
-            };
-            BezierPatch::from_curves_ruled(&arc(0), &arc(2)).expect("same dimension")
-        })
-        .collect()
-}
-
-/// A rational bicubic patch with varied weights and non-dyadic coordinates.
-pub fn bicubic() -> BezierPatch<Rational> {
-    let net = (0..4)
-        .map(|i| {
-            (0..4)
-                .map(|j| {
-                    let w = q(1 + ((i * 3 + j * 5) % 4) as i64, 2);
-                    let x = q(i as i64, 3);
-                    let y = q(j as i64, 3) + q(i as i64, 7);
-                    let z = q(((i * j) % 5) as i64 - 2, 9);
-                    vec![w.clone(), w.clone() * x, w.clone() * y, w * z]
-                })
-                .collect()
-        })
-        .collect();
-    BezierPatch::from_homogeneous(net).expect("valid net")
-}
-
-/// The unit circle in the plane as 4 rational quadratic pieces.
-pub fn circle() -> Vec<BezierCurve<Rational>> {
-    (0..4)
-        .map(|k| {
-            BezierCurve::from_homogeneous(quarter(k).iter().map(|p| p.to_vec()).collect())
-                .expect("valid")
-        })
-        .collect()
-}
-
-/// A spatial rational cubic.
-pub fn space_cubic() -> BezierCurve<Rational> {
-    BezierCurve::from_homogeneous(vec![
-        vec![int(1), int(0), int(0), int(0)],
-        vec![q(2, 3), q(1, 3), q(2, 3), q(1, 7)],
-        vec![q(3, 2), q(3, 2), q(-1, 2), q(3, 5)],
-        vec![int(1), int(2), int(1), int(1)],
-    ])
-    .expect("valid")
-}
+use samples::{bicubic, circle, int, q, space_cubic, sphere, torus, tube};
 
 fn object(name: &str, geometry: Geometry) -> Object {
     Object::new(name, "test", Value::Null, geometry, Vec::new())
@@ -655,7 +495,6 @@ fn pictures_have_the_requested_size() {
 mod property {
     use super::*;
     use proptest::prelude::*;
-    use rcagd_geom::nurbs::NurbsSurface;
 
     fn small_rational() -> impl Strategy<Value = Rational> {
         (-40i64..=40, 1i64..=12).prop_map(|(p, d)| q(p, d))
@@ -695,7 +534,12 @@ mod property {
         fn write_read_evaluate_agrees(p in patch(), u in 0u32..=16, v in 0u32..=16) {
             let o = object("random patch", Geometry::Patch(p.clone()));
             let side = rcagd_io::step::exact_sidecar(std::slice::from_ref(&o)).expect("sidecar");
-            let exact = NurbsSurface::from_bezier(&p).expect("surface");
+            // the exchanged surface: `p` itself or `p` with balanced weights (an exact
+            // Möbius reparametrization, rcagd_io::balance)
+            let x = rcagd_io::step::exchange_object(&o).expect("exchange");
+            let exact = x.surfaces().expect("surfaces").remove(0);
+            let bal = rcagd_io::balance::patch_balance(&p);
+            prop_assert_eq!(&x.patches[0], &rcagd_io::balance::apply_patch(&p, bal));
             let (uq, vq) = (q(u as i64, 16), q(v as i64, 16));
             let want = exact.eval(&uq, &vq).expect("finite");
             let size = rcagd_io::stl::object_size(&o);
@@ -748,4 +592,73 @@ fn multi_shell_objects_round_trip_in_patch_order() {
     apply_sidecar(&mut read, &side).expect("STEP: sidecar matches, in patch order");
     let mut read = rcagd_io::iges_read::read_iges(&iges_text(&objects)).expect("IGES reads");
     apply_sidecar(&mut read, &side).expect("IGES: sidecar matches, in patch order");
+}
+
+/// `(start vertex, end vertex)` of every `EDGE_CURVE` line of STEP text.
+fn edge_curves(text: &str) -> Vec<(String, String)> {
+    text.lines()
+        .filter_map(|l| l.split_once("= EDGE_CURVE('',"))
+        .map(|(_, rest)| {
+            let mut it = rest.split(',');
+            let a = it.next().unwrap_or_default().to_string();
+            let b = it.next().unwrap_or_default().to_string();
+            (a, b)
+        })
+        .collect()
+}
+
+/// The number of oriented edges of every `EDGE_LOOP` of STEP text.
+fn loop_sizes(text: &str) -> Vec<usize> {
+    text.lines()
+        .filter_map(|l| l.split_once("= EDGE_LOOP('',"))
+        .map(|(_, rest)| rest.matches('#').count())
+        .collect()
+}
+
+/// Regression (issue 8): a patch side that collapses to a point (a pole) is written as a
+/// degenerate edge — an `EDGE_CURVE` from the pole's vertex to itself with the side's
+/// parameter line as `PCURVE` — and every edge carries its parameter lines on its faces.
+/// Without them OpenCascade closed the loops itself, straight across the parameter
+/// square where two adjacent sides collapse, and grew the tolerance to 0.31.
+#[test]
+fn collapsed_sides_are_degenerate_edges_with_parameter_lines() {
+    use rcagd_io::step_read::read_step;
+    // 8 octants, each collapsed at u = 0: 12 shared edges, 8 degenerate ones
+    let text = step_text(&[object("sphere", Geometry::Patches(sphere([0, 0, 0], 1)))]);
+    let edges = edge_curves(&text);
+    assert_eq!(edges.len(), 12 + 8);
+    assert_eq!(edges.iter().filter(|(a, b)| a == b).count(), 8);
+    assert_eq!(loop_sizes(&text), vec![4; 8]);
+    // 2 parameter lines per shared edge, 1 per degenerate edge
+    assert_eq!(text.matches("PCURVE('',").count(), 2 * 12 + 8);
+    assert_eq!(text.matches("SURFACE_CURVE(").count(), 12 + 8);
+    assert!(text.contains("MANIFOLD_SOLID_BREP"));
+    let back = read_step(&text).expect("reads back");
+    assert_eq!(back[0].surfaces.len(), 8);
+
+    // a biquadratic patch whose sides u = 1 and v = 1 both collapse to one point (as
+    // four of the 16 patches of `sphere_cover`): two degenerate edges in one loop
+    let pole = [int(1), int(0), int(0), int(2)];
+    let net: Vec<Vec<Vec<Rational>>> = (0..3)
+        .map(|i| {
+            (0..3)
+                .map(|j| {
+                    if i == 2 || j == 2 {
+                        pole.iter().map(|x| x.clone() * int(1 + i + j)).collect()
+                    } else {
+                        let w = int(1 + i * j);
+                        vec![w.clone(), w.clone() * int(i), w.clone() * int(j), int(0)]
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    let corner = BezierPatch::from_homogeneous(net).expect("valid");
+    let text = step_text(&[object("corner", Geometry::Patch(corner))]);
+    let edges = edge_curves(&text);
+    assert_eq!(edges.len(), 4, "{edges:?}");
+    assert_eq!(edges.iter().filter(|(a, b)| a == b).count(), 2);
+    assert_eq!(loop_sizes(&text), vec![4]);
+    let back = read_step(&text).expect("reads back");
+    assert_eq!(back[0].surfaces.len(), 1);
 }

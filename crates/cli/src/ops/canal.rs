@@ -26,6 +26,7 @@ use rcagd_algebra::quaternion::Quaternion;
 use rcagd_algebra::rational::format_rational;
 use rcagd_algebra::{Certificate, Poly, QuadExt, Rational, Scalar};
 use rcagd_geom::certify::{patch_on_quadric, polynomial_is_zero};
+use rcagd_geom::weight_sign::{split_patches_adaptive, SignRule};
 use rcagd_geom::{BezierCurve, BezierPatch};
 
 /// The ops of this topic.
@@ -167,34 +168,15 @@ const MAX_SPLITS: (usize, usize) = (4, 4);
 /// Splits every patch with a Bernstein weight ≤ 0 at parameter 1/2 — first in the circle
 /// direction (a characteristic circle over `u ∈ [−1, 1]` may cover more than a half circle,
 /// whose quadratic Bézier form has a weight ≤ 0 in the middle), then along the spine — until
-/// all weights are positive, and certifies the result: all weights positive ⇒ the weight
-/// function has no zero on the patches (no pole, no base point).
+/// all weights are positive ([`split_patches_adaptive`]), and certifies the result: all
+/// weights positive ⇒ the weight function has no zero on the patches (no pole, no base
+/// point).
 fn positive_pieces(
     patches: Vec<BezierPatch<Rational>>,
 ) -> Result<(Vec<BezierPatch<Rational>>, Certificate), OpError> {
-    let half = Rational::from_ratio(1, 2);
-    let positive = |p: &BezierPatch<Rational>| p.weights().iter().all(|w| *w > Rational::zero());
-    let geo = |e: rcagd_geom::GeomError| OpError::new(e.to_string());
-    let mut out = Vec::new();
-    let mut todo: Vec<(BezierPatch<Rational>, usize, usize)> =
-        patches.into_iter().rev().map(|p| (p, 0, 0)).collect();
-    let mut bad = 0usize;
-    while let Some((p, dv, du)) = todo.pop() {
-        if positive(&p) {
-            out.push(p);
-        } else if dv < MAX_SPLITS.0 {
-            let (a, b) = p.subdivide_v(&half).map_err(geo)?;
-            todo.push((b, dv + 1, du));
-            todo.push((a, dv + 1, du));
-        } else if du < MAX_SPLITS.1 {
-            let (a, b) = p.subdivide_u(&half).map_err(geo)?;
-            todo.push((b, dv, du + 1));
-            todo.push((a, dv, du + 1));
-        } else {
-            bad += 1;
-            out.push(p);
-        }
-    }
+    let split = split_patches_adaptive(patches, SignRule::Positive, MAX_SPLITS)
+        .map_err(|e| OpError::new(e.to_string()))?;
+    let (out, bad) = (split.pieces, split.failed);
     let n = out.len();
     let cert = Certificate::decide(
         format!("every Bernstein weight of the {n} patches is > 0 (the weight has no zero: no pole, no base point)"),

@@ -20,6 +20,7 @@ use rcagd::quadric::{
 use rcagd::Certified;
 use rcagd_algebra::rational::format_rational;
 use rcagd_algebra::{Certificate, Rational};
+use rcagd_geom::weight_sign::{split_curve_uniform, split_patch_uniform, SignRule};
 use rcagd_geom::{BezierCurve, BezierPatch};
 
 /// The ops of this topic.
@@ -630,31 +631,22 @@ const MAX_SPLIT: u32 = 4;
 /// `true` if the weights (every `stride`-th coordinate) are all > 0 or all < 0 (an
 /// all-negative piece is the same projective object; exporters negate it).
 fn one_sign(coords: &[Rational], stride: usize) -> bool {
-    let w: Vec<&Rational> = coords.iter().step_by(stride).collect();
-    w.iter().all(|x| **x > Rational::zero()) || w.iter().all(|x| **x < Rational::zero())
+    SignRule::OneSign.holds(coords, stride)
 }
 
 /// The curve, or — if its weights have mixed signs while its weight function has no zero
 /// on `[0, 1]` (e.g. `k0 = |x|² > 0` on the sphere) — its restrictions to the `2^L`
 /// intervals `[i/2^L, (i+1)/2^L]` for the least `L ≤ MAX_SPLIT` that gives every piece
-/// weights of one sign (Bernstein coefficients converge to the function under
-/// subdivision). STEP/IGES need such weights. The certificates: every piece on the
-/// quadric (`Xᵀ Q X ≡ 0`, exact), consecutive pieces join exactly.
+/// weights of one sign ([`split_curve_uniform`]). STEP/IGES need such weights. The
+/// certificates: every piece on the quadric (`Xᵀ Q X ≡ 0`, exact), consecutive pieces
+/// join exactly.
 fn exportable_curve(
     curve: BezierCurve<Rational>,
     q: &rcagd::quadric::Mat4<Rational>,
 ) -> Result<(Geometry, Vec<Certificate>), OpError> {
-    let s = curve.dim() + 1;
-    if one_sign(curve.coords(), s) {
-        return Ok((Geometry::Curve(curve), Vec::new()));
-    }
-    for level in 1..=MAX_SPLIT {
-        let k = 1u32 << level;
-        let at = |i: u32| Rational::from(i) / Rational::from(k);
-        let pieces = (0..k)
-            .map(|i| curve.restrict(&at(i), &at(i + 1)))
-            .collect::<Result<Vec<_>, _>>()?;
-        if pieces.iter().all(|p| one_sign(p.coords(), s)) {
+    match split_curve_uniform(&curve, MAX_SPLIT)? {
+        Some(pieces) if pieces.len() > 1 => {
+            let k = pieces.len();
             let mut certs = vec![Certificate::decide(
                 format!("split into {k} pieces [i/{k}, (i+1)/{k}] with weights of one sign (export); every piece lies on the quadric: Xᵀ Q X ≡ 0"),
                 pieces.iter().all(|p| {
@@ -673,31 +665,21 @@ fn exportable_curve(
                 true,
                 || "two pieces do not join".to_string(),
             ));
-            return Ok((Geometry::Curves(pieces), certs));
+            Ok((Geometry::Curves(pieces), certs))
         }
+        _ => Ok((Geometry::Curve(curve), Vec::new())),
     }
-    Ok((Geometry::Curve(curve), Vec::new()))
 }
 
-/// As [`exportable_curve`] for a patch: its restrictions to the `2^L × 2^L` sub-squares.
+/// As [`exportable_curve`] for a patch: its restrictions to the `2^L × 2^L` sub-squares
+/// ([`split_patch_uniform`], `L ≤ 3`).
 fn exportable_patch(
     patch: BezierPatch<Rational>,
     q: &rcagd::quadric::Mat4<Rational>,
 ) -> Result<(Geometry, Vec<Certificate>), OpError> {
-    let s = patch.dim() + 1;
-    if one_sign(patch.coords(), s) {
-        return Ok((Geometry::Patch(patch), Vec::new()));
-    }
-    for level in 1..=MAX_SPLIT.min(3) {
-        let k = 1u32 << level;
-        let at = |i: u32| Rational::from(i) / Rational::from(k);
-        let mut pieces = Vec::new();
-        for i in 0..k {
-            for j in 0..k {
-                pieces.push(patch.restrict(&at(i), &at(i + 1), &at(j), &at(j + 1))?);
-            }
-        }
-        if pieces.iter().all(|p| one_sign(p.coords(), s)) {
+    match split_patch_uniform(&patch, MAX_SPLIT.min(3))? {
+        Some(pieces) if pieces.len() > 1 => {
+            let k = (1..=8).find(|k| k * k >= pieces.len()).unwrap_or(1);
             let on = pieces
                 .iter()
                 .all(|p| rcagd::quadric::image::certify_patch_on_quadric(p, q, "").holds);
@@ -707,8 +689,8 @@ fn exportable_patch(
                 true,
                 || "a sub-patch is off the quadric".to_string(),
             );
-            return Ok((Geometry::Patches(pieces), vec![cert]));
+            Ok((Geometry::Patches(pieces), vec![cert]))
         }
+        _ => Ok((Geometry::Patch(patch), Vec::new())),
     }
-    Ok((Geometry::Patch(patch), Vec::new()))
 }

@@ -1,0 +1,102 @@
+//! The exchanged weights of the Dupin cyclide (op `dupin_canal`, as in
+//! `examples/recipes/canal.toml`): its patches' weights vary by up to 108× and by more
+//! than 1000 in absolute terms, which OpenCascade's IGES reader flags ("Difference
+//! between weights is too big": `max w − min w > 1000` per entity, `IGES_1374`). The
+//! exported NURBS (STEP, IGES, sidecar) carry balanced weights (`rcagd_io::balance`):
+//! every surface of the sidecar must stay below that threshold, by a wide margin.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+const RECIPE: &str = r#"
+[[object]]
+name = "dupin_cyclide"
+op = "dupin_canal"
+rho = 4
+r0 = "3/2"
+s = "1/7"
+"#;
+
+fn temp_dir() -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("exchange-weights-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("create temp dir");
+    dir
+}
+
+/// `p/q` or `p` as f64.
+fn num(v: &serde_json::Value) -> f64 {
+    let s = v.as_str().expect("exact string");
+    match s.split_once('/') {
+        Some((p, q)) => p.parse::<f64>().expect("num") / q.parse::<f64>().expect("den"),
+        None => s.parse().expect("num"),
+    }
+}
+
+/// All weights (first homogeneous coordinate) of a nested list of points.
+fn weights(v: &serde_json::Value, out: &mut Vec<f64>) {
+    let Some(a) = v.as_array() else { return };
+    if a.first().is_some_and(|x| x.is_string()) {
+        out.push(num(&a[0]));
+    } else {
+        for x in a {
+            weights(x, out);
+        }
+    }
+}
+
+fn spread(w: &[f64]) -> (f64, f64) {
+    let lo = w.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = w.iter().copied().fold(0.0, f64::max);
+    (hi / lo, hi - lo)
+}
+
+#[test]
+fn dupin_cyclide_weights_are_balanced_for_exchange() {
+    let dir = temp_dir();
+    let recipe = dir.join("dupin.toml");
+    std::fs::write(&recipe, RECIPE).expect("write recipe");
+    let out = Command::new(env!("CARGO_BIN_EXE_rcagd"))
+        .args(["build", "--format", "json,exact,iges", "--out"])
+        .arg(&dir)
+        .arg(&recipe)
+        .output()
+        .expect("run rcagd");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let read = |name: &str| -> serde_json::Value {
+        let text = std::fs::read_to_string(dir.join(name)).expect("output file");
+        serde_json::from_str(&text).expect("json")
+    };
+    // the construction itself: weights spread over > 100× and > 1000
+    let obj = read("dupin_cyclide.json");
+    let mut worst = (0.0f64, 0.0f64);
+    for patch in obj["control_points"].as_array().expect("patches") {
+        let mut w = Vec::new();
+        weights(patch, &mut w);
+        let (r, d) = spread(&w);
+        worst = (worst.0.max(r), worst.1.max(d));
+    }
+    assert!(worst.0 > 100.0 && worst.1 > 1000.0, "{worst:?}");
+    // the exchanged surfaces: ratio ≤ 16 after balancing, difference far below 1000
+    let side = read("dupin_cyclide.exact.json");
+    let surfaces = side["objects"][0]["surfaces"].as_array().expect("surfaces");
+    assert_eq!(surfaces.len(), 16);
+    for (k, s) in surfaces.iter().enumerate() {
+        let mut w = Vec::new();
+        weights(&s["control_points"], &mut w);
+        assert!(w.iter().all(|x| *x > 0.0), "surface {k}");
+        let (r, d) = spread(&w);
+        assert!(r <= 16.0, "surface {k}: weight ratio {r}");
+        assert!(
+            d <= 100.0,
+            "surface {k}: weight difference {d} (OpenCascade warns above 1000)"
+        );
+    }
+    assert!(dir.join("dupin_cyclide.igs").exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
