@@ -235,15 +235,7 @@ fn build<F: Scalar>(
     q[a] = qa;
     q[b] = qb;
     q[j] = qj;
-    let w = spine.weight();
-    let m = spine.center_polys();
-    let r = spine.radius_poly();
-    let mut x = [
-        q0.mul_t(w),
-        q0.mul_t(&m[0]).add(&q[0].mul_t(r)),
-        q0.mul_t(&m[1]).add(&q[1].mul_t(r)),
-        q0.mul_t(&m[2]).add(&q[2].mul_t(r)),
-    ];
+    let mut x = envelope_from_normals(spine, &q0, &q);
     if F::EXACT {
         reduce(&mut x)?;
     }
@@ -257,6 +249,24 @@ fn build<F: Scalar>(
         domain: None,
         construction: Construction::PeternellPottmann,
     })
+}
+
+/// `X = (W q₀, M q₀ + R q)`: the envelope `x = m + r q/q₀` (2.17) in homogeneous
+/// coordinates from the homogeneous unit normal `(q₀, q)` of the characteristic circles.
+pub(crate) fn envelope_from_normals<F: Scalar>(
+    spine: &CanalSpine<F>,
+    q0: &BiPoly<F>,
+    q: &[BiPoly<F>; 3],
+) -> [BiPoly<F>; 4] {
+    let w = spine.weight();
+    let m = spine.center_polys();
+    let r = spine.radius_poly();
+    [
+        q0.mul_t(w),
+        q0.mul_t(&m[0]).add(&q[0].mul_t(r)),
+        q0.mul_t(&m[1]).add(&q[1].mul_t(r)),
+        q0.mul_t(&m[2]).add(&q[2].mul_t(r)),
+    ]
 }
 
 /// Removes the common factors in `t` and in `u` of the four components (exact scalars).

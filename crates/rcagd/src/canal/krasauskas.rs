@@ -491,15 +491,7 @@ pub(crate) fn envelope_of_pencil<F: Scalar>(
     q[others[0]] = xr;
     q[others[1]] = xi;
     q[j] = if axis.positive { xd } else { xd.neg() };
-    let w = spine.weight();
-    let m = spine.center_polys();
-    let r = spine.radius_poly();
-    [
-        x0.mul_t(w),
-        x0.mul_t(&m[0]).add(&q[0].mul_t(r)),
-        x0.mul_t(&m[1]).add(&q[1].mul_t(r)),
-        x0.mul_t(&m[2]).add(&q[2].mul_t(r)),
-    ]
+    super::envelope::envelope_from_normals(spine, &x0, &q)
 }
 
 /// Irreducible factors over `Q(i)` of a Gaussian polynomial `l` (through the norm `l l̄`),
