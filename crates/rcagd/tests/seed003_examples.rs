@@ -926,6 +926,16 @@ fn s003_2_4_krasauskas_reduction() {
             .expect("spine"),
         ),
         (
+            // a polynomial quintic family tangent to the plane z = −1 (r = m₃ + 1, so
+            // D = ṁ₁² + ṁ₂²): the pencil goes below the construction's (3k − 2, 2) and the
+            // bound (2.37) (erratum 003-E9)
+            "plane-tangent quintic",
+            CanalSpine::polynomial(
+                [p(&[0, 1, 0, 1]), p(&[0, 0, 2, 0, 0, 1]), p(&[0, 1, 1])],
+                p(&[1, 1, 1]),
+            ),
+        ),
+        (
             "quadratic",
             CanalSpine::new(
                 w.clone(),
@@ -941,6 +951,7 @@ fn s003_2_4_krasauskas_reduction() {
     let expected = [
         ((4, 2), (2, 2), (2, 2), (4, 2)),
         ((4, 2), (2, 2), (2, 2), (4, 2)),
+        ((13, 2), (9, 2), (9, 2), (13, 2)),
         ((6, 2), (6, 2), (6, 2), (4, 2)),
     ];
     for ((name, spine), want) in cases.into_iter().zip(expected) {
@@ -971,7 +982,16 @@ fn s003_2_4_krasauskas_reduction() {
                 else {
                     panic!("{name}: not a Krasauskas build");
                 };
-                assert_eq!(initial_degree, 2, "{name}");
+                // the first pencil has the degree of P (module docs)
+                let dp = spine
+                    .derivative_numerators()
+                    .expect("P")
+                    .iter()
+                    .filter_map(Poly::degree)
+                    .max()
+                    .unwrap_or(0);
+                assert_eq!(initial_degree, dp, "{name}");
+                assert!(reduced_degree <= initial_degree, "{name}");
                 // (k + 2·deg(a, b), 2) before common factors in t cancel
                 assert!(
                     b.degree().0 <= 2 * reduced_degree + spine.degree(),
