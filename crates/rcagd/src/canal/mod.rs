@@ -33,7 +33,9 @@
 //!   their combination, which also removes collapsed circles). [`canal_surface`] tries it
 //!   beside Peternell–Pottmann for every axis and split ([`Method`]) and keeps the lowest
 //!   bidegree: the ring torus and the Dupin cyclide from rational circle spines come out
-//!   biquadratic `(2, 2)` (Peternell–Pottmann: `(4, 2)`; bound (2.37): `(4, 2)`).
+//!   biquadratic `(2, 2)` (Peternell–Pottmann: `(4, 2)`; bound (2.37): `(4, 2)`), and a
+//!   polynomial quintic family tangent to a plane `(9, 2)` (Peternell–Pottmann and (2.37):
+//!   `(13, 2)`).
 //!
 //! **Limits of the degree reduction.** The bound of Satz 2 (2.37) ([`krasauskas_bound`]) is
 //! over `C`; the reduction works over the field of the data (`Q(i)`), so when the factors of
