@@ -310,6 +310,14 @@ impl<F: Scalar> BiPoly<F> {
     }
 }
 
+/// `(max deg_t, max deg_u)` of homogeneous components (the bidegree of a surface).
+pub fn bidegree<F: Scalar>(x: &[BiPoly<F>]) -> (usize, usize) {
+    (
+        x.iter().filter_map(BiPoly::degree_t).max().unwrap_or(0),
+        x.iter().filter_map(BiPoly::degree_u).max().unwrap_or(0),
+    )
+}
+
 /// The rational tensor-product Bézier patch of the homogeneous coordinates `X` on
 /// `[t₀, t₁] × [u₀, u₁]` (first patch parameter `t`, second `u`), of bidegree
 /// `(deg_t, deg_u)` of `X`.

@@ -32,7 +32,7 @@
 //! plane and on the prescribed circle) and in the prescribed contact plane, as polynomial
 //! identities in `u`; for the plane end also the tangency `n·x_t ≡ 0` along `C`.
 
-use super::bipoly::BiPoly;
+use super::bipoly::{bidegree, BiPoly};
 use super::envelope::{canal_certificates, CanalBuild, CanalOptions};
 use super::{CanalError, CanalSpine};
 use crate::error::format_scalar;
@@ -647,11 +647,7 @@ pub fn blend_sphere_plane_f64(
 
 impl<F: Scalar> InvertedCanal<F> {
     fn deg_t(&self) -> usize {
-        self.x
-            .iter()
-            .filter_map(BiPoly::degree_t)
-            .max()
-            .unwrap_or(0)
+        bidegree(&self.x).0
     }
 
     /// The end circle (`0`: `t = 0`, `1`: `t = 1`) as homogeneous polynomials in `u`.
@@ -703,14 +699,7 @@ impl<F: Scalar> InvertedCanal<F> {
 
     /// The bidegree.
     pub fn degree(&self) -> (usize, usize) {
-        (
-            self.deg_t(),
-            self.x
-                .iter()
-                .filter_map(BiPoly::degree_u)
-                .max()
-                .unwrap_or(0),
-        )
+        bidegree(&self.x)
     }
 }
 

@@ -46,7 +46,7 @@
 //! `Γ(s, t) = π(k(p)) − k₄(p)·(w₁, w₂, w₃)/w₄` is a rational parametrization over `Q` of the
 //! whole envelope (no square root at all) — [`QuadraticCanal`].
 
-use super::bipoly::{patch_of, BiPoly};
+use super::bipoly::{bidegree, patch_of, BiPoly};
 use super::krasauskas;
 use super::sum_of_squares::{sum_of_two_squares_approx, GaussianSplit, SumOfSquares};
 use super::{CanalError, CanalSpine};
@@ -761,18 +761,7 @@ impl<F: Scalar> CanalSurface<F> {
 
     /// The bidegree `(deg_t, deg_u)`.
     pub fn degree(&self) -> (usize, usize) {
-        (
-            self.x
-                .iter()
-                .filter_map(BiPoly::degree_t)
-                .max()
-                .unwrap_or(0),
-            self.x
-                .iter()
-                .filter_map(BiPoly::degree_u)
-                .max()
-                .unwrap_or(0),
-        )
+        bidegree(&self.x)
     }
 
     /// The homogeneous point `X(t, u)`.
@@ -1233,18 +1222,7 @@ impl<F: Scalar> QuadraticCanal<F> {
 
     /// `(deg_s, deg_t)`.
     pub fn degree(&self) -> (usize, usize) {
-        (
-            self.x
-                .iter()
-                .filter_map(BiPoly::degree_t)
-                .max()
-                .unwrap_or(0),
-            self.x
-                .iter()
-                .filter_map(BiPoly::degree_u)
-                .max()
-                .unwrap_or(0),
-        )
+        bidegree(&self.x)
     }
 
     /// The point `Γ(s, t)`.

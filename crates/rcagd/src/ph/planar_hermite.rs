@@ -77,24 +77,7 @@ impl<F: Scalar> PlanarHermiteData<F> {
     }
 
     fn check(&self) -> Result<(), PhError> {
-        if self.d0.iter().all(|x| x.is_zero()) {
-            return Err(PhError::ZeroTangent(
-                "the start derivative d0 is zero".into(),
-            ));
-        }
-        if self.d1.iter().all(|x| x.is_zero()) {
-            return Err(PhError::ZeroTangent("the end derivative d1 is zero".into()));
-        }
-        if self.p0 == self.p1 {
-            return Err(PhError::CoincidentEndPoints(
-                "p0 = p1: the Hermite problem needs distinct end points".into(),
-            ));
-        }
-        let ok = |v: &[F; 2]| v.iter().all(|x| x.to_f64().is_finite());
-        if !(ok(&self.p0) && ok(&self.p1) && ok(&self.d0) && ok(&self.d1)) {
-            return Err(PhError::OutOfRange("non-finite Hermite data".into()));
-        }
-        Ok(())
+        super::util::check_hermite_ends(&self.p0, &self.d0, &self.p1, &self.d1)
     }
 
     /// The four interpolants in `F`: for exact `F` every square root must be rational

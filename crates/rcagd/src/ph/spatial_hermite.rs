@@ -82,27 +82,7 @@ impl<F: Scalar> SpatialHermiteData<F> {
     }
 
     fn check(&self) -> Result<(), PhError> {
-        if self.d0.iter().all(|x| x.is_zero()) {
-            return Err(PhError::ZeroTangent(
-                "the start derivative d0 is zero".into(),
-            ));
-        }
-        if self.d1.iter().all(|x| x.is_zero()) {
-            return Err(PhError::ZeroTangent("the end derivative d1 is zero".into()));
-        }
-        if self.p0 == self.p1 {
-            return Err(PhError::CoincidentEndPoints(
-                "p0 = p1: the Hermite problem needs distinct end points".into(),
-            ));
-        }
-        let all = [&self.p0, &self.d0, &self.p1, &self.d1];
-        if all
-            .iter()
-            .any(|v| v.iter().any(|x| !x.to_f64().is_finite()))
-        {
-            return Err(PhError::OutOfRange("non-finite Hermite data".into()));
-        }
-        Ok(())
+        super::util::check_hermite_ends(&self.p0, &self.d0, &self.p1, &self.d1)
     }
 
     /// The interpolant with free angles `φ_0`, `φ_2` given as `(cos φ, sin φ)`.

@@ -731,3 +731,34 @@ impl<E: crate::Certified, F: crate::Certified> ExactOrFloat<E, F> {
         }
     }
 }
+
+/// The preconditions of a first-order Hermite problem (planar or spatial): non-zero end
+/// derivatives, distinct end points, finite data.
+pub(crate) fn check_hermite_ends<F: Scalar>(
+    p0: &[F],
+    d0: &[F],
+    p1: &[F],
+    d1: &[F],
+) -> Result<(), super::PhError> {
+    use super::PhError;
+    if d0.iter().all(|x| x.is_zero()) {
+        return Err(PhError::ZeroTangent(
+            "the start derivative d0 is zero".into(),
+        ));
+    }
+    if d1.iter().all(|x| x.is_zero()) {
+        return Err(PhError::ZeroTangent("the end derivative d1 is zero".into()));
+    }
+    if p0 == p1 {
+        return Err(PhError::CoincidentEndPoints(
+            "p0 = p1: the Hermite problem needs distinct end points".into(),
+        ));
+    }
+    if [p0, d0, p1, d1]
+        .iter()
+        .any(|v| v.iter().any(|x| !x.to_f64().is_finite()))
+    {
+        return Err(PhError::OutOfRange("non-finite Hermite data".into()));
+    }
+    Ok(())
+}
