@@ -541,7 +541,7 @@ const ORIENTATION: ParamSpec = ParamSpec::with_default(
 
 const CANAL_SURFACE: OpSpec = OpSpec {
     name: "canal_surface",
-    summary: "the rational canal surface (envelope of spheres) of a rational spine and a polynomial radius on t ∈ [0, 1], exact over Q, of the lowest bidegree found by Peternell–Pottmann (seed 003 §2.1) and Krasauskas' reduced pencil (§2.4)",
+    summary: "the rational canal surface (envelope of spheres) of a rational spine and a polynomial radius on t ∈ [0, 1], exact over Q, by Peternell–Pottmann (seed 003 §2.1) or Krasauskas' reduced pencil (§2.4), by default whichever exports with fewer control points",
     params: &[
         ParamSpec::required("points", ParamKind::Points, "control points [x, y, z] of the spine m(t), t ∈ [0, 1]"),
         ParamSpec::optional("weights", ParamKind::Numbers, "spine weights (default all 1)"),
@@ -551,7 +551,7 @@ const CANAL_SURFACE: OpSpec = OpSpec {
             "method",
             ParamKind::Choice(&["lowest", "peternell-pottmann", "krasauskas"]),
             "\"lowest\"",
-            "the construction: \"lowest\" keeps the lower bidegree of both (Krasauskas' only where its Bernstein weights on the domain are positive), or exactly the one named (Krasauskas' pencil is built over Q only)",
+            "the construction: \"lowest\" builds both and keeps the one with fewer control points once split into pieces with positive weights (on a tie the lower bidegree), or exactly the one named (Krasauskas' pencil is built over Q only)",
         ),
     ],
     example: r#"[[object]]

@@ -34,6 +34,7 @@ use super::{CanalError, CanalSpine};
 use crate::ph::PhCurve;
 use rcagd_algebra::roots::count_real_roots_in;
 use rcagd_algebra::{Poly, QuadExt, Rational, Scalar};
+use rcagd_geom::weight_sign::{split_patches_adaptive, SignRule};
 
 /// The largest height `n` of the candidate directions `(a, b, c)/n`.
 const MAX_HEIGHT: i64 = 17;
@@ -210,10 +211,12 @@ fn oriented(spine: &CanalSpine<Rational>, o: Orientation) -> CanalSpine<Rational
 /// reparametrization of the domain, `W` vanishes on it, the axis is fixed by `options`, or no
 /// direction is found, this is [`canal_surface`] itself.
 ///
-/// With [`Method::Lowest`] a Krasauskas build (its weight `W·|a + u b|²` is positive where
-/// the pencil has no base point, but its Bernstein weights on the domain charts `u ∈ [−1, 1]`
-/// need not be) is kept only if every weight of [`CanalSurface::domain_patches`] is positive;
-/// otherwise the Peternell–Pottmann build of the pole-free frame is returned.
+/// With [`Method::Lowest`] both constructions are built and the one that exports smaller
+/// is kept: the domain patches ([`CanalSurface::domain_patches`]) are split into pieces with
+/// positive Bernstein weights (`rcagd_geom::weight_sign`, at most `4 + 4` bisections, as
+/// the recipe ops export them) and the build with fewer control points after splitting
+/// wins (on a tie, the lower bidegree). A Krasauskas build (seed 003 §2.4) often has the
+/// lower bidegree but a weight `W·|a + u b|²` that varies more on the domain.
 ///
 /// # Errors
 /// As [`canal_surface`]; [`CanalError::InvalidArgument`] without a domain.
@@ -222,24 +225,47 @@ pub fn canal_surface_pole_free(
     options: &CanalOptions,
 ) -> Result<CanalBuild, CanalError> {
     let built = pole_free_any(spine, options)?;
-    let keep = match &built {
-        CanalBuild::Rational(s) if options.method == Method::Lowest => {
-            !matches!(s.construction(), Construction::Krasauskas { .. })
-                || s.domain_patches().is_ok_and(|ps| {
-                    ps.iter()
-                        .all(|p| p.weights().iter().all(|w| *w > Rational::ZERO))
-                })
-        }
-        _ => true,
+    let is_krasauskas = |b: &CanalBuild| {
+        matches!(
+            b,
+            CanalBuild::Rational(s) if matches!(s.construction(), Construction::Krasauskas { .. })
+        )
     };
-    if keep {
+    if options.method != Method::Lowest || !is_krasauskas(&built) {
         return Ok(built);
     }
     let opts = CanalOptions {
         method: Method::PeternellPottmann,
         ..options.clone()
     };
-    pole_free_any(spine, &opts)
+    let Ok(pp) = pole_free_any(spine, &opts) else {
+        return Ok(built);
+    };
+    match (export_size(&built), export_size(&pp)) {
+        (Some(k), Some(p)) if (k, built.degree()) <= (p, pp.degree()) => Ok(built),
+        (Some(_), None) => Ok(built),
+        _ => Ok(pp),
+    }
+}
+
+/// The number of control points of the domain patches after splitting them into pieces
+/// with positive weights (`None` if that fails within the bisection limit).
+fn export_size(b: &CanalBuild) -> Option<usize> {
+    let CanalBuild::Rational(s) = b else {
+        return None;
+    };
+    let patches = s.domain_patches().ok()?;
+    let split = split_patches_adaptive(patches, SignRule::Positive, (4, 4)).ok()?;
+    if split.failed > 0 {
+        return None;
+    }
+    Some(
+        split
+            .pieces
+            .iter()
+            .map(|p| (p.degree().0 + 1) * (p.degree().1 + 1))
+            .sum(),
+    )
 }
 
 fn pole_free_any(
