@@ -246,6 +246,16 @@ proptest! {
             Ok(s) => {
                 prop_assert!(holds(&s.certify()));
                 prop_assert!(s.residual() <= 1e-9 * (1.0 + s.data.p1.iter().map(|x| x.abs()).fold(0.0, f64::max)));
+                // the refined default is at least as good as every grid candidate
+                use core::f64::consts::FRAC_PI_2;
+                for a in [-FRAC_PI_2, 0.0, FRAC_PI_2, 2.0 * FRAC_PI_2] {
+                    for b in [-FRAC_PI_2, 0.0, FRAC_PI_2, 2.0 * FRAC_PI_2] {
+                        let Ok(g) = data.interpolant_f64(a, b) else { continue };
+                        let Ok(e) = g.curve.to_poly_curve().bending_energy() else { continue };
+                        prop_assert!(s.bending_energy <= e * (1.0 + 1e-6) + 1e-12,
+                            "default energy {} > grid ({a}, {b}) energy {e}", s.bending_energy);
+                    }
+                }
             }
             Err(PhError::Degenerate(_)) => {}
             Err(e) => return Err(TestCaseError::fail(e.to_string())),

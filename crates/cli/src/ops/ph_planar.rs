@@ -128,7 +128,7 @@ const PH_SPATIAL_HERMITE: OpSpec = OpSpec {
         ParamSpec::optional(
             "tau0",
             ParamKind::Number,
-            "tan(φ0/2) (φ0 = −π/2 is −1); with tau2 selects the member; default: the least bending energy of φ0, φ2 ∈ {−π/2, 0, π/2, π}",
+            "tan(φ0/2) (φ0 = −π/2 is −1); with tau2 selects the member; default: the least bending energy of φ0, φ2 ∈ {−π/2, 0, π/2, π}, refined by a golden-section search (a local minimum)",
         ),
         ParamSpec::optional("tau2", ParamKind::Number, "tan(φ2/2)"),
     ],

@@ -19,8 +19,9 @@
 //! keep exact data exact; the construction is exact whenever the three square roots of
 //! [`solve_qiq`] are rational, otherwise it runs in `f64` and certifies the interpolation
 //! to a tolerance, reporting the residual. The default ([`SpatialHermiteData::default_f64`])
-//! is the least bending energy interpolant among `φ_0, φ_2 ∈ {−π/2, 0, π/2, π}` (which
-//! includes the customary `φ_0 = φ_2 = −π/2`).
+//! starts from the least bending energy interpolant among `φ_0, φ_2 ∈ {−π/2, 0, π/2, π}`
+//! (which includes the customary `φ_0 = φ_2 = −π/2`) and refines both angles by a cyclic
+//! golden-section search (a local minimum of the bending energy).
 
 use super::hodograph::{solve_qiq, PhCurve};
 use super::planar::{gauss7, scalar_cert};
@@ -58,6 +59,36 @@ pub struct SpatialHermiteQuintic<F> {
 /// The result of [`SpatialHermiteData::solve_auto`].
 pub type SpatialHermiteResult =
     super::util::ExactOrFloat<SpatialHermiteQuintic<Rational>, SpatialHermiteQuintic<f64>>;
+
+/// The minimizer of `f` on `[lo, hi]` by `n` golden-section steps (the better of the
+/// final bracket's interior points; `f` may be `+∞` where undefined).
+fn golden_min(f: impl Fn(f64) -> f64, lo: f64, hi: f64, n: usize) -> f64 {
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    let (mut a, mut b) = (lo, hi);
+    let mut c = b - g * (b - a);
+    let mut d = a + g * (b - a);
+    let (mut fc, mut fd) = (f(c), f(d));
+    for _ in 0..n {
+        if fc <= fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - g * (b - a);
+            fc = f(c);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + g * (b - a);
+            fd = f(d);
+        }
+    }
+    if fc <= fd {
+        c
+    } else {
+        d
+    }
+}
 
 /// `(cos φ, sin φ) = ((1 − τ²)/(1 + τ²), 2τ/(1 + τ²))` for `τ = tan(φ/2)` (exact for
 /// rational `τ`; `τ = −1` gives `φ = −π/2`).
@@ -165,27 +196,31 @@ impl<F: Scalar> SpatialHermiteData<F> {
             .interpolant((phi0.cos(), phi0.sin()), (phi2.cos(), phi2.sin()))
     }
 
-    /// The least bending energy `f64` interpolant among `φ_0, φ_2 ∈ {−π/2, 0, π/2, π}`
-    /// (candidates compared by a 16 × 7-node Gauss–Legendre estimate; the chosen one's
-    /// energy is then computed adaptively).
+    /// The least bending energy `f64` interpolant: the best of `φ_0, φ_2 ∈ {−π/2, 0, π/2, π}`,
+    /// refined by a cyclic golden-section search in `φ_0` and `φ_2` (brackets of half a turn
+    /// around the current angles, shrinking each round) from there. Candidates are compared
+    /// by a 16 × 7-node Gauss–Legendre estimate; the chosen one's energy is then computed
+    /// adaptively. The refinement reaches a local minimum near the best grid point (the
+    /// energy as a function of the two angles need not be unimodal).
     ///
     /// # Errors
     /// As [`Self::interpolant`] (if every candidate fails, the first error).
     pub fn default_f64(&self) -> Result<SpatialHermiteQuintic<f64>, PhError> {
         use core::f64::consts::FRAC_PI_2;
+        let d = self.to_f64();
+        let eval = |a: f64, b: f64| d.build((a.cos(), a.sin()), (b.cos(), b.sin()));
         let angles = [-FRAC_PI_2, 0.0, FRAC_PI_2, 2.0 * FRAC_PI_2];
-        let mut best: Option<SpatialHermiteQuintic<f64>> = None;
+        let mut best: Option<(f64, f64, SpatialHermiteQuintic<f64>)> = None;
         let mut first_err = None;
         for &a in &angles {
             for &b in &angles {
-                let d = self.to_f64();
-                match d.build((a.cos(), a.sin()), (b.cos(), b.sin())) {
+                match eval(a, b) {
                     Ok(s) => {
                         if best
                             .as_ref()
-                            .is_none_or(|x| s.bending_energy < x.bending_energy * (1.0 - 1e-12))
+                            .is_none_or(|x| s.bending_energy < x.2.bending_energy * (1.0 - 1e-12))
                         {
-                            best = Some(s);
+                            best = Some((a, b, s));
                         }
                     }
                     Err(e) => {
@@ -194,14 +229,35 @@ impl<F: Scalar> SpatialHermiteData<F> {
                 }
             }
         }
-        match (best, first_err) {
-            (Some(mut b), _) => {
-                b.bending_energy = b.curve.to_poly_curve().bending_energy()?;
-                Ok(b)
+        let Some((mut a, mut b, mut sol)) = best else {
+            return Err(
+                first_err.unwrap_or_else(|| PhError::NoRealSolution("no candidate angles".into()))
+            );
+        };
+        // cyclic golden-section refinement; failures count as +∞
+        let energy = |a: f64, b: f64| eval(a, b).map_or(f64::INFINITY, |s| s.bending_energy);
+        let mut half = FRAC_PI_2;
+        let mut e = sol.bending_energy;
+        for _ in 0..4 {
+            let na = golden_min(|x| energy(x, b), a - half, a + half, 12);
+            let ea = energy(na, b);
+            if ea < e {
+                (a, e) = (na, ea);
             }
-            (None, Some(e)) => Err(e),
-            (None, None) => Err(PhError::NoRealSolution("no candidate angles".into())),
+            let nb = golden_min(|x| energy(a, x), b - half, b + half, 12);
+            let eb = energy(a, nb);
+            if eb < e {
+                (b, e) = (nb, eb);
+            }
+            half *= 0.5;
         }
+        if let Ok(s) = eval(a, b) {
+            if s.bending_energy < sol.bending_energy {
+                sol = s;
+            }
+        }
+        sol.bending_energy = sol.curve.to_poly_curve().bending_energy()?;
+        Ok(sol)
     }
 
     /// Exact (over `Rational`) for the rotations given as rational half-angle tangents
