@@ -174,6 +174,29 @@ pub enum Construction {
     },
 }
 
+impl<F: Scalar> CanalSurface<F> {
+    /// A surface on all of `R` (no domain, no reparametrization) from its parts.
+    fn from_parts(
+        spine: &CanalSpine<F>,
+        numerators: &[Poly<F>; 4],
+        split: &[Poly<F>; 2],
+        axis: AxisChoice,
+        x: [BiPoly<F>; 4],
+        construction: Construction,
+    ) -> Self {
+        CanalSurface {
+            spine: spine.clone(),
+            numerators: numerators.clone(),
+            split: split.clone(),
+            axis,
+            x,
+            reparametrized: None,
+            domain: None,
+            construction,
+        }
+    }
+}
+
 fn sq<F: Scalar>(p: &Poly<F>) -> Poly<F> {
     p * p
 }
@@ -239,16 +262,14 @@ fn build<F: Scalar>(
     if F::EXACT {
         reduce(&mut x)?;
     }
-    Ok(CanalSurface {
-        spine: spine.clone(),
-        numerators: numerators.clone(),
-        split: g.clone(),
+    Ok(CanalSurface::from_parts(
+        spine,
+        numerators,
+        g,
         axis,
         x,
-        reparametrized: None,
-        domain: None,
-        construction: Construction::PeternellPottmann,
-    })
+        Construction::PeternellPottmann,
+    ))
 }
 
 /// `X = (W q₀, M q₀ + R q)`: the envelope `x = m + r q/q₀` (2.17) in homogeneous
@@ -355,20 +376,18 @@ fn build_krasauskas(
             "the Krasauskas pencil gives the zero point".into(),
         ));
     }
-    Ok(CanalSurface {
-        spine: spine.clone(),
-        numerators: numerators.clone(),
-        split: g.clone(),
+    Ok(CanalSurface::from_parts(
+        spine,
+        numerators,
+        g,
         axis,
         x,
-        reparametrized: None,
-        domain: None,
-        construction: Construction::Krasauskas {
+        Construction::Krasauskas {
             initial_degree: pencil.initial_degree,
             reduced_degree: pencil.degree(),
             steps: pencil.steps,
         },
-    })
+    ))
 }
 
 /// [`build_best`] over `Q`, also trying Krasauskas' reduced pencil for every admissible axis.
