@@ -99,6 +99,53 @@ impl AxisChoice {
         }
         out
     }
+
+    /// `(j, a, b)`: the axis `j` (clamped to `0..3`) and the other two axes in order.
+    fn indices(&self) -> (usize, usize, usize) {
+        let j = self.axis.min(2);
+        let mut others = (0..3).filter(|&i| i != j);
+        let a = others.next().unwrap_or(0);
+        let b = others.next().unwrap_or(1);
+        (j, a, b)
+    }
+
+    /// `P₄ + σPⱼ` of the derivative numerators: `c` of (2.13) and `α` of Krasauskas' form.
+    pub(crate) fn pole_polynomial<F: Scalar>(&self, p: &[Poly<F>; 4]) -> Poly<F> {
+        let (j, _, _) = self.indices();
+        if self.positive {
+            &p[3] + &p[j]
+        } else {
+            &p[3] - &p[j]
+        }
+    }
+
+    /// The numerators `P_a`, `P_b` of the two other axes.
+    pub(crate) fn other_numerators<'a, F: Scalar>(
+        &self,
+        p: &'a [Poly<F>; 4],
+    ) -> (&'a Poly<F>, &'a Poly<F>) {
+        let (_, a, b) = self.indices();
+        (&p[a], &p[b])
+    }
+
+    /// The normal `q` in the user's frame from its components along `a`, `b` and `σ j`.
+    pub(crate) fn place<F: Scalar>(
+        &self,
+        along_a: BiPoly<F>,
+        along_b: BiPoly<F>,
+        along_j: BiPoly<F>,
+    ) -> [BiPoly<F>; 3] {
+        let (j, a, b) = self.indices();
+        let mut q: [BiPoly<F>; 3] = [BiPoly::zero(), BiPoly::zero(), BiPoly::zero()];
+        q[a] = along_a;
+        q[b] = along_b;
+        q[j] = if self.positive {
+            along_j
+        } else {
+            along_j.neg()
+        };
+        q
+    }
 }
 
 /// Options of the canal-surface builders.
@@ -228,11 +275,9 @@ fn build<F: Scalar>(
     axis: AxisChoice,
 ) -> Result<CanalSurface<F>, CanalError> {
     let p = numerators;
-    let j = axis.axis.min(2);
-    let others: Vec<usize> = (0..3).filter(|&i| i != j).collect();
-    let (a, b) = (others[0], others[1]);
-    let pj = if axis.positive { p[j].clone() } else { -&p[j] };
-    let c = &p[3] + &pj;
+    let (j, _, _) = axis.indices();
+    let (pa, pb) = axis.other_numerators(p);
+    let c = axis.pole_polynomial(p);
     let s = p.iter().map(poly_scale).fold(0.0, f64::max);
     if small(&c, s) {
         return Err(CanalError::DegenerateSpine(format!(
@@ -244,20 +289,14 @@ fn build<F: Scalar>(
     let [g1, g2] = g;
     let two = F::from_i64(2);
     let k0 = BiPoly::new(vec![c.clone(), Poly::zero(), c]);
-    let k1 = BiPoly::new(vec![g1 - &p[a], g2.scale(&-two.clone()), -&(g1 + &p[a])]);
-    let k2 = BiPoly::new(vec![-&(g2 + &p[b]), g1.scale(&-two.clone()), g2 - &p[b]]);
+    let k1 = BiPoly::new(vec![g1 - pa, g2.scale(&-two.clone()), -&(g1 + pa)]);
+    let k2 = BiPoly::new(vec![-&(g2 + pb), g1.scale(&-two.clone()), g2 - pb]);
     let (k00, k11, k22) = (k0.mul(&k0), k1.mul(&k1), k2.mul(&k2));
     let q0 = k00.add(&k11).add(&k22).div_u2_plus_1()?;
     let qa = k1.mul(&k0).scale(&two).div_u2_plus_1()?;
     let qb = k2.mul(&k0).scale(&two).div_u2_plus_1()?;
-    let mut qj = k11.add(&k22).sub(&k00).div_u2_plus_1()?;
-    if !axis.positive {
-        qj = qj.neg();
-    }
-    let mut q: [BiPoly<F>; 3] = [BiPoly::zero(), BiPoly::zero(), BiPoly::zero()];
-    q[a] = qa;
-    q[b] = qb;
-    q[j] = qj;
+    let qj = k11.add(&k22).sub(&k00).div_u2_plus_1()?;
+    let q = axis.place(qa, qb, qj);
     let mut x = envelope_from_normals(spine, &q0, &q);
     if F::EXACT {
         reduce(&mut x)?;

@@ -464,13 +464,9 @@ pub(crate) fn reduced_pencil<F: Scalar>(
     axis: super::AxisChoice,
     factors: &dyn Fn(&CPoly<F>) -> Vec<CPoly<F>>,
 ) -> Result<Pencil<F>, CanalError> {
-    let p = numerators;
-    let j = axis.axis.min(2);
-    let others: Vec<usize> = (0..3).filter(|&i| i != j).collect();
-    let (ia, ib) = (others[0], others[1]);
-    let pj = if axis.positive { p[j].clone() } else { -&p[j] };
-    let alpha = &p[3] + &pj;
-    let beta = &cpoly(&p[ia]) + &times_i(&cpoly(&p[ib]));
+    let alpha = axis.pole_polynomial(numerators);
+    let (pa, pb) = axis.other_numerators(numerators);
+    let beta = &cpoly(pa) + &times_i(&cpoly(pb));
     let w = &cpoly(&g[0]) + &times_i(&cpoly(&g[1]));
     let mut pencil = Pencil::initial(&alpha, &beta, &w)?;
     pencil.reduce(factors);
@@ -484,14 +480,8 @@ pub(crate) fn envelope_of_pencil<F: Scalar>(
     pencil: &Pencil<F>,
     axis: super::AxisChoice,
 ) -> [BiPoly<F>; 4] {
-    let j = axis.axis.min(2);
-    let others: Vec<usize> = (0..3).filter(|&i| i != j).collect();
     let [x0, xr, xi, xd] = pencil.sphere_image();
-    let mut q: [BiPoly<F>; 3] = [BiPoly::zero(), BiPoly::zero(), BiPoly::zero()];
-    q[others[0]] = xr;
-    q[others[1]] = xi;
-    q[j] = if axis.positive { xd } else { xd.neg() };
-    super::envelope::envelope_from_normals(spine, &x0, &q)
+    super::envelope::envelope_from_normals(spine, &x0, &axis.place(xr, xi, xd))
 }
 
 /// Irreducible factors over `Q(i)` of a Gaussian polynomial `l` (through the norm `l l̄`),
