@@ -95,6 +95,11 @@ fn cpoly<F: Scalar>(p: &Poly<F>) -> CPoly<F> {
     p.map(|c| Complex::from_real(c.clone()))
 }
 
+/// `c·v` for a polynomial `c` and a vector `v ∈ C[t]²`.
+fn times<F: Scalar>(c: &CPoly<F>, v: &[CPoly<F>; 2]) -> [CPoly<F>; 2] {
+    [c * &v[0], c * &v[1]]
+}
+
 fn times_i<F: Scalar>(p: &CPoly<F>) -> CPoly<F> {
     p.scale(&Complex::i())
 }
@@ -184,12 +189,8 @@ impl<F: Scalar> Pencil<F> {
         if (0..2).any(|i| la[i] != lb[i].clone() * r.clone()) {
             return false;
         }
-        let m = Poly::monomial(r, da - db);
-        let new = [
-            &self.a[0] - &(&m * &self.b[0]),
-            &self.a[1] - &(&m * &self.b[1]),
-        ];
-        self.a = new;
+        let mb = times(&Poly::monomial(r, da - db), &self.b);
+        self.a = [&self.a[0] - &mb[0], &self.a[1] - &mb[1]];
         true
     }
 
@@ -202,35 +203,34 @@ impl<F: Scalar> Pencil<F> {
         let real = g.gcd(&conj_poly(&g));
         let (da, db) = (deg_or_zero(&self.a), deg_or_zero(&self.b));
         if real.degree().is_some_and(|d| d > 0) {
-            if let (Ok(a0), Ok(a1)) = (self.a[0].div_exact(&real), self.a[1].div_exact(&real)) {
-                self.a = [a0, a1];
-                return true;
-            }
-            return false;
+            return self.quotient(&real, None).map(|a| self.a = a).is_some();
         }
         let d = g.degree().unwrap_or(0);
         if da < db + 2 * d {
             return false;
         }
-        self.divide_by(&g, None)
-    }
-
-    /// `(a, b) ← ((a + ρb)/σ, σ̄b)`.
-    fn divide_by(&mut self, sigma: &CPoly<F>, rho: Option<&CPoly<F>>) -> bool {
-        let num = match rho {
-            Some(r) => [
-                &self.a[0] + &(r * &self.b[0]),
-                &self.a[1] + &(r * &self.b[1]),
-            ],
-            None => self.a.clone(),
-        };
-        let (Ok(a0), Ok(a1)) = (num[0].div_exact(sigma), num[1].div_exact(sigma)) else {
+        // (a, b) ← (a/σ, σ̄b)
+        let Some(a) = self.quotient(&g, None) else {
             return false;
         };
-        let sc = conj_poly(sigma);
-        self.b = [&sc * &self.b[0], &sc * &self.b[1]];
-        self.a = [a0, a1];
+        self.b = times(&conj_poly(&g), &self.b);
+        self.a = a;
         true
+    }
+
+    /// `(a + ρb)/σ` (`a/σ` without `ρ`), if `σ` divides both entries.
+    fn quotient(&self, sigma: &CPoly<F>, rho: Option<&CPoly<F>>) -> Option<[CPoly<F>; 2]> {
+        let num = match rho {
+            Some(r) => {
+                let rb = times(r, &self.b);
+                [&self.a[0] + &rb[0], &self.a[1] + &rb[1]]
+            }
+            None => self.a.clone(),
+        };
+        match (num[0].div_exact(sigma), num[1].div_exact(sigma)) {
+            (Ok(a0), Ok(a1)) => Some([a0, a1]),
+            _ => None,
+        }
     }
 
     /// Step 3 for one irreducible factor `σ` of `det(a, b)` (module docs). For a real `σ`
@@ -289,29 +289,21 @@ impl<F: Scalar> Pencil<F> {
             return false;
         };
         let rho = Poly::new(rho.iter().map(|x| Complex::from_real(x.clone())).collect());
+        let Some(a) = self.quotient(sigma, Some(&rho)) else {
+            return false;
+        };
         if real {
-            let num = [
-                &self.a[0] + &(&rho * &self.b[0]),
-                &self.a[1] + &(&rho * &self.b[1]),
-            ];
-            return match (num[0].div_exact(sigma), num[1].div_exact(sigma)) {
-                (Ok(a0), Ok(a1)) => {
-                    self.a = [a0, a1];
-                    true
-                }
-                _ => false,
-            };
+            // a real σ: `b` is kept ((a + ρb)/σ is a real change of the pencil)
+            self.a = a;
+            return true;
         }
-        let before = self.key();
-        let saved = self.clone();
-        if !self.divide_by(sigma, Some(&rho)) {
-            *self = saved;
+        let b = times(&conj_poly(sigma), &self.b);
+        let (da, db) = (deg_or_zero(&a), deg_or_zero(&b));
+        if (da.max(db), da + db) >= self.key() {
             return false;
         }
-        if self.key() >= before {
-            *self = saved;
-            return false;
-        }
+        self.a = a;
+        self.b = b;
         true
     }
 
