@@ -175,8 +175,8 @@ pub enum Method {
     Lowest,
     /// Only the Peternell–Pottmann construction (seed 003 §2.1).
     PeternellPottmann,
-    /// Only Krasauskas' reduced pencil (seed 003 §2.4; over `Q` only — a build that needs
-    /// `Q(√d)` falls back to Peternell–Pottmann).
+    /// Only Krasauskas' reduced pencil (seed 003 §2.4; over `Q` only — a build whose split
+    /// needs `Q(√d)` is [`CanalError::NeedsLargerExtension`]).
     Krasauskas,
 }
 
@@ -437,21 +437,19 @@ fn build_best_rational(
     method: Method,
     balance_at: &Rational,
 ) -> Result<CanalSurface<Rational>, CanalError> {
-    let pp = match method {
-        Method::Krasauskas => Err(CanalError::DegenerateSpine(
-            "no admissible axis for Krasauskas' pencil".into(),
-        )),
-        _ => build_best(spine, g, axis),
+    let (mut best, err) = match method {
+        Method::PeternellPottmann => return build_best(spine, g, axis),
+        Method::Krasauskas => (None, None),
+        Method::Lowest => match build_best(spine, g, axis) {
+            Ok(s) => (Some(s), None),
+            Err(e) => (None, Some(e)),
+        },
     };
-    if method == Method::PeternellPottmann {
-        return pp;
-    }
     let numerators = spine.derivative_numerators()?;
     let axes: Vec<AxisChoice> = match axis {
         Some(a) => vec![a],
         None => AxisChoice::all().to_vec(),
     };
-    let mut best = pp.as_ref().ok().cloned();
     for a in axes {
         if let Ok(s) = build_krasauskas(spine, &numerators, g, a, balance_at) {
             let better = match &best {
@@ -463,10 +461,11 @@ fn build_best_rational(
             }
         }
     }
-    match best {
-        Some(b) => Ok(b),
-        None => pp,
-    }
+    best.ok_or_else(|| {
+        err.unwrap_or_else(|| {
+            CanalError::DegenerateSpine("no admissible axis for Krasauskas' pencil".into())
+        })
+    })
 }
 
 fn check_split<F: Scalar>(d: &Poly<F>, g: &[Poly<F>; 2]) -> Result<(), CanalError> {
