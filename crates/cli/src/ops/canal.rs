@@ -162,8 +162,9 @@ fn orientation(args: &OpArgs) -> Result<Orientation, OpError> {
 }
 
 /// The largest number of halvings of [`positive_pieces`] in the circle direction (second
-/// patch parameter) and in the spine direction.
-const MAX_SPLITS: (usize, usize) = (4, 4);
+/// patch parameter) and in the spine direction: the limit the library's pole-free builder
+/// assumes when it compares exported sizes.
+const MAX_SPLITS: (usize, usize) = rcagd::canal::EXPORT_SPLITS;
 
 /// Splits every patch with a Bernstein weight ≤ 0 at parameter 1/2 — first in the circle
 /// direction (a characteristic circle over `u ∈ [−1, 1]` may cover more than a half circle,

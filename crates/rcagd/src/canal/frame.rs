@@ -213,8 +213,8 @@ fn oriented(spine: &CanalSpine<Rational>, o: Orientation) -> CanalSpine<Rational
 ///
 /// With [`Method::Lowest`] both constructions are built and the one that exports smaller
 /// is kept: the domain patches ([`CanalSurface::domain_patches`]) are split into pieces with
-/// positive Bernstein weights (`rcagd_geom::weight_sign`, at most `4 + 4` bisections, as
-/// the recipe ops export them) and the build with fewer control points after splitting
+/// positive Bernstein weights (`rcagd_geom::weight_sign`, at most [`EXPORT_SPLITS`]
+/// bisections, as the recipe ops export them) and the build with fewer control points after splitting
 /// wins (on a tie, the lower bidegree). A Krasauskas build (seed 003 §2.4) often has the
 /// lower bidegree but a weight `W·|a + u b|²` that varies more on the domain.
 ///
@@ -248,14 +248,19 @@ pub fn canal_surface_pole_free(
     }
 }
 
+/// The most bisections in `v` (the circle direction) and in `u` (the spine direction) when a
+/// canal surface's domain patches are split into pieces with positive weights for export
+/// (the recipe ops use the same limit).
+pub const EXPORT_SPLITS: (usize, usize) = (4, 4);
+
 /// The number of control points of the domain patches after splitting them into pieces
-/// with positive weights (`None` if that fails within the bisection limit).
+/// with positive weights (`None` if that fails within [`EXPORT_SPLITS`]).
 fn export_size(b: &CanalBuild) -> Option<usize> {
     let CanalBuild::Rational(s) = b else {
         return None;
     };
     let patches = s.domain_patches().ok()?;
-    let split = split_patches_adaptive(patches, SignRule::Positive, (4, 4)).ok()?;
+    let split = split_patches_adaptive(patches, SignRule::Positive, EXPORT_SPLITS).ok()?;
     if split.failed > 0 {
         return None;
     }

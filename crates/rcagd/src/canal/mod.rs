@@ -63,7 +63,9 @@ pub use envelope::{
     krasauskas_bound, AxisChoice, CanalBuild, CanalOptions, CanalSurface, CharacteristicCircle,
     Construction, KrasauskasBound, Method, Orientation, QuadraticCanal,
 };
-pub use frame::{canal_surface_pole_free, pipe_around_ph_pole_free, pole_free_direction};
+pub use frame::{
+    canal_surface_pole_free, pipe_around_ph_pole_free, pole_free_direction, EXPORT_SPLITS,
+};
 pub use pipe::{pipe_around_ph, pipe_around_ph_poly, pipe_around_planar, pipe_surface};
 pub use sum_of_squares::{
     sum_of_two_squares, sum_of_two_squares_approx, sum_of_two_squares_f64, GaussianSplit,
