@@ -60,9 +60,9 @@ pub struct SpatialHermiteQuintic<F> {
 pub type SpatialHermiteResult =
     super::util::ExactOrFloat<SpatialHermiteQuintic<Rational>, SpatialHermiteQuintic<f64>>;
 
-/// The minimizer of `f` on `[lo, hi]` by `n` golden-section steps (the better of the
-/// final bracket's interior points; `f` may be `+∞` where undefined).
-fn golden_min(f: impl Fn(f64) -> f64, lo: f64, hi: f64, n: usize) -> f64 {
+/// The minimizer of `f` on `[lo, hi]` by `n` golden-section steps and its value (the better
+/// of the final bracket's interior points; `f` may be `+∞` where undefined).
+fn golden_min(f: impl Fn(f64) -> f64, lo: f64, hi: f64, n: usize) -> (f64, f64) {
     let g = (5f64.sqrt() - 1.0) / 2.0;
     let (mut a, mut b) = (lo, hi);
     let mut c = b - g * (b - a);
@@ -84,9 +84,9 @@ fn golden_min(f: impl Fn(f64) -> f64, lo: f64, hi: f64, n: usize) -> f64 {
         }
     }
     if fc <= fd {
-        c
+        (c, fc)
     } else {
-        d
+        (d, fd)
     }
 }
 
@@ -239,13 +239,11 @@ impl<F: Scalar> SpatialHermiteData<F> {
         let mut half = FRAC_PI_2;
         let mut e = sol.bending_energy;
         for _ in 0..4 {
-            let na = golden_min(|x| energy(x, b), a - half, a + half, 12);
-            let ea = energy(na, b);
+            let (na, ea) = golden_min(|x| energy(x, b), a - half, a + half, 12);
             if ea < e {
                 (a, e) = (na, ea);
             }
-            let nb = golden_min(|x| energy(a, x), b - half, b + half, 12);
-            let eb = energy(a, nb);
+            let (nb, eb) = golden_min(|x| energy(a, x), b - half, b + half, 12);
             if eb < e {
                 (b, e) = (nb, eb);
             }
