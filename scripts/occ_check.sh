@@ -46,7 +46,7 @@ if [[ $# -ge 1 && "$1" != -* ]]; then
 else
     dir="$(mktemp -d)"
     echo "writing the exchange test's sample files to $dir ..." >&2
-    (cd "$root" && RCAGD_EXCHANGE_OUT="$dir" cargo test --quiet -p rcagd-io --test exchange write_gallery_files >&2)
+    (cd "$root" && RCAGD_EXCHANGE_OUT="$dir" cargo test --quiet -p rcagd-io --test it exchange::write_gallery_files >&2)
 fi
 
 exec "$venv/bin/python" "$here/occ_check.py" "$dir" "$@"

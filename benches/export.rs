@@ -27,7 +27,7 @@ use rcagd_geom::BezierPatch;
 use rcagd_io::model::{Geometry, Object};
 use std::hint::black_box;
 
-#[path = "../tests/samples/mod.rs"]
+#[path = "../crates/io/tests/it/samples/mod.rs"]
 mod samples;
 
 /// The torus `R = 3`, `r = 1` as 16 exact biquadratic patches ([`samples::torus`]).

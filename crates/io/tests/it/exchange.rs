@@ -10,7 +10,7 @@ use rcagd_io::model::{Geometry, Object};
 use rcagd_io::IoError;
 use serde_json::Value;
 
-mod samples;
+use crate::samples;
 
 use samples::{bicubic, circle, int, q, space_cubic, sphere, torus, tube};
 

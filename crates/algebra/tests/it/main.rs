@@ -1,0 +1,5 @@
+//! The integration tests of `rcagd-algebra`, in one test binary (one link instead of one per file;
+//! see docs/ARCHITECTURE.md, "Tests").
+
+mod fields_linalg;
+mod roots_resultants;

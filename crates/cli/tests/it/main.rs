@@ -1,0 +1,8 @@
+//! The integration tests of `rcagd-cli`, in one test binary (one link instead of one per file;
+//! see docs/ARCHITECTURE.md, "Tests").
+
+mod cli;
+mod docs;
+mod exchange_weights;
+mod fuzz;
+mod quadric_ops;

@@ -1,0 +1,16 @@
+//! The integration tests of `rcagd`, in one test binary (one link instead of one per file;
+//! see docs/ARCHITECTURE.md, "Tests").
+
+mod canal_props;
+mod laguerre_props;
+mod lines_props;
+mod ph_planar;
+mod ph_props;
+mod pn_props;
+mod primitives;
+mod quadric_props;
+mod seed000_examples;
+mod seed001_examples;
+mod seed003_examples;
+mod seed004_laguerre_examples;
+mod seed004_pn_examples;
