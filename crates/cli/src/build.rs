@@ -282,15 +282,9 @@ pub fn run(path: &Path, out: Option<&Path>, formats: &[OutFormat]) -> u8 {
             }
         },
         Some(dir) => {
-            if let Err(e) = output::create_dir(dir) {
+            if let Err(e) = output::write_objects(dir, &objects, &formats) {
                 errln!("error: {e}");
                 return EXIT_INPUT;
-            }
-            for o in &objects {
-                if let Err(e) = output::write_object(dir, o, &formats) {
-                    errln!("error: {e}");
-                    return EXIT_INPUT;
-                }
             }
         }
     }

@@ -46,6 +46,10 @@ pub const RECIPES: &[(&str, &str)] = &[
         "examples/recipes/pn.toml",
         include_str!("../../../examples/recipes/pn.toml"),
     ),
+    (
+        "examples/recipes/analysis.toml",
+        include_str!("../../../examples/recipes/analysis.toml"),
+    ),
 ];
 
 /// The formats written per gallery object.

@@ -135,16 +135,47 @@ pub fn create_dir(dir: &Path) -> Result<(), String> {
         .map_err(|e| format!("cannot create directory {}: {e}", dir.display()))
 }
 
-/// Writes `<dir>/<name>.<ext>` for every format; returns the paths written.
+/// Writes `<dir>/<name>.<ext>` for every object and format, all or nothing: every file
+/// is rendered first, so an exporter that refuses an object (STEP with a zero weight,
+/// STL of a curve) writes nothing; then `dir` is created and the files are written, and
+/// if a write fails the files written so far (and `dir`, when this call created it) are
+/// removed again. Returns the paths written.
 ///
 /// # Errors
-/// The first exporter or file-system error, naming the file.
-pub fn write_object(dir: &Path, o: &Object, formats: &[OutFormat]) -> Result<Vec<PathBuf>, String> {
-    let mut written = Vec::with_capacity(formats.len());
-    for &f in formats {
-        let path = dir.join(format!("{}.{}", o.name, f.extension()));
-        let text = render(o, f).map_err(|e| format!("{}: {e}", path.display()))?;
-        std::fs::write(&path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+/// The first exporter error (naming the object and format) or file-system error (naming
+/// the file).
+pub fn write_objects(
+    dir: &Path,
+    objects: &[Object],
+    formats: &[OutFormat],
+) -> Result<Vec<PathBuf>, String> {
+    let mut files = Vec::with_capacity(objects.len() * formats.len());
+    for o in objects {
+        for &f in formats {
+            let path = dir.join(format!("{}.{}", o.name, f.extension()));
+            let bytes = render(o, f)
+                .map_err(|e| format!("{}: {e} (nothing was written)", path.display()))?;
+            files.push((path, bytes));
+        }
+    }
+    let created = !dir.exists();
+    create_dir(dir)?;
+    let mut written: Vec<PathBuf> = Vec::with_capacity(files.len());
+    for (path, bytes) in files {
+        if let Err(e) = std::fs::write(&path, bytes) {
+            // a partly written file may exist too
+            let _ = std::fs::remove_file(&path);
+            for p in &written {
+                let _ = std::fs::remove_file(p);
+            }
+            if created {
+                let _ = std::fs::remove_dir(dir);
+            }
+            return Err(format!(
+                "cannot write {}: {e} (the files written before it were removed)",
+                path.display()
+            ));
+        }
         written.push(path);
     }
     Ok(written)
@@ -203,6 +234,12 @@ pub fn summary_table(objects: &[Object]) -> String {
     line(&mut s, &widths.map(|w| "-".repeat(w)));
     for r in &rows {
         line(&mut s, r);
+    }
+    for o in objects.iter().filter(|o| !o.values.is_empty()) {
+        let _ = writeln!(s, "{}:", o.name);
+        for v in &o.values {
+            let _ = writeln!(s, "  {}", v.summary_line());
+        }
     }
     let total: usize = objects.iter().map(|o| o.certificates.len()).sum();
     let failed: usize = objects

@@ -11,7 +11,8 @@
 //!   "control_points_f64": [[1.0, 1.0, 0.0], [1.0, 1.0, 1.0], [2.0, 0.0, 2.0]],
 //!   "certificates": [{"property": "…", "holds": true, "exact": true, "residual": null}],
 //!   "all_certificates_hold": true,
-//!   "params": { … }
+//!   "params": { … },
+//!   "values": [{"name": "arc_length", "doc": "…", "type": "rational", "exact": "7/3", "f64": 2.3333333333333335}]
 //! }
 //! ```
 //!
@@ -22,8 +23,15 @@
 //! * `patch`: `degree` is `[m, n]`, `control_points` the net, rows along `u`
 //!   (`control_points[i][j]` is `Pᵢⱼ`);
 //! * `patches`: `degree` a list of `[m, n]`, `control_points` a list of nets.
+//!
+//! `values` lists the named exact values the op computed besides the geometry
+//! ([`crate::quantity`]): each `{"name", "doc", "type", "exact", "f64"}` with `type` one
+//! of `bool`, `integer`, `text`, `rational`, `quadratic` (`a + b√d`, with `a`, `b`, `d`),
+//! `polynomial` (`variable`, `degree`, `power` and `bernstein` coefficients on
+//! `[0, 1]`), `real_root` (`polynomial`, isolating `interval`) and `vector` (`items`).
 
 use crate::model::{Geometry, Object};
+use crate::quantity::NamedQuantity;
 use rcagd_algebra::rational::format_rational;
 use rcagd_algebra::{Certificate, Rational, Scalar};
 use rcagd_geom::{BezierCurve, BezierPatch};
@@ -130,6 +138,7 @@ pub fn object_summary_json(o: &Object) -> Value {
         "certificates": certificates_to_json(&o.certificates),
         "all_certificates_hold": o.all_certificates_hold(),
         "params": o.params,
+        "values": Value::Array(o.values.iter().map(NamedQuantity::to_json).collect()),
     })
 }
 
@@ -195,7 +204,7 @@ mod tests {
             vec![Certificate::fails("p", "r", true)],
         );
         let got = serde_json::to_string(&object_to_json(&o)).expect("json");
-        let want = r#"{"all_certificates_hold":false,"certificates":[{"exact":true,"holds":false,"property":"p","residual":"r"}],"control_point_count":2,"control_points":[["1","1","0"],["1","1","1/3"]],"control_points_f64":[[1.0,1.0,0.0],[1.0,1.0,0.3333333333333333]],"coordinates":["w","wx","wy"],"degree":1,"degree_summary":"degree 1","dim":2,"kind":"curve","name":"seg","op":"test","params":{"a":"1/3"},"pieces":1}"#;
+        let want = r#"{"all_certificates_hold":false,"certificates":[{"exact":true,"holds":false,"property":"p","residual":"r"}],"control_point_count":2,"control_points":[["1","1","0"],["1","1","1/3"]],"control_points_f64":[[1.0,1.0,0.0],[1.0,1.0,0.3333333333333333]],"coordinates":["w","wx","wy"],"degree":1,"degree_summary":"degree 1","dim":2,"kind":"curve","name":"seg","op":"test","params":{"a":"1/3"},"pieces":1,"values":[]}"#;
         assert_eq!(got, want);
     }
 }

@@ -3,6 +3,8 @@
 //! Exporters for rcagd objects:
 //! * [`model`]: the exchange model, [`Object`] (name, op, params, exact [`Geometry`],
 //!   certificates);
+//! * [`quantity`]: named exact values an op returns besides geometry (rationals,
+//!   `a + b√d`, polynomials, isolated real roots, vectors);
 //! * [`json`]: JSON per the user-facing contract (exact `"p/q"` control points and floats);
 //! * [`obj`]: Wavefront OBJ of triangle meshes (with normals) and polylines;
 //! * [`svg`]: SVG pictures of curves and patches;
@@ -21,6 +23,7 @@ pub mod model;
 pub mod obj;
 pub mod ply;
 pub mod png;
+pub mod quantity;
 pub mod raster;
 pub mod report;
 pub mod step;

@@ -4,6 +4,7 @@
 //! recipe entry, i.e. its `name`, the `op` that built it, the op's `params` (as JSON),
 //! its exact [`Geometry`] and its [`Certificate`]s.
 
+use crate::quantity::NamedQuantity;
 use crate::IoError;
 use rcagd_algebra::{Certificate, Rational};
 use rcagd_geom::weight_sign::{
@@ -213,14 +214,26 @@ fn summarize(
     what: &str,
     degrees: impl Iterator<Item = String>,
 ) -> String {
-    let degs: Vec<String> = degrees.collect();
-    let noun = if count == 1 { one } else { many };
-    match degs.first() {
-        None => format!("0 {many}"),
-        Some(first) if degs.iter().all(|d| d == first) => {
-            format!("{count} {noun} of {what} {first}")
+    // distinct degrees with their counts, in order of first appearance
+    let mut groups: Vec<(String, usize)> = Vec::new();
+    for d in degrees {
+        match groups.iter_mut().find(|(g, _)| *g == d) {
+            Some((_, n)) => *n += 1,
+            None => groups.push((d, 1)),
         }
-        Some(_) => format!("{count} {noun} of {what} {}", degs.join(", ")),
+    }
+    let noun = if count == 1 { one } else { many };
+    match groups.as_slice() {
+        [] => format!("0 {many}"),
+        [(d, _)] => format!("{count} {noun} of {what} {d}"),
+        gs if gs.len() <= 3 => {
+            let parts: Vec<String> = gs
+                .iter()
+                .map(|(d, n)| format!("{n} of {what} {d}"))
+                .collect();
+            format!("{count} {noun}: {}", parts.join(", "))
+        }
+        gs => format!("{count} {noun} of {} different {what}s", gs.len()),
     }
 }
 
@@ -247,6 +260,9 @@ pub struct Object {
     pub geometry: Geometry,
     /// The certificates of the construction.
     pub certificates: Vec<Certificate>,
+    /// Named exact values the op computed besides the geometry (module
+    /// [`crate::quantity`]); empty for most constructions.
+    pub values: Vec<NamedQuantity>,
 }
 
 impl Object {
@@ -264,7 +280,15 @@ impl Object {
             params,
             geometry,
             certificates,
+            values: Vec::new(),
         }
+    }
+
+    /// The object with these named values (see [`Object::values`]).
+    #[must_use]
+    pub fn with_values(mut self, values: Vec<NamedQuantity>) -> Self {
+        self.values = values;
+        self
     }
 
     /// `"curve"`, `"curves"`, `"patch"` or `"patches"`.
@@ -323,7 +347,22 @@ mod tests {
         let line = BezierCurve::from_points(&[vec![q(0, 1), q(0, 1)], vec![q(1, 1), q(1, 1)]])
             .expect("valid");
         let mixed = Geometry::Curves(vec![quarter(), line]);
-        assert_eq!(mixed.degree_summary(), "2 pieces of degree 2, 1");
+        assert_eq!(
+            mixed.degree_summary(),
+            "2 pieces: 1 of degree 2, 1 of degree 1"
+        );
+        // many pieces of a few degrees: grouped, not listed one by one
+        let mut many = vec![quarter(); 40];
+        many.push(
+            BezierCurve::from_points(&[vec![q(0, 1), q(0, 1)], vec![q(1, 1), q(1, 1)]])
+                .expect("valid"),
+        );
+        let many = Geometry::Curves(many);
+        assert_eq!(
+            many.degree_summary(),
+            "41 pieces: 40 of degree 2, 1 of degree 1"
+        );
+
         assert_eq!(Geometry::Curves(vec![]).degree_summary(), "0 pieces");
         let patch = BezierPatch::from_flat(3, 2, 1, vec![q(1, 1); 24]).expect("valid");
         assert_eq!(

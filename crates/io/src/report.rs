@@ -210,6 +210,22 @@ fn card(e: &ReportEntry) -> String {
         o.control_point_count(),
         o.geometry.dim()
     );
+    if !o.values.is_empty() {
+        s.push_str("<details open><summary>Values</summary><dl class=\"values\">");
+        for v in &o.values {
+            let _ = write!(
+                s,
+                "<dt><code>{}</code></dt><dd><code>{}</code>",
+                escape_xml(&v.name),
+                escape_xml(&v.value.to_string())
+            );
+            if let Some(x) = v.value.to_f64() {
+                let _ = write!(s, " ≈ {x}");
+            }
+            let _ = write!(s, " <span class=\"doc\">{}</span></dd>", escape_xml(&v.doc));
+        }
+        s.push_str("</dl></details>");
+    }
     if n > 0 {
         let _ = write!(
             s,

@@ -24,7 +24,7 @@ macro_rules! topics {
     };
 }
 
-topics!(kernel, quadric, ph, ph_planar, canal, pn);
+topics!(kernel, quadric, ph, ph_planar, canal, pn, analysis);
 
 pub mod describe;
 
@@ -329,6 +329,7 @@ impl OpArgs {
             params: self.params_json(),
             geometry,
             certificates,
+            values: Vec::new(),
         }
     }
 }

@@ -227,6 +227,7 @@ fn offset_object(
         params,
         geometry,
         certificates,
+        values: Vec::new(),
     }
 }
 

@@ -383,6 +383,33 @@ fn build_writes_formats_to_out_dir() {
         .expect("run");
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(stderr(&o).contains("pole.step"), "{}", stderr(&o));
+    // All or nothing: JSON could be written but STEP cannot, so neither is, and the
+    // output directory is not even created.
+    let out6 = dir.join("out6");
+    let o = bin()
+        .arg("build")
+        .arg(&bad)
+        .arg("--out")
+        .arg(&out6)
+        .args(["--format", "json,step"])
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("nothing was written"), "{}", stderr(&o));
+    assert!(!out6.exists(), "a failed build left {}", out6.display());
+    // The same into an existing directory: it is left as it was.
+    std::fs::create_dir_all(&out6).expect("mkdir");
+    let o = bin()
+        .arg("build")
+        .arg(&p)
+        .arg("--out")
+        .arg(&out6)
+        .args(["--format", "json,stl"])
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let left: Vec<_> = std::fs::read_dir(&out6).expect("read dir").collect();
+    assert!(left.is_empty(), "a failed build wrote {left:?}");
     // Default format: JSON only.
     let out2 = dir.join("out2");
     let o = bin()

@@ -319,6 +319,11 @@ impl<F: Scalar> FrenetFrame<F> {
 
     /// `(t, p̃, b̃)` at the parameter `t` with `p = p̃/√c`, `b = b̃/√c` (exact), or
     /// `None` where `σ(t)ω̃(t) = 0` (inflection or singular point).
+    ///
+    /// This is the classical Frenet frame: `p̃ = (σr''−σ'r')/(σ|ω̃|)` and
+    /// `b̃ = (r'×r'')/(σ|ω̃|)`, so `b` points along `r'×r''` and `p = b × t` on both
+    /// sides of a sign change of the polynomial `ω̃` (dividing by the signed `ω̃`
+    /// would flip `p` and `b` wherever `ω̃ < 0`).
     #[allow(clippy::type_complexity)]
     pub fn eval_scaled(&self, t: &F) -> Option<([F; 3], [F; 3], [F; 3])> {
         let s = self.sigma.eval(t);
@@ -327,7 +332,7 @@ impl<F: Scalar> FrenetFrame<F> {
             return None;
         }
         let inv_s = F::one() / s.clone();
-        let inv_sw = F::one() / (s * w);
+        let inv_sw = F::one() / (s * w.abs());
         Some((
             scale3(&peval(&self.d1, t), &inv_s),
             scale3(&peval(&self.normal_numerator(), t), &inv_sw),
@@ -347,8 +352,9 @@ impl<F: Scalar> FrenetFrame<F> {
         Some([to_f64_3(&a), s(b), s(c)])
     }
 
-    /// `κ = ω/σ² = √c·ω̃/σ²` as `(√c-free numerator ω̃, denominator σ²)`: multiply the
-    /// value by `√c`.
+    /// `κ = |ω|/σ² = √c·|ω̃|/σ²` as `(√c-free numerator ω̃, denominator σ²)`: multiply
+    /// the absolute value by `√c` (the numerator `ω̃` is signed; its sign changes are
+    /// the inflections).
     pub fn curvature_scaled(&self) -> RationalFunction<F> {
         RationalFunction {
             num: self.omega_tilde.clone(),

@@ -9,6 +9,8 @@
 //!
 //! Map of the module (one file per concept):
 //!
+//! * [`analysis`]: the analysis of a given polynomial curve (PH test, `σ`, `ρ` with
+//!   `deg ρ ≤ 2n − 6`, DPH and helix tests, exact Frenet data at a parameter);
 //! * [`hodograph`]: the quaternion / Hopf representation [`PhCurve`], Bézier control
 //!   points (ALG-1/2), the power-form PH curve [`PhPolyCurve`] (PH test of a given
 //!   polynomial curve), and Lemma 2.1 (`Q i Q* = c`, ALG-8);
@@ -30,6 +32,7 @@
 //! [`rcagd_algebra::Rational`] or `f64`) and has a `certify()` that decides its defining
 //! property as a polynomial identity (exactly for exact scalars).
 
+pub mod analysis;
 pub mod dph;
 pub mod frame;
 pub mod helix;

@@ -585,6 +585,41 @@ fn example_8_1_cubic_reparametrization() {
     );
 }
 
+/// The classical Frenet frame where the polynomial `ω̃` is negative (a regression: the
+/// normal and binormal were divided by the signed `ω̃`, so they flipped wherever
+/// `ω̃ < 0`). On the Example 8.1 curve `ω̃ = 2t + 2t² − 2t³ + t⁴ < 0` at `t = −1/2`.
+#[test]
+fn frenet_frame_is_classical_where_omega_is_negative() {
+    let seed = LineCircle::new(ci(1, 0), ci(1, 1), ci(1, -1), ci(0, 1)).unwrap();
+    let f = [qi(1), qi(2), qi(2), qi(1)];
+    let g = [qi(1), qi(2), qi(3), qi(3)];
+    let pc = seed
+        .reparametrized_helix(&f, &g, origin())
+        .unwrap()
+        .to_poly_curve();
+    let d = pc.dph().unwrap();
+    let frame = pc.frenet_frame(&d);
+    let dot = |a: &[Q; 3], b: &[Q; 3]| &(&(&a[0] * &b[0]) + &(&a[1] * &b[1])) + &(&a[2] * &b[2]);
+    let cross = |a: &[Q; 3], b: &[Q; 3]| {
+        [
+            &(&a[1] * &b[2]) - &(&a[2] * &b[1]),
+            &(&a[2] * &b[0]) - &(&a[0] * &b[2]),
+            &(&a[0] * &b[1]) - &(&a[1] * &b[0]),
+        ]
+    };
+    for t in [q("-1/2"), q("1/3"), q("-1/5")] {
+        let w = d.omega_tilde.eval(&t);
+        let (tt, p, b) = frame.eval_scaled(&t).unwrap();
+        let bn = frame.binormal_numerator();
+        let rxr = [bn[0].eval(&t), bn[1].eval(&t), bn[2].eval(&t)];
+        // b along r'×r'' whatever the sign of ω̃ …
+        assert!(dot(&b, &rxr) > qi(0), "t = {t}, ω̃ = {w}");
+        // … and (t, p, b) right-handed: p = b × t (scaled by √c like b)
+        assert_eq!(p, cross(&b, &tt), "t = {t}, ω̃ = {w}");
+    }
+    assert!(d.omega_tilde.eval(&q("-1/2")) < qi(0));
+}
+
 /// Seed 001 Example 8.2: multiplication by the quadratic `w = (1, 1+i, 1)`.
 #[test]
 fn example_8_2_multiplication() {

@@ -1,0 +1,332 @@
+//! Ops of the `analysis` topic: questions about a given curve, answered exactly as named
+//! values (`rcagd_io::quantity`) beside the curve itself.
+//!
+//! * `ph_analyze`: the PH test of a polynomial space curve (control points, power form
+//!   or quaternion preimage), its speed `σ`, arc length, `ρ` with `deg ρ ≤ 2n − 6`, the
+//!   DPH and helix tests with axis and `κ/τ`, and the exact Frenet data at given
+//!   parameters (`rcagd::ph::analysis`).
+
+use super::{OpArgs, OpError, OpSpec, ParamSpec};
+use crate::model::{Geometry, Object};
+use crate::value::ParamKind;
+use rcagd::ph::analysis::{ph_test, PhAnalysis, PhTest};
+use rcagd::ph::{DphClass, DphTest, HelixTest, PhCurve};
+use rcagd_algebra::quadratic::{sqrt_in_extension, QuadExt};
+use rcagd_algebra::quaternion::Quaternion;
+use rcagd_algebra::{Poly, Rational};
+use rcagd_geom::BezierCurve;
+use rcagd_io::quantity::{NamedQuantity, Quantity};
+
+/// The ops of this topic.
+pub const OPS: &[OpSpec] = &[PH_ANALYZE];
+
+type Q = Rational;
+
+const PH_ANALYZE: OpSpec = OpSpec {
+    name: "ph_analyze",
+    summary: "answers about a polynomial space curve, exact: the PH test (|r'|² = σ²), σ, arc length, ρ = |r'×r''|²/σ² with deg ρ ≤ 2n − 6, the DPH test ρ = c·ω̃², the helix test a·r' ≡ σ with axis and (κ/τ)², the DPH class of a quaternion preimage, and the Frenet frame, curvature and torsion at given parameters in Q(√ρ(t)) (Besednjak, DPH-krivulje in polinomske vijačnice, §3–4, 7)",
+    params: &[
+        ParamSpec::optional(
+            "points",
+            ParamKind::Points,
+            "Bézier control points [x, y, z] of a polynomial curve on t ∈ [0, 1]",
+        ),
+        ParamSpec::optional(
+            "power",
+            ParamKind::Points,
+            "instead of `points`: power-form coefficients [x_k, y_k, z_k] of t^k, k = 0, 1, …",
+        ),
+        ParamSpec::optional(
+            "quaternions",
+            ParamKind::Points,
+            "instead of `points`: Bernstein coefficients [u, v, p, q] of a preimage A(t), r' = A i A* (adds the DPH class αβ' − α'β = λhW²)",
+        ),
+        ParamSpec::with_default(
+            "start",
+            ParamKind::Point3,
+            "[0, 0, 0]",
+            "r(0) for `quaternions`",
+        ),
+        ParamSpec::optional(
+            "at",
+            ParamKind::Numbers,
+            "parameters t at which to give the Frenet data (point, t, p, b, κ, τ) exactly",
+        ),
+    ],
+    example: r#"[[object]]
+name = "ph_cubic_analysis"
+op = "ph_analyze"
+quaternions = [[1, 0, 1, 0], [0, 1, 0, 1]]
+at = [0, "1/2"]
+"#,
+    build: build_ph_analyze,
+};
+
+fn value(name: &str, doc: &str, v: Quantity) -> NamedQuantity {
+    NamedQuantity::new(name, doc, v)
+}
+
+fn quads(v: [QuadExt; 3]) -> Quantity {
+    Quantity::Vector(v.into_iter().map(Quantity::Quadratic).collect())
+}
+
+/// The input curve as a Bézier curve and (for `quaternions`) its PH preimage.
+fn input_curve(args: &OpArgs) -> Result<(BezierCurve<Q>, Option<PhCurve<Q>>), OpError> {
+    let given: Vec<&str> = ["points", "power", "quaternions"]
+        .into_iter()
+        .filter(|p| args.get(p).is_some())
+        .collect();
+    match given.as_slice() {
+        ["points"] => {
+            let pts = args.points("points")?;
+            if pts.iter().any(|p| p.len() != 3) {
+                return Err(OpError::param("points", "control points must be [x, y, z]"));
+            }
+            Ok((BezierCurve::from_points(&pts)?, None))
+        }
+        ["power"] => {
+            let rows = args.points("power")?;
+            if rows.iter().any(|p| p.len() != 3) {
+                return Err(OpError::param(
+                    "power",
+                    "each coefficient must be [x_k, y_k, z_k]",
+                ));
+            }
+            let coord = |k: usize| Poly::new(rows.iter().map(|r| r[k].clone()).collect());
+            let polys = [
+                Poly::constant(Q::from(1)),
+                coord(0),
+                coord(1),
+                coord(2),
+            ];
+            let n = rows.len().saturating_sub(1).max(1);
+            Ok((BezierCurve::from_coordinate_polys(&polys, n)?, None))
+        }
+        ["quaternions"] => {
+            let coeffs = args
+                .points("quaternions")?
+                .into_iter()
+                .enumerate()
+                .map(|(k, p)| match <[Q; 4]>::try_from(p) {
+                    Ok([u, v, p, q]) => Ok(Quaternion::new(u, v, p, q)),
+                    Err(p) => Err(OpError::param(
+                        "quaternions",
+                        format!(
+                            "A_{k} must be a quaternion [u, v, p, q], got {} numbers",
+                            p.len()
+                        ),
+                    )),
+                })
+                .collect::<Result<Vec<_>, _>>()?;
+            let start = <[Q; 3]>::try_from(args.point("start")?)
+                .map_err(|_| OpError::param("start", "r(0) must be [x, y, z]"))?;
+            let pc = PhCurve::new(coeffs, start)?;
+            Ok((pc.to_bezier()?, Some(pc)))
+        }
+        [] => Err(OpError::new(
+            "give the curve as `points`, `power` or `quaternions`",
+        )),
+        _ => Err(OpError::param(
+            "points",
+            format!(
+                "give the curve once: `{}` are alternatives",
+                given.join("`, `")
+            ),
+        )),
+    }
+}
+
+fn analysis_values(a: &PhAnalysis<Q>) -> Vec<NamedQuantity> {
+    let mut v = vec![
+        value("ph", "|r'|² is the square of a polynomial σ", Quantity::Bool(true)),
+        value(
+            "sigma",
+            "parametric speed σ(t) = |r'(t)|",
+            Quantity::poly_t(a.curve.speed().clone()),
+        ),
+        value(
+            "arc_length",
+            "arc length on [0, 1], ∫σ",
+            Quantity::Rational(a.curve.arc_length()),
+        ),
+        value(
+            "rho",
+            "ρ(t) = |r'×r''|²/σ² (κ² = ρ/σ⁴)",
+            Quantity::poly_t(a.rho.clone()),
+        ),
+        value(
+            "rho_degree_bound",
+            "2n − 6, the bound on deg ρ",
+            Quantity::Integer(a.rho_degree_bound() as i64),
+        ),
+    ];
+    match &a.dph {
+        DphTest::Dph(d) => {
+            v.push(value(
+                "dph",
+                "double PH: ρ = c·ω̃² (rational Frenet frame)",
+                Quantity::Text("dph".into()),
+            ));
+            v.push(value(
+                "dph_c",
+                "the constant c of ρ = c·ω̃²",
+                Quantity::Rational(d.c.clone()),
+            ));
+            v.push(value(
+                "dph_omega_tilde",
+                "ω̃ of ρ = c·ω̃²",
+                Quantity::poly_t(d.omega_tilde.clone()),
+            ));
+        }
+        DphTest::NotDph { .. } => v.push(value(
+            "dph",
+            "ρ is not a constant times a square: not double PH",
+            Quantity::Text("not dph".into()),
+        )),
+        DphTest::Line => v.push(value(
+            "dph",
+            "ρ ≡ 0: a straight line",
+            Quantity::Text("line".into()),
+        )),
+    }
+    match &a.helix {
+        HelixTest::Helix(h) => {
+            v.push(value(
+                "helix",
+                "a·r' ≡ σ has a solution a (the axis)",
+                Quantity::Text("helix".into()),
+            ));
+            v.push(value(
+                "axis",
+                "a with a·r' ≡ σ, |a| = 1/cos ψ",
+                Quantity::rationals(&h.a),
+            ));
+            v.push(value(
+                "kappa_over_tau_squared",
+                "(κ/τ)² = tan²ψ = |a|² − 1 (constant: Lancret)",
+                Quantity::Rational(h.tan2_psi()),
+            ));
+            if let Ok(k) = sqrt_in_extension(&h.tan2_psi()) {
+                v.push(value(
+                    "kappa_over_tau",
+                    "|κ/τ| = tan ψ",
+                    Quantity::Quadratic(k),
+                ));
+            }
+        }
+        HelixTest::Planar { normal } => {
+            v.push(value(
+                "helix",
+                "planar (a trivial helix, ψ = π/2)",
+                Quantity::Text("planar".into()),
+            ));
+            v.push(value(
+                "plane_normal",
+                "n with n·r' ≡ 0",
+                Quantity::rationals(normal),
+            ));
+        }
+        HelixTest::Line => v.push(value(
+            "helix",
+            "a straight line",
+            Quantity::Text("line".into()),
+        )),
+        HelixTest::NotHelix => v.push(value(
+            "helix",
+            "a·r' ≡ σ has no solution: not a helix",
+            Quantity::Text("not a helix".into()),
+        )),
+    }
+    v
+}
+
+fn frenet_values(a: &PhAnalysis<Q>, ts: &[Q]) -> Result<Vec<NamedQuantity>, OpError> {
+    let mut v = Vec::new();
+    for (k, t) in ts.iter().enumerate() {
+        let f = a
+            .frenet_at(t)
+            .map_err(|e| OpError::param("at", format!("at t = {t}: {e}")))?;
+        let tag = |s: &str| format!("{s}_{k}");
+        v.push(value(&tag("t"), "the parameter", Quantity::Rational(t.clone())));
+        v.push(value(&tag("point"), "r(t)", Quantity::rationals(&f.point)));
+        v.push(value(
+            &tag("tangent"),
+            "unit tangent r'/σ",
+            Quantity::rationals(&f.tangent),
+        ));
+        v.push(value(
+            &tag("normal"),
+            "principal normal (σr'' − σ'r')/(σ√ρ)",
+            quads(f.normal_exact()?),
+        ));
+        v.push(value(
+            &tag("binormal"),
+            "binormal (r'×r'')/(σ√ρ)",
+            quads(f.binormal_exact()?),
+        ));
+        v.push(value(
+            &tag("curvature"),
+            "κ = √ρ/σ²",
+            Quantity::Quadratic(f.curvature_exact()?),
+        ));
+        v.push(value(
+            &tag("torsion"),
+            "τ = (r'×r'')·r'''/(σ²ρ)",
+            Quantity::Rational(f.torsion.clone()),
+        ));
+    }
+    Ok(v)
+}
+
+fn build_ph_analyze(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let (bez, preimage) = input_curve(args)?;
+    let polys = bez.coordinate_polys();
+    let [_, x, y, z] = <[Poly<Q>; 4]>::try_from(polys)
+        .map_err(|_| OpError::new("the curve must lie in space (x, y, z)"))?;
+    let test = ph_test([x, y, z])?;
+    let mut certificates = test.certify();
+    let values = match &test {
+        PhTest::NotPh { speed_squared } => vec![
+            value(
+                "ph",
+                "|r'|² is the square of a polynomial σ",
+                Quantity::Bool(false),
+            ),
+            value(
+                "speed_squared",
+                "|r'(t)|², not a perfect square",
+                Quantity::poly_t(speed_squared.clone()),
+            ),
+        ],
+        PhTest::Ph(a) => {
+            let mut values = analysis_values(a);
+            if let Some(pc) = &preimage {
+                let class = match pc.classify()? {
+                    DphClass::NotDph => "not dph".to_string(),
+                    DphClass::Line => "line".to_string(),
+                    DphClass::Dph {
+                        h_degree,
+                        w_degree,
+                        helical,
+                    } => format!(
+                        "dph, st h = {h_degree}, st w = {w_degree}, {}",
+                        if helical { "helical" } else { "not helical" }
+                    ),
+                };
+                values.push(value(
+                    "dph_class",
+                    "αβ' − α'β = λ·h·W² with st h, st W and helicity (Besednjak §4.3, ch. 7)",
+                    Quantity::Text(class),
+                ));
+                certificates.extend(pc.certify());
+            }
+            if let Some(ts) = args.opt_numbers("at")? {
+                values.extend(frenet_values(a, &ts)?);
+            }
+            values
+        }
+    };
+    Ok(vec![args
+        .object(Geometry::Curve(bez), certificates)
+        .with_values(values)])
+}
