@@ -62,8 +62,8 @@ use crate::lines::net::{
 };
 use crate::lines::{AxisPosition, LineNet, NetError, NetKind, SqrtScalar};
 use crate::pn::poly::{
-    cancel_gcd, det4, identity_cert, mag, normalize_content, patch_of, sign_on_domain, zero_cert,
-    Domain, Sign,
+    cancel_common, cancel_gcd, det4, gcd2, identity_cert, mag, normalize_content, patch_of,
+    sign_on_domain, zero_cert, Domain, Sign,
 };
 use crate::Certified;
 use rcagd_algebra::mpoly::MPoly;
@@ -411,7 +411,8 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
             )
         };
         let mut st: Vec<MPoly<F>> = all.iter().map(sub).collect();
-        cancel_gcd(&mut st);
+        let candidates = factor_candidates(&params, &w);
+        cancel_common(&mut st, &candidates);
         normalize_content(&mut st);
         let phi_st: [MPoly<F>; 4] = core::array::from_fn(|k| st[k].clone());
         let phi_st_den = st[4].clone();
@@ -420,7 +421,7 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
         for i in 0..3 {
             psi.push(&(&phi_st[i] * &w[3]) - &(&phi_st[3] * &w[i]));
         }
-        cancel_gcd(&mut psi);
+        cancel_common(&mut psi, &candidates);
         normalize_content(&mut psi);
         Ok(SphereFamilyEnvelope {
             net: net.clone(),
@@ -729,6 +730,28 @@ impl<F: SqrtScalar> SphereFamilyEnvelope<F> {
             minus: core::array::from_fn(|k| base[k].clone() - lam.clone() * ne[k].clone()),
         })
     }
+}
+
+/// Candidate common factors of `Φ(s, t)` and `Ψ(s, t)`: the variables, `w₄ = 1 + s² + t²`,
+/// the reparametrization denominators and their common and cofactor parts. (A general
+/// bivariate gcd of the high-degree coordinates is much slower and finds no other factors
+/// in the examples; cancelling fewer factors never affects the certificates, only the
+/// degree.)
+fn factor_candidates<F: Scalar>(params: &NetParameters<F>, w: &[MPoly<F>; 4]) -> Vec<MPoly<F>> {
+    let (a, b) = (&params.first_den, &params.second_den);
+    let g = gcd2(a, b);
+    let mut out = vec![MPoly::var(2, 0), MPoly::var(2, 1), w[3].clone(), g.clone()];
+    for x in [a, b] {
+        let mut pair = vec![x.clone(), g.clone()];
+        // x / gcd
+        if let Some(q) = crate::pn::poly::div_exact(x, &g) {
+            pair[0] = q;
+        }
+        out.push(pair[0].clone());
+        out.push(x.clone());
+    }
+    out.sort_by_key(|p| std::cmp::Reverse(p.total_degree().unwrap_or(0)));
+    out
 }
 
 /// The consistency conditions on the support functions (3.11), (3.43)/(3.44) corrected,
