@@ -46,6 +46,10 @@ pub const RECIPES: &[(&str, &str)] = &[
         "examples/recipes/pn.toml",
         include_str!("../../../examples/recipes/pn.toml"),
     ),
+    (
+        "examples/recipes/sphere_family.toml",
+        include_str!("../../../examples/recipes/sphere_family.toml"),
+    ),
 ];
 
 /// The formats written per gallery object.

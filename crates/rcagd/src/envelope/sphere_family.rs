@@ -60,7 +60,9 @@ use crate::lines::net::{
     cst2, fibration_certificate, omega_form, omega_parametrization, substitute_rational, CPoly,
     NetParameters,
 };
-use crate::lines::{AxisPosition, LineNet, NetError, NetKind, SqrtScalar};
+use crate::lines::{
+    AxisPosition, ComplexPointRow, LineNet, NetError, NetKind, PointRow, SqrtScalar,
+};
 use crate::pn::poly::{
     cancel_common, cancel_gcd, det4, gcd2, identity_cert, mag, normalize_content, patch_of,
     sign_on_domain, zero_cert, Domain, Sign,
@@ -68,6 +70,7 @@ use crate::pn::poly::{
 use crate::Certified;
 use rcagd_algebra::mpoly::MPoly;
 use rcagd_algebra::{Certificate, Scalar};
+use rcagd_geom::weight_sign::{split_patches_adaptive, SignRule};
 use rcagd_geom::BezierPatch;
 use thiserror::Error;
 
@@ -137,6 +140,20 @@ impl<F: Scalar> Support<F> {
             p = &p + &MPoly::monomial(2, &e, c.clone());
         }
         Support::real(p)
+    }
+
+    /// `Σ g[i][j] uⁱ vʲ` from a grid of power coefficients.
+    pub fn from_grid(grid: &[Vec<F>]) -> Self {
+        Support::real(grid_poly(grid))
+    }
+
+    /// The conjugate support function in the second parameter, `ā(v)` (the `b` of an
+    /// elliptic net for the support function `a(u)`, Gruber (3.44) corrected).
+    pub fn conjugate_in_v(&self) -> Self {
+        Support {
+            re: swap_vars(&self.re),
+            im: -&swap_vars(&self.im),
+        }
     }
 
     fn as_cpoly(&self) -> CPoly<F> {
@@ -263,6 +280,16 @@ pub struct SphereFamilyEnvelope<F> {
     phi_st_den: MPoly<F>,
     /// Homogeneous `(W, X, Y, Z)` of `Ψ(s, t)`.
     psi: [MPoly<F>; 4],
+}
+
+fn grid_poly<F: Scalar>(grid: &[Vec<F>]) -> MPoly<F> {
+    let mut p = MPoly::zero(2);
+    for (i, row) in grid.iter().enumerate() {
+        for (j, c) in row.iter().enumerate() {
+            p = &p + &MPoly::monomial(2, &[i as u32, j as u32], c.clone());
+        }
+    }
+    p
 }
 
 fn swap_vars<F: Scalar>(p: &MPoly<F>) -> MPoly<F> {
@@ -434,6 +461,71 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
             phi_st_den,
             psi: core::array::from_fn(|k| psi[k].clone()),
         })
+    }
+
+    /// The envelope from plain data (a recipe): the net type, its point rows
+    /// (`[c₀, c₁, d₀, d₁]` for hyperbolic and parabolic nets with `d(u, v) = d₀ + u d₁ + v c₁`
+    /// for the latter; `[Re c₀, Im c₀, Re c₁, Im c₁]` for elliptic nets), the support
+    /// function `a` as a grid of power coefficients of `uⁱvʲ` (with an imaginary part for
+    /// elliptic nets) and `b` (default for elliptic nets: `ā(v)`).
+    ///
+    /// # Errors
+    /// [`SphereFamilyError::InconsistentSupport`] for a wrong number of rows or a missing
+    /// `b`, and every error of [`LineNet`] and [`Self::new`].
+    pub fn from_data(
+        kind: NetKind,
+        rows: &[Vec<F>],
+        a: &[Vec<F>],
+        a_im: Option<&[Vec<F>]>,
+        b: Option<&[Vec<F>]>,
+    ) -> Result<Self, SphereFamilyError> {
+        let bad = |m: String| SphereFamilyError::InconsistentSupport(m);
+        let rows4: Vec<[F; 4]> = rows
+            .iter()
+            .map(|r| {
+                <[F; 4]>::try_from(r.clone()).map_err(|_| {
+                    bad(format!(
+                        "a point of ω has four coordinates, got {}",
+                        r.len()
+                    ))
+                })
+            })
+            .collect::<Result<_, _>>()?;
+        if rows4.len() != 4 {
+            return Err(bad(format!(
+                "the net needs four points (c₀, c₁, d₀, d₁ or Re c₀, Im c₀, Re c₁, Im c₁), got {}",
+                rows4.len()
+            )));
+        }
+        let r = |k: usize| rows4[k].clone();
+        let net = match kind {
+            NetKind::Hyperbolic => {
+                LineNet::hyperbolic(PointRow::new(r(0), r(1))?, PointRow::new(r(2), r(3))?)?
+            }
+            NetKind::Parabolic => {
+                LineNet::parabolic(PointRow::new(r(0), r(1))?, PointRow::new(r(2), r(3))?)?
+            }
+            NetKind::Elliptic => LineNet::elliptic(ComplexPointRow {
+                origin_re: r(0),
+                origin_im: r(1),
+                direction_re: r(2),
+                direction_im: r(3),
+            })?,
+        };
+        let a = Support {
+            re: grid_poly(a),
+            im: a_im.map(grid_poly).unwrap_or_else(|| MPoly::zero(2)),
+        };
+        let b = match (b, kind) {
+            (Some(g), _) => Support::from_grid(g),
+            (None, NetKind::Elliptic) => a.conjugate_in_v(),
+            (None, _) => {
+                return Err(bad(
+                    "the support function b is required for hyperbolic and parabolic nets".into(),
+                ))
+            }
+        };
+        Self::new(&net, a, b)
     }
 
     /// The net.
@@ -642,6 +734,40 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
             }
         }
         patch_of(&self.psi, &d).map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))
+    }
+
+    /// The envelope on `[s₀, s₁] × [t₀, t₁]` as rational Bézier patches whose Bernstein
+    /// weights are all positive (the patch of [`Self::patch`], negated if `W < 0`, bisected
+    /// where a weight is ≤ 0), with the certificate that every weight is positive.
+    ///
+    /// # Errors
+    /// As [`Self::patch`].
+    pub fn export_patches(
+        &self,
+        s: (F, F),
+        t: (F, F),
+    ) -> Result<(Vec<BezierPatch<F>>, Certificate), SphereFamilyError> {
+        let mut p = self.patch(s, t)?;
+        let dim = p.dim() + 1;
+        // W has one sign on the rectangle (checked by `patch`): the corner weight W(s₀, t₀)
+        let neg = p.coords().first().is_some_and(|w| *w < F::zero());
+        if neg {
+            let (m, n) = p.degree();
+            let flat: Vec<F> = p.coords().iter().map(|x| -x.clone()).collect();
+            p = BezierPatch::from_flat(dim - 1, m, n, flat)
+                .map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))?;
+        }
+        let split = split_patches_adaptive(vec![p], SignRule::Positive, (6, 6))
+            .map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))?;
+        let (pieces, bad) = (split.pieces, split.failed);
+        let n = pieces.len();
+        let cert = Certificate::decide(
+            format!("every Bernstein weight of the {n} envelope patches is > 0 (no pole on the rectangle)"),
+            bad == 0,
+            F::EXACT,
+            || format!("{bad} pieces keep a weight ≤ 0 after 12 bisections"),
+        );
+        Ok((pieces, cert))
     }
 
     /// The envelope converted to another scalar type (e.g. `f64`), rebuilt from the
