@@ -349,6 +349,9 @@ fn cpartial<F: Scalar>(p: &CPoly<F>, i: usize) -> CPoly<F> {
     }
 }
 
+/// A derivation of complex polynomials (`∂/∂u` or `∂/∂v`).
+type CDeriv<'a, F> = Box<dyn Fn(&CPoly<F>) -> CPoly<F> + 'a>;
+
 /// One equation `rowᵀ x = rhs` of (3.7) with its name.
 struct Equation<F> {
     name: &'static str,
@@ -868,12 +871,8 @@ fn factor_candidates<F: Scalar>(params: &NetParameters<F>, w: &[MPoly<F>; 4]) ->
     let g = gcd2(a, b);
     let mut out = vec![MPoly::var(2, 0), MPoly::var(2, 1), w[3].clone(), g.clone()];
     for x in [a, b] {
-        let mut pair = vec![x.clone(), g.clone()];
         // x / gcd
-        if let Some(q) = crate::pn::poly::div_exact(x, &g) {
-            pair[0] = q;
-        }
-        out.push(pair[0].clone());
+        out.push(crate::pn::poly::div_exact(x, &g).unwrap_or_else(|| x.clone()));
         out.push(x.clone());
     }
     out.sort_by_key(|p| std::cmp::Reverse(p.total_degree().unwrap_or(0)));
@@ -954,10 +953,7 @@ fn equations<F: Scalar>(net: &LineNet<F>, a: &Support<F>, b: &Support<F>) -> Vec
         _ => (a.as_cpoly(), b.as_cpoly()),
     };
     // derivatives with respect to u and v
-    let (du, dv): (
-        Box<dyn Fn(&CPoly<F>) -> CPoly<F>>,
-        Box<dyn Fn(&CPoly<F>) -> CPoly<F>>,
-    ) = match net.kind() {
+    let (du, dv): (CDeriv<'_, F>, CDeriv<'_, F>) = match net.kind() {
         NetKind::Elliptic => {
             // ∂/∂u = (∂_m + i ∂_n)/2 and ∂/∂v = (∂_m − i ∂_n)/2 on functions of u = m − i n, v = m + i n
             let half = F::from_ratio(1, 2);

@@ -516,10 +516,10 @@ fn every_printed_example_reproduced() {
         );
         // Φ
         let (phi, den) = env.phi();
-        for k in 0..4 {
-            let want = uv(c.phi[k]);
+        for (k, (p, text)) in phi.iter().zip(c.phi).enumerate() {
+            let want = uv(text);
             assert!(
-                same_ratio((&phi[k], den), (&want, &MPoly::constant(2, q(1)))),
+                same_ratio((p, den), (&want, &MPoly::constant(2, q(1)))),
                 "{}: Φ{}",
                 c.section,
                 k + 1
@@ -803,7 +803,7 @@ proptest! {
         };
         let certs = env.certify();
         prop_assert!(Certificate::all_hold(&certs), "{:#?}", certs);
-        let fenv = env.map_scalar(|x| Scalar::to_f64(x)).expect("f64 envelope");
+        let fenv = env.map_scalar(Scalar::to_f64).expect("f64 envelope");
         let (s, t) = (Rational::from_ratio(2, 7), Rational::from_ratio(-5, 3));
         if let (Ok(x), Ok(y)) = (env.eval(&s, &t), fenv.eval(&Scalar::to_f64(&s), &Scalar::to_f64(&t))) {
             for k in 0..3 {
