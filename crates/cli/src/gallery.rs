@@ -47,6 +47,10 @@ pub const RECIPES: &[(&str, &str)] = &[
         include_str!("../../../examples/recipes/pn.toml"),
     ),
     (
+        "examples/recipes/sphere_family.toml",
+        include_str!("../../../examples/recipes/sphere_family.toml"),
+    ),
+    (
         "examples/recipes/analysis.toml",
         include_str!("../../../examples/recipes/analysis.toml"),
     ),

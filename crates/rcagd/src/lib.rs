@@ -19,6 +19,7 @@ pub mod canal;
 pub mod conic;
 pub mod cyclographic;
 pub mod cylinder;
+pub mod envelope;
 pub mod error;
 pub mod laguerre;
 pub mod lines;

@@ -24,7 +24,7 @@ macro_rules! topics {
     };
 }
 
-topics!(kernel, quadric, ph, ph_planar, canal, pn, analysis);
+topics!(kernel, quadric, ph, ph_planar, canal, pn, sphere_family, analysis);
 
 pub mod describe;
 

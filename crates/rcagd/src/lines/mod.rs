@@ -27,7 +27,9 @@
 //!   net, seed 003 §1.1.6), classified as hyperbolic, elliptic, parabolic or degenerate with
 //!   its focal lines, and the fibration `point ↦ the net line through it`;
 //! * [`regulus`]: [`Regulus`] through three pairwise skew lines (both rulings as rational
-//!   families with the carrier quadric) and [`common_transversals`] of four lines.
+//!   families with the carrier quadric) and [`common_transversals`] of four lines;
+//! * [`net`]: [`LineNet`], regular line nets given by their axes (hyperbolic, elliptic,
+//!   parabolic) with their fibration, the input of the sphere-family envelopes.
 //!
 //! Every construction is generic over [`Scalar`]; where a square root is needed (focal
 //! lines of a hyperbolic or elliptic congruence, common transversals) the result lives in
@@ -36,11 +38,13 @@
 
 pub mod complex;
 pub mod congruence;
+pub mod net;
 pub mod plucker;
 pub mod regulus;
 
 pub use complex::LinearComplex;
 pub use congruence::{net_line, CongruenceKind, FocalLines, LinearCongruence};
+pub use net::{AxisPosition, ComplexPointRow, LineNet, NetError, NetKind, PointRow};
 pub use plucker::{reciprocal_product, Line, LineOrigin};
 pub use regulus::{common_transversals, CommonTransversals, Regulus};
 

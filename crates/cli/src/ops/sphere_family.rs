@@ -1,0 +1,95 @@
+//! Ops of the `sphere_family` topic: envelopes of two-parameter sphere families from a line
+//! net and two support functions (`rcagd::envelope`; D. Gruber, "Rationale
+//! Parametrisierungen von Kugelhüllflächen", 2008, §3.2–3.5). The envelope `Ψ(s, t)` is
+//! rational over the whole absolute quadric `Ω(s, t)`; both sheets (the two contact points
+//! with each sphere) are parameter regions of the same map.
+
+use super::{OpArgs, OpError, OpSpec, ParamSpec};
+use crate::model::Geometry;
+use crate::model::Object;
+use crate::value::ParamKind;
+use rcagd::envelope::SphereFamilyEnvelope;
+use rcagd::lines::NetKind;
+use rcagd::Certified;
+use rcagd_algebra::{Certificate, Rational};
+
+/// The ops of this topic.
+pub const OPS: &[OpSpec] = &[SPHERE_FAMILY_ENVELOPE];
+
+const SPHERE_FAMILY_ENVELOPE: OpSpec = OpSpec {
+    name: "sphere_family_envelope",
+    summary: "the rational envelope Ψ(s, t) of the two-parameter sphere family of a line net (hyperbolic, elliptic or parabolic) and two support functions (Gruber §3.2: linear system (3.7), reparametrization (3.16) by the net's fibration, isotropic projection)",
+    params: &[
+        ParamSpec::required(
+            "net",
+            ParamKind::Choice(&["hyperbolic", "elliptic", "parabolic"]),
+            "the net type",
+        ),
+        ParamSpec::required(
+            "points",
+            ParamKind::Points,
+            "four points of the ideal space [y1, y2, y3, y4]: c0, c1, d0, d1 (axes c(u) = c0 + u c1, d(v) = d0 + v d1; parabolic: d(u, v) = d0 + u d1 + v c1) or, elliptic, Re c0, Im c0, Re c1, Im c1",
+        ),
+        ParamSpec::required(
+            "a",
+            ParamKind::Grid,
+            "support function a of the planes e = D c: power coefficients a[i][j] of u^i v^j (a depends on u only)",
+        ),
+        ParamSpec::optional(
+            "a_imaginary",
+            ParamKind::Grid,
+            "elliptic nets: the imaginary part of a (default 0)",
+        ),
+        ParamSpec::optional(
+            "b",
+            ParamKind::Grid,
+            "support function b of the planes f = D d: power coefficients b[i][j] of u^i v^j (hyperbolic: v only; parabolic: b_v = a_u; elliptic: default and required value ā(v))",
+        ),
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[\"1/4\", 1, \"1/4\", 1]",
+            "parameter rectangle [s0, s1, t0, t1] of Ω(s, t) = (2s, 2t, 1 − s² − t², 1 + s² + t²); the envelope must have no pole on it",
+        ),
+    ],
+    example: r#"[[object]]
+name = "sphere_family_polar_axes"
+op = "sphere_family_envelope"
+# Gruber §3.3.4 (polar axes): c(u) = (1, 0, 0, −u), d(v) = (0, 1, v, 0), a = u², b = v²;
+# Φ = (−u², −v², 2v, 2u), an envelope of degree 6
+net = "hyperbolic"
+points = [[1, 0, 0, 0], [0, 0, 0, -1], [0, 1, 0, 0], [0, 0, 1, 0]]
+a = [[0], [0], [1]]
+b = [[0, 0, 1]]
+domain = ["1/4", 1, "1/4", 1]
+"#,
+    build: build_envelope,
+};
+
+fn build_envelope(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let kind = match args.string("net")? {
+        "elliptic" => NetKind::Elliptic,
+        "parabolic" => NetKind::Parabolic,
+        _ => NetKind::Hyperbolic,
+    };
+    let points = args.points("points")?;
+    let a = args
+        .opt_grid("a")?
+        .ok_or_else(|| OpError::param("a", "the support function a is required"))?;
+    let a_im = args.opt_grid("a_imaginary")?;
+    let b = args.opt_grid("b")?;
+    let env = SphereFamilyEnvelope::<Rational>::from_data(kind, &points, &a, a_im.as_deref(), b.as_deref())
+        .map_err(|e| OpError::param("points", e.to_string()))?;
+    let dom = args
+        .opt_numbers("domain")?
+        .unwrap_or_default();
+    let [s0, s1, t0, t1] = <[Rational; 4]>::try_from(dom.clone()).map_err(|_| {
+        OpError::param("domain", format!("the domain has four numbers [s0, s1, t0, t1], got {}", dom.len()))
+    })?;
+    let (patches, weight_cert) = env
+        .export_patches((s0, s1), (t0, t1))
+        .map_err(|e| OpError::param("domain", e.to_string()))?;
+    let mut certs: Vec<Certificate> = env.certify();
+    certs.push(weight_cert);
+    Ok(vec![args.object(Geometry::Patches(patches), certs)])
+}

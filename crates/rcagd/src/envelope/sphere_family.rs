@@ -1,0 +1,1186 @@
+//! The envelope of a two-parameter sphere family from a line net and support functions
+//! (D. Gruber, "Rationale Parametrisierungen von Kugelhüllflächen", 2008, §3.1–3.5).
+//!
+//! **Cyclographic model.** A sphere with centre `m` and signed radius `r` is the point
+//! `Φ = (m, r) ∈ R^{3,1}`; a two-parameter family is a surface `Φ(u, v)`. The ideal points of
+//! `R^{3,1}` form the 3-space `ω` with the absolute quadric `Ω: y₁² + y₂² + y₃² − y₄² = 0`,
+//! parametrized by `w(s, t) = (2s, 2t, 1 − s² − t², 1 + s² + t²)` (Gruber (3.4)). An
+//! isotropic line through `Φ` with direction `w ∈ Ω` meets `x₄ = 0` in
+//! `Φ₁..₃ − Φ₄ (w₁, w₂, w₃)/w₄`, a point of the sphere `Φ` (Gruber §1.2). It is a point of the
+//! envelope iff `w` is Lorentz-orthogonal to the tangent plane of `Φ`, i.e. `w` lies on the
+//! ideal line `h` of the normal plane (Gruber §3.1.2). Each `h` meets Ω in two points: the
+//! two sheets of the envelope (one contact point with each sphere per sheet).
+//!
+//! **Construction of §3.2.** Choose the normal lines `h(u, v)` to form a regular line net
+//! ([`LineNet`]); the tangent ideal lines are the polars `g = E h`, spanned by the polar
+//! planes `e = D c`, `f = D d` of the points `c`, `d` spanning `h`
+//! (`D = diag(1, 1, 1, −1)`). Support functions `a`, `b` fix the tangent hyperplanes
+//! `eᵀx = a`, `fᵀx = b`; the surface `Φ` they envelope solves the linear system (3.7):
+//!
+//! ```text
+//! eᵀx = a,  e_uᵀx = a_u,  e_vᵀx = a_v,   fᵀx = b,  f_uᵀx = b_u,  f_vᵀx = b_v.
+//! ```
+//!
+//! It is consistent (rank 4) under the conditions of the net type:
+//! hyperbolic `e_v = f_u = 0`, `a_v = b_u = 0` ((3.10), (3.11)); elliptic the same with
+//! `d = c̄` and `b = ā` (the printed (3.44) `e_v = conj(f_u)` is vacuous; the intended
+//! condition is `f(v) = ē(v)`, `b = ā`: see `docs/math/sphere-families.md#elliptic`);
+//! parabolic `e_v = 0`, `e_u = f_v`, `a_v = 0`, `a_u = b_v` ((3.54), (3.55)). For the nets of
+//! [`LineNet`] the determinant of the four independent rows is the constant
+//! `det(c₀, c₁, d₀, d₁)` (up to sign), so `Φ` is polynomial in the net parameters.
+//! For elliptic nets the system is solved over R in `(m, n)`, `u = m − i n`: the real and
+//! imaginary parts of `eᵀx = a` and `e_uᵀx = a_u` (the `f` rows are their conjugates).
+//!
+//! **Reparametrization (3.16).** The net is a fibration of `ω`: the net line through
+//! `w(s, t)` has rational parameters `(u, v)(s, t)` ([`LineNet::parameters_of_point`]), so
+//! `Φ(s, t) = Φ(u(s, t), v(s, t))` and
+//!
+//! ```text
+//! Ψ(s, t) = π(Φ) − Φ₄ · (w₁, w₂, w₃)/w₄
+//! ```
+//!
+//! is a rational parametrization of the whole envelope (both sheets: the two points of
+//! `h ∩ Ω` are two parameter points `(s, t)`, exchanged by [`SphereFamilyEnvelope::other_sheet`]).
+//!
+//! **Certificates** (exact polynomial identities for exact scalars): the system (3.7) and the
+//! tangency (3.8) `eᵀΦ_u = eᵀΦ_v = fᵀΦ_u = fᵀΦ_v = 0` in the net parameters; the
+//! consistency conditions of the net type; the fibration `M(h(u(s,t), v(s,t))) w(s,t) ≡ 0`;
+//! and the envelope property
+//! `|Ψ − π(Φ)|² ≡ Φ₄²`, `⟨Ψ − π(Φ), ∂ₛπ(Φ)⟩ + Φ₄ ∂ₛΦ₄ ≡ 0`, `⟨Ψ − π(Φ), ∂ₜπ(Φ)⟩ + Φ₄ ∂ₜΦ₄ ≡ 0`
+//! (the envelope point lies on its sphere `S` and on `S_s`, `S_t` of (3.1)–(3.3), with the
+//! sign of (3.3) corrected to `⟨x − m, m_u⟩ + r r_u = 0`: see
+//! `docs/math/sphere-families.md#sign`).
+//!
+//! **Direct envelope (§3.1.1).** [`SphereFamilyEnvelope::direct_envelope`] intersects the
+//! line `S_u ∩ S_v` with the sphere `S` at given net parameters — a quadratic equation,
+//! solved in the square-root extension — as an independent cross-check of `Ψ`.
+
+use crate::error::format_scalar;
+use crate::lines::net::{
+    cst2, fibration_certificate, omega_form, omega_parametrization, substitute_rational, CPoly,
+    NetParameters,
+};
+use crate::lines::{
+    AxisPosition, ComplexPointRow, LineNet, NetError, NetKind, PointRow, SqrtScalar,
+};
+use crate::pn::poly::{
+    cancel_common, cancel_gcd, det4, gcd2, identity_cert, mag, normalize_content, patch_of,
+    sign_on_domain, zero_cert, Domain, Sign,
+};
+use crate::Certified;
+use rcagd_algebra::mpoly::MPoly;
+use rcagd_algebra::{Certificate, Scalar};
+use rcagd_geom::weight_sign::{split_patches_adaptive, SignRule};
+use rcagd_geom::BezierPatch;
+use thiserror::Error;
+
+/// Errors of the sphere-family envelope. Every variant names the violated precondition.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+pub enum SphereFamilyError {
+    /// The net is degenerate.
+    #[error(transparent)]
+    Net(#[from] NetError),
+    /// The support functions violate the consistency condition of the net type.
+    #[error("inconsistent support functions: {0}")]
+    InconsistentSupport(String),
+    /// The system (3.7) has no unique solution.
+    #[error("the linear system (3.7) is singular: det = 0 (Gruber §3.2 needs rank 4)")]
+    SingularSystem,
+    /// `Φ` is a point or a curve (its two partial derivatives are dependent), so the family
+    /// is at most one-parametric.
+    #[error("the sphere family degenerates: Φ_u ∧ Φ_v ≡ 0 (constant or linear support functions give a point or a curve, Gruber §3.3)")]
+    DegenerateFamily,
+    /// The envelope's denominator vanishes on the requested parameter rectangle.
+    #[error("the envelope has a pole in the parameter rectangle: {0}")]
+    PoleInDomain(String),
+    /// A parameter point where the envelope (or the net line, or the sphere) is undefined.
+    #[error("undefined at the parameters: {0}")]
+    Undefined(String),
+    /// The characteristic points of the sphere are not real (the tangent plane of `Φ` is
+    /// timelike: `h` misses Ω, Gruber §3.1.2).
+    #[error("no real envelope point: {0}")]
+    NoRealEnvelope(String),
+    /// A parameter rectangle is empty.
+    #[error("invalid parameter rectangle: {0}")]
+    InvalidDomain(String),
+}
+
+/// A support function `a(u, v)` (Gruber (3.6)): real part and, for elliptic nets, imaginary
+/// part (polynomials in the net parameters `u` = variable 0, `v` = variable 1).
+#[derive(Debug, Clone)]
+pub struct Support<F> {
+    /// Real part.
+    pub re: MPoly<F>,
+    /// Imaginary part (zero for hyperbolic and parabolic nets).
+    pub im: MPoly<F>,
+}
+
+impl<F: Scalar> Support<F> {
+    /// A real support function.
+    pub fn real(re: MPoly<F>) -> Self {
+        Support {
+            re,
+            im: MPoly::zero(2),
+        }
+    }
+
+    /// A complex support function `re + i·im`.
+    pub fn complex(re: MPoly<F>, im: MPoly<F>) -> Self {
+        Support { re, im }
+    }
+
+    /// The univariate polynomial `Σ cₖ xᵏ` (real coefficients, lowest first) in variable `var`.
+    pub fn univariate(coeffs: &[F], var: usize) -> Self {
+        let mut p = MPoly::zero(2);
+        for (k, c) in coeffs.iter().enumerate() {
+            let mut e = [0u32; 2];
+            if let Some(x) = e.get_mut(var) {
+                *x = k as u32;
+            }
+            p = &p + &MPoly::monomial(2, &e, c.clone());
+        }
+        Support::real(p)
+    }
+
+    /// `Σ g[i][j] uⁱ vʲ` from a grid of power coefficients.
+    pub fn from_grid(grid: &[Vec<F>]) -> Self {
+        Support::real(grid_poly(grid))
+    }
+
+    /// The conjugate support function in the second parameter, `ā(v)` (the `b` of an
+    /// elliptic net for the support function `a(u)`, Gruber (3.44) corrected).
+    pub fn conjugate_in_v(&self) -> Self {
+        Support {
+            re: swap_vars(&self.re),
+            im: -&swap_vars(&self.im),
+        }
+    }
+
+    fn as_cpoly(&self) -> CPoly<F> {
+        CPoly {
+            re: self.re.clone(),
+            im: self.im.clone(),
+        }
+    }
+}
+
+/// The subcases of Gruber chapter 3 (net type and position of the axes with respect to Ω).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Subcase {
+    /// §3.3.1: hyperbolic, both axes passants.
+    HyperbolicPassantPassant,
+    /// §3.3.2: hyperbolic, both axes secants.
+    HyperbolicSecantSecant,
+    /// §3.3.3: hyperbolic, both axes tangents.
+    HyperbolicTangentTangent,
+    /// §3.3.4: hyperbolic, a secant and a passant (not polar).
+    HyperbolicSecantPassant,
+    /// §3.3.4 (second example): a secant and a passant polar with respect to Ω.
+    HyperbolicPolar,
+    /// §3.3.5: hyperbolic, a secant and a tangent.
+    HyperbolicSecantTangent,
+    /// §3.3.6: hyperbolic, a passant and a tangent.
+    HyperbolicPassantTangent,
+    /// §3.4.1: elliptic, secant axes.
+    EllipticSecant,
+    /// §3.4.2: elliptic, tangent axes.
+    EllipticTangent,
+    /// §3.5.1: parabolic, the axis a passant.
+    ParabolicPassant,
+    /// §3.5.2: parabolic, the axis a secant.
+    ParabolicSecant,
+    /// §3.5.3 a): parabolic, tangent axis, the pencil at the contact point in the tangent
+    /// plane of Ω.
+    ParabolicTangentA,
+    /// §3.5.3 b): parabolic, tangent axis, the pencil plane cuts Ω in a conic.
+    ParabolicTangentB,
+}
+
+impl Subcase {
+    /// The section of Gruber chapter 3 (`"3.3.1"`, …, `"3.5.3b"`; `"3.3.4p"` for the polar
+    /// variant).
+    pub fn section(&self) -> &'static str {
+        match self {
+            Subcase::HyperbolicPassantPassant => "3.3.1",
+            Subcase::HyperbolicSecantSecant => "3.3.2",
+            Subcase::HyperbolicTangentTangent => "3.3.3",
+            Subcase::HyperbolicSecantPassant => "3.3.4",
+            Subcase::HyperbolicPolar => "3.3.4p",
+            Subcase::HyperbolicSecantTangent => "3.3.5",
+            Subcase::HyperbolicPassantTangent => "3.3.6",
+            Subcase::EllipticSecant => "3.4.1",
+            Subcase::EllipticTangent => "3.4.2",
+            Subcase::ParabolicPassant => "3.5.1",
+            Subcase::ParabolicSecant => "3.5.2",
+            Subcase::ParabolicTangentA => "3.5.3a",
+            Subcase::ParabolicTangentB => "3.5.3b",
+        }
+    }
+
+    /// The subcase of a net (Gruber §3.3–3.5; the classification of 3.4.1 and of 3.5.3 b
+    /// corrected, see `docs/math/sphere-families.md#classification`).
+    pub fn of_net<F: Scalar>(net: &LineNet<F>) -> Subcase {
+        use AxisPosition::*;
+        let pos = net.axis_positions();
+        let p0 = pos.first().copied().unwrap_or(Passant);
+        let p1 = pos.get(1).copied().unwrap_or(p0);
+        match net.kind() {
+            NetKind::Hyperbolic => match (p0, p1) {
+                (Passant, Passant) => Subcase::HyperbolicPassantPassant,
+                (Secant, Secant) => Subcase::HyperbolicSecantSecant,
+                (Tangent, Tangent) => Subcase::HyperbolicTangentTangent,
+                (Secant, Passant) | (Passant, Secant) => {
+                    if net.axes_polar() {
+                        Subcase::HyperbolicPolar
+                    } else {
+                        Subcase::HyperbolicSecantPassant
+                    }
+                }
+                (Secant, Tangent) | (Tangent, Secant) => Subcase::HyperbolicSecantTangent,
+                (Passant, Tangent) | (Tangent, Passant) => Subcase::HyperbolicPassantTangent,
+            },
+            NetKind::Elliptic => match p0 {
+                Tangent => Subcase::EllipticTangent,
+                _ => Subcase::EllipticSecant,
+            },
+            NetKind::Parabolic => match p0 {
+                Passant => Subcase::ParabolicPassant,
+                Secant => Subcase::ParabolicSecant,
+                Tangent => match net.parabolic_tangent_case_a() {
+                    Some(false) => Subcase::ParabolicTangentB,
+                    _ => Subcase::ParabolicTangentA,
+                },
+            },
+        }
+    }
+}
+
+/// The two points of the direct envelope `S ∩ S_u ∩ S_v` (Gruber §3.1.1) over the
+/// square-root extension of the scalar.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DirectEnvelope<E> {
+    /// `m + y₀ + λ n`.
+    pub plus: [E; 3],
+    /// `m + y₀ − λ n`.
+    pub minus: [E; 3],
+}
+
+/// The envelope of the sphere family of a line net and two support functions (module docs).
+#[derive(Debug, Clone)]
+pub struct SphereFamilyEnvelope<F> {
+    net: LineNet<F>,
+    a: Support<F>,
+    b: Support<F>,
+    /// `Φ = phi/phi_den` in the net parameters.
+    phi: [MPoly<F>; 4],
+    phi_den: MPoly<F>,
+    params: NetParameters<F>,
+    /// `Φ(s, t) = phi_st/phi_st_den`.
+    phi_st: [MPoly<F>; 4],
+    phi_st_den: MPoly<F>,
+    /// Homogeneous `(W, X, Y, Z)` of `Ψ(s, t)`.
+    psi: [MPoly<F>; 4],
+}
+
+fn grid_poly<F: Scalar>(grid: &[Vec<F>]) -> MPoly<F> {
+    let mut p = MPoly::zero(2);
+    for (i, row) in grid.iter().enumerate() {
+        for (j, c) in row.iter().enumerate() {
+            p = &p + &MPoly::monomial(2, &[i as u32, j as u32], c.clone());
+        }
+    }
+    p
+}
+
+fn swap_vars<F: Scalar>(p: &MPoly<F>) -> MPoly<F> {
+    let mut out = MPoly::zero(2);
+    for (e, c) in p.terms() {
+        let i = e.first().copied().unwrap_or(0);
+        let j = e.get(1).copied().unwrap_or(0);
+        out = &out + &MPoly::monomial(2, &[j, i], c.clone());
+    }
+    out
+}
+
+fn is_zero_poly<F: Scalar>(p: &MPoly<F>, scale: f64) -> bool {
+    p.terms()
+        .all(|(_, c)| crate::lines::is_small(c, scale.max(1.0)))
+}
+
+/// `p(x) = Σ cⱼ xʲ` (complex coefficients, polynomial in variable `var` only) at the complex
+/// polynomial `x`.
+fn complex_subst<F: Scalar>(p: &CPoly<F>, var: usize, x: &CPoly<F>) -> CPoly<F> {
+    let deg =
+        p.re.degree_in(var)
+            .unwrap_or(0)
+            .max(p.im.degree_in(var).unwrap_or(0));
+    let mut acc = CPoly::real(MPoly::zero(2));
+    let mut pw = CPoly::real(MPoly::constant(2, F::one()));
+    for k in 0..=deg {
+        let mut e = [0u32; 2];
+        if let Some(z) = e.get_mut(var) {
+            *z = k;
+        }
+        let c = CPoly {
+            re: cst2(&p.re.coeff(&e)),
+            im: cst2(&p.im.coeff(&e)),
+        };
+        acc = acc.add(&c.mul(&pw));
+        pw = pw.mul(x);
+    }
+    acc
+}
+
+fn cdot4<F: Scalar>(a: &[CPoly<F>; 4], x: &[MPoly<F>; 4]) -> CPoly<F> {
+    a.iter()
+        .zip(x)
+        .fold(CPoly::real(MPoly::zero(2)), |acc, (p, q)| {
+            acc.add(&CPoly {
+                re: &p.re * q,
+                im: &p.im * q,
+            })
+        })
+}
+
+fn cpartial<F: Scalar>(p: &CPoly<F>, i: usize) -> CPoly<F> {
+    CPoly {
+        re: p.re.partial(i),
+        im: p.im.partial(i),
+    }
+}
+
+/// A derivation of complex polynomials (`∂/∂u` or `∂/∂v`).
+type CDeriv<'a, F> = Box<dyn Fn(&CPoly<F>) -> CPoly<F> + 'a>;
+
+/// One equation `rowᵀ x = rhs` of (3.7) with its name.
+struct Equation<F> {
+    name: &'static str,
+    row: [CPoly<F>; 4],
+    rhs: CPoly<F>,
+}
+
+impl<F: Scalar> SphereFamilyEnvelope<F> {
+    /// The envelope of the sphere family of the net `net` and the support functions `a`
+    /// (of the planes `e = D c`) and `b` (of `f = D d`) (module docs).
+    ///
+    /// # Errors
+    /// [`SphereFamilyError::InconsistentSupport`] if `a`, `b` violate the condition of the
+    /// net type ((3.11), (3.43) with `b = ā`, (3.55)); [`SphereFamilyError::SingularSystem`]
+    /// if (3.7) has no unique solution; [`SphereFamilyError::DegenerateFamily`] if `Φ` is a
+    /// point or a curve; [`SphereFamilyError::Net`] if the net is no fibration of Ω.
+    pub fn new(net: &LineNet<F>, a: Support<F>, b: Support<F>) -> Result<Self, SphereFamilyError> {
+        check_support(net, &a, &b)?;
+        let eqs = equations(net, &a, &b);
+        let (rows, rhs) = real_system(net, &eqs);
+        let r: [&[MPoly<F>; 4]; 4] = [&rows[0], &rows[1], &rows[2], &rows[3]];
+        let det = det4(r);
+        if is_zero_poly(&det, 1.0) {
+            return Err(SphereFamilyError::SingularSystem);
+        }
+        let phi: [MPoly<F>; 4] = core::array::from_fn(|i| {
+            let m: [[MPoly<F>; 4]; 4] = core::array::from_fn(|k| {
+                let mut row = rows[k].clone();
+                if let Some(x) = row.get_mut(i) {
+                    *x = rhs[k].clone();
+                }
+                row
+            });
+            det4([&m[0], &m[1], &m[2], &m[3]])
+        });
+        let mut all: Vec<MPoly<F>> = phi.to_vec();
+        all.push(det);
+        cancel_gcd(&mut all);
+        normalize_content(&mut all);
+        let phi: [MPoly<F>; 4] = core::array::from_fn(|k| all[k].clone());
+        let phi_den = all[4].clone();
+        // Φ_u ∧ Φ_v ≢ 0 (quotient rule numerators)
+        let du: Vec<MPoly<F>> = phi
+            .iter()
+            .map(|p| &(&p.partial(0) * &phi_den) - &(p * &phi_den.partial(0)))
+            .collect();
+        let dv: Vec<MPoly<F>> = phi
+            .iter()
+            .map(|p| &(&p.partial(1) * &phi_den) - &(p * &phi_den.partial(1)))
+            .collect();
+        let sc = phi.iter().map(mag).fold(1.0, f64::max).powi(4);
+        let regular = (0..4).any(|i| {
+            (i + 1..4).any(|j| !is_zero_poly(&(&(&du[i] * &dv[j]) - &(&du[j] * &dv[i])), sc))
+        });
+        if !regular {
+            return Err(SphereFamilyError::DegenerateFamily);
+        }
+        // reparametrization (3.16)
+        let w = omega_parametrization::<F>();
+        let mut params = net.parameters_of_point(&w)?;
+        for (n, d) in [(0, 1), (2, 3)] {
+            let mut pair = if n == 0 {
+                vec![params.first.clone(), params.first_den.clone()]
+            } else {
+                vec![params.second.clone(), params.second_den.clone()]
+            };
+            cancel_gcd(&mut pair);
+            normalize_content(&mut pair);
+            let _ = d;
+            if n == 0 {
+                params.first = pair[0].clone();
+                params.first_den = pair[1].clone();
+            } else {
+                params.second = pair[0].clone();
+                params.second_den = pair[1].clone();
+            }
+        }
+        let dx = all.iter().filter_map(|p| p.degree_in(0)).max().unwrap_or(0);
+        let dy = all.iter().filter_map(|p| p.degree_in(1)).max().unwrap_or(0);
+        let sub = |p: &MPoly<F>| {
+            substitute_rational(
+                p,
+                (&params.first, &params.first_den),
+                (&params.second, &params.second_den),
+                dx,
+                dy,
+            )
+        };
+        let mut st: Vec<MPoly<F>> = all.iter().map(sub).collect();
+        let candidates = factor_candidates(&params, &w);
+        cancel_common(&mut st, &candidates);
+        normalize_content(&mut st);
+        let phi_st: [MPoly<F>; 4] = core::array::from_fn(|k| st[k].clone());
+        let phi_st_den = st[4].clone();
+        // Ψ = (W, X, Y, Z) = (D w₄, Nᵢ w₄ − N₄ wᵢ)
+        let mut psi = vec![&phi_st_den * &w[3]];
+        for i in 0..3 {
+            psi.push(&(&phi_st[i] * &w[3]) - &(&phi_st[3] * &w[i]));
+        }
+        cancel_common(&mut psi, &candidates);
+        normalize_content(&mut psi);
+        Ok(SphereFamilyEnvelope {
+            net: net.clone(),
+            a,
+            b,
+            phi,
+            phi_den,
+            params,
+            phi_st,
+            phi_st_den,
+            psi: core::array::from_fn(|k| psi[k].clone()),
+        })
+    }
+
+    /// The envelope from plain data (a recipe): the net type, its point rows
+    /// (`[c₀, c₁, d₀, d₁]` for hyperbolic and parabolic nets with `d(u, v) = d₀ + u d₁ + v c₁`
+    /// for the latter; `[Re c₀, Im c₀, Re c₁, Im c₁]` for elliptic nets), the support
+    /// function `a` as a grid of power coefficients of `uⁱvʲ` (with an imaginary part for
+    /// elliptic nets) and `b` (default for elliptic nets: `ā(v)`).
+    ///
+    /// # Errors
+    /// [`SphereFamilyError::InconsistentSupport`] for a wrong number of rows or a missing
+    /// `b`, and every error of [`LineNet`] and [`Self::new`].
+    pub fn from_data(
+        kind: NetKind,
+        rows: &[Vec<F>],
+        a: &[Vec<F>],
+        a_im: Option<&[Vec<F>]>,
+        b: Option<&[Vec<F>]>,
+    ) -> Result<Self, SphereFamilyError> {
+        let bad = |m: String| SphereFamilyError::InconsistentSupport(m);
+        let rows4: Vec<[F; 4]> = rows
+            .iter()
+            .map(|r| {
+                <[F; 4]>::try_from(r.clone()).map_err(|_| {
+                    bad(format!(
+                        "a point of ω has four coordinates, got {}",
+                        r.len()
+                    ))
+                })
+            })
+            .collect::<Result<_, _>>()?;
+        if rows4.len() != 4 {
+            return Err(bad(format!(
+                "the net needs four points (c₀, c₁, d₀, d₁ or Re c₀, Im c₀, Re c₁, Im c₁), got {}",
+                rows4.len()
+            )));
+        }
+        let r = |k: usize| rows4[k].clone();
+        let net = match kind {
+            NetKind::Hyperbolic => {
+                LineNet::hyperbolic(PointRow::new(r(0), r(1))?, PointRow::new(r(2), r(3))?)?
+            }
+            NetKind::Parabolic => {
+                LineNet::parabolic(PointRow::new(r(0), r(1))?, PointRow::new(r(2), r(3))?)?
+            }
+            NetKind::Elliptic => LineNet::elliptic(ComplexPointRow {
+                origin_re: r(0),
+                origin_im: r(1),
+                direction_re: r(2),
+                direction_im: r(3),
+            })?,
+        };
+        let a = Support {
+            re: grid_poly(a),
+            im: a_im.map(grid_poly).unwrap_or_else(|| MPoly::zero(2)),
+        };
+        let b = match (b, kind) {
+            (Some(g), _) => Support::from_grid(g),
+            (None, NetKind::Elliptic) => a.conjugate_in_v(),
+            (None, _) => {
+                return Err(bad(
+                    "the support function b is required for hyperbolic and parabolic nets".into(),
+                ))
+            }
+        };
+        Self::new(&net, a, b)
+    }
+
+    /// The net.
+    pub fn net(&self) -> &LineNet<F> {
+        &self.net
+    }
+
+    /// The subcase of Gruber chapter 3.
+    pub fn subcase(&self) -> Subcase {
+        Subcase::of_net(&self.net)
+    }
+
+    /// `Φ = (numerators, denominator)` in the net parameters (`(u, v)`, or `(m, n)` for
+    /// elliptic nets): the cyclographic preimage of the family, centre `Φ₁..₃/den`, radius
+    /// `Φ₄/den`.
+    pub fn phi(&self) -> (&[MPoly<F>; 4], &MPoly<F>) {
+        (&self.phi, &self.phi_den)
+    }
+
+    /// The reparametrization `(u, v)(s, t)` (or `(m, n)(s, t)`) of (3.16).
+    pub fn reparametrization(&self) -> &NetParameters<F> {
+        &self.params
+    }
+
+    /// `Φ(s, t) = (numerators, denominator)`.
+    pub fn phi_st(&self) -> (&[MPoly<F>; 4], &MPoly<F>) {
+        (&self.phi_st, &self.phi_st_den)
+    }
+
+    /// The homogeneous coordinates `(W, X, Y, Z)` of the envelope `Ψ(s, t) = (X, Y, Z)/W`.
+    pub fn homogeneous(&self) -> &[MPoly<F>; 4] {
+        &self.psi
+    }
+
+    /// `(deg_s, deg_t)` of the homogeneous envelope.
+    pub fn bidegree(&self) -> (usize, usize) {
+        self.psi.iter().fold((0, 0), |(a, b), p| {
+            (
+                a.max(p.degree_in(0).unwrap_or(0) as usize),
+                b.max(p.degree_in(1).unwrap_or(0) as usize),
+            )
+        })
+    }
+
+    /// The total degree of the homogeneous envelope.
+    pub fn total_degree(&self) -> usize {
+        self.psi
+            .iter()
+            .filter_map(|p| p.total_degree())
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// `Ψ(s, t)`.
+    ///
+    /// # Errors
+    /// [`SphereFamilyError::Undefined`] where the denominator vanishes.
+    pub fn eval(&self, s: &F, t: &F) -> Result<[F; 3], SphereFamilyError> {
+        let x = [s.clone(), t.clone()];
+        let v: Vec<F> = self
+            .psi
+            .iter()
+            .map(|p| p.eval(&x).unwrap_or_else(|_| F::zero()))
+            .collect();
+        let w = v.first().cloned().unwrap_or_else(F::zero);
+        let Some(inv) = w.inv().filter(|_| !w.is_zero()) else {
+            return Err(SphereFamilyError::Undefined(format!(
+                "Ψ has a pole at (s, t) = ({}, {})",
+                format_scalar(s),
+                format_scalar(t)
+            )));
+        };
+        Ok(core::array::from_fn(|k| {
+            v.get(k + 1).cloned().unwrap_or_else(F::zero) * inv.clone()
+        }))
+    }
+
+    fn eval_ratio(
+        num: &[MPoly<F>; 4],
+        den: &MPoly<F>,
+        x: &[F; 2],
+        what: &str,
+    ) -> Result<[F; 4], SphereFamilyError> {
+        let d = den.eval(x).unwrap_or_else(|_| F::zero());
+        if d.is_zero() {
+            return Err(SphereFamilyError::Undefined(format!(
+                "{what} at ({}, {})",
+                format_scalar(&x[0]),
+                format_scalar(&x[1])
+            )));
+        }
+        Ok(core::array::from_fn(|k| {
+            num[k].eval(x).unwrap_or_else(|_| F::zero()) / d.clone()
+        }))
+    }
+
+    /// The sphere `(centre, radius)` enveloped at `Ψ(s, t)`.
+    ///
+    /// # Errors
+    /// [`SphereFamilyError::Undefined`] where `Φ(s, t)` has a pole.
+    pub fn sphere_at(&self, s: &F, t: &F) -> Result<([F; 3], F), SphereFamilyError> {
+        let p = Self::eval_ratio(
+            &self.phi_st,
+            &self.phi_st_den,
+            &[s.clone(), t.clone()],
+            "Φ(s, t) has a pole",
+        )?;
+        Ok(([p[0].clone(), p[1].clone(), p[2].clone()], p[3].clone()))
+    }
+
+    /// The sphere `Φ` at net parameters `(p, q)`.
+    ///
+    /// # Errors
+    /// [`SphereFamilyError::Undefined`] where `Φ` has a pole.
+    pub fn sphere_at_parameters(&self, p: &F, q: &F) -> Result<([F; 3], F), SphereFamilyError> {
+        let x = Self::eval_ratio(
+            &self.phi,
+            &self.phi_den,
+            &[p.clone(), q.clone()],
+            "Φ has a pole",
+        )?;
+        Ok(([x[0].clone(), x[1].clone(), x[2].clone()], x[3].clone()))
+    }
+
+    /// The net parameters `(u, v)(s, t)` of the net line through `w(s, t)`.
+    ///
+    /// # Errors
+    /// [`SphereFamilyError::Undefined`] where a denominator vanishes.
+    pub fn parameters_at(&self, s: &F, t: &F) -> Result<(F, F), SphereFamilyError> {
+        let x = [s.clone(), t.clone()];
+        let ev = |p: &MPoly<F>| p.eval(&x).unwrap_or_else(|_| F::zero());
+        let (a, b, c, d) = (
+            ev(&self.params.first),
+            ev(&self.params.first_den),
+            ev(&self.params.second),
+            ev(&self.params.second_den),
+        );
+        if b.is_zero() || d.is_zero() {
+            return Err(SphereFamilyError::Undefined(format!(
+                "the net line through w({}, {}) is not unique (a point of an axis)",
+                format_scalar(s),
+                format_scalar(t)
+            )));
+        }
+        Ok((a / b, c / d))
+    }
+
+    /// The parameter point `(s', t')` of the other sheet: the second intersection point of
+    /// the net line through `w(s, t)` with Ω, `w' = ⟨p, p⟩ w − 2⟨w, p⟩ p` for a second point
+    /// `p` of the line (`⟨·,·⟩` the form of Ω), `(s', t') = (w'₁, w'₂)/(w'₃ + w'₄)`.
+    /// Returns `(s, t)` itself where the net line touches Ω.
+    ///
+    /// # Errors
+    /// [`SphereFamilyError::Undefined`] where the net line is not unique or `w'` is the
+    /// point `(0, 0, −1, 1)` outside the parametrization.
+    pub fn other_sheet(&self, s: &F, t: &F) -> Result<(F, F), SphereFamilyError> {
+        let (p, q) = self.parameters_at(s, t)?;
+        let line = self
+            .net
+            .line_at(&p, &q)
+            .map_err(|e| SphereFamilyError::Undefined(e.to_string()))?;
+        let w = crate::cyclographic::omega_point(s, t);
+        let (p1, p2) = line.points();
+        let scale = crate::lines::scale_of(&w);
+        let pick = if crate::lines::proportional(&p1, &w) {
+            p2
+        } else {
+            p1
+        };
+        let _ = scale;
+        let pp = omega_form(&pick, &pick);
+        let wp = omega_form(&w, &pick);
+        let two = F::from_i64(2);
+        let w2: [F; 4] = core::array::from_fn(|k| {
+            pp.clone() * w[k].clone() - two.clone() * wp.clone() * pick[k].clone()
+        });
+        if crate::lines::proportional(&w2, &w) || w2.iter().all(|x| x.is_zero()) {
+            return Ok((s.clone(), t.clone()));
+        }
+        let den = w2[2].clone() + w2[3].clone();
+        if den.is_zero() {
+            return Err(SphereFamilyError::Undefined(
+                "the other sheet's point is w = (0, 0, −1, 1), outside Ω(s, t)".into(),
+            ));
+        }
+        Ok((w2[0].clone() / den.clone(), w2[1].clone() / den))
+    }
+
+    /// The rational Bézier patch of `Ψ` on `[s₀, s₁] × [t₀, t₁]`.
+    ///
+    /// # Errors
+    /// [`SphereFamilyError::InvalidDomain`] for an empty rectangle,
+    /// [`SphereFamilyError::PoleInDomain`] if the denominator `W` vanishes on it (decided by
+    /// Bernstein coefficients and subdivision).
+    pub fn patch(&self, s: (F, F), t: (F, F)) -> Result<BezierPatch<F>, SphereFamilyError> {
+        let d = Domain::new(s.0, s.1, t.0, t.1)
+            .map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))?;
+        match sign_on_domain(&self.psi[0], &d, 4096) {
+            Sign::Positive | Sign::Negative => {}
+            Sign::ZeroAt(p) | Sign::Changes(p, _) | Sign::Undecided(p) => {
+                return Err(SphereFamilyError::PoleInDomain(format!(
+                    "the weight W(s, t) vanishes near (s, t) = ({}, {})",
+                    format_scalar(&p[0]),
+                    format_scalar(&p[1])
+                )))
+            }
+        }
+        patch_of(&self.psi, &d).map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))
+    }
+
+    /// The envelope on `[s₀, s₁] × [t₀, t₁]` as rational Bézier patches whose Bernstein
+    /// weights are all positive (the patch of [`Self::patch`], negated if `W < 0`, bisected
+    /// where a weight is ≤ 0), with the certificate that every weight is positive.
+    ///
+    /// # Errors
+    /// As [`Self::patch`].
+    pub fn export_patches(
+        &self,
+        s: (F, F),
+        t: (F, F),
+    ) -> Result<(Vec<BezierPatch<F>>, Certificate), SphereFamilyError> {
+        let mut p = self.patch(s, t)?;
+        let dim = p.dim() + 1;
+        // W has one sign on the rectangle (checked by `patch`): the corner weight W(s₀, t₀)
+        let neg = p.coords().first().is_some_and(|w| *w < F::zero());
+        if neg {
+            let (m, n) = p.degree();
+            let flat: Vec<F> = p.coords().iter().map(|x| -x.clone()).collect();
+            p = BezierPatch::from_flat(dim - 1, m, n, flat)
+                .map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))?;
+        }
+        let split = split_patches_adaptive(vec![p], SignRule::Positive, (6, 6))
+            .map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))?;
+        let (pieces, bad) = (split.pieces, split.failed);
+        let n = pieces.len();
+        let cert = Certificate::decide(
+            format!("every Bernstein weight of the {n} envelope patches is > 0 (no pole on the rectangle)"),
+            bad == 0,
+            F::EXACT,
+            || format!("{bad} pieces keep a weight ≤ 0 after 12 bisections"),
+        );
+        Ok((pieces, cert))
+    }
+
+    /// The envelope converted to another scalar type (e.g. `f64`), rebuilt from the
+    /// converted net and support functions.
+    ///
+    /// # Errors
+    /// As [`Self::new`] (f64 data may become degenerate).
+    pub fn map_scalar<G: Scalar>(
+        &self,
+        f: impl Fn(&F) -> G + Copy,
+    ) -> Result<SphereFamilyEnvelope<G>, SphereFamilyError> {
+        let net = self.net.map_scalar(f);
+        let m = |s: &Support<F>| Support {
+            re: s.re.map(f),
+            im: s.im.map(f),
+        };
+        SphereFamilyEnvelope::new(&net, m(&self.a), m(&self.b))
+    }
+}
+
+impl<F: SqrtScalar> SphereFamilyEnvelope<F> {
+    /// The direct envelope `S ∩ S_u ∩ S_v` at the net parameters `(p, q)` (Gruber §3.1.1,
+    /// with the sign of (3.3) corrected): with `m, r` the sphere and `y = x − m`,
+    /// `⟨y, m_u⟩ = −r r_u`, `⟨y, m_v⟩ = −r r_v`, `|y|² = r²`. The first two fix
+    /// `y₀ ∈ span(m_u, m_v)`; then `y = y₀ ± λ n`, `n = m_u × m_v`,
+    /// `λ² = (r² − |y₀|²)/|n|²` — a square root in [`SqrtScalar::Ext`].
+    ///
+    /// # Errors
+    /// [`SphereFamilyError::Undefined`] where `Φ` has a pole or `m_u × m_v = 0` (a singular
+    /// point of the centre surface), [`SphereFamilyError::NoRealEnvelope`] where `λ² < 0`.
+    pub fn direct_envelope(
+        &self,
+        p: &F,
+        q: &F,
+    ) -> Result<DirectEnvelope<F::Ext>, SphereFamilyError> {
+        let x = [p.clone(), q.clone()];
+        let ev = |m: &MPoly<F>| m.eval(&x).unwrap_or_else(|_| F::zero());
+        let d = ev(&self.phi_den);
+        if d.is_zero() {
+            return Err(SphereFamilyError::Undefined("Φ has a pole".into()));
+        }
+        let (d_u, d_v) = (ev(&self.phi_den.partial(0)), ev(&self.phi_den.partial(1)));
+        let val: [F; 4] = core::array::from_fn(|k| ev(&self.phi[k]) / d.clone());
+        let der = |i: usize, dd: &F| -> [F; 4] {
+            core::array::from_fn(|k| {
+                (ev(&self.phi[k].partial(i)) - val[k].clone() * dd.clone()) / d.clone()
+            })
+        };
+        let (fu, fv) = (der(0, &d_u), der(1, &d_v));
+        let dot3 = |a: &[F; 4], b: &[F; 4]| {
+            a[0].clone() * b[0].clone() + a[1].clone() * b[1].clone() + a[2].clone() * b[2].clone()
+        };
+        let r = val[3].clone();
+        let (g11, g12, g22) = (dot3(&fu, &fu), dot3(&fu, &fv), dot3(&fv, &fv));
+        let det = g11.clone() * g22.clone() - g12.clone() * g12.clone();
+        if det.is_zero() {
+            return Err(SphereFamilyError::Undefined(
+                "m_u × m_v = 0: the centre surface is singular here".into(),
+            ));
+        }
+        let (r1, r2) = (-(r.clone() * fu[3].clone()), -(r.clone() * fv[3].clone()));
+        let alpha = (r1.clone() * g22 - r2.clone() * g12.clone()) / det.clone();
+        let beta = (r2 * g11 - r1 * g12) / det.clone();
+        let y0: [F; 3] =
+            core::array::from_fn(|k| alpha.clone() * fu[k].clone() + beta.clone() * fv[k].clone());
+        let n = [
+            fu[1].clone() * fv[2].clone() - fu[2].clone() * fv[1].clone(),
+            fu[2].clone() * fv[0].clone() - fu[0].clone() * fv[2].clone(),
+            fu[0].clone() * fv[1].clone() - fu[1].clone() * fv[0].clone(),
+        ];
+        let y0sq = y0.iter().fold(F::zero(), |a, x| a + x.clone() * x.clone());
+        // |n|² = det G (Lagrange identity)
+        let lam2 = (r.clone() * r - y0sq) / det;
+        let Some(lam) = lam2.sqrt_ext() else {
+            return Err(SphereFamilyError::NoRealEnvelope(format!(
+                "λ² = {} < 0 at ({}, {}): the net line misses Ω",
+                format_scalar(&lam2),
+                format_scalar(p),
+                format_scalar(q)
+            )));
+        };
+        let base: [F::Ext; 3] = core::array::from_fn(|k| (val[k].clone() + y0[k].clone()).embed());
+        let ne: [F::Ext; 3] = core::array::from_fn(|k| n[k].embed());
+        Ok(DirectEnvelope {
+            plus: core::array::from_fn(|k| base[k].clone() + lam.clone() * ne[k].clone()),
+            minus: core::array::from_fn(|k| base[k].clone() - lam.clone() * ne[k].clone()),
+        })
+    }
+}
+
+/// Candidate common factors of `Φ(s, t)` and `Ψ(s, t)`: the variables, `w₄ = 1 + s² + t²`,
+/// the reparametrization denominators and their common and cofactor parts. (A general
+/// bivariate gcd of the high-degree coordinates is much slower and finds no other factors
+/// in the examples; cancelling fewer factors never affects the certificates, only the
+/// degree.)
+fn factor_candidates<F: Scalar>(params: &NetParameters<F>, w: &[MPoly<F>; 4]) -> Vec<MPoly<F>> {
+    let (a, b) = (&params.first_den, &params.second_den);
+    let g = gcd2(a, b);
+    let mut out = vec![MPoly::var(2, 0), MPoly::var(2, 1), w[3].clone(), g.clone()];
+    for x in [a, b] {
+        // x / gcd
+        out.push(crate::pn::poly::div_exact(x, &g).unwrap_or_else(|| x.clone()));
+        out.push(x.clone());
+    }
+    out.sort_by_key(|p| std::cmp::Reverse(p.total_degree().unwrap_or(0)));
+    out
+}
+
+/// The consistency conditions on the support functions (3.11), (3.43)/(3.44) corrected,
+/// (3.55).
+fn check_support<F: Scalar>(
+    net: &LineNet<F>,
+    a: &Support<F>,
+    b: &Support<F>,
+) -> Result<(), SphereFamilyError> {
+    let sc = 1.0;
+    let bad = |m: &str| Err(SphereFamilyError::InconsistentSupport(m.to_string()));
+    match net.kind() {
+        NetKind::Hyperbolic | NetKind::Parabolic => {
+            if !is_zero_poly(&a.im, sc) || !is_zero_poly(&b.im, sc) {
+                return bad("the support functions of a hyperbolic or parabolic net are real");
+            }
+        }
+        NetKind::Elliptic => {}
+    }
+    if !is_zero_poly(&a.re.partial(1), sc) || !is_zero_poly(&a.im.partial(1), sc) {
+        return bad("a_v ≢ 0: the support function a depends on u only ((3.11), (3.43), (3.55))");
+    }
+    match net.kind() {
+        NetKind::Hyperbolic => {
+            if !is_zero_poly(&b.re.partial(0), sc) {
+                return bad(
+                    "b_u ≢ 0: the support function b of a hyperbolic net depends on v only (3.11)",
+                );
+            }
+        }
+        NetKind::Elliptic => {
+            if !is_zero_poly(&b.re.partial(0), sc) || !is_zero_poly(&b.im.partial(0), sc) {
+                return bad(
+                    "b_u ≢ 0: the support function b of an elliptic net depends on v only (3.43)",
+                );
+            }
+            let want_re = swap_vars(&a.re);
+            let want_im = -&swap_vars(&a.im);
+            if !is_zero_poly(&(&b.re - &want_re), sc) || !is_zero_poly(&(&b.im - &want_im), sc) {
+                return bad("b ≠ ā: the support functions of an elliptic net are conjugate, b(v) = ā(v) (Gruber (3.44), corrected)");
+            }
+        }
+        NetKind::Parabolic => {
+            if !is_zero_poly(&(&a.re.partial(0) - &b.re.partial(1)), sc) {
+                return bad("a_u ≠ b_v: the support functions of a parabolic net satisfy a_u = b_v (3.55), i.e. b = v·a'(u) + b₀(u)");
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The six equations of (3.7) as complex rows in the net parameters; for elliptic nets the
+/// parameters are `(m, n)` with `u = m − i n`, `v = m + i n`.
+fn equations<F: Scalar>(net: &LineNet<F>, a: &Support<F>, b: &Support<F>) -> Vec<Equation<F>> {
+    let c = net.axis_c();
+    let d = net.axis_d();
+    let cpolar = |x: &[CPoly<F>; 4]| -> [CPoly<F>; 4] {
+        [x[0].clone(), x[1].clone(), x[2].clone(), x[3].neg()]
+    };
+    let e = cpolar(&c);
+    let f = cpolar(&d);
+    let (ac, bc) = match net.kind() {
+        NetKind::Elliptic => {
+            let u = CPoly {
+                re: MPoly::var(2, 0),
+                im: -&MPoly::var(2, 1),
+            };
+            let v = u.conj();
+            (
+                complex_subst(&a.as_cpoly(), 0, &u),
+                complex_subst(&b.as_cpoly(), 1, &v),
+            )
+        }
+        _ => (a.as_cpoly(), b.as_cpoly()),
+    };
+    // derivatives with respect to u and v
+    let (du, dv): (CDeriv<'_, F>, CDeriv<'_, F>) = match net.kind() {
+        NetKind::Elliptic => {
+            // ∂/∂u = (∂_m + i ∂_n)/2 and ∂/∂v = (∂_m − i ∂_n)/2 on functions of u = m − i n, v = m + i n
+            let half = F::from_ratio(1, 2);
+            let h2 = half.clone();
+            (
+                Box::new(move |p: &CPoly<F>| {
+                    let (pm, pn) = (cpartial(p, 0), cpartial(p, 1));
+                    CPoly {
+                        re: (&pm.re - &pn.im).scale(&half),
+                        im: (&pm.im + &pn.re).scale(&half),
+                    }
+                }),
+                Box::new(move |p: &CPoly<F>| {
+                    let (pm, pn) = (cpartial(p, 0), cpartial(p, 1));
+                    CPoly {
+                        re: (&pm.re + &pn.im).scale(&h2),
+                        im: (&pm.im - &pn.re).scale(&h2),
+                    }
+                }),
+            )
+        }
+        _ => (
+            Box::new(|p: &CPoly<F>| cpartial(p, 0)),
+            Box::new(|p: &CPoly<F>| cpartial(p, 1)),
+        ),
+    };
+    let dvec = |g: &dyn Fn(&CPoly<F>) -> CPoly<F>, x: &[CPoly<F>; 4]| -> [CPoly<F>; 4] {
+        core::array::from_fn(|k| g(&x[k]))
+    };
+    vec![
+        Equation {
+            name: "eᵀx = a",
+            row: e.clone(),
+            rhs: ac.clone(),
+        },
+        Equation {
+            name: "e_uᵀx = a_u",
+            row: dvec(&*du, &e),
+            rhs: du(&ac),
+        },
+        Equation {
+            name: "e_vᵀx = a_v",
+            row: dvec(&*dv, &e),
+            rhs: dv(&ac),
+        },
+        Equation {
+            name: "fᵀx = b",
+            row: f.clone(),
+            rhs: bc.clone(),
+        },
+        Equation {
+            name: "f_uᵀx = b_u",
+            row: dvec(&*du, &f),
+            rhs: du(&bc),
+        },
+        Equation {
+            name: "f_vᵀx = b_v",
+            row: dvec(&*dv, &f),
+            rhs: dv(&bc),
+        },
+    ]
+}
+
+/// The four independent real rows of (3.7): hyperbolic `e, e_u, f, f_v`; parabolic
+/// `e, e_u, f, f_u`; elliptic `Re e, Im e, Re e_u, Im e_u`.
+fn real_system<F: Scalar>(
+    net: &LineNet<F>,
+    eqs: &[Equation<F>],
+) -> ([[MPoly<F>; 4]; 4], [MPoly<F>; 4]) {
+    let re = |k: usize| -> ([MPoly<F>; 4], MPoly<F>) {
+        let e = &eqs[k];
+        (
+            core::array::from_fn(|i| e.row[i].re.clone()),
+            e.rhs.re.clone(),
+        )
+    };
+    let im = |k: usize| -> ([MPoly<F>; 4], MPoly<F>) {
+        let e = &eqs[k];
+        (
+            core::array::from_fn(|i| e.row[i].im.clone()),
+            e.rhs.im.clone(),
+        )
+    };
+    let picks = match net.kind() {
+        NetKind::Hyperbolic => [re(0), re(1), re(3), re(5)],
+        NetKind::Parabolic => [re(0), re(1), re(3), re(4)],
+        NetKind::Elliptic => [re(0), im(0), re(1), im(1)],
+    };
+    let rows = core::array::from_fn(|k| picks[k].0.clone());
+    let rhs = core::array::from_fn(|k| picks[k].1.clone());
+    (rows, rhs)
+}
+
+impl<F: Scalar> Certified for SphereFamilyEnvelope<F> {
+    /// The consistency conditions of the net type, the system (3.7), the tangency (3.8), the
+    /// fibration (3.16) and the envelope identities (module docs), exact for exact scalars.
+    fn certify(&self) -> Vec<Certificate> {
+        let mut out = Vec::new();
+        let eqs = equations(&self.net, &self.a, &self.b);
+        // consistency conditions of the planes
+        let zero_vec = |x: &[CPoly<F>; 4]| -> MPoly<F> {
+            x.iter().fold(MPoly::zero(2), |acc, p| {
+                &(&acc + &(&p.re * &p.re)) + &(&p.im * &p.im)
+            })
+        };
+        match self.net.kind() {
+            NetKind::Hyperbolic | NetKind::Elliptic => {
+                out.push(zero_cert(
+                    "e_v ≡ 0 and f_u ≡ 0: each pencil depends on one parameter ((3.10), (3.42))",
+                    &(&zero_vec(&eqs[2].row) + &zero_vec(&eqs[4].row)),
+                    1.0,
+                ));
+            }
+            NetKind::Parabolic => {
+                out.push(zero_cert("e_v ≡ 0 (3.54)", &zero_vec(&eqs[2].row), 1.0));
+                let diff: [CPoly<F>; 4] =
+                    core::array::from_fn(|k| eqs[1].row[k].sub(&eqs[5].row[k]));
+                out.push(zero_cert("e_u ≡ f_v (3.54)", &zero_vec(&diff), 1.0));
+            }
+        }
+        // (3.7): rowᵀ Φ − rhs · den ≡ 0
+        for eq in &eqs {
+            let lhs = cdot4(&eq.row, &self.phi);
+            let r = CPoly {
+                re: &eq.rhs.re * &self.phi_den,
+                im: &eq.rhs.im * &self.phi_den,
+            };
+            let res = lhs.sub(&r);
+            let scale = 16.0 * (mag(&lhs.re) + mag(&lhs.im) + mag(&r.re) + mag(&r.im));
+            out.push(zero_cert(
+                &format!("Φ solves (3.7): {}", eq.name),
+                &(&(&res.re * &res.re) + &(&res.im * &res.im)),
+                scale * scale,
+            ));
+        }
+        // (3.8): e, f annihilate Φ_p, Φ_q (quotient-rule numerators)
+        for i in 0..2 {
+            let dphi: [MPoly<F>; 4] = core::array::from_fn(|k| {
+                &(&self.phi[k].partial(i) * &self.phi_den)
+                    - &(&self.phi[k] * &self.phi_den.partial(i))
+            });
+            for (name, row) in [("e", &eqs[0].row), ("f", &eqs[3].row)] {
+                let v = cdot4(row, &dphi);
+                let pname = if i == 0 {
+                    self.net.parameter_names().0
+                } else {
+                    self.net.parameter_names().1
+                };
+                out.push(identity_cert(
+                    &format!("tangent plane T = E ∩ F: {name}ᵀ Φ_{pname} ≡ 0 (3.8)"),
+                    &(&(&v.re * &v.re) + &(&v.im * &v.im)),
+                    &MPoly::zero(2),
+                ));
+            }
+        }
+        let w = omega_parametrization::<F>();
+        out.push(fibration_certificate(&self.net, &self.params, &w));
+        out.extend(envelope_certificates(
+            &self.psi,
+            &self.phi_st,
+            &self.phi_st_den,
+        ));
+        out
+    }
+}
+
+/// `|Ψ − m|² ≡ r²`, `⟨Ψ − m, m_s⟩ + r r_s ≡ 0`, `⟨Ψ − m, m_t⟩ + r r_t ≡ 0` for
+/// `Ψ = (X, Y, Z)/W` and `(m, r) = N/D`, cleared of denominators:
+/// `|P D − N Q|² − N₄² Q² ≡ 0` and `⟨P D − N Q, N_s D − N D_s⟩ + Q N₄ (N₄,s D − N₄ D_s) ≡ 0`
+/// (`P = (X, Y, Z)`, `Q = W`).
+pub(crate) fn envelope_certificates<F: Scalar>(
+    psi: &[MPoly<F>; 4],
+    n: &[MPoly<F>; 4],
+    d: &MPoly<F>,
+) -> Vec<Certificate> {
+    let q = &psi[0];
+    let diff: [MPoly<F>; 3] = core::array::from_fn(|k| &(&psi[k + 1] * d) - &(&n[k] * q));
+    let sq = diff.iter().fold(MPoly::zero(2), |acc, x| &acc + &(x * x));
+    let rq = &n[3] * q;
+    let mut out = vec![identity_cert(
+        "the envelope point lies on its sphere: |Ψ − π(Φ)|² ≡ Φ₄² (Gruber (3.1))",
+        &sq,
+        &(&rq * &rq),
+    )];
+    for (i, name) in [(0usize, "s"), (1, "t")] {
+        let dn: [MPoly<F>; 4] =
+            core::array::from_fn(|k| &(&n[k].partial(i) * d) - &(&n[k] * &d.partial(i)));
+        let lhs = (0..3).fold(MPoly::zero(2), |acc, k| &acc + &(&diff[k] * &dn[k]));
+        let rhs = -&(&(q * &n[3]) * &dn[3]);
+        out.push(identity_cert(
+            &format!("tangency: ⟨Ψ − π(Φ), ∂{name}π(Φ)⟩ + Φ₄ ∂{name}Φ₄ ≡ 0 (Gruber (3.3), sign corrected)"),
+            &lhs,
+            &rhs,
+        ));
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lines::PointRow;
+    use rcagd_algebra::Rational;
+
+    fn q(n: i64) -> Rational {
+        Rational::from(n)
+    }
+    fn row(a: [i64; 4], b: [i64; 4]) -> PointRow<Rational> {
+        PointRow::new(a.map(q), b.map(q)).expect("row")
+    }
+
+    #[test]
+    fn gruber_331_phi_and_certificates() {
+        let net = LineNet::hyperbolic(
+            row([1, 0, 0, 0], [0, 1, 0, 0]),
+            row([0, 2, 0, 1], [0, 0, 1, 0]),
+        )
+        .expect("net");
+        let a = Support::univariate(&[q(0), q(0), q(1)], 0);
+        let b = Support::univariate(&[q(0), q(0), q(1)], 1);
+        let env = SphereFamilyEnvelope::new(&net, a, b).expect("env");
+        // (3.15): Φ = (−u², 2u, 2v, 4u + v²)
+        let (c, r) = env.sphere_at_parameters(&q(3), &q(5)).expect("sphere");
+        assert_eq!(c.to_vec(), vec![q(-9), q(6), q(10)]);
+        assert_eq!(r, q(37));
+        assert_eq!(env.subcase(), Subcase::HyperbolicPassantPassant);
+        let certs = env.certify();
+        assert!(Certificate::all_hold(&certs), "{certs:#?}");
+    }
+}

@@ -1,0 +1,839 @@
+//! D. Gruber, "Rationale Parametrisierungen von Kugelhüllflächen" (2008), chapter 3: the
+//! envelopes of two-parameter sphere families from line nets (§3.2), every printed example
+//! of §3.3–3.5 reproduced — the net, Φ, the reparametrization (3.16) and the envelope Ψ —
+//! with the corrected Ψ where the printed one is wrong (docs/math/sphere-families.md), the
+//! implicit equations of degree 6 (§3.3.4, polar axes) and 12 (§3.4.2) certified to vanish
+//! on Ψ, a genuine secant example for §3.4.1, the direct envelope of §3.1.1 as a cross-check,
+//! bad input, and property tests with random exact nets and support functions.
+
+use proptest::prelude::*;
+use rcagd::envelope::{SphereFamilyEnvelope, SphereFamilyError, Subcase, Support};
+use rcagd::lines::{AxisPosition, ComplexPointRow, LineNet, NetError, PointRow};
+use rcagd::Certified;
+use rcagd_algebra::mpoly::MPoly;
+use rcagd_algebra::{Certificate, QuadExt, Rational, Scalar};
+
+fn q(n: i64) -> Rational {
+    Rational::from(n)
+}
+fn row(a: [i64; 4], b: [i64; 4]) -> PointRow<Rational> {
+    PointRow::new(a.map(q), b.map(q)).expect("point row")
+}
+
+// ---------------------------------------------------------------------------------------
+// A small parser for the printed formulas: integers, the variables s, t (or x, y, z),
+// + − * / ^ and parentheses; the value is a rational function num/den.
+
+struct Parser<'a> {
+    s: &'a [u8],
+    i: usize,
+    vars: &'a [u8],
+}
+
+type Rf = (MPoly<Rational>, MPoly<Rational>);
+
+impl Parser<'_> {
+    fn nv(&self) -> usize {
+        self.vars.len()
+    }
+    fn peek(&self) -> Option<u8> {
+        self.s.get(self.i).copied()
+    }
+    fn expr(&mut self) -> Rf {
+        let mut acc = if self.peek() == Some(b'-') {
+            self.i += 1;
+            let (n, d) = self.term();
+            (-&n, d)
+        } else {
+            self.term()
+        };
+        while let Some(c) = self.peek() {
+            if c != b'+' && c != b'-' {
+                break;
+            }
+            self.i += 1;
+            let (n, d) = self.term();
+            let n = if c == b'-' { -&n } else { n };
+            acc = (&(&acc.0 * &d) + &(&n * &acc.1), &acc.1 * &d);
+        }
+        acc
+    }
+    fn term(&mut self) -> Rf {
+        let mut acc = self.power();
+        while let Some(c) = self.peek() {
+            if c != b'*' && c != b'/' {
+                break;
+            }
+            self.i += 1;
+            let (n, d) = self.power();
+            acc = if c == b'*' {
+                (&acc.0 * &n, &acc.1 * &d)
+            } else {
+                (&acc.0 * &d, &acc.1 * &n)
+            };
+        }
+        acc
+    }
+    fn power(&mut self) -> Rf {
+        let (n, d) = self.atom();
+        if self.peek() == Some(b'^') {
+            self.i += 1;
+            let k = self.int();
+            let k = u32::try_from(k).expect("exponent");
+            return (n.pow(k), d.pow(k));
+        }
+        (n, d)
+    }
+    fn int(&mut self) -> i64 {
+        let st = self.i;
+        while self.peek().is_some_and(|c| c.is_ascii_digit()) {
+            self.i += 1;
+        }
+        std::str::from_utf8(&self.s[st..self.i])
+            .expect("utf8")
+            .parse()
+            .expect("integer")
+    }
+    fn atom(&mut self) -> Rf {
+        let one = MPoly::constant(self.nv(), q(1));
+        match self.peek().expect("unexpected end") {
+            b'(' => {
+                self.i += 1;
+                let r = self.expr();
+                assert_eq!(self.peek(), Some(b')'));
+                self.i += 1;
+                r
+            }
+            b'-' => {
+                self.i += 1;
+                let (n, d) = self.power();
+                (-&n, d)
+            }
+            c if c.is_ascii_digit() => (MPoly::constant(self.nv(), q(self.int())), one),
+            c => {
+                let k = self.vars.iter().position(|&v| v == c).expect("variable");
+                self.i += 1;
+                (MPoly::var(self.nv(), k), one)
+            }
+        }
+    }
+}
+
+fn parse(text: &str, vars: &str) -> Rf {
+    let clean: String = text.chars().filter(|c| !c.is_whitespace()).collect();
+    let mut p = Parser {
+        s: clean.as_bytes(),
+        i: 0,
+        vars: vars.as_bytes(),
+    };
+    let r = p.expr();
+    assert_eq!(p.i, clean.len(), "trailing input in {text}");
+    r
+}
+
+fn poly(text: &str) -> MPoly<Rational> {
+    let (n, d) = parse(text, "st");
+    assert_eq!(d.total_degree(), Some(0), "{text} is not a polynomial");
+    n.scale(&(q(1) / d.coeff(&[0, 0])))
+}
+
+fn uv(text: &str) -> MPoly<Rational> {
+    let (n, d) = parse(text, "uv");
+    assert_eq!(d.total_degree(), Some(0));
+    n.scale(&(q(1) / d.coeff(&[0, 0])))
+}
+
+/// `num/den ≡ other_num/other_den` by cross multiplication.
+fn same_ratio(
+    a: (&MPoly<Rational>, &MPoly<Rational>),
+    b: (&MPoly<Rational>, &MPoly<Rational>),
+) -> bool {
+    (&(a.0 * b.1) - &(b.0 * a.1)).is_zero()
+}
+
+// ---------------------------------------------------------------------------------------
+// The printed examples.
+
+struct Case {
+    section: &'static str,
+    net: LineNet<Rational>,
+    a: Support<Rational>,
+    b: Support<Rational>,
+    /// The printed Φ (3.15), (3.20), … in the net parameters (u, v) (resp. (m, n) for the
+    /// elliptic cases (3.49), (3.53), written with u, v for m, n).
+    phi: [&'static str; 4],
+    /// The printed reparametrization (3.17), (3.21), … (corrected where noted).
+    reparam: [&'static str; 2],
+}
+
+fn hyperbolic(c: ([i64; 4], [i64; 4]), d: ([i64; 4], [i64; 4])) -> LineNet<Rational> {
+    LineNet::hyperbolic(row(c.0, c.1), row(d.0, d.1)).expect("hyperbolic net")
+}
+fn parabolic(c: ([i64; 4], [i64; 4]), d: ([i64; 4], [i64; 4])) -> LineNet<Rational> {
+    LineNet::parabolic(row(c.0, c.1), row(d.0, d.1)).expect("parabolic net")
+}
+fn elliptic(re0: [i64; 4], im0: [i64; 4], re1: [i64; 4], im1: [i64; 4]) -> LineNet<Rational> {
+    LineNet::elliptic(ComplexPointRow {
+        origin_re: re0.map(q),
+        origin_im: im0.map(q),
+        direction_re: re1.map(q),
+        direction_im: im1.map(q),
+    })
+    .expect("elliptic net")
+}
+fn sq(k: i64, var: usize) -> Support<Rational> {
+    Support::univariate(&[q(0), q(0), q(k)], var)
+}
+fn two_uv() -> Support<Rational> {
+    Support::real(uv("2*u*v"))
+}
+
+fn cases() -> Vec<Case> {
+    vec![
+        Case {
+            // (3.12): c(u) = (1, u, 0, 0), d(v) = (0, 2, v, 1), a = u², b = v²
+            section: "3.3.1",
+            net: hyperbolic(([1, 0, 0, 0], [0, 1, 0, 0]), ([0, 2, 0, 1], [0, 0, 1, 0])),
+            a: sq(1, 0),
+            b: sq(1, 1),
+            phi: ["-u^2", "2*u", "2*v", "4*u+v^2"],
+            reparam: ["(t-s^2-t^2-1)/s", "(1-s^2-t^2)/(1+s^2+t^2)"],
+        },
+        Case {
+            // (3.18)
+            section: "3.3.2",
+            net: hyperbolic(([1, 0, 0, 0], [0, 0, 0, 1]), ([0, 1, 0, 2], [0, 0, 1, 0])),
+            a: sq(1, 0),
+            b: sq(1, 1),
+            phi: ["-u^2", "-v^2-4*u", "2*v", "-2*u"],
+            reparam: ["(1-4*t+s^2+t^2)/(2*s)", "(1-s^2-t^2)/(2*t)"],
+        },
+        Case {
+            // (3.22), a = 2u², b = 2v²
+            section: "3.3.3",
+            net: hyperbolic(([1, 0, 0, 1], [0, 1, 0, 0]), ([1, 0, 0, -1], [0, 0, 1, 0])),
+            a: sq(2, 0),
+            b: sq(2, 1),
+            phi: ["-u^2-v^2", "4*u", "4*v", "u^2-v^2"],
+            // (3.25) corrected: v = 2(s² + t² − 1)/(s² − 2s + t² + 1) (printed with the
+            // numerator's sign flipped)
+            reparam: ["4*t/(2*s+1+s^2+t^2)", "2*(s^2+t^2-1)/(s^2-2*s+t^2+1)"],
+        },
+        Case {
+            // (3.26), a = 2u², b = 2v²
+            section: "3.3.4",
+            net: hyperbolic(([1, 0, 0, 0], [0, 1, 0, 0]), ([0, 1, 0, 2], [0, 0, 1, 0])),
+            a: sq(2, 0),
+            b: sq(2, 1),
+            phi: ["-2*u^2", "4*u", "4*v", "2*u+v^2"],
+            reparam: ["(4*t-s^2-t^2-1)/(4*s)", "2*(1-s^2-t^2)/(1+s^2+t^2)"],
+        },
+        Case {
+            // (3.30): polar axes c(u) = (1, 0, 0, −u), d(v) = (0, 1, v, 0)
+            section: "3.3.4p",
+            net: hyperbolic(([1, 0, 0, 0], [0, 0, 0, -1]), ([0, 1, 0, 0], [0, 0, 1, 0])),
+            a: sq(1, 0),
+            b: sq(1, 1),
+            phi: ["-u^2", "-v^2", "2*v", "2*u"],
+            reparam: ["-(1+s^2+t^2)/(2*s)", "(1-s^2-t^2)/(2*t)"],
+        },
+        Case {
+            // (3.34)
+            section: "3.3.5",
+            net: hyperbolic(([1, 0, 0, 1], [0, 1, 0, 0]), ([0, 0, 1, 0], [0, 0, 0, 1])),
+            a: sq(1, 0),
+            b: sq(1, 1),
+            phi: ["-u^2-2*v", "2*u", "-v^2", "-2*v"],
+            reparam: ["t/s", "(2*s-1-s^2-t^2)/(-1+s^2+t^2)"],
+        },
+        Case {
+            // (3.38)
+            section: "3.3.6",
+            net: hyperbolic(([1, 0, 0, 0], [0, 0, 1, 0]), ([1, 0, 0, 1], [0, 1, 0, 0])),
+            a: sq(1, 0),
+            b: sq(1, 1),
+            phi: ["-u^2", "2*v", "2*u", "-u^2+v^2"],
+            reparam: ["(-1+s^2+t^2)/(-2*s+1+s^2+t^2)", "2*t/(1+s^2+t^2)"],
+        },
+        Case {
+            // (3.45): c(u) = (u, i, u i, 1); the axes are tangents of Ω, not secants (the
+            // printed heading is wrong, see docs/math/sphere-families.md#classification)
+            section: "3.4.2",
+            net: elliptic([0, 0, 0, 1], [0, 1, 0, 0], [1, 0, 0, 0], [0, 0, 1, 0]),
+            a: sq(1, 0),
+            b: sq(1, 1),
+            // (3.49) with (u, v) standing for (m, n)
+            phi: ["2*u", "2*u*v", "-2*v", "u^2-v^2"],
+            reparam: [
+                "2*(t-s^2*t-t^3+s+t^2*s+s^3)/(6*t^2+1+2*s^2+s^4+2*t^2*s^2+t^4)",
+                "-(4*t*s-1+s^4+2*t^2*s^2+t^4)/(6*t^2+1+2*s^2+s^4+2*t^2*s^2+t^4)",
+            ],
+        },
+        Case {
+            // (3.50): c(u) = (1, i, u, u i)
+            section: "3.4.2",
+            net: elliptic([1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]),
+            a: sq(1, 0),
+            b: sq(1, 1),
+            // (3.53)
+            phi: ["-u^2+v^2", "2*u*v", "2*u", "2*v"],
+            reparam: [
+                "(t-t^2*s+t*s^2+t^3+s-s^3)/(2*(s^2+t^2))",
+                "(t^3+s-t+t*s^2+s^3+t^2*s)/(2*(s^2+t^2))",
+            ],
+        },
+        Case {
+            // (3.56) with d = d(u, v) (the printed d(v) depends on u): a = u², b = 2uv
+            section: "3.5.1",
+            net: parabolic(([1, 0, 0, 0], [0, 0, 1, 0]), ([0, 1, 0, 0], [0, 0, 0, 1])),
+            a: sq(1, 0),
+            b: two_uv(),
+            phi: ["-u^2", "-2*u*v", "2*u", "-2*v"],
+            // (3.60) corrected: the denominator is 2t², not t²
+            reparam: ["(1+s^2+t^2)/(2*t)", "-(s+s^3+s*t^2-t+s^2*t+t^3)/(2*t^2)"],
+        },
+        Case {
+            // (3.61)
+            section: "3.5.2",
+            net: parabolic(([1, 0, 0, 0], [0, 0, 0, 1]), ([1, -1, 0, 0], [0, 0, 1, 0])),
+            a: sq(1, 0),
+            b: two_uv(),
+            phi: ["-u^2", "-u^2+2*u*v", "2*v", "-2*u"],
+            reparam: ["(-1+s^2+t^2)/(2*t)", "(-s+s^3+s*t^2-2*t)/(2*t^2)"],
+        },
+        Case {
+            // (3.65), case a)
+            section: "3.5.3a",
+            net: parabolic(([1, 0, 0, 1], [0, 0, 1, 0]), ([0, 1, 0, 0], [0, 0, 0, 1])),
+            a: sq(1, 0),
+            b: two_uv(),
+            phi: ["-u^2-2*v", "-2*u*v", "2*u", "-2*v"],
+            reparam: ["(-2*s+1+s^2+t^2)/(2*t)", "(2*s^2-s-s^3-s*t^2+t-s^2*t-t^3)/(2*t^2)"],
+        },
+        Case {
+            // (3.69), case b)
+            section: "3.5.3b",
+            net: parabolic(([1, 0, 0, 1], [0, 0, 1, 0]), ([0, -1, 0, 1], [1, 0, 0, 0])),
+            a: sq(1, 0),
+            b: two_uv(),
+            phi: ["2*v", "2*u*v-2*v-u^2", "2*u", "2*v+u^2"],
+            // (3.72)
+            reparam: [
+                "(-2*s+2*t+1+s^2+t^2)/(2*t)",
+                "(-4*s*t+6*t^2+6*s^2*t+6*t^3-2*s+2*t+1+2*s^2-2*s^3+s^4+2*s^2*t^2-2*t^2*s+t^4)/(4*t^2)",
+            ],
+        },
+    ]
+}
+
+/// The printed Ψ = prefactor · [components] of every subcase, transcribed from the thesis
+/// (in the order of the sections; 3.4.1 first among the elliptic ones).
+struct Printed {
+    section: &'static str,
+    prefactor: &'static str,
+    components: [&'static str; 3],
+}
+
+const PRINTED: &[Printed] = &[
+    Printed {
+        section: "3.3.1",
+        prefactor: "-1/(s^2*(s^2+t^2+1)^3)",
+        components: [
+            "s^10+5*s^8*t^2-2*s^8*t-3*s^8+2*s^7+10*s^6*t^4-8*s^6*t^3-3*s^6*t^2-14*s^6+4*s^5*t^2-4*s^5+10*s^4*t^6-12*s^4*t^5+9*s^4*t^4-8*s^4*t^3-15*s^4*t^2+4*s^4*t-14*s^4+2*s^3*t^4-4*s^3*t^2+2*s^3+5*s^2*t^8-8*s^2*t^7+15*s^2*t^6-16*s^2*t^5+12*s^2*t^4-8*s^2*t^3-s^2*t^2-3*s^2+t^10-2*t^9+6*t^8-8*t^7+13*t^6-12*t^5+13*t^4-8*t^3+6*t^2-2*t+1",
+            "2*s*(s^8+4*s^6*t^2-5*s^6*t+4*s^6+s^5*t+6*s^4*t^4-15*s^4*t^3+16*s^4*t^2-15*s^4*t+6*s^4+2*s^3*t^3-2*s^3*t+4*s^2*t^6-15*s^2*t^5+20*s^2*t^4-30*s^2*t^3+20*s^2*t^2-15*s^2*t+4*s^2+s*t^5-2*s*t^3+s*t+t^8-5*t^7+8*t^6-15*t^5+14*t^4-15*t^3+8*t^2-5*t+1)",
+            "s*(s^2+t^2-1)*(4*s^6+s^5+12*s^4*t^2-4*s^4*t+12*s^4+2*s^3*t^2+6*s^3+12*s^2*t^4-8*s^2*t^3+24*s^2*t^2-8*s^2*t+12*s^2+s*t^4+6*s*t^2+s+4*t^6-4*t^5+12*t^4-8*t^3+12*t^2-4*t+4)",
+        ],
+    },
+    Printed {
+        section: "3.3.2",
+        prefactor: "1/(4*s^2*t^2*(s^2+t^2+1))",
+        components: [
+            "t*(s^2+t^2-4*t+1)*(s^4+2*s^2*t^2-4*s^2*t-6*s^2+t^4-4*t^3+2*t^2-4*t+1)",
+            "s*(s^7+3*s^5*t^2-s^5+8*s^4*t^2+3*s^3*t^4-2*s^3*t^2-s^3+16*s^2*t^4-40*s^2*t^3+16*s^2*t^2+s*t^6-s*t^4-s*t^2+s+8*t^6-40*t^5+48*t^4-40*t^3+8*t^2)",
+            "-4*t*(s^2+t^2-1)*(s^3+s^2*t+s*t^2+s+t^3-4*t^2+t)",
+        ],
+    },
+    Printed {
+        section: "3.3.3",
+        prefactor: "1/((s^2+t^2+1)*(s^2-2*s+t^2+1)^2*(s^2+2*s+t^2+1)^2)",
+        components: [
+            "(-4*s^2+8*s-4*t^2-4)*(s^2+2*s+t^2+1)*(s^6+2*s^5+3*s^4*t^2-s^4+4*s^3*t^2-4*s^3+3*s^2*t^4+2*s^2*t^2-s^2+2*s*t^4-12*s*t^2+2*s+t^6+3*t^4+3*t^2+1)",
+            "8*t*(3*s^8+12*s^6*t^2+4*s^6+18*s^4*t^4+12*s^4*t^2-14*s^4+12*s^2*t^6+12*s^2*t^4-28*s^2*t^2+4*s^2+3*t^8+4*t^6+2*t^4+4*t^2+3)",
+            "(4*s^2+4*t^2-4)*(s^8+4*s^6*t^2-4*s^6+6*s^4*t^4+4*s^4*t^2+6*s^4+4*s^2*t^6+20*s^2*t^4+44*s^2*t^2-4*s^2+t^8+12*t^6+22*t^4+12*t^2+1)",
+        ],
+    },
+    Printed {
+        section: "3.3.4",
+        prefactor: "-1/(8*s^2*(s^2+t^2+1)^3)",
+        components: [
+            "s^10+5*s^8*t^2-8*s^8*t-3*s^8+64*s^7+10*s^6*t^4-32*s^6*t^3+12*s^6*t^2-14*s^6+128*s^5*t^2-128*s^5+10*s^4*t^6-48*s^4*t^5+54*s^4*t^4-32*s^4*t^3+30*s^4*t^2+16*s^4*t-14*s^4+64*s^3*t^4-128*s^3*t^2+64*s^3+5*s^2*t^8-32*s^2*t^7+60*s^2*t^6-64*s^2*t^5+102*s^2*t^4-32*s^2*t^3+44*s^2*t^2-3*s^2+t^10-8*t^9+21*t^8-32*t^7+58*t^6-48*t^5+58*t^4-32*t^3+21*t^2-8*t+1",
+            "8*s*(s^8+4*s^6*t^2-5*s^6*t+4*s^6+8*s^5*t+6*s^4*t^4-15*s^4*t^3+16*s^4*t^2-15*s^4*t+6*s^4+16*s^3*t^3-16*s^3*t+4*s^2*t^6-15*s^2*t^5+20*s^2*t^4-30*s^2*t^3+20*s^2*t^2-15*s^2*t+4*s^2+8*s*t^5-16*s*t^3+8*s*t+t^8-5*t^7+8*t^6-15*t^5+14*t^4-15*t^3+8*t^2-5*t+1)",
+            "4*s*(s^2+t^2-1)*(s^6+8*s^5+3*s^4*t^2-4*s^4*t+3*s^4+16*s^3*t^2+48*s^3+3*s^2*t^4-8*s^2*t^3+6*s^2*t^2-8*s^2*t+3*s^2+8*s*t^4+48*s*t^2+8*s+t^6-4*t^5+3*t^4-8*t^3+3*t^2-4*t+1)",
+        ],
+    },
+    Printed {
+        section: "3.3.4p",
+        prefactor: "-1/(4*s^2*t^2)",
+        components: [
+            "t^2*(s^4+2*s^2*t^2-6*s^2+t^4+2*t^2+1)",
+            "s*(s^5+2*s^3*t^2-2*s^3+s*t^4-2*s*t^2+s-8*t^3)",
+            "4*s*t*(s+t)*(s^2+t^2-1)",
+        ],
+    },
+    Printed {
+        section: "3.3.5",
+        prefactor: "1/(s^2*(s^2+t^2-1)*(s^2+t^2+1))",
+        components: [
+            "2*s^6-8*s^5+3*s^4*t^2+12*s^4-8*s^3*t^2-8*s^3+4*s^2*t^2+2*s^2-t^6+t^2",
+            "2*s*t*(s^4-2*s^3+2*s^2*t^2+4*s^2-2*s*t^2-2*s+t^4-1)",
+            "(s^2-2*s+t^2+1)*(s^4+2*s^3+2*s^2*t^2-6*s^2+2*s*t^2+2*s+t^4-6*t^2+1)",
+        ],
+    },
+    Printed {
+        section: "3.3.6",
+        prefactor: "1/((s^2+t^2+1)^3*(s^2-2*s+t^2+1)^2)",
+        components: [
+            "(-s^2+2*s-t^2-1)*(s^8+4*s^6*t^2+6*s^4*t^4-2*s^4+8*s^3*t^2+4*s^2*t^6-20*s^2*t^2+8*s*t^4+8*s*t^2+t^8-2*t^4+1)",
+            "2*t*(3*s^8-8*s^7+12*s^6*t^2+16*s^6-24*s^5*t^2-24*s^5+18*s^4*t^4+36*s^4*t^2+26*s^4-24*s^3*t^4-32*s^3*t^2-24*s^3+12*s^2*t^6+24*s^2*t^4+12*s^2*t^2+16*s^2-8*s*t^6-8*s*t^4-8*s*t^2-8*s+3*t^8+4*t^6+2*t^4+4*t^2+3)",
+            "(s^2+t^2-1)*(s^8-4*s^7+4*s^6*t^2+8*s^6-12*s^5*t^2-12*s^5+6*s^4*t^4+28*s^4*t^2+14*s^4-12*s^3*t^4-40*s^3*t^2-12*s^3+4*s^2*t^6+32*s^2*t^4+52*s^2*t^2+8*s^2-4*s*t^6-28*s*t^4-28*s*t^2-4*s+t^8+12*t^6+22*t^4+12*t^2+1)",
+        ],
+    },
+    Printed {
+        section: "3.4.1",
+        prefactor: "1/((s^2+t^2+1)*(s^4+2*s^2*t^2+2*s^2+t^4+6*t^2+1)^2)",
+        components: [
+            "6*s^9-4*s^8*t+24*s^7*t^2+8*s^7-16*s^6*t^3+24*s^6*t+36*s^5*t^4+40*s^5*t^2+4*s^5-24*s^4*t^5+24*s^4*t^3+24*s^3*t^6+56*s^3*t^4+104*s^3*t^2+8*s^3-16*s^2*t^7-24*s^2*t^5-24*s^2*t+6*s*t^8+24*s*t^6+68*s*t^4+24*s*t^2+6*s-4*t^9-24*t^7+24*t^3+4*t",
+            "-4*s^9+6*s^8*t-16*s^7*t^2-8*s^7+24*s^6*t^3-24*s^6*t-24*s^5*t^4+24*s^5*t^2+36*s^4*t^5-56*s^4*t^3-60*s^4*t-16*s^3*t^6+72*s^3*t^4+8*s^3+24*s^2*t^7-40*s^2*t^5-24*s^2*t^3-24*s^2*t-4*s*t^8+40*s*t^6-40*s*t^2+4*s+6*t^9-8*t^7+4*t^5-8*t^3+6*t",
+            "s^10+5*s^8*t^2+11*s^8-8*s^7*t+10*s^6*t^4+52*s^6*t^2+10*s^6-24*s^5*t^3+40*s^5*t+10*s^4*t^6+90*s^4*t^4+6*s^4*t^2-10*s^4-24*s^3*t^5+112*s^3*t^3+40*s^3*t+5*s^2*t^8+68*s^2*t^6-2*s^2*t^4+4*s^2*t^2-11*s^2-8*s*t^7+72*s*t^5+72*s*t^3-8*s*t+t^10+19*t^8+2*t^6-2*t^4-19*t^2-1",
+        ],
+    },
+    Printed {
+        section: "3.4.2",
+        prefactor: "1/((s^2+t^2)^2*(2*s^2+2*t^2+2))",
+        components: [
+            "2*s^7*t-2*s^6+6*s^5*t^3-2*s^5*t-6*s^4*t^2-2*s^4+6*s^3*t^5-4*s^3*t^3+2*s^3*t-6*s^2*t^4-4*s^2*t^2+2*s*t^7-2*s*t^5+2*s*t^3-2*s*t-2*t^6-2*t^4",
+            "(-s^3-s^2*t-s*t^2-s-t^3+t)*(s^5-s^4*t+2*s^3*t^2-2*s^2*t^3+2*s^2*t+s*t^4-s-t^5+2*t^3-t)",
+            "4*t*(s^2+t^2)*(s^4+2*s^2*t^2+t^4+1)",
+        ],
+    },
+    Printed {
+        section: "3.5.1",
+        prefactor: "1/(4*t^3*(s^2+t^2+1))",
+        components: [
+            "-t*(s^6+3*s^4*t^2+11*s^4+8*s^3*t+3*s^2*t^4+14*s^2*t^2+11*s^2+8*s*t^3-8*s*t+t^6+3*t^4+3*t^2+1)",
+            "(2*s^3+2*s^2*t+2*s*t^2+2*s+2*t^3-2*t)*(s^4+2*s^2*t^2+2*s^2+t^4-2*t^2+1)",
+            "2*t*(s^5+2*s^4*t+2*s^3*t^2+4*s^2*t^3+s*t^4-s+2*t^5+2*t)",
+        ],
+    },
+    Printed {
+        section: "3.5.2",
+        prefactor: "-1/(4*t^3*(s^2+t^2+1))",
+        components: [
+            "t*(s^2+t^2-1)*(s^4+2*s^2*t^2-8*s*t+t^4-1)",
+            "(s^2+t^2-1)*(-2*s^5+s^4*t-4*s^3*t^2+2*s^2*t^3+4*s^2*t-2*s*t^4+2*s+t^5-4*t^3+3*t)",
+            "4*t*(-s^5+s^4*t-2*s^3*t^2+2*s^2*t^3-s*t^4+s+t^5+3*t)",
+        ],
+    },
+    Printed {
+        section: "3.5.3a",
+        prefactor: "1/(4*t^3*(s^2+t^2+1))",
+        components: [
+            "-t*(s^6-8*s^5+3*s^4*t^2-4*s^4*t+23*s^4-16*s^3*t^2+8*s^3*t-32*s^3+3*s^2*t^4-8*s^2*t^3+26*s^2*t^2+23*s^2-8*s*t^4+8*s*t^3-16*s*t^2-8*s*t-8*s+t^6-4*t^5+3*t^4+3*t^2+4*t+1)",
+            "(2*s^3+2*s^2*t-4*s^2+2*s*t^2+2*s+2*t^3-2*t)*(s^4-2*s^3+2*s^2*t^2+2*s^2-2*s*t^2-2*s+t^4-2*t^2+1)",
+            "t*(s^5+2*s^4*t-2*s^4+2*s^3*t^2-2*s^3*t+4*s^2*t^3-2*s^2*t^2+2*s^2+s*t^4-2*s*t^3-2*s*t-s+2*t^5+2*t)",
+        ],
+    },
+    Printed {
+        section: "3.5.3b",
+        prefactor: "1/(4*t^2*(s^2+t^2+1))",
+        components: [
+            "2*t*(s^6-5*s^5+3*s^4*t^2+6*s^4*t+11*s^4-10*s^3*t^2-20*s^3*t-14*s^3+3*s^2*t^4+12*s^2*t^3+18*s^2*t^2+24*s^2*t+11*s^2-5*s*t^4-20*s*t^3-22*s*t^2-12*s*t-5*s+t^6+6*t^5+7*t^4+8*t^3+7*t^2+2*t+1)",
+            "s^8-4*s^7+4*s^6*t^2+5*s^6*t+8*s^6-12*s^5*t^2-12*s^5*t-12*s^5+6*s^4*t^4+15*s^4*t^3+14*s^4*t^2+15*s^4*t+14*s^4-12*s^3*t^4-24*s^3*t^3-8*s^3*t^2-16*s^3*t-12*s^3+4*s^2*t^6+15*s^2*t^5+4*s^2*t^4-10*s^2*t^3+11*s^2*t+8*s^2-4*s*t^6-12*s*t^5+4*s*t^4+16*s*t^3+4*s*t^2-4*s*t-4*s+t^8+5*t^7-2*t^6-25*t^5-30*t^4-13*t^3-2*t^2+t+1",
+            "t*(3*s^6-8*s^5+9*s^4*t^2+20*s^4*t+7*s^4-16*s^3*t^2-24*s^3*t+9*s^2*t^4+40*s^2*t^3+30*s^2*t^2-7*s^2-8*s*t^4-24*s*t^3+8*s*t+8*s+3*t^6+20*t^5+23*t^4-7*t^2-4*t-3)",
+        ],
+    },
+];
+
+/// The printed Ψ with the corrections of docs/math/sphere-families.md#printed-envelopes, as
+/// `(numerator, denominator)` per component.
+fn corrected_printed(p: &Printed) -> Vec<Rf> {
+    let (pn, pd) = parse(p.prefactor, "st");
+    let mut comps: Vec<Rf> = p.components.iter().map(|c| parse(c, "st")).collect();
+    let mut pre = (pn, pd);
+    let s = poly("s");
+    let t = poly("t");
+    match p.section {
+        // §3.3.2: prefactor −1/(4s²t²(1+S)), first component times t, third −s times the
+        // printed one (the printed bracket's monomial factors are wrong)
+        "3.3.2" => {
+            pre.0 = -&pre.0;
+            comps[0].0 = &comps[0].0 * &t;
+            comps[2].0 = -&(&comps[2].0 * &s);
+        }
+        // §3.3.5: third denominator (−1 + S)²(1 + S) instead of s²(−1 + S)(1 + S)
+        "3.3.5" => {
+            comps[2].0 = &comps[2].0 * &(&s * &s);
+            comps[2].1 = &comps[2].1 * &poly("-1+s^2+t^2");
+        }
+        // §3.5.1: third entry 4t(…), printed 2t(…)
+        "3.5.1" => comps[2].0 = comps[2].0.scale(&q(2)),
+        // §3.5.3 a): third entry 4t(…), printed t(…)
+        "3.5.3a" => comps[2].0 = comps[2].0.scale(&q(4)),
+        // §3.5.3 b): prefactor 1/(4t³(1+S)), printed 1/(4t²(1+S))
+        "3.5.3b" => pre.1 = &pre.1 * &t,
+        _ => {}
+    }
+    comps
+        .into_iter()
+        .map(|(n, d)| (&pre.0 * &n, &pre.1 * &d))
+        .collect()
+}
+
+fn build(c: &Case) -> SphereFamilyEnvelope<Rational> {
+    SphereFamilyEnvelope::new(&c.net, c.a.clone(), c.b.clone())
+        .unwrap_or_else(|e| panic!("{}: {e}", c.section))
+}
+
+fn psi_matches(env: &SphereFamilyEnvelope<Rational>, comps: &[Rf]) -> Vec<bool> {
+    let h = env.homogeneous();
+    (0..3)
+        .map(|k| same_ratio((&h[k + 1], &h[0]), (&comps[k].0, &comps[k].1)))
+        .collect()
+}
+
+#[test]
+fn every_printed_example_reproduced() {
+    let cases = cases();
+    // the thesis's 3.4.1 example is the first elliptic entry of PRINTED
+    let printed_for = |i: usize| &PRINTED[i];
+    for (i, c) in cases.iter().enumerate() {
+        let env = build(c);
+        assert_eq!(
+            env.subcase().section(),
+            c.section,
+            "subcase of {}",
+            c.section
+        );
+        // Φ
+        let (phi, den) = env.phi();
+        for (k, (p, text)) in phi.iter().zip(c.phi).enumerate() {
+            let want = uv(text);
+            assert!(
+                same_ratio((p, den), (&want, &MPoly::constant(2, q(1)))),
+                "{}: Φ{}",
+                c.section,
+                k + 1
+            );
+        }
+        // the reparametrization (3.16)
+        let r = env.reparametrization();
+        let (u_n, u_d) = parse(c.reparam[0], "st");
+        let (v_n, v_d) = parse(c.reparam[1], "st");
+        assert!(
+            same_ratio((&r.first, &r.first_den), (&u_n, &u_d)),
+            "{}: first parameter",
+            c.section
+        );
+        assert!(
+            same_ratio((&r.second, &r.second_den), (&v_n, &v_d)),
+            "{}: second parameter",
+            c.section
+        );
+        // Ψ, corrected where the printed one is wrong
+        let p = printed_for(i);
+        let comps = corrected_printed(p);
+        assert_eq!(
+            psi_matches(&env, &comps),
+            vec![true; 3],
+            "{} (printed as {})",
+            c.section,
+            p.section
+        );
+        let certs = env.certify();
+        assert!(Certificate::all_hold(&certs), "{}: {certs:#?}", c.section);
+    }
+}
+
+#[test]
+fn printed_envelopes_with_errata_differ_from_the_construction() {
+    // the five misprinted envelopes (3.3.2, 3.3.5, 3.5.1, 3.5.3 a, 3.5.3 b) do not match as
+    // printed; the other eight do
+    let cases = cases();
+    let mut wrong = Vec::new();
+    for (i, c) in cases.iter().enumerate() {
+        let env = build(c);
+        let p = &PRINTED[i];
+        let (pn, pd) = parse(p.prefactor, "st");
+        let comps: Vec<Rf> = p
+            .components
+            .iter()
+            .map(|x| {
+                let (n, d) = parse(x, "st");
+                (&pn * &n, &pd * &d)
+            })
+            .collect();
+        if psi_matches(&env, &comps).contains(&false) {
+            wrong.push(p.section);
+        }
+    }
+    assert_eq!(wrong, vec!["3.3.2", "3.3.5", "3.5.1", "3.5.3a", "3.5.3b"]);
+}
+
+#[test]
+fn misclassified_341_axes_are_tangents() {
+    // (3.45): restricted to c, Ω is −2μ² (a double root): the axes touch Ω
+    let net = elliptic([0, 0, 0, 1], [0, 1, 0, 0], [1, 0, 0, 0], [0, 0, 1, 0]);
+    assert_eq!(net.axis_positions(), vec![AxisPosition::Tangent; 2]);
+    assert_eq!(Subcase::of_net(&net), Subcase::EllipticTangent);
+    // §3.5.3 b) is case b (the pencil plane cuts Ω in a conic), a) is case a
+    let a = parabolic(([1, 0, 0, 1], [0, 0, 1, 0]), ([0, 1, 0, 0], [0, 0, 0, 1]));
+    let b = parabolic(([1, 0, 0, 1], [0, 0, 1, 0]), ([0, -1, 0, 1], [1, 0, 0, 0]));
+    assert_eq!(a.parabolic_tangent_case_a(), Some(true));
+    assert_eq!(b.parabolic_tangent_case_a(), Some(false));
+}
+
+/// A genuine secant example for §3.4.1 (missing in the thesis): c(u) = (2, u, i, u i),
+/// Ω(c(u)) = 3 + 2u² with two distinct complex roots.
+fn secant_elliptic() -> LineNet<Rational> {
+    elliptic([2, 0, 0, 0], [0, 0, 1, 0], [0, 1, 0, 0], [0, 0, 0, 1])
+}
+
+#[test]
+fn genuine_secant_elliptic_example() {
+    let net = secant_elliptic();
+    assert!(net.all_hold(), "{:?}", net.certify());
+    assert_eq!(net.axis_positions(), vec![AxisPosition::Secant; 2]);
+    let env = SphereFamilyEnvelope::new(&net, sq(1, 0), sq(1, 1)).expect("envelope");
+    assert_eq!(env.subcase(), Subcase::EllipticSecant);
+    assert_eq!(env.subcase().section(), "3.4.1");
+    let certs = env.certify();
+    assert!(Certificate::all_hold(&certs), "{certs:#?}");
+    // Φ is real and quadratic in (m, n) and the envelope is a genuine surface
+    let (phi, den) = env.phi();
+    assert_eq!(den.total_degree(), Some(0));
+    assert!(phi.iter().all(|p| p.total_degree().unwrap_or(0) <= 2));
+    direct_cross_check(&env, "3.4.1 secant");
+}
+
+/// `F(X/W, Y/W, Z/W) · W^deg ≡ 0` for the homogeneous envelope.
+fn implicit_vanishes(f: &str, env: &SphereFamilyEnvelope<Rational>) -> bool {
+    let (fp, fd) = parse(f, "xyz");
+    assert_eq!(fd.total_degree(), Some(0));
+    let deg = fp.total_degree().expect("degree") as u32;
+    let h = env.homogeneous();
+    let mut pw: std::collections::BTreeMap<(usize, u32), MPoly<Rational>> = Default::default();
+    let mut get = |k: usize, e: u32| pw.entry((k, e)).or_insert_with(|| h[k].pow(e)).clone();
+    let mut acc = MPoly::zero(2);
+    for (e, c) in fp.terms() {
+        let (i, j, k) = (e[0], e[1], e[2]);
+        let term = &(&(&get(1, i) * &get(2, j)) * &get(3, k)) * &get(0, deg - i - j - k);
+        acc = &acc + &term.scale(c);
+    }
+    acc.is_zero()
+}
+
+const IMPLICIT_6: &str = "64*x^3 + 16*x^2*y^2 - 128*x^2*y + 48*x^2*z^2 - 320*x^2 - 32*x*y^3 + 8*x*y^2*z^2 + 8*x*y*z^2 + 384*x*y + 12*x*z^4 - 16*x*z^2 + 512*x + 16*y^4 + 8*y^3*z^2 + 64*y^3 + y^2*z^4 + 24*y^2*z^2 + 10*y*z^4 - 256*y + z^6 - 11*z^4 - 32*z^2 - 256";
+const IMPLICIT_12: &str = "256*x^8 + 2048*x^7 + 512*x^6*y^2 - 32*x^6*z^4 + 512*x^6*z^2 + 6656*x^6 + 3072*x^5*y^2 - 192*x^5*z^4 + 3072*x^5*z^2 + 11264*x^5 + 256*x^4*y^4 - 128*x^4*y^2*z^4 + 768*x^4*y^2*z^2 + 8192*x^4*y^2 + x^4*z^8 - 48*x^4*z^6 - 128*x^4*z^4 + 6912*x^4*z^2 + 10496*x^4 + 1024*x^3*y^4 - 512*x^3*y^2*z^4 + 3072*x^3*y^2*z^2 + 12288*x^3*y^2 + 4*x^3*z^8 - 192*x^3*z^6 + 768*x^3*z^4 + 7168*x^3*z^2 + 5120*x^3 - 160*x^2*y^4*z^4 + 256*x^2*y^4*z^2 + 1536*x^2*y^4 + 2*x^2*y^2*z^8 - 128*x^2*y^2*z^6 - 416*x^2*y^2*z^4 + 5120*x^2*y^2*z^2 + 10752*x^2*y^2 + x^2*z^10 - 10*x^2*z^8 - 192*x^2*z^6 + 1376*x^2*z^4 + 3328*x^2*z^2 + 1024*x^2 - 320*x*y^4*z^4 + 512*x*y^4*z^2 + 1024*x*y^4 + 4*x*y^2*z^8 - 256*x*y^2*z^6 + 192*x*y^2*z^4 + 4096*x*y^2*z^2 + 5120*x*y^2 + 2*x*z^10 - 28*x*z^8 + 704*x*z^4 + 512*x*z^2 - 64*y^6*z^4 + y^4*z^8 - 80*y^4*z^6 - 288*y^4*z^4 + 256*y^4*z^2 + 256*y^4 + y^2*z^10 - 10*y^2*z^8 - 80*y^2*z^6 + 160*y^2*z^4 + 1280*y^2*z^2 + 1024*y^2 + z^10 - 15*z^8 + 48*z^6 + 64*z^4";
+
+#[test]
+fn implicit_equation_of_degree_6_vanishes_on_the_polar_example() {
+    let c = cases()
+        .into_iter()
+        .find(|c| c.section == "3.3.4p")
+        .expect("case");
+    let env = build(&c);
+    assert!(implicit_vanishes(IMPLICIT_6, &env));
+    // a different surface does not satisfy it
+    let other = build(&cases()[0]);
+    assert!(!implicit_vanishes(IMPLICIT_6, &other));
+}
+
+#[test]
+fn implicit_equation_of_degree_12_vanishes_on_342() {
+    let c = cases()
+        .into_iter()
+        .find(|c| c.section == "3.4.2" && c.phi[0] == "-u^2+v^2")
+        .expect("case");
+    let env = build(&c);
+    assert!(implicit_vanishes(IMPLICIT_12, &env));
+}
+
+/// At exact parameter points: the direct envelope S ∩ S_u ∩ S_v (§3.1.1) at the net
+/// parameters of (s, t) contains Ψ(s, t), and its other point is Ψ of the other sheet.
+fn direct_cross_check(env: &SphereFamilyEnvelope<Rational>, name: &str) {
+    let pts = [(1, 3, 2, 5), (-3, 7, 4, 3), (5, 2, -1, 6)];
+    let mut checked = 0;
+    for (a, b, c, d) in pts {
+        let (s, t) = (Rational::from_ratio(a, b), Rational::from_ratio(c, d));
+        let Ok(x) = env.eval(&s, &t) else { continue };
+        let Ok((p, qq)) = env.parameters_at(&s, &t) else {
+            continue;
+        };
+        let direct = env
+            .direct_envelope(&p, &qq)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let xe: [QuadExt; 3] = core::array::from_fn(|k| QuadExt::rational(x[k].clone()));
+        let (on_plus, on_minus) = (direct.plus == xe, direct.minus == xe);
+        assert!(
+            on_plus || on_minus,
+            "{name}: Ψ({s}, {t}) is not a direct envelope point"
+        );
+        let (s2, t2) = env.other_sheet(&s, &t).expect("other sheet");
+        let y = env.eval(&s2, &t2).expect("other point");
+        let ye: [QuadExt; 3] = core::array::from_fn(|k| QuadExt::rational(y[k].clone()));
+        assert_eq!(
+            env.parameters_at(&s2, &t2).expect("params"),
+            (p.clone(), qq.clone()),
+            "{name}: same sphere"
+        );
+        assert!(
+            if on_plus {
+                direct.minus == ye
+            } else {
+                direct.plus == ye
+            },
+            "{name}: other sheet"
+        );
+        checked += 1;
+    }
+    assert!(checked >= 2, "{name}: too few regular sample points");
+}
+
+#[test]
+fn direct_envelope_agrees_on_both_sheets() {
+    for c in cases() {
+        direct_cross_check(&build(&c), c.section);
+    }
+}
+
+#[test]
+fn bad_input_is_a_named_error() {
+    let net = hyperbolic(([1, 0, 0, 0], [0, 1, 0, 0]), ([0, 2, 0, 1], [0, 0, 1, 0]));
+    // a depends on v
+    let e = SphereFamilyEnvelope::new(&net, Support::real(uv("u^2+v")), sq(1, 1));
+    assert!(matches!(e, Err(SphereFamilyError::InconsistentSupport(_))));
+    // b depends on u
+    let e = SphereFamilyEnvelope::new(&net, sq(1, 0), Support::real(uv("v^2+u")));
+    assert!(matches!(e, Err(SphereFamilyError::InconsistentSupport(_))));
+    // linear support functions: Φ degenerates (§3.3)
+    let e = SphereFamilyEnvelope::new(&net, Support::real(uv("u")), Support::real(uv("3*v")));
+    assert!(
+        matches!(e, Err(SphereFamilyError::DegenerateFamily)),
+        "{e:?}"
+    );
+    // elliptic: b must be the conjugate of a
+    let ell = secant_elliptic();
+    let e = SphereFamilyEnvelope::new(&ell, sq(1, 0), sq(2, 1));
+    assert!(matches!(e, Err(SphereFamilyError::InconsistentSupport(_))));
+    // parabolic: a_u = b_v
+    let par = parabolic(([1, 0, 0, 0], [0, 0, 1, 0]), ([0, 1, 0, 0], [0, 0, 0, 1]));
+    let e = SphereFamilyEnvelope::new(&par, sq(1, 0), Support::real(uv("u*v")));
+    assert!(matches!(e, Err(SphereFamilyError::InconsistentSupport(_))));
+    // degenerate nets
+    assert!(matches!(
+        LineNet::hyperbolic(
+            row([1, 0, 0, 0], [0, 1, 0, 0]),
+            row([0, 1, 0, 0], [0, 0, 1, 0])
+        ),
+        Err(NetError::AxesMeet)
+    ));
+    // a pole in the patch domain: 3.3.1 has the denominator s²(1 + S)³
+    let env = build(&cases()[0]);
+    assert!(matches!(
+        env.patch((q(-1), q(1)), (q(0), q(1))),
+        Err(SphereFamilyError::PoleInDomain(_))
+    ));
+    assert!(env.patch((q(1), q(2)), (q(0), q(1))).is_ok());
+    assert!(matches!(
+        env.eval(&q(0), &q(1)),
+        Err(SphereFamilyError::Undefined(_))
+    ));
+}
+
+#[test]
+fn general_quadratic_support_functions_of_331() {
+    // (3.14): a = A + Bu + Cu², b = U + Vv + Wv² give
+    // Φ = (−Cu² + A, B + 2Cu, V + 2Wv, 2B + 4Cu + Wv² − U): B moves the centre and changes
+    // the radius by 2B (a translation plus an offset, not only a translation)
+    let net = hyperbolic(([1, 0, 0, 0], [0, 1, 0, 0]), ([0, 2, 0, 1], [0, 0, 1, 0]));
+    let (a0, b0, c0, u0, v0, w0) = (q(3), q(-2), q(5), q(7), q(1), q(-4));
+    let a = Support::univariate(&[a0.clone(), b0.clone(), c0.clone()], 0);
+    let b = Support::univariate(&[u0.clone(), v0.clone(), w0.clone()], 1);
+    let env = SphereFamilyEnvelope::new(&net, a, b).expect("env");
+    for (u, v) in [(q(1), q(2)), (q(-3), Rational::from_ratio(1, 2))] {
+        let (m, r) = env.sphere_at_parameters(&u, &v).expect("sphere");
+        assert_eq!(m[0], -c0.clone() * u.clone() * u.clone() + a0.clone());
+        assert_eq!(m[1], b0.clone() + q(2) * c0.clone() * u.clone());
+        assert_eq!(m[2], v0.clone() + q(2) * w0.clone() * v.clone());
+        assert_eq!(
+            r,
+            q(2) * b0.clone() + q(4) * c0.clone() * u.clone() + w0.clone() * v.clone() * v.clone()
+                - u0.clone()
+        );
+    }
+    assert!(env.all_hold());
+}
+
+fn small() -> impl Strategy<Value = i64> {
+    -3i64..=3
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// Random exact hyperbolic nets with quadratic support functions: the envelope is
+    /// certified and the f64 construction agrees with the exact one.
+    #[test]
+    fn random_hyperbolic_envelopes(
+        c in proptest::array::uniform8(small()),
+        d in proptest::array::uniform8(small()),
+        ka in 1i64..=3, kb in -3i64..=3, la in -2i64..=2,
+    ) {
+        let cr = PointRow::new([c[0], c[1], c[2], c[3]].map(q), [c[4], c[5], c[6], c[7]].map(q));
+        let dr = PointRow::new([d[0], d[1], d[2], d[3]].map(q), [d[4], d[5], d[6], d[7]].map(q));
+        let (Ok(cr), Ok(dr)) = (cr, dr) else { return Ok(()) };
+        let Ok(net) = LineNet::hyperbolic(cr, dr) else { return Ok(()) };
+        prop_assume!(kb != 0);
+        let a = Support::univariate(&[q(0), q(la), q(ka)], 0);
+        let b = Support::univariate(&[q(1), q(0), q(kb)], 1);
+        let env = match SphereFamilyEnvelope::new(&net, a, b) {
+            Ok(e) => e,
+            Err(SphereFamilyError::DegenerateFamily) | Err(SphereFamilyError::Net(_)) => return Ok(()),
+            Err(e) => return Err(TestCaseError::fail(e.to_string())),
+        };
+        let certs = env.certify();
+        prop_assert!(Certificate::all_hold(&certs), "{:#?}", certs);
+        let fenv = env.map_scalar(Scalar::to_f64).expect("f64 envelope");
+        let (s, t) = (Rational::from_ratio(2, 7), Rational::from_ratio(-5, 3));
+        if let (Ok(x), Ok(y)) = (env.eval(&s, &t), fenv.eval(&Scalar::to_f64(&s), &Scalar::to_f64(&t))) {
+            for k in 0..3 {
+                let xe = Scalar::to_f64(&x[k]);
+                prop_assert!((xe - y[k]).abs() <= 1e-6 * (1.0 + xe.abs()), "{} vs {}", xe, y[k]);
+            }
+        }
+    }
+
+    /// Random exact parabolic nets with consistent support functions `a = αu²`,
+    /// `b = 2αuv + βu²`.
+    #[test]
+    fn random_parabolic_envelopes(
+        c in proptest::array::uniform8(small()),
+        d in proptest::array::uniform8(small()),
+        al in 1i64..=3, be in -2i64..=2,
+    ) {
+        let cr = PointRow::new([c[0], c[1], c[2], c[3]].map(q), [c[4], c[5], c[6], c[7]].map(q));
+        let dr = PointRow::new([d[0], d[1], d[2], d[3]].map(q), [d[4], d[5], d[6], d[7]].map(q));
+        let (Ok(cr), Ok(dr)) = (cr, dr) else { return Ok(()) };
+        let Ok(net) = LineNet::parabolic(cr, dr) else { return Ok(()) };
+        let a = Support::univariate(&[q(0), q(0), q(al)], 0);
+        let b = Support::real(&uv("u*v").scale(&q(2 * al)) + &uv("u^2").scale(&q(be)));
+        let env = match SphereFamilyEnvelope::new(&net, a, b) {
+            Ok(e) => e,
+            Err(SphereFamilyError::DegenerateFamily) | Err(SphereFamilyError::Net(_)) => return Ok(()),
+            Err(e) => return Err(TestCaseError::fail(e.to_string())),
+        };
+        prop_assert!(net.all_hold());
+        let certs = env.certify();
+        prop_assert!(Certificate::all_hold(&certs), "{:#?}", certs);
+    }
+}
