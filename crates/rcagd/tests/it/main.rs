@@ -12,5 +12,6 @@ mod quadric_props;
 mod seed000_examples;
 mod seed001_examples;
 mod seed003_examples;
+mod seed004_conic_examples;
 mod seed004_laguerre_examples;
 mod seed004_pn_examples;
