@@ -12,7 +12,10 @@
 pub mod bernstein;
 pub mod certificate;
 pub mod complex;
+pub mod conic_point;
 pub mod error;
+pub mod factor;
+pub mod integer;
 pub mod linalg;
 pub mod mpoly;
 pub mod poly;
@@ -22,6 +25,7 @@ pub mod rational;
 pub mod resultant;
 pub mod roots;
 pub mod scalar;
+pub mod sum_of_squares;
 
 pub use certificate::Certificate;
 pub use complex::Complex;

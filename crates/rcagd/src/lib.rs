@@ -17,6 +17,7 @@
 
 pub mod canal;
 pub mod conic;
+pub mod conic_surface;
 pub mod cyclographic;
 pub mod cylinder;
 pub mod envelope;

@@ -1,5 +1,6 @@
 //! The integration tests of `rcagd-algebra`, in one test binary (one link instead of one per file;
 //! see docs/ARCHITECTURE.md, "Tests").
 
+mod conic_point_props;
 mod fields_linalg;
 mod roots_resultants;

@@ -48,7 +48,7 @@
 
 use super::bipoly::{bidegree, patch_of, BiPoly};
 use super::krasauskas;
-use super::sum_of_squares::{sum_of_two_squares_approx, GaussianSplit, SumOfSquares};
+use super::sum_of_squares::{sum_of_two_squares_approx, SumOfSquares};
 use super::{CanalError, CanalSpine};
 use crate::error::format_scalar;
 use crate::Certified;
@@ -643,7 +643,7 @@ pub fn canal_surface(
 ) -> Result<CanalBuild, CanalError> {
     let (spine, reparam) = oriented_on_domain(spine, options)?;
     let d = spine.discriminant()?;
-    let split = GaussianSplit::new(&d)?;
+    let split = super::sum_of_squares::gaussian_split(&d)?;
     // the Krasauskas pencil is balanced at the middle of the domain (s = 0 after the
     // reparametrization of a domain, t = 0 without one)
     let mid = match (&options.domain, &reparam) {
@@ -660,7 +660,7 @@ pub fn canal_surface(
         let sos = match split.decompose(choice) {
             Ok(s) => s,
             Err(e) => {
-                last_err = Some(e);
+                last_err = Some(CanalError::from(e));
                 continue;
             }
         };

@@ -708,40 +708,6 @@ pub(crate) fn univariate_sqrt<F: Scalar>(p: &MPoly<F>) -> Option<MPoly<F>> {
     ok.then_some(root)
 }
 
-/// Rationals `(a, b)` with `a² + b² = c` for a non-negative rational `c`, by a bounded
-/// search over `c = n/d`: `n·d = x² + y²` with integers `x ≤ √(nd)` (up to `10⁶` steps).
-pub(crate) fn rational_two_squares<F: Scalar>(c: &F) -> Option<(F, F)> {
-    if let Some(r) = scalar_sqrt(c) {
-        return Some((r, F::zero()));
-    }
-    if !F::EXACT || *c < F::zero() {
-        return None;
-    }
-    let q = c.to_rational()?;
-    let n: i128 = i128::try_from(q.numerator()).ok()?;
-    let d: i128 = i128::try_from(q.denominator()).ok()?;
-    let nd = n.checked_mul(d)?;
-    let mut x: i128 = 0;
-    while x * x <= nd && x < 1_000_000 {
-        let rest = nd - x * x;
-        let y = (rest as f64).sqrt().round() as i128;
-        for yy in [y - 1, y, y + 1] {
-            if yy >= 0 && yy * yy == rest {
-                // (x/d)² + (yy/d)² = nd/d² = n/d
-                let a = F::from_rational(
-                    &(rcagd_algebra::Rational::from(x) / rcagd_algebra::Rational::from(d)),
-                );
-                let b = F::from_rational(
-                    &(rcagd_algebra::Rational::from(yy) / rcagd_algebra::Rational::from(d)),
-                );
-                return Some((a, b));
-            }
-        }
-        x += 1;
-    }
-    None
-}
-
 // -------------------------------------------------------------------------------------
 // Greatest common divisors in Q[u, v] (exact scalars only)
 // -------------------------------------------------------------------------------------

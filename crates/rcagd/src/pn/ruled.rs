@@ -15,15 +15,16 @@
 //! (4.12) gives `y₃`. `Λ⁻¹` of this isotropic surface is the envelope, a PN surface. For
 //! `β ≡ 0` the circle is the line `M₁y₁ + M₂y₂ = M₃`, parametrized linearly.
 //!
-//! **Rationality caveat (NOTES-004 §0).** `p₁, p₂` are rational only if `|M|² − R²` is a
-//! sum of two squares over `Q(t)`. They can be given; otherwise they are found when
-//! `M_k² ≡ R²` for some `k`, when `|M|² − R²` is a square, or a rational sum of two
-//! squares times a square ([`find_two_squares`]); else [`PnError::NoRationalPoint`].
+//! **Rationality.** `p₁, p₂` are rational only if `|M|² − R²` is a sum of two squares
+//! over `Q(t)`. They can be given; otherwise they are found when `M_k² ≡ R²` for some `k`,
+//! or by the complete sum-of-two-squares engine of the algebra layer
+//! ([`find_two_squares`]); if that proves that no rational decomposition exists,
+//! [`PnError::NoRationalPoint`] names the reason (e.g. the quadratic field it needs).
 
 use super::isotropic::IsotropicSurface;
 use super::poly::{
     cancel_common, cross3, dot3, identity_cert, int, mag, normalize_content, pad_eval,
-    rational_two_squares, univariate_sqrt, var, zero_cert, RatFn,
+    univariate_sqrt, var, zero_cert, RatFn,
 };
 use super::surface::PnSurface;
 use super::PnError;
@@ -161,17 +162,69 @@ impl<F: Scalar> CycleFamily<F> {
 }
 
 /// Rational functions `p₁, p₂` of `t` with `p₁² + p₂² = P` for a polynomial `P(t)`, when
-/// `P` is a square or a rational sum of two squares times a square (module docs).
+/// `P` is a sum of two squares of rational polynomials: the complete decision of the algebra
+/// layer ([`rcagd_algebra::sum_of_squares::sum_of_two_squares`], exact; for `f64` data on the
+/// exact binary values of the coefficients). `None` if no such decomposition over `Q` exists.
 pub fn find_two_squares<F: Scalar>(p: &MPoly<F>) -> Option<[RatFn<F>; 2]> {
+    two_squares_or_reason(p).ok()
+}
+
+/// [`find_two_squares`] with the reason of a failure (for the error message).
+fn two_squares_or_reason<F: Scalar>(p: &MPoly<F>) -> Result<[RatFn<F>; 2], String> {
+    use rcagd_algebra::sum_of_squares::{sum_of_two_squares, SumOfSquares};
+    use rcagd_algebra::{Poly, Rational};
     if let Some(s) = univariate_sqrt(p) {
-        return Some([RatFn::poly(s), RatFn::poly(MPoly::zero(2))]);
+        return Ok([RatFn::poly(s), RatFn::poly(MPoly::zero(2))]);
     }
-    let (_, lc) = p.terms().last()?;
-    let lc = lc.clone();
-    let monic = p.scale(&(F::one() / lc.clone()));
-    let s = univariate_sqrt(&monic)?;
-    let (a, b) = rational_two_squares(&lc)?;
-    Some([RatFn::poly(s.scale(&a)), RatFn::poly(s.scale(&b))])
+    if !only_t(p) {
+        return Err("it involves a second variable".into());
+    }
+    let n = p.degree_in(0).unwrap_or(0) as usize;
+    let d: Poly<Rational> = Poly::new(
+        (0..=n)
+            .map(|i| {
+                p.coeff(&[i as u32, 0])
+                    .to_rational()
+                    .ok_or_else(|| "a coefficient is not finite".to_string())
+            })
+            .collect::<Result<Vec<_>, _>>()?,
+    );
+    let back = |g: &Poly<Rational>| -> Result<MPoly<F>, String> {
+        MPoly::from_terms(
+            2,
+            g.coeffs()
+                .iter()
+                .enumerate()
+                .map(|(i, c)| (vec![i as u32, 0], F::from_rational(c)))
+                .collect(),
+        )
+        .map_err(|e| e.to_string())
+    };
+    let shown = {
+        let terms: Vec<String> = d
+            .coeffs()
+            .iter()
+            .enumerate()
+            .rev()
+            .filter(|(_, c)| !c.is_zero())
+            .map(|(k, c)| match k {
+                0 => format_scalar(c),
+                1 => format!("{}·t", format_scalar(c)),
+                _ => format!("{}·t^{k}", format_scalar(c)),
+            })
+            .collect();
+        terms.join(" + ")
+    };
+    match sum_of_two_squares(&d) {
+        Ok(SumOfSquares::Rational { g1, g2 }) => {
+            Ok([RatFn::poly(back(&g1)?), RatFn::poly(back(&g2)?)])
+        }
+        Ok(SumOfSquares::Extension { radicand, .. }) => Err(format!(
+            "its numerator {shown} is a sum of two squares only over Q(√{})",
+            format_scalar(&radicand)
+        )),
+        Err(e) => Err(format!("its numerator {shown}: {e}")),
+    }
 }
 
 /// The envelope of the cones of revolution spanned by two rational cycle families
@@ -238,12 +291,14 @@ impl<F: Scalar> ConeFamilyEnvelope<F> {
                         [RatFn::poly(m[o[0]].clone()), RatFn::poly(m[o[1]].clone())]
                     })
                 });
-                let found = pair.or_else(|| find_two_squares(&mm));
-                let [a, b] = found.ok_or_else(|| {
-                    PnError::NoRationalPoint(
-                        "|m₁ − m₂|² − (r₁ − r₂)² is not a recognizable sum of two squares over Q(t); pass (p₁, p₂) explicitly (NOTES-004 §0)".into(),
-                    )
-                })?;
+                let [a, b] = match pair {
+                    Some(pr) => pr,
+                    None => two_squares_or_reason(&mm).map_err(|why| {
+                        PnError::NoRationalPoint(format!(
+                            "|m₁ − m₂|² − (r₁ − r₂)² is not a sum of two squares of rational functions of t: {why}"
+                        ))
+                    })?,
+                };
                 // the found values are for the numerators M, R: divide by md
                 [
                     RatFn {
@@ -486,7 +541,13 @@ impl<F: Scalar> CanalPn<F> {
     /// As [`ConeFamilyEnvelope::new`].
     pub fn new(family: CycleFamily<F>, p: Option<[RatFn<F>; 2]>) -> Result<Self, PnError> {
         let c2 = family.plus_derivative();
-        let envelope = ConeFamilyEnvelope::new(family.clone(), c2, p)?;
+        let envelope = ConeFamilyEnvelope::new(family.clone(), c2, p).map_err(|e| match e {
+            // the second family is (m + m′; r + r′): name the spine and radius instead
+            PnError::NoRationalPoint(m) => {
+                PnError::NoRationalPoint(m.replace("|m₁ − m₂|² − (r₁ − r₂)²", "|m′(t)|² − r′(t)²"))
+            }
+            e => e,
+        })?;
         Ok(CanalPn { family, envelope })
     }
 

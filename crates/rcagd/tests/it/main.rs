@@ -13,5 +13,6 @@ mod seed000_examples;
 mod seed001_examples;
 mod seed003_examples;
 mod seed003_sphere_families;
+mod seed004_conic_examples;
 mod seed004_laguerre_examples;
 mod seed004_pn_examples;

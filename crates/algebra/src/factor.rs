@@ -1,0 +1,788 @@
+//! Exact factorization of univariate polynomials over `Q` and over the Gaussian rationals
+//! `Q(i)`: the tool behind the sum-of-two-squares and conic-point engines
+//! ([`crate::sum_of_squares`], [`crate::conic_point`]) and the canal-surface factorizations
+//! (D. Gruber, "Rationale Parametrisierungen von Kugelhüllflächen", 2008, §2.1 before
+//! (2.14) and §2.4.2 (2.35)).
+//!
+//! * **Over `Q`** (Zassenhaus): a square-free primitive `f ∈ Z[x]` is factored modulo a small
+//!   prime `p` (not dividing `lc f`, `f mod p` square-free) by Berlekamp's algorithm
+//!   (kernel of `Q − I`, `Q` the Frobenius matrix; splitting by `gcd(u, v − s)`,
+//!   `s = 0, …, p − 1`), the factorization is lifted by linear Hensel lifting to `pᵏ > 2B`
+//!   with the Mignotte-type bound `B = |lc f| · 2ⁿ · (n + 1) · ‖f‖_∞`, and true factors are
+//!   recombined from subsets of the lifted factors (`lc f · ∏ gᵢ mod pᵏ`, symmetric residues,
+//!   primitive part, exact trial division). The result is complete and exact; the
+//!   recombination is exponential in the number of modular factors, which is capped at
+//!   [`MAX_MODULAR_FACTORS`] (an error beyond).
+//! * **Over `Q(i)`** (Trager's norm method): for square-free `S ∈ Q[t]` choose the smallest
+//!   `k = 1, 2, …` with `N(t) = S(t − ki)·S(t + ki)` square-free; factor `N = ∏ Nⱼ` over `Q`;
+//!   then `gⱼ = gcd_{Q(i)}(S(t − ki), Nⱼ)` are the irreducible factors of `S(t − ki)` over
+//!   `Q(i)`, and `hⱼ(t) = gⱼ(t + ki)` those of `S`. An irreducible `p ∈ Q[t]` either stays
+//!   irreducible over `Q(i)` (then `hⱼ = p` is real) or splits as `p = h·h̄`.
+
+use crate::complex::{norm_sq_poly, Complex};
+use crate::roots::square_free_decomposition;
+use crate::{Poly, Rational};
+use num_traits::One;
+
+/// The largest number of modular factors the recombination accepts (`2^(r−1)` subsets).
+pub const MAX_MODULAR_FACTORS: usize = 16;
+
+/// The primes tried for the modular factorization.
+const PRIMES: [u64; 40] = [
+    3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61, 67, 71, 73, 79, 83, 89, 97,
+    101, 103, 107, 109, 113, 127, 131, 137, 139, 149, 151, 157, 163, 167, 173, 179,
+];
+
+/// A failure of the factorization (never a wrong result).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum FactorError {
+    /// The zero polynomial has no factorization.
+    Zero,
+    /// Too many modular factors for the exhaustive recombination.
+    TooManyModularFactors(usize),
+    /// No suitable prime / shift was found (not expected for square-free input).
+    NoGoodPrime,
+}
+
+impl core::fmt::Display for FactorError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            FactorError::Zero => write!(f, "the zero polynomial has no factorization"),
+            FactorError::TooManyModularFactors(r) => write!(
+                f,
+                "{r} modular factors exceed the recombination limit {MAX_MODULAR_FACTORS}"
+            ),
+            FactorError::NoGoodPrime => write!(
+                f,
+                "no prime (or Trager shift) keeps the polynomial square-free"
+            ),
+        }
+    }
+}
+
+// ----------------------------------------------------------------------------------------
+// integers as Rationals with denominator 1
+// ----------------------------------------------------------------------------------------
+
+fn int(n: i64) -> Rational {
+    Rational::from(n)
+}
+
+/// `⌊a/b⌋` for integers `a`, `b > 0`.
+fn floor_div(a: &Rational, b: &Rational) -> Rational {
+    Rational::from((a / b).floor())
+}
+
+/// `a mod m` in `[0, m)`.
+fn modulo(a: &Rational, m: &Rational) -> Rational {
+    a - m * floor_div(a, m)
+}
+
+/// `a mod m` in `(−m/2, m/2]`.
+fn sym_mod(a: &Rational, m: &Rational) -> Rational {
+    let r = modulo(a, m);
+    if r.clone() * int(2) > *m {
+        r - m
+    } else {
+        r
+    }
+}
+
+fn to_u64_mod(a: &Rational, p: u64) -> u64 {
+    let r = modulo(a, &Rational::from(p));
+    u64::try_from(r.numerator()).unwrap_or(0)
+}
+
+fn abs_r(a: &Rational) -> Rational {
+    if *a < Rational::ZERO {
+        -a.clone()
+    } else {
+        a.clone()
+    }
+}
+
+/// The primitive integer polynomial with positive leading coefficient proportional to `p`.
+pub fn primitive_int(p: &Poly<Rational>) -> Poly<Rational> {
+    if p.is_zero() {
+        return Poly::zero();
+    }
+    // clear denominators
+    let mut l = Rational::ONE;
+    for c in p.coeffs() {
+        let d = Rational::from(c.denominator().clone());
+        l = lcm(&l, &d);
+    }
+    let q: Vec<Rational> = p.coeffs().iter().map(|c| c * &l).collect();
+    let g = q
+        .iter()
+        .filter(|c| !c.is_zero())
+        .fold(Rational::ZERO, |acc, c| gcd_int(&acc, c));
+    let mut out: Vec<Rational> = q.iter().map(|c| c / &g).collect();
+    if out.last().is_some_and(|c| *c < Rational::ZERO) {
+        out = out.into_iter().map(|c| -c).collect();
+    }
+    Poly::new(out)
+}
+
+fn gcd_int(a: &Rational, b: &Rational) -> Rational {
+    let mut x = abs_r(a);
+    let mut y = abs_r(b);
+    while !y.is_zero() {
+        let r = modulo(&x, &y);
+        x = y;
+        y = r;
+    }
+    x
+}
+
+fn lcm(a: &Rational, b: &Rational) -> Rational {
+    let g = gcd_int(a, b);
+    if g.is_zero() {
+        return Rational::ZERO;
+    }
+    abs_r(&(a * b / g))
+}
+
+// ----------------------------------------------------------------------------------------
+// polynomials over F_p (coefficients low first, trimmed)
+// ----------------------------------------------------------------------------------------
+
+type Mp = Vec<u64>;
+
+fn trim(mut a: Mp) -> Mp {
+    while a.last() == Some(&0) {
+        a.pop();
+    }
+    a
+}
+
+fn pow_mod(mut b: u64, mut e: u64, p: u64) -> u64 {
+    let mut r = 1 % p;
+    b %= p;
+    while e > 0 {
+        if e & 1 == 1 {
+            r = r * b % p;
+        }
+        b = b * b % p;
+        e >>= 1;
+    }
+    r
+}
+
+fn inv_mod(a: u64, p: u64) -> u64 {
+    pow_mod(a, p - 2, p)
+}
+
+fn mp_add(a: &Mp, b: &Mp, p: u64) -> Mp {
+    let n = a.len().max(b.len());
+    trim(
+        (0..n)
+            .map(|i| (a.get(i).copied().unwrap_or(0) + b.get(i).copied().unwrap_or(0)) % p)
+            .collect(),
+    )
+}
+
+fn mp_sub(a: &Mp, b: &Mp, p: u64) -> Mp {
+    let n = a.len().max(b.len());
+    trim(
+        (0..n)
+            .map(|i| (a.get(i).copied().unwrap_or(0) + p - b.get(i).copied().unwrap_or(0)) % p)
+            .collect(),
+    )
+}
+
+fn mp_mul(a: &Mp, b: &Mp, p: u64) -> Mp {
+    if a.is_empty() || b.is_empty() {
+        return Vec::new();
+    }
+    let mut out = vec![0u64; a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        if *x == 0 {
+            continue;
+        }
+        for (j, y) in b.iter().enumerate() {
+            out[i + j] = (out[i + j] + x * y) % p;
+        }
+    }
+    trim(out)
+}
+
+fn mp_scale(a: &Mp, c: u64, p: u64) -> Mp {
+    trim(a.iter().map(|x| x * c % p).collect())
+}
+
+/// `(q, r)` with `a = q b + r`; `b` non-zero.
+fn mp_divrem(a: &Mp, b: &Mp, p: u64) -> (Mp, Mp) {
+    let Some(&lb) = b.last() else {
+        return (Vec::new(), a.clone());
+    };
+    let inv = inv_mod(lb, p);
+    let mut r = a.clone();
+    if r.len() < b.len() {
+        return (Vec::new(), trim(r));
+    }
+    let mut q = vec![0u64; r.len() - b.len() + 1];
+    for k in (0..q.len()).rev() {
+        let c = r[k + b.len() - 1] * inv % p;
+        q[k] = c;
+        if c != 0 {
+            for (j, bj) in b.iter().enumerate() {
+                r[k + j] = (r[k + j] + p - c * bj % p) % p;
+            }
+        }
+    }
+    r.truncate(b.len() - 1);
+    (trim(q), trim(r))
+}
+
+fn mp_monic(a: &Mp, p: u64) -> Mp {
+    match a.last() {
+        Some(&l) if l != 0 => mp_scale(a, inv_mod(l, p), p),
+        _ => a.clone(),
+    }
+}
+
+fn mp_gcd(a: &Mp, b: &Mp, p: u64) -> Mp {
+    let (mut x, mut y) = (a.clone(), b.clone());
+    while !y.is_empty() {
+        let (_, r) = mp_divrem(&x, &y, p);
+        x = y;
+        y = r;
+    }
+    mp_monic(&x, p)
+}
+
+/// `(g, s, t)` with `s a + t b = g = gcd(a, b)` (monic).
+fn mp_xgcd(a: &Mp, b: &Mp, p: u64) -> (Mp, Mp, Mp) {
+    let (mut r0, mut r1) = (a.clone(), b.clone());
+    let (mut s0, mut s1): (Mp, Mp) = (vec![1], Vec::new());
+    let (mut t0, mut t1): (Mp, Mp) = (Vec::new(), vec![1]);
+    while !r1.is_empty() {
+        let (q, r) = mp_divrem(&r0, &r1, p);
+        let s2 = mp_sub(&s0, &mp_mul(&q, &s1, p), p);
+        let t2 = mp_sub(&t0, &mp_mul(&q, &t1, p), p);
+        r0 = r1;
+        r1 = r;
+        s0 = s1;
+        s1 = s2;
+        t0 = t1;
+        t1 = t2;
+    }
+    let l = r0.last().copied().unwrap_or(1);
+    let inv = inv_mod(l, p);
+    (
+        mp_scale(&r0, inv, p),
+        mp_scale(&s0, inv, p),
+        mp_scale(&t0, inv, p),
+    )
+}
+
+fn mp_derivative(a: &Mp, p: u64) -> Mp {
+    trim(
+        a.iter()
+            .enumerate()
+            .skip(1)
+            .map(|(k, c)| (k as u64 % p) * c % p)
+            .collect(),
+    )
+}
+
+/// `x^e mod f`.
+fn mp_pow_x(e: u64, f: &Mp, p: u64) -> Mp {
+    let mut result: Mp = vec![1];
+    let mut base: Mp = mp_divrem(&vec![0, 1], f, p).1;
+    let mut k = e;
+    while k > 0 {
+        if k & 1 == 1 {
+            result = mp_divrem(&mp_mul(&result, &base, p), f, p).1;
+        }
+        base = mp_divrem(&mp_mul(&base, &base, p), f, p).1;
+        k >>= 1;
+    }
+    result
+}
+
+/// Kernel of an `n × n` matrix over `F_p` (rows), as row vectors.
+fn kernel_mod(mut m: Vec<Vec<u64>>, p: u64) -> Vec<Vec<u64>> {
+    let n = m.len();
+    let cols = m.first().map_or(0, Vec::len);
+    let mut pivots = Vec::new();
+    let mut row = 0;
+    for col in 0..cols {
+        let Some(pr) = (row..n).find(|&r| m[r][col] != 0) else {
+            continue;
+        };
+        m.swap(row, pr);
+        let inv = inv_mod(m[row][col], p);
+        for x in m[row].iter_mut() {
+            *x = *x * inv % p;
+        }
+        let pivot_row = m[row].clone();
+        for (r, mr) in m.iter_mut().enumerate() {
+            if r != row && mr[col] != 0 {
+                let c = mr[col];
+                for (x, y) in mr.iter_mut().zip(&pivot_row) {
+                    *x = (*x + p - c * y % p) % p;
+                }
+            }
+        }
+        pivots.push(col);
+        row += 1;
+        if row == n {
+            break;
+        }
+    }
+    let free: Vec<usize> = (0..cols).filter(|c| !pivots.contains(c)).collect();
+    free.iter()
+        .map(|&f| {
+            let mut v = vec![0u64; cols];
+            v[f] = 1;
+            for (r, &pc) in pivots.iter().enumerate() {
+                v[pc] = (p - m[r][f]) % p;
+            }
+            v
+        })
+        .collect()
+}
+
+/// Berlekamp: the monic irreducible factors of a square-free monic `f` over `F_p`.
+fn berlekamp(f: &Mp, p: u64) -> Vec<Mp> {
+    let n = f.len().saturating_sub(1);
+    if n <= 1 {
+        return vec![f.clone()];
+    }
+    // rows: x^{ip} mod f
+    let xp = mp_pow_x(p, f, p);
+    let mut rows: Vec<Vec<u64>> = Vec::with_capacity(n);
+    let mut cur: Mp = vec![1];
+    for _ in 0..n {
+        let mut r = cur.clone();
+        r.resize(n, 0);
+        rows.push(r);
+        cur = mp_divrem(&mp_mul(&cur, &xp, p), f, p).1;
+    }
+    // (Q − I)ᵀ
+    let m: Vec<Vec<u64>> = (0..n)
+        .map(|j| {
+            (0..n)
+                .map(|i| {
+                    let q = rows[i][j];
+                    if i == j {
+                        (q + p - 1) % p
+                    } else {
+                        q
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    let basis = kernel_mod(m, p);
+    let r = basis.len();
+    let mut factors = vec![f.clone()];
+    for v in &basis {
+        if factors.len() >= r {
+            break;
+        }
+        let v = trim(v.clone());
+        if v.len() <= 1 {
+            continue;
+        }
+        let mut next = Vec::new();
+        for u in factors {
+            if u.len() <= 2 {
+                next.push(u);
+                continue;
+            }
+            let mut parts = Vec::new();
+            for s in 0..p {
+                let vs = mp_sub(&v, &vec![s], p);
+                let g = mp_gcd(&u, &vs, p);
+                if g.len() > 1 {
+                    parts.push(g);
+                }
+            }
+            if parts.is_empty() {
+                next.push(u);
+            } else {
+                next.extend(parts);
+            }
+        }
+        factors = next;
+    }
+    factors
+}
+
+// ----------------------------------------------------------------------------------------
+// Hensel lifting (integer polynomials as Rationals)
+// ----------------------------------------------------------------------------------------
+
+type Zp = Vec<Rational>;
+
+fn z_from_mp(a: &Mp) -> Zp {
+    a.iter().map(|&x| Rational::from(x)).collect()
+}
+
+fn z_to_mp(a: &Zp, p: u64) -> Mp {
+    trim(a.iter().map(|x| to_u64_mod(x, p)).collect())
+}
+
+fn z_mul(a: &Zp, b: &Zp) -> Zp {
+    if a.is_empty() || b.is_empty() {
+        return Vec::new();
+    }
+    let mut out = vec![Rational::ZERO; a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        for (j, y) in b.iter().enumerate() {
+            out[i + j] += x * y;
+        }
+    }
+    out
+}
+
+fn z_mod(a: &Zp, m: &Rational) -> Zp {
+    a.iter().map(|x| modulo(x, m)).collect()
+}
+
+/// Lifts `F ≡ g h (mod p)` (all monic, `F` known mod `pᵏ`) to `F ≡ G H (mod pᵏ)`.
+fn hensel_two(f: &Zp, g: &Mp, h: &Mp, p: u64, k: u32) -> (Zp, Zp) {
+    let (_, s, t) = mp_xgcd(g, h, p);
+    let mut gg = z_from_mp(g);
+    let mut hh = z_from_mp(h);
+    let pr = Rational::from(p);
+    let mut m = pr.clone();
+    for _ in 1..k {
+        let gh = z_mul(&gg, &hh);
+        let n = f.len().max(gh.len());
+        let e: Zp = (0..n)
+            .map(|i| {
+                let a = f.get(i).cloned().unwrap_or(Rational::ZERO);
+                let b = gh.get(i).cloned().unwrap_or(Rational::ZERO);
+                (a - b) / m.clone()
+            })
+            .collect();
+        let e = z_to_mp(&e, p);
+        let (q, r) = mp_divrem(&mp_mul(&t, &e, p), g, p);
+        let dh = mp_add(&mp_mul(&e, &s, p), &mp_mul(&q, h, p), p);
+        let dh = mp_divrem(&dh, h, p).1; // degree < deg h (exact identity mod p)
+        for (i, c) in r.iter().enumerate() {
+            if let Some(x) = gg.get_mut(i) {
+                *x += m.clone() * Rational::from(*c);
+            }
+        }
+        for (i, c) in dh.iter().enumerate() {
+            if let Some(x) = hh.get_mut(i) {
+                *x += m.clone() * Rational::from(*c);
+            }
+        }
+        m *= pr.clone();
+    }
+    (z_mod(&gg, &m), z_mod(&hh, &m))
+}
+
+fn mp_product(fs: &[Mp], p: u64) -> Mp {
+    fs.iter().fold(vec![1], |acc, f| mp_mul(&acc, f, p))
+}
+
+/// Lifts the factorization `f ≡ ∏ gᵢ (mod p)` of a monic `f` (known mod `pᵏ`).
+fn hensel_all(f: &Zp, gs: &[Mp], p: u64, k: u32) -> Vec<Zp> {
+    if gs.len() <= 1 {
+        let m = Rational::from(p).pow(k as isize);
+        return vec![z_mod(f, &m)];
+    }
+    let (a, b) = gs.split_at(gs.len() / 2);
+    let (ga, gb) = (mp_product(a, p), mp_product(b, p));
+    let (fa, fb) = hensel_two(f, &ga, &gb, p, k);
+    let mut out = hensel_all(&fa, a, p, k);
+    out.extend(hensel_all(&fb, b, p, k));
+    out
+}
+
+/// `a⁻¹ mod pᵏ` by Newton iteration.
+fn inv_mod_pk(a: &Rational, p: u64, k: u32) -> Rational {
+    let pr = Rational::from(p);
+    let mut x = Rational::from(inv_mod(to_u64_mod(a, p), p));
+    let mut e = 1u32;
+    let target = pr.pow(k as isize);
+    while e < k {
+        e = (2 * e).min(k);
+        let m = pr.pow(e as isize);
+        x = modulo(&(x.clone() * (int(2) - a * &x)), &m);
+    }
+    modulo(&x, &target)
+}
+
+/// The irreducible factors over `Z` of a square-free primitive `f ∈ Z[x]` with positive
+/// leading coefficient (each primitive with positive leading coefficient).
+///
+/// # Errors
+/// [`FactorError::TooManyModularFactors`], [`FactorError::NoGoodPrime`].
+pub fn factor_squarefree_int(f: &Poly<Rational>) -> Result<Vec<Poly<Rational>>, FactorError> {
+    let n = f.degree().ok_or(FactorError::Zero)?;
+    if n <= 1 {
+        return Ok(vec![f.clone()]);
+    }
+    let lc = f.leading();
+    // choose the prime with the fewest modular factors among the first few good ones
+    let mut best: Option<(u64, Vec<Mp>)> = None;
+    let mut good = 0;
+    for &p in &PRIMES {
+        if to_u64_mod(&lc, p) == 0 {
+            continue;
+        }
+        let fp = z_to_mp(&f.coeffs().to_vec(), p);
+        if fp.len() != n + 1 {
+            continue;
+        }
+        let g = mp_gcd(&fp, &mp_derivative(&fp, p), p);
+        if g.len() != 1 {
+            continue;
+        }
+        let facs = berlekamp(&mp_monic(&fp, p), p);
+        if facs.len() == 1 {
+            return Ok(vec![f.clone()]);
+        }
+        let better = match &best {
+            None => true,
+            Some((_, b)) => facs.len() < b.len(),
+        };
+        if better {
+            best = Some((p, facs));
+        }
+        good += 1;
+        if good >= 4 {
+            break;
+        }
+    }
+    let (p, facs) = best.ok_or(FactorError::NoGoodPrime)?;
+    if facs.len() > MAX_MODULAR_FACTORS {
+        return Err(FactorError::TooManyModularFactors(facs.len()));
+    }
+    // bound
+    let maxc = f
+        .coeffs()
+        .iter()
+        .map(abs_r)
+        .fold(Rational::ZERO, |a, b| if b > a { b } else { a });
+    let bound = abs_r(&lc) * int(2).pow(n as isize) * int(n as i64 + 1) * maxc * int(2);
+    let pr = Rational::from(p);
+    let mut k = 1u32;
+    let mut m = pr.clone();
+    while m <= bound {
+        m *= pr.clone();
+        k += 1;
+    }
+    // monic f mod p^k
+    let linv = inv_mod_pk(&lc, p, k);
+    let fm: Zp = f
+        .coeffs()
+        .iter()
+        .map(|c| modulo(&(c * &linv), &m))
+        .collect();
+    let lifted = hensel_all(&fm, &facs, p, k);
+    // recombination
+    let mut remaining: Vec<usize> = (0..lifted.len()).collect();
+    let mut cur = f.clone();
+    let mut out = Vec::new();
+    let mut s = 1;
+    while 2 * s <= remaining.len() {
+        let mut found = None;
+        for subset in combinations(&remaining, s) {
+            let lcc = cur.leading();
+            let prod = subset.iter().fold(vec![lcc.clone()], |acc, &i| {
+                z_mod(&z_mul(&acc, &lifted[i]), &m)
+            });
+            let cand: Vec<Rational> = prod.iter().map(|x| sym_mod(x, &m)).collect();
+            let cand = primitive_int(&Poly::new(cand));
+            if cand.degree().unwrap_or(0) == 0 {
+                continue;
+            }
+            if let Ok((q, r)) = cur.div_rem(&cand) {
+                if r.is_zero() {
+                    found = Some((subset, cand, q));
+                    break;
+                }
+            }
+        }
+        match found {
+            Some((subset, cand, q)) => {
+                remaining.retain(|i| !subset.contains(i));
+                out.push(cand);
+                cur = primitive_int(&q);
+            }
+            None => s += 1,
+        }
+    }
+    if cur.degree().is_some_and(|d| d > 0) {
+        out.push(cur);
+    }
+    Ok(out)
+}
+
+fn combinations(items: &[usize], k: usize) -> Vec<Vec<usize>> {
+    fn rec(
+        items: &[usize],
+        k: usize,
+        start: usize,
+        cur: &mut Vec<usize>,
+        out: &mut Vec<Vec<usize>>,
+    ) {
+        if cur.len() == k {
+            out.push(cur.clone());
+            return;
+        }
+        for i in start..items.len() {
+            cur.push(items[i]);
+            rec(items, k, i + 1, cur, out);
+            cur.pop();
+        }
+    }
+    let mut out = Vec::new();
+    rec(items, k, 0, &mut Vec::new(), &mut out);
+    out
+}
+
+/// A factorization `c · ∏ fⱼ^{eⱼ}`: the constant and the `(fⱼ, eⱼ)`.
+pub type Factorization = (Rational, Vec<(Poly<Rational>, usize)>);
+
+/// The factorization `p = c · ∏ fⱼ^{eⱼ}` over `Q` with monic irreducible `fⱼ`.
+///
+/// # Errors
+/// [`FactorError::Zero`] for `p = 0`; as [`factor_squarefree_int`].
+pub fn factor_rational(p: &Poly<Rational>) -> Result<Factorization, FactorError> {
+    if p.is_zero() {
+        return Err(FactorError::Zero);
+    }
+    let c = p.leading();
+    let mut out = Vec::new();
+    for (f, e) in square_free_decomposition(p) {
+        for g in factor_squarefree_int(&primitive_int(&f))? {
+            out.push((g.monic(), e));
+        }
+    }
+    Ok((c, out))
+}
+
+// ----------------------------------------------------------------------------------------
+// Q(i)
+// ----------------------------------------------------------------------------------------
+
+/// A Gaussian-rational polynomial.
+pub type GaussPoly = Poly<Complex<Rational>>;
+
+/// `p` as a polynomial over `Q(i)`.
+pub fn to_gauss(p: &Poly<Rational>) -> GaussPoly {
+    p.map(|c| Complex::from_real(c.clone()))
+}
+
+/// `p(t + c)` for a Gaussian shift `c`.
+pub fn shift_gauss(p: &GaussPoly, c: &Complex<Rational>) -> GaussPoly {
+    p.compose(&Poly::new(vec![c.clone(), Complex::one()]))
+}
+
+/// The monic irreducible factors over `Q(i)` of a square-free `s ∈ Q[t]` (Trager's norm
+/// method, module docs).
+///
+/// # Errors
+/// As [`factor_squarefree_int`]; [`FactorError::Zero`] for `s = 0`.
+pub fn factor_gaussian(s: &Poly<Rational>) -> Result<Vec<GaussPoly>, FactorError> {
+    let n = s.degree().ok_or(FactorError::Zero)?;
+    if n == 0 {
+        return Ok(Vec::new());
+    }
+    if n == 1 {
+        return Ok(vec![to_gauss(&s.monic())]);
+    }
+    let sg = to_gauss(s);
+    for k in 1..64i64 {
+        let shift = Complex::new(Rational::ZERO, int(-k));
+        let g = shift_gauss(&sg, &shift); // S(t − ki)
+        let norm = norm_sq_poly(&g); // S(t − ki) S(t + ki)
+        if norm.gcd(&norm.derivative()).degree() != Some(0) {
+            continue;
+        }
+        let parts = factor_squarefree_int(&primitive_int(&norm))?;
+        let back = Complex::new(Rational::ZERO, int(k));
+        let mut out = Vec::new();
+        for nj in parts {
+            let gj = g.gcd(&to_gauss(&nj));
+            if gj.degree().is_some_and(|d| d > 0) {
+                out.push(shift_gauss(&gj, &back).monic());
+            }
+        }
+        return Ok(out);
+    }
+    Err(FactorError::NoGoodPrime)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(c: &[i64]) -> Poly<Rational> {
+        Poly::from_ints(c)
+    }
+
+    fn product(fs: &[Poly<Rational>]) -> Poly<Rational> {
+        fs.iter().fold(Poly::constant(Rational::ONE), |a, b| &a * b)
+    }
+
+    #[test]
+    fn factors_over_q() {
+        // (x² + 1)(x² − 2)(x + 3)(2x − 1)
+        let f = product(&[p(&[1, 0, 1]), p(&[-2, 0, 1]), p(&[3, 1]), p(&[-1, 2])]);
+        let fs = factor_squarefree_int(&primitive_int(&f)).expect("factor");
+        assert_eq!(fs.len(), 4);
+        assert_eq!(primitive_int(&product(&fs)), primitive_int(&f));
+        // Swinnerton-Dyer-like: x⁴ − 10x² + 1 irreducible but splits mod every prime
+        let sd = p(&[1, 0, -10, 0, 1]);
+        assert_eq!(factor_squarefree_int(&sd).expect("f").len(), 1);
+        // (x⁴+1)(x⁴ − 10x² + 1)
+        let g = &p(&[1, 0, 0, 0, 1]) * &sd;
+        assert_eq!(factor_squarefree_int(&g).expect("f").len(), 2);
+        // with multiplicities
+        let h = &(&p(&[1, 1]) * &p(&[1, 1])) * &p(&[5, 0, 3]);
+        let (c, fs) = factor_rational(&h).expect("f");
+        assert_eq!(c, Rational::from(3));
+        assert_eq!(fs.len(), 2);
+    }
+
+    #[test]
+    fn harder_factorizations() {
+        // Swinnerton-Dyer polynomial of √2, √3, √5: irreducible of degree 8
+        let sd8 = p(&[576, 0, -960, 0, 352, 0, -40, 0, 1]);
+        assert_eq!(factor_squarefree_int(&sd8).expect("f").len(), 1);
+        // x¹² − 1 = Φ₁Φ₂Φ₃Φ₄Φ₆Φ₁₂
+        let mut c = vec![0i64; 13];
+        c[0] = -1;
+        c[12] = 1;
+        let f = p(&c);
+        let fs = factor_squarefree_int(&f).expect("f");
+        assert_eq!(fs.len(), 6);
+        assert_eq!(product(&fs), f);
+        // large coefficients: (1000x² + 999)(x³ − 12345x + 7)
+        let g = &p(&[999, 0, 1000]) * &p(&[7, -12345, 0, 1]);
+        let fs = factor_squarefree_int(&g).expect("f");
+        assert_eq!(fs.len(), 2);
+        assert_eq!(product(&fs), g);
+    }
+
+    #[test]
+    fn gaussian_factors() {
+        // t² + 1 = (t + i)(t − i)
+        let fs = factor_gaussian(&p(&[1, 0, 1])).expect("f");
+        assert_eq!(fs.len(), 2);
+        // t² + 2 stays irreducible over Q(i)
+        let fs = factor_gaussian(&p(&[2, 0, 1])).expect("f");
+        assert_eq!(fs.len(), 1);
+        // t⁴ + 4 = (t² + 2t + 2)(t² − 2t + 2) = (t+1+i)(t+1−i)(t−1+i)(t−1−i)
+        let fs = factor_gaussian(&p(&[4, 0, 0, 0, 1])).expect("f");
+        assert_eq!(fs.len(), 4);
+        // t⁴ + 1 splits over Q(i) into t² ± i
+        let fs = factor_gaussian(&p(&[1, 0, 0, 0, 1])).expect("f");
+        assert_eq!(fs.len(), 2);
+        let prod = fs
+            .iter()
+            .fold(GaussPoly::constant(Complex::one()), |a, b| &a * b);
+        assert_eq!(prod, to_gauss(&p(&[1, 0, 0, 0, 1])));
+    }
+}
