@@ -42,7 +42,7 @@ use thiserror::Error;
 pub enum CyclographicError {
     /// Two cycles that must be in oriented contact are not.
     #[error(
-        "the cycles are not in oriented contact: ⟨k₁ − k₂, k₁ − k₂⟩_pe = {0} ≠ 0 (seed 003 (1.13))"
+        "the cycles are not in oriented contact: ⟨k₁ − k₂, k₁ − k₂⟩_pe = {0} ≠ 0 (Gruber (1.13))"
     )]
     NotInContact(String),
     /// Two cycles are identical (their contact is not a point).
@@ -223,7 +223,7 @@ impl<F: Scalar> Certified for SphereContact<F> {
         let mut out = Vec::new();
         let r = a.contact_residual(b);
         out.push(Certificate::decide(
-            "⟨k₁ − k₂, k₁ − k₂⟩_pe = 0 (oriented contact, seed 003 (1.13), erratum 003-E2)",
+            "⟨k₁ − k₂, k₁ − k₂⟩_pe = 0 (oriented contact, Gruber (1.13), erratum 003-E2)",
             is_small(&r, s * s),
             F::EXACT,
             || format_scalar(&r),

@@ -121,7 +121,7 @@ fn line_certs(name: &str, l: &Line<Rational>) -> Vec<Certificate> {
 fn meets_cert(name: &str, g: &Line<Rational>, h: &Line<Rational>, hname: &str) -> Certificate {
     let w = g.reciprocal_product(h);
     Certificate::decide(
-        format!("{name} meets {hname}: Ω(g, h) = 0 (seed 003 (1.10))"),
+        format!("{name} meets {hname}: Ω(g, h) = 0 (Gruber (1.10))"),
         w.is_zero(),
         true,
         || format_rational(&w),
@@ -225,7 +225,7 @@ fn degree_cert(s: &CanalSurface<Rational>) -> Certificate {
         rcagd::canal::Construction::PeternellPottmann => bound,
     };
     Certificate::decide(
-        format!("bidegree (deg_t, deg_u) = ({dt}, {du}) ≤ ({bound}, 2) of the construction (seed 003 §2.1, §2.4){kras}{method}"),
+        format!("bidegree (deg_t, deg_u) = ({dt}, {du}) ≤ ({bound}, 2) of the construction (Gruber §2.1, §2.4){kras}{method}"),
         du <= 2 && dt <= bound,
         true,
         || format!("({dt}, {du})"),
@@ -306,7 +306,7 @@ fn build_line_of_planes(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     for (name, x) in [("F − e·d", &a), ("F + e·d", &b)] {
         let h = affine(x);
         certs.push(Certificate::decide(
-            format!("segment end {name} lies on the line: M(l)·X = 0 (seed 003 (1.7))"),
+            format!("segment end {name} lies on the line: M(l)·X = 0 (Gruber (1.7))"),
             l.contains_point(&h),
             true,
             || fmt_vec(x),
@@ -318,7 +318,7 @@ fn build_line_of_planes(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 
 const COMMON_TRANSVERSALS: OpSpec = OpSpec {
     name: "common_transversals",
-    summary: "the real common transversals of four lines (lines meeting all four, seed 003 §1.1), as segments between their outermost meeting points",
+    summary: "the real common transversals of four lines (lines meeting all four, Gruber §1.1), as segments between their outermost meeting points",
     params: &[ParamSpec::required(
         "lines",
         ParamKind::Net,
@@ -542,7 +542,7 @@ const ORIENTATION: ParamSpec = ParamSpec::with_default(
 
 const CANAL_SURFACE: OpSpec = OpSpec {
     name: "canal_surface",
-    summary: "the rational canal surface (envelope of spheres) of a rational spine and a polynomial radius on t ∈ [0, 1], exact over Q, by Peternell–Pottmann (seed 003 §2.1) or Krasauskas' reduced pencil (§2.4), by default whichever exports with fewer control points",
+    summary: "the rational canal surface (envelope of spheres) of a rational spine and a polynomial radius on t ∈ [0, 1], exact over Q, by Peternell–Pottmann (Gruber §2.1) or Krasauskas' reduced pencil (§2.4), by default whichever exports with fewer control points",
     params: &[
         ParamSpec::required("points", ParamKind::Points, "control points [x, y, z] of the spine m(t), t ∈ [0, 1]"),
         ParamSpec::optional("weights", ParamKind::Numbers, "spine weights (default all 1)"),
@@ -1031,7 +1031,7 @@ fn shifted(x: &[BiPoly<Rational>; 4], c: &[Rational; 3]) -> [BiPoly<Rational>; 4
 
 const DUPIN_CANAL: OpSpec = OpSpec {
     name: "dupin_canal",
-    summary: "a Dupin cyclide as the canal surface of a pe-circle of R^{3,1} (NOTES-004 A3.4): spine (ρ cos θ, ρ a sin θ, 0), radius r₀ + ρ b sin θ with a = (1 + s²)/(1 − s²), b = 2s/(1 − s²)",
+    summary: "a Dupin cyclide as the canal surface of a pe-circle of R^{3,1}: spine (ρ cos θ, ρ a sin θ, 0), radius r₀ + ρ b sin θ with a = (1 + s²)/(1 − s²), b = 2s/(1 − s²)",
     params: &[
         ParamSpec::with_default("center", ParamKind::Point3, "[0, 0, 0]", "centre"),
         ParamSpec::required("rho", ParamKind::Number, "ρ ≠ 0 (size of the pe-circle)"),
@@ -1078,7 +1078,7 @@ fn build_dupin_canal(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     // the pe-circle: ⟨U, U⟩ = ⟨V, V⟩ = 1, ⟨U, V⟩ = 0 for U = (1, 0, 0, 0), V = (0, a, 0, b)
     let pe = a.clone() * a - b.clone() * b;
     let pe_cert = Certificate::decide(
-        "V = (0, a, 0, b) is a pe-unit vector: a² − b² = 1 (the spine is a pe-circle, Dupin cyclide, NOTES-004 A3.4)",
+        "V = (0, a, 0, b) is a pe-unit vector: a² − b² = 1 (the spine is a pe-circle, Dupin cyclide)",
         pe == Rational::one(),
         true,
         move || format_rational(&pe),
@@ -1106,7 +1106,7 @@ fn build_dupin_canal(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         &family,
         "rho",
         "r0",
-        ("(|x − c|² − r₀² + ρ²)² − 4(ρa(y − c₂) + ρb r₀)² − 4ρ²(x − c₁)² (Dupin cyclide quartic, NOTES-004 A3.4)", &quartic),
+        ("(|x − c|² − r₀² + ρ²)² − 4(ρa(y − c₂) + ρb r₀)² − 4ρ²(x − c₁)² (Dupin cyclide quartic)", &quartic),
         vec![pe_cert],
     )
 }

@@ -24,7 +24,16 @@ macro_rules! topics {
     };
 }
 
-topics!(kernel, quadric, ph, ph_planar, canal, pn, sphere_family, analysis);
+topics!(
+    kernel,
+    quadric,
+    ph,
+    ph_planar,
+    canal,
+    pn,
+    sphere_family,
+    analysis
+);
 
 pub mod describe;
 

@@ -113,7 +113,7 @@ feed = 8
 
 const PH_HELIX: OpSpec = OpSpec {
     name: "ph_helix",
-    summary: "a polynomial helix from a line/circle seed z = (a0(1−t)+a1 t)/(b0(1−t)+b1 t): reparametrization by f/g and/or multiplication by w (seed 001 §6, NOTES-001 ALG-7); certified axis a·r' ≡ σ",
+    summary: "a polynomial helix from a line/circle seed z = (a0(1−t)+a1 t)/(b0(1−t)+b1 t): reparametrization by f/g and/or multiplication by w (Besednjak §6); certified axis a·r' ≡ σ",
     params: &[
         ParamSpec::required("a0", ParamKind::Point2, "complex a0 = [re, im]"),
         ParamSpec::required("a1", ParamKind::Point2, "complex a1"),
@@ -164,7 +164,7 @@ g = [1, 2, 3, 3]
 
 const PH_DPH_SEPTIC: OpSpec = OpSpec {
     name: "ph_dph_septic",
-    summary: "a double-PH septic with αβ' − α'β = h w² (st h + 2 st w = 4) from free α0, α1, β0 and a root of the quadratic (5.12) (seed 001 §5.2, NOTES-001 ALG-9); helical or not",
+    summary: "a double-PH septic with αβ' − α'β = h w² (st h + 2 st w = 4) from free α0, α1, β0 and a root of the quadratic (5.12) (Besednjak §5.2); helical or not",
     params: &[
         ParamSpec::required(
             "h",
@@ -208,7 +208,7 @@ root = 0
 
 const PH_HERMITE: OpSpec = OpSpec {
     name: "ph_hermite",
-    summary: "every helical PH quintic with r(0) = p_s, r'(0) = d_s, r(1) = p_f, r'(1) = d_f (seed 001 ch. 9, NOTES-001 ALG-10), by increasing bending energy: the least-energy one is the object `<name>`, the others `<name>_2`, `<name>_3`, … (a tie for the least energy ends in `_min`)",
+    summary: "every helical PH quintic with r(0) = p_s, r'(0) = d_s, r(1) = p_f, r'(1) = d_f (Besednjak ch. 9), by increasing bending energy: the least-energy one is the object `<name>`, the others `<name>_2`, `<name>_3`, … (a tie for the least energy ends in `_min`)",
     params: &[
         ParamSpec::required("p_s", ParamKind::Point3, "start point"),
         ParamSpec::required("d_s", ParamKind::Point3, "start derivative r'(0) ≠ 0"),

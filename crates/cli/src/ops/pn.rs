@@ -237,7 +237,7 @@ fn offset_object(
 
 const PN_GRAPH: OpSpec = OpSpec {
     name: "pn_graph",
-    summary: "the PN surface Λ⁻¹ of the graph y₃ = F(u, v) of the isotropic model (seed 004 Thm 4.3/4.4, closed formula), with exact offsets (F ↦ F − (d/2)(u² + v² + 1))",
+    summary: "the PN surface Λ⁻¹ of the graph y₃ = F(u, v) of the isotropic model (Peternell Thm 4.3/4.4, closed formula), with exact offsets (F ↦ F − (d/2)(u² + v² + 1))",
     params: &[COEFFICIENTS, DENOMINATOR, DOMAIN, OFFSET, DISTANCES],
     example: r#"[[object]]
 name = "pn_cubic_graph"
@@ -264,7 +264,7 @@ fn build_graph(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 
 const PN_SUPPORT: OpSpec = OpSpec {
     name: "pn_support",
-    summary: "the PN surface with tangent planes h + n·x = 0, n = (2ac, 2bc, a² + b² − c²)/(a² + b² + c²) (seed 004 (4.2); default a = u, b = v, c = 1) and rational support function h, with offsets (h ↦ h − d)",
+    summary: "the PN surface with tangent planes h + n·x = 0, n = (2ac, 2bc, a² + b² − c²)/(a² + b² + c²) (Peternell (4.2); default a = u, b = v, c = 1) and rational support function h, with offsets (h ↦ h − d)",
     params: &[
         ParamSpec::required(
             "support",
@@ -316,7 +316,7 @@ fn build_support(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 
 const PN_MODEL: OpSpec = OpSpec {
     name: "pn_model",
-    summary: "a G¹ PN surface of parabolic Dupin cyclide pieces interpolating points with unit normals (seed 004 §4.4: Hermite data → gradient data in I³ → C¹ Powell–Sabin quadratic spline → Λ⁻¹), with offsets",
+    summary: "a G¹ PN surface of parabolic Dupin cyclide pieces interpolating points with unit normals (Peternell §4.4: Hermite data → gradient data in I³ → C¹ Powell–Sabin quadratic spline → Λ⁻¹), with offsets",
     params: &[
         ParamSpec::required("points", ParamKind::Points, "data points A_i [x, y, z]"),
         ParamSpec::required(
@@ -459,7 +459,7 @@ fn regularity_cert(model: &PnModel<Q>, param: &'static str) -> Result<Certificat
 
 const PN_LOFT: OpSpec = OpSpec {
     name: "pn_loft",
-    summary: "a G¹ PN surface of parabolic Dupin cyclide pieces between two boundary curves with rational unit normal fields (surface strips), sampled and interpolated by the §4.4 scheme (seed 004), with offsets",
+    summary: "a G¹ PN surface of parabolic Dupin cyclide pieces between two boundary curves with rational unit normal fields (surface strips), sampled and interpolated by the §4.4 scheme (Peternell), with offsets",
     params: &[
         ParamSpec::required(
             "curve0",
@@ -555,7 +555,7 @@ fn build_loft(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 
 const PN_RULED: OpSpec = OpSpec {
     name: "pn_ruled",
-    summary: "the PN parametrization of a non-developable ruled surface l(t) + v g(t) (seed 004 Cor. 4.2 via Thm 4.5) with exact rational offsets",
+    summary: "the PN parametrization of a non-developable ruled surface l(t) + v g(t) (Peternell Cor. 4.2 via Thm 4.5) with exact rational offsets",
     params: &[
         ParamSpec::required(
             "directrix",
@@ -595,7 +595,7 @@ fn build_ruled(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 
 const PN_CANAL: OpSpec = OpSpec {
     name: "pn_canal",
-    summary: "a canal surface with polynomial spine m(t) and radius r(t) as a PN surface (seed 004 Cor. 4.3), with exact offsets (radius r + d)",
+    summary: "a canal surface with polynomial spine m(t) and radius r(t) as a PN surface (Peternell Cor. 4.3), with exact offsets (radius r + d)",
     params: &[
         ParamSpec::required(
             "spine",
@@ -688,7 +688,7 @@ fn build_revolution(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 
 const PN_ELLIPSOID: OpSpec = OpSpec {
     name: "pn_ellipsoid",
-    summary: "the ellipsoid x²/a² + y²/b² + z²/c² = 1 as a PN surface in the umbilic frame of seed 004 §4.7 (envelope of cones of revolution with vertices on the focal hyperbola), with exact rational offsets",
+    summary: "the ellipsoid x²/a² + y²/b² + z²/c² = 1 as a PN surface in the umbilic frame of Peternell §4.7 (envelope of cones of revolution with vertices on the focal hyperbola), with exact rational offsets",
     params: &[
         ParamSpec::required("a", ParamKind::Number, "largest semi-axis"),
         ParamSpec::required("b", ParamKind::Number, "middle semi-axis (a ≥ b ≥ c > 0, a > c)"),
@@ -709,7 +709,7 @@ const PN_ELLIPSOID: OpSpec = OpSpec {
     example: r#"[[object]]
 name = "pn_ellipsoid_4_7"
 op = "pn_ellipsoid"
-# the triaxial ellipsoid of seed §4.7: α = 4, γ = 20/3, μ = 5
+# the triaxial ellipsoid of Peternell §4.7: α = 4, γ = 20/3, μ = 5
 a = "25/3"
 b = 5
 c = 3
@@ -751,7 +751,7 @@ fn build_ellipsoid(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 
 const PN_LAGUERRE: OpSpec = OpSpec {
     name: "pn_laguerre",
-    summary: "the image of the PN surface of a graph F(u, v) of the isotropic model under the Laguerre map x ↦ λ·B·(x + (t, d)) of the cyclographic model (B a rational Lorentz boost; dilatation d = offset), seed 004 (3.8), Thm 4.2",
+    summary: "the image of the PN surface of a graph F(u, v) of the isotropic model under the Laguerre map x ↦ λ·B·(x + (t, d)) of the cyclographic model (B a rational Lorentz boost; dilatation d = offset), Peternell (3.8), Thm 4.2",
     params: &[
         COEFFICIENTS,
         DENOMINATOR,
@@ -826,7 +826,7 @@ fn build_laguerre(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 
 const PN_ANTICAUSTIC: OpSpec = OpSpec {
     name: "pn_anticaustic",
-    summary: "the anticaustic of the mirror z = F(u, v) for light parallel to the z-axis (seed 004 §3.6, (3.18) corrected per E8): a PN surface orthogonal to the reflected rays; other levels c give its offsets",
+    summary: "the anticaustic of the mirror z = F(u, v) for light parallel to the z-axis (Peternell §3.6, (3.18) corrected): a PN surface orthogonal to the reflected rays; other levels c give its offsets",
     params: &[
         ParamSpec::required(
             "mirror",

@@ -76,7 +76,7 @@ const POINTS_DOC: &str = "points on the quadric, [x, y, z] or homogeneous [w, w�
 
 const QUADRIC_INTERPOLATE: OpSpec = OpSpec {
     name: "quadric_interpolate",
-    summary: "a rational curve exactly on a quadric (default the unit sphere) through given points, optionally with tangents, of the lowest possible degree (seed 000 §2: a linear problem)",
+    summary: "a rational curve exactly on a quadric (default the unit sphere) through given points, optionally with tangents, of the lowest possible degree (Jüttler §2: a linear problem)",
     params: &[
         ParamSpec::required("points", ParamKind::Points, POINTS_DOC),
         ParamSpec::optional(
@@ -112,7 +112,7 @@ const CURVE_DOC: &str =
 
 const QUADRIC_CURVE_IMAGE: OpSpec = OpSpec {
     name: "quadric_curve_image",
-    summary: "the image of a rational Bézier curve of degree n under the generalized stereographic projection: a curve of degree 2n exactly on the quadric (notes 000-2)",
+    summary: "the image of a rational Bézier curve of degree n under the generalized stereographic projection: a curve of degree 2n exactly on the quadric",
     params: &[
         ParamSpec::required("points", ParamKind::Points, CURVE_DOC),
         ParamSpec::optional("weights", ParamKind::Numbers, "one weight per control point (default all 1)"),
@@ -137,7 +137,7 @@ points = [[0, 0, 0], [1, 2, 0], [2, -1, 1], [3, 1, 2]]
 
 const QUADRIC_PATCH_IMAGE: OpSpec = OpSpec {
     name: "quadric_patch_image",
-    summary: "the image of a rational tensor-product patch of bidegree (m, n): a patch of bidegree (2m, 2n) exactly on the quadric (notes 000-3)",
+    summary: "the image of a rational tensor-product patch of bidegree (m, n): a patch of bidegree (2m, 2n) exactly on the quadric",
     params: &[
         ParamSpec::required(
             "net",
@@ -172,7 +172,7 @@ coefficients = [3, 2, 1]
 
 const QUADRIC_MIQUEL_PATCH: OpSpec = OpSpec {
     name: "quadric_miquel_patch",
-    summary: "a biquadratic patch on the sphere (or an oval quadric) with four given corners and boundary circles, which exists iff the corners are in Miquel position (seed 000 Satz 7, notes 000-8)",
+    summary: "a biquadratic patch on the sphere (or an oval quadric) with four given corners and boundary circles, which exists iff the corners are in Miquel position (Jüttler Satz 7)",
     params: &[
         ParamSpec::required(
             "corners",

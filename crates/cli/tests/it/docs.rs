@@ -152,3 +152,41 @@ fn every_op_example_builds() {
         );
     }
 }
+
+/// User-facing text names only what a user can see: published sources (author, title,
+/// equation) and pages of this repository, never the project's internal seed files or
+/// their notes. Checked on the strings of the built binary (messages, certificates, op
+/// summaries, the embedded recipes) and on the user documentation.
+#[test]
+fn user_facing_text_cites_published_sources_only() {
+    let forbidden = ["NOTES-", "seed 00", "Seed 00", "seeds/"];
+    let bin = std::fs::read(env!("CARGO_BIN_EXE_rcagd")).expect("read the rcagd binary");
+    for f in forbidden {
+        let hit = bin.windows(f.len()).position(|w| w == f.as_bytes());
+        assert!(
+            hit.is_none(),
+            "the rcagd binary contains {f:?}: {}",
+            String::from_utf8_lossy(&bin[hit.unwrap_or(0).saturating_sub(80)..][..200])
+        );
+    }
+    let mut docs = vec![
+        workspace().join("README.md"),
+        workspace().join("docs/recipes.md"),
+    ];
+    for e in std::fs::read_dir(workspace().join("examples/recipes")).expect("examples") {
+        docs.push(e.expect("entry").path());
+    }
+    for p in docs {
+        let text = std::fs::read_to_string(&p).expect("read doc");
+        for (i, line) in text.lines().enumerate() {
+            for f in forbidden {
+                assert!(
+                    !line.contains(f),
+                    "{}:{}: cites {f:?}: {line}",
+                    p.display(),
+                    i + 1
+                );
+            }
+        }
+    }
+}

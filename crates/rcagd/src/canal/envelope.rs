@@ -1054,7 +1054,7 @@ pub(crate) fn canal_certificates<F: Scalar>(
         .fold(BiPoly::zero(), |acc, d| acc.add(&d.mul(d)))
         .sub(&x0.mul_t(r).mul(&x0.mul_t(r)));
     out.push(bi_cert(
-        "|x − m|² − r² ≡ 0 (x(t,u) lies on the sphere K(t), seed 003 (2.1))",
+        "|x − m|² − r² ≡ 0 (x(t,u) lies on the sphere K(t), Gruber (2.1))",
         &sphere,
         sd * sd,
     ));
@@ -1063,7 +1063,7 @@ pub(crate) fn canal_certificates<F: Scalar>(
         .fold(BiPoly::zero(), |acc, i| acc.add(&dx[i].mul_t(&p[i])))
         .add(&x0.mul_t(&(r * &p[3])));
     out.push(bi_cert(
-        "(x − m)·ṁ + r ṙ ≡ 0 (contact condition K̇(t), seed 003 (2.2) corrected per erratum 003-E3)",
+        "(x − m)·ṁ + r ṙ ≡ 0 (contact condition K̇(t), Gruber (2.2) corrected per erratum 003-E3)",
         &contact,
         sd * sp * 4.0,
     ));
@@ -1213,8 +1213,7 @@ impl<F: Scalar> QuadraticCanal<F> {
     pub fn new(k: [Poly<F>; 4]) -> Result<Self, CanalError> {
         if k.iter().any(|p| p.degree().is_some_and(|d| d > 2)) {
             return Err(CanalError::InvalidArgument(
-                "the cyclographic construction of seed 003 §2.3 needs a family of degree ≤ 2"
-                    .into(),
+                "the cyclographic construction of Gruber §2.3 needs a family of degree ≤ 2".into(),
             ));
         }
         let a: [F; 4] = core::array::from_fn(|i| k[i].coeff(1));
@@ -1352,7 +1351,7 @@ impl<F: Scalar> Certified for QuadraticCanal<F> {
             .sub(&w[3].mul(&kd[3]));
         vec![
             bi_cert(
-                "|Γ − m(p)|² − r(p)² ≡ 0 (seed 003 §2.3, p = N/Dn)",
+                "|Γ − m(p)|² − r(p)² ≡ 0 (Gruber §2.3, p = N/Dn)",
                 &sphere,
                 sc * sc * 16.0,
             ),

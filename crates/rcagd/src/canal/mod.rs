@@ -83,7 +83,7 @@ use thiserror::Error;
 pub enum CanalError {
     /// `|ṁ|² − ṙ² < 0` on a parameter interval: the spheres there have no real envelope
     /// (seed 003 (2.8)/(2.18)).
-    #[error("no real envelope: |m'|² − r'² < 0 for t in ({from}, {to}) (e.g. at t = {witness}, where it is {value}); the sphere family is not enveloped there (seed 003 (2.18))")]
+    #[error("no real envelope: |m'|² − r'² < 0 for t in ({from}, {to}) (e.g. at t = {witness}, where it is {value}); the sphere family is not enveloped there (Gruber (2.18))")]
     NoRealEnvelope {
         /// Lower end of the interval (a root of `D`, or the domain end, or `−∞`).
         from: String,
@@ -407,7 +407,7 @@ impl CanalSpine<Rational> {
             - &(&c[0] * &c[0]);
         let r = poly_sqrt(&n).ok_or_else(|| {
             CanalError::InvalidArgument(
-                "c₁² + c₂² + c₃² + c₄² − c₀² is not the square of a polynomial: the radius is not rational (seed 004 Thm 2.3 families with rational r² only)".into(),
+                "c₁² + c₂² + c₃² + c₄² − c₀² is not the square of a polynomial: the radius is not rational (Peternell Thm 2.3 families with rational r² only)".into(),
             )
         })?;
         Self::new(w, [c[1].clone(), c[2].clone(), c[3].clone()], r)

@@ -66,13 +66,13 @@ pub enum LineError {
     #[error("zero vector: {0}")]
     ZeroVector(String),
     /// Six numbers that must be Plücker coordinates violate the Klein quadric.
-    #[error("not a line: l₁l₄ + l₂l₅ + l₃l₆ = {residual} ≠ 0 (Klein quadric, seed 003 (1.3))")]
+    #[error("not a line: l₁l₄ + l₂l₅ + l₃l₆ = {residual} ≠ 0 (Klein quadric, Gruber (1.3))")]
     NotOnKleinQuadric {
         /// The value of `l₁l₄ + l₂l₅ + l₃l₆`.
         residual: String,
     },
     /// Two lines that must meet are skew.
-    #[error("the lines are skew: reciprocal product Ω(g, h) = {0} ≠ 0 (seed 003 (1.10))")]
+    #[error("the lines are skew: reciprocal product Ω(g, h) = {0} ≠ 0 (Gruber (1.10))")]
     Skew(String),
     /// Two lines that must be skew meet (or are parallel).
     #[error("lines {0} and {1} meet (Ω = 0) but must be skew")]

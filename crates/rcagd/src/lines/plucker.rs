@@ -174,7 +174,7 @@ impl<F: Scalar> Line<F> {
     pub fn from_coords(l: [F; 6]) -> Result<Self, LineError> {
         if all_zero(&l) {
             return Err(LineError::ZeroVector(
-                "Plücker coordinates must not all vanish (seed 003 (1.4))".into(),
+                "Plücker coordinates must not all vanish (Gruber (1.4))".into(),
             ));
         }
         let k = klein_form(&l);
@@ -479,7 +479,7 @@ pub(crate) fn klein_cert<F: Scalar>(name: &str, l: &[F; 6]) -> Certificate {
     let k = klein_form(l);
     let s = scale_of(l);
     Certificate::decide(
-        format!("{name}: l₁l₄ + l₂l₅ + l₃l₆ = 0 (Klein quadric, seed 003 (1.3))"),
+        format!("{name}: l₁l₄ + l₂l₅ + l₃l₆ = 0 (Klein quadric, Gruber (1.3))"),
         is_small(&k, s * s),
         F::EXACT,
         || crate::error::format_scalar(&k),
@@ -498,7 +498,7 @@ impl<F: Scalar> Certified for Line<F> {
             LineOrigin::Points(p, q) => {
                 for (name, x) in [("p", p), ("q", q)] {
                     out.push(zero_vector_cert(
-                        format!("{name} ∈ p ∧ q: M(l){name} = 0 (seed 003 (1.7))"),
+                        format!("{name} ∈ p ∧ q: M(l){name} = 0 (Gruber (1.7))"),
                         &mat_vec(&m, x),
                         self.tol_scale(x),
                     ));

@@ -130,7 +130,7 @@ impl<F: Scalar> PhPolyCurve<F> {
         let c = self.cross_r1_r2();
         let s2 = &self.sigma * &self.sigma;
         vec![identity_cert(
-            "|r'×r''|² − σ²·c·ω̃² ≡ 0 (DPH, ω = √c·ω̃; NOTES-001 ALG-5)",
+            "|r'×r''|² − σ²·c·ω̃² ≡ 0 (DPH, ω = √c·ω̃)",
             &pdot(&c, &c),
             &(&s2 * &dph.omega_squared()),
         )]
@@ -324,7 +324,7 @@ impl<F: Scalar> PhCurve<F> {
         let d = &p - &rhs;
         let scale = cpoly_scale(&p);
         vec![Certificate::decide(
-            "αβ' − α'β ≡ λ·h·W² (Hopf DPH form, seed 001 §4.3)",
+            "αβ' − α'β ≡ λ·h·W² (Hopf DPH form, Besednjak §4.3)",
             cpoly_negligible(&d, scale),
             F::EXACT,
             || format!("{} non-zero residual coefficients", d.coeffs().len()),
@@ -367,12 +367,12 @@ pub fn certify_dph_septic<F: Scalar>(
     let (re, im) = (d.map(|c| c.re.clone()), d.map(|c| c.im.clone()));
     let mut certs = curve.certify();
     certs.push(identity_cert(
-        "Re(αβ' − α'β − h w²) ≡ 0 (seed 001 (5.5))",
+        "Re(αβ' − α'β − h w²) ≡ 0 (Besednjak (5.5))",
         &re,
         &Poly::zero(),
     ));
     certs.push(identity_cert(
-        "Im(αβ' − α'β − h w²) ≡ 0 (seed 001 (5.5))",
+        "Im(αβ' − α'β − h w²) ≡ 0 (Besednjak (5.5))",
         &im,
         &Poly::zero(),
     ));

@@ -128,7 +128,7 @@ impl<F: Scalar> PhPolyCurve<F> {
         let rho = self.rho()?;
         Ok(vec![
             identity_cert(
-                "|σr''−σ'r'|² ≡ σ²ρ (|κn| = κ, NOTES-001 ALG-4)",
+                "|σr''−σ'r'|² ≡ σ²ρ (|κn| = κ)",
                 &pdot(&num, &num),
                 &(&(&self.sigma * &self.sigma) * &rho),
             ),
@@ -510,7 +510,7 @@ impl<F: Scalar> PhCurve<F> {
         let cr = pc.cross_r1_r2();
         let s2 = &pc.sigma * &pc.sigma;
         let mut certs = vec![identity_cert(
-            "|r'×r''|² ≡ σ²·4|αβ'−α'β|² (NOTES-001 ALG-4, seed 001 (4.16))",
+            "|r'×r''|² ≡ σ²·4|αβ'−α'β|² (Besednjak (4.16))",
             &pdot(&cr, &cr),
             &(&s2 * &self.rho_hopf()),
         )];
@@ -527,7 +527,7 @@ impl<F: Scalar> PhCurve<F> {
         let v = quaternion::vector_polys(&prod);
         for k in 0..3 {
             certs.push(identity_cert(
-                format!("[r'×r'']_{k} ≡ [2A(f j + g k)A*]_{k} (NOTES-001 ALG-4, erratum 12)"),
+                format!("[r'×r'']_{k} ≡ [2A(f j + g k)A*]_{k}"),
                 &cr[k],
                 &v[k],
             ));

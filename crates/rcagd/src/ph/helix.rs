@@ -518,12 +518,12 @@ impl<F: Scalar> LineCircle<F> {
         let d = &curve.proportionality() - &self.predicted_proportionality(f, g, w);
         let (re, im) = (d.map(|c| c.re.clone()), d.map(|c| c.im.clone()));
         certs.push(identity_cert(
-            "Re(αβ' − α'β − (f'g − fg')(a0b1 − a1b0)w²) ≡ 0 (seed 001 §6.2)",
+            "Re(αβ' − α'β − (f'g − fg')(a0b1 − a1b0)w²) ≡ 0 (Besednjak §6.2)",
             &re,
             &Poly::zero(),
         ));
         certs.push(identity_cert(
-            "Im(αβ' − α'β − (f'g − fg')(a0b1 − a1b0)w²) ≡ 0 (seed 001 §6.2)",
+            "Im(αβ' − α'β − (f'g − fg')(a0b1 − a1b0)w²) ≡ 0 (Besednjak §6.2)",
             &im,
             &Poly::zero(),
         ));

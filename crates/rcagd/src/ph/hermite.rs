@@ -276,7 +276,7 @@ fn solve_in<K: Scalar>(data: HermiteData<K>, m: K) -> Result<HermiteSolution<K>,
     {
         return Err(PhError::ParallelEndTangents(
             "d_s and d_f point in the same direction: the interpolation system is degenerate \
-             (X is confined to the common line; NOTES-001 erratum 25)"
+             (X is confined to the common line)"
                 .into(),
         ));
     }

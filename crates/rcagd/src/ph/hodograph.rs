@@ -269,14 +269,14 @@ impl<F: Scalar> PhCurve<F> {
         for (c, name) in ["x", "y", "z"].iter().enumerate() {
             certs.push(identity_cert(
                 format!(
-                    "{name}'(t) of the Bézier control points ≡ {name}-component of A(t) i A*(t) (NOTES-001 ALG-1/2)"
+                    "{name}'(t) of the Bézier control points ≡ {name}-component of A(t) i A*(t)"
                 ),
                 &from_points[c],
                 &h[c],
             ));
         }
         certs.push(identity_cert(
-            "x'² + y'² + z'² − σ² ≡ 0 with σ = |A|² (PH, NOTES-001 ALG-1)",
+            "x'² + y'² + z'² − σ² ≡ 0 with σ = |A|² (PH)",
             &pdot(&from_points, &from_points),
             &(&sigma * &sigma),
         ));

@@ -226,11 +226,7 @@ impl<F: Scalar> PhPolyCurve<F> {
     pub fn certify_arc_length(&self) -> Vec<Certificate> {
         let s = self.arc_length_poly();
         vec![
-            identity_cert(
-                "s'(t) ≡ σ(t) (arc length, NOTES-001 ALG-3)",
-                &s.derivative(),
-                &self.sigma,
-            ),
+            identity_cert("s'(t) ≡ σ(t) (arc length)", &s.derivative(), &self.sigma),
             scalar_cert("s(0) = 0", &s.eval(&F::zero()), &F::zero()),
         ]
     }

@@ -132,7 +132,7 @@ impl<F: Scalar> PnPiece<F> {
 }
 
 /// A PN surface interpolating Hermite data, made of parabolic Dupin cyclide pieces
-/// (seed §4.4).
+/// (Peternell §4.4).
 #[derive(Debug, Clone)]
 pub struct PnModel<F> {
     data: Vec<HermiteDatum<F>>,
@@ -560,7 +560,7 @@ impl<F: Scalar> Certified for PnModel<F> {
                 || (!F::EXACT
                     && matches!((&x, &n), (Ok(x), Ok(n)) if x.iter().zip(&d.point).chain(n.iter().zip(&d.normal)).all(|(a, b)| (a.to_f64() - b.to_f64()).abs() <= 1e-9 * (1.0 + b.to_f64().abs()))));
             out.push(Certificate::decide(
-                format!("datum {i}: x(uᵢ, vᵢ) = Aᵢ and n(uᵢ, vᵢ) = nᵢ (seed §4.4)"),
+                format!("datum {i}: x(uᵢ, vᵢ) = Aᵢ and n(uᵢ, vᵢ) = nᵢ (Peternell §4.4)"),
                 ok,
                 F::EXACT,
                 || format!("x = {x:?}, n = {n:?}"),

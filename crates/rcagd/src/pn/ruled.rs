@@ -423,7 +423,7 @@ impl<F: Scalar> ConeFamilyEnvelope<F> {
                 let lhs = &(&h.num * &n[0]) * &c.den;
                 let rhs = -(&h.den * &(&dot3(&n[1..], &c.center) + &(&n[0] * &c.radius)));
                 identity_cert(
-                    &format!("every tangent plane touches the cycle family {name}: e0 + n·m + r ≡ 0 (seed (3.3))"),
+                    &format!("every tangent plane touches the cycle family {name}: e0 + n·m + r ≡ 0 (Peternell (3.3))"),
                     &lhs,
                     &rhs,
                 )
@@ -468,7 +468,7 @@ impl<F: Scalar> RuledPn<F> {
         let c2 = CycleFamily::points(lg)?;
         let envelope = ConeFamilyEnvelope::new(c1, c2, p).map_err(|e| match e {
             PnError::Developable(s) => PnError::Developable(format!(
-                "the ruled surface is developable ({s}); its offsets are pipe surfaces of the edge of regression (seed §4.5)"
+                "the ruled surface is developable ({s}); its offsets are pipe surfaces of the edge of regression (Peternell §4.5)"
             )),
             e => e,
         })?;
@@ -591,7 +591,7 @@ impl<F: Scalar> Certified for CanalPn<F> {
 }
 
 /// The ellipsoid `x₁²/a² + x₂²/b² + x₃²/c² = 1` (`a ≥ b ≥ c > 0`, `a > c`) as a PN surface
-/// in the frame of seed §4.7 (origin at the centre, `x₃` parallel to the normal at an
+/// in the frame of Peternell §4.7 (origin at the centre, `x₃` parallel to the normal at an
 /// umbilic point, `x₂` kept): the envelope of the cones of revolution with vertices on
 /// the focal hyperbola, `c₁ = (m₁; 0)`, `c₂ = (m₂; b)`,
 /// `m₁ = (αγ(t⁴+1), 0, ac(t⁴+1) + 2b²t²)/(b(t⁴−1))`,
@@ -725,7 +725,7 @@ impl<F: Scalar> EllipsoidPn<F> {
         let lhs = &(&e0n * &e0n) * &(&n[0] * &n[0]);
         let rhs = &quad * &(&h.den * &h.den);
         identity_cert(
-            "tangent planes of the ellipsoid (umbilic frame): e0² ≡ nᵀK*n (seed §4.7, NOTES-004 A4.6)",
+            "tangent planes of the ellipsoid (umbilic frame): e0² ≡ nᵀK*n (Peternell §4.7)",
             &lhs,
             &rhs,
         )
@@ -985,7 +985,7 @@ impl<F: Scalar> RuledManifold<F> {
                 }
                 found.ok_or_else(|| {
                     PnError::NoRationalPoint(if u_free && n == 3 {
-                        "the normal is constant along the rulings (developable or cylinder, Case 1 m = 1 / Case 2 m = 0 with dim N = 1) and has no rational length: the offset is not rational in general (seed §5.5)".into()
+                        "the normal is constant along the rulings (developable or cylinder, Case 1 m = 1 / Case 2 m = 0 with dim N = 1) and has no rational length: the offset is not rational in general (Peternell §5.5)".into()
                     } else {
                         "no rational unit normal found by the search (the conic family (5.25) needs a point over Q(t); pass NormalHint::RulingPoint or NormalHint::UnitNormal)".into()
                     })

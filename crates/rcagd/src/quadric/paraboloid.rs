@@ -218,7 +218,7 @@ pub fn psi_fibre_seed<F: Scalar>(h: &Hom<F>) -> Result<[Hom<F>; 2], QuadricError
         return Err(QuadricError::Exceptional {
             map: "Lemma 10".into(),
             point: fmt_vec(h),
-            reason: "h0 = h1 = 0: the seed's second spanning point vanishes".into(),
+            reason: "h0 = h1 = 0: the second spanning point vanishes".into(),
         });
     }
     Ok([a, b])

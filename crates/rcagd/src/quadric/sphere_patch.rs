@@ -522,7 +522,7 @@ impl<F: Scalar> Certified for BiquadraticPatch<F> {
         ));
         if let Some((start, back)) = &self.closure {
             out.push(Certificate::decide(
-                "notes 000-8: the chain closes, c00' ∥ c00",
+                "the chain closes, c00' ∥ c00",
                 helpers::parallel(start, back),
                 F::EXACT,
                 || format!("{} vs {}", fmt_vec(start), fmt_vec(back)),
