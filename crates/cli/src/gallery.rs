@@ -46,6 +46,10 @@ pub const RECIPES: &[(&str, &str)] = &[
         "examples/recipes/pn.toml",
         include_str!("../../../examples/recipes/pn.toml"),
     ),
+    (
+        "examples/recipes/conic_surface.toml",
+        include_str!("../../../examples/recipes/conic_surface.toml"),
+    ),
 ];
 
 /// The formats written per gallery object.

@@ -24,7 +24,7 @@ macro_rules! topics {
     };
 }
 
-topics!(kernel, quadric, ph, ph_planar, canal, pn);
+topics!(kernel, quadric, ph, ph_planar, canal, pn, conic_surface);
 
 pub mod describe;
 
