@@ -51,6 +51,10 @@ pub const RECIPES: &[(&str, &str)] = &[
         include_str!("../../../examples/recipes/sphere_family.toml"),
     ),
     (
+        "examples/recipes/conic_surface.toml",
+        include_str!("../../../examples/recipes/conic_surface.toml"),
+    ),
+    (
         "examples/recipes/analysis.toml",
         include_str!("../../../examples/recipes/analysis.toml"),
     ),

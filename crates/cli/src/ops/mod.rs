@@ -32,6 +32,7 @@ topics!(
     canal,
     pn,
     sphere_family,
+    conic_surface,
     analysis
 );
 

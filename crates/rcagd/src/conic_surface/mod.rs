@@ -29,15 +29,18 @@
 // index loops mirror the matrix formulas (C_jk, γ_k)
 #![allow(clippy::needless_range_loop)]
 
+pub mod cones;
 pub mod stereographic;
 
 use crate::pn::poly::patch_of;
+use crate::pn::surface::check_nonzero;
 use crate::pn::Domain;
 use crate::Certified;
 use rcagd_algebra::conic_point::{conic_point, ConicPoint, ConicPointError};
 use rcagd_algebra::linalg::Matrix;
 use rcagd_algebra::mpoly::MPoly;
 use rcagd_algebra::{Certificate, Poly, Rational};
+use rcagd_geom::weight_sign::{split_patches_adaptive, SignRule};
 use rcagd_geom::BezierPatch;
 use stereographic::second_intersection;
 use thiserror::Error;
@@ -573,6 +576,108 @@ impl ConicFamily {
     }
 }
 
+/// How a conic family is given.
+#[derive(Debug, Clone, PartialEq)]
+pub enum FamilyInput {
+    /// The symmetric matrix `C(t)` itself.
+    Matrix(Mat4),
+    /// A fixed conic `C₀` (constant symmetric `4×4`, rank 3) moved by the polynomial plane
+    /// transformation `X = X′·M(t)`: `C(t) = Mᵀ·C₀·M` (Peternell §1.5, corrected: see
+    /// `docs/math/conic-surfaces.md`).
+    Moved {
+        /// `C₀`.
+        conic: Box<[[Q; 4]; 4]>,
+        /// `M(t)`.
+        transform: Mat4,
+    },
+}
+
+/// `C(t) = Mᵀ·C₀·M`.
+pub fn moved_conic(conic: &[[Q; 4]; 4], transform: &Mat4) -> Mat4 {
+    core::array::from_fn(|i| {
+        core::array::from_fn(|j| {
+            let mut s = pz();
+            for a in 0..4 {
+                for b in 0..4 {
+                    if !conic[a][b].is_zero() {
+                        s = &s + &(&transform[a][i] * &transform[b][j]).scale(&conic[a][b]);
+                    }
+                }
+            }
+            s
+        })
+    })
+}
+
+/// The largest number of bisections per direction for the positive-weight split.
+pub const EXPORT_SPLITS: (usize, usize) = (6, 6);
+
+/// Splits a patch whose weight has no zero on its domain into pieces whose Bernstein
+/// weights are all `> 0` (negating a negative weight, which is the same projective
+/// object; exact restrictions, [`split_patches_adaptive`]), with the certificate "every
+/// weight > 0" (so the weight function has no zero: no point at infinity).
+///
+/// # Errors
+/// [`ConicSurfaceError::Patch`] if the splitter refuses.
+pub fn positive_pieces(
+    patch: BezierPatch<Q>,
+) -> Result<(Vec<BezierPatch<Q>>, Certificate), ConicSurfaceError> {
+    let negative = patch.coords().first().is_some_and(|w| *w < Q::ZERO);
+    let patch = if negative {
+        patch.map_scalar(|x| -x.clone())
+    } else {
+        patch
+    };
+    let split = split_patches_adaptive(vec![patch], SignRule::Positive, EXPORT_SPLITS)
+        .map_err(|e| ConicSurfaceError::Patch(e.to_string()))?;
+    let (pieces, bad) = (split.pieces, split.failed);
+    let n = pieces.len();
+    let cert = Certificate::decide(
+        format!("every Bernstein weight of the {n} patches is > 0 (no point at infinity)"),
+        bad == 0,
+        true,
+        || format!("{bad} patches keep a weight ≤ 0 after the largest subdivision"),
+    );
+    Ok((pieces, cert))
+}
+
+/// A conic surface as rational Bézier patches with positive weights and certificates.
+#[derive(Debug, Clone)]
+pub struct ConicSurfacePatch {
+    /// The parametrization.
+    pub surface: ConicSurface,
+    /// The point form on the rectangle, split into pieces with positive weights.
+    pub patches: Vec<BezierPatch<Q>>,
+    /// The family's identities and the surface's certificates.
+    pub certificates: Vec<Certificate>,
+}
+
+/// The conic surface of a family (Thm 1.4) as a patch over `[t₀, t₁] × [u₀, u₁]`.
+///
+/// # Errors
+/// As [`ConicFamily::new`], [`ConicFamily::parametrize`] and [`ConicSurface::patch`].
+pub fn conic_surface_patch(
+    input: &FamilyInput,
+    t: (Q, Q),
+    u: (Q, Q),
+) -> Result<ConicSurfacePatch, ConicSurfaceError> {
+    let c = match input {
+        FamilyInput::Matrix(c) => c.clone(),
+        FamilyInput::Moved { conic, transform } => moved_conic(conic, transform),
+    };
+    let family = ConicFamily::new(c)?;
+    let surface = family.parametrize()?;
+    let (patches, weights) = positive_pieces(surface.patch(t, u)?)?;
+    let mut certificates = family.identities();
+    certificates.extend(surface.certify());
+    certificates.push(weights);
+    Ok(ConicSurfacePatch {
+        surface,
+        patches,
+        certificates,
+    })
+}
+
 /// `Σ xᵢ yᵢ` interpolation: the polynomial through `(xs, ys)` (Lagrange).
 fn interpolate(xs: &[Q], ys: &[Q]) -> P {
     let mut out = pz();
@@ -725,10 +830,17 @@ impl ConicSurface {
     /// `(x₀, x₁, x₂, x₃)`, `x₀` the weight).
     ///
     /// # Errors
-    /// [`ConicSurfaceError::Patch`] for an empty rectangle.
+    /// [`ConicSurfaceError::Patch`] for an empty rectangle or where the weight `x₀`
+    /// vanishes on it (a point at infinity; the parameter point is named).
     pub fn patch(&self, t: (Q, Q), u: (Q, Q)) -> Result<BezierPatch<Q>, ConicSurfaceError> {
         let d =
             Domain::new(t.0, t.1, u.0, u.1).map_err(|e| ConicSurfaceError::Patch(e.to_string()))?;
+        check_nonzero(
+            &self.point[0],
+            &d,
+            "the weight x₀(t, u) vanishes (a point at infinity)",
+        )
+        .map_err(|e| ConicSurfaceError::Patch(e.to_string()))?;
         patch_of(&self.point, &d).map_err(|e| ConicSurfaceError::Patch(e.to_string()))
     }
 }
