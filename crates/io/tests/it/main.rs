@@ -1,6 +1,6 @@
 //! The integration tests of `rcagd-io`, in one test binary (one link instead of one per file;
 //! see docs/ARCHITECTURE.md, "Tests").
 
-mod samples;
 mod exchange;
 mod export;
+mod samples;

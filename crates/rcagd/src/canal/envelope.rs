@@ -392,7 +392,7 @@ fn build_best<F: Scalar>(
 
 /// Builds `x(t, u)` from Krasauskas' reduced pencil for one axis choice
 /// ([`super::krasauskas`]).
-fn build_krasauskas(
+pub(crate) fn build_krasauskas(
     spine: &CanalSpine<Rational>,
     numerators: &[Poly<Rational>; 4],
     g: &[Poly<Rational>; 2],
@@ -950,6 +950,13 @@ impl<F: Scalar> CanalSurface<F> {
     /// The parameter domain `[a, b]` requested at construction (`None`: all of `R`).
     pub fn domain(&self) -> Option<&(Rational, Rational)> {
         self.domain.as_ref()
+    }
+
+    /// The same surface restricted to the domain `[a, b]` (a surface built on all of `R`,
+    /// not reparametrized).
+    pub(crate) fn on_domain(mut self, a: &Rational, b: &Rational) -> Self {
+        self.domain = Some((a.clone(), b.clone()));
+        self
     }
 
     /// The characteristic circle at an end of the domain (`0`: `t = a`, `1`: `t = b`) as
