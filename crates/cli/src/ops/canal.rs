@@ -650,7 +650,9 @@ fn build_pipe_ph(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 /// Blames a pipe error on the parameter that controls it.
 fn pipe_err(e: CanalError, spine_param: &'static str) -> OpError {
     match e {
-        CanalError::InvalidArgument(_) | CanalError::RadiusNotBelowCurvatureRadius { .. } => {
+        CanalError::InvalidArgument(_)
+        | CanalError::RadiusNotBelowCurvatureRadius { .. }
+        | CanalError::TubePartsNotApart { .. } => {
             OpError::param("radius", e.to_string())
         }
         CanalError::IrrationalSplit { .. } | CanalError::ZeroTangent { .. } => {

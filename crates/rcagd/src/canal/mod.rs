@@ -73,7 +73,7 @@ pub use frame::{
     canal_surface_pole_free, pipe_around_ph_pole_free, pole_free_direction, EXPORT_SPLITS,
 };
 pub use pipe::{pipe_around_ph, pipe_around_ph_poly, pipe_around_planar, pipe_surface};
-pub use regularity::{check_pipe_regularity, pipe_regularity_polynomials};
+pub use regularity::{check_pipe_global, check_pipe_regularity, pipe_regularity_polynomials};
 pub use sum_of_squares::{
     sum_of_two_squares, sum_of_two_squares_approx, sum_of_two_squares_f64, GaussianSplit,
     SumOfSquares,
@@ -150,6 +150,18 @@ pub enum CanalError {
         witness: String,
         /// `1/κ` there, rounded.
         curvature_radius: String,
+    },
+    /// Two parts of a pipe could not be shown apart by the exact subdivision bounds.
+    #[error("the pipe parts over t in {first} and t in {second} may meet: their spine pieces come within ≈ {distance} of each other (the tube diameter 2|r| is {diameter}), and the exact subdivision bounds cannot separate them")]
+    TubePartsNotApart {
+        /// The first parameter interval.
+        first: String,
+        /// The second parameter interval.
+        second: String,
+        /// The sampled distance of the two spine pieces.
+        distance: String,
+        /// `2|r|`.
+        diameter: String,
     },
     /// The spine's tangent `m′` vanishes at a parameter of the domain.
     #[error("the spine has a zero-length tangent m′ = 0 at t = {at}: the pipe is singular there")]
