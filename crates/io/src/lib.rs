@@ -23,6 +23,7 @@ pub mod ply;
 pub mod png;
 pub mod raster;
 pub mod report;
+pub mod spine;
 pub mod step;
 pub mod step_read;
 pub mod stl;

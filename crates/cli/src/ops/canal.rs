@@ -10,13 +10,13 @@
 
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
-use crate::value::ParamKind;
+use crate::value::{ParamKind, Value};
 use num_traits::{One, Zero};
 use rcagd::canal::bipoly::{patch_of, BiPoly};
 use rcagd::canal::blend::PlaneEnd;
 use rcagd::canal::{
-    blend_sphere_plane, blend_spheres, canal_surface_pole_free, pipe_around_ph_exportable,
-    pipe_exportable, BlendEnd, BlendSpine, CanalBuild, CanalError, CanalOptions, CanalSpine,
+    blend_sphere_plane, blend_spheres, canal_surface_pole_free, pipe_along_chain,
+    pipe_around_ph_exportable, pipe_exportable, BlendEnd, BlendSpine, CanalBuild, CanalError, CanalOptions, CanalSpine,
     CanalSurface, Method, Orientation,
 };
 use rcagd::lines::{common_transversals, CommonTransversals, Line, Regulus};
@@ -621,7 +621,7 @@ const PIPE_PH: OpSpec = OpSpec {
 name = "pipe_ph_quintic"
 op = "pipe_ph"
 coefficients = [[1, 0, 0, 0], [0, 1, 0, 1], [1, 0, 1, 0]]
-radius = "1/4"
+radius = "1/8"
 "#,
     build: build_pipe_ph,
 };
@@ -649,6 +649,16 @@ fn build_pipe_ph(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 
 /// Blames a pipe error on the parameter that controls it.
 fn pipe_err(e: CanalError, spine_param: &'static str) -> OpError {
+    let e = match e {
+        CanalError::SpinePiece { index, source } => {
+            let inner = pipe_err(*source, spine_param);
+            return OpError {
+                message: format!("spine piece {index} (counted from 0): {}", inner.message),
+                ..inner
+            };
+        }
+        e => e,
+    };
     match e {
         CanalError::InvalidArgument(_)
         | CanalError::RadiusNotBelowCurvatureRadius { .. }
@@ -664,11 +674,12 @@ fn pipe_err(e: CanalError, spine_param: &'static str) -> OpError {
 
 const PIPE: OpSpec = OpSpec {
     name: "pipe",
-    summary: "the pipe surface of constant radius around a rational spine on t ∈ [0, 1], exact over Q when |m'|² is a sum of two rational squares (planar and PH spines always); the smallest exact construction with positive weights is kept",
+    summary: "the pipe surface of constant radius around a rational spine on t ∈ [0, 1] (control points, or every curve of a STEP, IGES or exact JSON file chained end to end, each piece on t ∈ [0, 1]), exact over Q when |m'|² is a sum of two rational squares (planar and PH spines always); the smallest exact construction with positive weights is kept, r·κ < 1 is certified",
     params: &[
-        ParamSpec::required("points", ParamKind::Points, "control points [x, y, z] of the spine"),
+        ParamSpec::optional("points", ParamKind::Points, "control points [x, y, z] of the spine (or give spine_file)"),
         ParamSpec::optional("weights", ParamKind::Numbers, "spine weights (default all 1)"),
-        ParamSpec::required("radius", ParamKind::Number, "pipe radius, ≠ 0"),
+        ParamSpec::optional("spine_file", ParamKind::String, "a STEP (.step, .stp), IGES (.igs, .iges) or rcagd JSON (.json) file whose curves form the spine (path relative to the working directory; instead of points)"),
+        ParamSpec::required("radius", ParamKind::Number, "pipe radius, ≠ 0, below the spine's least radius of curvature"),
         ORIENTATION,
     ],
     example: r#"[[object]]
@@ -682,10 +693,27 @@ radius = "1/5"
 };
 
 fn build_pipe(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let spine = spine_curve(args)?;
     let radius = args.number("radius")?;
+    let orient = orientation(args)?;
+    if let Some(Value::Str(file)) = args.get("spine_file") {
+        if args.get("points").is_some() {
+            return Err(OpError::param(
+                "spine_file",
+                "give either points or spine_file, not both",
+            ));
+        }
+        let spines = rcagd_io::spine::read_spine(std::path::Path::new(file))
+            .map_err(|e| OpError::param("spine_file", e.to_string()))?;
+        let chain = pipe_along_chain(&spines, &radius, orient)
+            .map_err(|e| pipe_err(e, "spine_file"))?;
+        return Ok(vec![args.object(Geometry::Patches(chain.patches()), chain.certify())]);
+    }
+    if args.get("points").is_none() {
+        return Err(OpError::new("give the spine as points or as spine_file"));
+    }
+    let spine = spine_curve(args)?;
     let (zero, one) = (Rational::zero(), Rational::one());
-    let s = pipe_exportable(&spine, &radius, (&zero, &one), orientation(args)?)
+    let s = pipe_exportable(&spine, &radius, (&zero, &one), orient)
         .map_err(|e| pipe_err(e, "points"))?;
     Ok(vec![args.object(Geometry::Patches(s.patches()), s.certify())])
 }

@@ -295,3 +295,107 @@ proptest! {
         }
     }
 }
+
+/// The issue spine as an exact Bézier curve, split at `t = 1/2` into two pieces.
+fn issue_spine_pieces() -> Vec<rcagd_geom::BezierCurve<rcagd_algebra::Rational>> {
+    use rcagd_algebra::{Rational, Scalar};
+    let pts = [
+        [0, 0, 0, 1],
+        [1, 0, 0, 5],
+        [2, 1, 0, 5],
+        [8, 8, 3, 15],
+        [5, 14, 3, 15],
+        [-1, 14, 3, 15],
+    ];
+    let hom: Vec<Vec<Rational>> = pts
+        .iter()
+        .map(|p| {
+            let d = Rational::from(p[3]);
+            vec![
+                Rational::from(1),
+                Rational::from(p[0]) / d.clone(),
+                Rational::from(p[1]) / d.clone(),
+                Rational::from(p[2]) / d,
+            ]
+        })
+        .collect();
+    let c = rcagd_geom::BezierCurve::from_homogeneous(hom).expect("spine");
+    let half = Rational::from_ratio(1, 2);
+    vec![
+        c.restrict(&Rational::from(0), &half).expect("left"),
+        c.restrict(&half, &Rational::from(1)).expect("right"),
+    ]
+}
+
+/// Issue 17, item 2: the spine read from STEP, IGES and exact JSON files (two curve
+/// pieces, chained), the pipe built per piece; a file without curves is a named error.
+#[test]
+fn pipe_around_a_spine_file() {
+    let dir = temp_dir("spine");
+    let spine = Object {
+        name: "spine".into(),
+        op: "test".into(),
+        params: serde_json::json!({}),
+        geometry: Geometry::Curves(issue_spine_pieces()),
+        certificates: Vec::new(),
+    };
+    let objs = vec![spine];
+    let files = [
+        (
+            "spine.step",
+            rcagd_io::step::write_step(&objs).expect("step"),
+        ),
+        (
+            "spine.igs",
+            rcagd_io::iges::write_iges(&objs).expect("iges"),
+        ),
+        (
+            "spine.json",
+            rcagd_io::json::objects_to_json(&objs).to_string(),
+        ),
+    ];
+    std::fs::write(
+        dir.join("spine.exact.json"),
+        rcagd_io::step::exact_sidecar(&objs)
+            .expect("sidecar")
+            .to_string(),
+    )
+    .expect("write sidecar");
+    let mut sizes = Vec::new();
+    for (name, text) in &files {
+        let path = dir.join(name);
+        std::fs::write(&path, text).expect("write spine");
+        let recipe = format!(
+            "[[object]]\nname = \"p\"\nop = \"pipe\"\nspine_file = {:?}\nradius = \"1/8\"\n",
+            path.display().to_string()
+        );
+        let parsed = Recipe::parse("t.toml", &recipe, None).expect("recipe parses");
+        let o =
+            build_recipe(&parsed, |_| {}).unwrap_or_else(|d| panic!("{name}: {}", d[0].message));
+        assert!(
+            o[0].certificates.iter().all(|c| c.holds && c.exact),
+            "{name}: {:?}",
+            o[0].certificates
+                .iter()
+                .filter(|c| !c.holds)
+                .collect::<Vec<_>>()
+        );
+        assert!(
+            o[0].certificates.iter().any(|c| c.property.contains("(G¹")),
+            "{name}: no join certificate"
+        );
+        rcagd_io::step::write_step(&o).expect("STEP export");
+        sizes.push(size(&o[0]).1);
+    }
+    assert!(sizes.iter().all(|&n| n > 0), "{sizes:?}");
+    // a file with a patch and no curve
+    let patch = build(PIPE);
+    let path = dir.join("patch.json");
+    std::fs::write(&path, rcagd_io::json::objects_to_json(&patch).to_string()).expect("write");
+    let (line, msg) = build_err(&format!(
+        "[[object]]\nname = \"p\"\nop = \"pipe\"\nspine_file = {:?}\nradius = \"1/8\"\n",
+        path.display().to_string()
+    ));
+    assert_eq!(line, 4, "{msg}");
+    assert!(msg.contains("has no curves"), "{msg}");
+}

@@ -697,6 +697,161 @@ pub fn pipe_around_ph_exportable(
     Ok(out)
 }
 
+/// A pipe around a chain of spine curves (for example the Bézier pieces of B-spline curves
+/// read from a STEP or IGES file), one [`ExportableCanal`] per piece on `t ∈ [0, 1]`, with
+/// certificates of how consecutive pieces meet.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PipeChain {
+    pieces: Vec<ExportableCanal>,
+    joins: Vec<Certificate>,
+}
+
+impl PipeChain {
+    /// The pipe of each spine piece.
+    pub fn pieces(&self) -> &[ExportableCanal] {
+        &self.pieces
+    }
+
+    /// All patches (every Bernstein weight `> 0`), piece after piece.
+    pub fn patches(&self) -> Vec<BezierPatch<Rational>> {
+        self.pieces
+            .iter()
+            .flat_map(ExportableCanal::patches)
+            .collect()
+    }
+
+    /// The total number of control points.
+    pub fn control_points(&self) -> usize {
+        self.pieces
+            .iter()
+            .map(ExportableCanal::control_points)
+            .sum()
+    }
+}
+
+impl Certified for PipeChain {
+    /// Every piece's certificates (prefixed `spine piece k:` when there are several), and
+    /// per join whether the spine pieces meet (`G⁰`) and with the same tangent direction
+    /// (`G¹`, so the pipes meet along the same characteristic circle).
+    fn certify(&self) -> Vec<Certificate> {
+        let many = self.pieces.len() > 1;
+        let mut out = Vec::new();
+        for (k, p) in self.pieces.iter().enumerate() {
+            out.extend(p.certify().into_iter().map(|mut c| {
+                if many {
+                    c.property = format!("spine piece {k}: {}", c.property);
+                }
+                c
+            }));
+        }
+        out.extend(self.joins.iter().cloned());
+        out
+    }
+}
+
+/// The affine point of a homogeneous control point (`None` for weight 0).
+fn affine(h: &[Rational]) -> Option<[Rational; 3]> {
+    let w = h.first()?;
+    if w.is_zero() {
+        return None;
+    }
+    Some(core::array::from_fn(|k| {
+        h.get(k + 1).cloned().unwrap_or(Rational::ZERO) / w.clone()
+    }))
+}
+
+fn join_certificates(
+    k: usize,
+    a: &BezierCurve<Rational>,
+    b: &BezierCurve<Rational>,
+) -> Vec<Certificate> {
+    let n = a.degree();
+    let ends = (
+        affine(a.control_point(n)),
+        affine(a.control_point(n.saturating_sub(1))),
+        affine(b.control_point(0)),
+        affine(b.control_point(1.min(b.degree()))),
+    );
+    let (Some(pe), Some(pe1), Some(ps), Some(ps1)) = ends else {
+        return vec![Certificate::fails(
+            format!("spine pieces {k} and {} meet (G⁰)", k + 1),
+            "an end control point has weight 0",
+            true,
+        )];
+    };
+    let gap: Vec<Rational> = (0..3).map(|i| ps[i].clone() - pe[i].clone()).collect();
+    let g0 = Certificate::decide(
+        format!(
+            "spine pieces {k} and {} meet: end point of piece {k} = start point of piece {} (G⁰)",
+            k + 1,
+            k + 1
+        ),
+        gap.iter().all(Rational::is_zero),
+        true,
+        || {
+            format!(
+                "gap ({}, {}, {})",
+                format_scalar(&gap[0]),
+                format_scalar(&gap[1]),
+                format_scalar(&gap[2])
+            )
+        },
+    );
+    // end tangent ∝ p_n − p_{n−1}, start tangent ∝ p_1 − p_0 (positive weights)
+    let te: Vec<Rational> = (0..3).map(|i| pe[i].clone() - pe1[i].clone()).collect();
+    let ts: Vec<Rational> = (0..3).map(|i| ps1[i].clone() - ps[i].clone()).collect();
+    let cross = [
+        te[1].clone() * ts[2].clone() - te[2].clone() * ts[1].clone(),
+        te[2].clone() * ts[0].clone() - te[0].clone() * ts[2].clone(),
+        te[0].clone() * ts[1].clone() - te[1].clone() * ts[0].clone(),
+    ];
+    let dot = (0..3).fold(Rational::ZERO, |acc, i| acc + te[i].clone() * ts[i].clone());
+    let g1 = Certificate::decide(
+        format!("spine pieces {k} and {} have the same tangent direction at the joint (G¹: the pipes share the characteristic circle there)", k + 1),
+        cross.iter().all(Rational::is_zero) && dot > Rational::ZERO,
+        true,
+        || format!("end tangent ∝ ({}, {}, {}), start tangent ∝ ({}, {}, {})", format_scalar(&te[0]), format_scalar(&te[1]), format_scalar(&te[2]), format_scalar(&ts[0]), format_scalar(&ts[1]), format_scalar(&ts[2])),
+    );
+    vec![g0, g1]
+}
+
+/// The pipe of radius `r` around a chain of spine curves, each on `t ∈ [0, 1]`
+/// ([`pipe_exportable`] per piece), with the `G⁰`/`G¹` certificates of the joints.
+///
+/// # Errors
+/// [`CanalError::InvalidArgument`] for an empty chain; [`CanalError::SpinePiece`] wrapping
+/// the error of a piece (as [`pipe_exportable`]).
+pub fn pipe_along_chain(
+    spines: &[BezierCurve<Rational>],
+    radius: &Rational,
+    orientation: Orientation,
+) -> Result<PipeChain, CanalError> {
+    if spines.is_empty() {
+        return Err(CanalError::InvalidArgument("no spine curve".into()));
+    }
+    let (zero, one) = (Rational::ZERO, Rational::ONE);
+    let mut pieces = Vec::with_capacity(spines.len());
+    for (k, s) in spines.iter().enumerate() {
+        let p = pipe_exportable(s, radius, (&zero, &one), orientation).map_err(|e| {
+            if spines.len() == 1 {
+                e
+            } else {
+                CanalError::SpinePiece {
+                    index: k,
+                    source: Box::new(e),
+                }
+            }
+        })?;
+        pieces.push(p);
+    }
+    let joins = spines
+        .windows(2)
+        .enumerate()
+        .flat_map(|(k, w)| join_certificates(k, &w[0], &w[1]))
+        .collect();
+    Ok(PipeChain { pieces, joins })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -66,8 +66,8 @@ pub use envelope::{
     Construction, KrasauskasBound, Method, Orientation, QuadraticCanal,
 };
 pub use exportable::{
-    canal_surface_exportable, degree_certificate, pipe_around_ph_exportable, pipe_exportable,
-    positive_weight_certificate, ExportPiece, ExportableCanal, Frame,
+    canal_surface_exportable, degree_certificate, pipe_along_chain, pipe_around_ph_exportable,
+    pipe_exportable, positive_weight_certificate, ExportPiece, ExportableCanal, Frame, PipeChain,
 };
 pub use frame::{
     canal_surface_pole_free, pipe_around_ph_pole_free, pole_free_direction, EXPORT_SPLITS,
@@ -162,6 +162,14 @@ pub enum CanalError {
         distance: String,
         /// `2|r|`.
         diameter: String,
+    },
+    /// The error of one piece of a chain of spine curves.
+    #[error("spine piece {index} (counted from 0): {source}")]
+    SpinePiece {
+        /// The index of the piece in the chain.
+        index: usize,
+        /// Its error.
+        source: Box<CanalError>,
     },
     /// The spine's tangent `m′` vanishes at a parameter of the domain.
     #[error("the spine has a zero-length tangent m′ = 0 at t = {at}: the pipe is singular there")]
