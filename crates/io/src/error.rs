@@ -35,6 +35,9 @@ pub enum IoError {
     /// the message names the violated precondition.
     #[error("invalid input for export: {0}")]
     Invalid(String),
+    /// A spine file (STEP, IGES or JSON) holds no curve.
+    #[error("the spine file {0} has no curves (a pipe needs at least one rational B-spline or Bézier curve)")]
+    NoSpineCurves(String),
     /// A file being read is malformed or outside the subset the readers accept. The
     /// message names the format, the line (1-based, where known) and the entity
     /// (`#7` in STEP, `type 126 at DE 5` in IGES), e.g.

@@ -26,6 +26,7 @@ pub mod png;
 pub mod quantity;
 pub mod raster;
 pub mod report;
+pub mod spine;
 pub mod step;
 pub mod step_read;
 pub mod stl;

@@ -223,7 +223,7 @@ impl<F: Scalar> Certified for SphereContact<F> {
         let mut out = Vec::new();
         let r = a.contact_residual(b);
         out.push(Certificate::decide(
-            "⟨k₁ − k₂, k₁ − k₂⟩_pe = 0 (oriented contact, Gruber (1.13), erratum 003-E2)",
+            "⟨k₁ − k₂, k₁ − k₂⟩_pe = 0 (oriented contact, Gruber (1.13), sign corrected)",
             is_small(&r, s * s),
             F::EXACT,
             || format_scalar(&r),

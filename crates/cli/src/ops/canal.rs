@@ -10,13 +10,13 @@
 
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
-use crate::value::ParamKind;
+use crate::value::{ParamKind, Value};
 use num_traits::{One, Zero};
 use rcagd::canal::bipoly::{patch_of, BiPoly};
 use rcagd::canal::blend::PlaneEnd;
 use rcagd::canal::{
-    blend_sphere_plane, blend_spheres, canal_surface_pole_free, pipe_around_ph_pole_free,
-    pipe_surface, BlendEnd, BlendSpine, CanalBuild, CanalError, CanalOptions, CanalSpine,
+    blend_sphere_plane, blend_spheres, canal_surface_pole_free, pipe_along_chain,
+    pipe_around_ph_exportable, pipe_exportable, BlendEnd, BlendSpine, CanalBuild, CanalError, CanalOptions, CanalSpine,
     CanalSurface, Method, Orientation,
 };
 use rcagd::lines::{common_transversals, CommonTransversals, Line, Regulus};
@@ -192,44 +192,10 @@ fn canal_err_plain(e: CanalError) -> OpError {
     OpError::new(e.to_string())
 }
 
-/// The bidegree of a canal surface against the construction's bound and the Krasauskas
-/// bound of seed 003 Satz 2 (2.37).
+/// The bidegree of a canal surface against its construction's bound
+/// ([`rcagd::canal::degree_certificate`]).
 fn degree_cert(s: &CanalSurface<Rational>) -> Certificate {
-    let (dt, du) = s.degree();
-    // x = q₀·(W, M) + q·R with deg_t q ≤ 2·deg P (the split has deg g ≤ deg P): the
-    // construction gives deg_t ≤ 2·deg P + k, deg_u ≤ 2 (circles are conics)
-    let k = s.spine().degree();
-    let dp = s
-        .spine()
-        .derivative_numerators()
-        .map(|p| p.iter().filter_map(Poly::degree).max().unwrap_or(0))
-        .unwrap_or(0);
-    let bound = 2 * dp + k;
-    let kras = rcagd::canal::krasauskas_bound(s.spine())
-        .map(|b| format!("; Krasauskas bound (2.37) for this family: ({}, {}) (erratum 003-E9: an overestimate for polynomial data)", b.bidegree.0, b.bidegree.1))
-        .unwrap_or_default();
-    let method = match s.construction() {
-        rcagd::canal::Construction::PeternellPottmann => {
-            "; construction: Peternell–Pottmann".to_string()
-        }
-        rcagd::canal::Construction::Krasauskas {
-            initial_degree,
-            reduced_degree,
-            steps,
-        } => format!("; construction: Krasauskas pencil, degree {initial_degree} reduced to {reduced_degree} in {steps} steps (2.36)"),
-    };
-    let bound = match s.construction() {
-        rcagd::canal::Construction::Krasauskas { reduced_degree, .. } => {
-            2 * reduced_degree + k
-        }
-        rcagd::canal::Construction::PeternellPottmann => bound,
-    };
-    Certificate::decide(
-        format!("bidegree (deg_t, deg_u) = ({dt}, {du}) ≤ ({bound}, 2) of the construction (Gruber §2.1, §2.4){kras}{method}"),
-        du <= 2 && dt <= bound,
-        true,
-        || format!("({dt}, {du})"),
-    )
+    rcagd::canal::degree_certificate(s)
 }
 
 // ----------------------------------------------------------------------------------------
@@ -644,7 +610,7 @@ fn build_canal_surface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 
 const PIPE_PH: OpSpec = OpSpec {
     name: "pipe_ph",
-    summary: "the exact rational pipe surface of constant radius around a spatial PH curve in quaternion form (split D = σ², no factorization), t ∈ [0, 1]",
+    summary: "the exact rational pipe surface of constant radius around a spatial PH curve in quaternion form, t ∈ [0, 1]: every exact construction (split D = σ² and the Gaussian splits, Peternell–Pottmann and Krasauskas, every frame, interval splits) is tried and the smallest with positive weights kept",
     params: &[
         ParamSpec::required("coefficients", ParamKind::Points, "Bernstein coefficients A₀ … A_m of the quaternion preimage, each [a, b, c, d] = a + b i + c j + d k (curve degree 2m + 1)"),
         ParamSpec::with_default("start", ParamKind::Point3, "[0, 0, 0]", "start point r(0)"),
@@ -655,7 +621,7 @@ const PIPE_PH: OpSpec = OpSpec {
 name = "pipe_ph_quintic"
 op = "pipe_ph"
 coefficients = [[1, 0, 0, 0], [0, 1, 0, 1], [1, 0, 1, 0]]
-radius = "1/4"
+radius = "1/8"
 "#,
     build: build_pipe_ph,
 };
@@ -674,29 +640,46 @@ fn build_pipe_ph(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         .map_err(|e| OpError::param("coefficients", e.to_string()))?;
     let radius = args.number("radius")?;
     let (zero, one) = (Rational::zero(), Rational::one());
-    let s = pipe_around_ph_pole_free(&curve, &radius, (&zero, &one), orientation(args)?)
-        .map_err(|e| match e {
-        CanalError::InvalidArgument(_) => OpError::param("radius", e.to_string()),
-        other => canal_err(other, "coefficients", "radius"),
-    })?;
-    let patches = s
-        .full_patches((&Rational::zero(), &Rational::one()))
-        .map_err(canal_err_plain)?;
-    let (patches, wcert) = positive_pieces(patches.to_vec())?;
+    let s = pipe_around_ph_exportable(&curve, &radius, (&zero, &one), orientation(args)?)
+        .map_err(|e| pipe_err(e, "coefficients"))?;
     let mut certs = s.certify();
-    certs.push(degree_cert(&s));
-    certs.push(wcert);
     certs.extend(prefixed("spine: ", curve.certify()));
-    Ok(vec![args.object(Geometry::Patches(patches), certs)])
+    Ok(vec![args.object(Geometry::Patches(s.patches()), certs)])
+}
+
+/// Blames a pipe error on the parameter that controls it.
+fn pipe_err(e: CanalError, spine_param: &'static str) -> OpError {
+    let e = match e {
+        CanalError::SpinePiece { index, source } => {
+            let inner = pipe_err(*source, spine_param);
+            return OpError {
+                message: format!("spine piece {index} (counted from 0): {}", inner.message),
+                ..inner
+            };
+        }
+        e => e,
+    };
+    match e {
+        CanalError::InvalidArgument(_)
+        | CanalError::RadiusNotBelowCurvatureRadius { .. }
+        | CanalError::TubePartsNotApart { .. } => {
+            OpError::param("radius", e.to_string())
+        }
+        CanalError::IrrationalSplit { .. } | CanalError::ZeroTangent { .. } => {
+            OpError::param(spine_param, e.to_string())
+        }
+        other => canal_err(other, spine_param, "radius"),
+    }
 }
 
 const PIPE: OpSpec = OpSpec {
     name: "pipe",
-    summary: "the pipe surface of constant radius around a rational spine on t ∈ [0, 1], exact over Q when |m'|² is a sum of two rational squares (planar and PH spines always)",
+    summary: "the pipe surface of constant radius around a rational spine on t ∈ [0, 1] (control points, or every curve of a STEP, IGES or exact JSON file chained end to end, each piece on t ∈ [0, 1]), exact over Q when |m'|² is a sum of two rational squares (planar and PH spines always); the smallest exact construction with positive weights is kept, r·κ < 1 is certified",
     params: &[
-        ParamSpec::required("points", ParamKind::Points, "control points [x, y, z] of the spine"),
+        ParamSpec::optional("points", ParamKind::Points, "control points [x, y, z] of the spine (or give spine_file)"),
         ParamSpec::optional("weights", ParamKind::Numbers, "spine weights (default all 1)"),
-        ParamSpec::required("radius", ParamKind::Number, "pipe radius, ≠ 0"),
+        ParamSpec::optional("spine_file", ParamKind::String, "a STEP (.step, .stp), IGES (.igs, .iges) or rcagd JSON (.json) file whose curves form the spine (path relative to the working directory; instead of points)"),
+        ParamSpec::required("radius", ParamKind::Number, "pipe radius, ≠ 0, below the spine's least radius of curvature"),
         ORIENTATION,
     ],
     example: r#"[[object]]
@@ -710,19 +693,29 @@ radius = "1/5"
 };
 
 fn build_pipe(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let spine = spine_curve(args)?;
     let radius = args.number("radius")?;
-    let options = CanalOptions {
-        orientation: orientation(args)?,
-        domain: Some((Rational::zero(), Rational::one())),
-        ..CanalOptions::default()
-    };
-    let build = pipe_surface(&spine, &radius, &options).map_err(|e| match e {
-        CanalError::InvalidArgument(_) => OpError::param("radius", e.to_string()),
-        other => canal_err(other, "points", "radius"),
-    })?;
-    let s = rational_build(&build, "points")?;
-    Ok(vec![canal_object(args, s, Vec::new())?])
+    let orient = orientation(args)?;
+    if let Some(Value::Str(file)) = args.get("spine_file") {
+        if args.get("points").is_some() {
+            return Err(OpError::param(
+                "spine_file",
+                "give either points or spine_file, not both",
+            ));
+        }
+        let spines = rcagd_io::spine::read_spine(std::path::Path::new(file))
+            .map_err(|e| OpError::param("spine_file", e.to_string()))?;
+        let chain = pipe_along_chain(&spines, &radius, orient)
+            .map_err(|e| pipe_err(e, "spine_file"))?;
+        return Ok(vec![args.object(Geometry::Patches(chain.patches()), chain.certify())]);
+    }
+    if args.get("points").is_none() {
+        return Err(OpError::new("give the spine as points or as spine_file"));
+    }
+    let spine = spine_curve(args)?;
+    let (zero, one) = (Rational::zero(), Rational::one());
+    let s = pipe_exportable(&spine, &radius, (&zero, &one), orient)
+        .map_err(|e| pipe_err(e, "points"))?;
+    Ok(vec![args.object(Geometry::Patches(s.patches()), s.certify())])
 }
 
 const BLEND_PARAMS_SPHERE0: [ParamSpec; 4] = [

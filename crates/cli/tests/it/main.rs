@@ -5,4 +5,5 @@ mod cli;
 mod docs;
 mod exchange_weights;
 mod fuzz;
+mod pipes;
 mod quadric_ops;

@@ -392,7 +392,7 @@ fn build_best<F: Scalar>(
 
 /// Builds `x(t, u)` from Krasauskas' reduced pencil for one axis choice
 /// ([`super::krasauskas`]).
-fn build_krasauskas(
+pub(crate) fn build_krasauskas(
     spine: &CanalSpine<Rational>,
     numerators: &[Poly<Rational>; 4],
     g: &[Poly<Rational>; 2],
@@ -952,6 +952,13 @@ impl<F: Scalar> CanalSurface<F> {
         self.domain.as_ref()
     }
 
+    /// The same surface restricted to the domain `[a, b]` (a surface built on all of `R`,
+    /// not reparametrized).
+    pub(crate) fn on_domain(mut self, a: &Rational, b: &Rational) -> Self {
+        self.domain = Some((a.clone(), b.clone()));
+        self
+    }
+
     /// The characteristic circle at an end of the domain (`0`: `t = a`, `1`: `t = b`) as
     /// homogeneous polynomials in `u`; for a reparametrized family `t = a ↔ s = 0` and
     /// `t = b ↔ s = ∞` (the leading coefficients in `s`).
@@ -1063,7 +1070,7 @@ pub(crate) fn canal_certificates<F: Scalar>(
         .fold(BiPoly::zero(), |acc, i| acc.add(&dx[i].mul_t(&p[i])))
         .add(&x0.mul_t(&(r * &p[3])));
     out.push(bi_cert(
-        "(x − m)·ṁ + r ṙ ≡ 0 (contact condition K̇(t), Gruber (2.2) corrected per erratum 003-E3)",
+        "(x − m)·ṁ + r ṙ ≡ 0 (contact condition K̇(t), Gruber (2.2), sign corrected)",
         &contact,
         sd * sp * 4.0,
     ));
@@ -1356,7 +1363,7 @@ impl<F: Scalar> Certified for QuadraticCanal<F> {
                 sc * sc * 16.0,
             ),
             bi_cert(
-                "(Γ − m(p))·ṁ(p) + r(p)ṙ(p) ≡ 0 (contact, erratum 003-E3 sign)",
+                "(Γ − m(p))·ṁ(p) + r(p)ṙ(p) ≡ 0 (contact, Gruber (2.2), sign corrected)",
                 &contact,
                 sc * sc * 16.0,
             ),

@@ -124,6 +124,20 @@ pub fn pole_free_direction(
     a: &Rational,
     b: &Rational,
 ) -> Result<Option<[Rational; 3]>, CanalError> {
+    Ok(pole_free_directions(spine, a, b, 1)?.into_iter().next())
+}
+
+/// Up to `limit` directions as [`pole_free_direction`], best conditioned first, each
+/// verified exactly.
+///
+/// # Errors
+/// As [`pole_free_direction`].
+pub fn pole_free_directions(
+    spine: &CanalSpine<Rational>,
+    a: &Rational,
+    b: &Rational,
+    limit: usize,
+) -> Result<Vec<[Rational; 3]>, CanalError> {
     if a > b {
         return Err(CanalError::InvalidArgument(format!(
             "empty parameter interval [{}, {}]",
@@ -169,16 +183,20 @@ pub fn pole_free_direction(
         }
     }
     scored.sort_by(|x, y| y.0.total_cmp(&x.0));
+    let mut out = Vec::new();
     for (_, e) in scored {
+        if out.len() >= limit {
+            break;
+        }
         let c = c_of(&p, &e);
         if !c.is_zero() && count_real_roots_in(&c, a, b)? == 0 {
-            return Ok(Some(e));
+            out.push(e);
         }
     }
-    Ok(None)
+    Ok(out)
 }
 
-fn transform_spine<F: Scalar>(spine: &CanalSpine<F>, q: &[[F; 3]; 3]) -> CanalSpine<F> {
+pub(crate) fn transform_spine<F: Scalar>(spine: &CanalSpine<F>, q: &[[F; 3]; 3]) -> CanalSpine<F> {
     let m = spine.center_polys();
     let mq: [Poly<F>; 3] =
         core::array::from_fn(|i| (0..3).fold(Poly::zero(), |acc, j| &acc + &m[j].scale(&q[i][j])));
@@ -187,7 +205,7 @@ fn transform_spine<F: Scalar>(spine: &CanalSpine<F>, q: &[[F; 3]; 3]) -> CanalSp
         .unwrap_or_else(|_| spine.clone())
 }
 
-fn coordinate_axis(e: &[Rational; 3]) -> Option<AxisChoice> {
+pub(crate) fn coordinate_axis(e: &[Rational; 3]) -> Option<AxisChoice> {
     let zero = Rational::from(0);
     let nz: Vec<usize> = (0..3).filter(|&i| e[i] != zero).collect();
     match nz.as_slice() {
@@ -199,7 +217,7 @@ fn coordinate_axis(e: &[Rational; 3]) -> Option<AxisChoice> {
     }
 }
 
-fn oriented(spine: &CanalSpine<Rational>, o: Orientation) -> CanalSpine<Rational> {
+pub(crate) fn oriented(spine: &CanalSpine<Rational>, o: Orientation) -> CanalSpine<Rational> {
     match o {
         Orientation::Positive => spine.clone(),
         Orientation::Negative => spine.reversed(),

@@ -47,10 +47,12 @@
 pub mod bipoly;
 pub mod blend;
 pub mod envelope;
+pub mod exportable;
 pub mod factor;
 pub mod frame;
 pub mod krasauskas;
 pub mod pipe;
+pub mod regularity;
 pub mod sum_of_squares;
 
 pub use bipoly::BiPoly;
@@ -63,10 +65,15 @@ pub use envelope::{
     krasauskas_bound, AxisChoice, CanalBuild, CanalOptions, CanalSurface, CharacteristicCircle,
     Construction, KrasauskasBound, Method, Orientation, QuadraticCanal,
 };
+pub use exportable::{
+    canal_surface_exportable, degree_certificate, pipe_along_chain, pipe_around_ph_exportable,
+    pipe_exportable, positive_weight_certificate, ExportPiece, ExportableCanal, Frame, PipeChain,
+};
 pub use frame::{
     canal_surface_pole_free, pipe_around_ph_pole_free, pole_free_direction, EXPORT_SPLITS,
 };
 pub use pipe::{pipe_around_ph, pipe_around_ph_poly, pipe_around_planar, pipe_surface};
+pub use regularity::{check_pipe_global, check_pipe_regularity, pipe_regularity_polynomials};
 pub use sum_of_squares::{
     sum_of_two_squares, sum_of_two_squares_approx, sum_of_two_squares_f64, GaussianSplit,
     SumOfSquares,
@@ -111,6 +118,65 @@ pub enum CanalError {
     /// Any other invalid argument; the message names the precondition.
     #[error("invalid argument: {0}")]
     InvalidArgument(String),
+    /// Every exact build of the surface needs a quadratic field `Q(√d)`: exchange files
+    /// carry rational geometry only.
+    #[error("|ṁ|² − ṙ² is not a sum of two squares over Q: the exact surface needs the field Q(√{radicand}) (rcagd::canal::canal_surface builds it there); STEP and IGES carry rational geometry only — change the data so that it splits over Q (e.g. a PH spine for a pipe)")]
+    IrrationalSplit {
+        /// The square-free radicand `d`.
+        radicand: String,
+    },
+    /// No exact construction, frame or interval split gives Bézier patches with positive
+    /// weights on a parameter interval (the weight of every candidate vanishes there).
+    #[error("no exact construction gives patches with positive weights for t in [{from}, {to}] ({tried} candidates tried, after splitting the interval): the weight of every parametrization vanishes there")]
+    NotExportable {
+        /// Lower end of the interval.
+        from: String,
+        /// Upper end of the interval.
+        to: String,
+        /// How many candidates were built on it.
+        tried: usize,
+    },
+    /// The pipe radius is not below the radius of curvature `1/κ` of the spine somewhere
+    /// on the domain: `r·κ ≥ 1` there, the pipe intersects itself locally.
+    #[error("the pipe radius |r| = |{radius}| is not below the radius of curvature 1/κ of the spine for t in [{from}, {to}] (e.g. at t = {witness}, where 1/κ ≈ {curvature_radius}): r·κ ≥ 1 there, so the pipe intersects itself locally")]
+    RadiusNotBelowCurvatureRadius {
+        /// The radius.
+        radius: String,
+        /// Lower end of the interval (a root of `|P|⁶ − r²W⁴|P × P′|²` or the domain end).
+        from: String,
+        /// Upper end of the interval.
+        to: String,
+        /// A rational parameter inside the interval.
+        witness: String,
+        /// `1/κ` there, rounded.
+        curvature_radius: String,
+    },
+    /// Two parts of a pipe could not be shown apart by the exact subdivision bounds.
+    #[error("the pipe parts over t in {first} and t in {second} may meet: their spine pieces come within ≈ {distance} of each other (the tube diameter 2|r| is {diameter}), and the exact subdivision bounds cannot separate them")]
+    TubePartsNotApart {
+        /// The first parameter interval.
+        first: String,
+        /// The second parameter interval.
+        second: String,
+        /// The sampled distance of the two spine pieces.
+        distance: String,
+        /// `2|r|`.
+        diameter: String,
+    },
+    /// The error of one piece of a chain of spine curves.
+    #[error("spine piece {index} (counted from 0): {source}")]
+    SpinePiece {
+        /// The index of the piece in the chain.
+        index: usize,
+        /// Its error.
+        source: Box<CanalError>,
+    },
+    /// The spine's tangent `m′` vanishes at a parameter of the domain.
+    #[error("the spine has a zero-length tangent m′ = 0 at t = {at}: the pipe is singular there")]
+    ZeroTangent {
+        /// The parameter (exact, or a rounded root).
+        at: String,
+    },
     /// A failure of the geometry layer.
     #[error(transparent)]
     Geom(#[from] GeomError),
@@ -415,7 +481,7 @@ impl CanalSpine<Rational> {
 }
 
 /// The polynomial square root (`None` if `p` is not a square of a rational polynomial).
-fn poly_sqrt(p: &Poly<Rational>) -> Option<Poly<Rational>> {
+pub(crate) fn poly_sqrt(p: &Poly<Rational>) -> Option<Poly<Rational>> {
     if p.is_zero() {
         return Some(Poly::zero());
     }

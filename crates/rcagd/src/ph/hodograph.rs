@@ -269,14 +269,14 @@ impl<F: Scalar> PhCurve<F> {
         for (c, name) in ["x", "y", "z"].iter().enumerate() {
             certs.push(identity_cert(
                 format!(
-                    "{name}'(t) of the Bézier control points ≡ {name}-component of A(t) i A*(t)"
+                    "{name}'(t) of the Bézier control points ≡ {name}-component of A(t) i A*(t) (quaternion form, Besednjak, DPH-krivulje in polinomske vijačnice, (3.27)–(3.29))"
                 ),
                 &from_points[c],
                 &h[c],
             ));
         }
         certs.push(identity_cert(
-            "x'² + y'² + z'² − σ² ≡ 0 with σ = |A|² (PH)",
+            "x'² + y'² + z'² − σ² ≡ 0 with σ = |A|² (PH, Besednjak, DPH-krivulje in polinomske vijačnice, (3.27))",
             &pdot(&from_points, &from_points),
             &(&sigma * &sigma),
         ));

@@ -1,0 +1,889 @@
+//! Canal and pipe surfaces ready for exchange: every exact construction this module has,
+//! in every frame, on the whole parameter interval or on pieces of it, and the one that
+//! exports smallest (see `docs/math/pipes.md#choice`).
+//!
+//! STEP and IGES carry rational B-splines with positive weights. An exact parametrization
+//! `x(t, u)` of a canal surface has the weight `X₀(t, u)`; where it vanishes on the
+//! parameter domain (a base point or a pole of the stereographic frame, D. Gruber,
+//! "Rationale Parametrisierungen von Kugelhüllflächen", 2008, §2.1 "rotate coordinates if
+//! necessary") no subdivision gives pieces with positive weights. Which constructions have
+//! such a zero depends on the frame, on the construction and on the interval, so the
+//! builder here treats a vanishing weight as a reason to choose differently, never as a
+//! failure:
+//!
+//! * **constructions**: Peternell–Pottmann (Gruber (2.10)–(2.17)) and Krasauskas' reduced
+//!   pencil (Gruber §2.4, (2.36)), for every choice of Gaussian factors of `D` (Gruber
+//!   (2.35)) and, where the caller knows one (the parametric speed of a PH spine, the two
+//!   tangent components of a planar spine), for that split too;
+//! * **frames**: the six coordinate axes as the pole of the stereographic projection, and
+//!   up to [`TILTED_FRAMES`] rational unit directions `e` for which the pole polynomial
+//!   `P₄ + e·Pₘ` has no real root on the interval ([`super::frame`]);
+//! * **splits of the interval**: if no candidate exports on `[a, b]`, the interval is
+//!   bisected (at most [`MAX_INTERVAL_SPLITS`] times) and each half is built on its own.
+//!
+//! A candidate *exports* if its Bézier patches over the interval
+//! ([`CanalSurface::domain_patches`]) split into pieces whose Bernstein weights are all
+//! positive within [`EXPORT_SPLITS`] bisections (the convex-hull property then proves that
+//! the weight has no zero: no pole, no base point). Among the candidates that export the
+//! one with the fewest control points after that split wins; ties go to the lower bidegree,
+//! then to the earlier candidate (coordinate axes before tilted frames, Krasauskas before
+//! Peternell–Pottmann, general splits before the caller's split).
+
+use super::envelope::{build_krasauskas, canal_surface, CanalBuild, CanalOptions, CanalSurface};
+use super::envelope::{AxisChoice, Construction, Method, Orientation};
+use super::frame::{
+    coordinate_axis, householder, oriented, pole_free_directions, transform_spine, EXPORT_SPLITS,
+};
+use super::regularity::check_pipe_regularity;
+use super::{CanalError, CanalSpine};
+use crate::error::format_scalar;
+use crate::ph::PhCurve;
+use crate::Certified;
+use rcagd_algebra::roots::count_real_roots_in;
+use rcagd_algebra::{Certificate, Poly, Rational, Scalar};
+use rcagd_geom::weight_sign::{split_patches_adaptive, SignRule};
+use rcagd_geom::{BezierCurve, BezierPatch};
+
+/// The most tilted (non-coordinate) stereographic frames tried per interval.
+pub const TILTED_FRAMES: usize = 2;
+
+/// The most bisections of the parameter interval (at most `2^3 = 8` pieces).
+pub const MAX_INTERVAL_SPLITS: usize = 3;
+
+/// The stereographic frame of a candidate.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Frame {
+    /// A coordinate axis (and sign) is the pole axis.
+    Axis(AxisChoice),
+    /// The rational unit direction `e` is the pole axis (the family is reflected by the
+    /// Householder map `H` with `He = e₃`, built there, and mapped back).
+    Direction([Rational; 3]),
+}
+
+impl std::fmt::Display for Frame {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Frame::Axis(a) => write!(
+                f,
+                "pole {}{}",
+                if a.positive { "+" } else { "−" },
+                ["x", "y", "z"].get(a.axis).copied().unwrap_or("?")
+            ),
+            Frame::Direction(e) => write!(
+                f,
+                "pole ({}, {}, {})",
+                format_scalar(&e[0]),
+                format_scalar(&e[1]),
+                format_scalar(&e[2])
+            ),
+        }
+    }
+}
+
+/// One exact piece of an [`ExportableCanal`]: the surface over a parameter interval and its
+/// Bézier patches with positive weights.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExportPiece {
+    interval: (Rational, Rational),
+    surface: CanalSurface<Rational>,
+    frame: Frame,
+    patches: Vec<BezierPatch<Rational>>,
+}
+
+impl ExportPiece {
+    /// The parameter interval `[a, b]` of the spine covered by this piece.
+    pub fn interval(&self) -> (&Rational, &Rational) {
+        (&self.interval.0, &self.interval.1)
+    }
+
+    /// The exact surface (on all of `R`; its domain is [`Self::interval`]).
+    pub fn surface(&self) -> &CanalSurface<Rational> {
+        &self.surface
+    }
+
+    /// The stereographic frame used.
+    pub fn frame(&self) -> &Frame {
+        &self.frame
+    }
+
+    /// The Bézier patches over the interval, every Bernstein weight `> 0`.
+    pub fn patches(&self) -> &[BezierPatch<Rational>] {
+        &self.patches
+    }
+
+    /// The number of control points of the patches.
+    pub fn control_points(&self) -> usize {
+        control_points(&self.patches)
+    }
+}
+
+/// An exact canal or pipe surface over a parameter interval as pieces that export (module
+/// docs), with the number of candidates tried.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExportableCanal {
+    pieces: Vec<ExportPiece>,
+    tried: usize,
+    exporting: usize,
+    regularity: Vec<Certificate>,
+}
+
+impl ExportableCanal {
+    /// The pieces, in parameter order.
+    pub fn pieces(&self) -> &[ExportPiece] {
+        &self.pieces
+    }
+
+    /// All patches (every Bernstein weight `> 0`), in parameter order.
+    pub fn patches(&self) -> Vec<BezierPatch<Rational>> {
+        self.pieces
+            .iter()
+            .flat_map(|p| p.patches.iter().cloned())
+            .collect()
+    }
+
+    /// The total number of control points.
+    pub fn control_points(&self) -> usize {
+        self.pieces.iter().map(ExportPiece::control_points).sum()
+    }
+
+    /// How many candidate constructions were built, and how many of them exported.
+    pub fn candidates(&self) -> (usize, usize) {
+        (self.tried, self.exporting)
+    }
+
+    /// A one-line description of the choice: per piece the interval, construction, frame
+    /// and bidegree.
+    pub fn summary(&self) -> String {
+        let parts: Vec<String> = self
+            .pieces
+            .iter()
+            .map(|p| {
+                let (dt, du) = p.surface.degree();
+                format!(
+                    "t ∈ [{}, {}]: {}, {}, bidegree ({dt}, {du}), {} patches",
+                    format_scalar(&p.interval.0),
+                    format_scalar(&p.interval.1),
+                    construction_name(p.surface.construction()),
+                    p.frame,
+                    p.patches.len()
+                )
+            })
+            .collect();
+        format!(
+            "{}; chosen among {} exact candidates ({} export)",
+            parts.join("; "),
+            self.tried,
+            self.exporting
+        )
+    }
+}
+
+fn construction_name(c: Construction) -> &'static str {
+    match c {
+        Construction::PeternellPottmann => "Peternell–Pottmann",
+        Construction::Krasauskas { .. } => "Krasauskas pencil",
+    }
+}
+
+fn control_points_f64(patches: &[BezierPatch<f64>]) -> usize {
+    patches
+        .iter()
+        .map(|p| (p.degree().0 + 1) * (p.degree().1 + 1))
+        .sum()
+}
+
+fn control_points(patches: &[BezierPatch<Rational>]) -> usize {
+    patches
+        .iter()
+        .map(|p| (p.degree().0 + 1) * (p.degree().1 + 1))
+        .sum()
+}
+
+/// `every Bernstein weight > 0` of a set of patches, decided exactly.
+pub fn positive_weight_certificate(patches: &[BezierPatch<Rational>]) -> Certificate {
+    let zero = Rational::ZERO;
+    let bad = patches
+        .iter()
+        .filter(|p| p.coords().iter().step_by(p.dim() + 1).any(|w| *w <= zero))
+        .count();
+    let n = patches.len();
+    Certificate::decide(
+        format!("every Bernstein weight of the {n} patches is > 0 (the weight has no zero: no pole, no base point)"),
+        bad == 0,
+        true,
+        || format!("{bad} patches have a weight ≤ 0"),
+    )
+}
+
+/// The bidegree of a canal surface against the bound of its construction, with the
+/// Krasauskas bound (Gruber, "Rationale Parametrisierungen von Kugelhüllflächen", Satz 2
+/// (2.37)) for comparison: Peternell–Pottmann gives `deg_t ≤ 2·deg P + k`, the Krasauskas
+/// pencil of degree `n` gives `deg_t ≤ 2n + k` (`k` the degree of the family, `P` its
+/// derivative numerators), and `deg_u ≤ 2` (the characteristic circles are conics).
+pub fn degree_certificate(s: &CanalSurface<Rational>) -> Certificate {
+    let (dt, du) = s.degree();
+    let k = s.spine().degree();
+    let dp = s
+        .spine()
+        .derivative_numerators()
+        .map(|p| p.iter().filter_map(Poly::degree).max().unwrap_or(0))
+        .unwrap_or(0);
+    let kras = super::krasauskas_bound(s.spine())
+        .map(|b| {
+            format!(
+                "; Krasauskas bound (Gruber 2008, Satz 2 (2.37)) for this family: ({}, {}), an overestimate for polynomial data (docs/math/pipes.md#degree)",
+                b.bidegree.0, b.bidegree.1
+            )
+        })
+        .unwrap_or_default();
+    let (bound, method) = match s.construction() {
+        Construction::PeternellPottmann => (
+            2 * dp + k,
+            "; construction: Peternell–Pottmann (Gruber 2008, (2.10)–(2.17))".to_string(),
+        ),
+        Construction::Krasauskas {
+            initial_degree,
+            reduced_degree,
+            steps,
+        } => (
+            2 * reduced_degree + k,
+            format!("; construction: Krasauskas pencil, degree {initial_degree} reduced to {reduced_degree} in {steps} steps (Gruber 2008, (2.36))"),
+        ),
+    };
+    Certificate::decide(
+        format!("bidegree (deg_t, deg_u) = ({dt}, {du}) ≤ ({bound}, 2) of the construction{kras}{method}"),
+        du <= 2 && dt <= bound,
+        true,
+        || format!("({dt}, {du})"),
+    )
+}
+
+impl Certified for ExportableCanal {
+    /// Per piece (prefixed by its interval when there are several): the canal identities
+    /// of [`CanalSurface`], the bidegree against its construction's bound, and the
+    /// positivity of every exported weight; for pipes the regularity `r·κ < 1`
+    /// ([`super::regularity`]).
+    fn certify(&self) -> Vec<Certificate> {
+        let many = self.pieces.len() > 1;
+        let mut out = Vec::new();
+        for p in &self.pieces {
+            let prefix = if many {
+                format!(
+                    "t ∈ [{}, {}]: ",
+                    format_scalar(&p.interval.0),
+                    format_scalar(&p.interval.1)
+                )
+            } else {
+                String::new()
+            };
+            let mut certs = p.surface.certify();
+            certs.push(degree_certificate(&p.surface));
+            certs.push(positive_weight_certificate(&p.patches));
+            out.extend(certs.into_iter().map(|mut c| {
+                c.property = format!("{prefix}{}", c.property);
+                c
+            }));
+        }
+        out.extend(self.regularity.iter().cloned());
+        out
+    }
+}
+
+/// The patch with all homogeneous coordinates negated when its corner weight is negative
+/// (the same projective points; a weight without zero on the patch has one sign).
+fn with_positive_corner<F: Scalar>(p: BezierPatch<F>) -> BezierPatch<F> {
+    if p.coords().first().is_some_and(|w| *w < F::zero()) {
+        let (du, dv) = p.degree();
+        let coords: Vec<F> = p.coords().iter().map(|x| -x.clone()).collect();
+        BezierPatch::from_flat(p.dim(), du, dv, coords).unwrap_or(p)
+    } else {
+        p
+    }
+}
+
+/// The patches of a candidate over its domain split into pieces with positive weights
+/// (after the sign of each patch is normalized), or `None` if that needs more than
+/// [`EXPORT_SPLITS`] bisections (or the weight vanishes).
+fn exported_patches<F: Scalar>(s: &CanalSurface<F>) -> Option<Vec<BezierPatch<F>>> {
+    let patches: Vec<BezierPatch<F>> = s
+        .domain_patches()
+        .ok()?
+        .into_iter()
+        .map(with_positive_corner)
+        .collect();
+    let split = split_patches_adaptive(patches, SignRule::Positive, EXPORT_SPLITS).ok()?;
+    if split.failed > 0 {
+        return None;
+    }
+    if !F::EXACT {
+        // the estimate must not rest on weights that are zero up to rounding
+        let ws: Vec<f64> = split
+            .pieces
+            .iter()
+            .flat_map(|p| p.coords().iter().step_by(p.dim() + 1).map(Scalar::to_f64))
+            .collect();
+        let hi = ws.iter().copied().fold(0.0, f64::max);
+        if ws.iter().any(|w| *w <= 1e-12 * hi) {
+            return None;
+        }
+    }
+    Some(split.pieces)
+}
+
+/// What the candidates on one interval gave.
+struct IntervalResult {
+    best: Option<ExportPiece>,
+    tried: usize,
+    exporting: usize,
+    /// The first error of a construction (reported if nothing builds at all).
+    error: Option<CanalError>,
+    /// A field `Q(√d)` a build needed.
+    radicand: Option<Rational>,
+}
+
+/// Every candidate on `[a, b]` (module docs); keeps the smallest export.
+fn candidates_on(
+    spine: &CanalSpine<Rational>,
+    split: Option<&[Poly<Rational>; 2]>,
+    options: &CanalOptions,
+    a: &Rational,
+    b: &Rational,
+) -> Result<IntervalResult, CanalError> {
+    let so = oriented(spine, options.orientation);
+    // the reality of the envelope on the interval is a property of the data, not of a
+    // candidate: report it as it is
+    so.check_real_envelope(Some((a, b)))?;
+    let mut res = IntervalResult {
+        best: None,
+        tried: 0,
+        exporting: 0,
+        error: None,
+        radicand: None,
+    };
+    let methods: Vec<Method> = match options.method {
+        Method::Lowest => vec![Method::Krasauskas, Method::PeternellPottmann],
+        m => vec![m],
+    };
+    // a family without reparametrization and with W ≠ 0 on [a, b] may be built in a tilted
+    // frame (the built surface is mapped back by an orthogonal map)
+    let global = so.check_real_envelope(None).is_ok();
+    let tilted = if global && count_real_roots_in(so.weight(), a, b)? == 0 {
+        pole_free_directions(&so, a, b, TILTED_FRAMES + 6)?
+            .into_iter()
+            .filter(|e| coordinate_axis(e).is_none())
+            .take(TILTED_FRAMES)
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let mut frames: Vec<Frame> = AxisChoice::all().into_iter().map(Frame::Axis).collect();
+    frames.extend(tilted.into_iter().map(Frame::Direction));
+    let mid = (a.clone() + b.clone()) / Rational::from(2);
+    type Built = ((usize, usize), usize, CanalSurface<Rational>, Frame);
+    let mut built_ok: Vec<Built> = Vec::new();
+    let mut order = 0usize;
+    for frame in frames {
+        let (fam, h) = match &frame {
+            Frame::Axis(_) => (spine.clone(), None),
+            Frame::Direction(e) => {
+                let h = householder(e);
+                (transform_spine(spine, &h), Some(h))
+            }
+        };
+        let axis = match &frame {
+            Frame::Axis(ax) => *ax,
+            Frame::Direction(_) => AxisChoice {
+                axis: 2,
+                positive: true,
+            },
+        };
+        let mut built: Vec<Result<CanalSurface<Rational>, CanalError>> = Vec::new();
+        let fo = oriented(&fam, options.orientation);
+        for &method in &methods {
+            let opts = CanalOptions {
+                orientation: options.orientation,
+                choice: options.choice,
+                axis: Some(axis),
+                domain: Some((a.clone(), b.clone())),
+                method,
+            };
+            let general = match canal_surface(&fam, &opts) {
+                Ok(CanalBuild::Rational(s)) => Some(Ok(s)),
+                Ok(CanalBuild::Extension { radicand, .. }) => {
+                    res.radicand.get_or_insert(radicand);
+                    None
+                }
+                Err(e) => Some(Err(e)),
+            };
+            // the caller's split, unless the general builder used it already
+            let same = |s: &CanalSurface<Rational>| {
+                split.is_some_and(|g| {
+                    let (g1, g2) = s.split();
+                    let sq = |p: &Poly<Rational>| p * p;
+                    (sq(g1) == sq(&g[0]) && sq(g2) == sq(&g[1]))
+                        || (sq(g1) == sq(&g[1]) && sq(g2) == sq(&g[0]))
+                })
+            };
+            let used = matches!(&general, Some(Ok(s)) if same(s));
+            built.extend(general);
+            if let (Some(g), true, false) = (split, global, used) {
+                built.push(with_split(&fo, g, axis, method, &mid).map(|s| s.on_domain(a, b)));
+            }
+        }
+        for s in built {
+            let s = match s {
+                Ok(s) => s,
+                Err(e) => {
+                    res.error.get_or_insert(e);
+                    continue;
+                }
+            };
+            let s = match &h {
+                None => s,
+                Some(h) => match s.transformed(h, &so) {
+                    Ok(s) => s,
+                    Err(e) => {
+                        res.error.get_or_insert(e);
+                        continue;
+                    }
+                },
+            };
+            res.tried += 1;
+            if built_ok
+                .iter()
+                .any(|(_, _, old, _)| old.homogeneous() == s.homogeneous())
+            {
+                continue;
+            }
+            // the size after the positive-weight split, estimated in f64 (exact below)
+            let Some(est) = exported_patches(&s.map_scalar(Scalar::to_f64)) else {
+                continue;
+            };
+            let (dt, du) = s.degree();
+            let key = (control_points_f64(&est), dt + du);
+            built_ok.push((key, order, s, frame.clone()));
+            order += 1;
+        }
+    }
+    res.exporting = built_ok.len();
+    built_ok.sort_by_key(|x| (x.0, x.1));
+    // the best estimate that exports exactly wins (the exact split of a candidate whose f64
+    // estimate succeeded fails only for weights within rounding of zero)
+    for (_, _, s, frame) in built_ok {
+        if let Some(patches) = exported_patches(&s) {
+            res.best = Some(ExportPiece {
+                interval: (a.clone(), b.clone()),
+                surface: s,
+                frame,
+                patches,
+            });
+            break;
+        }
+    }
+    Ok(res)
+}
+
+/// The surface of the oriented family `fo` from a known split, in the frame `axis`.
+fn with_split(
+    fo: &CanalSpine<Rational>,
+    g: &[Poly<Rational>; 2],
+    axis: AxisChoice,
+    method: Method,
+    mid: &Rational,
+) -> Result<CanalSurface<Rational>, CanalError> {
+    let d = fo.discriminant()?;
+    if &(&g[0] * &g[0]) + &(&g[1] * &g[1]) != d {
+        return Err(CanalError::NotASplit(
+            "the given split does not square to |ṁ|² − ṙ²".into(),
+        ));
+    }
+    match method {
+        Method::Krasauskas => {
+            let p = fo.derivative_numerators()?;
+            build_krasauskas(fo, &p, g, axis, mid)
+        }
+        _ => super::canal_surface_with_split(
+            fo,
+            &g[0],
+            &g[1],
+            &CanalOptions {
+                axis: Some(axis),
+                ..CanalOptions::default()
+            },
+        ),
+    }
+}
+
+fn pieces_on(
+    spine: &CanalSpine<Rational>,
+    split: Option<&[Poly<Rational>; 2]>,
+    options: &CanalOptions,
+    interval: (&Rational, &Rational),
+    depth: usize,
+    acc: &mut ExportableCanal,
+) -> Result<(), CanalError> {
+    let (a, b) = interval;
+    let res = candidates_on(spine, split, options, a, b)?;
+    acc.tried += res.tried;
+    acc.exporting += res.exporting;
+    if let Some(p) = res.best {
+        acc.pieces.push(p);
+        return Ok(());
+    }
+    if res.tried == 0 {
+        // nothing built at all: the data, not the frame, is the problem
+        if let Some(d) = res.radicand {
+            return Err(CanalError::IrrationalSplit {
+                radicand: format_scalar(&d),
+            });
+        }
+        return Err(res.error.unwrap_or_else(|| {
+            CanalError::DegenerateSpine("no exact construction applies".into())
+        }));
+    }
+    if depth >= MAX_INTERVAL_SPLITS {
+        return Err(CanalError::NotExportable {
+            from: format_scalar(a),
+            to: format_scalar(b),
+            tried: res.tried,
+        });
+    }
+    let m = (a.clone() + b.clone()) / Rational::from(2);
+    pieces_on(spine, split, options, (a, &m), depth + 1, acc)?;
+    pieces_on(spine, split, options, (&m, b), depth + 1, acc)
+}
+
+/// The canal surface of `spine` on the domain of `options` (required) as exact pieces that
+/// export, from every construction, frame and interval split of the module docs;
+/// `split` is an optional known `D = g₁² + g₂²` (for the family as given; `D` does not
+/// depend on the orientation). The method, orientation and choice of `options` apply; its
+/// axis is ignored (every frame is tried).
+///
+/// # Errors
+/// [`CanalError::InvalidArgument`] without a domain or for `a > b`;
+/// [`CanalError::NoRealEnvelope`] where `|ṁ| < |ṙ|` on the domain;
+/// [`CanalError::IrrationalSplit`] if every build needs a quadratic field;
+/// [`CanalError::NotExportable`] if no candidate exports on an interval after
+/// [`MAX_INTERVAL_SPLITS`] bisections; the errors of the constructions if none builds.
+pub fn canal_surface_exportable(
+    spine: &CanalSpine<Rational>,
+    split: Option<&[Poly<Rational>; 2]>,
+    options: &CanalOptions,
+) -> Result<ExportableCanal, CanalError> {
+    let (a, b) = options.domain.clone().ok_or_else(|| {
+        CanalError::InvalidArgument("an exported canal surface needs a parameter domain".into())
+    })?;
+    if a >= b {
+        return Err(CanalError::InvalidArgument(format!(
+            "empty parameter domain [{}, {}]",
+            format_scalar(&a),
+            format_scalar(&b)
+        )));
+    }
+    let mut acc = ExportableCanal {
+        pieces: Vec::new(),
+        tried: 0,
+        exporting: 0,
+        regularity: Vec::new(),
+    };
+    pieces_on(spine, split, options, (&a, &b), 0, &mut acc)?;
+    Ok(acc)
+}
+
+fn check_radius(r: &Rational) -> Result<(), CanalError> {
+    if r.is_zero() {
+        return Err(CanalError::InvalidArgument(
+            "the pipe radius must be non-zero".into(),
+        ));
+    }
+    Ok(())
+}
+
+/// The split `(√D, 0)` when `D` is a perfect square (a PH spine: `D = σ²/d²`), else the
+/// split `(P_a, P_b)` of a spine planar in a coordinate plane (`P_j ≡ 0`, `P₄ ≡ 0`), else
+/// `None`.
+fn known_pipe_split(s: &CanalSpine<Rational>) -> Result<Option<[Poly<Rational>; 2]>, CanalError> {
+    let p = s.derivative_numerators()?;
+    if !p[3].is_zero() {
+        return Ok(None);
+    }
+    let d = s.discriminant()?;
+    if let Some(root) = super::poly_sqrt(&d) {
+        return Ok(Some([root, Poly::zero()]));
+    }
+    if let Some(j) = (0..3).find(|&j| p[j].is_zero()) {
+        let o: Vec<usize> = (0..3).filter(|&i| i != j).collect();
+        if let (Some(&i0), Some(&i1)) = (o.first(), o.get(1)) {
+            return Ok(Some([p[i0].clone(), p[i1].clone()]));
+        }
+    }
+    Ok(None)
+}
+
+/// The pipe of radius `r` around a rational spine on `domain`, as exact pieces that export
+/// ([`canal_surface_exportable`]; a PH or planar spine also gets its split `(σ, 0)` or
+/// `(ṁ_a, ṁ_b)`, which needs no factorization).
+///
+/// # Errors
+/// [`CanalError::InvalidArgument`] for `r = 0` or a spine not in E3;
+/// [`CanalError::ZeroTangent`] and [`CanalError::RadiusNotBelowCurvatureRadius`] where the
+/// pipe would not be regular ([`check_pipe_regularity`]); as [`canal_surface_exportable`].
+pub fn pipe_exportable(
+    spine: &BezierCurve<Rational>,
+    radius: &Rational,
+    domain: (&Rational, &Rational),
+    orientation: Orientation,
+) -> Result<ExportableCanal, CanalError> {
+    check_radius(radius)?;
+    let s = CanalSpine::constant_radius(spine, radius)?;
+    // a constant spine is a degenerate family before it is a zero tangent
+    s.derivative_numerators()?;
+    let regular = check_pipe_regularity(&s, domain)?;
+    let split = known_pipe_split(&s)?;
+    let options = CanalOptions {
+        orientation,
+        domain: Some((domain.0.clone(), domain.1.clone())),
+        ..CanalOptions::default()
+    };
+    let mut out = canal_surface_exportable(&s, split.as_ref(), &options)?;
+    out.regularity.push(regular);
+    Ok(out)
+}
+
+/// The pipe of radius `r` around a spatial PH curve on `domain` (split `(σ/d, 0)`, `d` the
+/// content of the hodograph), as exact pieces that export ([`canal_surface_exportable`]):
+/// the same candidates as [`pipe_exportable`] of the curve's Bézier form, so never a larger
+/// export.
+///
+/// # Errors
+/// As [`pipe_exportable`].
+pub fn pipe_around_ph_exportable(
+    curve: &PhCurve<Rational>,
+    radius: &Rational,
+    domain: (&Rational, &Rational),
+    orientation: Orientation,
+) -> Result<ExportableCanal, CanalError> {
+    check_radius(radius)?;
+    let position = curve.position();
+    let s = CanalSpine::polynomial(position.clone(), Poly::constant(radius.clone()));
+    // a constant spine is a degenerate family before it is a zero tangent
+    s.derivative_numerators()?;
+    let regular = check_pipe_regularity(&s, domain)?;
+    let h: [Poly<Rational>; 3] = core::array::from_fn(|i| position[i].derivative());
+    let d = h
+        .iter()
+        .fold(Poly::zero(), |acc: Poly<Rational>, p| acc.gcd(p));
+    let sigma = curve.speed();
+    let g1 = if d.degree().is_some_and(|k| k > 0) {
+        sigma.div_exact(&d)?
+    } else {
+        sigma
+    };
+    let split = [g1, Poly::zero()];
+    // the derivative numerators are divided by the monic gcd; σ/d then squares to D up to
+    // the constant that normalizes the gcd: fall back to the detected split if not
+    let split = if s.discriminant()? == &split[0] * &split[0] {
+        Some(split)
+    } else {
+        known_pipe_split(&s)?
+    };
+    let options = CanalOptions {
+        orientation,
+        domain: Some((domain.0.clone(), domain.1.clone())),
+        ..CanalOptions::default()
+    };
+    let mut out = canal_surface_exportable(&s, split.as_ref(), &options)?;
+    out.regularity.push(regular);
+    Ok(out)
+}
+
+/// A pipe around a chain of spine curves (for example the Bézier pieces of B-spline curves
+/// read from a STEP or IGES file), one [`ExportableCanal`] per piece on `t ∈ [0, 1]`, with
+/// certificates of how consecutive pieces meet.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PipeChain {
+    pieces: Vec<ExportableCanal>,
+    joins: Vec<Certificate>,
+}
+
+impl PipeChain {
+    /// The pipe of each spine piece.
+    pub fn pieces(&self) -> &[ExportableCanal] {
+        &self.pieces
+    }
+
+    /// All patches (every Bernstein weight `> 0`), piece after piece.
+    pub fn patches(&self) -> Vec<BezierPatch<Rational>> {
+        self.pieces
+            .iter()
+            .flat_map(ExportableCanal::patches)
+            .collect()
+    }
+
+    /// The total number of control points.
+    pub fn control_points(&self) -> usize {
+        self.pieces
+            .iter()
+            .map(ExportableCanal::control_points)
+            .sum()
+    }
+}
+
+impl Certified for PipeChain {
+    /// Every piece's certificates (prefixed `spine piece k:` when there are several), and
+    /// per join whether the spine pieces meet (`G⁰`) and with the same tangent direction
+    /// (`G¹`, so the pipes meet along the same characteristic circle).
+    fn certify(&self) -> Vec<Certificate> {
+        let many = self.pieces.len() > 1;
+        let mut out = Vec::new();
+        for (k, p) in self.pieces.iter().enumerate() {
+            out.extend(p.certify().into_iter().map(|mut c| {
+                if many {
+                    c.property = format!("spine piece {k}: {}", c.property);
+                }
+                c
+            }));
+        }
+        out.extend(self.joins.iter().cloned());
+        out
+    }
+}
+
+/// The affine point of a homogeneous control point (`None` for weight 0).
+fn affine(h: &[Rational]) -> Option<[Rational; 3]> {
+    let w = h.first()?;
+    if w.is_zero() {
+        return None;
+    }
+    Some(core::array::from_fn(|k| {
+        h.get(k + 1).cloned().unwrap_or(Rational::ZERO) / w.clone()
+    }))
+}
+
+fn join_certificates(
+    k: usize,
+    a: &BezierCurve<Rational>,
+    b: &BezierCurve<Rational>,
+) -> Vec<Certificate> {
+    let n = a.degree();
+    let ends = (
+        affine(a.control_point(n)),
+        affine(a.control_point(n.saturating_sub(1))),
+        affine(b.control_point(0)),
+        affine(b.control_point(1.min(b.degree()))),
+    );
+    let (Some(pe), Some(pe1), Some(ps), Some(ps1)) = ends else {
+        return vec![Certificate::fails(
+            format!("spine pieces {k} and {} meet (G⁰)", k + 1),
+            "an end control point has weight 0",
+            true,
+        )];
+    };
+    let gap: Vec<Rational> = (0..3).map(|i| ps[i].clone() - pe[i].clone()).collect();
+    let g0 = Certificate::decide(
+        format!(
+            "spine pieces {k} and {} meet: end point of piece {k} = start point of piece {} (G⁰)",
+            k + 1,
+            k + 1
+        ),
+        gap.iter().all(Rational::is_zero),
+        true,
+        || {
+            format!(
+                "gap ({}, {}, {})",
+                format_scalar(&gap[0]),
+                format_scalar(&gap[1]),
+                format_scalar(&gap[2])
+            )
+        },
+    );
+    // end tangent ∝ p_n − p_{n−1}, start tangent ∝ p_1 − p_0 (positive weights)
+    let te: Vec<Rational> = (0..3).map(|i| pe[i].clone() - pe1[i].clone()).collect();
+    let ts: Vec<Rational> = (0..3).map(|i| ps1[i].clone() - ps[i].clone()).collect();
+    let cross = [
+        te[1].clone() * ts[2].clone() - te[2].clone() * ts[1].clone(),
+        te[2].clone() * ts[0].clone() - te[0].clone() * ts[2].clone(),
+        te[0].clone() * ts[1].clone() - te[1].clone() * ts[0].clone(),
+    ];
+    let dot = (0..3).fold(Rational::ZERO, |acc, i| acc + te[i].clone() * ts[i].clone());
+    let g1 = Certificate::decide(
+        format!("spine pieces {k} and {} have the same tangent direction at the joint (G¹: the pipes share the characteristic circle there)", k + 1),
+        cross.iter().all(Rational::is_zero) && dot > Rational::ZERO,
+        true,
+        || format!("end tangent ∝ ({}, {}, {}), start tangent ∝ ({}, {}, {})", format_scalar(&te[0]), format_scalar(&te[1]), format_scalar(&te[2]), format_scalar(&ts[0]), format_scalar(&ts[1]), format_scalar(&ts[2])),
+    );
+    vec![g0, g1]
+}
+
+/// The pipe of radius `r` around a chain of spine curves, each on `t ∈ [0, 1]`
+/// ([`pipe_exportable`] per piece), with the `G⁰`/`G¹` certificates of the joints.
+///
+/// # Errors
+/// [`CanalError::InvalidArgument`] for an empty chain; [`CanalError::SpinePiece`] wrapping
+/// the error of a piece (as [`pipe_exportable`]).
+pub fn pipe_along_chain(
+    spines: &[BezierCurve<Rational>],
+    radius: &Rational,
+    orientation: Orientation,
+) -> Result<PipeChain, CanalError> {
+    if spines.is_empty() {
+        return Err(CanalError::InvalidArgument("no spine curve".into()));
+    }
+    let (zero, one) = (Rational::ZERO, Rational::ONE);
+    let mut pieces = Vec::with_capacity(spines.len());
+    for (k, s) in spines.iter().enumerate() {
+        let p = pipe_exportable(s, radius, (&zero, &one), orientation).map_err(|e| {
+            if spines.len() == 1 {
+                e
+            } else {
+                CanalError::SpinePiece {
+                    index: k,
+                    source: Box::new(e),
+                }
+            }
+        })?;
+        pieces.push(p);
+    }
+    let joins = spines
+        .windows(2)
+        .enumerate()
+        .flat_map(|(k, w)| join_certificates(k, &w[0], &w[1]))
+        .collect();
+    Ok(PipeChain { pieces, joins })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rcagd_algebra::quaternion::Quaternion;
+
+    fn q(n: i64) -> Rational {
+        Rational::from(n)
+    }
+
+    /// The PH quintic of issue 17 (preimage `1`, `1 + i + k`, `j + k`): no single frame
+    /// keeps the Peternell–Pottmann weight free of zeros on `[0, 1]` with the split `(σ, 0)`,
+    /// Krasauskas' pencil does.
+    #[test]
+    fn ph_quintic_pipe_exports_as_small_as_the_general_pipe() {
+        let a = vec![
+            Quaternion::new(q(1), q(0), q(0), q(0)),
+            Quaternion::new(q(1), q(1), q(0), q(1)),
+            Quaternion::new(q(0), q(0), q(1), q(1)),
+        ];
+        let c = PhCurve::new(a, [q(0), q(0), q(0)]).expect("ph");
+        let r = Rational::from_ratio(1, 8);
+        let (zero, one) = (q(0), q(1));
+        let ph = pipe_around_ph_exportable(&c, &r, (&zero, &one), Orientation::Positive)
+            .expect("pipe_ph");
+        assert!(ph.all_hold(), "{:?}", ph.certify());
+        let bez = c.to_bezier().expect("bezier");
+        let gen = pipe_exportable(&bez, &r, (&zero, &one), Orientation::Positive).expect("pipe");
+        assert!(gen.all_hold());
+        assert!(ph.control_points() <= gen.control_points());
+        assert!(ph.control_points() <= 120, "{}", ph.summary());
+        for p in ph.patches() {
+            assert!(p.coords().iter().step_by(4).all(|w| *w > Rational::ZERO));
+        }
+    }
+}
