@@ -7,7 +7,7 @@
 //! its bidegree and control-point count (domain patches), and the time of build and
 //! certification. The summary is printed once before the timings.
 //!
-//! Run: `cargo bench -p rcagd --bench canal_degree -- --warm-up-time 1 --measurement-time 3`.
+//! Run: `cargo bench -p rcagd-benches --features bench --bench canal_degree -- --warm-up-time 1 --measurement-time 3`.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use rcagd::canal::{canal_surface, CanalBuild, CanalOptions, CanalSpine, Method};

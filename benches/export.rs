@@ -16,7 +16,7 @@
 //!   (`rcagd_adaptive`, chord tolerance 10⁻³; `curvo_adaptive_default`, curvo's
 //!   default normal-deviation criterion). Throughput is in triangles.
 //!
-//! Run: `cargo bench -p rcagd-io --bench export -- --warm-up-time 1 --measurement-time 3`
+//! Run: `cargo bench -p rcagd-benches --features bench --bench export -- --warm-up-time 1 --measurement-time 3`
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use curvo::prelude::{AdaptiveTessellationOptions, NurbsSurface3D, Tessellation};

@@ -14,7 +14,7 @@
 //! Every method's results are checked against `eval_patch_grid` (to 1e-9, the exact
 //! points to 1e-12) before timing. Throughput is in grid points.
 //!
-//! Run: `cargo bench -p rcagd-geom --bench grid_eval -- --warm-up-time 1 --measurement-time 3`
+//! Run: `cargo bench -p rcagd-benches --features bench --bench grid_eval -- --warm-up-time 1 --measurement-time 3`
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use curvo::prelude::NurbsSurface3D;

@@ -21,7 +21,7 @@
 //! Reported once before timing: arc length by both methods and their difference, the
 //! double-reflection frame's orthonormality defect.
 //!
-//! Run: `cargo bench -p rcagd --bench ph -- --warm-up-time 1 --measurement-time 3`
+//! Run: `cargo bench -p rcagd-benches --features bench --bench ph -- --warm-up-time 1 --measurement-time 3`
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use rcagd::ph::{HermiteData, PhCurve};

@@ -14,7 +14,7 @@
 //!   `| dist(x, spine) − r |` on a validation grid 4× finer (nearest spine point by Newton)
 //!   is ≤ 1e-6.
 //!
-//! Run: `cargo bench -p rcagd --bench pipe_compare -- --warm-up-time 1 --measurement-time 3`.
+//! Run: `cargo bench -p rcagd-benches --features bench --bench pipe_compare -- --warm-up-time 1 --measurement-time 3`.
 //! The summary (degrees, control-point counts, errors) is printed once before the timings.
 
 use criterion::{criterion_group, criterion_main, Criterion};

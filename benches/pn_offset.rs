@@ -24,7 +24,7 @@
 //! Timed (same run): `exact_offset_q` (offset + Bézier patch over Q), `exact_offset_f64`
 //! (the same in `f64`), `approx_offset_1e-6` (the sampling-and-fitting loop, `f64`).
 //!
-//! Run: `cargo bench -p rcagd --bench pn_offset -- --warm-up-time 1 --measurement-time 3`
+//! Run: `cargo bench -p rcagd-benches --features bench --bench pn_offset -- --warm-up-time 1 --measurement-time 3`
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use rcagd::pn::ruled::{EllipsoidPn, RuledPn};

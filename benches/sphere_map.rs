@@ -12,7 +12,7 @@
 //! The three agree to 1e-12 (checked before timing). δ is quadratic and homogeneous, so
 //! `δ(1, x) = δ(w, w·x)/w²` is the same projective point.
 //!
-//! Run: `cargo bench -p rcagd --bench sphere_map -- --warm-up-time 1 --measurement-time 3`
+//! Run: `cargo bench -p rcagd-benches --features bench --bench sphere_map -- --warm-up-time 1 --measurement-time 3`
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use rcagd::quadric::image::certify_patch_on_quadric;

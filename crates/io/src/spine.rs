@@ -309,13 +309,7 @@ mod tests {
     }
 
     fn object(name: &str, g: Geometry) -> Object {
-        Object {
-            name: name.into(),
-            op: "test".into(),
-            params: serde_json::json!({}),
-            geometry: g,
-            certificates: Vec::new(),
-        }
+        Object::new(name, "test", serde_json::json!({}), g, Vec::new())
     }
 
     #[test]

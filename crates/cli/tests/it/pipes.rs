@@ -332,13 +332,13 @@ fn issue_spine_pieces() -> Vec<rcagd_geom::BezierCurve<rcagd_algebra::Rational>>
 #[test]
 fn pipe_around_a_spine_file() {
     let dir = temp_dir("spine");
-    let spine = Object {
-        name: "spine".into(),
-        op: "test".into(),
-        params: serde_json::json!({}),
-        geometry: Geometry::Curves(issue_spine_pieces()),
-        certificates: Vec::new(),
-    };
+    let spine = Object::new(
+        "spine",
+        "test",
+        serde_json::json!({}),
+        Geometry::Curves(issue_spine_pieces()),
+        Vec::new(),
+    );
     let objs = vec![spine];
     let files = [
         (
