@@ -920,3 +920,32 @@ fn implicit_degrees_recomputed() {
     let env = SphereFamilyEnvelope::new(&secant_elliptic(), sq(1, 0), sq(1, 1)).expect("env");
     assert_eq!(implicit_degree(&env), (18, 1));
 }
+
+#[test]
+fn f64_envelopes_certify_and_agree() {
+    for c in cases() {
+        let env = build(&c);
+        let fenv = env.map_scalar(Scalar::to_f64).expect("f64 envelope");
+        let certs = fenv.certify();
+        assert!(
+            certs.iter().all(|x| !x.exact),
+            "{}: f64 certificates are not proofs",
+            c.section
+        );
+        assert!(Certificate::all_hold(&certs), "{}: {certs:#?}", c.section);
+        let (s, t) = (Rational::from_ratio(3, 5), Rational::from_ratio(4, 7));
+        let x = env.eval(&s, &t).expect("exact");
+        let y = fenv
+            .eval(&Scalar::to_f64(&s), &Scalar::to_f64(&t))
+            .expect("f64");
+        for k in 0..3 {
+            let xe = Scalar::to_f64(&x[k]);
+            assert!(
+                (xe - y[k]).abs() <= 1e-9 * (1.0 + xe.abs()),
+                "{}: {xe} vs {}",
+                c.section,
+                y[k]
+            );
+        }
+    }
+}
