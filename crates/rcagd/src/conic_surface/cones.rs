@@ -366,3 +366,41 @@ impl Certified for CanalViaCones {
         out
     }
 }
+
+/// The envelope of a cone family (Thm 2.1) as positive-weight patches over
+/// `[t₀, t₁] × [u₀, u₁]`, with the family's identities and the envelope's certificates.
+///
+/// # Errors
+/// As [`ConeFamily::new`], [`ConeFamily::envelope`] and [`ConeEnvelope::patch`].
+pub fn cone_envelope_patches(
+    c: Mat4,
+    t: (Q, Q),
+    u: (Q, Q),
+) -> Result<(Vec<BezierPatch<Q>>, Vec<Certificate>), ConicSurfaceError> {
+    let fam = ConeFamily::new(c)?;
+    let env = fam.envelope()?;
+    let (patches, weights) = super::positive_pieces(env.patch(t, u)?)?;
+    let mut certs = fam.identities();
+    certs.extend(env.certify());
+    certs.push(weights);
+    Ok((patches, certs))
+}
+
+/// The canal surface of centres `M/w` and squared radii `R/w²` as the envelope of its
+/// circumscribed cones (Thm 2.3) — positive-weight patches with certificates.
+///
+/// # Errors
+/// As [`CanalViaCones::new`] and [`ConeEnvelope::patch`].
+pub fn canal_via_cones_patches(
+    m: [P; 3],
+    rho: P,
+    w: P,
+    t: (Q, Q),
+    u: (Q, Q),
+) -> Result<(Vec<BezierPatch<Q>>, Vec<Certificate>), ConicSurfaceError> {
+    let canal = CanalViaCones::new(m, rho, w)?;
+    let (patches, weights) = super::positive_pieces(canal.envelope().patch(t, u)?)?;
+    let mut certs = canal.certify();
+    certs.push(weights);
+    Ok((patches, certs))
+}
