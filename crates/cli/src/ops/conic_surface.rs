@@ -6,13 +6,14 @@
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::Geometry;
 use crate::value::ParamKind;
-use rcagd::conic_surface::{conic_surface_patch, FamilyInput};
+use rcagd::conic_surface::cones::{canal_via_cones_patches, cone_envelope_patches};
+use rcagd::conic_surface::{conic_surface_patch, moved_conic, FamilyInput};
 use rcagd_algebra::{Poly, Rational};
 
 type Q = Rational;
 
 /// The ops of this topic.
-pub const OPS: &[OpSpec] = &[CONIC_SURFACE];
+pub const OPS: &[OpSpec] = &[CONIC_SURFACE, CONE_ENVELOPE, CANAL_VIA_CONES];
 
 const CONIC_SURFACE: OpSpec = OpSpec {
     name: "conic_surface",
@@ -115,4 +116,151 @@ fn build_conic_surface(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpErr
         Geometry::Patches(built.patches),
         built.certificates,
     )])
+}
+
+const CONE_ENVELOPE: OpSpec = OpSpec {
+    name: "cone_envelope",
+    summary: "the envelope of a rational family of quadratic cones xᵀ·C(t)·x = 0 (Peternell ch. 2, Thm 2.1): a rational generator from the exact conic-point engine, every point certified on its cone and on ċ(t)",
+    params: &[
+        ParamSpec::required(
+            "cone",
+            ParamKind::Grid,
+            "a fixed quadratic cone C₀ (4×4 symmetric numbers, rank 3, point coordinates (x₀, x, y, z))",
+        ),
+        ParamSpec::required(
+            "transform",
+            ParamKind::Net,
+            "the point transformation x′ = M(t)·x, 4 rows of 4 entries of power coefficients; C(t) = Mᵀ·C₀·M",
+        ),
+        ParamSpec::optional(
+            "scale",
+            ParamKind::Numbers,
+            "power coefficients of k(t): the last diagonal entry of C₀ is multiplied by k(t) (a varying opening angle)",
+        ),
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[0, 1, -1, 1]",
+            "[t0, t1, u0, u1]",
+        ),
+    ],
+    example: r#"[[object]]
+name = "cone_envelope_parabola"
+op = "cone_envelope"
+# cones (x − t)² + (y − t²)² = (1 + t)²·z² with apex on the parabola (t, t², 0)
+cone = [[0, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, -1]]
+transform = [
+  [[1, 0, 0], [0, 0, 0], [0, 0, 0], [0, 0, 0]],
+  [[0, -1, 0], [1, 0, 0], [0, 0, 0], [0, 0, 0]],
+  [[0, 0, -1], [0, 0, 0], [1, 0, 0], [0, 0, 0]],
+  [[0, 0, 0], [0, 0, 0], [0, 0, 0], [1, 0, 0]],
+]
+scale = [1, 2, 1]
+domain = [0, 1, "-1/2", "1/2"]
+"#,
+    build: build_cone_envelope,
+};
+
+fn build_cone_envelope(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpError> {
+    let g = args
+        .opt_grid("cone")?
+        .ok_or_else(|| OpError::param("cone", "missing"))?;
+    if g.len() != 4 || g.iter().any(|r| r.len() != 4) {
+        return Err(OpError::param("cone", "needs 4 rows of 4 numbers"));
+    }
+    let k = Poly::new(args.opt_numbers("scale")?.unwrap_or_else(|| vec![Q::ONE]));
+    let mut c0: [[Q; 4]; 4] = core::array::from_fn(|i| core::array::from_fn(|j| g[i][j].clone()));
+    let last = c0[3][3].clone();
+    c0[3][3] = Q::ZERO;
+    let m = poly_matrix(args, "transform")?;
+    let mut c = moved_conic(&c0, &m);
+    // + k(t)·c₃₃·(row 3 of M)ᵀ(row 3 of M)
+    for i in 0..4 {
+        for j in 0..4 {
+            let add = (&(&m[3][i] * &m[3][j]) * &k).scale(&last);
+            c[i][j] = &c[i][j] + &add;
+        }
+    }
+    let d = domain4(args)?;
+    let (patches, certs) = cone_envelope_patches(
+        c,
+        (d[0].clone(), d[1].clone()),
+        (d[2].clone(), d[3].clone()),
+    )
+    .map_err(|e| {
+        let p = match e {
+            rcagd::conic_surface::ConicSurfaceError::Patch(_) => "domain",
+            _ => "transform",
+        };
+        OpError::param(p, e.to_string())
+    })?;
+    Ok(vec![args.object(Geometry::Patches(patches), certs)])
+}
+
+const CANAL_VIA_CONES: OpSpec = OpSpec {
+    name: "canal_via_cones",
+    summary: "a canal surface |y − m(t)|² = ρ(t) with only the squared radius ρ = r² rational, as the envelope of its circumscribed cones of revolution (Peternell Thm 2.2, 2.3); certified on every sphere and characteristic circle",
+    params: &[
+        ParamSpec::required(
+            "spine",
+            ParamKind::Grid,
+            "m(t): three rows (x, y, z) of power coefficients in t",
+        ),
+        ParamSpec::required(
+            "radius_squared",
+            ParamKind::Numbers,
+            "power coefficients of ρ(t) = r(t)²",
+        ),
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[-1, 1, -1, 1]",
+            "[t0, t1, u0, u1]",
+        ),
+    ],
+    example: r#"[[object]]
+name = "canal_irrational_radius"
+op = "canal_via_cones"
+# spheres centred at (t, 0, 0) with r² = 1 + t²/2: r is irrational, the surface (a
+# hyperboloid of revolution) is rational
+spine = [[0, 1], [0, 0], [0, 0]]
+radius_squared = [1, 0, "1/2"]
+domain = [-1, 1, -1, 1]
+"#,
+    build: build_canal_via_cones,
+};
+
+fn build_canal_via_cones(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpError> {
+    let g = args
+        .opt_grid("spine")?
+        .ok_or_else(|| OpError::param("spine", "missing"))?;
+    if g.len() != 3 {
+        return Err(OpError::param("spine", "needs three rows (x, y, z)"));
+    }
+    let m: [Poly<Q>; 3] = core::array::from_fn(|i| Poly::new(g[i].clone()));
+    let rho = Poly::new(args.opt_numbers("radius_squared")?.unwrap_or_default());
+    let d = domain4(args)?;
+    let (patches, certs) = canal_via_cones_patches(
+        m,
+        rho,
+        Poly::constant(Q::ONE),
+        (d[0].clone(), d[1].clone()),
+        (d[2].clone(), d[3].clone()),
+    )
+    .map_err(|e| {
+        let p = match e {
+            rcagd::conic_surface::ConicSurfaceError::Patch(_) => "domain",
+            _ => "radius_squared",
+        };
+        OpError::param(p, e.to_string())
+    })?;
+    Ok(vec![args.object(Geometry::Patches(patches), certs)])
+}
+
+fn domain4(args: &OpArgs) -> Result<Vec<Q>, OpError> {
+    let d = args.opt_numbers("domain")?.unwrap_or_default();
+    if d.len() != 4 {
+        return Err(OpError::param("domain", "needs [t0, t1, u0, u1]"));
+    }
+    Ok(d)
 }

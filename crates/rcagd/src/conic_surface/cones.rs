@@ -25,7 +25,7 @@
 //! the envelope construction above parametrizes the canal surface.
 
 use super::{ConicFamily, ConicSurfaceError, Mat4, P, Q};
-use crate::pn::poly::patch_of;
+use crate::pn::poly::{cancel_gcd, patch_of};
 use crate::pn::surface::check_nonzero;
 use crate::pn::Domain;
 use crate::Certified;
@@ -118,9 +118,16 @@ impl ConeFamily {
     /// As [`ConicFamily::parametrize`].
     pub fn envelope(&self) -> Result<ConeEnvelope, ConicSurfaceError> {
         let s = self.dual.parametrize()?;
+        let mut point = s.planes().clone();
+        cancel_gcd(&mut point);
+        if point[0].is_zero() {
+            return Err(ConicSurfaceError::Degenerate(
+                "the envelope lies in the plane at infinity (z₀ ≡ 0: e.g. translated copies of one cone share their conic at infinity)".into(),
+            ));
+        }
         Ok(ConeEnvelope {
             c: self.dual.matrix().clone(),
-            point: s.planes().clone(),
+            point,
         })
     }
 }
@@ -175,7 +182,9 @@ impl ConeEnvelope {
 
 impl Certified for ConeEnvelope {
     /// `z·C·zᵀ ≡ 0` (on the cone `c(t)`), `z·Ċ·zᵀ ≡ 0` (on `ċ(t)`: the characteristic
-    /// curve), degree 2 in `u`.
+    /// curve), and `1 ≤ deg_u z ≤ 4`: the characteristic curve `c ∩ ċ` is a quartic with a
+    /// double point at the vertex, traced once by the generators (degree 2 in `u`) —
+    /// degree 4 in general, lower where it splits (a circle: 2).
     fn certify(&self) -> Vec<Certificate> {
         let dc: Mat4 =
             core::array::from_fn(|i| core::array::from_fn(|j| self.c[i][j].derivative()));
@@ -196,8 +205,8 @@ impl Certified for ConeEnvelope {
                 || format!("{} terms", f2.num_terms()),
             ),
             Certificate::decide(
-                "degree 2 in u (each characteristic curve parametrized once)",
-                du == 2,
+                format!("degree {du} in u, 1 ≤ {du} ≤ 4 (each characteristic curve traced by the generators once)"),
+                (1..=4).contains(&du),
                 true,
                 || format!("degree {du} in u"),
             ),
@@ -312,6 +321,13 @@ impl Certified for CanalViaCones {
     /// (multiplied by the powers of `w` that make them polynomial).
     fn certify(&self) -> Vec<Certificate> {
         let mut out = self.envelope.certify();
+        let (_, du) = self.envelope.degree();
+        out.push(Certificate::decide(
+            "degree 2 in u (each characteristic circle parametrized once)",
+            du == 2,
+            true,
+            || format!("degree {du} in u"),
+        ));
         let z = &self.envelope.point;
         let lift = |p: &P| MPoly::from_poly(p, 2, 0);
         let w = lift(&self.w);
@@ -349,4 +365,42 @@ impl Certified for CanalViaCones {
         ));
         out
     }
+}
+
+/// The envelope of a cone family (Thm 2.1) as positive-weight patches over
+/// `[t₀, t₁] × [u₀, u₁]`, with the family's identities and the envelope's certificates.
+///
+/// # Errors
+/// As [`ConeFamily::new`], [`ConeFamily::envelope`] and [`ConeEnvelope::patch`].
+pub fn cone_envelope_patches(
+    c: Mat4,
+    t: (Q, Q),
+    u: (Q, Q),
+) -> Result<(Vec<BezierPatch<Q>>, Vec<Certificate>), ConicSurfaceError> {
+    let fam = ConeFamily::new(c)?;
+    let env = fam.envelope()?;
+    let (patches, weights) = super::positive_pieces(env.patch(t, u)?)?;
+    let mut certs = fam.identities();
+    certs.extend(env.certify());
+    certs.push(weights);
+    Ok((patches, certs))
+}
+
+/// The canal surface of centres `M/w` and squared radii `R/w²` as the envelope of its
+/// circumscribed cones (Thm 2.3) — positive-weight patches with certificates.
+///
+/// # Errors
+/// As [`CanalViaCones::new`] and [`ConeEnvelope::patch`].
+pub fn canal_via_cones_patches(
+    m: [P; 3],
+    rho: P,
+    w: P,
+    t: (Q, Q),
+    u: (Q, Q),
+) -> Result<(Vec<BezierPatch<Q>>, Vec<Certificate>), ConicSurfaceError> {
+    let canal = CanalViaCones::new(m, rho, w)?;
+    let (patches, weights) = super::positive_pieces(canal.envelope().patch(t, u)?)?;
+    let mut certs = canal.certify();
+    certs.push(weights);
+    Ok((patches, certs))
 }
