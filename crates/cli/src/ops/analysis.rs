@@ -12,7 +12,6 @@ use crate::value::ParamKind;
 use rcagd::ph::analysis::{ph_test, PhAnalysis, PhTest};
 use rcagd::ph::{DphClass, DphTest, HelixTest, PhCurve};
 use rcagd_algebra::quadratic::{sqrt_in_extension, QuadExt};
-use rcagd_algebra::quaternion::Quaternion;
 use rcagd_algebra::{Poly, Rational};
 use rcagd_geom::BezierCurve;
 use rcagd_io::quantity::{NamedQuantity, Quantity};
@@ -103,21 +102,7 @@ fn input_curve(args: &OpArgs) -> Result<(BezierCurve<Q>, Option<PhCurve<Q>>), Op
             Ok((BezierCurve::from_coordinate_polys(&polys, n)?, None))
         }
         ["quaternions"] => {
-            let coeffs = args
-                .points("quaternions")?
-                .into_iter()
-                .enumerate()
-                .map(|(k, p)| match <[Q; 4]>::try_from(p) {
-                    Ok([u, v, p, q]) => Ok(Quaternion::new(u, v, p, q)),
-                    Err(p) => Err(OpError::param(
-                        "quaternions",
-                        format!(
-                            "A_{k} must be a quaternion [u, v, p, q], got {} numbers",
-                            p.len()
-                        ),
-                    )),
-                })
-                .collect::<Result<Vec<_>, _>>()?;
+            let coeffs = super::ph::quaternions(args)?;
             let start = <[Q; 3]>::try_from(args.point("start")?)
                 .map_err(|_| OpError::param("start", "r(0) must be [x, y, z]"))?;
             let pc = PhCurve::new(coeffs, start)?;

@@ -270,6 +270,24 @@ fn complexes(args: &OpArgs, param: &'static str) -> Result<Vec<Complex<Q>>, OpEr
         .collect()
 }
 
+/// The quaternion coefficients `A_k = [u, v, p, q]` of the parameter `quaternions`.
+pub(super) fn quaternions(args: &OpArgs) -> Result<Vec<Quaternion<Q>>, OpError> {
+    args.points("quaternions")?
+        .into_iter()
+        .enumerate()
+        .map(|(k, p)| match <[Q; 4]>::try_from(p) {
+            Ok([u, v, p, q]) => Ok(Quaternion::new(u, v, p, q)),
+            Err(p) => Err(OpError::param(
+                "quaternions",
+                format!(
+                    "A_{k} must be a quaternion [u, v, p, q], got {} numbers",
+                    p.len()
+                ),
+            )),
+        })
+        .collect()
+}
+
 fn numbers(args: &OpArgs, param: &'static str) -> Result<Vec<Q>, OpError> {
     args.opt_numbers(param)?.ok_or_else(|| {
         OpError::param(
@@ -570,22 +588,7 @@ fn build_ph_curve(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let hopf = args.get("alpha").is_some() || args.get("beta").is_some();
     let curve = match (quats, hopf) {
         (true, false) => {
-            let coeffs = args
-                .points("quaternions")?
-                .into_iter()
-                .enumerate()
-                .map(|(k, p)| match <[Q; 4]>::try_from(p) {
-                    Ok([u, v, p, q]) => Ok(Quaternion::new(u, v, p, q)),
-                    Err(p) => Err(OpError::param(
-                        "quaternions",
-                        format!(
-                            "A_{k} must be a quaternion [u, v, p, q], got {} numbers",
-                            p.len()
-                        ),
-                    )),
-                })
-                .collect::<Result<Vec<_>, _>>()?;
-            PhCurve::new(coeffs, start)?
+            PhCurve::new(quaternions(args)?, start)?
         }
         (false, true) => {
             if args.get("alpha").is_none() || args.get("beta").is_none() {
