@@ -692,13 +692,11 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
             .map_err(|e| SphereFamilyError::Undefined(e.to_string()))?;
         let w = crate::cyclographic::omega_point(s, t);
         let (p1, p2) = line.points();
-        let scale = crate::lines::scale_of(&w);
         let pick = if crate::lines::proportional(&p1, &w) {
             p2
         } else {
             p1
         };
-        let _ = scale;
         let pp = omega_form(&pick, &pick);
         let wp = omega_form(&w, &pick);
         let two = F::from_i64(2);
