@@ -59,7 +59,7 @@ use crate::linalg::Matrix;
 use crate::quadratic::{split_square, QuadExt};
 use crate::rational::{format_rational, rational_sqrt};
 use crate::roots::square_free_decomposition;
-use crate::{Poly, Rational};
+use crate::{format_poly, Poly, Rational};
 use core::fmt;
 use dashu_int::{IBig, UBig};
 use thiserror::Error;
@@ -152,26 +152,6 @@ pub enum Obstruction {
     },
 }
 
-fn fmt_poly(p: &Poly<Rational>) -> String {
-    let terms: Vec<String> = p
-        .coeffs()
-        .iter()
-        .enumerate()
-        .rev()
-        .filter(|(_, c)| !c.is_zero())
-        .map(|(k, c)| match k {
-            0 => format_rational(c),
-            1 => format!("{}·t", format_rational(c)),
-            _ => format!("{}·t^{k}", format_rational(c)),
-        })
-        .collect();
-    if terms.is_empty() {
-        "0".into()
-    } else {
-        terms.join(" + ")
-    }
-}
-
 impl fmt::Display for Obstruction {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
@@ -188,9 +168,9 @@ impl fmt::Display for Obstruction {
                 write!(
                     f,
                     "at the roots of p(t) = {} (a factor of {}), −{a}/{b} ≡ {} is not a square in Q[t]/(p): no point over the completion of Q(t) at p",
-                    fmt_poly(factor),
+                    format_poly(factor, "t"),
                     divides.name(),
-                    fmt_poly(value)
+                    format_poly(value, "t")
                 )
             }
             Obstruction::AtInfinity { conic, place } => write!(
@@ -247,7 +227,7 @@ pub fn certify_conic_point(
         &acc + &(&(&point[i] * &point[i]) * &coeffs[i])
     });
     Certificate::decide("X²·L + Y²·M + Z²·N ≡ 0", s.is_zero(), true, || {
-        format!("residual {}", fmt_poly(&s))
+        format!("residual {}", format_poly(&s, "t"))
     })
 }
 

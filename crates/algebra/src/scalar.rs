@@ -148,9 +148,63 @@ pub fn format_vector<F: Scalar>(v: &[F]) -> String {
     format!("({})", parts.join(", "))
 }
 
+/// A polynomial as text in the variable `var`, highest degree first, with signs:
+/// `2·t^2 - 1`, `t^3 + (1/2)·t`, `0`. Coefficients by [`format_scalar`]; a coefficient ±1 is
+/// left out, a fraction is parenthesised. The one formatter for polynomials in messages,
+/// certificates and reports.
+pub fn format_poly<F: Scalar>(p: &crate::Poly<F>, var: &str) -> String {
+    let mut out = String::new();
+    for (k, c) in p.coeffs().iter().enumerate().rev() {
+        if c.is_zero() {
+            continue;
+        }
+        let neg = *c < F::zero();
+        let a = if neg { -c.clone() } else { c.clone() };
+        out.push_str(match (out.is_empty(), neg) {
+            (true, true) => "-",
+            (true, false) => "",
+            (false, true) => " - ",
+            (false, false) => " + ",
+        });
+        let coef = format_scalar(&a);
+        if k == 0 {
+            out.push_str(&coef);
+            continue;
+        }
+        let pow = if k == 1 {
+            var.to_string()
+        } else {
+            format!("{var}^{k}")
+        };
+        if a.is_one() {
+            out.push_str(&pow);
+        } else if coef.contains('/') {
+            out.push_str(&format!("({coef})·{pow}"));
+        } else {
+            out.push_str(&format!("{coef}·{pow}"));
+        }
+    }
+    if out.is_empty() {
+        out.push('0');
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn polynomials_print_highest_degree_first_with_signs() {
+        let q = |n: i64, d: i64| Rational::from_parts_signed(n.into(), d.into());
+        let p = crate::Poly::new(vec![q(-1, 1), q(1, 2), q(0, 1), q(1, 1)]);
+        assert_eq!(format_poly(&p, "t"), "t^3 + (1/2)·t - 1");
+        let p = crate::Poly::new(vec![q(0, 1), q(-3, 1)]);
+        assert_eq!(format_poly(&p, "u"), "-3·u");
+        assert_eq!(format_poly(&crate::Poly::<Rational>::zero(), "t"), "0");
+        let p = crate::Poly::new(vec![2.5f64, -1.0]);
+        assert_eq!(format_poly(&p, "t"), "-t + 2.5");
+    }
 
     #[test]
     fn rational_to_f64_is_correctly_rounded() {

@@ -37,7 +37,7 @@ use crate::conic_point::{rational_conic_point, ConicPointError, TernaryOutcome};
 use crate::factor::{factor_gaussian, GaussPoly};
 use crate::quadratic::{split_square, sqrt_in_extension};
 use crate::roots::{isolate_real_roots, square_free_decomposition};
-use crate::scalar::{format_scalar, Scalar};
+use crate::scalar::{format_poly, format_scalar, Scalar};
 use crate::{AlgebraError, Poly, QuadExt, Rational};
 use num_traits::One;
 use thiserror::Error;
@@ -257,7 +257,7 @@ impl GaussianSplit {
             if f.degree() != Some(2) {
                 return Err(SumOfSquaresError::NeedsLargerExtension(format!(
                     "the factor {} of D (odd multiplicity) is irreducible over Q(i) of degree {}: its roots need more than a quadratic extension",
-                    fmt_poly(f),
+                    format_poly(f, "t"),
                     f.degree().unwrap_or(0)
                 )));
             }
@@ -313,25 +313,6 @@ impl GaussianSplit {
             g1,
             g2,
         })
-    }
-}
-
-fn fmt_poly(p: &Poly<Rational>) -> String {
-    let terms: Vec<String> = p
-        .coeffs()
-        .iter()
-        .enumerate()
-        .filter(|(_, c)| !c.is_zero())
-        .map(|(k, c)| match k {
-            0 => format_scalar(c),
-            1 => format!("{}·t", format_scalar(c)),
-            _ => format!("{}·t^{k}", format_scalar(c)),
-        })
-        .collect();
-    if terms.is_empty() {
-        "0".into()
-    } else {
-        terms.join(" + ")
     }
 }
 

@@ -11,7 +11,7 @@ use crate::json::{f64_to_json, rational_to_json};
 use rcagd_algebra::quadratic::QuadExt;
 use rcagd_algebra::rational::format_rational;
 use rcagd_algebra::roots::RootInterval;
-use rcagd_algebra::{bernstein, Poly, Rational, Scalar};
+use rcagd_algebra::{bernstein, format_poly, Poly, Rational, Scalar};
 use serde_json::{json, Value};
 use std::fmt;
 
@@ -157,47 +157,6 @@ fn quad_f64(x: &QuadExt) -> f64 {
     Scalar::to_f64(x.a()) + Scalar::to_f64(x.b()) * Scalar::to_f64(x.d()).sqrt()
 }
 
-fn write_poly(f: &mut fmt::Formatter<'_>, var: &str, p: &Poly<Rational>) -> fmt::Result {
-    let mut first = true;
-    for (k, c) in p.coeffs().iter().enumerate().rev() {
-        if c == &Rational::ZERO {
-            continue;
-        }
-        let neg = c < &Rational::ZERO;
-        let a = if neg { -c.clone() } else { c.clone() };
-        let sign = match (first, neg) {
-            (true, true) => "-",
-            (true, false) => "",
-            (false, true) => " - ",
-            (false, false) => " + ",
-        };
-        let coef = format_rational(&a);
-        let mono = match k {
-            0 => coef,
-            _ => {
-                let pow = if k == 1 {
-                    var.to_string()
-                } else {
-                    format!("{var}^{k}")
-                };
-                if a == Rational::ONE {
-                    pow
-                } else if !coef.contains('/') {
-                    format!("{coef}·{pow}")
-                } else {
-                    format!("({coef})·{pow}")
-                }
-            }
-        };
-        write!(f, "{sign}{mono}")?;
-        first = false;
-    }
-    if first {
-        f.write_str("0")?;
-    }
-    Ok(())
-}
-
 /// Exact text: `true`, `3`, `-1/2`, `3/2 + (1/4)√34`, `2·t^2 - 1`,
 /// `root of t^2 - 2 in [1, 3/2]`, `(1, 0, -1/2)`.
 impl fmt::Display for Quantity {
@@ -208,13 +167,13 @@ impl fmt::Display for Quantity {
             Quantity::Text(s) => f.write_str(s),
             Quantity::Rational(q) => f.write_str(&format_rational(q)),
             Quantity::Quadratic(x) => write!(f, "{x}"),
-            Quantity::Polynomial { variable, poly } => write_poly(f, variable, poly),
+            Quantity::Polynomial { variable, poly } => f.write_str(&format_poly(poly, variable)),
             Quantity::RealRoot { poly, interval } => {
                 if interval.is_exact() {
                     return f.write_str(&format_rational(&interval.lo));
                 }
                 f.write_str("root of ")?;
-                write_poly(f, "x", poly)?;
+                f.write_str(&format_poly(poly, "x"))?;
                 write!(
                     f,
                     " in ({}, {})",

@@ -1,65 +1,9 @@
 //! Integration tests of the `rcagd` binary: gallery, build (TOML, JSON, stdin),
 //! output formats, exit codes, exact numbers, and located errors of every kind.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_rcagd"))
-}
-
-/// A fresh directory under `target/tmp` for one test, removed when the test passes
-/// (kept for inspection when it fails).
-struct TempDir(PathBuf);
-
-impl TempDir {
-    fn join(&self, p: impl AsRef<Path>) -> PathBuf {
-        self.0.join(p)
-    }
-}
-
-impl std::ops::Deref for TempDir {
-    type Target = Path;
-    fn deref(&self) -> &Path {
-        &self.0
-    }
-}
-
-impl AsRef<std::ffi::OsStr> for TempDir {
-    fn as_ref(&self) -> &std::ffi::OsStr {
-        self.0.as_os_str()
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        if !std::thread::panicking() {
-            let _ = std::fs::remove_dir_all(&self.0);
-        }
-    }
-}
-
-fn temp_dir(tag: &str) -> TempDir {
-    let dir =
-        Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("create temp dir");
-    TempDir(dir)
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).expect("write recipe");
-    p
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+use crate::common::{bin, stderr, stdout, temp_dir, write};
+use std::path::Path;
+use std::process::{Output, Stdio};
 
 fn build(path: &Path) -> Output {
     bin().arg("build").arg(path).output().expect("run rcagd")
@@ -68,7 +12,7 @@ fn build(path: &Path) -> Output {
 /// Builds `text` written to a file called `name`; expects exit code 2 and an error at
 /// `line:col` whose first line contains `needle`. Returns stderr.
 fn expect_error(name: &str, text: &str, line: usize, col: usize, needle: &str) -> String {
-    let dir = temp_dir(&format!("err-{}", name.replace('.', "-")));
+    let dir = temp_dir(&format!("cli-err-{}", name.replace('.', "-")));
     let p = write(&dir, name, text);
     let o = build(&p);
     let err = stderr(&o);
@@ -99,7 +43,7 @@ to = [0, 1]
 
 #[test]
 fn gallery_writes_everything_and_all_certificates_hold() {
-    let dir = temp_dir("gallery");
+    let dir = temp_dir("cli-gallery");
     let o = bin()
         .args(["gallery", "--out"])
         .arg(&dir)
@@ -206,7 +150,7 @@ fn gallery_writes_everything_and_all_certificates_hold() {
 
 #[test]
 fn gallery_quiet_prints_nothing() {
-    let dir = temp_dir("gallery-quiet");
+    let dir = temp_dir("cli-gallery-quiet");
     let o = bin()
         .args(["gallery", "--quiet", "--out"])
         .arg(&dir)
@@ -220,7 +164,7 @@ fn gallery_quiet_prints_nothing() {
 
 #[test]
 fn build_toml_prints_exact_json() {
-    let dir = temp_dir("build-toml");
+    let dir = temp_dir("cli-build-toml");
     let p = write(&dir, "r.toml", QUARTER_TOML);
     let o = build(&p);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
@@ -244,7 +188,7 @@ fn build_toml_prints_exact_json() {
 
 #[test]
 fn build_json_recipe_and_sniffing() {
-    let dir = temp_dir("build-json");
+    let dir = temp_dir("cli-build-json");
     let text = r#"{"object": [
   {"name": "c", "op": "circle", "center": [0.5, "-1"], "radius": "3/2"},
   {"name": "b", "op": "bezier_curve", "points": [[0, 0], [0.1, 1], [1, 0]]}
@@ -268,7 +212,7 @@ fn build_json_recipe_and_sniffing() {
 
 #[test]
 fn decimals_are_exact() {
-    let dir = temp_dir("exact");
+    let dir = temp_dir("cli-exact");
     let p = write(
         &dir,
         "r.toml",
@@ -294,7 +238,7 @@ fn decimals_are_exact() {
 
 #[test]
 fn build_writes_formats_to_out_dir() {
-    let dir = temp_dir("build-out");
+    let dir = temp_dir("cli-build-out");
     let p = write(&dir, "r.toml", QUARTER_TOML);
     let out = dir.join("out");
     let o = bin()
@@ -447,7 +391,7 @@ fn build_from_stdin() {
 
 #[test]
 fn failing_certificate_exits_1() {
-    let dir = temp_dir("cert-fails");
+    let dir = temp_dir("cli-cert-fails");
     let p = write(
         &dir,
         "r.toml",
@@ -483,7 +427,7 @@ fn usage_errors_exit_2() {
         "{}",
         stderr(&o)
     );
-    let dir = temp_dir("usage");
+    let dir = temp_dir("cli-usage");
     let p = write(&dir, "r.toml", QUARTER_TOML);
     let o = bin()
         .arg("build")
@@ -738,7 +682,7 @@ fn duplicate_names() {
 
 #[test]
 fn all_errors_are_reported_at_once() {
-    let dir = temp_dir("many");
+    let dir = temp_dir("cli-many");
     let p = write(
         &dir,
         "r.toml",

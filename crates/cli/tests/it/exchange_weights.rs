@@ -7,8 +7,7 @@
 //! IGES, sidecar) carry balanced weights (`rcagd_io::balance`): every surface of the
 //! sidecar must stay below that threshold, by a wide margin.
 
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use crate::common::{bin, temp_dir};
 
 const RECIPE: &str = r#"
 [[object]]
@@ -28,14 +27,6 @@ rho = 4
 r0 = "3/2"
 s = "1/7"
 "#;
-
-fn temp_dir() -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join(format!("exchange-weights-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("create temp dir");
-    dir
-}
 
 /// `p/q` or `p` as f64.
 fn num(v: &serde_json::Value) -> f64 {
@@ -66,10 +57,10 @@ fn spread(w: &[f64]) -> (f64, f64) {
 
 #[test]
 fn dupin_cyclide_weights_are_balanced_for_exchange() {
-    let dir = temp_dir();
+    let dir = temp_dir("exchange-weights");
     let recipe = dir.join("dupin.toml");
     std::fs::write(&recipe, RECIPE).expect("write recipe");
-    let out = Command::new(env!("CARGO_BIN_EXE_rcagd"))
+    let out = bin()
         .args(["build", "--format", "json,exact,iges", "--out"])
         .arg(&dir)
         .arg(&recipe)
@@ -110,5 +101,4 @@ fn dupin_cyclide_weights_are_balanced_for_exchange() {
     check("wild_weights", 1);
     check("dupin_cyclide", 16);
     assert!(dir.join("dupin_cyclide.igs").exists());
-    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -2,11 +2,10 @@
 //! deletion, insertion, byte flips), random bytes and deep nesting, through the
 //! library (many cases) and through the binary (a few).
 
+use crate::common::{bin, temp_dir};
 use proptest::prelude::*;
 use rcagd_cli::build::build_recipe;
 use rcagd_cli::recipe::{Format, Recipe};
-use std::path::Path;
-use std::process::Command;
 
 const VALID_TOML: &str = r#"[[object]]
 name = "arc"
@@ -172,10 +171,7 @@ fn deep_nesting_is_bounded() {
 /// no panic message.
 #[test]
 fn binary_survives_broken_inputs() {
-    let dir =
-        Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-fuzz-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
+    let dir = temp_dir("cli-fuzz");
     let mut cases: Vec<(String, Vec<u8>)> = vec![
         ("empty.toml".into(), Vec::new()),
         ("bytes.toml".into(), vec![0xff, 0xfe, 0x00, 0x5b, 0x5b]),
@@ -199,11 +195,7 @@ fn binary_survives_broken_inputs() {
     for (name, bytes) in cases {
         let p = dir.join(&name);
         std::fs::write(&p, &bytes).expect("write");
-        let o = Command::new(env!("CARGO_BIN_EXE_rcagd"))
-            .arg("build")
-            .arg(&p)
-            .output()
-            .expect("run");
+        let o = bin().arg("build").arg(&p).output().expect("run");
         let err = String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(2), "{name}: {err}");
         assert!(!err.contains("panicked"), "{name}: {err}");
@@ -212,5 +204,4 @@ fn binary_survives_broken_inputs() {
             "{name}: {err}"
         );
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -2,6 +2,7 @@
 //! see docs/ARCHITECTURE.md, "Tests").
 
 mod cli;
+mod common;
 mod docs;
 mod exchange_weights;
 mod fuzz;

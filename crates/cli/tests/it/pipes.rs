@@ -6,12 +6,12 @@
 //! `RCAGD_PIPE_SAMPLES=DIR` every case also writes its STEP, IGES and exact sidecar to
 //! `DIR` for `scripts/occ_check.sh DIR --strict-warnings`.
 
+use crate::common::{bin, temp_dir};
 use proptest::prelude::*;
 use rcagd_cli::build::build_recipe;
 use rcagd_cli::model::{Geometry, Object};
 use rcagd_cli::recipe::Recipe;
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::path::Path;
 
 /// The spine of issue 17: the PH quintic with preimage coefficients `1`, `1 + i + k`,
 /// `j + k`, radius 1/8.
@@ -49,14 +49,6 @@ fn size(o: &Object) -> (usize, usize, Vec<(usize, usize)>) {
     }
 }
 
-fn temp_dir(tag: &str) -> PathBuf {
-    let dir =
-        Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("pipes-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("create temp dir");
-    dir
-}
-
 /// Issue 17, item 1: `pipe_ph` used to build 32 patches of bidegree (13, 2) with a weight
 /// 0 (certificate failure, STEP export exit 2); `pipe` on the same spine 4 patches (9, 2).
 /// Both ops now keep the smallest exact construction that exports.
@@ -88,10 +80,10 @@ fn pipe_ph_exports_no_worse_than_pipe_on_the_issue_spine() {
 /// "control point 1 has weight 0").
 #[test]
 fn pipe_ph_issue_recipe_exports_through_the_binary() {
-    let dir = temp_dir("bin");
+    let dir = temp_dir("pipes-bin");
     let recipe = dir.join("pipe.toml");
     std::fs::write(&recipe, PIPE_PH).expect("write recipe");
-    let out = Command::new(env!("CARGO_BIN_EXE_rcagd"))
+    let out = bin()
         .args(["build", "--format", "step,iges", "--out"])
         .arg(&dir)
         .arg(&recipe)
@@ -331,7 +323,7 @@ fn issue_spine_pieces() -> Vec<rcagd_geom::BezierCurve<rcagd_algebra::Rational>>
 /// pieces, chained), the pipe built per piece; a file without curves is a named error.
 #[test]
 fn pipe_around_a_spine_file() {
-    let dir = temp_dir("spine");
+    let dir = temp_dir("pipes-spine");
     let spine = Object::new(
         "spine",
         "test",

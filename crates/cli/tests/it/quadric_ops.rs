@@ -2,35 +2,12 @@
 //! op's error paths give a located error (`file:line:col`) naming the violated
 //! precondition, never a panic; a recipe with a point off the sphere fails cleanly.
 
+use crate::common::{bin, temp_dir, write};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_rcagd"))
-}
-
-/// A fresh directory under `target/tmp`, removed when the test passes.
-struct TempDir(PathBuf);
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        if !std::thread::panicking() {
-            let _ = std::fs::remove_dir_all(&self.0);
-        }
-    }
-}
-
-fn temp_dir(tag: &str) -> TempDir {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join(format!("quadric-ops-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("create temp dir");
-    TempDir(dir)
-}
+use std::process::Output;
 
 fn run(dir: &Path, name: &str, text: &str) -> (PathBuf, Output) {
-    let p = dir.join(name);
-    std::fs::write(&p, text).expect("write recipe");
+    let p = write(dir, name, text);
     let o = bin().arg("build").arg(&p).output().expect("run rcagd");
     (p, o)
 }
@@ -51,8 +28,8 @@ fn position(text: &str, key: Option<&str>) -> (usize, usize) {
 /// Builds `text`; expects exit code 2, the error at the value of `key` (or the op key)
 /// and `needle` in the message. Returns stderr.
 fn expect_error(tag: &str, text: &str, key: Option<&str>, needle: &str) -> String {
-    let dir = temp_dir(tag);
-    let (p, o) = run(&dir.0, &format!("{tag}.toml"), text);
+    let dir = temp_dir(&format!("quadric-ops-{tag}"));
+    let (p, o) = run(&dir, &format!("{tag}.toml"), text);
     let err = String::from_utf8_lossy(&o.stderr).into_owned();
     assert_eq!(o.status.code(), Some(2), "{tag}: {err}");
     assert!(
@@ -404,10 +381,10 @@ fn sphere_cover_errors_are_located() {
 
 #[test]
 fn a_recipe_with_a_point_off_the_sphere_fails_cleanly_and_writes_nothing() {
-    let dir = temp_dir("clean");
-    let out = dir.0.join("out");
+    let dir = temp_dir("quadric-ops-clean");
+    let out = dir.join("out");
     let text = "[[object]]\nname = \"good\"\nop = \"sphere_cover\"\n\n[[object]]\nname = \"bad\"\nop = \"quadric_interpolate\"\npoints = [[1, 0, 0], [0, 1, 0], [\"1/2\", \"1/2\", \"1/2\"]]\n";
-    let p = dir.0.join("clean.toml");
+    let p = dir.join("clean.toml");
     std::fs::write(&p, text).expect("write");
     let o = bin()
         .arg("build")
@@ -436,8 +413,8 @@ fn a_recipe_with_a_point_off_the_sphere_fails_cleanly_and_writes_nothing() {
 #[test]
 fn every_example_builds_with_all_certificates() {
     for op in rcagd_cli::ops::quadric::OPS {
-        let dir = temp_dir(&format!("ex-{}", op.name));
-        let (_, o) = run(&dir.0, "ex.toml", op.example);
+        let dir = temp_dir(&format!("quadric-ops-ex-{}", op.name));
+        let (_, o) = run(&dir, "ex.toml", op.example);
         assert_eq!(
             o.status.code(),
             Some(0),

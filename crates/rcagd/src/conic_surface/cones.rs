@@ -24,10 +24,8 @@
 //! `a`). A generic generator of `D(t)` meets `Ḋ(t)` again on the characteristic circle, so
 //! the envelope construction above parametrizes the canal surface.
 
-use super::{ConicFamily, ConicSurfaceError, Mat4, P, Q};
-use crate::pn::poly::{cancel_gcd, patch_of};
-use crate::pn::surface::check_nonzero;
-use crate::pn::Domain;
+use super::{point_bidegree, point_patch, ConicFamily, ConicSurfaceError, Mat4, P, Q};
+use crate::pn::poly::cancel_gcd;
 use crate::Certified;
 use rcagd_algebra::mpoly::MPoly;
 use rcagd_algebra::{Certificate, Poly};
@@ -148,19 +146,7 @@ impl ConeEnvelope {
 
     /// The bidegree `(deg_t, deg_u)`.
     pub fn degree(&self) -> (u32, u32) {
-        let dt = self
-            .point
-            .iter()
-            .filter_map(|p| p.degree_in(0))
-            .max()
-            .unwrap_or(0);
-        let du = self
-            .point
-            .iter()
-            .filter_map(|p| p.degree_in(1))
-            .max()
-            .unwrap_or(0);
-        (dt, du)
+        point_bidegree(&self.point)
     }
 
     /// The rational Bézier patch on `[t₀, t₁] × [u₀, u₁]`.
@@ -168,15 +154,7 @@ impl ConeEnvelope {
     /// # Errors
     /// [`ConicSurfaceError::Patch`] for an empty rectangle or a vanishing weight `z₀`.
     pub fn patch(&self, t: (Q, Q), u: (Q, Q)) -> Result<BezierPatch<Q>, ConicSurfaceError> {
-        let d =
-            Domain::new(t.0, t.1, u.0, u.1).map_err(|e| ConicSurfaceError::Patch(e.to_string()))?;
-        check_nonzero(
-            &self.point[0],
-            &d,
-            "the weight z₀(t, u) vanishes (a point at infinity)",
-        )
-        .map_err(|e| ConicSurfaceError::Patch(e.to_string()))?;
-        patch_of(&self.point, &d).map_err(|e| ConicSurfaceError::Patch(e.to_string()))
+        point_patch(&self.point, t, u, "z₀")
     }
 }
 

@@ -811,19 +811,7 @@ impl ConicSurface {
 
     /// The bidegree `(deg_t, deg_u)` of the point form.
     pub fn degree(&self) -> (u32, u32) {
-        let dt = self
-            .point
-            .iter()
-            .filter_map(|p| p.degree_in(0))
-            .max()
-            .unwrap_or(0);
-        let du = self
-            .point
-            .iter()
-            .filter_map(|p| p.degree_in(1))
-            .max()
-            .unwrap_or(0);
-        (dt, du)
+        point_bidegree(&self.point)
     }
 
     /// The rational Bézier patch of the point form on `[t₀, t₁] × [u₀, u₁]` (homogeneous
@@ -833,16 +821,39 @@ impl ConicSurface {
     /// [`ConicSurfaceError::Patch`] for an empty rectangle or where the weight `x₀`
     /// vanishes on it (a point at infinity; the parameter point is named).
     pub fn patch(&self, t: (Q, Q), u: (Q, Q)) -> Result<BezierPatch<Q>, ConicSurfaceError> {
-        let d =
-            Domain::new(t.0, t.1, u.0, u.1).map_err(|e| ConicSurfaceError::Patch(e.to_string()))?;
-        check_nonzero(
-            &self.point[0],
-            &d,
-            "the weight x₀(t, u) vanishes (a point at infinity)",
-        )
-        .map_err(|e| ConicSurfaceError::Patch(e.to_string()))?;
-        patch_of(&self.point, &d).map_err(|e| ConicSurfaceError::Patch(e.to_string()))
+        point_patch(&self.point, t, u, "x₀")
     }
+}
+
+/// `(deg_t, deg_u)` of a homogeneous point map `(x₀, x₁, x₂, x₃)(t, u)`.
+pub(crate) fn point_bidegree(point: &[MPoly<Q>; 4]) -> (u32, u32) {
+    let deg = |k| {
+        point
+            .iter()
+            .filter_map(|p| p.degree_in(k))
+            .max()
+            .unwrap_or(0)
+    };
+    (deg(0), deg(1))
+}
+
+/// The rational Bézier patch of a homogeneous point map on `[t₀, t₁] × [u₀, u₁]`; its
+/// weight (the coordinate called `weight` in the message) must not vanish there.
+pub(crate) fn point_patch(
+    point: &[MPoly<Q>; 4],
+    t: (Q, Q),
+    u: (Q, Q),
+    weight: &str,
+) -> Result<BezierPatch<Q>, ConicSurfaceError> {
+    let patch_error = |e: &dyn std::fmt::Display| ConicSurfaceError::Patch(e.to_string());
+    let d = Domain::new(t.0, t.1, u.0, u.1).map_err(|e| patch_error(&e))?;
+    check_nonzero(
+        &point[0],
+        &d,
+        &format!("the weight {weight}(t, u) vanishes (a point at infinity)"),
+    )
+    .map_err(|e| patch_error(&e))?;
+    patch_of(point, &d).map_err(|e| patch_error(&e))
 }
 
 fn form4(m: &Mat4, a: &[MPoly<Q>; 4], b: &[MPoly<Q>; 4]) -> MPoly<Q> {

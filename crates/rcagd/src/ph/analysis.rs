@@ -79,11 +79,13 @@ impl<F: Scalar> PhTest<F> {
             PhTest::NotPh { speed_squared } => {
                 let prop = format!(
                     "|r'|² = {} is not the square of a polynomial (not PH)",
-                    fmt_poly(speed_squared)
+                    format_poly(speed_squared, "t")
                 );
                 vec![match poly_sqrt(speed_squared) {
                     None => Certificate::holds(prop, F::EXACT),
-                    Some(s) => Certificate::fails(prop, format!("σ = {}", fmt_poly(&s)), F::EXACT),
+                    Some(s) => {
+                        Certificate::fails(prop, format!("σ = {}", format_poly(&s, "t")), F::EXACT)
+                    }
                 }]
             }
         }

@@ -117,7 +117,7 @@ impl<F: Scalar> PhPolyCurve<F> {
             DphTest::Dph(d) => Ok(d),
             DphTest::NotDph { rho } => Err(PhError::NotDph(format!(
                 "ρ = |r'×r''|²/σ² = {} is not c·(polynomial)²",
-                fmt_poly(&rho)
+                format_poly(&rho, "t")
             ))),
             DphTest::Line => Err(PhError::NotDph(
                 "ρ ≡ 0: a straight line has no Frenet frame".into(),

@@ -98,7 +98,7 @@ impl<F: Scalar> PhPolyCurve<F> {
         if !rem.is_zero() {
             return Err(PhError::NotPh(format!(
                 "|r'×r''|² is not divisible by σ²: remainder {}",
-                fmt_poly(&rem)
+                format_poly(&rem, "t")
             )));
         }
         Ok(q)

@@ -321,7 +321,7 @@ impl<F: Scalar> PhPolyCurve<F> {
         let sigma = poly_sqrt(&s2).ok_or_else(|| {
             PhError::NotPh(format!(
                 "|r'|² = {} is not the square of a polynomial",
-                fmt_poly(&s2)
+                format_poly(&s2, "t")
             ))
         })?;
         Ok(PhPolyCurve { r, sigma })

@@ -25,8 +25,8 @@ use super::frame::RationalFunction;
 use super::PhError;
 use rcagd_algebra::bernstein;
 use rcagd_algebra::complex::{norm_sq_poly, re_im_polys};
-use rcagd_algebra::rational::{format_rational, rational_sqrt};
-use rcagd_algebra::{Certificate, Complex, Poly, Scalar};
+use rcagd_algebra::rational::rational_sqrt;
+use rcagd_algebra::{format_scalar as fmt_scalar, Certificate, Complex, Poly, Scalar};
 use rcagd_geom::BezierCurve;
 
 /// A complex scalar.
@@ -443,17 +443,6 @@ pub(crate) fn integrate<F: Scalar>(p: &Poly<F>) -> Poly<F> {
 
 pub(crate) fn poly_f64<F: Scalar>(p: &Poly<F>) -> Poly<f64> {
     p.map(|c| c.to_f64())
-}
-
-pub(crate) fn fmt_scalar<F: Scalar>(x: &F) -> String {
-    if F::EXACT {
-        match x.to_rational() {
-            Some(q) => format_rational(&q),
-            None => format!("{x:?}"),
-        }
-    } else {
-        format!("{}", x.to_f64())
-    }
 }
 
 fn poly_scale<F: Scalar>(p: &Poly<F>) -> f64 {

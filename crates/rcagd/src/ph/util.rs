@@ -9,7 +9,8 @@
 use num_traits::{One, Zero};
 use rcagd_algebra::complex::Complex;
 use rcagd_algebra::quaternion::Quaternion;
-use rcagd_algebra::rational::{format_rational, rational_sqrt};
+use rcagd_algebra::rational::rational_sqrt;
+pub(crate) use rcagd_algebra::{format_poly, format_scalar as fmt_scalar};
 use rcagd_algebra::{Certificate, Poly, Rational, Scalar};
 
 /// A 3-vector of scalars.
@@ -44,37 +45,6 @@ pub(crate) fn sqrt_scalar<F: Scalar>(x: &F) -> Option<F> {
         let r = x.to_f64().sqrt();
         Rational::try_from(r).ok().map(|q| F::from_rational(&q))
     }
-}
-
-/// Formats a scalar: `"p/q"` for exact scalars, a decimal for `f64`.
-pub(crate) fn fmt_scalar<F: Scalar>(x: &F) -> String {
-    if F::EXACT {
-        match x.to_rational() {
-            Some(q) => format_rational(&q),
-            None => format!("{:?}", x),
-        }
-    } else {
-        format!("{}", x.to_f64())
-    }
-}
-
-/// Formats a polynomial `c₀ + c₁t + …` (low degree first).
-pub(crate) fn fmt_poly<F: Scalar>(p: &Poly<F>) -> String {
-    if p.is_zero() {
-        return "0".into();
-    }
-    let terms: Vec<String> = p
-        .coeffs()
-        .iter()
-        .enumerate()
-        .filter(|(_, c)| !c.is_zero())
-        .map(|(k, c)| match k {
-            0 => fmt_scalar(c),
-            1 => format!("({})t", fmt_scalar(c)),
-            _ => format!("({})t^{k}", fmt_scalar(c)),
-        })
-        .collect();
-    terms.join(" + ")
 }
 
 /// Formats a 3-vector.
@@ -121,7 +91,7 @@ pub(crate) fn identity_cert<F: Scalar>(
     let diff = lhs - rhs;
     let scale = poly_scale(lhs).max(poly_scale(rhs));
     Certificate::decide(property, poly_negligible(&diff, scale), F::EXACT, || {
-        format!("residual polynomial {}", fmt_poly(&diff))
+        format!("residual polynomial {}", format_poly(&diff, "t"))
     })
 }
 

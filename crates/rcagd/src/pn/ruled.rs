@@ -32,7 +32,7 @@ use crate::error::format_scalar;
 use crate::laguerre::Cycle;
 use crate::Certified;
 use rcagd_algebra::mpoly::MPoly;
-use rcagd_algebra::{Certificate, Scalar};
+use rcagd_algebra::{format_poly, Certificate, Scalar};
 
 /// `true` if the polynomial involves only the variable `x₀` (`t`).
 fn only_t<F: Scalar>(p: &MPoly<F>) -> bool {
@@ -200,21 +200,7 @@ fn two_squares_or_reason<F: Scalar>(p: &MPoly<F>) -> Result<[RatFn<F>; 2], Strin
         )
         .map_err(|e| e.to_string())
     };
-    let shown = {
-        let terms: Vec<String> = d
-            .coeffs()
-            .iter()
-            .enumerate()
-            .rev()
-            .filter(|(_, c)| !c.is_zero())
-            .map(|(k, c)| match k {
-                0 => format_scalar(c),
-                1 => format!("{}·t", format_scalar(c)),
-                _ => format!("{}·t^{k}", format_scalar(c)),
-            })
-            .collect();
-        terms.join(" + ")
-    };
+    let shown = format_poly(&d, "t");
     match sum_of_two_squares(&d) {
         Ok(SumOfSquares::Rational { g1, g2 }) => {
             Ok([RatFn::poly(back(&g1)?), RatFn::poly(back(&g2)?)])
