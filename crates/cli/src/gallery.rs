@@ -80,11 +80,46 @@ pub struct GalleryBuild {
     pub errors: Vec<String>,
 }
 
-/// Parses and builds every embedded recipe, calling `tick(name)` after each object.
-pub fn build_all(total_hint: impl FnOnce(usize), mut tick: impl FnMut(&str)) -> GalleryBuild {
+/// The short name of a gallery recipe: the file stem (`examples/recipes/pn.toml` → `pn`),
+/// as `rcagd gallery --only` takes it.
+pub fn recipe_name(file: &str) -> &str {
+    let base = file.rsplit('/').next().unwrap_or(file);
+    base.split_once('.').map_or(base, |(stem, _)| stem)
+}
+
+/// The embedded recipes selected by `only` (short names, see [`recipe_name`]; all of
+/// them when `only` is empty).
+///
+/// # Errors
+/// The message names an unknown recipe and lists the known ones.
+pub fn select(only: &[String]) -> Result<Vec<(&'static str, &'static str)>, String> {
+    if let Some(bad) = only
+        .iter()
+        .find(|n| !RECIPES.iter().any(|(f, _)| recipe_name(f) == n.as_str()))
+    {
+        let known: Vec<&str> = RECIPES.iter().map(|(f, _)| recipe_name(f)).collect();
+        return Err(format!(
+            "--only: the gallery has no recipe called {bad:?}; it has {}",
+            known.join(", ")
+        ));
+    }
+    Ok(RECIPES
+        .iter()
+        .filter(|(f, _)| only.is_empty() || only.iter().any(|n| n == recipe_name(f)))
+        .copied()
+        .collect())
+}
+
+/// Parses and builds the given embedded recipes (see [`select`]), calling `tick(name)`
+/// after each object.
+pub fn build_all(
+    recipes_in: &[(&str, &str)],
+    total_hint: impl FnOnce(usize),
+    mut tick: impl FnMut(&str),
+) -> GalleryBuild {
     let mut errors = Vec::new();
     let mut recipes = Vec::new();
-    for (file, text) in RECIPES {
+    for (file, text) in recipes_in {
         match Recipe::parse(file, text, Some(Format::Toml)) {
             Ok(r) => recipes.push(r),
             Err(ds) => errors.extend(ds.iter().map(ToString::to_string)),
@@ -240,10 +275,19 @@ fn write_combined(
     Ok(links)
 }
 
-/// Runs `rcagd gallery`; returns the exit code.
-pub fn run(out: &Path, quiet: bool) -> u8 {
+/// Runs `rcagd gallery` on the recipes named in `only` (all when empty); returns the
+/// exit code.
+pub fn run(out: &Path, quiet: bool, only: &[String]) -> u8 {
+    let recipes = match select(only) {
+        Ok(r) => r,
+        Err(e) => {
+            errln!("error: {e}");
+            return EXIT_INPUT;
+        }
+    };
     let pb = progress_bar(quiet);
     let built = build_all(
+        &recipes,
         // Building and writing: two steps per object.
         |n| pb.set_length(2 * n as u64),
         |name| {

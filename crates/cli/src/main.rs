@@ -1,6 +1,6 @@
 //! `rcagd`: exact rational curves and surfaces with certificates.
 //!
-//! * `rcagd gallery [--out DIR] [--quiet]` — build every embedded default recipe,
+//! * `rcagd gallery [--out DIR] [--quiet] [--only RECIPE,…]` — build every embedded default recipe,
 //!   write JSON/STEP/IGES/OBJ/SVG/PNG and the exact sidecar per object, `report.json` and `index.html`;
 //! * `rcagd build RECIPE [--out DIR] [--format json|step|iges|exact|obj|stl|ply|gltf|svg|png]…`
 //!   — build a user's recipe;
@@ -41,6 +41,10 @@ enum Command {
         /// No progress bar and no table; only failures are printed.
         #[arg(long, short)]
         quiet: bool,
+        /// Build only these recipes (short names such as `pn` or `canal`: the file
+        /// names of examples/recipes without extension; repeatable or comma-separated).
+        #[arg(long, value_delimiter = ',', value_name = "RECIPE")]
+        only: Vec<String>,
     },
     /// Build the objects of a recipe (TOML or JSON).
     ///
@@ -80,7 +84,7 @@ fn main() -> ExitCode {
         }
     };
     let code = match cli.command {
-        Command::Gallery { out, quiet } => gallery::run(&out, quiet),
+        Command::Gallery { out, quiet, only } => gallery::run(&out, quiet, &only),
         Command::Build {
             recipe,
             out,

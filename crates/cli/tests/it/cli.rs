@@ -148,18 +148,58 @@ fn gallery_writes_everything_and_all_certificates_hold() {
     assert!(html.contains("href=\"gallery-all.step\""));
 }
 
+/// `--quiet` prints nothing; `--only` builds just the named recipes (one small recipe
+/// here: the whole gallery is built once, by the test above).
 #[test]
 fn gallery_quiet_prints_nothing() {
     let dir = temp_dir("cli-gallery-quiet");
     let o = bin()
-        .args(["gallery", "--quiet", "--out"])
+        .args(["gallery", "--quiet", "--only", "analysis", "--out"])
         .arg(&dir)
         .output()
         .expect("run");
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(stdout(&o).is_empty());
     assert!(stderr(&o).is_empty());
-    assert!(dir.join("report.json").exists());
+    let report: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.join("report.json")).expect("report.json"),
+    )
+    .expect("report is JSON");
+    let (_, text) = rcagd_cli::gallery::RECIPES
+        .iter()
+        .find(|(f, _)| rcagd_cli::gallery::recipe_name(f) == "analysis")
+        .expect("the analysis recipe");
+    let recipe = rcagd_cli::recipe::Recipe::parse("analysis.toml", text, None).expect("parses");
+    let names: Vec<&str> = report["objects"]
+        .as_array()
+        .expect("objects")
+        .iter()
+        .map(|o| o["name"].as_str().expect("name"))
+        .collect();
+    assert_eq!(
+        names,
+        recipe
+            .objects
+            .iter()
+            .map(|o| o.name.as_str())
+            .collect::<Vec<_>>()
+    );
+}
+
+/// An unknown `--only` name is a usage error that lists the recipes; nothing is written.
+#[test]
+fn gallery_only_rejects_unknown_recipes() {
+    let dir = temp_dir("cli-gallery-only");
+    let out = dir.join("out");
+    let o = bin()
+        .args(["gallery", "--only", "pn,nosuch", "--out"])
+        .arg(&out)
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert!(err.contains("\"nosuch\"") && err.contains("canal"), "{err}");
+    assert!(!out.exists());
 }
 
 #[test]

@@ -105,13 +105,21 @@ fn every_recipe_in_the_docs_builds() {
         blocks.len() >= ops::all().count(),
         "expected an example per op"
     );
+    // The op sections show each op's example, which `every_op_example_builds` builds
+    // (and `every_op_is_documented` checks is the same text): build the others.
+    let examples: Vec<&str> = ops::all().map(|op| op.example.trim()).collect();
     for (line, text) in blocks {
-        assert_builds_and_holds(&format!("docs/recipes.md (block at line {line})"), &text);
+        if !examples.contains(&text.trim()) {
+            assert_builds_and_holds(&format!("docs/recipes.md (block at line {line})"), &text);
+        }
     }
 }
 
+/// Every example recipe is embedded in the gallery, byte for byte; the gallery test
+/// (`cli::gallery_writes_everything_and_all_certificates_hold`) builds them all through
+/// the binary and checks every certificate, so they are not built a second time here.
 #[test]
-fn every_example_recipe_builds_and_is_in_the_gallery() {
+fn every_example_recipe_is_in_the_gallery() {
     let dir = workspace().join("examples/recipes");
     let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
         .expect("examples/recipes")
@@ -131,7 +139,6 @@ fn every_example_recipe_builds_and_is_in_the_gallery() {
             "examples/recipes/{}",
             f.file_name().and_then(|n| n.to_str()).unwrap_or("?")
         );
-        assert_builds_and_holds(&label, &text);
         assert!(
             rcagd_cli::gallery::RECIPES
                 .iter()
