@@ -8,6 +8,7 @@ use crate::recipe::{Recipe, RecipeObject, RecipeValue};
 use crate::source::{closest, Diagnostic, SourceFile, Span};
 use crate::value::{convert, Value};
 use crate::{EXIT_FAIL, EXIT_INPUT, EXIT_OK};
+use rayon::prelude::*;
 use std::io::Read as _;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::Path;
@@ -169,18 +170,29 @@ pub fn build_object(file: &SourceFile, obj: &RecipeObject) -> Result<Vec<Object>
 }
 
 /// Builds every object of a recipe, calling `progress(name)` after each one.
-/// Objects produced by one op under additional names are checked for uniqueness.
+/// Independent objects are built in parallel (rayon); the result keeps the recipe's
+/// order, so the output does not depend on the schedule. Objects produced by one op
+/// under additional names are checked for uniqueness.
 ///
 /// # Errors
 /// All problems of all objects.
 pub fn build_recipe(
     recipe: &Recipe,
-    mut progress: impl FnMut(&str),
+    progress: impl Fn(&str) + Sync,
 ) -> Result<Vec<Object>, Vec<Diagnostic>> {
+    let built: Vec<_> = recipe
+        .objects
+        .par_iter()
+        .map(|obj| {
+            let r = build_object(&recipe.file, obj);
+            progress(&obj.name);
+            r
+        })
+        .collect();
     let mut out: Vec<Object> = Vec::new();
     let mut diags = Vec::new();
-    for obj in &recipe.objects {
-        match build_object(&recipe.file, obj) {
+    for (obj, result) in recipe.objects.iter().zip(built) {
+        match result {
             Ok(objs) => {
                 for o in objs {
                     if out.iter().any(|x| x.name == o.name) {
@@ -198,7 +210,6 @@ pub fn build_recipe(
             }
             Err(d) => diags.extend(d),
         }
-        progress(&obj.name);
     }
     if diags.is_empty() {
         Ok(out)

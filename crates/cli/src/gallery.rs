@@ -15,6 +15,7 @@ use crate::output::{self, OutFormat};
 use crate::recipe::{Format, Recipe};
 use crate::{EXIT_FAIL, EXIT_INPUT, EXIT_OK};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use rayon::prelude::*;
 use rcagd_io::report::{FileLink, ReportEntry};
 use std::io::IsTerminal;
 use std::path::Path;
@@ -111,11 +112,11 @@ pub fn select(only: &[String]) -> Result<Vec<(&'static str, &'static str)>, Stri
 }
 
 /// Parses and builds the given embedded recipes (see [`select`]), calling `tick(name)`
-/// after each object.
+/// after each object. Objects are built in parallel (rayon) and kept in recipe order.
 pub fn build_all(
     recipes_in: &[(&str, &str)],
     total_hint: impl FnOnce(usize),
-    mut tick: impl FnMut(&str),
+    tick: impl Fn(&str) + Sync,
 ) -> GalleryBuild {
     let mut errors = Vec::new();
     let mut recipes = Vec::new();
@@ -126,26 +127,35 @@ pub fn build_all(
         }
     }
     total_hint(recipes.iter().map(|r| r.objects.len()).sum());
+    let jobs: Vec<_> = recipes
+        .iter()
+        .flat_map(|r| r.objects.iter().map(move |obj| (r, obj)))
+        .collect();
+    let built: Vec<_> = jobs
+        .par_iter()
+        .map(|(r, obj)| {
+            let b = build_object(&r.file, obj);
+            tick(&obj.name);
+            b
+        })
+        .collect();
     let mut objects: Vec<Object> = Vec::new();
-    for r in &recipes {
-        for obj in &r.objects {
-            match build_object(&r.file, obj) {
-                Ok(objs) => {
-                    for o in objs {
-                        if objects.iter().any(|x| x.name == o.name) {
-                            errors.push(format!(
-                                "{}: error: the gallery has two objects called {:?} (names must be unique across recipes)",
-                                r.file.name(),
-                                o.name
-                            ));
-                        } else {
-                            objects.push(o);
-                        }
+    for ((r, _), result) in jobs.iter().zip(built) {
+        match result {
+            Ok(objs) => {
+                for o in objs {
+                    if objects.iter().any(|x| x.name == o.name) {
+                        errors.push(format!(
+                            "{}: error: the gallery has two objects called {:?} (names must be unique across recipes)",
+                            r.file.name(),
+                            o.name
+                        ));
+                    } else {
+                        objects.push(o);
                     }
                 }
-                Err(ds) => errors.extend(ds.iter().map(ToString::to_string)),
             }
-            tick(&obj.name);
+            Err(ds) => errors.extend(ds.iter().map(ToString::to_string)),
         }
     }
     GalleryBuild { objects, errors }
@@ -172,17 +182,27 @@ fn progress_bar(quiet: bool) -> ProgressBar {
 pub fn write_all(
     out: &Path,
     objects: &[Object],
-    mut tick: impl FnMut(&str),
+    tick: impl Fn(&str) + Sync,
 ) -> Result<Vec<String>, String> {
     output::create_dir(out)?;
+    // Rendering (tessellation, rasterisation, exact export) is the expensive part: one
+    // object per task, in parallel; writing stays sequential and in order.
+    let rendered: Vec<Vec<_>> = objects
+        .par_iter()
+        .map(|o| {
+            let r = FORMATS.iter().map(|&f| (f, output::render(o, f))).collect();
+            tick(&o.name);
+            r
+        })
+        .collect();
     let mut export_errors = Vec::new();
     let mut entries = Vec::with_capacity(objects.len());
-    for o in objects {
+    for (o, renders) in objects.iter().zip(rendered) {
         let mut entry = ReportEntry::new(o.clone());
-        for &f in FORMATS {
+        for (f, text) in renders {
             let file = format!("{}.{}", o.name, f.extension());
             let path = out.join(&file);
-            let text = match output::render(o, f) {
+            let text = match text {
                 Ok(t) => t,
                 Err(e) => {
                     export_errors.push(format!(
@@ -208,7 +228,6 @@ pub fn write_all(
             entry = entry.with_file(f.label(), file);
         }
         entries.push(entry);
-        tick(&o.name);
     }
     let links = write_combined(out, objects, &mut export_errors)?;
     rcagd_io::report::write_report_with(out, &entries, &links).map_err(|e| e.to_string())?;
@@ -285,6 +304,11 @@ pub fn run(out: &Path, quiet: bool, only: &[String]) -> u8 {
             return EXIT_INPUT;
         }
     };
+    // An output directory that cannot be created fails before the (long) build.
+    if let Err(e) = output::create_dir(out) {
+        errln!("error: {e}");
+        return EXIT_INPUT;
+    }
     let pb = progress_bar(quiet);
     let built = build_all(
         &recipes,

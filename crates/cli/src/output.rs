@@ -3,6 +3,7 @@
 //! the summary table.
 
 use crate::model::Object;
+use rayon::prelude::*;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -149,15 +150,22 @@ pub fn write_objects(
     objects: &[Object],
     formats: &[OutFormat],
 ) -> Result<Vec<PathBuf>, String> {
-    let mut files = Vec::with_capacity(objects.len() * formats.len());
-    for o in objects {
-        for &f in formats {
+    // rendered in parallel, one (object, format) per task; the first error in order wins
+    let jobs: Vec<(&Object, OutFormat)> = objects
+        .iter()
+        .flat_map(|o| formats.iter().map(move |&f| (o, f)))
+        .collect();
+    let files: Vec<(PathBuf, Vec<u8>)> = jobs
+        .par_iter()
+        .map(|&(o, f)| {
             let path = dir.join(format!("{}.{}", o.name, f.extension()));
-            let bytes = render(o, f)
-                .map_err(|e| format!("{}: {e} (nothing was written)", path.display()))?;
-            files.push((path, bytes));
-        }
-    }
+            render(o, f)
+                .map(|bytes| (path.clone(), bytes))
+                .map_err(|e| format!("{}: {e} (nothing was written)", path.display()))
+        })
+        .collect::<Vec<_>>()
+        .into_iter()
+        .collect::<Result<_, _>>()?;
     let created = !dir.exists();
     create_dir(dir)?;
     let mut written: Vec<PathBuf> = Vec::with_capacity(files.len());
