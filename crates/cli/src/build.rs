@@ -123,7 +123,14 @@ pub fn check_object(
         }
     }
     if diags.is_empty() {
-        Ok((op, OpArgs::new(obj.name.clone(), op, values)))
+        let mut args = OpArgs::new(obj.name.clone(), op, values);
+        // file parameters are relative to the recipe's directory (stdin: the working one)
+        if file.name() != "-" {
+            if let Some(dir) = Path::new(file.name()).parent() {
+                args = args.with_base_dir(dir);
+            }
+        }
+        Ok((op, args))
     } else {
         diags.sort_by_key(|d| (d.line, d.column));
         Err(diags)

@@ -10,7 +10,7 @@
 
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
-use crate::value::{ParamKind, Value};
+use crate::value::ParamKind;
 use num_traits::{One, Zero};
 use rcagd::canal::bipoly::{patch_of, BiPoly};
 use rcagd::canal::blend::PlaneEnd;
@@ -678,7 +678,7 @@ const PIPE: OpSpec = OpSpec {
     params: &[
         ParamSpec::optional("points", ParamKind::Points, "control points [x, y, z] of the spine (or give spine_file)"),
         ParamSpec::optional("weights", ParamKind::Numbers, "spine weights (default all 1)"),
-        ParamSpec::optional("spine_file", ParamKind::String, "a STEP (.step, .stp), IGES (.igs, .iges) or rcagd JSON (.json) file whose curves form the spine (path relative to the working directory; instead of points)"),
+        ParamSpec::optional("spine_file", ParamKind::String, "a STEP (.step, .stp), IGES (.igs, .iges) or rcagd JSON (.json) file whose curves form the spine (a relative path is taken relative to the recipe's directory; instead of points)"),
         ParamSpec::required("radius", ParamKind::Number, "pipe radius, ≠ 0, below the spine's least radius of curvature"),
         ORIENTATION,
     ],
@@ -695,14 +695,14 @@ radius = "1/5"
 fn build_pipe(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let radius = args.number("radius")?;
     let orient = orientation(args)?;
-    if let Some(Value::Str(file)) = args.get("spine_file") {
+    if let Some(file) = args.path("spine_file") {
         if args.get("points").is_some() {
             return Err(OpError::param(
                 "spine_file",
                 "give either points or spine_file, not both",
             ));
         }
-        let spines = rcagd_io::spine::read_spine(std::path::Path::new(file))
+        let spines = rcagd_io::spine::read_spine(&file)
             .map_err(|e| OpError::param("spine_file", e.to_string()))?;
         let chain = pipe_along_chain(&spines, &radius, orient)
             .map_err(|e| pipe_err(e, "spine_file"))?;

@@ -193,6 +193,8 @@ pub struct OpArgs {
     name: String,
     op: &'static OpSpec,
     values: Vec<(&'static str, Value)>,
+    /// The directory of the recipe file: relative file parameters are resolved in it.
+    base_dir: Option<std::path::PathBuf>,
 }
 
 impl OpArgs {
@@ -206,6 +208,29 @@ impl OpArgs {
             name: name.into(),
             op,
             values,
+            base_dir: None,
+        }
+    }
+
+    /// Relative file parameters (see [`Self::path`]) are resolved in `dir`, the directory
+    /// of the recipe file.
+    pub fn with_base_dir(mut self, dir: impl Into<std::path::PathBuf>) -> Self {
+        self.base_dir = Some(dir.into());
+        self
+    }
+
+    /// A file-name parameter as a path: absolute as given, relative to the recipe's
+    /// directory (the working directory for a recipe read from standard input).
+    pub fn path(&self, param: &str) -> Option<std::path::PathBuf> {
+        match self.get(param) {
+            Some(Value::Str(s)) => {
+                let p = std::path::Path::new(s);
+                Some(match &self.base_dir {
+                    Some(dir) if p.is_relative() => dir.join(p),
+                    _ => p.to_path_buf(),
+                })
+            }
+            _ => None,
         }
     }
 

@@ -390,4 +390,22 @@ fn pipe_around_a_spine_file() {
     ));
     assert_eq!(line, 4, "{msg}");
     assert!(msg.contains("has no curves"), "{msg}");
+    // a relative spine_file is found beside the recipe, whatever the working directory
+    let recipe = dir.join("relative.toml");
+    std::fs::write(
+        &recipe,
+        "[[object]]\nname = \"p\"\nop = \"pipe\"\nspine_file = \"spine.json\"\nradius = \"1/8\"\n",
+    )
+    .expect("write recipe");
+    let out = bin()
+        .current_dir(env!("CARGO_TARGET_TMPDIR"))
+        .arg("build")
+        .arg(&recipe)
+        .output()
+        .expect("run rcagd");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
 }
