@@ -1,6 +1,7 @@
 //! The integration tests of `rcagd-algebra`, in one test binary (one link instead of one per file;
 //! see docs/ARCHITECTURE.md, "Tests").
 
+mod big_integers;
 mod conic_point_props;
 mod fields_linalg;
 mod roots_resultants;

@@ -1,0 +1,10 @@
+pub(crate) mod add;
+
+#[path = "../generic/digits.rs"]
+pub(crate) mod digits;
+
+#[path = "../generic_64_bit/ntt.rs"]
+pub(crate) mod ntt;
+
+#[path = "../generic_64_bit/word.rs"]
+pub(crate) mod word;
