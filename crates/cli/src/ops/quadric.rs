@@ -1,4 +1,4 @@
-//! Quadric ops (`rcagd::quadric`, seed 000): rational curves and patches exactly on the
+//! Quadric ops (`rcagd::quadric`, Jüttler): rational curves and patches exactly on the
 //! sphere and on any quadric with a rational point, by the generalized stereographic
 //! projection — interpolation, images of Bézier curves and patches, biquadratic patches
 //! from a Miquel configuration, and an exact cover of the whole sphere.

@@ -1,7 +1,7 @@
 //! Any quadric: classification, named quadrics, the generalized stereographic projection
 //! onto a quadric with a rational point, and the degenerate quadrics (cones, cylinders).
 //!
-//! **Normal form** (seed 000 Schlussbemerkung, made rational). Let `Φ: Xᵀ Q X = 0` be
+//! **Normal form** (Jüttler Schlussbemerkung, made rational). Let `Φ: Xᵀ Q X = 0` be
 //! non-degenerate with a rational point `c`. Choose `d` with `cᵀQd = 1` and make it
 //! isotropic (`d ← d − ½(dᵀQd)·c`); let `w₁, w₂` be a Q-orthogonal basis of
 //! `{x : cᵀQx = dᵀQx = 0}` with `α = w₁ᵀQw₁`, `β = w₂ᵀQw₂`. In the basis
@@ -21,7 +21,7 @@
 //! (images, preimages, interpolation, biquadratic patches) work through it, so they are
 //! transferred to every quadric with a rational point.
 //!
-//! **Transfer by projective maps** (notes 000-11): the seed's maps from `K` to the
+//! **Transfer by projective maps** (docs/math/quadrics.md, "Other quadrics"): the seed's maps from `K` to the
 //! ellipsoid, the two-sheet hyperboloid and the elliptic paraboloid, and from `H` to the
 //! one-sheet hyperboloid, are [`seed_transfer`] matrices; [`transfer_curve`] and
 //! [`transfer_patch`] apply any projective map to control points (exact, degree kept).
@@ -42,7 +42,7 @@
 //! exceptional line `p1 = p2 = 0` (mapped to nothing) — and `γ(p + tNp) = γ(p)` with the
 //! nilpotent `N p = (p2, 0, 0, −p1)`. The vertex has no preimage.
 
-// Index loops mirror the matrix formulas (Q_ij, M_k[i][j]) of the notes.
+// Index loops mirror the matrix formulas (Q_ij, M_k[i][j]) of docs/math/quadrics.md.
 #![allow(clippy::needless_range_loop)]
 
 use super::helpers::{self, fmt_vec, mat4_i};
@@ -1052,7 +1052,7 @@ impl<F: Scalar> GeneralizedProjection<F> for AnyProjection<F> {
 /// A projective map with its source and target quadrics.
 pub type SeedTransfer<F> = (Mat4<F>, Quadric<F>, Quadric<F>);
 
-/// The projective maps of notes 000-11 (seed Schlussbemerkung), as matrices `A` with
+/// The projective maps of docs/math/quadrics.md, "Other quadrics" (seed Schlussbemerkung), as matrices `A` with
 /// `X = A k`:
 /// * `"ellipsoid"` (`a, b, c`): `diag(1, a, b, c)` from `K` onto `x²/a²+y²/b²+z²/c² = 1`;
 /// * `"hyperboloid_two_sheets"`: swap `k0 ↔ k3`, from `K` onto `x3² = x0²+x1²+x2²`;

@@ -1,7 +1,6 @@
 //! Curves and surfaces on quadrics: the generalized stereographic projection
-//! (seed 000, Jüttler, *Zur Konstruktion rationaler Kurven und Flächen auf Quadriken*;
-//! corrected formulas and errata in `seeds/NOTES-000-003.md`, items 000-1 … 000-11,
-//! 000-E1 … 000-E3).
+//! (B. Jüttler, *Zur Konstruktion rationaler Kurven und Flächen auf Quadriken*; the
+//! formulas in our words, with the corrections J1–J3, in docs/math/quadrics.md).
 //!
 //! The idea of the seed: every coprime polynomial solution of `k0² = k1²+k2²+k3²`
 //! (unit sphere `K`) or `h0h3 = h1h2` (hyperbolic paraboloid `H`) is the image of
@@ -142,7 +141,7 @@ pub enum QuadricError {
         residual: String,
     },
     /// The four corners and boundary circles are not a Miquel configuration, so no
-    /// biquadratic patch on the sphere has them (seed 000 Satz 7, notes 000-7/000-8).
+    /// biquadratic patch on the sphere has them (Jüttler Satz 7, docs/math/quadrics.md, "Biquadratic sphere patches and the Miquel configuration").
     #[error("the corners are not in Miquel position: det[p1, q2, p3, q4] = {residual} (must be 0){detail}")]
     MiquelFails {
         /// `det[p1, q2, p3, q4]` with the points normalized to `k0 = 1`, formatted.
@@ -177,7 +176,7 @@ pub enum QuadricError {
 }
 
 /// A generalized stereographic projection: a quadratic map `F: P³ → Φ` onto a quadric
-/// `Φ: Xᵀ Q X = 0` whose fibres are the lines of a linear congruence (seed 000 §2, §3,
+/// `Φ: Xᵀ Q X = 0` whose fibres are the lines of a linear congruence (Jüttler §2, §3,
 /// Schlussbemerkung). Implemented by [`Delta`] (sphere), [`Psi`] (hyperbolic paraboloid),
 /// [`QuadricProjection`] (any non-degenerate quadric with a rational point) and
 /// [`ConeProjection`] (cones and cylinders).
@@ -193,7 +192,7 @@ pub trait GeneralizedProjection<F: Scalar> {
         self.quadratic_map().apply(p)
     }
     /// The polar form `F̂(a, b) = (F(a+b) − F(a−b))/4`, symmetric bilinear with
-    /// `F̂(p, p) = F(p)` (notes, conventions).
+    /// `F̂(p, p) = F(p)` (docs/math/quadrics.md, conventions).
     fn polar(&self, a: &Hom<F>, b: &Hom<F>) -> Hom<F> {
         self.quadratic_map().polar(a, b)
     }
@@ -209,7 +208,7 @@ pub trait GeneralizedProjection<F: Scalar> {
     /// cones: a nilpotent `N`).
     fn fibre_generator(&self) -> Mat4<F>;
     /// The projecting line contained in the plane `πᵀx = 0`: `ker[π; πG]`, a `G`-invariant
-    /// line (seed 000 §2: every plane contains exactly one projecting line, for the
+    /// line (Jüttler §2: every plane contains exactly one projecting line, for the
     /// elliptic congruence of δ).
     ///
     /// # Errors

@@ -1,4 +1,4 @@
-//! The generalized stereographic projection onto the hyperbolic paraboloid (seed 000 §3).
+//! The generalized stereographic projection onto the hyperbolic paraboloid (Jüttler §3).
 //!
 //! * `ψ(q) = (q0q3, q1q3, q0q2, q1q2)` (15) maps onto `H: h0h3 = h1h2` (6). It is the
 //!   Segre map `(u, v) ↦ u⊗v` of `u = (q0, q1)` and `v = (q3, q2)`, so it vanishes on the
@@ -7,7 +7,7 @@
 //! * `τ(q0,q1,q2,q0) = (q0², q0q1, q0q2, q1q2)` (16), the stereographic projection of the
 //!   plane `R: q3 = q0` from `c = (0,0,0,1)` (Satz 8); `τ⁻¹(h) = (h0,h1,h2,h0)`.
 //! * `α(q) = (q0q3, q1q3, q0q2, q0q3)` (17), with `τ(α(q)) = q0q3·ψ(q)` (Satz 9,
-//!   corrected up to this factor, notes 000-9).
+//!   corrected up to this factor, docs/math/quadrics.md, "The map ψ onto the hyperbolic paraboloid").
 //! * Fibre over `h` (Lemma 10 (18)): `span{(h0,h1,h2,h0), (h0,h1,0,0)}`; in Segre form
 //!   `span{(u0,u1,0,0), (0,0,v1,v0)}` with `h ∥ u⊗v`, which also covers the points with
 //!   `h0 = h1 = 0`. `ψ(λa+μb) = λ(λ+μ)h0·h` for the seed's basis.
@@ -225,7 +225,7 @@ pub fn psi_fibre_seed<F: Scalar>(h: &Hom<F>) -> Result<[Hom<F>; 2], QuadricError
 }
 
 /// The generalized stereographic projection ψ onto the hyperbolic paraboloid `H`
-/// (seed 000 §3).
+/// (Jüttler §3).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct Psi;
 
@@ -254,8 +254,8 @@ impl<F: Scalar> GeneralizedProjection<F> for Psi {
 }
 
 /// The quadric `a q0q3 + b q1q3 + c q0q2 + d q1q2 = 0`, the preimage under α of the conic
-/// `aX0² + bX0X1 + cX0X2 + dX1X2 = 0` of `R` (notes 000-10). It is always a hyperbolic
-/// paraboloid (or degenerate), never a one-sheet hyperboloid: erratum 000-E2 (seed §3,
+/// `aX0² + bX0X1 + cX0X2 + dX1X2 = 0` of `R` (docs/math/quadrics.md, "Preimage quadrics"). It is always a hyperbolic
+/// paraboloid (or degenerate), never a one-sheet hyperboloid: docs/math/quadrics.md, Errata J2 (seed §3,
 /// first bullet, says "einschaliges Hyperboloid").
 pub fn conic_preimage_quadric<F: Scalar>(a: &F, b: &F, c: &F, d: &F) -> Mat4<F> {
     let h = F::one() / F::from_i64(2);
@@ -287,7 +287,7 @@ pub fn plane_conic_matrix<F: Scalar>(a: &F, b: &F, c: &F, d: &F) -> Mat4<F> {
     ]
 }
 
-/// The exact identities of seed 000 §3 as polynomial identities in `q0..q3`:
+/// The exact identities of Jüttler §3 as polynomial identities in `q0..q3`:
 /// (6)/(15) `ψ(q) ∈ H`; Satz 8 `ψ|_{q3=q0} = τ`, `τ(q) = q0·(q0,q1,q2,q0) + (q1q2−q0²)·c`
 /// (τ(q) lies on the line `cq`); Satz 9 `τ(α(q)) = q0q3·ψ(q)`; `τ⁻¹(ψ(q)) = α(q)`;
 /// the fibre scaling `ψ(Sq) = sψ(q)`, `α(Sq) = sα(q)` for `S = diag(s,s,1,1)` (checked
