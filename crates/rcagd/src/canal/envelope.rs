@@ -78,7 +78,7 @@ pub struct AxisChoice {
 }
 
 impl AxisChoice {
-    /// The six admissible choices, `x₃` first (the seed's frame).
+    /// The six admissible choices, `x₃` first (Gruber's frame).
     pub fn all() -> [AxisChoice; 6] {
         let mut out = [AxisChoice {
             axis: 2,

@@ -101,7 +101,7 @@ pub struct HermiteInterpolant {
     /// `φ` with `A_2 = Â_2 e^{iφ}` (`Â` the particular solutions at `φ = 0`,
     /// docs/math/ph-curves.md, "Prescribed tangents (Lemma 2.1)").
     pub phi: f64,
-    /// `ξ = tan(φ/2)`, the unknown of the seed's quartic (9.27).
+    /// `ξ = tan(φ/2)`, the unknown of Besednjak's quartic (9.27).
     pub xi: f64,
     /// `X = A_0iA_2* + A_2iA_0*`.
     pub x: [f64; 3],
@@ -1017,7 +1017,7 @@ fn refine_once<K: Scalar>(p: &Poly<K>, lo: K, hi: K) -> (K, K) {
     }
 }
 
-/// The seed's quartic (9.27)–(9.28) in `ξ = tan(φ/2)`, `[d_0, …, d_4]`, in `f64`, with
+/// Besednjak's quartic (9.27)–(9.28) in `ξ = tan(φ/2)`, `[d_0, …, d_4]`, in `f64`, with
 /// `u, v` from the particular solutions `Â_0, Â_2` (docs/math/ph-curves.md,
 /// "Prescribed tangents (Lemma 2.1)" and "Hermite interpolation by helical PH quintics", step 2).
 ///

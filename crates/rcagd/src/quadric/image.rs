@@ -11,8 +11,8 @@
 //! `Xᵀ Q X` along the image, which all vanish exactly: that is the certificate.
 //!
 //! **Preimages.** A curve `y` of degree `2n` on the quadric is `F(x)` for some `x` of
-//! degree `n` (seed Satz 1, verified for curves; for patches the claim is unverified,
-//! docs/math/quadrics.md, Errata J3, so here it is decided case by case). `x` is found by the seed's linear
+//! degree `n` (Jüttler Satz 1, verified for curves; for patches the claim is unverified,
+//! docs/math/quadrics.md, Errata J3, so here it is decided case by case). `x` is found by Jüttler's linear
 //! problem: at `4n+1` distinct parameters `x(tₛ)` must lie on the fibre over `y(tₛ)`.
 //! Then every minor of `[F(x), y]` (degree `4n`) vanishes at `4n+1` points, so
 //! `F(x) ∥ y` identically; whether `F(x) = c·y` with a constant `c` is then checked
@@ -506,7 +506,7 @@ fn fibre_rows<F: Scalar, P: GeneralizedProjection<F> + ?Sized>(
 }
 
 /// A preimage of half degree of a curve on the quadric: `x` of degree `n` with
-/// `F(x) = c·y` for the given `y` of degree `2n` (seed Satz 1, linear problem of
+/// `F(x) = c·y` for the given `y` of degree `2n` (Jüttler Satz 1, linear problem of
 /// docs/math/quadrics.md, "Interpolation on the sphere" with `4n+1` samples, see the module docs).
 ///
 /// # Errors
@@ -587,7 +587,7 @@ pub fn curve_preimage<F: Scalar, P: GeneralizedProjection<F> + ?Sized>(
 }
 
 /// A preimage of half bidegree of a patch on the quadric: `x` of bidegree `(m, n)` with
-/// `F(x) = c·y` for the given `y` of bidegree `(2m, 2n)`, decided exactly (the seed's
+/// `F(x) = c·y` for the given `y` of bidegree `(2m, 2n)`, decided exactly (Jüttler's
 /// Satz 1 for surfaces is unverified, docs/math/quadrics.md, Errata J3: this function answers per patch).
 ///
 /// # Errors

@@ -18,7 +18,7 @@
 //! `F̂(cᵢ, x'(tᵢ)) ∈ span(kᵢ, Tᵢ)` (the tangent of `y = F(x)` is `2F̂(x, x')`). The fibre
 //! position `(λᵢ : μᵢ)` is therefore a free parameter of the problem ([`HermiteDatum`]);
 //! at one point it only fixes the fibre symmetry, at further points it is a genuine shape
-//! parameter. (The seed announces the linear problem for points only; this is the
+//! parameter. (Jüttler announces the linear problem for points only; this is the
 //! extension that keeps it linear.)
 
 use super::helpers::{self, fmt_scalar, fmt_vec, to_hom};

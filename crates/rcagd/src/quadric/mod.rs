@@ -2,7 +2,7 @@
 //! (B. Jüttler, *Zur Konstruktion rationaler Kurven und Flächen auf Quadriken*; the
 //! formulas in our words, with the corrections J1–J3, in docs/math/quadrics.md).
 //!
-//! The idea of the seed: every coprime polynomial solution of `k0² = k1²+k2²+k3²`
+//! The idea of Jüttler's paper: every coprime polynomial solution of `k0² = k1²+k2²+k3²`
 //! (unit sphere `K`) or `h0h3 = h1h2` (hyperbolic paraboloid `H`) is the image of
 //! polynomials `p` under a *quadratic* map of homogeneous coordinates, (7)/(8). Read as
 //! maps `P³ → K` and `P³ → H` they are net projections along a linear line congruence
@@ -16,7 +16,7 @@
 //!   identity certificates of the maps themselves;
 //! * [`image`]: images of rational Bézier curves (degree `n → 2n`) and tensor-product
 //!   patches (`(m,n) → (2m,2n)`) by the polar-form rule, and preimages of half degree;
-//! * [`interpolation`]: interpolation on a quadric as the seed's linear problem (a curve
+//! * [`interpolation`]: interpolation on a quadric as Jüttler's linear problem (a curve
 //!   in `E³` meeting the projecting lines), lowest degree, free parameters, Hermite data;
 //! * [`sphere_patch`]: biquadratic patches from bilinear ones, the Miquel condition
 //!   (Satz 7) and its converse;
@@ -61,7 +61,7 @@ use rcagd_geom::GeomError;
 use thiserror::Error;
 
 /// A homogeneous point of real projective 3-space, `(p0, p1, p2, p3)`, Cartesian point
-/// `(p1, p2, p3)/p0` (seed (1)).
+/// `(p1, p2, p3)/p0` (Jüttler (1)).
 pub type Hom<F> = [F; 4];
 
 /// A symmetric 4×4 matrix `Q` of a quadric `Xᵀ Q X = 0`.

@@ -149,7 +149,7 @@ impl<F: Scalar> QuadraticMap<F> {
     }
 
     /// Certifies `F(p)ᵀ Q F(p) ≡ 0` as a polynomial identity in `p0..p3` (quartic): the
-    /// map lands on the quadric (seed (5)/(6) with (7)/(8)).
+    /// map lands on the quadric (Jüttler (5)/(6) with (7)/(8)).
     pub fn certify_on_quadric(&self, q: &Mat4<F>, property: &str) -> Certificate {
         let c = self.components();
         let mut s = MPoly::zero(4);

@@ -17,8 +17,8 @@
 //!   `c00' = F(p1) ∩ span(c01, F(e41))` returns to `c00` exactly for Miquel data. One
 //!   weight (of `c11`) is essential: a one-parameter family of patches.
 //!
-//! The constructions are generic over the projection; the Miquel statements are the
-//! seed's for δ (and transfer to every oval quadric through [`super::QuadricProjection`]).
+//! The constructions are generic over the projection; the Miquel statements are
+//! Jüttler's for δ (and transfer to every oval quadric through [`super::QuadricProjection`]).
 
 use super::helpers::{self, fmt_scalar, fmt_vec};
 use super::image::{patch_image, ImagePatch};

@@ -8,7 +8,7 @@
 //!   `σ⁻¹(k) = (k0−k3, k1, k2, 0)`, with `σ⁻¹(σ(p)) = 2p0·p`.
 //! * `ϑ(p) = (p0²+p3², p0p1−p2p3, p0p2+p1p3, 0)` (11), the net projection along the
 //!   elliptic congruence (12) (Folgerung 6); `σ(ϑ(p)) = (p0²+p3²)·δ(p)` (Satz 3,
-//!   corrected: the seed's `δ = σ∘ϑ` holds up to this factor, docs/math/quadrics.md, "The map δ onto the sphere"). ϑ vanishes on
+//!   corrected: Jüttler's `δ = σ∘ϑ` holds up to this factor, docs/math/quadrics.md, "The map δ onto the sphere"). ϑ vanishes on
 //!   the line `p0 = p3 = 0` (the fibre over `z`), so δ is computed directly, never as σ∘ϑ.
 //! * The fibre rotation `J(p) = (−p3, p2, −p1, p0)`, `J² = −I`, `δ((aI+bJ)p) = (a²+b²)δ(p)`.
 //! * The fibre over `k ∈ K` (Lemma 4 (12)): `span{a, Ja}` with `a = σ⁻¹(k)`; over `z` it is
@@ -32,7 +32,7 @@ fn two<F: Scalar>() -> F {
     F::from_i64(2)
 }
 
-/// `δ(p)`, seed (9).
+/// `δ(p)`, Jüttler (9).
 pub fn delta<F: Scalar>(p: &Hom<F>) -> Hom<F> {
     let [p0, p1, p2, p3] = p;
     [
@@ -60,7 +60,7 @@ pub fn delta_map<F: Scalar>() -> QuadraticMap<F> {
     QuadraticMap::from_fn(delta)
 }
 
-/// `σ(p)` for a point of the equator plane `P: p3 = 0`, seed (10) (Satz 2).
+/// `σ(p)` for a point of the equator plane `P: p3 = 0`, Jüttler (10) (Satz 2).
 ///
 /// # Errors
 /// [`QuadricError::NotInPlane`] if `p3 ≠ 0`, [`QuadricError::ZeroPoint`] for `p = 0`.
@@ -124,7 +124,7 @@ fn theta_formula<F: Scalar>(p: &Hom<F>) -> Hom<F> {
     ]
 }
 
-/// `ϑ(p)`, seed (11): the net projection onto `P` along the congruence (12).
+/// `ϑ(p)`, Jüttler (11): the net projection onto `P` along the congruence (12).
 ///
 /// # Errors
 /// [`QuadricError::Exceptional`] on the line `p0 = p3 = 0` (the fibre over `z`), where ϑ
@@ -214,7 +214,7 @@ impl<F: Scalar> GeneralizedProjection<F> for Delta {
 
 /// The quadric `α(p1²+p2²) + β(p0p1−p2p3) + γ(p0p2+p1p3) + ε(p0²+p3²) = 0`, the preimage
 /// under ϑ of the circle (or line, `α = 0`) `α(X1²+X2²) + βX0X1 + γX0X2 + εX0² = 0` in
-/// `P` (docs/math/quadrics.md, "Preimage quadrics"; seed §2 property list). Its determinant is `(4αε−β²−γ²)²/16`: a
+/// `P` (docs/math/quadrics.md, "Preimage quadrics"; Jüttler §2 property list). Its determinant is `(4αε−β²−γ²)²/16`: a
 /// one-sheet hyperboloid for a real circle, a hyperbolic paraboloid for a line.
 pub fn circle_preimage_quadric<F: Scalar>(alpha: &F, beta: &F, gamma: &F, eps: &F) -> Mat4<F> {
     let h = F::one() / two::<F>();
