@@ -4,7 +4,7 @@
 //!
 //! A coefficient vector `b = (b₀, …, bₙ)` of degree `n` stands for
 //! `p(t) = Σᵢ bᵢ Bᵢⁿ(t)`, `Bᵢⁿ(t) = C(n,i) (1−t)ⁿ⁻ⁱ tⁱ`
-//! (seed 001, NOTES-001 ALG-11; seed 000, NOTES-000-003 conventions).
+//! (Besednjak, docs/math/ph-curves.md, "Control points from the quaternion coefficients"; Jüttler, docs/math/quadrics.md).
 //! The degree is `b.len() − 1`; an empty vector is the zero polynomial without a degree.
 //!
 //! Every operation that is used on control points comes in two forms:
@@ -370,7 +370,7 @@ pub fn elevate_blocks<F: Field>(b: &[F], width: usize, r: usize) -> Vec<F> {
 }
 
 /// Bernstein product: the coefficients of `p·q` in degree `m + n`,
-/// `cₖ = Σ_{i+j=k} C(m,i) C(n,j) / C(m+n,k) · aᵢ bⱼ` (NOTES-001 ALG-11; the order of
+/// `cₖ = Σ_{i+j=k} C(m,i) C(n,j) / C(m+n,k) · aᵢ bⱼ` (docs/math/ph-curves.md, "Control points from the quaternion coefficients"; the order of
 /// factors is kept). An empty factor gives the empty vector.
 pub fn product<F: Field>(a: &[F], b: &[F]) -> Vec<F> {
     if a.is_empty() || b.is_empty() {
@@ -409,7 +409,7 @@ fn divide_by_binomials<F: Field>(c: &mut [F]) {
 /// Tensor-product Bernstein product of two bivariate coefficient arrays (row-major,
 /// `a` of bidegree `(m₁, n₁)` has `(m₁+1)(n₁+1)` entries, index `i(n₁+1) + j`):
 /// `c_{kl} = Σ_{i+i'=k, j+j'=l} [C(m₁,i)C(m₂,i')/C(m₁+m₂,k)]·[C(n₁,j)C(n₂,j')/C(n₁+n₂,l)] a_{ij} b_{i'j'}`
-/// (seed 000, NOTES-000-003 000-3), bidegree `(m₁+m₂, n₁+n₂)`.
+/// (Jüttler, docs/math/quadrics.md, "Curves and patches under δ"), bidegree `(m₁+m₂, n₁+n₂)`.
 ///
 /// # Errors
 /// [`AlgebraError::Mismatch`] if an array's length does not fit its bidegree.

@@ -9,7 +9,7 @@
 //!
 //! The Gaussian rationals `Q(i) = Complex<Rational>` carry the Hopf form of spatial
 //! PH curves: `A = α + kβ` with `α = u + iv`, `β = q + ip`, hodograph
-//! `r' = (|α|² − |β|², 2 Re(αβ̄), 2 Im(αβ̄))` (seed 001 §1 ALG-1, NOTES-001 §0).
+//! `r' = (|α|² − |β|², 2 Re(αβ̄), 2 Im(αβ̄))` (docs/math/ph-curves.md, "Conventions").
 //! For polynomials `p(t) = Σ cₖtᵏ` (real parameter `t`), `p̄(t) = Σ c̄ₖtᵏ` and
 //! `|p(t)|² = p(t)·p̄(t) = Re(p)² + Im(p)²` ([`norm_sq_poly`]).
 //!
@@ -271,7 +271,8 @@ pub fn from_re_im_polys<F: Ring>(re: &Poly<F>, im: &Poly<F>) -> Poly<Complex<F>>
 }
 
 /// `|p(t)|² = p(t)·p̄(t) = (Re p)² + (Im p)²`, a real polynomial (for real `t`).
-/// This is the parametric-speed building block `|α|² + |β|²` of seed 001 ALG-1.
+/// This is the parametric-speed building block `|α|² + |β|²` (docs/math/ph-curves.md,
+/// "The hodograph and the speed").
 pub fn norm_sq_poly<F: Ring>(p: &Poly<Complex<F>>) -> Poly<F> {
     let (re, im) = re_im_polys(p);
     &(&re * &re) + &(&im * &im)

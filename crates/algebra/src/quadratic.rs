@@ -4,7 +4,7 @@
 //! non-square, so `Q(√d) = {a + b√d}` is a field of degree 2 over `Q` embedded in
 //! the reals by `√d > 0`. This is the number type of the few irrational quantities
 //! that exact constructions meet: the speed of a DPH curve `ω = √c·ω̃`, `|κ/τ|`,
-//! `cos ψ` of a helix (seed 001 §3 "Implementation notes": "store as (rational
+//! `cos ψ` of a helix (docs/math/ph-curves.md, "DPH test and the rational Frenet frame": "store as (rational
 //! part, squarefree radicand)").
 //!
 //! # The arithmetic (exact)

@@ -1,6 +1,6 @@
 //! Quaternions `w + x i + y j + z k` over a commutative ring, and quaternion polynomials.
 //!
-//! Conventions of seed 001 (NOTES-001 §0): `i² = j² = k² = ijk = −1`, so `ij = k`,
+//! Conventions of Besednjak (docs/math/ph-curves.md, "Conventions"): `i² = j² = k² = ijk = −1`, so `ij = k`,
 //! `jk = i`, `ki = j` and `ji = −k`, `kj = −i`, `ik = −j`. Writing `A = (a, a⃗)` with scalar
 //! part `a` and vector part `a⃗`, the Hamilton product is
 //!
@@ -9,7 +9,7 @@
 //! the conjugate `A* = (a, −a⃗)` reverses products, `(AB)* = B*A*`, and
 //! `|A|² = A A* = a² + |a⃗|²` is multiplicative, `|AB|² = |A|²|B|²`.
 //!
-//! **PH curves** (seed 001 §2, ALG-1): for a quaternion polynomial
+//! **PH curves** (Besednjak §2, docs/math/ph-curves.md, "The hodograph and the speed"): for a quaternion polynomial
 //! `A(t) = u + v i + p j + q k` the hodograph `r'(t) = A(t) i A*(t)` is a pure vector
 //! `(u²+v²−p²−q², 2(uq+vp), 2(vq−up))` with `|r'| = |A|² = u²+v²+p²+q²` ([`sandwich_i`],
 //! [`norm_sq_poly`]). In general `A u A*` is a pure vector of length `|A|²|u|` for a pure
@@ -346,7 +346,7 @@ pub fn from_vector_polys<F: Ring>(v: &[Poly<F>; 3]) -> Poly<Quaternion<F>> {
 }
 
 /// `|A(t)|² = A(t)A*(t) = w² + x² + y² + z²`, a real polynomial: the parametric speed
-/// `σ` of the PH curve with hodograph `A i A*` (seed 001 ALG-1).
+/// `σ` of the PH curve with hodograph `A i A*` (docs/math/ph-curves.md, "The hodograph and the speed").
 pub fn norm_sq_poly<F: Ring>(a: &Poly<Quaternion<F>>) -> Poly<F> {
     let [w, x, y, z] = component_polys(a);
     &(&(&(&w * &w) + &(&x * &x)) + &(&y * &y)) + &(&z * &z)
@@ -360,7 +360,7 @@ pub fn sandwich<F: Ring>(a: &Poly<Quaternion<F>>, u: &Quaternion<F>) -> Poly<Qua
     &a.scale(u) * &conj_poly(a)
 }
 
-/// The PH hodograph `r'(t) = A(t) i A*(t)` (seed 001 §2, ALG-1) as a pure quaternion
+/// The PH hodograph `r'(t) = A(t) i A*(t)` (Besednjak §2, docs/math/ph-curves.md, "The hodograph and the speed") as a pure quaternion
 /// polynomial, by the closed form for `A = u + v i + p j + q k`:
 /// `A i A* = (u² + v² − p² − q²) i + 2(uq + vp) j + 2(vq − up) k`.
 pub fn sandwich_i<F: Ring>(a: &Poly<Quaternion<F>>) -> Poly<Quaternion<F>> {
@@ -419,7 +419,7 @@ mod tests {
 
     #[test]
     fn hodograph_of_lemma_2_1_example() {
-        // NOTES-001 ALG-8: c = (−1, 2, 2) is solved by Q = i + j + k.
+        // docs/math/ph-curves.md, "Prescribed tangents (Lemma 2.1)": c = (−1, 2, 2) is solved by Q = i + j + k.
         let a = Poly::constant(h(0, 1, 1, 1));
         let r = sandwich_i(&a);
         assert_eq!(r, Poly::constant(h(0, -1, 2, 2)));

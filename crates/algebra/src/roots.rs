@@ -27,7 +27,8 @@
 //! is the correctly rounded root.
 //!
 //! Independent cross-checks (Sturm sequences) live in `tests/roots_resultants.rs`.
-//! Seed 001 (NOTES-001 ALG-11) asks for real-root isolation for the quartic.
+//! The Hermite interpolation of Besednjak ch. 9 (docs/math/ph-curves.md, "Hermite interpolation
+//! by helical PH quintics") needs real-root isolation for a quartic.
 
 use crate::error::AlgebraError;
 use crate::poly::Poly;

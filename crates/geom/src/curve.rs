@@ -546,8 +546,8 @@ impl<F: Scalar> BezierCurve<F> {
     /// homogeneous of the same degree `k` in the `d + 1` homogeneous coordinates
     /// `(w, x₁, …, x_d)`: the curve `F(P(t))` of degree exactly `k·n`, computed by
     /// Bernstein products of the coordinate vectors (not by sampling), so
-    /// `image.eval_homogeneous(t) = F(P(t))` identically (seed 000, NOTES-000-003
-    /// 000-2: `d_k = Σ_{i+j=k} C(n,i)C(n,j)/C(2n,k) F̂(bᵢ, bⱼ)` for quadratic maps).
+    /// `image.eval_homogeneous(t) = F(P(t))` identically (Jüttler;
+    /// docs/math/quadrics.md, "Curves and patches under δ": `d_k = Σ_{i+j=k} C(n,i)C(n,j)/C(2n,k) F̂(bᵢ, bⱼ)` for quadratic maps).
     ///
     /// # Errors
     /// [`GeomError::Dimension`] if a component has more than `d + 1` variables (fewer

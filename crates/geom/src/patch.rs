@@ -632,8 +632,8 @@ impl<F: Scalar> BezierPatch<F> {
     }
 
     /// The image under a homogeneous polynomial map of degree `k`, bidegree
-    /// `(k·m, k·n)` exactly, by tensor Bernstein products (seed 000, NOTES-000-003
-    /// 000-3); `image.eval_homogeneous(u, v) = F(P(u, v))` identically.
+    /// `(k·m, k·n)` exactly, by tensor Bernstein products (Jüttler;
+    /// docs/math/quadrics.md, "Curves and patches under δ"); `image.eval_homogeneous(u, v) = F(P(u, v))` identically.
     ///
     /// # Errors
     /// As [`BezierCurve::apply_polymap`].

@@ -4,10 +4,10 @@
 //! A [`PolyMap`] is a named vector `F = (F₀, …, F_{d'})` of homogeneous polynomials of
 //! one degree `k` in the `d + 1` homogeneous coordinates `(w, x₁, …, x_d)` (weight
 //! first). Stereographic projections, the cyclographic map and the Hopf map δ of
-//! seed 000 are such maps. It maps a rational Bézier curve of degree `n` to one of
+//! Jüttler are such maps. It maps a rational Bézier curve of degree `n` to one of
 //! degree `k·n` and a patch of bidegree `(m, n)` to one of bidegree `(k·m, k·n)`,
 //! exactly: the image's Bernstein coefficients are sums of Bernstein products of the
-//! coordinate vectors (seed 000, NOTES-000-003 000-2 and 000-3, which state the
+//! coordinate vectors (Jüttler, docs/math/quadrics.md, "Curves and patches under δ", which state the
 //! quadratic case by the polar form `F̂(a,b) = (F(a+b) − F(a−b))/4`; a product of
 //! Bernstein coefficient vectors is the same computation for any degree).
 
@@ -454,7 +454,7 @@ mod tests {
     }
 
     /// σ(p₀,p₁,p₂) = (p₀²+p₁²+p₂², 2p₀p₁, 2p₀p₂, p₁²+p₂²−p₀²): the inverse
-    /// stereographic projection of the plane onto the unit sphere (seed 000, 000-4).
+    /// stereographic projection of the plane onto the unit sphere (Jüttler, docs/math/quadrics.md, "The map δ onto the sphere").
     fn sigma() -> PolyMap<Rational> {
         let forms = vec![
             vec![pt(&[1, 0, 0]), pt(&[0, 1, 0]), pt(&[0, 0, 1])],

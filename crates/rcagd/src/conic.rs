@@ -7,7 +7,7 @@
 //! (`s = y/(1 + x)`), so an arc between two rational points of a circle with
 //! rational centre `c` and radius `r` has rational control points; no `cos(θ/2)`
 //! is needed. (Standard; e.g. Farin, *NURBS*, §5 on conics; the same map is the
-//! `n = 1` case of seed 000's generalized stereographic projection, NOTES-000-003 000-1.)
+//! `n = 1` case of Jüttler's generalized stereographic projection, docs/math/quadrics.md, "The map δ onto the sphere".)
 //!
 //! **One arc piece.** Let `d₀ = p₀ − c`, `d₁ = p₁ − c` and let `φ ∈ (−π, π)` be the signed
 //! angle from `d₀` to `d₁` (positive counter-clockwise). In the frame rotated by the

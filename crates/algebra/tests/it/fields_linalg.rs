@@ -336,7 +336,7 @@ proptest! {
 
     #[test]
     fn ph_hodograph_identity(a in quat_poly(), u in (rat(), rat(), rat())) {
-        // r' = A i A* is a pure vector with |r'|² = |A|⁴ (seed 001 ALG-1 certificate)
+        // r' = A i A* is a pure vector with |r'|² = |A|⁴ (the PH certificate of docs/math/ph-curves.md)
         let r = quaternion::sandwich_i(&a);
         prop_assert!(quaternion::scalar_poly(&r).is_zero());
         let [x, y, z] = quaternion::vector_polys(&r);

@@ -1,5 +1,5 @@
-//! Ops of the `canal` topic: line geometry in Plücker coordinates (`rcagd::lines`, seed 003
-//! §1.1) and rational canal and pipe surfaces (`rcagd::canal`, seed 003 ch. 2, seed 004
+//! Ops of the `canal` topic: line geometry in Plücker coordinates (`rcagd::lines`, Gruber
+//! §1.1) and rational canal and pipe surfaces (`rcagd::canal`, Gruber ch. 2, Peternell
 //! §2.5): lines from points or planes, common transversals, reguli, canal surfaces from a
 //! spine and a radius, pipes (around PH curves and other rational spines), sphere–sphere
 //! and sphere–plane blends, tori and Dupin-like canal surfaces.
@@ -1076,8 +1076,8 @@ fn build_dupin_canal(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         true,
         move || format_rational(&pe),
     );
-    // the cyclide (|x − c|² − r₀² + ρ²)² = 4(ρa(y − c₂) + ρb r₀)² + 4ρ²(x − c₁)² (NOTES-004
-    // A3.4 with the axes relabelled: semi-axes ρa along y, ρ along x, c = ρb, μ = r₀)
+    // the cyclide (|x − c|² − r₀² + ρ²)² = 4(ρa(y − c₂) + ρb r₀)² + 4ρ²(x − c₁)² (Peternell §3.8.1,
+    // docs/math/lines-and-canal.md, "Canal surfaces", with the axes relabelled: semi-axes ρa along y, ρ along x, c = ρb, μ = r₀)
     let (rr, la, lb) = (rho.clone() * rho.clone(), rho.clone() * a2, rho.clone() * b2 * r0.clone());
     let k = rr.clone() - r0.clone() * r0;
     let quartic = move |x: &[BiPoly<Rational>; 4]| {

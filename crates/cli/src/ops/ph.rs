@@ -1,8 +1,8 @@
-//! Ops of the `ph` topic: spatial Pythagorean-hodograph curves (`rcagd::ph`, seed 001,
-//! NOTES-001): a PH curve from quaternion or Hopf coefficients with optional frames,
+//! Ops of the `ph` topic: spatial Pythagorean-hodograph curves (`rcagd::ph`, Besednjak,
+//! docs/math/ph-curves.md): a PH curve from quaternion or Hopf coefficients with optional frames,
 //! curvature comb and constant-feed (arc-length-uniform) marks; polynomial helices from a
 //! line/circle seed (reparametrization, multiplication or both); the septic DPH
-//! constructor; Hermite interpolation by helical PH quintics (seed 001 ch. 9).
+//! constructor; Hermite interpolation by helical PH quintics (Besednjak ch. 9).
 //!
 //! Extra objects are named after the main object: `<name>_frame` (frame vectors as line
 //! segments), `<name>_comb` (curvature comb: teeth `r(t) → r(t) − scale·κn(t)` and the

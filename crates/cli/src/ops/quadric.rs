@@ -1,10 +1,10 @@
-//! Quadric ops (`rcagd::quadric`, seed 000): rational curves and patches exactly on the
+//! Quadric ops (`rcagd::quadric`, Jüttler): rational curves and patches exactly on the
 //! sphere and on any quadric with a rational point, by the generalized stereographic
 //! projection — interpolation, images of Bézier curves and patches, biquadratic patches
 //! from a Miquel configuration, and an exact cover of the whole sphere.
 //!
 //! Every op takes the same quadric parameters: `quadric` (a name, default the unit sphere
-//! with the seed's δ; `"seed_paraboloid"` uses the seed's ψ; every other quadric its
+//! with Jüttler's δ; `"seed_paraboloid"` uses Jüttler's ψ; every other quadric its
 //! rational normal form `B∘N_{a,e}`), `coefficients` (the named quadric's numbers),
 //! `matrix` (a symmetric 4×4 matrix, with `quadric = "matrix"`) and `rational_point`.
 
@@ -224,7 +224,7 @@ op = "sphere_cover"
 };
 
 /// A projection chosen from the quadric parameters, with the certificates of the
-/// projection itself (empty for the seed's δ and ψ, which the image certificates cover).
+/// projection itself (empty for Jüttler's δ and ψ, which the image certificates cover).
 struct Target {
     proj: Box<dyn GeneralizedProjection<Rational>>,
     certs: Vec<Certificate>,

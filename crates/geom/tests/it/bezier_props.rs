@@ -402,7 +402,7 @@ fn quarter_circle_certifies_and_a_perturbed_one_fails() {
     assert!(!cert.holds);
     let residual = cert.residual.clone().expect("a residual");
     assert!(residual.contains("coefficient"), "{residual}");
-    // A biquadratic patch on the unit sphere: σ applied to a bilinear patch (seed 000, 000-3).
+    // A biquadratic patch on the unit sphere: σ applied to a bilinear patch (Jüttler, docs/math/quadrics.md, "Curves and patches under δ").
     let sphere = pts(&[&[-1, 0, 0, 0], &[0, 1, 0, 0], &[0, 0, 1, 0], &[0, 0, 0, 1]]);
     let forms = vec![
         pts(&[&[1, 0, 0], &[0, 1, 0], &[0, 0, 1]]),

@@ -1,4 +1,4 @@
-//! Canal-surface blends with prescribed contact (seed 003 ch. 2; seed 004 §2.4–2.5, §3.8).
+//! Canal-surface blends with prescribed contact (Gruber ch. 2; Peternell §2.4–2.5, §3.8).
 //!
 //! A canal surface touches each of its spheres along the characteristic circle
 //! `K(t) ∩ K̇(t)`, `K̇: (y − m)·ṁ + r ṙ = 0`. A family with `k(0) = (c₀; r₀)`,
@@ -18,7 +18,7 @@
 //!   field it needs; an interval of `[0, 1]` with `|ṁ| < |ṙ|` is named in the error (choose
 //!   other `λ`).
 //! * **Sphere and plane.** A plane is a sphere through the centre `O` of an inversion
-//!   `ι(y) = O + (y − O)/|y − O|²` (a Möbius transformation, seed 004 §2.4: it maps spheres to
+//!   `ι(y) = O + (y − O)/|y − O|²` (a Möbius transformation, Peternell §2.4: it maps spheres to
 //!   spheres, planes through `O`… and canal surfaces to canal surfaces, conformally). The
 //!   blend between `S` and the plane `ε` with contact circle `C ⊂ ε` is `ι` of the sphere
 //!   blend between `ι(S)` and the sphere `ι(ε)` with contact circles `ι(C_S)`, `ι(C)`; `O` is

@@ -1,8 +1,8 @@
-//! The rational parametrization of a canal surface (seed 003 §2.1 (2.10)–(2.17),
-//! Peternell–Pottmann; NOTES-000-003 item 003-4, corrected) and the cyclographic
-//! construction for quadratic families (seed 003 §2.3, item 003-5).
+//! The rational parametrization of a canal surface (Gruber §2.1 (2.10)–(2.17),
+//! Peternell–Pottmann; docs/math/lines-and-canal.md, "Canal surfaces", corrected) and the cyclographic
+//! construction for quadratic families (Gruber §2.3, docs/math/lines-and-canal.md, "Canal surfaces").
 //!
-//! **Peternell–Pottmann recipe (003-4).** With the derivative numerators
+//! **Peternell–Pottmann recipe (docs/math/lines-and-canal.md, "Canal surfaces").** With the derivative numerators
 //! `P = (P₁, P₂, P₃, P₄) ∝ (ṁ, ṙ)` ([`CanalSpine::derivative_numerators`]) and a split
 //! `D = P₁² + P₂² + P₃² − P₄² = g₁² + g₂²` ([`super::sum_of_squares`]), pick a coordinate axis
 //! `j` and a sign `σ` with `c = P₄ + σPⱼ ≢ 0` (if `c ≡ 0` for one axis the stereographic image
@@ -10,7 +10,7 @@
 //! other two axes. In the frame `(a, b, σ·j)` the unit normals of the envelope along the
 //! characteristic circle are the inverse stereographic images (centre `(0, 0, 1)`) of the
 //! circle with centre `μ = −(P_a, P_b)/c` and radius² `ρ² = D/c²` (2.13, corrected per
-//! erratum 003-E4: the denominator is squared). The rational point `δ̃ = μ + g̃`,
+//! docs/math/lines-and-canal.md, Errata G4: the denominator is squared). The rational point `δ̃ = μ + g̃`,
 //! `g̃ = (g₁, g₂)/c`, is reflected in the diameters with normals `n = (u, 1)` (2.15):
 //!
 //! ```text
@@ -28,18 +28,18 @@
 //! **Certificates** (polynomial identities in `(t, u)`, homogeneous `X = (X₀, X₁, X₂, X₃)`,
 //! spine `(W, M, R)`): `Σ(XᵢW − MᵢX₀)² − R²X₀² ≡ 0` (`|x − m|² = r²`),
 //! `Σ(XᵢW − MᵢX₀)Pᵢ + R X₀ P₄ ≡ 0` (`(x − m)·ṁ + r ṙ = 0`, the contact condition, sign per
-//! erratum 003-E3), `⟨x − m, x_u⟩ ≡ 0`, `⟨x − m, x_t⟩ ≡ 0` (the normal passes through the
+//! docs/math/lines-and-canal.md, Errata G3), `⟨x − m, x_u⟩ ≡ 0`, `⟨x − m, x_t⟩ ≡ 0` (the normal passes through the
 //! spine: the surface touches every sphere), and the split `g₁² + g₂² ≡ D`.
 //!
 //! **Degree.** The exact builder tries every admissible axis and every choice of Gaussian
-//! factors of `D` (seed 003 (2.35)) with this construction and with Krasauskas' reduced
+//! factors of `D` (Gruber (2.35)) with this construction and with Krasauskas' reduced
 //! pencil ([`super::krasauskas`], over `Q`), and keeps the lowest bidegree ([`Method`]); the
-//! Krasauskas bound of seed 003 Satz 2 (2.37) is computed by [`krasauskas_bound`] for
-//! comparison — note erratum 003-E9: as printed it holds for rational `γ` and overestimates
+//! Krasauskas bound of Gruber Satz 2 (2.37) is computed by [`krasauskas_bound`] for
+//! comparison — note docs/math/lines-and-canal.md, Errata G9: as printed it holds for rational `γ` and overestimates
 //! for polynomial data (e.g. `m = (t, t²/2, 0)`, `r = t`: (2.37) gives `(6, 2)`, the
 //! construction gives `(4, 2)`).
 //!
-//! **Cyclographic construction for quadratic `k` (003-5, seed 003 §2.3).** For a polynomial
+//! **Cyclographic construction for quadratic `k` (docs/math/lines-and-canal.md, "Canal surfaces", Gruber §2.3).** For a polynomial
 //! curve `k(p) ∈ R^{3,1}` of degree ≤ 2, `k̇(p) = a + b p` and the condition
 //! `⟨w(s,t), k̇(p)⟩_pe = 0` for the isotropic direction `w(s,t) = (2s, 2t, 1 − s² − t²,
 //! 1 + s² + t²)` is linear in `p`: `p = −⟨w, a⟩/⟨w, b⟩`, and
@@ -78,7 +78,7 @@ pub struct AxisChoice {
 }
 
 impl AxisChoice {
-    /// The six admissible choices, `x₃` first (the seed's frame).
+    /// The six admissible choices, `x₃` first (Gruber's frame).
     pub fn all() -> [AxisChoice; 6] {
         let mut out = [AxisChoice {
             axis: 2,
@@ -159,7 +159,7 @@ pub struct CanalOptions {
     pub axis: Option<AxisChoice>,
     /// The parameter domain `[a, b]` on which the envelope must be real; `None`: all of `R`.
     /// If `D < 0` outside `[a, b]`, the family is reparametrized by
-    /// `t = (a + b s²)/(1 + s²)` (seed 004 §4.5), which is real for all `s`.
+    /// `t = (a + b s²)/(1 + s²)` (Peternell §4.5), which is real for all `s`.
     pub domain: Option<(Rational, Rational)>,
     /// Which constructions the exact builder may use ([`Method::Lowest`]: every one, the
     /// lowest bidegree wins).
@@ -173,14 +173,14 @@ pub enum Method {
     /// the lowest bidegree.
     #[default]
     Lowest,
-    /// Only the Peternell–Pottmann construction (seed 003 §2.1).
+    /// Only the Peternell–Pottmann construction (Gruber §2.1).
     PeternellPottmann,
-    /// Only Krasauskas' reduced pencil (seed 003 §2.4; over `Q` only — a build whose split
+    /// Only Krasauskas' reduced pencil (Gruber §2.4; over `Q` only — a build whose split
     /// needs `Q(√d)` is [`CanalError::NeedsLargerExtension`]).
     Krasauskas,
 }
 
-/// The characteristic circle `K(t) ∩ K̇(t)` at one parameter (seed 003 §2.1).
+/// The characteristic circle `K(t) ∩ K̇(t)` at one parameter (Gruber §2.1).
 #[derive(Debug, Clone, PartialEq)]
 pub struct CharacteristicCircle<F> {
     /// Centre `m − (r P₄/|P_m|²) P_m`.
@@ -207,7 +207,7 @@ pub struct CanalSurface<F> {
 /// Which construction produced a [`CanalSurface`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Construction {
-    /// Peternell–Pottmann (seed 003 §2.1, (2.10)–(2.17); module docs).
+    /// Peternell–Pottmann (Gruber §2.1, (2.10)–(2.17); module docs).
     #[default]
     PeternellPottmann,
     /// Krasauskas' pencil `f_s(a + u b)` reduced by (2.36) ([`super::krasauskas`]).
@@ -583,7 +583,7 @@ impl Certified for CanalBuild {
 }
 
 /// Reparametrizes the family by `t = (a + b s²)/(1 + s²)` (homogeneous substitution of
-/// degree `k`): real for every `s` when `D ≥ 0` on `[a, b]` (seed 004 §4.5).
+/// degree `k`): real for every `s` when `D ≥ 0` on `[a, b]` (Peternell §4.5).
 fn reparametrize<F: Scalar>(spine: &CanalSpine<F>, a: &F, b: &F) -> CanalSpine<F> {
     let k = spine.degree();
     let num = Poly::new(vec![a.clone(), F::zero(), b.clone()]);
@@ -1125,9 +1125,9 @@ impl<F: Scalar> Certified for CanalSurface<F> {
     }
 }
 
-/// The Krasauskas degree bound of seed 003 Satz 2 (2.37) for a family `γ = (m, r)` of degree
+/// The Krasauskas degree bound of Gruber Satz 2 (2.37) for a family `γ = (m, r)` of degree
 /// `k`: `(k + n, 2)` with `n = 2·max(k − 1, 2k − 2 − Σ⌈pᵢ/2⌉)`, the `pᵢ` the multiplicities of
-/// the complex-conjugate root pairs of `D` (2.35). Erratum 003-E9: valid for rational `γ`;
+/// the complex-conjugate root pairs of `D` (2.35). docs/math/lines-and-canal.md, Errata G9: valid for rational `γ`;
 /// for polynomial data the construction can be lower.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct KrasauskasBound {
@@ -1167,11 +1167,11 @@ pub fn krasauskas_bound(spine: &CanalSpine<Rational>) -> Result<KrasauskasBound,
 }
 
 // ----------------------------------------------------------------------------------------
-// quadratic families: the cyclographic construction (seed 003 §2.3)
+// quadratic families: the cyclographic construction (Gruber §2.3)
 // ----------------------------------------------------------------------------------------
 
 /// The envelope of a quadratic family `k(p) = k₀ + k₁p + k₂p²` in `R^{3,1}` by the
-/// cyclographic map (module docs, 003-5): a rational parametrization `Γ(s, t)` over the
+/// cyclographic map (module docs, docs/math/lines-and-canal.md, "Canal surfaces"): a rational parametrization `Γ(s, t)` over the
 /// scalar field of `k` (no square root), covering the whole envelope as `(s, t)` ranges
 /// over `R²` (plus the point at infinity of the isotropic directions).
 #[derive(Debug, Clone, PartialEq)]
@@ -1278,7 +1278,7 @@ impl<F: Scalar> QuadraticCanal<F> {
         &self.x
     }
 
-    /// The reparametrization `p(s, t) = N/Dn` (seed 003 (2.21)).
+    /// The reparametrization `p(s, t) = N/Dn` (Gruber (2.21)).
     pub fn parameter(&self) -> (&BiPoly<F>, &BiPoly<F>) {
         (&self.num, &self.den)
     }

@@ -1,6 +1,6 @@
 //! Base-point-free parametrizations on a parameter interval: the choice of the
-//! stereographic frame (seed 003 §2.1, "rotate coordinates if necessary"; NOTES-000-003
-//! item 003-4).
+//! stereographic frame (Gruber §2.1, "rotate coordinates if necessary";
+//! docs/math/lines-and-canal.md, "Canal surfaces").
 //!
 //! The construction of [`super::envelope`] uses the stereographic projection from the pole
 //! `e₃` of the sphere of unit normals. Where `c = P₄ + P₃` (in the construction frame)
@@ -233,7 +233,7 @@ pub(crate) fn oriented(spine: &CanalSpine<Rational>, o: Orientation) -> CanalSpi
 /// is kept: the domain patches ([`CanalSurface::domain_patches`]) are split into pieces with
 /// positive Bernstein weights (`rcagd_geom::weight_sign`, at most [`EXPORT_SPLITS`]
 /// bisections, as the recipe ops export them) and the build with fewer control points after splitting
-/// wins (on a tie, the lower bidegree). A Krasauskas build (seed 003 §2.4) often has the
+/// wins (on a tie, the lower bidegree). A Krasauskas build (Gruber §2.4) often has the
 /// lower bidegree but a weight `W·|a + u b|²` that varies more on the domain.
 ///
 /// # Errors

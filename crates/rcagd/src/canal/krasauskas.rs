@@ -1,5 +1,5 @@
-//! Krasauskas' degree reduction of rational canal surfaces (seed 003 §2.4.2, (2.29)–(2.37);
-//! NOTES-000-003 item 003-7 and errata 003-E7, 003-E9).
+//! Krasauskas' degree reduction of rational canal surfaces (Gruber §2.4.2, (2.29)–(2.37);
+//! docs/math/lines-and-canal.md, "Canal surfaces" and errata G7, G9).
 //!
 //! **The construction.** The unit normals `q` of the envelope along the characteristic
 //! circle at `t` are the points of the unit sphere in the plane `B(t)ᵀ(1, q) = 0`,
@@ -13,7 +13,7 @@
 //! `H = [[α, β], [β̄, γ]]`, `α = P₄ + σPⱼ`, `γ = P₄ − σPⱼ`, `β = P_a + iP_b` (for the axis
 //! choice `(j, σ)` and the other axes `a, b`, as in [`super::envelope`]) and
 //! `det H = −D`. Every circle of normals is the image `f_s(a(t) + u b(t))`, `u ∈ R ∪ ∞`, of a
-//! real pencil in `C²`: the ruled surface `R(t, u) = a + u b` of seed 003 §2.4.2, and the
+//! real pencil in `C²`: the ruled surface `R(t, u) = a + u b` of Gruber §2.4.2, and the
 //! envelope is
 //!
 //! ```text
@@ -41,12 +41,12 @@
 //!    `≤ deg a − deg b` with `σ | a + ρb` (a linear system over the field), then
 //!    `(a, b) ← ((a + ρb)/σ, σ̄b)`.
 //!
-//! **What it reaches.** Seed 003 Satz 2 states the degree `(k + n, 2)`,
+//! **What it reaches.** Gruber Satz 2 states the degree `(k + n, 2)`,
 //! `n = 2 max(k − 1, 2k − 2 − Σ⌈pᵢ/2⌉)` ([`super::krasauskas_bound`]), over `C`: the
 //! operations may need the roots of `D`. Over the field of the data (`Q(i)`, or
 //! `Q(√d)(i)`), step 3 needs the irreducible factors of `det(a, b)` over that field; when
 //! they are of higher degree the reduction can stop above the bound, and the result says
-//! which degree it reached. Erratum 003-E9: for polynomial data the bound (2.37) itself can
+//! which degree it reached. docs/math/lines-and-canal.md, Errata G9: for polynomial data the bound (2.37) itself can
 //! be exceeded by the construction's own degree being lower. The builders of
 //! [`super::canal_surface`] try this construction and the Peternell–Pottmann one for every
 //! axis and split and keep the lowest bidegree (e.g. the ring torus and the Dupin cyclide
@@ -133,7 +133,7 @@ impl<F: Scalar> Pencil<F> {
         deg_or_zero(&self.a).max(deg_or_zero(&self.b))
     }
 
-    /// `det(a, b) = a₀b₁ − a₁b₀` (the Plücker coordinate `l₀₁` of seed 003 (2.33)).
+    /// `det(a, b) = a₀b₁ − a₁b₀` (the Plücker coordinate `l₀₁` of Gruber (2.33)).
     pub fn det(&self) -> CPoly<F> {
         &(&self.a[0] * &self.b[1]) - &(&self.a[1] * &self.b[0])
     }

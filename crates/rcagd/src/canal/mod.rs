@@ -1,26 +1,26 @@
 //! Rational canal and pipe surfaces: envelopes of one-parameter families of spheres with a
-//! rational spine `m(t)` and a rational radius `r(t)` (seed 003 ch. 2; seed 004 §2.5, §4.5;
-//! NOTES-000-003 items 003-4, 003-5, 003-7; NOTES-004 A2.3, A3.3).
+//! rational spine `m(t)` and a rational radius `r(t)` (Gruber ch. 2; Peternell §2.5, §4.5;
+//! docs/math/lines-and-canal.md, "Canal surfaces").
 //!
 //! The sphere family `K(t): |x − m|² − r² = 0` envelops the canal surface `Γ = K ∩ K̇` with
-//! `K̇: (x − m)·ṁ + r ṙ = 0` (seed 003 (2.2), sign corrected per erratum 003-E3); the
+//! `K̇: (x − m)·ṁ + r ṙ = 0` (Gruber (2.2), sign corrected: docs/math/lines-and-canal.md, Errata G3); the
 //! characteristic circles are real iff `D = |ṁ|² − ṙ² ≥ 0` (2.8)/(2.18).
 //!
 //! Map of the module:
 //!
 //! * [`CanalSpine`]: the curve `k(t) = (m(t), r(t))` of the cyclographic model as
 //!   homogeneous polynomials `(W, M₁, M₂, M₃, R)`, `m = M/W`, `r = R/W`; the derivative
-//!   numerators `P = W X' − W' X` (content removed, erratum 003-E8), the discriminant
+//!   numerators `P = W X' − W' X` (content removed, docs/math/lines-and-canal.md, Errata G8), the discriminant
 //!   `D = P₁² + P₂² + P₃² − P₄²`, and the reality check that names the parameter interval
 //!   where `|ṁ| < |ṙ|` ([`CanalError::NoRealEnvelope`]);
 //! * [`factor`]: exact factorization over `Q` and `Q(i)`;
 //! * [`sum_of_squares`]: `D = g₁² + g₂²` exactly over `Q` when possible, else over the
 //!   quadratic extension it needs (stated in the result), else an error; an explicit `f64`
 //!   path;
-//! * [`envelope`]: the Peternell–Pottmann construction (003-4) producing the rational
+//! * [`envelope`]: the Peternell–Pottmann construction (docs/math/lines-and-canal.md, "Canal surfaces") producing the rational
 //!   parametrization `x(t, u)` with its certificates, the degree choice and the Krasauskas
-//!   bound (seed 003 §2.4), the characteristic circles, both orientations; and the
-//!   cyclographic construction for quadratic `k` (003-5, seed 003 §2.3);
+//!   bound (Gruber §2.4), the characteristic circles, both orientations; and the
+//!   cyclographic construction for quadratic `k` (docs/math/lines-and-canal.md, "Canal surfaces", Gruber §2.3);
 //! * [`frame`]: the choice of the stereographic frame (a rational Householder reflection)
 //!   that makes the parametrization free of base points on a parameter interval;
 //! * [`pipe`]: pipe surfaces (constant radius), in particular around PH curves where
@@ -28,7 +28,7 @@
 //! * [`blend`]: canal-surface blends between two spheres (or a sphere and a plane) with
 //!   prescribed contact circles.
 //!
-//! * [`krasauskas`]: Krasauskas' construction (seed 003 §2.4): the circles of normals as
+//! * [`krasauskas`]: Krasauskas' construction (Gruber §2.4): the circles of normals as
 //!   `f_s(a(t) + u b(t))` of a real pencil in `C²`, reduced by the operations (2.36) (and
 //!   their combination, which also removes collapsed circles). [`canal_surface`] tries it
 //!   beside Peternell–Pottmann for every axis and split ([`Method`]) and keeps the lowest
@@ -41,7 +41,7 @@
 //! over `C`; the reduction works over the field of the data (`Q(i)`), so when the factors of
 //! `det(a, b)` are irreducible over `Q(i)` of degree > 1 it can stop above the bound (test
 //! `seed003_examples::s003_2_4_krasauskas_reduction`: `(6, 2)` against `(4, 2)`); builds
-//! over `Q(√d)` use Peternell–Pottmann only. Erratum 003-E9: for polynomial data the bound
+//! over `Q(√d)` use Peternell–Pottmann only. docs/math/lines-and-canal.md, Errata G9: for polynomial data the bound
 //! can be *above* what the constructions reach.
 
 pub mod bipoly;
@@ -89,7 +89,7 @@ use thiserror::Error;
 #[derive(Debug, Clone, PartialEq, Eq, Error)]
 pub enum CanalError {
     /// `|ṁ|² − ṙ² < 0` on a parameter interval: the spheres there have no real envelope
-    /// (seed 003 (2.8)/(2.18)).
+    /// (Gruber (2.8)/(2.18)).
     #[error("no real envelope: |m'|² − r'² < 0 for t in ({from}, {to}) (e.g. at t = {witness}, where it is {value}); the sphere family is not enveloped there (Gruber (2.18))")]
     NoRealEnvelope {
         /// Lower end of the interval (a root of `D`, or the domain end, or `−∞`).
@@ -186,7 +186,7 @@ pub enum CanalError {
 }
 
 /// The curve `k(t) = (m(t), r(t))` of the cyclographic model of a rational sphere family:
-/// homogeneous polynomials `(W, M₁, M₂, M₃, R)` with `m = M/W` and `r = R/W` (seed 003
+/// homogeneous polynomials `(W, M₁, M₂, M₃, R)` with `m = M/W` and `r = R/W` (Gruber
 /// §2.2 (2.19)).
 #[derive(Debug, Clone, PartialEq)]
 pub struct CanalSpine<F> {
@@ -380,7 +380,7 @@ impl<F: Scalar> CanalSpine<F> {
 
     /// The derivative numerators `P = W X' − W' X` for `X = (M₁, M₂, M₃, R)` (so
     /// `(ṁ, ṙ) = P/W²`), divided by their common divisor `d` for exact scalars (the
-    /// direction `B = (ṙ, ṁ)/d` of seed 003 (2.31), corrected per erratum 003-E8).
+    /// direction `B = (ṙ, ṁ)/d` of Gruber (2.31), corrected: docs/math/lines-and-canal.md, Errata G8).
     ///
     /// # Errors
     /// [`CanalError::DegenerateSpine`] if all four vanish (a constant sphere).
@@ -408,8 +408,8 @@ impl<F: Scalar> CanalSpine<F> {
         Ok(p)
     }
 
-    /// The discriminant `D = P₁² + P₂² + P₃² − P₄²` (`= (|ṁ|² − ṙ²)·W⁴/d²`, seed 003 (2.34)
-    /// corrected per erratum 003-E8). Real characteristic circles iff `D ≥ 0`.
+    /// The discriminant `D = P₁² + P₂² + P₃² − P₄²` (`= (|ṁ|² − ṙ²)·W⁴/d²`, Gruber (2.34)
+    /// corrected: docs/math/lines-and-canal.md, Errata G8). Real characteristic circles iff `D ≥ 0`.
     ///
     /// # Errors
     /// As [`Self::derivative_numerators`].
@@ -452,7 +452,7 @@ impl<F: Scalar> CanalSpine<F> {
 
 impl CanalSpine<Rational> {
     /// The sphere family `μ(c(t))` of a rational curve `c(t) = (c₀, …, c₄)` of the Möbius
-    /// model `P⁴` (seed 004 §2.4–2.5, (2.13), Thm 2.3): centres `cᵢ/(c₀ − c₄)`, squared
+    /// model `P⁴` (Peternell §2.4–2.5, (2.13), Thm 2.3): centres `cᵢ/(c₀ − c₄)`, squared
     /// radius `N/(c₀ − c₄)²` with `N = c₁² + c₂² + c₃² + c₄² − c₀²`. The family has a rational
     /// radius (the setting of this module) iff `N` is the square of a polynomial; then
     /// `W = c₀ − c₄`, `M = (c₁, c₂, c₃)`, `R = √N`.

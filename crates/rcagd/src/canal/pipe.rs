@@ -1,12 +1,12 @@
-//! Pipe surfaces: canal surfaces of constant radius (seed 003 §2.1 "Rohrfläche"; seed 004
+//! Pipe surfaces: canal surfaces of constant radius (Gruber §2.1 "Rohrfläche"; Peternell
 //! Cor. 4.3: pipes around rational spines are rational).
 //!
 //! For a constant radius `ṙ ≡ 0`, so `D = |ṁ|²·W⁴/d²`, and the construction of
 //! [`super::envelope`] needs `|ṁ|²` as a sum of two squares:
 //!
-//! * around a **PH curve** (seed 001; `|r'|² = σ²`) the split is `(σ/d, 0)` — rational over
+//! * around a **PH curve** (Besednjak; `|r'|² = σ²`) the split is `(σ/d, 0)` — rational over
 //!   the scalar field of the curve, generic over [`Scalar`] (also `f64`), no factorization
-//!   ([`pipe_around_ph`], [`pipe_around_ph_poly`]); this is the case singled out by seed 003
+//!   ([`pipe_around_ph`], [`pipe_around_ph_poly`]); this is the case singled out by Gruber
 //!   §2.1 ("Pythagorean-Hodograph Kurven … lassen eine einfachere Konstruktion zu");
 //! * around a **planar** spine (`ṁ₃ ≡ 0` in some coordinate) the split is `(ṁ₁, ṁ₂)`;
 //! * around any other rational spine the exact split of [`super::sum_of_squares`] decides
@@ -58,7 +58,7 @@ pub fn pipe_around_ph_parts<F: Scalar>(
     canal_surface_with_split(&spine, &g1, &Poly::zero(), options)
 }
 
-/// The pipe of radius `r` around a spatial PH curve in quaternion form (seed 001 ALG-1):
+/// The pipe of radius `r` around a spatial PH curve in quaternion form (docs/math/ph-curves.md, "The hodograph and the speed"):
 /// split `(σ, 0)`, exact over the curve's scalar field.
 ///
 /// # Errors

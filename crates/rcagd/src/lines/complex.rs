@@ -1,7 +1,7 @@
-//! Linear line complexes and their null polarity (seed 003 §1.1.3).
+//! Linear line complexes and their null polarity (Gruber §1.1.3).
 //!
 //! A linear complex `C(c)` is the set of lines `x` with
-//! `c₄x₁ + c₅x₂ + c₆x₃ + c₁x₄ + c₂x₅ + c₃x₆ = ⟨c̄, x⟩ + ⟨c, x̄⟩ = Ω(c, x) = 0` (seed 003 (1.11)).
+//! `c₄x₁ + c₅x₂ + c₆x₃ + c₁x₄ + c₂x₅ + c₃x₆ = ⟨c̄, x⟩ + ⟨c, x̄⟩ = Ω(c, x) = 0` (Gruber (1.11)).
 //! It is *singular* if `c` itself is a line (`c₁c₄ + c₂c₅ + c₃c₆ = 0`): then `C` consists of
 //! the lines meeting the axis `c`; otherwise *regular*.
 //!
@@ -23,7 +23,7 @@ use super::{all_zero, dot, fmt_vec, is_small, scale_of, LineError};
 use crate::Certified;
 use rcagd_algebra::{Certificate, Matrix, Scalar};
 
-/// A linear line complex `Ω(c, x) = 0` (seed 003 (1.11)).
+/// A linear line complex `Ω(c, x) = 0` (Gruber (1.11)).
 #[derive(Debug, Clone, PartialEq)]
 pub struct LinearComplex<F> {
     c: [F; 6],

@@ -1,4 +1,4 @@
-//! Linear line congruences (line nets, seed 003 §1.1.4–1.1.6): the lines common to two
+//! Linear line congruences (line nets, Gruber §1.1.4–1.1.6): the lines common to two
 //! linear complexes `C(c₁) ∩ C(c₂)`.
 //!
 //! **Classification.** The complexes of the pencil `σc₁ + τc₂` are singular where
@@ -12,12 +12,12 @@
 //! * `Δ = 0` (not all `Ωᵢⱼ` zero): one double focal line: **parabolic** net;
 //! * `Ω₁₁ = Ω₁₂ = Ω₂₂ = 0`: every complex of the pencil is singular, the axes form a pencil of
 //!   lines with vertex `V` in a plane `ε`, and the congruence is the bundle through `V`
-//!   together with the field in `ε` (the **singular** net of seed 003 §1.1.6).
+//!   together with the field in `ε` (the **singular** net of Gruber §1.1.6).
 //!
 //! The focal lines `(−Ω₁₂ ± √Δ)/Ω₁₁ · c₁ + c₂` need `√Δ`; they are returned over
 //! [`SqrtScalar::Ext`] ([`rcagd_algebra::QuadExt`] for exact input).
 //!
-//! **Fibration** (seed 003 §1.1.5): through a point `p` that is not on a focal line (nor the
+//! **Fibration** (Gruber §1.1.5): through a point `p` that is not on a focal line (nor the
 //! vertex/plane of a singular net) passes exactly one line of a regular net, the
 //! intersection of the null planes of `p` in the two complexes — a rational construction,
 //! also for elliptic nets.
@@ -29,7 +29,7 @@ use crate::Certified;
 use num_traits::{One, Zero};
 use rcagd_algebra::{Certificate, Scalar};
 
-/// The type of a linear congruence (seed 003 §1.1.6).
+/// The type of a linear congruence (Gruber §1.1.6).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum CongruenceKind {
     /// Two real skew focal lines.
@@ -150,7 +150,7 @@ impl<F: Scalar> LinearCongruence<F> {
     }
 
     /// The unique line of the congruence through `p`: the intersection of the null planes of
-    /// `p` in both complexes (seed 003 §1.1.5, fibration).
+    /// `p` in both complexes (Gruber §1.1.5, fibration).
     ///
     /// # Errors
     /// [`LineError::SingularPoint`] if `p` lies on a focal line (or an axis of a singular
@@ -171,7 +171,7 @@ impl<F: Scalar> LinearCongruence<F> {
 }
 
 /// The line `ε(u) ∩ φ(v)` of the hyperbolic net with focal lines `a₁, a₂`: the planes of
-/// the pencils about `a₁` and `a₂` (seed 003 §1.1.6, "Hyperbolisches Netz": all net lines are
+/// the pencils about `a₁` and `a₂` (Gruber §1.1.6, "Hyperbolisches Netz": all net lines are
 /// obtained by intersecting the pencil `ε(u)` about `a₁` with the pencil `φ(v)` about `a₂`).
 ///
 /// # Errors

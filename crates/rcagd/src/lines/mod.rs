@@ -1,5 +1,5 @@
-//! Line geometry of projective 3-space in Plücker coordinates (seed 003 §1.1, NOTES-000-003
-//! item 003-1/003-2).
+//! Line geometry of projective 3-space in Plücker coordinates (Gruber §1.1;
+//! docs/math/lines-and-canal.md, "Plücker coordinates" and "Complexes, congruences, reguli").
 //!
 //! Conventions (used throughout rcagd):
 //!
@@ -8,23 +8,23 @@
 //! * a **plane** is a coordinate vector `u = (u₀, u₁, u₂, u₃)` of the plane
 //!   `u₀x₀ + u₁x₁ + u₂x₂ + u₃x₃ = 0`, i.e. `u₀ + u₁x + u₂y + u₃z = 0` in affine coordinates;
 //! * a **line** `l = p ∧ q = (l₁, l₂, l₃; l₄, l₅, l₆) = (l₀₁, l₀₂, l₀₃; l₂₃, l₃₁, l₁₂)` with
-//!   `l_ik = p_i q_k − p_k q_i` (seed 003 (1.1)); for affine points `(l₁, l₂, l₃)` is the
+//!   `l_ik = p_i q_k − p_k q_i` (Gruber (1.1)); for affine points `(l₁, l₂, l₃)` is the
 //!   direction `q − p` and `(l₄, l₅, l₆) = p × (q − p)` the moment vector;
-//! * the **Klein quadric** (Plücker identity, seed 003 (1.3)/(1.6)) is
+//! * the **Klein quadric** (Plücker identity, Gruber (1.3)/(1.6)) is
 //!   `l₁l₄ + l₂l₅ + l₃l₆ = 0`, and its polar (symmetric bilinear) form is the
 //!   *reciprocal product* `Ω(g, h) = ⟨ḡ, h⟩ + ⟨g, h̄⟩ = g₁h₄ + g₂h₅ + g₃h₆ + g₄h₁ + g₅h₂ + g₆h₃`
-//!   (seed 003 (1.10)): two lines meet (or are parallel) iff `Ω(g, h) = 0`, and a line lies
-//!   in the linear complex `C` iff `Ω(c, x) = 0` (seed 003 (1.11)).
+//!   (Gruber (1.10)): two lines meet (or are parallel) iff `Ω(g, h) = 0`, and a line lies
+//!   in the linear complex `C` iff `Ω(c, x) = 0` (Gruber (1.11)).
 //!
 //! Map of the module:
 //!
 //! * [`plucker`]: [`Line`] (from two points, two planes, point and direction, coordinates),
-//!   the incidence matrix (1.7), points and planes of a line (the `sᵢ` of 003-1), meeting,
-//!   intersection point and joining plane, the polarity `E` of 003-2 (1.19);
+//!   the incidence matrix (1.7), points and planes of a line (the `sᵢ` of docs/math/lines-and-canal.md, "Plücker coordinates"), meeting,
+//!   intersection point and joining plane, the polarity `E` of docs/math/lines-and-canal.md, "Complexes, congruences, reguli" (1.19);
 //! * [`complex`]: [`LinearComplex`]: regular and singular complexes, the null polarity,
 //!   axis and parameter;
 //! * [`congruence`]: [`LinearCongruence`] = the intersection of two linear complexes (a line
-//!   net, seed 003 §1.1.6), classified as hyperbolic, elliptic, parabolic or degenerate with
+//!   net, Gruber §1.1.6), classified as hyperbolic, elliptic, parabolic or degenerate with
 //!   its focal lines, and the fibration `point ↦ the net line through it`;
 //! * [`regulus`]: [`Regulus`] through three pairwise skew lines (both rulings as rational
 //!   families with the carrier quadric) and [`common_transversals`] of four lines;

@@ -1,4 +1,4 @@
-//! Plücker coordinates of lines (seed 003 §1.1.1–1.1.2, NOTES-000-003 item 003-1).
+//! Plücker coordinates of lines (Gruber §1.1.1–1.1.2, docs/math/lines-and-canal.md, "Plücker coordinates").
 //!
 //! * `l = p ∧ q`, `l_ik = p_i q_k − p_k q_i`, `l = (l₀₁, l₀₂, l₀₃; l₂₃, l₃₁, l₁₂)` (1.1);
 //!   `(λp + μq) ∧ (ρp + σq) = (λσ − μρ)(p ∧ q)` (1.2);
@@ -14,12 +14,12 @@
 //!   and maps a plane `u ⊅ l` to the point `l ∩ u`;
 //! * the points `s₁ = (0, l₁, l₂, l₃)`, `s₂ = (−l₁, 0, l₆, −l₅)`, `s₃ = (−l₂, −l₆, 0, l₄)`,
 //!   `s₄ = (−l₃, l₅, −l₄, 0)` of `l` in the coordinate planes; `sᵢ ∧ sⱼ` is `l` times
-//!   `l₁, l₂, l₃, l₆, −l₅, l₄` for the pairs 12, 13, 14, 23, 24, 34 (003-1, corrected per
-//!   erratum 003-E23: the factor may vanish, so a pair with a non-zero factor is chosen);
+//!   `l₁, l₂, l₃, l₆, −l₅, l₄` for the pairs 12, 13, 14, 23, 24, 34 (docs/math/lines-and-canal.md, "Plücker coordinates",
+//!   Errata G23: the factor may vanish, so a pair with a non-zero factor is chosen);
 //! * two lines meet (or are parallel) iff `Ω(g, h) = ⟨ḡ, h⟩ + ⟨g, h̄⟩ = 0` (1.10; the text
-//!   before (1.8) should read `q − p ⊥ g × h`, erratum 003-E1);
+//!   before (1.8) should read `q − p ⊥ g × h`, docs/math/lines-and-canal.md, Errata G1);
 //! * the polarity with respect to `Ω: y₁² + y₂² + y₃² − y₄² = 0` (the absolute quadric of the
-//!   cyclographic model, 003-2): `h = E g`,
+//!   cyclographic model, docs/math/lines-and-canal.md, "Complexes, congruences, reguli"): `h = E g`,
 //!   `E = [[0, diag(−1, −1, 1)], [diag(1, 1, −1), 0]]`, `E² = −I` (1.19).
 
 use super::{all_zero, dot, fmt_vec, is_small, proportional, scale_of, LineError};
@@ -27,13 +27,13 @@ use crate::Certified;
 use rcagd_algebra::{Certificate, Ring, Scalar};
 
 /// The wedge `p ∧ q = (p₀q₁ − p₁q₀, p₀q₂ − p₂q₀, p₀q₃ − p₃q₀; p₂q₃ − p₃q₂, p₃q₁ − p₁q₃,
-/// p₁q₂ − p₂q₁)` of two homogeneous 4-vectors (seed 003 (1.1)).
+/// p₁q₂ − p₂q₁)` of two homogeneous 4-vectors (Gruber (1.1)).
 pub fn wedge<F: Ring>(p: &[F; 4], q: &[F; 4]) -> [F; 6] {
     let l = |i: usize, k: usize| p[i].clone() * q[k].clone() - p[k].clone() * q[i].clone();
     [l(0, 1), l(0, 2), l(0, 3), l(2, 3), l(3, 1), l(1, 2)]
 }
 
-/// The reciprocal product (polar form of the Klein quadric, seed 003 (1.10)/(1.11)):
+/// The reciprocal product (polar form of the Klein quadric, Gruber (1.10)/(1.11)):
 /// `Ω(g, h) = g₁h₄ + g₂h₅ + g₃h₆ + g₄h₁ + g₅h₂ + g₆h₃`.
 pub fn reciprocal_product<F: Ring>(g: &[F; 6], h: &[F; 6]) -> F {
     g[0].clone() * h[3].clone()
@@ -44,13 +44,13 @@ pub fn reciprocal_product<F: Ring>(g: &[F; 6], h: &[F; 6]) -> F {
         + g[5].clone() * h[2].clone()
 }
 
-/// The Plücker form `l₁l₄ + l₂l₅ + l₃l₆ = Ω(l, l)/2` (seed 003 (1.3)).
+/// The Plücker form `l₁l₄ + l₂l₅ + l₃l₆ = Ω(l, l)/2` (Gruber (1.3)).
 pub fn klein_form<F: Ring>(l: &[F; 6]) -> F {
     l[0].clone() * l[3].clone() + l[1].clone() * l[4].clone() + l[2].clone() * l[5].clone()
 }
 
 /// The swap `(l₁, l₂, l₃; l₄, l₅, l₆) ↦ (l₄, l₅, l₆; l₁, l₂, l₃)` between Plücker and axis
-/// coordinates (seed 003 (1.5)).
+/// coordinates (Gruber (1.5)).
 pub fn swap<F: Clone>(l: &[F; 6]) -> [F; 6] {
     [
         l[3].clone(),
@@ -100,7 +100,7 @@ pub enum LineOrigin<F> {
 }
 
 /// A line of projective 3-space in Plücker coordinates
-/// `(l₁, l₂, l₃; l₄, l₅, l₆) = (l₀₁, l₀₂, l₀₃; l₂₃, l₃₁, l₁₂)` (seed 003 (1.1)); the
+/// `(l₁, l₂, l₃; l₄, l₅, l₆) = (l₀₁, l₀₂, l₀₃; l₂₃, l₃₁, l₁₂)` (Gruber (1.1)); the
 /// coordinates are homogeneous (a line is a point of the Klein quadric).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Line<F> {
@@ -109,7 +109,7 @@ pub struct Line<F> {
 }
 
 impl<F: Scalar> Line<F> {
-    /// The line `p ∧ q` through two homogeneous points (seed 003 (1.1)).
+    /// The line `p ∧ q` through two homogeneous points (Gruber (1.1)).
     ///
     /// # Errors
     /// [`LineError::CoincidentPoints`] if `p ∧ q = 0` (the points coincide projectively,
@@ -150,7 +150,7 @@ impl<F: Scalar> Line<F> {
     }
 
     /// The intersection of two planes `u, v`: `l = (a₄, a₅, a₆; a₁, a₂, a₃)` for
-    /// `a = u ∧ v` (axis coordinates, seed 003 (1.5)).
+    /// `a = u ∧ v` (axis coordinates, Gruber (1.5)).
     ///
     /// # Errors
     /// [`LineError::CoincidentPlanes`] if `u ∧ v = 0`.
@@ -166,7 +166,7 @@ impl<F: Scalar> Line<F> {
         })
     }
 
-    /// A line from six coordinates on the Klein quadric (seed 003 (1.3)/(1.4)).
+    /// A line from six coordinates on the Klein quadric (Gruber (1.3)/(1.4)).
     ///
     /// # Errors
     /// [`LineError::ZeroVector`] for the zero vector, [`LineError::NotOnKleinQuadric`] if
@@ -208,7 +208,7 @@ impl<F: Scalar> Line<F> {
         &self.origin
     }
 
-    /// The axis (plane) coordinates `(l₄, l₅, l₆; l₁, l₂, l₃)` (seed 003 (1.5)).
+    /// The axis (plane) coordinates `(l₄, l₅, l₆; l₁, l₂, l₃)` (Gruber (1.5)).
     pub fn axis_coords(&self) -> [F; 6] {
         swap(&self.coords)
     }
@@ -238,12 +238,12 @@ impl<F: Scalar> Line<F> {
         d.iter().all(|x| is_small(x, s))
     }
 
-    /// `l₁l₄ + l₂l₅ + l₃l₆` (zero for every line, seed 003 (1.3)).
+    /// `l₁l₄ + l₂l₅ + l₃l₆` (zero for every line, Gruber (1.3)).
     pub fn klein_form(&self) -> F {
         klein_form(&self.coords)
     }
 
-    /// The reciprocal product `Ω(self, other)` (seed 003 (1.10)).
+    /// The reciprocal product `Ω(self, other)` (Gruber (1.10)).
     pub fn reciprocal_product(&self, other: &Line<F>) -> F {
         reciprocal_product(&self.coords, &other.coords)
     }
@@ -279,7 +279,7 @@ impl<F: Scalar> Line<F> {
             .all(|x| is_small(x, s))
     }
 
-    /// The points `s₁, …, s₄` of the line in the coordinate planes `xᵢ = 0` (003-1); some
+    /// The points `s₁, …, s₄` of the line in the coordinate planes `xᵢ = 0` (docs/math/lines-and-canal.md, "Plücker coordinates"); some
     /// may be zero.
     pub fn coordinate_plane_points(&self) -> [[F; 4]; 4] {
         let [l1, l2, l3, l4, l5, l6] = self.coords.clone();
@@ -292,9 +292,9 @@ impl<F: Scalar> Line<F> {
         ]
     }
 
-    /// Two distinct points spanning the line: the pair `sᵢ, sⱼ` of 003-1 whose factor
+    /// Two distinct points spanning the line: the pair `sᵢ, sⱼ` of docs/math/lines-and-canal.md, "Plücker coordinates" whose factor
     /// (`l₁, l₂, l₃, l₆, −l₅, l₄` for the pairs 12, 13, 14, 23, 24, 34) is largest in
-    /// absolute value (non-zero, erratum 003-E23), so `sᵢ ∧ sⱼ = factor · l`.
+    /// absolute value (non-zero, docs/math/lines-and-canal.md, Errata G23), so `sᵢ ∧ sⱼ = factor · l`.
     pub fn points(&self) -> ([F; 4], [F; 4]) {
         let s = self.coordinate_plane_points();
         let pairs = [
@@ -324,7 +324,7 @@ impl<F: Scalar> Line<F> {
     }
 
     /// The plane `(1 − s)e + s f` of the pencil of planes through the line, `(e, f)` =
-    /// [`Self::planes`] (seed 003 §1.1.6: the pencils `ε(u)`, `φ(v)` about the focal lines).
+    /// [`Self::planes`] (Gruber §1.1.6: the pencils `ε(u)`, `φ(v)` about the focal lines).
     pub fn pencil_plane(&self, s: &F) -> [F; 4] {
         let (e, f) = self.planes();
         core::array::from_fn(|i| (F::one() - s.clone()) * e[i].clone() + s.clone() * f[i].clone())
@@ -367,7 +367,7 @@ impl<F: Scalar> Line<F> {
         proportional(&self.coords, &other.coords)
     }
 
-    /// `true` if the lines meet or are parallel (`Ω(g, h) = 0`, seed 003 (1.10)).
+    /// `true` if the lines meet or are parallel (`Ω(g, h) = 0`, Gruber (1.10)).
     pub fn meets(&self, other: &Line<F>) -> bool {
         let s = scale_of(&self.coords) * scale_of(&other.coords);
         is_small(&self.reciprocal_product(other), s)
@@ -424,7 +424,7 @@ impl<F: Scalar> Line<F> {
 
     /// The polar line with respect to the absolute quadric `Ω: y₁² + y₂² + y₃² − y₄² = 0`
     /// of the ideal space of the cyclographic model: `h = E g` with
-    /// `E = [[0, diag(−1, −1, 1)], [diag(1, 1, −1), 0]]` (seed 003 (1.19), 003-2).
+    /// `E = [[0, diag(−1, −1, 1)], [diag(1, 1, −1), 0]]` (Gruber (1.19), docs/math/lines-and-canal.md, "Complexes, congruences, reguli").
     /// Coordinates here are those of lines of the 3-space `ω: y₀ = 0` with points
     /// `(y₁, y₂, y₃, y₄)`.
     pub fn polar_omega(&self) -> Line<F> {

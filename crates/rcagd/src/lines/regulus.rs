@@ -10,7 +10,7 @@
 //!
 //! The **transversals** (the complementary regulus, the lines meeting `a, b, c`): through
 //! the point `P(s) = (1 − s)p₀ + s p₁` of `a` passes exactly one, the intersection of the
-//! planes `P ∨ b = M(b)P` and `P ∨ c = M(c)P` (seed 003 §1.1.6, hyperbolic net); its
+//! planes `P ∨ b = M(b)P` and `P ∨ c = M(c)P` (Gruber §1.1.6, hyperbolic net); its
 //! Plücker coordinates are quadratic polynomials in `s`.
 //!
 //! The carrier quadric `xᵀQx = 0` contains both rulings; it is the kernel of the 9 linear

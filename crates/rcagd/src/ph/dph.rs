@@ -1,19 +1,19 @@
 //! Double-PH (DPH) curves: the DPH test, the Hopf proportionality polynomial, the
 //! classification for degrees 3, 5 and 7, and the septic DPH constructor.
 //!
-//! * ALG-5 (NOTES-001; seed 001 §4.1 (4.2)): a PH curve is DPH iff `ρ = |r'×r''|²/σ²`
+//! * (docs/math/ph-curves.md, "DPH test and the rational Frenet frame"; Besednjak §4.1 (4.2)): a PH curve is DPH iff `ρ = |r'×r''|²/σ²`
 //!   is the square of a real polynomial `ω`. Over `Q` we test `ρ = c·ω̃²` with `ω̃ ∈ Q[t]`
-//!   monic and `c = lc(ρ) > 0` (often not a rational square, e.g. seed 001 Ex 8.1,
+//!   monic and `c = lc(ρ) > 0` (often not a rational square, e.g. Besednjak Ex 8.1,
 //!   `ω = 6√5·t(t³−2t²+2t+2)`), so `ω = √c·ω̃`.
-//! * Hopf form (seed 001 §4.3, (4.15); erratum 15): `αβ' − α'β = g + i f` with
-//!   `f = up'−u'p+vq'−v'q`, `g = uq'−u'q−vp'+v'p` (erratum 12), and the curve is DPH iff
+//! * Hopf form (Besednjak §4.3, (4.15); docs/math/ph-curves.md, Errata E15): `αβ' − α'β = g + i f` with
+//!   `f = up'−u'p+vq'−v'q`, `g = uq'−u'q−vp'+v'p` (docs/math/ph-curves.md, Errata E12), and the curve is DPH iff
 //!   `αβ' − α'β = h·w²` for a real polynomial `h` and a complex polynomial `w`
 //!   (up to a complex constant).
-//! * Low degrees (seed 001 §5, NOTES-001 ALG-5): with `P_ij = α_iβ_j − α_jβ_i` of the
+//! * Low degrees (Besednjak §5, docs/math/ph-curves.md, "DPH test and the rational Frenet frame"): with `P_ij = α_iβ_j − α_jβ_i` of the
 //!   Bernstein coefficients, every PH cubic is DPH; a quintic is DPH iff
 //!   `4P_01P_12 = P_02²` (5.3; `st h = 0`, `st w = 1`, "monotone") or `P_01, P_02, P_12` are
 //!   real multiples of one complex number (5.4; `st h = 2`, `st w = 0`, "general").
-//! * Septics (seed 001 §5.2, NOTES-001 ALG-9, erratum 16): the constructor below.
+//! * Septics (Besednjak §5.2, docs/math/ph-curves.md, "Septic DPH constructor", docs/math/ph-curves.md, Errata E16): the constructor below.
 
 use super::hodograph::{PhCurve, PhPolyCurve};
 use super::util::*;
@@ -83,7 +83,7 @@ pub enum DphTest<F> {
 }
 
 impl<F: Scalar> PhPolyCurve<F> {
-    /// The DPH test `ρ = c·ω̃²` (NOTES-001 ALG-5, seed 001 (4.2)).
+    /// The DPH test `ρ = c·ω̃²` (docs/math/ph-curves.md, "DPH test and the rational Frenet frame", Besednjak (4.2)).
     ///
     /// # Errors
     /// As [`PhPolyCurve::rho`].
@@ -125,7 +125,7 @@ impl<F: Scalar> PhPolyCurve<F> {
         }
     }
 
-    /// Certificate `|r'×r''|² − σ²·c·ω̃² ≡ 0` (NOTES-001 §2 "DPH").
+    /// Certificate `|r'×r''|² − σ²·c·ω̃² ≡ 0` (docs/math/ph-curves.md, "DPH test and the rational Frenet frame").
     pub fn certify_dph(&self, dph: &DphData<F>) -> Vec<Certificate> {
         let c = self.cross_r1_r2();
         let s2 = &self.sigma * &self.sigma;
@@ -138,8 +138,8 @@ impl<F: Scalar> PhPolyCurve<F> {
 }
 
 /// The factorization `αβ' − α'β = λ·h·W²` with `h = gcd(Re, Im)` real monic, `W` monic
-/// complex and `λ` a complex constant (seed 001 §4.3; NOTES-001 ALG-5 Hopf form). `h`
-/// is the maximal real factor, so in the degenerate overlaps of seed 001 §6.2 (a real
+/// complex and `λ` a complex constant (Besednjak §4.3; docs/math/ph-curves.md, "DPH test and the rational Frenet frame" Hopf form). `h`
+/// is the maximal real factor, so in the degenerate overlaps of Besednjak §6.2 (a real
 /// square factor of `w²`) it absorbs that factor.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ProportionalityFactors<F> {
@@ -151,7 +151,7 @@ pub struct ProportionalityFactors<F> {
     pub w: Poly<Complex<F>>,
 }
 
-/// Kind of a DPH quintic by the conditions (5.3)/(5.4) of seed 001 §5.1.
+/// Kind of a DPH quintic by the conditions (5.3)/(5.4) of Besednjak §5.1.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum QuinticDphKind {
     /// `4P_01P_12 = P_02²` (`st h = 0`, `st w = 1`; a monotone helix).
@@ -159,7 +159,7 @@ pub enum QuinticDphKind {
     /// `P_01, P_02, P_12` real multiples of one complex number (`st h = 2`, `st w = 0`; a
     /// general helix).
     General,
-    /// Both conditions (degenerate overlap, seed 001 §6.2.3 end).
+    /// Both conditions (degenerate overlap, Besednjak §6.2.3 end).
     Both,
     /// Neither: not DPH.
     NotDph,
@@ -175,7 +175,7 @@ pub enum DphClass {
     /// A straight line (`αβ' − α'β ≡ 0`).
     Line,
     /// DPH with `αβ' − α'β = λ h W²`, `deg h = h_degree`, `deg W = w_degree`, and whether
-    /// the curve is a helix (decided by the exact axis test, NOTES-001 ALG-6b).
+    /// the curve is a helix (decided by the exact axis test, docs/math/ph-curves.md, "Helix test and axis").
     Dph {
         /// `st(h)`.
         h_degree: usize,
@@ -187,21 +187,21 @@ pub enum DphClass {
 }
 
 impl<F: Scalar> PhCurve<F> {
-    /// The proportionality polynomial `αβ' − α'β` (seed 001 (4.15)).
+    /// The proportionality polynomial `αβ' − α'β` (Besednjak (4.15)).
     pub fn proportionality(&self) -> Poly<Complex<F>> {
         let (a, b) = self.hopf_polys();
         &(&a * &b.derivative()) - &(&a.derivative() * &b)
     }
 
     /// `(g, f)` with `αβ' − α'β = g + i f`, `f = up'−u'p+vq'−v'q`, `g = uq'−u'q−vp'+v'p`
-    /// (seed 001 (4.9), corrected per erratum 12).
+    /// (Besednjak (4.9), corrected: docs/math/ph-curves.md, Errata E12).
     pub fn proportionality_re_im(&self) -> (Poly<F>, Poly<F>) {
         let p = self.proportionality();
         (p.map(|c| c.re.clone()), p.map(|c| c.im.clone()))
     }
 
     /// The Bernstein products `P_ij = α_iβ_j − α_jβ_i` of the Hopf coefficients
-    /// (seed 001 §5), as a full antisymmetric table.
+    /// (Besednjak §5), as a full antisymmetric table.
     pub fn plucker(&self) -> Vec<Vec<Complex<F>>> {
         let (a, b) = self.hopf_coefficients();
         let n = a.len();
@@ -246,7 +246,7 @@ impl<F: Scalar> PhCurve<F> {
         Ok(cpoly_monic_sqrt(&qm).map(|w| ProportionalityFactors { lambda, h, w }))
     }
 
-    /// Classification (NOTES-001 ALG-5/ALG-9): DPH or not by `αβ' − α'β = λhW²`
+    /// Classification (docs/math/ph-curves.md, "DPH test and the rational Frenet frame" and "Septic DPH constructor"): DPH or not by `αβ' − α'β = λhW²`
     /// (cross-checked with `ρ = c·ω̃²`), `st(h)`, `st(w)`, and helicity by the axis test.
     ///
     /// # Errors
@@ -274,7 +274,7 @@ impl<F: Scalar> PhCurve<F> {
         })
     }
 
-    /// For a quintic (`m = 2`), the conditions (5.3)/(5.4) of seed 001 §5.1 on
+    /// For a quintic (`m = 2`), the conditions (5.3)/(5.4) of Besednjak §5.1 on
     /// `P_01, P_02, P_12`.
     ///
     /// # Errors
@@ -349,8 +349,8 @@ fn septic_targets<F: Scalar>(h: &[F], w: &[Complex<F>]) -> Result<Vec<Complex<F>
     Ok(bernstein::product(&hc, &w2))
 }
 
-/// Certificates of a septic built by [`dph_septic`] from `h`, `w` (seed 001 (5.5);
-/// NOTES-001 ALG-9): the PH identity of [`PhCurve::certify`], the prescribed Hopf form
+/// Certificates of a septic built by [`dph_septic`] from `h`, `w` (Besednjak (5.5);
+/// docs/math/ph-curves.md, "Septic DPH constructor"): the PH identity of [`PhCurve::certify`], the prescribed Hopf form
 /// `αβ' − α'β ≡ h·w²` (real and imaginary parts, power form), and the DPH identity
 /// `|r'×r''|² ≡ σ²·4|h w²|²` (so `ω = 2|h||w|²` is a polynomial).
 ///
@@ -390,10 +390,10 @@ pub fn certify_dph_septic<F: Scalar>(
 }
 
 /// The two admissible values of `z = α_1β_2 − α_2β_1` for a septic DPH curve with
-/// `αβ' − α'β = h w²` (seed 001 (5.8), (5.10) corrected per erratum 16, (5.12)):
+/// `αβ' − α'β = h w²` (Besednjak (5.8), (5.10) corrected: docs/math/ph-curves.md, Errata E16, (5.12)):
 /// `27z² − 18T_2 z − (T_0T_4 − 4T_1T_3) = 0`, i.e. `z = (3T_2 ± √Δ)/9` with
 /// `Δ = 9T_2² + 3T_0T_4 − 12T_1T_3` (`T_k` the Bernstein coefficients of `h w²`; for
-/// `st h = 4`, `st w = 0` this is `Δ = (9h_2² + 3h_0h_4 − 12h_1h_3)w_0⁴`, erratum 22).
+/// `st h = 4`, `st w = 0` this is `Δ = (9h_2² + 3h_0h_4 − 12h_1h_3)w_0⁴`, docs/math/ph-curves.md, Errata E22).
 /// Returned as `[(3T_2 + √Δ)/9, (3T_2 − √Δ)/9]` with the principal square root.
 ///
 /// # Errors
@@ -428,8 +428,8 @@ pub fn dph_septic_z_roots<F: Scalar>(
 
 /// The septic DPH curve with `αβ' − α'β = h w²` (Bernstein coefficients `h_i` real,
 /// `w_i` complex, `st h + 2 st w = 4`), free coefficients `α_0, α_1, β_0` and
-/// `z = α_1β_2 − α_2β_1` (a root from [`dph_septic_z_roots`]) (seed 001 §5.2, (5.5)–(5.12);
-/// NOTES-001 ALG-9). Equating the Bernstein coefficients
+/// `z = α_1β_2 − α_2β_1` (a root from [`dph_septic_z_roots`]) (Besednjak §5.2, (5.5)–(5.12);
+/// docs/math/ph-curves.md, "Septic DPH constructor"). Equating the Bernstein coefficients
 /// `3P_01, 3/2 P_02, 1/2 P_03 + 3/2 P_12, 3/2 P_13, 3P_23` with those of `h w²` gives
 /// `β_1 = (P_01 + α_1β_0)/α_0`, then the linear systems
 /// `α_1β_2 − α_2β_1 = z`, `α_0β_2 − α_2β_0 = P_02` and `α_0β_3 − α_3β_0 = P_03`,

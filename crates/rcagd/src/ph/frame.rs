@@ -1,15 +1,15 @@
 //! Curvature, torsion, the rational Frenet frame of DPH curves, the Euler–Rodrigues
 //! frame, and bending energy.
 //!
-//! NOTES-001 ALG-4 (seed 001 §3.2 (3.17)–(3.18), §4.2; errata 6, 12, 13): for a PH curve
+//! docs/math/ph-curves.md, "Curvature and torsion" (Besednjak §3.2 (3.17)–(3.18), §4.2; errata E6, E12, E13 of docs/math/ph-curves.md): for a PH curve
 //! `|r'×r''|² = σ²ρ` with a polynomial `ρ` (`= 4|αβ'−α'β|²`, `deg ρ ≤ 2n−6`),
 //! `κ² = ρ/σ⁴`, `τ = (r'×r'')·r'''/(σ²ρ)`.
 //!
-//! NOTES-001 ALG-5 (seed 001 §4.1 (4.3)): for a DPH curve, `ρ = ω²` with a polynomial
+//! docs/math/ph-curves.md, "DPH test and the rational Frenet frame" (Besednjak §4.1 (4.3)): for a DPH curve, `ρ = ω²` with a polynomial
 //! `ω = √c·ω̃` and the Frenet frame is rational up to the one constant `√c`:
 //! `t = r'/σ`, `p = (σr'' − σ'r')/(σω)`, `b = (r'×r'')/(σω)`, `κ = ω/σ²`,
 //! `τ = (r'×r'')·r'''/(σ²ω²)`. The sign of `ω` may change at real roots of `ω`
-//! (inflections, e.g. seed 001 Ex 8.1 and 8.3 at `t = 0`): there the frame built with
+//! (inflections, e.g. Besednjak Ex 8.1 and 8.3 at `t = 0`): there the frame built with
 //! the polynomial `ω` flips `p` and `b`, and the true Frenet frame (with `|ω|`) is
 //! undefined at the root itself.
 
@@ -74,7 +74,7 @@ impl<F: Scalar> PhPolyCurve<F> {
         pdot(&pcross(&d1, &d2), &d3)
     }
 
-    /// `ρ = |r'×r''|²/σ²` (NOTES-001 ALG-4, seed 001 (3.17)): by exact polynomial division
+    /// `ρ = |r'×r''|²/σ²` (docs/math/ph-curves.md, "Curvature and torsion", Besednjak (3.17)): by exact polynomial division
     /// for exact scalars; for `f64` by the division-free identity `ρ = |r''|² − σ'²`
     /// (from `|r'×r''|² = |r'|²|r''|² − (r'·r'')²`, `|r'|² = σ²`, `r'·r'' = σσ'`), since
     /// long division in floating point amplifies round-off in the low coefficients.
@@ -106,7 +106,7 @@ impl<F: Scalar> PhPolyCurve<F> {
 
     /// The curvature vector `κ·n = (σr'' − σ'r')/σ³` of a PH curve, as the numerator
     /// `σr'' − σ'r'` and the denominator `σ³`: rational for every PH curve (no `√ρ`),
-    /// since `d t/ds = (r'/σ)'/σ` (NOTES-001 ALG-4/5; seed 001 (4.3) with `κ = ω/σ²`,
+    /// since `d t/ds = (r'/σ)'/σ` (docs/math/ph-curves.md, "Curvature and torsion" and "DPH test and the rational Frenet frame"; Besednjak (4.3) with `κ = ω/σ²`,
     /// `p = (σr'' − σ'r')/(σω)`). Used for curvature combs.
     pub fn curvature_vector(&self) -> ([Poly<F>; 3], Poly<F>) {
         let d1 = pderiv(&self.r);
@@ -140,7 +140,7 @@ impl<F: Scalar> PhPolyCurve<F> {
         ])
     }
 
-    /// `κ² = ρ/σ⁴ = |r'×r''|²/σ⁶` (NOTES-001 ALG-4).
+    /// `κ² = ρ/σ⁴ = |r'×r''|²/σ⁶` (docs/math/ph-curves.md, "Curvature and torsion").
     ///
     /// # Errors
     /// As [`Self::rho`].
@@ -151,7 +151,7 @@ impl<F: Scalar> PhPolyCurve<F> {
         })
     }
 
-    /// `τ = (r'×r'')·r''' / (σ²ρ)` (NOTES-001 ALG-4; seed 001 (2.14)).
+    /// `τ = (r'×r'')·r''' / (σ²ρ)` (docs/math/ph-curves.md, "Curvature and torsion"; Besednjak (2.14)).
     ///
     /// # Errors
     /// As [`Self::rho`]; [`PhError::Degenerate`] for a straight line (`ρ ≡ 0`).
@@ -168,8 +168,8 @@ impl<F: Scalar> PhPolyCurve<F> {
         })
     }
 
-    /// Bending energy `E = ∫_a^b κ²σ dt = ∫_a^b ρ/σ³ dt` (seed 001 (9.29); NOTES-001
-    /// ALG-10 step 9) with an error estimate; see [`BendingEnergy`].
+    /// Bending energy `E = ∫_a^b κ²σ dt = ∫_a^b ρ/σ³ dt` (Besednjak (9.29);
+    /// docs/math/ph-curves.md, "Hermite interpolation by helical PH quintics") with an error estimate; see [`BendingEnergy`].
     ///
     /// The integrand is rational with poles at the (complex) roots of `σ`. A PH curve with
     /// a root pair of `σ` close to the real axis has a sharp peak of `1/σ³` at the nearby
@@ -266,7 +266,7 @@ impl<F: Scalar> PhPolyCurve<F> {
         self.bending_energy_between(0.0, 1.0)
     }
 
-    /// The rational Frenet frame of a DPH curve with `ρ = c·ω̃²` (NOTES-001 ALG-5).
+    /// The rational Frenet frame of a DPH curve with `ρ = c·ω̃²` (docs/math/ph-curves.md, "DPH test and the rational Frenet frame").
     pub fn frenet_frame(&self, dph: &DphData<F>) -> FrenetFrame<F> {
         let d1 = pderiv(&self.r);
         let d2 = pderiv(&d1);
@@ -283,7 +283,7 @@ impl<F: Scalar> PhPolyCurve<F> {
 }
 
 /// The Frenet frame of a DPH curve, `t = r'/σ`, `p = (σr''−σ'r')/(σω)`,
-/// `b = (r'×r'')/(σω)` with `ω = √c·ω̃` (NOTES-001 ALG-5; seed 001 §4.1 (4.3)).
+/// `b = (r'×r'')/(σω)` with `ω = √c·ω̃` (docs/math/ph-curves.md, "DPH test and the rational Frenet frame"; Besednjak §4.1 (4.3)).
 ///
 /// The exact evaluations return `t` and the *scaled* vectors `p̃ = √c·p`, `b̃ = √c·b`,
 /// which are rational at rational `t`.
@@ -362,7 +362,7 @@ impl<F: Scalar> FrenetFrame<F> {
         }
     }
 
-    /// Certificates (NOTES-001 §2 "Frenet"), as polynomial identities over `F`:
+    /// Certificates (docs/math/ph-curves.md, "DPH test and the rational Frenet frame"), as polynomial identities over `F`:
     /// * `|r'×r''|² ≡ σ²·c·ω̃²` (`b·b = 1`);
     /// * `|σr''−σ'r'|² ≡ σ²·c·ω̃²` (`p·p = 1`);
     /// * `(σr''−σ'r')·r' ≡ 0` (`p ⊥ t`);
@@ -419,7 +419,7 @@ impl<F: Scalar> crate::Certified for FrenetFrame<F> {
 
 /// The Euler–Rodrigues frame of a PH curve: `e_1 = A i A*/σ`, `e_2 = A j A*/σ`,
 /// `e_3 = A k A*/σ` — a rational orthonormal frame with `e_1` the unit tangent
-/// (Choi–Han; the quaternion form of seed 001 §3.3).
+/// (Choi–Han; the quaternion form of Besednjak §3.3).
 #[derive(Debug, Clone, PartialEq)]
 pub struct EulerRodriguesFrame<F> {
     /// Numerators `A i A*`, `A j A*`, `A k A*`.
@@ -497,13 +497,13 @@ impl<F: Scalar> PhCurve<F> {
         }
     }
 
-    /// `ρ = 4|αβ' − α'β|²` from the Hopf form (NOTES-001 ALG-4; seed 001 (4.16), erratum 15).
+    /// `ρ = 4|αβ' − α'β|²` from the Hopf form (docs/math/ph-curves.md, "Curvature and torsion"; Besednjak (4.16), docs/math/ph-curves.md, Errata E15).
     pub fn rho_hopf(&self) -> Poly<F> {
         let (re, im) = self.proportionality_re_im();
         (&(&re * &re) + &(&im * &im)).scale(&F::from_i64(4))
     }
 
-    /// Certificates of ALG-4: `|r'×r''|² ≡ σ²·4|αβ'−α'β|²` and
+    /// Certificates of docs/math/ph-curves.md, "Curvature and torsion": `|r'×r''|² ≡ σ²·4|αβ'−α'β|²` and
     /// `r'×r'' ≡ 2A(f j + g k)A*` with `αβ'−α'β = g + i f`.
     pub fn certify_curvature(&self) -> Vec<Certificate> {
         let pc = self.to_poly_curve();

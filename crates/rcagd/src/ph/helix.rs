@@ -2,18 +2,18 @@
 //! seeds and the constructions by reparametrization, multiplication and both, and the
 //! recognition of helical quintics.
 //!
-//! * ALG-6 (NOTES-001; seed 001 Def. 3.10, (3.23), Lancret (3.24)/(4.7), erratum 7): a PH
+//! * (docs/math/ph-curves.md, "Helix test and axis"; Besednjak Def. 3.10, (3.23), Lancret (3.24)/(4.7), docs/math/ph-curves.md, Errata E7): a PH
 //!   curve is a helix with axis `â` and angle `ψ` iff `â·r' ≡ cos ψ·σ`. Exact test: solve
 //!   the linear system `a·r'(t) ≡ σ(t)` (one equation per power of `t`) for `a ∈ F³`;
 //!   then `cos ψ = 1/|a|`, `â = a/|a|`, `tan²ψ = |a|² − 1 = (κ/τ)²`. If only `a·r' ≡ 0` is
 //!   solvable the curve is planar (ψ = π/2). `(â, ψ) ~ (−â, π − ψ)`.
-//! * ALG-7 (NOTES-001; seed 001 §6.1–6.3, Lemma 6.4, (6.5)–(6.24)): helices from a line
+//! * (docs/math/ph-curves.md, "Helix constructions"; Besednjak §6.1–6.3, Lemma 6.4, (6.5)–(6.24)): helices from a line
 //!   or circle `z(t) = (a_0(1−t)+a_1t)/(b_0(1−t)+b_1t)` in the complex plane: the cubic
 //!   helix `α = a_0(1−t)+a_1t`, `β = b_0(1−t)+b_1t`; the reparametrization with real
 //!   Bernstein `f, g`: `α̂_i = f_i(a_1−a_0) + g_i a_0`, `β̂_i = f_i(b_1−b_0) + g_i b_0`
 //!   (proportionality `(f'g − fg')(a_0b_1 − a_1b_0)`); the multiplication by a complex
 //!   `w`: `α = α̂·w`, `β = β̂·w` (Bernstein products; proportionality times `w²`).
-//!   Reparametrize first, then multiply (seed 001 §6.3.3).
+//!   Reparametrize first, then multiply (Besednjak §6.3.3).
 
 use super::hodograph::{PhCurve, PhPolyCurve};
 use super::util::*;
@@ -75,7 +75,7 @@ pub enum HelixTest<F> {
 }
 
 impl<F: Scalar> PhPolyCurve<F> {
-    /// The exact helix test: solve `a·r'(t) ≡ σ(t)` (NOTES-001 ALG-6b; seed 001 (3.23)).
+    /// The exact helix test: solve `a·r'(t) ≡ σ(t)` (docs/math/ph-curves.md, "Helix test and axis"; Besednjak (3.23)).
     ///
     /// # Errors
     /// None at present (kept fallible for degenerate inputs).
@@ -130,7 +130,7 @@ impl<F: Scalar> PhPolyCurve<F> {
         }
     }
 
-    /// Certificates of a helix (NOTES-001 §2 "helix"): `a·r' − σ ≡ 0` (so
+    /// Certificates of a helix (docs/math/ph-curves.md, "Helix test and axis"): `a·r' − σ ≡ 0` (so
     /// `â·t = cos ψ` with `|a| = 1/cos ψ`), and Lancret's constant ratio
     /// `ρ³ − (|a|² − 1)·((r'×r'')·r''')² ≡ 0` (`(κ/τ)² = tan²ψ`).
     pub fn certify_helix(&self, h: &HelixData<F>) -> Vec<Certificate> {
@@ -193,7 +193,7 @@ impl<F: Scalar> PhPolyCurve<F> {
     }
 
     /// `κ/τ = ω³/((r'×r'')·r''')` squared, as the rational function `ρ³/trip²`
-    /// (seed 001 (4.7); constant iff the curve is a helix, Lancret).
+    /// (Besednjak (4.7); constant iff the curve is a helix, Lancret).
     ///
     /// # Errors
     /// As [`PhPolyCurve::rho`].
@@ -217,7 +217,7 @@ impl<F: Scalar> PhCurve<F> {
 
     /// `true` if all Bernstein coefficients `A_l` lie in one real 2-plane of `H`
     /// (rank ≤ 2): the recognition test of general helices built by reparametrization
-    /// (`A_i = f_i V_0 + g_i V_1`, NOTES-001 ALG-7).
+    /// (`A_i = f_i V_0 + g_i V_1`, docs/math/ph-curves.md, "Helix constructions").
     pub fn coefficients_in_real_plane(&self) -> bool {
         let rows: Vec<Vec<F>> = (0..4)
             .map(|c| {
@@ -234,7 +234,7 @@ impl<F: Scalar> PhCurve<F> {
         }
     }
 
-    /// Recognition of a helical quintic (seed 001 §6.2.2–6.2.3, (6.11), (6.13)):
+    /// Recognition of a helical quintic (Besednjak §6.2.2–6.2.3, (6.11), (6.13)):
     /// general `A_1 = c_0A_0 + c_2A_2` with real `c`'s, or monotone `A_1 = A_0c_0 + A_2c_2`
     /// with complex `c`'s (multiplying on the right) and `4c_0c_2 = 1`.
     ///
@@ -303,7 +303,7 @@ fn sandwich_right_i<F: Scalar>(
     qmul(a, &qunit(1))
 }
 
-/// Helical quintic recognition result (seed 001 §6.2).
+/// Helical quintic recognition result (Besednjak §6.2).
 #[derive(Debug, Clone, PartialEq)]
 pub enum QuinticHelixKind<F> {
     /// `A_1 = c_0A_0 + c_2A_2`, real `c`'s (quadratic reparametrization, `st h = 2`).
@@ -331,7 +331,7 @@ pub enum QuinticHelixKind<F> {
     NotHelical,
 }
 
-/// The image of a line/circle seed in the complex plane (seed 001 Lemma 6.4).
+/// The image of a line/circle seed in the complex plane (Besednjak Lemma 6.4).
 #[derive(Debug, Clone, PartialEq)]
 pub enum LineOrCircle<F> {
     /// A line (`Im(b_1 b̄_0) = 0`).
@@ -346,7 +346,7 @@ pub enum LineOrCircle<F> {
     },
 }
 
-/// A line/circle seed `z(t) = (a_0(1−t) + a_1t)/(b_0(1−t) + b_1t)` (seed 001 (6.5)).
+/// A line/circle seed `z(t) = (a_0(1−t) + a_1t)/(b_0(1−t) + b_1t)` (Besednjak (6.5)).
 #[derive(Debug, Clone, PartialEq)]
 pub struct LineCircle<F> {
     /// `a_0`.
@@ -385,7 +385,7 @@ impl<F: Scalar> LineCircle<F> {
         csub(&cmul(&self.a0, &self.b1), &cmul(&self.a1, &self.b0))
     }
 
-    /// The image of `z` (seed 001 Lemma 6.4).
+    /// The image of `z` (Besednjak Lemma 6.4).
     pub fn image(&self) -> LineOrCircle<F> {
         let conj = |c: &Complex<F>| cx(c.re.clone(), -c.im.clone());
         let den = csub(
@@ -412,7 +412,7 @@ impl<F: Scalar> LineCircle<F> {
         cdiv(&n, &d)
     }
 
-    /// The cubic helix `α = a_0(1−t)+a_1t`, `β = b_0(1−t)+b_1t` (seed 001 §6.2.1).
+    /// The cubic helix `α = a_0(1−t)+a_1t`, `β = b_0(1−t)+b_1t` (Besednjak §6.2.1).
     ///
     /// # Errors
     /// As [`PhCurve::from_hopf`].
@@ -427,7 +427,7 @@ impl<F: Scalar> LineCircle<F> {
     /// The helix by reparametrization `f/g` (real Bernstein coefficients of equal
     /// degree `k ≥ 1`) followed by multiplication by `w` (complex Bernstein, degree ≥ 0;
     /// `w = [1]` for none): `α = α̂·w`, `β = β̂·w`, `α̂_i = f_i(a_1−a_0) + g_i a_0`,
-    /// `β̂_i = f_i(b_1−b_0) + g_i b_0` (NOTES-001 ALG-7; seed 001 (6.9), (6.15), (6.22),
+    /// `β̂_i = f_i(b_1−b_0) + g_i b_0` (docs/math/ph-curves.md, "Helix constructions"; Besednjak (6.9), (6.15), (6.22),
     /// (6.24)). The proportionality polynomial is `(f'g − fg')(a_0b_1 − a_1b_0)w²`.
     ///
     /// # Errors
@@ -477,7 +477,7 @@ impl<F: Scalar> LineCircle<F> {
         PhCurve::from_hopf(&alpha, &beta, start)
     }
 
-    /// Reparametrization only (seed 001 §6.2.2, §6.3.1).
+    /// Reparametrization only (Besednjak §6.2.2, §6.3.1).
     ///
     /// # Errors
     /// As [`Self::helix`].
@@ -490,7 +490,7 @@ impl<F: Scalar> LineCircle<F> {
         self.helix(f, g, &[cx(F::one(), F::zero())], start)
     }
 
-    /// Multiplication only (`f = t`, `g = 1`; seed 001 §6.2.3, §6.3.2).
+    /// Multiplication only (`f = t`, `g = 1`; Besednjak §6.2.3, §6.3.2).
     ///
     /// # Errors
     /// As [`Self::helix`].
@@ -500,7 +500,7 @@ impl<F: Scalar> LineCircle<F> {
 
     /// Certificates of a curve built by [`Self::helix`] from `f`, `g`, `w`: the PH
     /// identity, the predicted proportionality polynomial
-    /// `αβ' − α'β ≡ (f'g − fg')(a_0b_1 − a_1b_0)w²` (seed 001 §6.2), and the certificates
+    /// `αβ' − α'β ≡ (f'g − fg')(a_0b_1 − a_1b_0)w²` (Besednjak §6.2), and the certificates
     /// of the axis test ([`PhPolyCurve::certify_helix_test`]: `a·r' ≡ σ` and Lancret's
     /// constant `κ/τ`, or the plane of a planar curve); a curve without an axis gets a
     /// failing certificate.

@@ -1,8 +1,8 @@
-//! Hermite interpolation by general helical PH quintics (seed 001 ch. 9; NOTES-001
-//! ALG-10, after Farouki–Han–Manni–Sestini 2004).
+//! Hermite interpolation by general helical PH quintics (Besednjak ch. 9;
+//! docs/math/ph-curves.md, "Hermite interpolation by helical PH quintics", after Farouki–Han–Manni–Sestini 2004).
 //!
 //! Data `p_s, d_s, p_f, d_f`; the quintic with preimage `A_0, A_1 = c_0A_0 + c_2A_2, A_2`
-//! (real `c`'s, seed 001 (6.11)) interpolates `r(0) = p_s`, `r'(0) = d_s`, `r(1) = p_f`,
+//! (real `c`'s, Besednjak (6.11)) interpolates `r(0) = p_s`, `r'(0) = d_s`, `r(1) = p_f`,
 //! `r'(1) = d_f` iff `A_0iA_0* = d_s`, `A_2iA_2* = d_f` (9.7) and, with `k_i = c_i + 3/4`,
 //! `X = A_0iA_2* + A_2iA_0*`, `h = 120Δp − 15(d_s + d_f)` (9.22):
 //!
@@ -28,9 +28,9 @@
 //! `Q(s) = κ L(s)² − G(s) = 0`,
 //!
 //! whose coefficients lie in `Q(m)` — rational when `|d_s|²|d_f|²` is a square (as in
-//! seed 001 Ex 9.1), otherwise in the real quadratic field `Q(√(|d_s|²|d_f|²))`, where
+//! Besednjak Ex 9.1), otherwise in the real quadratic field `Q(√(|d_s|²|d_f|²))`, where
 //! the real roots are isolated exactly (Sturm sequences with exact signs). Unlike the
-//! `ξ`-quartic this loses no solution at `φ = π` (erratum 25) and needs no particular
+//! `ξ`-quartic this loses no solution at `φ = π` (docs/math/ph-curves.md, Errata E25) and needs no particular
 //! solution of (9.7) (whose coefficients are nested radicals); it works for
 //! antiparallel end tangents too (where Cramer's rule (9.23)–(9.25) fails). Each real
 //! root with `r_1, r_2 ≥ 0` and `r_3 ≠ 0` gives two interpolants
@@ -41,7 +41,7 @@
 //! `A_1iA_2* + A_2iA_1* = c_0X + 2c_2d_f`); they are exact whenever the root and the two
 //! square roots are rational. The quaternion preimage (`A_0 = Â_0`, `A_2 = Â_2e^{iφ}`
 //! with `X = u cos φ + v sin φ`, `u = Â_0iÂ_2* + Â_2iÂ_0*`, `v = Â_0Â_2* − Â_2Â_0*`,
-//! NOTES-001 ALG-10 step 3) is computed in `f64`.
+//! docs/math/ph-curves.md, "Hermite interpolation by helical PH quintics") is computed in `f64`.
 
 use super::frame::RationalFunction;
 use super::helix::HelixTest;
@@ -98,9 +98,10 @@ pub struct HermiteInterpolant {
     pub c0: f64,
     /// `c_2`.
     pub c2: f64,
-    /// `φ` with `A_2 = Â_2 e^{iφ}` (`Â` the particular solutions of ALG-8 at `φ = 0`).
+    /// `φ` with `A_2 = Â_2 e^{iφ}` (`Â` the particular solutions at `φ = 0`,
+    /// docs/math/ph-curves.md, "Prescribed tangents (Lemma 2.1)").
     pub phi: f64,
-    /// `ξ = tan(φ/2)`, the unknown of the seed's quartic (9.27).
+    /// `ξ = tan(φ/2)`, the unknown of Besednjak's quartic (9.27).
     pub xi: f64,
     /// `X = A_0iA_2* + A_2iA_0*`.
     pub x: [f64; 3],
@@ -108,7 +109,7 @@ pub struct HermiteInterpolant {
     pub curve: PhCurve<f64>,
     /// The exact control points, when the root and both square roots are rational.
     pub exact_control_points: Option<Vec<[Rational; 3]>>,
-    /// Bending energy `∫κ²σ dt` (seed 001 (9.29)).
+    /// Bending energy `∫κ²σ dt` (Besednjak (9.29)).
     pub bending_energy: f64,
     /// The `f64` helix test: an axis (`a·r' ≡ σ`), or planar (ψ = π/2, a trivial helix).
     pub helix: HelixTest<f64>,
@@ -192,7 +193,7 @@ impl<F: Scalar> HermiteData<F> {
         solve_in(data, m)
     }
 
-    /// `h = 120Δp − 15(d_s + d_f)` (seed 001 (9.22)).
+    /// `h = 120Δp − 15(d_s + d_f)` (Besednjak (9.22)).
     pub fn h(&self) -> [F; 3] {
         let dp = sub3(&self.p_f, &self.p_s);
         sub3(
@@ -217,7 +218,7 @@ fn check_data<K: Scalar>(d: &HermiteData<K>) -> Result<(), PhError> {
     Ok(())
 }
 
-/// The control points of the helical quintic from `d_s, d_f, X, c_0, c_2` (seed 001 (9.4)).
+/// The control points of the helical quintic from `d_s, d_f, X, c_0, c_2` (Besednjak (9.4)).
 pub(crate) fn control_points_from<K: Scalar>(
     p_s: &[K; 3],
     d_s: &[K; 3],
@@ -1016,8 +1017,9 @@ fn refine_once<K: Scalar>(p: &Poly<K>, lo: K, hi: K) -> (K, K) {
     }
 }
 
-/// The seed's quartic (9.27)–(9.28) in `ξ = tan(φ/2)`, `[d_0, …, d_4]`, in `f64`, with
-/// `u, v` from the particular solutions `Â_0, Â_2` of ALG-8 (NOTES-001 ALG-10 step 6).
+/// Besednjak's quartic (9.27)–(9.28) in `ξ = tan(φ/2)`, `[d_0, …, d_4]`, in `f64`, with
+/// `u, v` from the particular solutions `Â_0, Â_2` (docs/math/ph-curves.md,
+/// "Prescribed tangents (Lemma 2.1)" and "Hermite interpolation by helical PH quintics", step 2).
 ///
 /// # Errors
 /// [`PhError::ZeroTangent`] for a zero tangent.

@@ -1,14 +1,14 @@
 //! Quaternion and Hopf representations of spatial PH curves, their Bézier control
 //! points, the power form with its PH test, and Lemma 2.1 (`Q i Q* = c`).
 //!
-//! * ALG-1 (NOTES-001; seed 001 §3.3 (3.27), §3.4): `r' = A i A* =
+//! * (docs/math/ph-curves.md, "The hodograph and the speed"; Besednjak §3.3 (3.27), §3.4): `r' = A i A* =
 //!   (u²+v²−p²−q², 2(uq+vp), 2(vq−up)) = (|α|²−|β|², 2Re(αβ̄), 2Im(αβ̄))`,
 //!   `σ = |A|² = u²+v²+p²+q² = |α|²+|β|²`, with `A = u + vi + pj + qk = α + kβ`,
 //!   `α = u + iv`, `β = q + ip`.
-//! * ALG-2 (NOTES-001; seed 001 (8.2), (9.4)): hodograph Bernstein coefficients of
+//! * (docs/math/ph-curves.md, "Control points from the quaternion coefficients"; Besednjak (8.2), (9.4)): hodograph Bernstein coefficients of
 //!   degree `2m`: `H_k = Σ_{i+j=k} C(m,i)C(m,j)/C(2m,k) · A_i i A_j*` and control points
 //!   `p_{k+1} = p_k + H_k/n`, `n = 2m + 1`.
-//! * ALG-8 (NOTES-001; seed 001 Lemma 2.1, corrected per erratum 10): the solutions of
+//! * (docs/math/ph-curves.md, "Prescribed tangents (Lemma 2.1)"; Besednjak Lemma 2.1, corrected: docs/math/ph-curves.md, Errata E10): the solutions of
 //!   `Q i Q* = c`.
 
 use super::util::*;
@@ -22,7 +22,7 @@ use rcagd_geom::BezierCurve;
 /// A spatial PH curve in quaternion form: Bernstein coefficients `A_0, …, A_m` of the
 /// preimage `A(t)` and the start point `p_0 = r(0)`; degree `n = 2m + 1`.
 ///
-/// `r(t) = p_0 + ∫₀ᵗ A i A*` (NOTES-001 ALG-1/2, seed 001 §3.3 (3.27)–(3.29)).
+/// `r(t) = p_0 + ∫₀ᵗ A i A*` (docs/math/ph-curves.md, "The hodograph and the speed" and "Control points from the quaternion coefficients", Besednjak §3.3 (3.27)–(3.29)).
 #[derive(Debug, Clone, PartialEq)]
 pub struct PhCurve<F> {
     coeffs: Vec<Quaternion<F>>,
@@ -52,7 +52,7 @@ impl<F: Scalar> PhCurve<F> {
 
     /// From the Hopf form: Bernstein coefficients `α_l = u_l + i v_l`,
     /// `β_l = q_l + i p_l` and `A_l = α_l + k β_l = u_l + v_l i + p_l j + q_l k`
-    /// (seed 001 §3.4; NOTES-001 §0).
+    /// (Besednjak §3.4; docs/math/ph-curves.md, "Conventions").
     ///
     /// # Errors
     /// [`PhError::InvalidPreimage`] if `α` and `β` differ in length or are empty; as
@@ -88,7 +88,7 @@ impl<F: Scalar> PhCurve<F> {
     }
 
     /// The Hopf coefficients `(α_l, β_l)`, `α_l = u_l + i v_l`, `β_l = q_l + i p_l`
-    /// (inverse of [`Self::from_hopf`]; NOTES-001 §0, erratum 9).
+    /// (inverse of [`Self::from_hopf`]; docs/math/ph-curves.md, "Conventions", docs/math/ph-curves.md, Errata E9).
     pub fn hopf_coefficients(&self) -> (Vec<Complex<F>>, Vec<Complex<F>>) {
         let alpha = self
             .coeffs
@@ -133,7 +133,7 @@ impl<F: Scalar> PhCurve<F> {
     }
 
     /// The hodograph `r' = A i A* = (u²+v²−p²−q², 2(uq+vp), 2(vq−up))` in power form
-    /// (NOTES-001 ALG-1; seed 001 (3.27)).
+    /// (docs/math/ph-curves.md, "The hodograph and the speed"; Besednjak (3.27)).
     pub fn hodograph(&self) -> [Poly<F>; 3] {
         let [u, v, p, q] = self.preimage();
         let two = F::from_i64(2);
@@ -144,14 +144,14 @@ impl<F: Scalar> PhCurve<F> {
         ]
     }
 
-    /// The parametric speed `σ = |A|² = u²+v²+p²+q²` in power form (NOTES-001 ALG-1).
+    /// The parametric speed `σ = |A|² = u²+v²+p²+q²` in power form (docs/math/ph-curves.md, "The hodograph and the speed").
     pub fn speed(&self) -> Poly<F> {
         let [u, v, p, q] = self.preimage();
         &(&(&u * &u) + &(&v * &v)) + &(&(&p * &p) + &(&q * &q))
     }
 
     /// The Bernstein coefficients (degree `2m`) of the hodograph,
-    /// `H_k = Σ_{i+j=k} C(m,i)C(m,j)/C(2m,k) · A_i i A_j*` (NOTES-001 ALG-2).
+    /// `H_k = Σ_{i+j=k} C(m,i)C(m,j)/C(2m,k) · A_i i A_j*` (docs/math/ph-curves.md, "Control points from the quaternion coefficients").
     pub fn hodograph_bernstein(&self) -> Vec<[F; 3]> {
         let m = self.preimage_degree();
         (0..=2 * m)
@@ -169,7 +169,7 @@ impl<F: Scalar> PhCurve<F> {
     }
 
     /// The Bernstein coefficients (degree `2m`) of `σ`,
-    /// `σ_k = Σ_{i+j=k} C(m,i)C(m,j)/C(2m,k) · Re(A_i A_j*)` (NOTES-001 ALG-3).
+    /// `σ_k = Σ_{i+j=k} C(m,i)C(m,j)/C(2m,k) · Re(A_i A_j*)` (docs/math/ph-curves.md, "Speed and arc length").
     pub fn speed_bernstein(&self) -> Vec<F> {
         let m = self.preimage_degree();
         (0..=2 * m)
@@ -186,7 +186,7 @@ impl<F: Scalar> PhCurve<F> {
     }
 
     /// The Bézier control points `p_0..p_n`, `p_{k+1} = p_k + H_k/n`
-    /// (NOTES-001 ALG-2; seed 001 (8.2) for septics, (9.4) for quintics).
+    /// (docs/math/ph-curves.md, "Control points from the quaternion coefficients"; Besednjak (8.2) for septics, (9.4) for quintics).
     pub fn control_points(&self) -> Vec<[F; 3]> {
         let n = F::from_i64(self.degree() as i64);
         let mut pts = vec![self.start.clone()];
@@ -248,9 +248,9 @@ impl<F: Scalar> PhCurve<F> {
         }
     }
 
-    /// Certificates (NOTES-001 §2, "PH curve" and "control points"):
+    /// Certificates (docs/math/ph-curves.md, "The hodograph and the speed"):
     /// * the hodograph of the Bézier control points, `n Σ (p_{k+1}−p_k) b_k^{n−1}`, equals
-    ///   `A i A*` computed from the preimage components (ALG-1/2);
+    ///   `A i A*` computed from the preimage components (docs/math/ph-curves.md, "The hodograph and the speed" and "Control points from the quaternion coefficients");
     /// * `x'² + y'² + z'² − σ² ≡ 0` with `σ = |A|²` and `r'` from the control points.
     pub fn certify(&self) -> Vec<Certificate> {
         let pts = self.control_points();
@@ -294,7 +294,7 @@ impl<F: Scalar> crate::Certified for PhCurve<F> {
 /// `|r'|² ≡ σ²`: a PH curve given without (or after forgetting) its preimage.
 ///
 /// This is the input of the analysis functions ([`super::speed`], [`super::frame`],
-/// [`super::dph`], [`super::helix`]), so that curves printed in power form (seed 001
+/// [`super::dph`], [`super::helix`]), so that curves printed in power form (Besednjak
 /// Examples 3.13, 4.4, 4.5) can be tested directly.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PhPolyCurve<F> {
@@ -304,7 +304,7 @@ pub struct PhPolyCurve<F> {
 
 impl<F: Scalar> PhPolyCurve<F> {
     /// The PH test of a polynomial curve: `|r'|²` must be the square of a polynomial
-    /// `σ` (seed 001 Def. 3.2 / (3.2), erratum 2: `x'² + y'² + z'² = σ²`). `σ` is
+    /// `σ` (Besednjak Def. 3.2 / (3.2), docs/math/ph-curves.md, Errata E2: `x'² + y'² + z'² = σ²`). `σ` is
     /// returned with positive leading coefficient.
     ///
     /// # Errors
@@ -362,7 +362,7 @@ impl<F: Scalar> PhPolyCurve<F> {
     }
 
     /// `gcd(x', y', z')` (monic), whose non-constant part marks a non-primitive hodograph
-    /// (seed 001 §3.1, Examples 8.2–8.4).
+    /// (Besednjak §3.1, Examples 8.2–8.4).
     pub fn hodograph_gcd(&self) -> Poly<F> {
         let d = self.hodograph();
         d[0].gcd(&d[1]).gcd(&d[2])
@@ -385,7 +385,7 @@ impl<F: Scalar> PhPolyCurve<F> {
         }
     }
 
-    /// Certificate `x'² + y'² + z'² − σ² ≡ 0` (NOTES-001 §2).
+    /// Certificate `x'² + y'² + z'² − σ² ≡ 0` (docs/math/ph-curves.md).
     pub fn certify(&self) -> Vec<Certificate> {
         let d = self.hodograph();
         vec![identity_cert(
@@ -402,8 +402,8 @@ impl<F: Scalar> crate::Certified for PhPolyCurve<F> {
     }
 }
 
-/// A solution `Q` of `Q i Q* = c` (seed 001 Lemma 2.1, corrected per NOTES-001 ALG-8 and
-/// erratum 10), with `(λ, μ, ν) = c/|c|`:
+/// A solution `Q` of `Q i Q* = c` (Besednjak Lemma 2.1, corrected per docs/math/ph-curves.md, "Prescribed tangents (Lemma 2.1)" and
+/// docs/math/ph-curves.md, Errata E10), with `(λ, μ, ν) = c/|c|`:
 ///
 /// * if `λ ≠ −1`: `Q(φ) = √(½(1+λ)|c|) (i + μ/(1+λ) j + ν/(1+λ) k)(cos φ + i sin φ)`;
 /// * if `λ = −1` (`c = −|c| i`, any magnitude): `Q(φ) = √|c| (cos φ j + sin φ k)`.
@@ -504,7 +504,7 @@ mod tests {
         let q = solve_qiq(&c, None).unwrap();
         assert_eq!(q, q4(0, 1, 1, 1));
         assert_eq!(qvec(&sandwich(&q, 1, &q)), c);
-        // exceptional branch c = −|c| i, any magnitude (erratum 10)
+        // exceptional branch c = −|c| i, any magnitude (docs/math/ph-curves.md, Errata E10)
         let c = [r(-4), r(0), r(0)];
         let q = solve_qiq(&c, None).unwrap();
         assert_eq!(qvec(&sandwich(&q, 1, &q)), c);

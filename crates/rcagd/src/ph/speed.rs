@@ -1,6 +1,6 @@
 //! Parametric speed, arc length, parameter at arc length, constant-feed sampling.
 //!
-//! NOTES-001 ALG-3 (seed 001 §3.2): the arc length `s(t) = ∫₀ᵗ σ` of a PH curve is a
+//! docs/math/ph-curves.md, "Speed and arc length" (Besednjak §3.2): the arc length `s(t) = ∫₀ᵗ σ` of a PH curve is a
 //! polynomial of degree `n`; with the Bernstein coefficients `σ_k` of `σ` (degree
 //! `n − 1`), `s` has Bernstein coefficients `s_0 = 0`, `s_{k+1} = s_k + σ_k/n`, and the
 //! total length is `S = (1/n) Σ_k σ_k`. For a regular curve `σ > 0` on `[0, 1]`, so `s` is
@@ -30,7 +30,7 @@ pub struct ArcLengthParameter<F> {
 }
 
 impl<F: Scalar> PhPolyCurve<F> {
-    /// The arc-length function `s(t) = ∫₀ᵗ σ(τ) dτ` in power form (NOTES-001 ALG-3).
+    /// The arc-length function `s(t) = ∫₀ᵗ σ(τ) dτ` in power form (docs/math/ph-curves.md, "Speed and arc length").
     pub fn arc_length_poly(&self) -> Poly<F> {
         integrate(&self.sigma)
     }
@@ -191,7 +191,7 @@ impl<F: Scalar> PhPolyCurve<F> {
 
     /// Constant-feed sampling: parameters `t_0 = 0 < t_1 < … < t_N = 1` with
     /// `s(t_k) = k·S/N` (to within `tol` in `t`), each search started from the previous
-    /// parameter shifted by the local feed (seed 001 §3.2, NOTES-001 ALG-3).
+    /// parameter shifted by the local feed (Besednjak §3.2, docs/math/ph-curves.md, "Speed and arc length").
     ///
     /// # Errors
     /// [`PhError::OutOfRange`] for `count = 0`; as [`Self::parameter_at_arc_length`].
@@ -234,7 +234,7 @@ impl<F: Scalar> PhPolyCurve<F> {
 
 impl<F: Scalar> PhCurve<F> {
     /// The Bernstein coefficients (degree `n`) of the arc-length function:
-    /// `s_0 = 0`, `s_{k+1} = s_k + σ_k/n` (NOTES-001 ALG-3).
+    /// `s_0 = 0`, `s_{k+1} = s_k + σ_k/n` (docs/math/ph-curves.md, "Speed and arc length").
     pub fn arc_length_bernstein(&self) -> Vec<F> {
         let sig = self.speed_bernstein();
         let n = F::from_i64(sig.len() as i64);
@@ -246,7 +246,7 @@ impl<F: Scalar> PhCurve<F> {
         out
     }
 
-    /// Total arc length `S = (1/n) Σ_k σ_k` (NOTES-001 ALG-3).
+    /// Total arc length `S = (1/n) Σ_k σ_k` (docs/math/ph-curves.md, "Speed and arc length").
     pub fn arc_length(&self) -> F {
         let sig = self.speed_bernstein();
         let n = F::from_i64(sig.len() as i64);
@@ -266,7 +266,7 @@ impl<F: Scalar> PhCurve<F> {
     }
 
     /// Certificates of the arc length: `s'(t) ≡ σ(t)` for the Bernstein form of `s`, and
-    /// `s(1) = (1/n)Σσ_k` agrees with `∫₀¹ σ` in power form (NOTES-001 §2).
+    /// `s(1) = (1/n)Σσ_k` agrees with `∫₀¹ σ` in power form (docs/math/ph-curves.md).
     pub fn certify_arc_length(&self) -> Vec<Certificate> {
         let s = bernstein::from_bernstein(&self.arc_length_bernstein());
         let sigma = self.speed();

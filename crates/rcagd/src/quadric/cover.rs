@@ -1,6 +1,6 @@
 //! An exact cover of the whole sphere — and of every axis-parallel ellipsoid — by sixteen
-//! rational biquadratic patches with positive weights (seed 000 §2: δ restricted to the
-//! plane `P: p3 = 0` is the stereographic projection σ, Satz 2 / notes 000-4).
+//! rational biquadratic patches with positive weights (Jüttler §2: δ restricted to the
+//! plane `P: p3 = 0` is the stereographic projection σ, Satz 2 / docs/math/quadrics.md, "The map δ onto the sphere").
 //!
 //! **Construction.** The plane `P: p3 = 0` is covered by the four closed projective
 //! triangles `T(s₁, s₂) = {p0 ≥ 0, s₁p1 ≥ 0, s₂p2 ≥ 0}` (`s₁, s₂ = ±1`; every point of
@@ -8,9 +8,9 @@
 //! `x(u,v) = ((1−u)(1−v), s₁u, s₂v, 0)` over `[0,1]²`: for `(p0, |p1|, |p2|)` the equation
 //! `(1−λ|p1|)(1−λ|p2|) = λp0` has a root `λ ∈ (0, 1/max(|p1|,|p2|)]` (intermediate value
 //! theorem), so `(u, v) = λ(|p1|, |p2|) ∈ [0,1]²` reaches it. δ maps `P` onto `K`: every
-//! `k ≠ z` is `δ(σ⁻¹(k))` with `σ⁻¹(k) = (k0−k3, k1, k2, 0)` (notes 000-4), and the line at
+//! `k ≠ z` is `δ(σ⁻¹(k))` with `σ⁻¹(k) = (k0−k3, k1, k2, 0)` (docs/math/quadrics.md, "The map δ onto the sphere"), and the line at
 //! infinity `p0 = p3 = 0` of `P` (the fibre over the north pole `z = (1,0,0,1)`) maps to
-//! `z`. Hence the δ-images (notes 000-3) cover `K` exactly. Each triangle is split into
+//! `z`. Hence the δ-images (docs/math/quadrics.md, "Curves and patches under δ") cover `K` exactly. Each triangle is split into
 //! the four bilinear sub-patches over `[a/2, (a+1)/2] × [b/2, (b+1)/2]` (exact restriction:
 //! the corners are `x(u, v)` at the sub-square's corners), so that every boundary arc spans
 //! at most 90° and every weight `k0 = |x|²`-coefficient is positive (a half meridian in one
@@ -18,7 +18,7 @@
 //! line at infinity collapse to `z`.
 //!
 //! **Ellipsoids.** `A = [[1,0,0,0],[c_x,a,0,0],[c_y,0,b,0],[c_z,0,0,c]]` maps `K` onto the
-//! ellipsoid `((x−c_x)/a)² + ((y−c_y)/b)² + ((z−c_z)/c)² = 1` (notes 000-11, with a
+//! ellipsoid `((x−c_x)/a)² + ((y−c_y)/b)² + ((z−c_z)/c)² = 1` (docs/math/quadrics.md, "Other quadrics", with a
 //! translation); it is applied to the control points (exact, degree kept).
 
 use super::general::{certify_transfer, transfer_patch, Quadric};

@@ -1,7 +1,7 @@
 //! Any quadric: classification, named quadrics, the generalized stereographic projection
 //! onto a quadric with a rational point, and the degenerate quadrics (cones, cylinders).
 //!
-//! **Normal form** (seed 000 Schlussbemerkung, made rational). Let `Φ: Xᵀ Q X = 0` be
+//! **Normal form** (Jüttler Schlussbemerkung, made rational). Let `Φ: Xᵀ Q X = 0` be
 //! non-degenerate with a rational point `c`. Choose `d` with `cᵀQd = 1` and make it
 //! isotropic (`d ← d − ½(dᵀQd)·c`); let `w₁, w₂` be a Q-orthogonal basis of
 //! `{x : cᵀQx = dᵀQx = 0}` with `α = w₁ᵀQw₁`, `β = w₂ᵀQw₂`. In the basis
@@ -13,7 +13,7 @@
 //!
 //! (`x0 = aN(z)`, `x1 + x2√e = zw`, `x3 = N(w)`) lands on the normal form because the norm
 //! is multiplicative; `δ_Φ = B∘N_{a,e}` is a rational quadratic map onto `Φ`. For the
-//! unit sphere (`e = −1`, `a = b = ½`) it is `δ/2` (seed (9)): the seed's δ is the case
+//! unit sphere (`e = −1`, `a = b = ½`) it is `δ/2` (Jüttler (9)): Jüttler's δ is the case
 //! `z·w` over the Gaussian numbers. Its fibres are the lines `span{p, J_e p}`,
 //! `J_e p = (e p3, −e p2, −p1, p0)`, `J_e² = e·I`: an elliptic congruence for oval
 //! quadrics (`e < 0`), a hyperbolic one for ruled quadrics (`e > 0`; its focal lines are
@@ -21,7 +21,7 @@
 //! (images, preimages, interpolation, biquadratic patches) work through it, so they are
 //! transferred to every quadric with a rational point.
 //!
-//! **Transfer by projective maps** (notes 000-11): the seed's maps from `K` to the
+//! **Transfer by projective maps** (docs/math/quadrics.md, "Other quadrics"): Jüttler's maps from `K` to the
 //! ellipsoid, the two-sheet hyperboloid and the elliptic paraboloid, and from `H` to the
 //! one-sheet hyperboloid, are [`seed_transfer`] matrices; [`transfer_curve`] and
 //! [`transfer_patch`] apply any projective map to control points (exact, degree kept).
@@ -29,7 +29,7 @@
 //! similar over Q (e.g. not from `K` to `x²+y²+3z² = 1`); the normal form above needs no
 //! such map.
 //!
-//! **Degenerate quadrics** (cones and cylinders, rank 3; the seed only announces "a net
+//! **Degenerate quadrics** (cones and cylinders, rank 3; Jüttler only announces "a net
 //! projection along a parabolic linear congruence followed by a stereographic
 //! projection"). With the vertex `v`, a rational point `c ≠ v`, `d` as above and
 //! `w ⊥_Q c, d` with `α = wᵀQw`, the basis `B = [v, c, w, d]` gives `x1x3 = a x2²`,
@@ -42,7 +42,7 @@
 //! exceptional line `p1 = p2 = 0` (mapped to nothing) — and `γ(p + tNp) = γ(p)` with the
 //! nilpotent `N p = (p2, 0, 0, −p1)`. The vertex has no preimage.
 
-// Index loops mirror the matrix formulas (Q_ij, M_k[i][j]) of the notes.
+// Index loops mirror the matrix formulas (Q_ij, M_k[i][j]) of docs/math/quadrics.md.
 #![allow(clippy::needless_range_loop)]
 
 use super::helpers::{self, fmt_vec, mat4_i};
@@ -202,7 +202,7 @@ impl<F: Scalar> Quadric<F> {
         }
     }
 
-    /// The unit sphere `K: k0² = k1² + k2² + k3²` (seed (5)), with the rational point
+    /// The unit sphere `K: k0² = k1² + k2² + k3²` (Jüttler (5)), with the rational point
     /// `(1, 0, 0, −1)`; its projection is `δ/2`.
     pub fn unit_sphere() -> Self {
         let o = F::one;
@@ -300,7 +300,7 @@ impl<F: Scalar> Quadric<F> {
         ))
     }
 
-    /// The seed's hyperbolic paraboloid `H: h0h3 = h1h2` (seed (6)).
+    /// Jüttler's hyperbolic paraboloid `H: h0h3 = h1h2` (Jüttler (6)).
     pub fn seed_paraboloid() -> Self {
         Self::make(
             super::paraboloid::paraboloid_matrix(),
@@ -1052,7 +1052,7 @@ impl<F: Scalar> GeneralizedProjection<F> for AnyProjection<F> {
 /// A projective map with its source and target quadrics.
 pub type SeedTransfer<F> = (Mat4<F>, Quadric<F>, Quadric<F>);
 
-/// The projective maps of notes 000-11 (seed Schlussbemerkung), as matrices `A` with
+/// The projective maps of docs/math/quadrics.md, "Other quadrics" (Jüttler's Schlussbemerkung), as matrices `A` with
 /// `X = A k`:
 /// * `"ellipsoid"` (`a, b, c`): `diag(1, a, b, c)` from `K` onto `x²/a²+y²/b²+z²/c² = 1`;
 /// * `"hyperboloid_two_sheets"`: swap `k0 ↔ k3`, from `K` onto `x3² = x0²+x1²+x2²`;

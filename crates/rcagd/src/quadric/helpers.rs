@@ -12,7 +12,7 @@
 //! elimination tests pivots for exact zero, and its `f64` kernel is an SVD with an
 //! orthonormal basis, not the free-variable basis the interpolation code uses).
 
-// Index loops mirror the matrix formulas (Q_ij, M_k[i][j]) of the notes.
+// Index loops mirror the matrix formulas (Q_ij, M_k[i][j]) of docs/math/quadrics.md.
 #![allow(clippy::needless_range_loop)]
 
 use super::Hom;

@@ -1,7 +1,7 @@
 //! Images of rational Bézier curves and tensor-product patches under a generalized
 //! stereographic projection, and preimages of half degree.
 //!
-//! **Polar-form rule** (notes 000-2, 000-3). For a quadratic map `F` with polar form `F̂`
+//! **Polar-form rule** (docs/math/quadrics.md, "Curves and patches under δ"). For a quadratic map `F` with polar form `F̂`
 //! and a curve `x(t) = Σ Bᵢⁿ(t) bᵢ`,
 //! `F(x(t)) = Σₖ Bₖ²ⁿ(t) dₖ`, `dₖ = Σ_{i+j=k} C(n,i)C(n,j)/C(2n,k) · F̂(bᵢ, bⱼ)`,
 //! because `Bᵢⁿ Bⱼⁿ = C(n,i)C(n,j)/C(2n,i+j) · B_{i+j}²ⁿ`. For a patch of bidegree `(m,n)`
@@ -11,8 +11,8 @@
 //! `Xᵀ Q X` along the image, which all vanish exactly: that is the certificate.
 //!
 //! **Preimages.** A curve `y` of degree `2n` on the quadric is `F(x)` for some `x` of
-//! degree `n` (seed Satz 1, verified for curves; for patches the claim is unverified,
-//! notes 000-E3, so here it is decided case by case). `x` is found by the seed's linear
+//! degree `n` (Jüttler Satz 1, verified for curves; for patches the claim is unverified,
+//! docs/math/quadrics.md, Errata J3, so here it is decided case by case). `x` is found by Jüttler's linear
 //! problem: at `4n+1` distinct parameters `x(tₛ)` must lie on the fibre over `y(tₛ)`.
 //! Then every minor of `[F(x), y]` (degree `4n`) vanishes at `4n+1` points, so
 //! `F(x) ∥ y` identically; whether `F(x) = c·y` with a constant `c` is then checked
@@ -84,7 +84,7 @@ pub(crate) fn polar_rule_curve<F: Scalar, T>(
     out
 }
 
-/// The polar-form rule for a net of bidegree `(m, n)` (notes 000-3).
+/// The polar-form rule for a net of bidegree `(m, n)` (docs/math/quadrics.md, "Curves and patches under δ").
 pub(crate) fn polar_rule_patch<F: Scalar, T>(
     c: &[Vec<T>],
     len: usize,
@@ -150,7 +150,7 @@ pub fn certify_patch_on_quadric<F: Scalar>(
         .unwrap_or_else(|e| Certificate::fails(property, e.to_string(), F::EXACT))
 }
 
-/// The image of a curve: `F(x)` of degree `2n` (notes 000-2).
+/// The image of a curve: `F(x)` of degree `2n` (docs/math/quadrics.md, "Curves and patches under δ").
 #[derive(Debug, Clone, PartialEq)]
 pub struct ImageCurve<F> {
     name: String,
@@ -223,7 +223,7 @@ impl<F: Scalar> Certified for ImageCurve<F> {
     }
 }
 
-/// The image of a tensor-product patch: `F(x)` of bidegree `(2m, 2n)` (notes 000-3).
+/// The image of a tensor-product patch: `F(x)` of bidegree `(2m, 2n)` (docs/math/quadrics.md, "Curves and patches under δ").
 #[derive(Debug, Clone, PartialEq)]
 pub struct ImagePatch<F> {
     name: String,
@@ -297,11 +297,11 @@ impl<F: Scalar> Certified for ImagePatch<F> {
 }
 
 /// The image of a rational Bézier curve of degree `n` in `E³` under `proj`: a curve of
-/// degree `2n` on the quadric, by the polar-form rule (notes 000-2). For δ a line that is
+/// degree `2n` on the quadric, by the polar-form rule (docs/math/quadrics.md, "Curves and patches under δ"). For δ a line that is
 /// not a projecting line maps to a circle.
 ///
 /// The result may be reducible: if `x` has a factor acting along the fibres the
-/// components share a common factor (notes 000-2); it is not removed here.
+/// components share a common factor (docs/math/quadrics.md, "Curves and patches under δ"); it is not removed here.
 ///
 /// # Errors
 /// [`QuadricError::Dimension`] if the curve is not in 3-space; [`QuadricError::Degenerate`]
@@ -334,7 +334,7 @@ pub fn curve_image<F: Scalar, P: GeneralizedProjection<F> + ?Sized>(
 }
 
 /// The image of a tensor-product patch of bidegree `(m, n)` under `proj`: bidegree
-/// `(2m, 2n)` (notes 000-3). A bilinear patch gives a biquadratic patch whose edges are
+/// `(2m, 2n)` (docs/math/quadrics.md, "Curves and patches under δ"). A bilinear patch gives a biquadratic patch whose edges are
 /// conics (circles on the sphere).
 ///
 /// # Errors
@@ -506,8 +506,8 @@ fn fibre_rows<F: Scalar, P: GeneralizedProjection<F> + ?Sized>(
 }
 
 /// A preimage of half degree of a curve on the quadric: `x` of degree `n` with
-/// `F(x) = c·y` for the given `y` of degree `2n` (seed Satz 1, linear problem of
-/// notes 000-6 with `4n+1` samples, see the module docs).
+/// `F(x) = c·y` for the given `y` of degree `2n` (Jüttler Satz 1, linear problem of
+/// docs/math/quadrics.md, "Interpolation on the sphere" with `4n+1` samples, see the module docs).
 ///
 /// # Errors
 /// [`QuadricError::NotOnQuadric`] (with the failing certificate) if `y` is not on the
@@ -587,8 +587,8 @@ pub fn curve_preimage<F: Scalar, P: GeneralizedProjection<F> + ?Sized>(
 }
 
 /// A preimage of half bidegree of a patch on the quadric: `x` of bidegree `(m, n)` with
-/// `F(x) = c·y` for the given `y` of bidegree `(2m, 2n)`, decided exactly (the seed's
-/// Satz 1 for surfaces is unverified, notes 000-E3: this function answers per patch).
+/// `F(x) = c·y` for the given `y` of bidegree `(2m, 2n)`, decided exactly (Jüttler's
+/// Satz 1 for surfaces is unverified, docs/math/quadrics.md, Errata J3: this function answers per patch).
 ///
 /// # Errors
 /// As [`curve_preimage`].
@@ -743,7 +743,7 @@ fn certify_proportional<F: Scalar>(
 }
 
 /// The common factor `g` of the homogeneous coordinates of a curve and the reduced curve
-/// `y/g` (its components coprime; notes 000-2: images can be reducible). Exact scalars
+/// `y/g` (its components coprime; docs/math/quadrics.md, "Curves and patches under δ": images can be reducible). Exact scalars
 /// only: for `f64` the curve is returned unchanged with `g = 1`.
 ///
 /// # Errors

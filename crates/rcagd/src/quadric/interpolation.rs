@@ -1,14 +1,14 @@
-//! Interpolation on a quadric as a linear problem (seed 000 §2, notes 000-6).
+//! Interpolation on a quadric as a linear problem (Jüttler §2, docs/math/quadrics.md, "Interpolation on the sphere").
 //!
 //! Given points `k₁ … k_N` on the quadric, parameters `t₁ … t_N` and a preimage degree
 //! `n`, the curve `x(t) = Σ Bⱼⁿ(t) xⱼ` in `E³` must meet the projecting line over each
 //! `kᵢ` at `tᵢ`: with two covectors `νᵢ¹, νᵢ²` annihilating the fibre,
 //! `νᵢʳ · Σⱼ Bⱼⁿ(tᵢ) xⱼ = 0` (`2N` homogeneous linear equations in `4(n+1)` unknowns).
 //! Every admissible solution (`F(x(tᵢ)) ≠ 0` for all `i`) gives the interpolant
-//! `y = F(x)` of degree `2n` (notes 000-2). The solution space is invariant under the
+//! `y = F(x)` of degree `2n` (docs/math/quadrics.md, "Curves and patches under δ"). The solution space is invariant under the
 //! fibre symmetry (δ: `aI+bJ`; ψ: `diag(s,s,1,1)`), which does not change the image; for
 //! `N = 2n+1` points in general position on the sphere it has dimension exactly 2, so the
-//! interpolant is unique (notes 000-6). On the sphere every irreducible rational curve has
+//! interpolant is unique (docs/math/quadrics.md, "Interpolation on the sphere"). On the sphere every irreducible rational curve has
 //! even degree `2n` and is a δ-image (Satz 1), so the lowest `n` found by
 //! [`interpolate_lowest_degree`] gives the lowest-degree rational interpolant on `K` with
 //! the given parameters.
@@ -18,7 +18,7 @@
 //! `F̂(cᵢ, x'(tᵢ)) ∈ span(kᵢ, Tᵢ)` (the tangent of `y = F(x)` is `2F̂(x, x')`). The fibre
 //! position `(λᵢ : μᵢ)` is therefore a free parameter of the problem ([`HermiteDatum`]);
 //! at one point it only fixes the fibre symmetry, at further points it is a genuine shape
-//! parameter. (The seed announces the linear problem for points only; this is the
+//! parameter. (Jüttler announces the linear problem for points only; this is the
 //! extension that keeps it linear.)
 
 use super::helpers::{self, fmt_scalar, fmt_vec, to_hom};
@@ -378,7 +378,7 @@ fn solve_with<F: Scalar, P: GeneralizedProjection<F> + ?Sized>(
 }
 
 /// Interpolates the points `kᵢ` at the parameters `tᵢ` by a curve `F(x)` of degree `2n`
-/// on the quadric of `proj` (notes 000-6). The returned [`Interpolant`] exposes the
+/// on the quadric of `proj` (docs/math/quadrics.md, "Interpolation on the sphere"). The returned [`Interpolant`] exposes the
 /// solution space (the free parameters) and one admissible member.
 ///
 /// # Errors
@@ -397,7 +397,7 @@ pub fn interpolate<F: Scalar, P: GeneralizedProjection<F> + ?Sized>(
 
 /// As [`interpolate`], with the preimage restricted to the plane `planeᵀ x = 0`. With δ
 /// and the plane `P: p3 = 0` this is interpolation by the ordinary stereographic
-/// projection σ (notes 000-6, degree comparison: only `3(n+1)` unknowns, so fewer points
+/// projection σ (docs/math/quadrics.md, "Interpolation on the sphere", degree comparison: only `3(n+1)` unknowns, so fewer points
 /// can be met at the same degree).
 ///
 /// # Errors

@@ -1,9 +1,8 @@
 //! Curves and surfaces on quadrics: the generalized stereographic projection
-//! (seed 000, Jüttler, *Zur Konstruktion rationaler Kurven und Flächen auf Quadriken*;
-//! corrected formulas and errata in `seeds/NOTES-000-003.md`, items 000-1 … 000-11,
-//! 000-E1 … 000-E3).
+//! (B. Jüttler, *Zur Konstruktion rationaler Kurven und Flächen auf Quadriken*; the
+//! formulas in our words, with the corrections J1–J3, in docs/math/quadrics.md).
 //!
-//! The idea of the seed: every coprime polynomial solution of `k0² = k1²+k2²+k3²`
+//! The idea of Jüttler's paper: every coprime polynomial solution of `k0² = k1²+k2²+k3²`
 //! (unit sphere `K`) or `h0h3 = h1h2` (hyperbolic paraboloid `H`) is the image of
 //! polynomials `p` under a *quadratic* map of homogeneous coordinates, (7)/(8). Read as
 //! maps `P³ → K` and `P³ → H` they are net projections along a linear line congruence
@@ -17,7 +16,7 @@
 //!   identity certificates of the maps themselves;
 //! * [`image`]: images of rational Bézier curves (degree `n → 2n`) and tensor-product
 //!   patches (`(m,n) → (2m,2n)`) by the polar-form rule, and preimages of half degree;
-//! * [`interpolation`]: interpolation on a quadric as the seed's linear problem (a curve
+//! * [`interpolation`]: interpolation on a quadric as Jüttler's linear problem (a curve
 //!   in `E³` meeting the projecting lines), lowest degree, free parameters, Hermite data;
 //! * [`sphere_patch`]: biquadratic patches from bilinear ones, the Miquel condition
 //!   (Satz 7) and its converse;
@@ -62,7 +61,7 @@ use rcagd_geom::GeomError;
 use thiserror::Error;
 
 /// A homogeneous point of real projective 3-space, `(p0, p1, p2, p3)`, Cartesian point
-/// `(p1, p2, p3)/p0` (seed (1)).
+/// `(p1, p2, p3)/p0` (Jüttler (1)).
 pub type Hom<F> = [F; 4];
 
 /// A symmetric 4×4 matrix `Q` of a quadric `Xᵀ Q X = 0`.
@@ -142,7 +141,7 @@ pub enum QuadricError {
         residual: String,
     },
     /// The four corners and boundary circles are not a Miquel configuration, so no
-    /// biquadratic patch on the sphere has them (seed 000 Satz 7, notes 000-7/000-8).
+    /// biquadratic patch on the sphere has them (Jüttler Satz 7, docs/math/quadrics.md, "Biquadratic sphere patches and the Miquel configuration").
     #[error("the corners are not in Miquel position: det[p1, q2, p3, q4] = {residual} (must be 0){detail}")]
     MiquelFails {
         /// `det[p1, q2, p3, q4]` with the points normalized to `k0 = 1`, formatted.
@@ -177,7 +176,7 @@ pub enum QuadricError {
 }
 
 /// A generalized stereographic projection: a quadratic map `F: P³ → Φ` onto a quadric
-/// `Φ: Xᵀ Q X = 0` whose fibres are the lines of a linear congruence (seed 000 §2, §3,
+/// `Φ: Xᵀ Q X = 0` whose fibres are the lines of a linear congruence (Jüttler §2, §3,
 /// Schlussbemerkung). Implemented by [`Delta`] (sphere), [`Psi`] (hyperbolic paraboloid),
 /// [`QuadricProjection`] (any non-degenerate quadric with a rational point) and
 /// [`ConeProjection`] (cones and cylinders).
@@ -193,7 +192,7 @@ pub trait GeneralizedProjection<F: Scalar> {
         self.quadratic_map().apply(p)
     }
     /// The polar form `F̂(a, b) = (F(a+b) − F(a−b))/4`, symmetric bilinear with
-    /// `F̂(p, p) = F(p)` (notes, conventions).
+    /// `F̂(p, p) = F(p)` (docs/math/quadrics.md, conventions).
     fn polar(&self, a: &Hom<F>, b: &Hom<F>) -> Hom<F> {
         self.quadratic_map().polar(a, b)
     }
@@ -209,7 +208,7 @@ pub trait GeneralizedProjection<F: Scalar> {
     /// cones: a nilpotent `N`).
     fn fibre_generator(&self) -> Mat4<F>;
     /// The projecting line contained in the plane `πᵀx = 0`: `ker[π; πG]`, a `G`-invariant
-    /// line (seed 000 §2: every plane contains exactly one projecting line, for the
+    /// line (Jüttler §2: every plane contains exactly one projecting line, for the
     /// elliptic congruence of δ).
     ///
     /// # Errors

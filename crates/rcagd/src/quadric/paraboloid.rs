@@ -1,16 +1,16 @@
-//! The generalized stereographic projection onto the hyperbolic paraboloid (seed 000 §3).
+//! The generalized stereographic projection onto the hyperbolic paraboloid (Jüttler §3).
 //!
 //! * `ψ(q) = (q0q3, q1q3, q0q2, q1q2)` (15) maps onto `H: h0h3 = h1h2` (6). It is the
 //!   Segre map `(u, v) ↦ u⊗v` of `u = (q0, q1)` and `v = (q3, q2)`, so it vanishes on the
 //!   two focal lines `q0 = q1 = 0` and `q2 = q3 = 0` of the hyperbolic congruence
-//!   (Satz 11; the seed's `(1 λ 0 0)` and `(0 0 1 μ)`).
+//!   (Satz 11; Jüttler's `(1 λ 0 0)` and `(0 0 1 μ)`).
 //! * `τ(q0,q1,q2,q0) = (q0², q0q1, q0q2, q1q2)` (16), the stereographic projection of the
 //!   plane `R: q3 = q0` from `c = (0,0,0,1)` (Satz 8); `τ⁻¹(h) = (h0,h1,h2,h0)`.
 //! * `α(q) = (q0q3, q1q3, q0q2, q0q3)` (17), with `τ(α(q)) = q0q3·ψ(q)` (Satz 9,
-//!   corrected up to this factor, notes 000-9).
+//!   corrected up to this factor, docs/math/quadrics.md, "The map ψ onto the hyperbolic paraboloid").
 //! * Fibre over `h` (Lemma 10 (18)): `span{(h0,h1,h2,h0), (h0,h1,0,0)}`; in Segre form
 //!   `span{(u0,u1,0,0), (0,0,v1,v0)}` with `h ∥ u⊗v`, which also covers the points with
-//!   `h0 = h1 = 0`. `ψ(λa+μb) = λ(λ+μ)h0·h` for the seed's basis.
+//!   `h0 = h1 = 0`. `ψ(λa+μb) = λ(λ+μ)h0·h` for Jüttler's basis.
 //! * Fibre scaling: `ψ(diag(s,s,1,1)·q) = s·ψ(q)` (the analogue of δ's rotation `J`).
 
 use super::helpers::{self, fmt_vec, mat4_i};
@@ -23,7 +23,7 @@ pub fn paraboloid_matrix<F: Scalar>() -> Mat4<F> {
     mat4_i([[0, 0, 0, 1], [0, 0, -1, 0], [0, -1, 0, 0], [1, 0, 0, 0]])
 }
 
-/// `ψ(q)`, seed (15).
+/// `ψ(q)`, Jüttler (15).
 pub fn psi<F: Scalar>(q: &Hom<F>) -> Hom<F> {
     let [q0, q1, q2, q3] = q;
     [
@@ -58,7 +58,7 @@ fn tau_formula<F: Scalar>(q: &Hom<F>) -> Hom<F> {
     ]
 }
 
-/// `τ(q)` for `q ∈ R: q3 = q0`, seed (16) (Satz 8).
+/// `τ(q)` for `q ∈ R: q3 = q0`, Jüttler (16) (Satz 8).
 ///
 /// # Errors
 /// [`QuadricError::NotInPlane`] if `q3 ≠ q0`; [`QuadricError::ZeroPoint`];
@@ -123,7 +123,7 @@ fn alpha_formula<F: Scalar>(q: &Hom<F>) -> Hom<F> {
     ]
 }
 
-/// `α(q)`, seed (17): the net projection onto `R` along the hyperbolic congruence.
+/// `α(q)`, Jüttler (17): the net projection onto `R` along the hyperbolic congruence.
 ///
 /// # Errors
 /// [`QuadricError::Exceptional`] where α vanishes: on the focal lines `q0 = q1 = 0`,
@@ -205,7 +205,7 @@ pub fn psi_fibre<F: Scalar>(h: &Hom<F>) -> Result<[Hom<F>; 2], QuadricError> {
     ])
 }
 
-/// The seed's basis of the projecting line (Lemma 10 (18)): `[τ⁻¹(h), (h0, h1, 0, 0)]`
+/// Jüttler's basis of the projecting line (Lemma 10 (18)): `[τ⁻¹(h), (h0, h1, 0, 0)]`
 /// with `ψ(λa + μb) = λ(λ+μ)h0·h`.
 ///
 /// # Errors
@@ -225,7 +225,7 @@ pub fn psi_fibre_seed<F: Scalar>(h: &Hom<F>) -> Result<[Hom<F>; 2], QuadricError
 }
 
 /// The generalized stereographic projection ψ onto the hyperbolic paraboloid `H`
-/// (seed 000 §3).
+/// (Jüttler §3).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct Psi;
 
@@ -254,8 +254,8 @@ impl<F: Scalar> GeneralizedProjection<F> for Psi {
 }
 
 /// The quadric `a q0q3 + b q1q3 + c q0q2 + d q1q2 = 0`, the preimage under α of the conic
-/// `aX0² + bX0X1 + cX0X2 + dX1X2 = 0` of `R` (notes 000-10). It is always a hyperbolic
-/// paraboloid (or degenerate), never a one-sheet hyperboloid: erratum 000-E2 (seed §3,
+/// `aX0² + bX0X1 + cX0X2 + dX1X2 = 0` of `R` (docs/math/quadrics.md, "Preimage quadrics"). It is always a hyperbolic
+/// paraboloid (or degenerate), never a one-sheet hyperboloid: docs/math/quadrics.md, Errata J2 (Jüttler §3,
 /// first bullet, says "einschaliges Hyperboloid").
 pub fn conic_preimage_quadric<F: Scalar>(a: &F, b: &F, c: &F, d: &F) -> Mat4<F> {
     let h = F::one() / F::from_i64(2);
@@ -287,7 +287,7 @@ pub fn plane_conic_matrix<F: Scalar>(a: &F, b: &F, c: &F, d: &F) -> Mat4<F> {
     ]
 }
 
-/// The exact identities of seed 000 §3 as polynomial identities in `q0..q3`:
+/// The exact identities of Jüttler §3 as polynomial identities in `q0..q3`:
 /// (6)/(15) `ψ(q) ∈ H`; Satz 8 `ψ|_{q3=q0} = τ`, `τ(q) = q0·(q0,q1,q2,q0) + (q1q2−q0²)·c`
 /// (τ(q) lies on the line `cq`); Satz 9 `τ(α(q)) = q0q3·ψ(q)`; `τ⁻¹(ψ(q)) = α(q)`;
 /// the fibre scaling `ψ(Sq) = sψ(q)`, `α(Sq) = sα(q)` for `S = diag(s,s,1,1)` (checked
@@ -419,7 +419,7 @@ mod tests {
 
 /// An interpolating curve on `H` built from its Segre factors: `y = u⊗v`, i.e.
 /// `y = (u0v0, u1v0, u0v1, u1v1)` with `u = (q0, q1)` of degree `r` and `v = (q3, q2)` of
-/// degree `s`, so `deg y = r + s` (seed (8); `ψ(q) = u⊗v`).
+/// degree `s`, so `deg y = r + s` (Jüttler (8); `ψ(q) = u⊗v`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct SegreInterpolant<F> {
     u: Vec<[F; 2]>,
@@ -507,11 +507,11 @@ fn lowest_binary<F: Scalar>(targets: &[[F; 2]], params: &[F]) -> Option<Vec<[F; 
 }
 
 /// Interpolation on `H` of lowest degree, odd degrees included: the conditions
-/// `u(tᵢ) ∥ Uᵢ`, `v(tᵢ) ∥ Vᵢ` for the Segre factors of `kᵢ ∥ Uᵢ⊗Vᵢ` decouple (the seed's
+/// `u(tᵢ) ∥ Uᵢ`, `v(tᵢ) ∥ Vᵢ` for the Segre factors of `kᵢ ∥ Uᵢ⊗Vᵢ` decouple (Jüttler's
 /// linear problem for ψ splits into its `u`- and `v`-parts), so the lowest degrees `r`
 /// and `s` are found separately and `y = u⊗v` has the lowest degree `r + s` of all
 /// rational curves on `H` through the points at these parameters (every coprime curve on
-/// `H` is `u⊗v`, seed (8)). Points on one generator give a line (`r = 0` or `s = 0`).
+/// `H` is `u⊗v`, Jüttler (8)). Points on one generator give a line (`r = 0` or `s = 0`).
 ///
 /// # Errors
 /// [`QuadricError::Dimension`], [`QuadricError::NotOnQuadric`],

@@ -3,12 +3,12 @@
 //!
 //! A quadratic map `F: P³ → P³` is stored as four symmetric matrices `M_k` with
 //! `F_k(p) = pᵀ M_k p`. Its polar form is `F̂_k(a, b) = aᵀ M_k b`
-//! `= (F(a+b) − F(a−b))/4` (notes, conventions); it is what the curve and patch images
-//! use (notes 000-2, 000-3). Composition with projective maps stays quadratic:
+//! `= (F(a+b) − F(a−b))/4` (docs/math/quadrics.md, conventions); it is what the curve and patch images
+//! use (docs/math/quadrics.md, "Curves and patches under δ"). Composition with projective maps stays quadratic:
 //! `(A∘F)_k = Σ_l A_kl F_l` and `(F∘B)_k = pᵀ (Bᵀ M_k B) p`; this is how constructions
-//! are transferred between quadrics (notes 000-11).
+//! are transferred between quadrics (docs/math/quadrics.md, "Other quadrics").
 
-// Index loops mirror the matrix formulas (Q_ij, M_k[i][j]) of the notes.
+// Index loops mirror the matrix formulas (Q_ij, M_k[i][j]) of docs/math/quadrics.md.
 #![allow(clippy::needless_range_loop)]
 
 use super::helpers::{self, poly_describe, poly_negligible, poly_var};
@@ -149,7 +149,7 @@ impl<F: Scalar> QuadraticMap<F> {
     }
 
     /// Certifies `F(p)ᵀ Q F(p) ≡ 0` as a polynomial identity in `p0..p3` (quartic): the
-    /// map lands on the quadric (seed (5)/(6) with (7)/(8)).
+    /// map lands on the quadric (Jüttler (5)/(6) with (7)/(8)).
     pub fn certify_on_quadric(&self, q: &Mat4<F>, property: &str) -> Certificate {
         let c = self.components();
         let mut s = MPoly::zero(4);
@@ -169,7 +169,7 @@ impl<F: Scalar> QuadraticMap<F> {
     }
 
     /// Certifies `F(p)ᵀ C F(p) ≡ (pᵀ A p)·(pᵀ B p)`: the pullback of the quadric `C` is the
-    /// quadric `B` times the factor `A` (notes 000-10: preimages of circles and conics).
+    /// quadric `B` times the factor `A` (docs/math/quadrics.md, "Preimage quadrics": preimages of circles and conics).
     pub fn certify_pullback(
         &self,
         c: &Mat4<F>,
@@ -215,7 +215,7 @@ impl<F: Scalar> QuadraticMap<F> {
 
     /// Certifies `outer(inner(p)) ≡ factor(p) · target(p)` as a quartic identity, where
     /// `factor` is the quadratic form with symmetric matrix `factor` (e.g. Satz 3:
-    /// `σ(ϑ(p)) = (p0²+p3²)·δ(p)`, notes 000-4).
+    /// `σ(ϑ(p)) = (p0²+p3²)·δ(p)`, docs/math/quadrics.md, "The map δ onto the sphere").
     pub fn certify_composition(
         outer: &QuadraticMap<F>,
         inner: &QuadraticMap<F>,
@@ -255,7 +255,7 @@ impl<F: Scalar> QuadraticMap<F> {
     }
 
     /// Certifies `F(A p) ≡ c · F(p)` (invariance under a projective map of the domain,
-    /// e.g. the fibre rotation `J` of δ, notes 000-1).
+    /// e.g. the fibre rotation `J` of δ, docs/math/quadrics.md, "The map δ onto the sphere").
     pub fn certify_invariance(&self, a: &Mat4<F>, c: &F, property: &str) -> Certificate {
         let moved = self.after(a);
         let scaled = QuadraticMap {

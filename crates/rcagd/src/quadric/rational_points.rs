@@ -1,7 +1,7 @@
 //! Rational points on quadrics: an exact decision (Hasse–Minkowski) and a search.
 //!
 //! A generalized stereographic projection onto a quadric `Xᵀ Q X = 0` with rational
-//! coefficients needs one rational point of it (seed 000 Schlussbemerkung: the other
+//! coefficients needs one rational point of it (Jüttler Schlussbemerkung: the other
 //! quadrics are reached by projective maps; over Q this needs a rational point). Whether
 //! one exists is decided exactly:
 //!
@@ -19,7 +19,7 @@
 //! `10¹²` after removing factors up to `10⁶`); otherwise the decision is reported as
 //! undecided and only the search runs.
 
-// Index loops mirror the matrix formulas (Q_ij, M_k[i][j]) of the notes.
+// Index loops mirror the matrix formulas (Q_ij, M_k[i][j]) of docs/math/quadrics.md.
 #![allow(clippy::needless_range_loop)]
 
 use super::helpers::{self, fmt_scalar};

@@ -1,7 +1,7 @@
-//! Biquadratic patches on the sphere and the Miquel configuration (seed 000 §2, Satz 7;
-//! notes 000-7, 000-8).
+//! Biquadratic patches on the sphere and the Miquel configuration (Jüttler §2, Satz 7;
+//! docs/math/quadrics.md, "Biquadratic sphere patches and the Miquel configuration").
 //!
-//! * **Bilinear → biquadratic** (000-7): the δ-image of a bilinear patch with corners
+//! * **Bilinear → biquadratic** (docs/math/quadrics.md, "Biquadratic sphere patches and the Miquel configuration"): the δ-image of a bilinear patch with corners
 //!   `c00, c10, c11, c01` is a biquadratic patch on `K` with corners `p1 = y(0,0)`,
 //!   `p2 = y(1,0)`, `p3 = y(1,1)`, `p4 = y(0,1)` and boundary circles `C12: v = 0`,
 //!   `C23: u = 1`, `C34: v = 1`, `C41: u = 0`, each in the plane of its three edge
@@ -10,15 +10,15 @@
 //!   the projecting line in the plane of the two edge lines at that corner.
 //!   Satz 7: `p1, q2, p3, q4` are concyclic (on a sphere: coplanar,
 //!   `det[p1,q2,p3,q4] = 0`), and so are `q1, p2, q3, p4` (Miquel's theorem).
-//! * **Converse** (000-8): from corners and boundary circles in Miquel position, chain
+//! * **Converse** (docs/math/quadrics.md, "Biquadratic sphere patches and the Miquel configuration"): from corners and boundary circles in Miquel position, chain
 //!   `c00 ∈ F(p1)`, `c10 = F(p2) ∩ span(c00, F(e12))`, `c11 = F(p3) ∩ span(c10, F(e23))`,
 //!   `c01 = F(p4) ∩ span(c11, F(e34))`, where `F(k)` is the projecting line over `k` and
 //!   `e_ij` a third point of the circle `C_ij`; the closing step
 //!   `c00' = F(p1) ∩ span(c01, F(e41))` returns to `c00` exactly for Miquel data. One
 //!   weight (of `c11`) is essential: a one-parameter family of patches.
 //!
-//! The constructions are generic over the projection; the Miquel statements are the
-//! seed's for δ (and transfer to every oval quadric through [`super::QuadricProjection`]).
+//! The constructions are generic over the projection; the Miquel statements are
+//! Jüttler's for δ (and transfer to every oval quadric through [`super::QuadricProjection`]).
 
 use super::helpers::{self, fmt_scalar, fmt_vec};
 use super::image::{patch_image, ImagePatch};
@@ -160,7 +160,7 @@ fn chain_step<F: Scalar, P: GeneralizedProjection<F> + ?Sized>(
 
 impl<F: Scalar> BiquadraticPatch<F> {
     /// The biquadratic image of the bilinear patch with corners `c00, c10, c11, c01`
-    /// (notes 000-7), with its corners, circle planes and second intersections `qᵢ`.
+    /// (docs/math/quadrics.md, "Biquadratic sphere patches and the Miquel configuration"), with its corners, circle planes and second intersections `qᵢ`.
     ///
     /// # Errors
     /// [`QuadricError::Degenerate`] if an edge maps to less than a proper conic (e.g. an
@@ -259,7 +259,7 @@ impl<F: Scalar> BiquadraticPatch<F> {
 
     /// The biquadratic patch with corners `p1..p4` whose boundary circles are
     /// `C12 ∋ p1, p2, e12`, `C23 ∋ p2, p3, e23`, `C34 ∋ p3, p4, e34`, `C41 ∋ p4, p1, e41`
-    /// (each `e_ij` a third point of the circle), by the chain of notes 000-8. `weight`
+    /// (each `e_ij` a third point of the circle), by the chain of docs/math/quadrics.md, "Biquadratic sphere patches and the Miquel configuration". `weight`
     /// scales the corner `c11` (the essential weight; `1` is a good default).
     ///
     /// # Errors
@@ -332,7 +332,7 @@ impl<F: Scalar> BiquadraticPatch<F> {
         let back = chain_step(proj, &c01, &corners[0], &edge_points[3], "c01 → c00")?;
         if !helpers::parallel(&back, &c00) {
             // det[p1,q2,p3,q4] = 0 holds but is vacuous when points of the configuration
-            // coincide (e.g. q2 = p3); the chain decides (notes 000-8).
+            // coincide (e.g. q2 = p3); the chain decides (docs/math/quadrics.md, "Biquadratic sphere patches and the Miquel configuration").
             let coincide: Vec<String> = (0..4)
                 .flat_map(|i| (0..4).map(move |j| (i, j)))
                 .filter(|&(i, j)| helpers::parallel(&second[i], &corners[j]))
@@ -354,7 +354,7 @@ impl<F: Scalar> BiquadraticPatch<F> {
 
     /// The converse of Satz 7 from the eight points of a Miquel configuration: corners
     /// `p1..p4` and second intersections `q1..q4` with `C12 ∋ p1,p2,q1,q2`,
-    /// `C23 ∋ p2,p3,q2,q3`, `C34 ∋ p3,p4,q3,q4`, `C41 ∋ p4,p1,q4,q1` (notes 000-8).
+    /// `C23 ∋ p2,p3,q2,q3`, `C34 ∋ p3,p4,q3,q4`, `C41 ∋ p4,p1,q4,q1` (docs/math/quadrics.md, "Biquadratic sphere patches and the Miquel configuration").
     ///
     /// # Errors
     /// As [`Self::from_corners`]; [`QuadricError::Degenerate`] if a boundary circle is not

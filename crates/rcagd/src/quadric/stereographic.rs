@@ -1,18 +1,18 @@
-//! The generalized stereographic projection onto the unit sphere (seed 000 §2).
+//! The generalized stereographic projection onto the unit sphere (Jüttler §2).
 //!
 //! * `δ(p) = (p0²+p1²+p2²+p3², 2p0p1−2p2p3, 2p0p2+2p1p3, p1²+p2²−p0²−p3²)` (9): every
 //!   real `p ≠ 0` maps to a point of the unit sphere `K: k0² = k1²+k2²+k3²` (5), and
-//!   `k0 = |p|² > 0`; δ is defined on all of real `P³` (notes 000-1). It is the Hopf map.
+//!   `k0 = |p|² > 0`; δ is defined on all of real `P³` (docs/math/quadrics.md, "The map δ onto the sphere"). It is the Hopf map.
 //! * `σ(p0,p1,p2,0) = (p0²+p1²+p2², 2p0p1, 2p0p2, p1²+p2²−p0²)` (10): the stereographic
 //!   projection of the equator plane `P: p3 = 0` from `z = (1,0,0,1)` (Satz 2);
 //!   `σ⁻¹(k) = (k0−k3, k1, k2, 0)`, with `σ⁻¹(σ(p)) = 2p0·p`.
 //! * `ϑ(p) = (p0²+p3², p0p1−p2p3, p0p2+p1p3, 0)` (11), the net projection along the
 //!   elliptic congruence (12) (Folgerung 6); `σ(ϑ(p)) = (p0²+p3²)·δ(p)` (Satz 3,
-//!   corrected: the seed's `δ = σ∘ϑ` holds up to this factor, notes 000-4). ϑ vanishes on
+//!   corrected: Jüttler's `δ = σ∘ϑ` holds up to this factor, docs/math/quadrics.md, "The map δ onto the sphere"). ϑ vanishes on
 //!   the line `p0 = p3 = 0` (the fibre over `z`), so δ is computed directly, never as σ∘ϑ.
 //! * The fibre rotation `J(p) = (−p3, p2, −p1, p0)`, `J² = −I`, `δ((aI+bJ)p) = (a²+b²)δ(p)`.
 //! * The fibre over `k ∈ K` (Lemma 4 (12)): `span{a, Ja}` with `a = σ⁻¹(k)`; over `z` it is
-//!   `span{(0,1,0,0), (0,0,1,0)}` (notes 000-5).
+//!   `span{(0,1,0,0), (0,0,1,0)}` (docs/math/quadrics.md, "The map δ onto the sphere").
 
 use super::helpers::{self, fmt_vec, mat4_i};
 use super::quadratic_map::QuadraticMap;
@@ -32,7 +32,7 @@ fn two<F: Scalar>() -> F {
     F::from_i64(2)
 }
 
-/// `δ(p)`, seed (9).
+/// `δ(p)`, Jüttler (9).
 pub fn delta<F: Scalar>(p: &Hom<F>) -> Hom<F> {
     let [p0, p1, p2, p3] = p;
     [
@@ -60,7 +60,7 @@ pub fn delta_map<F: Scalar>() -> QuadraticMap<F> {
     QuadraticMap::from_fn(delta)
 }
 
-/// `σ(p)` for a point of the equator plane `P: p3 = 0`, seed (10) (Satz 2).
+/// `σ(p)` for a point of the equator plane `P: p3 = 0`, Jüttler (10) (Satz 2).
 ///
 /// # Errors
 /// [`QuadricError::NotInPlane`] if `p3 ≠ 0`, [`QuadricError::ZeroPoint`] for `p = 0`.
@@ -124,11 +124,11 @@ fn theta_formula<F: Scalar>(p: &Hom<F>) -> Hom<F> {
     ]
 }
 
-/// `ϑ(p)`, seed (11): the net projection onto `P` along the congruence (12).
+/// `ϑ(p)`, Jüttler (11): the net projection onto `P` along the congruence (12).
 ///
 /// # Errors
 /// [`QuadricError::Exceptional`] on the line `p0 = p3 = 0` (the fibre over `z`), where ϑ
-/// vanishes identically (notes 000-4).
+/// vanishes identically (docs/math/quadrics.md, "The map δ onto the sphere").
 pub fn theta<F: Scalar>(p: &Hom<F>) -> Result<Hom<F>, QuadricError> {
     check_point(p, "the point")?;
     let t = theta_formula(p);
@@ -152,12 +152,12 @@ pub fn j_matrix<F: Scalar>() -> Mat4<F> {
     mat4_i([[0, 0, 0, -1], [0, 0, 1, 0], [0, -1, 0, 0], [1, 0, 0, 0]])
 }
 
-/// `J(p) = (−p3, p2, −p1, p0)` (notes 000-1).
+/// `J(p) = (−p3, p2, −p1, p0)` (docs/math/quadrics.md, "The map δ onto the sphere").
 pub fn fibre_rotation<F: Scalar>(p: &Hom<F>) -> Hom<F> {
     [-p[3].clone(), p[2].clone(), -p[1].clone(), p[0].clone()]
 }
 
-/// The projecting line of δ over `k ∈ K` (Lemma 4 (12), notes 000-5): `[a, Ja]` with
+/// The projecting line of δ over `k ∈ K` (Lemma 4 (12), docs/math/quadrics.md, "The map δ onto the sphere"): `[a, Ja]` with
 /// `a = σ⁻¹(k) = (k0−k3, k1, k2, 0)` if `k0 ≠ k3`, and `a = (k1, k0+k3, 0, k2)` otherwise
 /// (then `k ∥ z` and the fibre is `span{(0,1,0,0), (0,0,1,0)}`). Then
 /// `δ(λa + μJa) = c·(λ²+μ²)·k` with `c = 2(k0−k3)` resp. `c = 2(k0+k3)`. (For `f64` the
@@ -184,7 +184,7 @@ pub fn delta_fibre<F: Scalar>(k: &Hom<F>) -> Result<[Hom<F>; 2], QuadricError> {
     Ok([a, b])
 }
 
-/// The generalized stereographic projection δ onto the unit sphere `K` (seed 000 §2).
+/// The generalized stereographic projection δ onto the unit sphere `K` (Jüttler §2).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct Delta;
 
@@ -214,7 +214,7 @@ impl<F: Scalar> GeneralizedProjection<F> for Delta {
 
 /// The quadric `α(p1²+p2²) + β(p0p1−p2p3) + γ(p0p2+p1p3) + ε(p0²+p3²) = 0`, the preimage
 /// under ϑ of the circle (or line, `α = 0`) `α(X1²+X2²) + βX0X1 + γX0X2 + εX0² = 0` in
-/// `P` (notes 000-10; seed §2 property list). Its determinant is `(4αε−β²−γ²)²/16`: a
+/// `P` (docs/math/quadrics.md, "Preimage quadrics"; Jüttler §2 property list). Its determinant is `(4αε−β²−γ²)²/16`: a
 /// one-sheet hyperboloid for a real circle, a hyperbolic paraboloid for a line.
 pub fn circle_preimage_quadric<F: Scalar>(alpha: &F, beta: &F, gamma: &F, eps: &F) -> Mat4<F> {
     let h = F::one() / two::<F>();
@@ -244,8 +244,8 @@ pub fn plane_circle_matrix<F: Scalar>(alpha: &F, beta: &F, gamma: &F, eps: &F) -
     ]
 }
 
-/// The exact identities of seed 000 §2 for δ, σ, ϑ, J as polynomial identities in
-/// `p0..p3` (notes 000-1, 000-4, 000-5, 000-10):
+/// The exact identities of Jüttler §2 for δ, σ, ϑ, J as polynomial identities in
+/// `p0..p3` (docs/math/quadrics.md, "The map δ onto the sphere", "Preimage quadrics"):
 /// (5)/(9) `δ(p) ∈ K`; Satz 2 `δ|_{p3=0} = σ` and `σ(p) = (p1²+p2²−p0²)·z + 2p0·p`
 /// (σ(p) lies on the line `zp`); Satz 3 `σ(ϑ(p)) = (p0²+p3²)·δ(p)`; `σ⁻¹(δ(p)) = 2ϑ(p)`;
 /// `σ⁻¹(σ(p)) = 2p0·p`; `J² = −I`; `δ∘J = δ`; `δ̂(p, Jp) = 0` (so

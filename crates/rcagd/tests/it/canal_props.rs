@@ -125,7 +125,7 @@ proptest! {
         }
     }
 
-    /// Krasauskas' reduced pencil (seed 003 §2.4) on random rational families tangent to a
+    /// Krasauskas' reduced pencil (Gruber §2.4) on random rational families tangent to a
     /// plane (`r = m₃ + c`, weight `1 + t²`, so `D = P₁² + P₂²` splits over `Q`): a certified
     /// build whose pencil degree never grows, of bidegree at most `(k + 2·deg(a, b), 2)`, and
     /// the lowest build is never above either construction alone.
@@ -275,7 +275,7 @@ proptest! {
         }
     }
 
-    /// The cyclographic construction of quadratic families (seed 003 §2.3) is rational and
+    /// The cyclographic construction of quadratic families (Gruber §2.3) is rational and
     /// certified.
     #[test]
     fn quadratic_families(k in proptest::array::uniform4(poly(2))) {

@@ -1,5 +1,4 @@
-//! Property tests of the Laguerre-geometry module (seed 004 ch. 3, NOTES-004 §0, A3.1,
-//! A3.2) with random exact inputs: the model maps round-trip, Laguerre maps preserve
+//! Property tests of the Laguerre-geometry module (Peternell ch. 3, §3.1–§3.2) with random exact inputs: the model maps round-trip, Laguerre maps preserve
 //! oriented contact (and the incidence form of every hyperplane), the dilatation is the
 //! offset with the sign of erratum E6, every map is pe-orthogonal, and `f64` agrees with
 //! the exact result.
@@ -252,7 +251,7 @@ proptest! {
     }
 
     /// The dilatation (3.4) is the offset x ↦ x + d n: on planes e0 ↦ e0 − d and on cycles
-    /// r ↦ r + d (NOTES-004 §0, erratum E6 — the seed's e0 ↦ e0 + d is the offset by −d);
+    /// r ↦ r + d (erratum E6 — the seed's e0 ↦ e0 + d is the offset by −d);
     /// in the isotropic model y₃ ↦ y₃ − (d/2)(S + 1) (corrected (3.15)). It commutes with
     /// Euclidean motions and dilatations add.
     #[test]

@@ -1,4 +1,4 @@
-//! Property tests of the line geometry (seed 003 §1.1) and the cyclographic model (§1.2)
+//! Property tests of the line geometry (Gruber §1.1) and the cyclographic model (§1.2)
 //! with random exact inputs: the Klein quadric identity and every incidence hold exactly;
 //! `f64` agrees with the exact results.
 

@@ -46,7 +46,7 @@ fn close(a: f64, b: f64) -> bool {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
-    /// ALG-1/2/3: control points, σ, arc length certify exactly; f64 agrees.
+    /// docs/math/ph-curves.md, "The hodograph and the speed" and "Control points from the quaternion coefficients", "Speed and arc length": control points, σ, arc length certify exactly; f64 agrees.
     #[test]
     fn ph_curve_certifies(coeffs in prop::collection::vec(quat(), 1..5), p0 in point()) {
         prop_assume!(coeffs.iter().any(|a| a.norm_sq() != Q::from(0)));
@@ -77,7 +77,7 @@ proptest! {
         }
     }
 
-    /// ALG-3: parameter at arc length (exact bracket) and the constant-feed sampler.
+    /// docs/math/ph-curves.md, "Speed and arc length": parameter at arc length (exact bracket) and the constant-feed sampler.
     #[test]
     fn parameter_at_arc_length(coeffs in prop::collection::vec(quat(), 2..4), frac in 0u32..=16) {
         prop_assume!(coeffs.iter().all(|a| a.norm_sq() != Q::from(0)));
@@ -101,7 +101,7 @@ proptest! {
         prop_assert!(pc.parameter_at_arc_length(&(total + Q::from(1)), &tol).is_err());
     }
 
-    /// Every PH cubic is DPH and a helix (seed 001 §4.1); Frenet certificates hold.
+    /// Every PH cubic is DPH and a helix (Besednjak §4.1); Frenet certificates hold.
     #[test]
     fn cubics_are_dph_helices(a0 in quat(), a1 in quat()) {
         let c = PhCurve::new(vec![a0, a1], [Q::from(0), Q::from(0), Q::from(0)]).unwrap();
@@ -123,7 +123,7 @@ proptest! {
         }
     }
 
-    /// ALG-7: helices by reparametrization and/or multiplication certify as helices with
+    /// docs/math/ph-curves.md, "Helix constructions": helices by reparametrization and/or multiplication certify as helices with
     /// the predicted proportionality polynomial.
     #[test]
     fn helix_constructions(a0 in cplx(), a1 in cplx(), b0 in cplx(), b1 in cplx(),
@@ -157,7 +157,7 @@ proptest! {
         }
     }
 
-    /// Quintic helix recognition (seed 001 §6.2): reparametrization → general,
+    /// Quintic helix recognition (Besednjak §6.2): reparametrization → general,
     /// multiplication → monotone with 4c_0c_2 = 1.
     #[test]
     fn quintic_helix_recognition(a0 in cplx(), a1 in cplx(), b0 in cplx(), b1 in cplx(),
@@ -199,7 +199,7 @@ proptest! {
     // septic constructions with exact certificates of degree-12 identities: fewer cases
     #![proptest_config(ProptestConfig::with_cases(32))]
 
-    /// ALG-9: septic DPH curves (st h = 0, st w = 2 and st h = 2, st w = 1, whose roots are
+    /// docs/math/ph-curves.md, "Septic DPH constructor": septic DPH curves (st h = 0, st w = 2 and st h = 2, st w = 1, whose roots are
     /// always rational) certify; the classification finds the degrees of h and w.
     #[test]
     fn septic_dph_constructor(w2 in prop::collection::vec(cplx(), 3), h2 in prop::collection::vec(rat(), 3),
@@ -244,7 +244,7 @@ proptest! {
     // sequences (≈ 0.2 s per case in the test profile): fewer cases
     #![proptest_config(ProptestConfig::with_cases(16))]
 
-    /// ALG-10: Hermite data sampled from a random rational general helical quintic are
+    /// docs/math/ph-curves.md, "Hermite interpolation by helical PH quintics": Hermite data sampled from a random rational general helical quintic are
     /// interpolated; the original curve is among the (exact) interpolants, every
     /// certificate holds, and the f64 path finds the same energies.
     #[test]

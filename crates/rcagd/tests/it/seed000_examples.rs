@@ -1,6 +1,6 @@
-//! Seed 000 (Jüttler, *Zur Konstruktion rationaler Kurven und Flächen auf Quadriken*):
-//! every formula, statement and construction the seed prints, reproduced exactly, with
-//! the corrections of `seeds/NOTES-000-003.md` (000-1 … 000-11, errata 000-E1 … 000-E3).
+//! B. Jüttler, *Zur Konstruktion rationaler Kurven und Flächen auf Quadriken*:
+//! every formula, statement and construction the paper prints, reproduced exactly, with
+//! the corrections of docs/math/quadrics.md (errata J1–J3).
 //! The seed prints no numerical examples; its "examples" are the formulas (5)–(18),
 //! Satz 1–11, Lemma 4/10 and the property lists, each checked here as an exact identity
 //! or on exact instances.
@@ -185,7 +185,7 @@ fn satz_2_sigma_is_the_stereographic_projection_from_z() {
             rank(&[z.clone(), p.clone(), s.clone()]) <= 2,
             "σ(p) on the line zp"
         );
-        // σ⁻¹(σ(p)) = 2p0·p (notes 000-4)
+        // σ⁻¹(σ(p)) = 2p0·p (docs/math/quadrics.md, "The map δ onto the sphere")
         if !p[0].is_zero() {
             assert_eq!(
                 sigma_inverse(&s).unwrap(),
@@ -199,7 +199,7 @@ fn satz_2_sigma_is_the_stereographic_projection_from_z() {
     ));
 }
 
-/// Satz 3 (11), corrected (notes 000-4): δ = σ∘ϑ holds only up to the factor p0²+p3²,
+/// Satz 3 (11), corrected (docs/math/quadrics.md, "The map δ onto the sphere"): δ = σ∘ϑ holds only up to the factor p0²+p3²,
 /// σ(ϑ(p)) = (p0²+p3²)·δ(p); the seed's proof ϑ = σ⁻¹∘δ holds up to the factor 2.
 #[test]
 fn satz_3_delta_is_sigma_after_theta_up_to_a_factor() {
@@ -227,7 +227,7 @@ fn satz_3_delta_is_sigma_after_theta_up_to_a_factor() {
 }
 
 /// Lemma 4 (12): the preimage of p ∈ P under ϑ (and of k = σ(p) under δ) is the line
-/// λ(p0,p1,p2,0) + μ(0,p2,−p1,p0), and δ(λa+μJa) = 2(k0−k3)(λ²+μ²)·k (notes 000-5).
+/// λ(p0,p1,p2,0) + μ(0,p2,−p1,p0), and δ(λa+μJa) = 2(k0−k3)(λ²+μ²)·k (docs/math/quadrics.md, "The map δ onto the sphere").
 #[test]
 fn lemma_4_projecting_lines_12() {
     let mut g = Lcg(3);
@@ -257,7 +257,7 @@ fn lemma_4_projecting_lines_12() {
             }
         }
     }
-    // the fibre over z (notes 000-5)
+    // the fibre over z (docs/math/quadrics.md, "The map δ onto the sphere")
     let [a, b] = delta_fibre(&h([1, 0, 0, 1])).unwrap();
     assert_eq!(rank(&[a, b, h([0, 1, 0, 0]), h([0, 0, 1, 0])]), 2);
     let certs = stereographic::certify_identities::<Rational>();
@@ -337,7 +337,7 @@ fn folgerung_6_theta_is_a_net_projection() {
     }
 }
 
-/// §2 property list, 1st bullet, and notes 000-10: the ϑ-preimage of a circle
+/// §2 property list, 1st bullet, and docs/math/quadrics.md, "Preimage quadrics": the ϑ-preimage of a circle
 /// α(X1²+X2²)+βX0X1+γX0X2+εX0² = 0 is the quadric
 /// α(p1²+p2²)+β(p0p1−p2p3)+γ(p0p2+p1p3)+ε(p0²+p3²) = 0 (times p0²+p3²), of determinant
 /// (4αε−β²−γ²)²/16: a one-sheet hyperboloid for a real circle, a hyperbolic paraboloid
@@ -375,7 +375,7 @@ fn det_rows(m: &[Vec<Rational>]) -> Rational {
 }
 
 /// §2 property list, 2nd bullet: a non-projecting line maps to a circle on K (a conic of
-/// degree 2 whose control points span a plane; notes 000-2, special case n = 1).
+/// degree 2 whose control points span a plane; docs/math/quadrics.md, "Curves and patches under δ", special case n = 1).
 #[test]
 fn lines_map_to_circles() {
     let mut g = Lcg(8);
@@ -451,7 +451,7 @@ fn plane_basis(plane: &Hom<Rational>) -> Vec<Hom<Rational>> {
         .collect()
 }
 
-/// §2 (interpolation is a linear problem; lower degree than with σ), notes 000-6: five
+/// §2 (interpolation is a linear problem; lower degree than with σ), docs/math/quadrics.md, "Interpolation on the sphere": five
 /// points on K are interpolated by a unique δ-quartic (solution space of dimension 2,
 /// {(aI+bJ)x}); a σ-preimage (planar, p3 = 0) of degree 2 cannot meet them, it needs
 /// degree 3 (a sextic on K).
@@ -513,7 +513,7 @@ fn satz_1_curves_have_preimages_of_half_degree() {
     assert_all(&pre.certify());
 }
 
-/// Notes 000-E3 (Satz 1, surface half, unverified): `patch_preimage` decides per patch.
+/// docs/math/quadrics.md, Errata J3 (Satz 1, surface half, unverified): `patch_preimage` decides per patch.
 /// A δ-image of a bilinear patch has a bilinear preimage; the biquadratic patch of
 /// revolution on K (meridian arc × parallel arc) has one too, consistent with Satz 1.
 #[test]
@@ -557,7 +557,7 @@ fn satz_1_surfaces_is_decided_per_patch() {
     assert_all(&pre.certify());
 }
 
-/// Satz 7 (notes 000-7): the δ-image of a bilinear patch is a biquadratic patch on K
+/// Satz 7 (docs/math/quadrics.md, "Biquadratic sphere patches and the Miquel configuration"): the δ-image of a bilinear patch is a biquadratic patch on K
 /// whose corners p_i and second circle intersections q_i satisfy det[p1,q2,p3,q4] = 0 and
 /// det[q1,p2,q3,p4] = 0 (Miquel), verified on random bilinear patches, including the
 /// degenerate small-integer cases (tangent circles, q_i = p_j).
@@ -600,7 +600,7 @@ fn satz_7_miquel_on_random_bilinear_patches() {
     }
 }
 
-/// Converse of Satz 7 (notes 000-8): from corners and boundary circles in Miquel position
+/// Converse of Satz 7 (docs/math/quadrics.md, "Biquadratic sphere patches and the Miquel configuration"): from corners and boundary circles in Miquel position
 /// the chain construction gives a bilinear preimage and closes (c00' ∥ c00); the weight
 /// of c11 is a free parameter; non-Miquel data are refused with the residual.
 #[test]
@@ -688,7 +688,7 @@ fn formulas_15_to_17_and_satz_8_9() {
 }
 
 /// Lemma 10 (18), Satz 11: the ψ-preimage of h is the line λ(h0,h1,h2,h0) + μ(h0,h1,0,0),
-/// with α(λa+μb) = λ(λ+μ)q0·(q0,q1,q2,q0) and ψ(λa+μb) = λ(λ+μ)h0·h (notes 000-9); every
+/// with α(λa+μb) = λ(λ+μ)q0·(q0,q1,q2,q0) and ψ(λa+μb) = λ(λ+μ)h0·h (docs/math/quadrics.md, "The map ψ onto the hyperbolic paraboloid"); every
 /// such line meets the focal lines (1 λ 0 0) and (0 0 1 μ) (a hyperbolic congruence).
 #[test]
 fn lemma_10_and_satz_11_hyperbolic_congruence() {
@@ -732,7 +732,7 @@ fn lemma_10_and_satz_11_hyperbolic_congruence() {
     ));
 }
 
-/// Erratum 000-E1 (§3 property list, 2nd bullet): the image of a non-projecting line is a
+/// docs/math/quadrics.md, Errata J1 (§3 property list, 2nd bullet): the image of a non-projecting line is a
 /// conic on H under **ψ** (printed: δ). The ψ-image lies on H, is planar, and is not on K.
 #[test]
 fn erratum_e1_line_images_are_conics_on_h_under_psi() {
@@ -752,7 +752,7 @@ fn erratum_e1_line_images_are_conics_on_h_under_psi() {
     assert_eq!(a0[0], a0[3]);
 }
 
-/// Erratum 000-E2 (§3 property list, 1st bullet): the α-preimage of a hyperbola with
+/// docs/math/quadrics.md, Errata J2 (§3 property list, 1st bullet): the α-preimage of a hyperbola with
 /// axis-parallel asymptotes is a **hyperbolic paraboloid** (printed: one-sheet
 /// hyperboloid): a q0q3 + b q1q3 + c q0q2 + d q1q2 = 0 always contains the focal line
 /// q0 = q1 = 0 and is touched by the plane at infinity. The line case (2nd half of the
@@ -792,9 +792,9 @@ fn erratum_e2_conic_preimages_are_hyperbolic_paraboloids() {
 }
 
 // ---------------------------------------------------------------------------------------
-// Schlussbemerkung / notes 000-11: other quadrics
+// Schlussbemerkung / docs/math/quadrics.md, "Other quadrics": other quadrics
 
-/// Notes 000-11: the projective maps K → ellipsoid diag(1,a,b,c), K → two-sheet
+/// docs/math/quadrics.md, "Other quadrics": the projective maps K → ellipsoid diag(1,a,b,c), K → two-sheet
 /// hyperboloid (k0 ↔ k3), K → elliptic paraboloid ((x0,x3) = (k0−k3, k0+k3)), and
 /// H → one-sheet hyperboloid map the quadrics onto each other exactly, and carry curves
 /// (degree unchanged) onto the target.

@@ -1,10 +1,10 @@
-//! Seed 001 (Besednjak) worked examples of chapters 3, 4, 8 and 9, reproduced exactly
-//! (NOTES-001 "Worked examples — verification status"). Printed values that the seed
+//! The worked examples of S. Besednjak, *DPH-krivulje in polinomske vijačnice*, chapters 3,
+//! 4, 8 and 9, reproduced exactly (docs/math/ph-curves.md). Printed values that the thesis
 //! gets wrong are replaced by the corrected value, with a comment citing the erratum.
 //!
 //! The printed data of chapter 8 (α, β, quaternion coefficients, control points, power
-//! form, gcd(x',y',z'), σ, |κ/τ|) are transcribed from the seed (via
-//! `seeds/checks/001/check_examples.py`, which holds them as sympy literals).
+//! form, gcd(x',y',z'), σ, |κ/τ|) are transcribed from the thesis (via an independent
+//! sympy transcription of its printed values).
 
 use rcagd::ph::dph::{dph_septic, dph_septic_z_roots};
 use rcagd::ph::hermite::seed_xi_quartic;
@@ -56,7 +56,7 @@ struct Printed {
 
 /// Checks every printed quantity of a chapter-8 example against the curve built by the
 /// library, plus all certificates. `axis` is the exact solution `a` of `a·r' ≡ σ`
-/// (NOTES-001 verification status) or `None` for a non-helical curve.
+/// (exact recomputation) or `None` for a non-helical curve.
 fn check_printed(ex: &Printed, curve: &PhCurve<Q>, axis: Option<[&str; 3]>) {
     let (al, be) = curve.hopf_coefficients();
     let pa: Vec<Complex<Q>> = ex.alpha.iter().map(|(a, b)| c(a, b)).collect();
@@ -409,8 +409,8 @@ const EX8_9: Printed = Printed {
 
 // ------------------------------------------------------------------ chapter 3 and 4
 
-/// Seed 001 Example 3.13 (after Farouki): a DPH septic that is not a helix.
-/// σ and |r'×r''| as printed; τ/κ corrected per NOTES-001 erratum 8: the seed prints
+/// Besednjak Example 3.13 (after Farouki): a DPH septic that is not a helix.
+/// σ and |r'×r''| as printed; τ/κ corrected per docs/math/ph-curves.md, Errata E8: the seed prints
 /// `(2t⁶+9t⁴−9)/(9(t²+1)²)`, with τ from (2.14) it is `−(2t⁶+9t⁴−9)/(9(t²+1)²)`.
 #[test]
 fn example_3_13_dph_septic_not_helix() {
@@ -431,19 +431,22 @@ fn example_3_13_dph_septic_not_helix() {
     assert_eq!(dph.omega_tilde, poly(&["6", "0", "6"]), "ω = 6(t²+1)");
     assert_certs(&pc.certify_dph(&dph));
     assert_certs(&pc.frenet_frame(&dph).certify());
-    // τ/κ = trip/ω³ = −(2t⁶+9t⁴−9)/(9(t²+1)²)  (erratum 8: the seed drops the sign)
+    // τ/κ = trip/ω³ = −(2t⁶+9t⁴−9)/(9(t²+1)²)  (docs/math/ph-curves.md, Errata E8: the seed drops the sign)
     let trip = pc.triple_product();
     let w3 = dph.omega_tilde.pow(3);
     let lhs = &trip * &poly(&["9", "0", "18", "0", "9"]);
     let corrected = -(&poly(&["-9", "0", "0", "0", "9", "0", "2"]) * &w3);
-    assert_eq!(lhs, corrected, "τ/κ (corrected sign, erratum 8)");
+    assert_eq!(
+        lhs, corrected,
+        "τ/κ (corrected sign, docs/math/ph-curves.md, Errata E8)"
+    );
     let printed = &poly(&["-9", "0", "0", "0", "9", "0", "2"]) * &w3;
     assert_ne!(lhs, printed, "the printed sign is wrong");
     assert!(matches!(pc.helix_test().unwrap(), HelixTest::NotHelix));
     assert!(!pc.kappa_over_tau_squared().unwrap().is_constant());
 }
 
-/// Seed 001 Example 4.4: a PH cubic, DPH with ω ≡ 2, triple product −16, κ/τ = −1/2.
+/// Besednjak Example 4.4: a PH cubic, DPH with ω ≡ 2, triple product −16, κ/τ = −1/2.
 #[test]
 fn example_4_4_cubic_is_dph_and_helix() {
     let r = [
@@ -475,7 +478,7 @@ fn example_4_4_cubic_is_dph_and_helix() {
     assert_eq!(pc.arc_length(), qi(2), "∫₀¹(3t²−4t+3) = 1 − 2 + 3");
 }
 
-/// Seed 001 Example 4.5: a PH quintic that is not DPH. σ and ρ as printed. Erratum 18:
+/// Besednjak Example 4.5: a PH quintic that is not DPH. σ and ρ as printed. Erratum E18 (docs/math/ph-curves.md):
 /// the printed hodograph and `r'×r''` are not those of the printed curve; they belong
 /// to a different curve, which is PH with `σ = (2t²−2t+1)(4t²−2t+3)` and even DPH with
 /// `ρ = 8(2t²−2t+1)²`.
@@ -496,7 +499,7 @@ fn example_4_5_ph_quintic_not_dph() {
     );
     assert!(matches!(pc.dph_test().unwrap(), DphTest::NotDph { .. }));
     assert!(matches!(pc.dph(), Err(rcagd::ph::PhError::NotDph(_))));
-    // erratum 18: the printed hodograph is not r'
+    // docs/math/ph-curves.md, Errata E18: the printed hodograph is not r'
     let printed_h = [
         poly(&["-1", "0", "2", "-4"]),
         poly(&["2", "-6", "12", "-12", "8"]),
@@ -548,7 +551,7 @@ fn example_4_5_ph_quintic_not_dph() {
     assert_certs(&other.certify_dph(&d));
 }
 
-/// Seed 001 Lemma 2.1 / NOTES-001 ALG-8: `Q i Q* = (−1, 2, 2)` has the rational solution
+/// Besednjak Lemma 2.1 / docs/math/ph-curves.md, "Prescribed tangents (Lemma 2.1)": `Q i Q* = (−1, 2, 2)` has the rational solution
 /// `Q = i + j + k`.
 #[test]
 fn lemma_2_1_example() {
@@ -558,7 +561,7 @@ fn lemma_2_1_example() {
 
 // ------------------------------------------------------------------ chapter 8
 
-/// Seed 001 Example 8.1: cubic reparametrization of the line/circle (6.5).
+/// Besednjak Example 8.1: cubic reparametrization of the line/circle (6.5).
 #[test]
 fn example_8_1_cubic_reparametrization() {
     let seed = LineCircle::new(ci(1, 0), ci(1, 1), ci(1, -1), ci(0, 1)).unwrap();
@@ -577,7 +580,7 @@ fn example_8_1_cubic_reparametrization() {
         .is_none());
     assert!(
         curve.coefficients_in_real_plane(),
-        "A_i = f_i V_0 + g_i V_1 (ALG-7)"
+        "A_i = f_i V_0 + g_i V_1 (Besednjak §6.3)"
     );
     assert_eq!(
         curve.proportionality(),
@@ -620,7 +623,7 @@ fn frenet_frame_is_classical_where_omega_is_negative() {
     assert!(d.omega_tilde.eval(&q("-1/2")) < qi(0));
 }
 
-/// Seed 001 Example 8.2: multiplication by the quadratic `w = (1, 1+i, 1)`.
+/// Besednjak Example 8.2: multiplication by the quadratic `w = (1, 1+i, 1)`.
 #[test]
 fn example_8_2_multiplication() {
     let seed = LineCircle::new(ci(0, 5), ci(1, 1), ci(1, -1), ci(2, 5)).unwrap();
@@ -633,7 +636,7 @@ fn example_8_2_multiplication() {
     );
 }
 
-/// Seed 001 Example 8.3: quadratic reparametrization then linear multiplication.
+/// Besednjak Example 8.3: quadratic reparametrization then linear multiplication.
 #[test]
 fn example_8_3_reparametrization_and_multiplication() {
     let seed = LineCircle::new(ci(1, 1), ci(1, 0), ci(1, -1), ci(2, 0)).unwrap();
@@ -659,7 +662,7 @@ fn septic(
     dph_septic(&h, w, &a0, &a1, &b0, z, origin()).expect("septic DPH")
 }
 
-/// Seed 001 Examples 8.4 (helical) and 8.5 (non-helical): `st h = 0`, `st w = 2`, the two
+/// Besednjak Examples 8.4 (helical) and 8.5 (non-helical): `st h = 0`, `st w = 2`, the two
 /// roots of (5.8), `z = (4w_1² − w_0w_2)/9` and `z = w_0w_2/3`.
 #[test]
 fn examples_8_4_and_8_5_h0_w2() {
@@ -740,10 +743,10 @@ fn examples_8_4_and_8_5_h0_w2() {
     assert!(d.0.abs() < 1e-12 && (d.1 + s2 / 3.0).abs() < 1e-12);
 }
 
-/// Seed 001 Examples 8.6 (helical) and 8.7 (non-helical): `st h = 2`, `st w = 1`.
-/// Erratum 16: the second root of (5.10) is `(h_2w_0² + h_1w_0w_1 + h_0w_1²)/9` (the seed
+/// Besednjak Examples 8.6 (helical) and 8.7 (non-helical): `st h = 2`, `st w = 1`.
+/// Erratum E16 (docs/math/ph-curves.md): the second root of (5.10) is `(h_2w_0² + h_1w_0w_1 + h_0w_1²)/9` (the seed
 /// prints `− h_0w_1²`, with which the linear system of Ex 8.6 has no solution).
-/// Erratum 20: Ex 8.6 solves (5.9), not (5.7).
+/// Erratum E20 (docs/math/ph-curves.md): Ex 8.6 solves (5.9), not (5.7).
 #[test]
 fn examples_8_6_and_8_7_h2_w1() {
     let h = [1, 2, 1];
@@ -771,7 +774,7 @@ fn examples_8_6_and_8_7_h2_w1() {
             ),
             Err(rcagd::ph::PhError::NoRealSolution(_))
         ),
-        "erratum 16: the printed root gives no solution"
+        "docs/math/ph-curves.md, Errata E16: the printed root gives no solution"
     );
     let c86 = septic(&h, &w, ci(1, 0), ci(1, 0), ci(-1, 0), &z_corrected);
     check_printed(&EX8_6, &c86, Some(["0", "-1", "-1/2"]));
@@ -804,9 +807,9 @@ fn examples_8_6_and_8_7_h2_w1() {
     assert_eq!(a.gcd(&b).degree(), Some(0));
 }
 
-/// Seed 001 Examples 8.8 (helical, Δ = 0) and 8.9 (non-helical, Δ = −9): `st h = 4`,
-/// `st w = 0`. Erratum 22: `Δ = 9h_2² + 3h_0h_4 − 12h_1h_3` (the seed prints `h_1h_4`,
-/// which would give 216 and 15); erratum 21: Ex 8.7 cites (5.8)/(5.7) for (5.10)/(5.9).
+/// Besednjak Examples 8.8 (helical, Δ = 0) and 8.9 (non-helical, Δ = −9): `st h = 4`,
+/// `st w = 0`. Erratum E22 (docs/math/ph-curves.md): `Δ = 9h_2² + 3h_0h_4 − 12h_1h_3` (the seed prints `h_1h_4`,
+/// which would give 216 and 15); docs/math/ph-curves.md, Errata E21: Ex 8.7 cites (5.8)/(5.7) for (5.10)/(5.9).
 #[test]
 fn examples_8_8_and_8_9_h4_w0() {
     let h88 = [-1i64, 2, 3, 4, -5];
@@ -847,8 +850,8 @@ fn examples_8_8_and_8_9_h4_w0() {
 
 // ------------------------------------------------------------------ chapter 9
 
-/// Seed 001 Example 9.1: `p_s = 0`, `d_s = (1,0,1)`, `p_f = (1,1,1)`, `d_f = (0,1,1)`.
-/// Four real roots, two admissible, four interpolants; values as printed (NOTES-001:
+/// Besednjak Example 9.1: `p_s = 0`, `d_s = (1,0,1)`, `p_f = (1,1,1)`, `d_f = (0,1,1)`.
+/// Four real roots, two admissible, four interpolants; values as printed (docs/math/ph-curves.md:
 /// "All claims hold"); the printed axis of the ξ₂ pair is the opposite vector with
 /// ψ = 148.728°, equivalent to ours (ψ = 31.2717°).
 #[test]
@@ -977,7 +980,7 @@ fn example_9_1_hermite() {
     }
 }
 
-/// Degenerate Hermite data give typed errors (NOTES-001 ALG-10, erratum 25).
+/// Degenerate Hermite data give typed errors (docs/math/ph-curves.md, "Hermite interpolation by helical PH quintics", docs/math/ph-curves.md, Errata E25).
 #[test]
 fn hermite_errors() {
     let z = origin();
@@ -1048,7 +1051,7 @@ fn check_septic_relations(curve: &PhCurve<Q>, c: [Complex<Q>; 4]) {
     }
 }
 
-/// Seed 001 (6.15) on Example 8.1 (cubic reparametrization): `c10 = 2h_3/(3k)`,
+/// Besednjak (6.15) on Example 8.1 (cubic reparametrization): `c10 = 2h_3/(3k)`,
 /// `c13 = h_0/(3k)`, `c20 = h_4/(3k)`, `c23 = 2h_1/(3k)` with the Bernstein coefficients
 /// `h_i` of `f'g − fg'` and `k = f_3g_0 − f_0g_3` (real c's: a general helix).
 #[test]
@@ -1081,7 +1084,7 @@ fn relations_6_15_cubic_reparametrization() {
     assert!(curve.coefficients_in_real_plane());
 }
 
-/// Seed 001 (6.22) on Example 8.2 (multiplication by a quadratic `w`): `c10 = 2w_1/(3w_0)`,
+/// Besednjak (6.22) on Example 8.2 (multiplication by a quadratic `w`): `c10 = 2w_1/(3w_0)`,
 /// `c13 = w_0/(3w_2)`, `c20 = w_2/(3w_0)`, `c23 = 2w_1/(3w_2)` (complex: a monotone helix).
 #[test]
 fn relations_6_22_multiplication() {
@@ -1105,7 +1108,7 @@ fn relations_6_22_multiplication() {
     );
 }
 
-/// Seed 001 (6.24) on Example 8.3 (quadratic reparametrization, then linear `w`):
+/// Besednjak (6.24) on Example 8.3 (quadratic reparametrization, then linear `w`):
 /// `c10 = (h_1w_1 + h_2w_0)/(3h_1w_0)`, `c13 = h_0w_0/(3h_1w_1)`, `c20 = h_2w_1/(3h_1w_0)`,
 /// `c23 = (h_1w_0 + h_0w_1)/(3h_1w_1)` with `h` of (6.9).
 #[test]

@@ -1,6 +1,7 @@
-//! Seed 003 (Gruber, envelopes of sphere families), chapters 1–2, and the Möbius-geometry /
-//! canal-surface parts of seed 004 (Peternell, ch. 2 and §3.8/§4.5): every formula and
-//! printed example reproduced exactly, with the errata of NOTES-000-003 / NOTES-004
+//! D. Gruber, *Rationale Parametrisierungen von Kugelhüllflächen* (2008), chapters 1–2, and
+//! the Möbius-geometry / canal-surface parts of M. Peternell, *Rational Parametrizations
+//! for Envelopes of Quadric Families* (ch. 2 and §3.8/§4.5): every formula and printed
+//! example reproduced exactly, with the errata of docs/math/lines-and-canal.md
 //! confirmed by a counter-check where the printed form differs.
 
 use rcagd::canal::{
@@ -75,7 +76,7 @@ fn s003_1_1_wedge_homogeneity_and_identity() {
 
 #[test]
 fn s003_1_1_points_s_i_and_erratum_e23() {
-    // 003-1: s_i ∧ s_j = (l1, l2, l3, l6, −l5, l4)·l for the pairs 12, 13, 14, 23, 24, 34
+    // docs/math/lines-and-canal.md, "Plücker coordinates": s_i ∧ s_j = (l1, l2, l3, l6, −l5, l4)·l for the pairs 12, 13, 14, 23, 24, 34
     let line = Line::from_points(&v4([1, 2, -1, 3]), &v4([2, 0, 5, -1])).expect("l");
     let l = line.coords().clone();
     let s = line.coordinate_plane_points();
@@ -90,7 +91,7 @@ fn s003_1_1_points_s_i_and_erratum_e23() {
     for (i, j, f) in &factors {
         assert_eq!(wedge(&s[*i], &s[*j]), scale6(f, &l), "pair {i}{j}");
     }
-    // erratum 003-E23: the factor can vanish, then s_i ∧ s_j = 0 is not the line
+    // docs/math/lines-and-canal.md, Errata G23: the factor can vanish, then s_i ∧ s_j = 0 is not the line
     let lx = Line::from_affine_points(&[q(0), q(0), q(0)], &[q(1), q(0), q(0)]).expect("x-axis");
     let sx = lx.coordinate_plane_points();
     assert!(
@@ -163,7 +164,7 @@ fn s003_1_10_intersection_condition_and_erratum_e1() {
         ],
         x
     );
-    // erratum 003-E1: coplanarity is q − p ⊥ g × h, NOT q − p ⊥ g, h
+    // docs/math/lines-and-canal.md, Errata G1: coplanarity is q − p ⊥ g × h, NOT q − p ⊥ g, h
     let (gd, hd) = (g.direction(), h.direction());
     let qp: Vec<Rational> = (0..3).map(|i| qq[i].clone() - pp[i].clone()).collect();
     let dot = |a: &[Rational], b: &[Rational]| {
@@ -292,7 +293,7 @@ fn s003_1_13_oriented_contact_and_erratum_e2() {
     assert_eq!(k1.contact_residual(&k2), q(0));
     let c = k1.contact(&k2).expect("contact");
     assert!(c.all_hold());
-    // erratum 003-E2: the printed (1.16) ⟨k₁, k₂⟩_pe = 0 does not express contact
+    // docs/math/lines-and-canal.md, Errata G2: the printed (1.16) ⟨k₁, k₂⟩_pe = 0 does not express contact
     assert_ne!(lorentz(&k1.to_point(), &k2.to_point()), q(0));
     // (1.14): a point (radius 0) on a sphere
     let pt = OrientedSphere::new([q(2), q(0), q(0)], q(0));
@@ -367,7 +368,7 @@ fn example_2_3() -> CanalSpine<Rational> {
 fn s003_2_3_example_cyclographic_reparametrization_and_gamma() {
     let spine = example_2_3();
     let canal = QuadraticCanal::from_spine(&spine).expect("quadratic");
-    // (2.21) u = 4s/(−3 + 5s² + 5t²) (erratum 003-E5: k̇(u), not k̇(t))
+    // (2.21) u = 4s/(−3 + 5s² + 5t²) (docs/math/lines-and-canal.md, Errata G5: k̇(u), not k̇(t))
     let (num, den) = canal.parameter();
     for (s, t) in [(r(1, 3), r(2, 7)), (q(2), r(-1, 2)), (r(-5, 3), q(1))] {
         let u = num.eval(&s, &t) / den.eval(&s, &t);
@@ -390,7 +391,7 @@ fn s003_2_3_example_cyclographic_reparametrization_and_gamma() {
         assert_eq!(canal.eval(&s, &t).expect("point"), gamma);
     }
     assert!(canal.all_hold(), "{:?}", canal.certify());
-    // the same surface by the Peternell–Pottmann recipe (003-4) needs Q(√15):
+    // the same surface by the Peternell–Pottmann recipe (docs/math/lines-and-canal.md, "Canal surfaces") needs Q(√15):
     // D = 1 + 4u² − u²/4 = 1 + (15/4)u²
     assert_eq!(
         spine.discriminant().expect("D"),
@@ -713,7 +714,7 @@ fn s003_2_35_factorizations_and_satz2_erratum_e9() {
 #[test]
 fn s003_sum_of_two_squares_cases() {
     // exact over Q iff D splits over Q(i) with a sum-of-two-squares constant
-    let d = p(&[4, 0, 4]); // 4 + 4t² (NOTES 003-4)
+    let d = p(&[4, 0, 4]); // 4 + 4t² (docs/math/lines-and-canal.md, "Canal surfaces")
     assert!(matches!(
         sum_of_two_squares(&d).expect("s"),
         SumOfSquares::Rational { .. }
@@ -724,7 +725,7 @@ fn s003_sum_of_two_squares_cases() {
 }
 
 // ------------------------------------------------------------------------------------
-// seed 004: Möbius geometry and canal surfaces (ch. 2), cyclides (§3.8.1), §4.5
+// Peternell: Möbius geometry and canal surfaces (ch. 2), cyclides (§3.8.1), §4.5
 // ------------------------------------------------------------------------------------
 
 #[test]
@@ -797,7 +798,7 @@ fn s004_2_4_pencils_and_reality_of_canal_families() {
 
 #[test]
 fn s004_a3_4_dupin_cyclide_family() {
-    // NOTES-004 A3.4: C(θ) = C₀ + ρ(cos θ U + sin θ V), U = (1,0,0,0), V = (0, 5/4, 0, 3/4):
+    // Peternell §3.8.1 (docs/math/lines-and-canal.md, "Canal surfaces"): C(θ) = C₀ + ρ(cos θ U + sin θ V), U = (1,0,0,0), V = (0, 5/4, 0, 3/4):
     // spine (ρ cos θ, 5ρ/4 sin θ, 0), r = r₀ + 3ρ/4 sin θ, |ṁ|² − ṙ² = ρ²·θ̇²
     let (rho, r0) = (q(2), q(3));
     let w = p(&[1, 0, 1]); // cos θ = (1 − t²)/(1 + t²), sin θ = 2t/(1 + t²)
@@ -836,7 +837,7 @@ fn s004_a3_4_dupin_cyclide_family() {
         .sub(&x[1].mul(&x[1]).mul(&x00).scale(&q(16)));
     assert!(
         quartic.is_zero(),
-        "the Dupin cyclide quartic of NOTES-004 A3.4"
+        "the Dupin cyclide quartic of Peternell §3.8.1"
     );
     // with the sign of c flipped (the other relabelling) it fails: the check is not vacuous
     let l2 = x[2].mul(&x[0]).scale(&r(5, 2)).sub(&x00.scale(&r(9, 2)));
@@ -899,7 +900,7 @@ fn s004_thm_2_3_canal_from_a_mobius_curve() {
     ));
 }
 
-/// Seed 003 §2.4.2 (2.36)/(2.37): Krasauskas' reduced pencil against Peternell–Pottmann and
+/// Gruber §2.4.2 (2.36)/(2.37): Krasauskas' reduced pencil against Peternell–Pottmann and
 /// the bound of Satz 2, on rational circle spines (ring torus, Dupin cyclide) and a rational
 /// quadratic family whose `D` splits over `Q(i)` into two irreducible quadratics.
 #[test]
@@ -928,7 +929,7 @@ fn s003_2_4_krasauskas_reduction() {
         (
             // a polynomial quintic family tangent to the plane z = −1 (r = m₃ + 1, so
             // D = ṁ₁² + ṁ₂²): the pencil goes below the construction's (3k − 2, 2) and the
-            // bound (2.37) (erratum 003-E9)
+            // bound (2.37) (docs/math/lines-and-canal.md, Errata G9)
             "plane-tangent quintic",
             CanalSpine::polynomial(
                 [p(&[0, 1, 0, 1]), p(&[0, 0, 2, 0, 0, 1]), p(&[0, 1, 1])],

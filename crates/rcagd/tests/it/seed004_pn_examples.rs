@@ -1,8 +1,8 @@
-//! Seed 004 (Peternell, *Rational Parametrizations for Envelopes of Quadric Families*),
+//! M. Peternell, *Rational Parametrizations for Envelopes of Quadric Families*,
 //! chapters 3–5: every formula and printed example of Laguerre geometry, PN surfaces,
 //! modeling with PN surfaces and offsets of ruled manifolds, reproduced exactly over Q.
-//! Where `NOTES-004` lists an erratum, the test checks the corrected form *and* that the
-//! printed form fails (the erratum is confirmed). Of the two items the notes could not
+//! Where our verification found an erratum, the test checks the corrected form *and* that the
+//! printed form fails (the erratum is confirmed). Of the two items our sympy checks could not
 //! re-verify, the §4.6 example is decided here (its printed translation has the wrong
 //! sign: a new erratum, see the test); the Prop. 4.1 degree bound needs the special frame
 //! of §4.5.1 (x₃ ∥ A × Ā), which is not implemented — `ch4_cor_4_3_canal_surfaces` only
@@ -231,7 +231,7 @@ fn ch3_e7_dual_isotropic_inverse() {
 /// formula is not orthogonal to the reflected rays.
 #[test]
 fn ch3_e8_anticaustic_is_pn() {
-    // mirror p = (u, v, F), F = u²/3 + uv − v³/5 (the sympy check of NOTES-004)
+    // mirror p = (u, v, F), F = u²/3 + uv − v³/5 (an independent sympy check)
     let f = poly(&[(q(1, 3), 2, 0), (qi(1), 1, 1), (q(-1, 5), 0, 3)]);
     let mirror = [ki(1), u(), v(), f.clone()];
     for c in [qi(0), q(3, 2)] {
@@ -442,7 +442,7 @@ fn ch4_dual_forms_4_1_4_2_4_4_and_e6() {
     );
 }
 
-/// Theorem 4.3/4.4 and NOTES-004 A4.2: the closed formula for graphs, certified, and the
+/// Theorem 4.3/4.4 (Peternell §4.3): the closed formula for graphs, certified, and the
 /// offset rule F ↦ F − (d/2)(S + 1) agreeing with x + d n.
 #[test]
 fn ch4_theorem_4_3_graph_closed_formula_and_offsets() {
@@ -486,7 +486,7 @@ fn ch4_theorem_4_3_graph_closed_formula_and_offsets() {
     ));
 }
 
-/// NOTES-004 A4.2 special graphs: an isotropic sphere gives its cycle (x ≡ m + r n), the
+/// Theorem 4.3/4.4, special graphs: an isotropic sphere gives its cycle (x ≡ m + r n), the
 /// graph pS/(S − 1) gives the paraboloid x₃ = (x₁² + x₂²)/(2p).
 #[test]
 fn ch4_special_graphs_sphere_and_paraboloid() {
@@ -698,7 +698,7 @@ fn ch4_cor_4_3_canal_surfaces() {
     assert!(du <= 4);
 }
 
-/// §4.6 example (not re-verified in NOTES-004, decided here): the envelope of the
+/// §4.6 example (not re-verified by our sympy checks, decided here): the envelope of the
 /// parabolic cylinder [−p(1+t²)/(4t), 2t/(1+t²), −(1−t²)/(1+t²), 0] under the motion
 /// β(u). The printed point representation is the envelope for p = 4 with the translation
 /// entry −¼u(1+u²) (the printed matrix has +¼u(1+u²)): a new erratum.
@@ -1091,7 +1091,7 @@ fn data_from(s: &PnSurface<Q>, n: usize) -> Vec<rcagd::pn::modeling::HermiteDatu
     out
 }
 
-/// §4.4 and NOTES-004 A4.3: Hermite data (points with oriented planes) are mapped to
+/// §4.4 (modeling scheme with PN surfaces): Hermite data (points with oriented planes) are mapped to
 /// gradient data in I³, interpolated by a C¹ Powell–Sabin quadratic spline and mapped back:
 /// a G¹ surface of parabolic Dupin cyclide pieces that interpolates points and normals
 /// exactly; its offsets interpolate the offset data; quadratic data are reproduced.
@@ -1282,7 +1282,7 @@ fn surfaces_of_revolution_with_ph_profile() {
     assert!(same_points(s2.point_polys(), off.surface().point_polys()));
 }
 
-/// §5.2 (5.3)/(5.4), NOTES-004 A5.2, erratum E6 in dimension 4: the dual form
+/// §5.2 (5.3)/(5.4), erratum E6 in dimension 4: the dual form
 /// (g, 2a₁cf, 2a₂cf, 2a₃cf, (a₁² + a₂² + a₃² − c²)f) has normal length (Σaᵢ² + c²)f; for the
 /// normalized form (h, n), n = (2u₁, 2u₂, 2u₃, S − 1)/(S + 1) (1.32), the envelope point
 /// e ∩ e_{u₁} ∩ e_{u₂} ∩ e_{u₃} of h − d is x + d n, and the seed's h + d gives x − d n.
