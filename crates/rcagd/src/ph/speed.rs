@@ -272,7 +272,7 @@ impl<F: Scalar> PhCurve<F> {
         let sigma = self.speed();
         vec![
             identity_cert(
-                "s'(t) ≡ σ(t) for s with Bernstein coefficients s_{k+1} = s_k + σ_k/n (ALG-3)",
+                "s'(t) ≡ σ(t) for s with Bernstein coefficients s_{k+1} = s_k + σ_k/n (Besednjak §3.2)",
                 &s.derivative(),
                 &sigma,
             ),
