@@ -90,6 +90,36 @@ impl<F: Scalar> DupinCyclide<F> {
         Self::from_conic(PeConic::circle(center, u, v, rho)?)
     }
 
+    /// The cyclide of the tilted pe circle with `U = (1, 0, 0, 0)`,
+    /// `V = (0, a, 0, b)`, `a = (1 + s²)/(1 − s²)`, `b = 2s/(1 − s²)` (so `a² − b² = 1`),
+    /// centre `(c, r₀)`: spine `c + (ρ cos θ, ρ a sin θ, 0)`, radius `r₀ + ρ b sin θ`
+    /// (Peternell §3.8.1; `s = 1/3` is the printed example `V = (0, 5/4, 0, 3/4)`, `s = 0`
+    /// a torus).
+    ///
+    /// # Errors
+    /// [`CyclideError::IsotropicTangents`] for `|s| ≥ 1`; otherwise as
+    /// [`DupinCyclide::from_pe_circle`].
+    pub fn tilted(center: [F; 3], rho: F, r0: F, s: F) -> Result<Self, CyclideError> {
+        let one = F::one();
+        let den = one.clone() - s.clone() * s.clone();
+        if den <= F::zero() {
+            return Err(CyclideError::IsotropicTangents(format!(
+                "the tilt must satisfy |s| < 1, got s = {} (|s| = 1 gives isotropic tangents)",
+                format_scalar(&s)
+            )));
+        }
+        let a = (one.clone() + s.clone() * s.clone()) / den.clone();
+        let b = F::from_i64(2) * s / den;
+        let [c1, c2, c3] = center;
+        let z = F::zero();
+        Self::from_pe_circle(
+            [c1, c2, c3, r0],
+            [one, z.clone(), z.clone(), z.clone()],
+            [z.clone(), a, z, b],
+            rho,
+        )
+    }
+
     /// The parabolic cyclide of the pe parabola `C₀ + tU + (t²/2)N`.
     ///
     /// # Errors
