@@ -16,6 +16,7 @@
 //!   planes are common tangent hyperplanes of the pencil;
 //! * [`spheres`]: the cyclide enveloping the spheres tangent to three given spheres.
 
+pub mod blend;
 pub mod conic;
 pub mod implicit;
 pub mod pe;
@@ -23,6 +24,7 @@ pub mod pencil;
 pub mod spheres;
 pub mod surface;
 
+pub use blend::{blend_cones, CyclideBlend};
 pub use conic::{CycleCurve, PeConic};
 pub use pencil::{DualPencil, PencilMember};
 pub use spheres::from_three_spheres;

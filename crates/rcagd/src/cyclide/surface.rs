@@ -268,6 +268,35 @@ impl<F: Scalar> DupinCyclide<F> {
         patch_from(&self.x, t, s)
     }
 
+    /// Biquadratic patches over the `t`-interval `[t₀, t₁]` (with `reversed_t`: over
+    /// `τ ∈ [t₀, t₁]`, `t = 1/τ`) and every `s` (four pieces in `s`, as in
+    /// [`DupinCyclide::covering_patches`]): a band of the cyclide between two of its
+    /// circles of the first family.
+    ///
+    /// # Errors
+    /// As [`DupinCyclide::patch`].
+    pub fn band_patches(
+        &self,
+        reversed_t: bool,
+        t0: &F,
+        t1: &F,
+    ) -> Result<Vec<BezierPatch<F>>, CyclideError> {
+        let xt: [BiPoly<F>; 4] = if reversed_t {
+            core::array::from_fn(|i| reverse_t(&self.x[i]))
+        } else {
+            self.x.clone()
+        };
+        let rev_s: [BiPoly<F>; 4] = core::array::from_fn(|i| xt[i].reverse_u(2));
+        let (m1, z, one) = (-F::one(), F::zero(), F::one());
+        let mut out = Vec::with_capacity(4);
+        for xs in [&xt, &rev_s] {
+            for (c, d) in [(&m1, &z), (&z, &one)] {
+                out.push(patch_from(xs, (t0, t1), (c, d))?);
+            }
+        }
+        Ok(out)
+    }
+
     /// Sixteen biquadratic patches covering the whole real cyclide of a pe circle (ring,
     /// horn, spindle): `t` and `s` each over `[−1, 0]`, `[0, 1]` and, with `t = 1/τ`
     /// (`s = 1/σ`), `τ ∈ [−1, 0]`, `[0, 1]`. The weight `X₀` has no real zero there

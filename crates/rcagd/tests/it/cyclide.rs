@@ -397,3 +397,76 @@ fn conic_accessors() {
     .expect("cyclide");
     assert!(matches!(cy.conic(), PeConic::Circle { .. }));
 }
+
+/// Cyclide blends: two cylinders of radius 1 with axes x and y meeting at the origin
+/// (a quarter of the torus with major radius 2), two cones with intersecting axes, two
+/// parallel cylinders of different radii (a half cyclide); skew axes are refused.
+#[test]
+fn blends_between_cones_and_cylinders() {
+    use rcagd::cyclide::blend_cones;
+    let cyl = blend_cones(
+        v4([(2, 1), (0, 1), (0, 1), (1, 1)]),
+        v4([(1, 1), (0, 1), (0, 1), (0, 1)]),
+        v4([(0, 1), (2, 1), (0, 1), (1, 1)]),
+        v4([(0, 1), (1, 1), (0, 1), (0, 1)]),
+    )
+    .expect("cylinder blend");
+    assert_all_hold(&cyl.certify());
+    assert_eq!(cyl.t2, Some(qi(-1)));
+    let ps = cyl.patches().expect("patches");
+    assert_eq!(ps.len(), 4);
+    // a torus piece: (|x − c|² + R² − ρ²)² = 4R²((x − c₁)² + (y − c₂)²), c = (2, 2, 0)
+    for p in &ps {
+        let pt = p.eval(&q(1, 3), &q(3, 4)).expect("finite");
+        let (dx, dy, z) = (pt[0].clone() - qi(2), pt[1].clone() - qi(2), pt[2].clone());
+        let xy = dx.clone() * dx + dy.clone() * dy;
+        let s = xy.clone() + z.clone() * z + qi(4) - qi(1);
+        assert_eq!(s.clone() * s, qi(16) * xy);
+    }
+    // two cones: lines through S = (0, 0, 0, 1) with directions (1, 0, 0, 1/2), (0, 1, 0, 1/2)
+    let cone = blend_cones(
+        v4([(2, 1), (0, 1), (0, 1), (2, 1)]),
+        v4([(1, 1), (0, 1), (0, 1), (1, 2)]),
+        v4([(0, 1), (2, 1), (0, 1), (2, 1)]),
+        v4([(0, 1), (1, 1), (0, 1), (1, 2)]),
+    );
+    match cone {
+        Ok(b) => {
+            assert_all_hold(&b.certify());
+            assert!(!b.patches().expect("patches").is_empty());
+        }
+        Err(e) => assert!(matches!(e, CyclideError::NotRational(_)), "{e}"),
+    }
+    // parallel cylinders along z of radii 1 and 2 at distance √17 (a half cyclide)
+    let par = blend_cones(
+        v4([(0, 1), (0, 1), (0, 1), (1, 1)]),
+        v4([(0, 1), (0, 1), (1, 1), (0, 1)]),
+        v4([(4, 1), (1, 1), (0, 1), (2, 1)]),
+        v4([(0, 1), (0, 1), (1, 1), (0, 1)]),
+    )
+    .expect("parallel blend");
+    assert_all_hold(&par.certify());
+    assert_eq!(par.t2, None);
+    assert_eq!(par.patches().expect("patches").len(), 8);
+    // skew axes
+    let e = blend_cones(
+        v4([(2, 1), (0, 1), (0, 1), (1, 1)]),
+        v4([(1, 1), (0, 1), (0, 1), (0, 1)]),
+        v4([(0, 1), (2, 1), (1, 1), (1, 1)]),
+        v4([(0, 1), (1, 1), (0, 1), (0, 1)]),
+    )
+    .unwrap_err();
+    assert!(
+        matches!(e, CyclideError::DegenerateSpheres(ref m) if m.starts_with("skew")),
+        "{e}"
+    );
+    // unequal tangent lengths
+    let e = blend_cones(
+        v4([(2, 1), (0, 1), (0, 1), (1, 1)]),
+        v4([(1, 1), (0, 1), (0, 1), (0, 1)]),
+        v4([(0, 1), (3, 1), (0, 1), (1, 1)]),
+        v4([(0, 1), (1, 1), (0, 1), (0, 1)]),
+    )
+    .unwrap_err();
+    assert!(matches!(e, CyclideError::DegenerateSpheres(_)), "{e}");
+}
