@@ -8,7 +8,7 @@ use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
 use rcagd::cyclide::spheres::certify_three_spheres;
-use rcagd::cyclide::{from_three_spheres, DualPencil, DupinCyclide};
+use rcagd::cyclide::{blend_cones, from_three_spheres, DualPencil, DupinCyclide};
 use rcagd::cyclographic::OrientedSphere;
 use rcagd::Certified;
 use rcagd_algebra::{Certificate, Rational};
@@ -17,7 +17,12 @@ use rcagd_geom::BezierPatch;
 use rcagd_io::quantity::{NamedQuantity, Quantity};
 
 /// The ops of this topic.
-pub const OPS: &[OpSpec] = &[DUPIN_CYCLIDE, DUPIN_CYCLIDE_SPHERES, DUPIN_CYCLIDE_PARABOLIC];
+pub const OPS: &[OpSpec] = &[
+    DUPIN_CYCLIDE,
+    DUPIN_CYCLIDE_SPHERES,
+    DUPIN_CYCLIDE_PARABOLIC,
+    CYCLIDE_BLEND,
+];
 
 const MAX_SPLITS: (usize, usize) = rcagd::canal::EXPORT_SPLITS;
 
@@ -165,3 +170,39 @@ fn build_parabolic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     cyclide_object(args, &cy, vec![patch], Vec::new())
 }
 
+
+const CYCLIDE_BLEND: OpSpec = OpSpec {
+    name: "cyclide_blend",
+    summary: "a Dupin cyclide blend between two cones or cylinders of revolution with intersecting or parallel axes, tangent to both along the circles where the spheres P₁, P₂ touch them (Peternell §3.8: cones are images of lines of R^{3,1}; the blend is the image of the pe circle tangent to both lines)",
+    params: &[
+        ParamSpec::required("sphere1", ParamKind::Point, "P₁ = (m₁, r₁): the sphere inscribed in cone 1 along the contact circle"),
+        ParamSpec::required("direction1", ParamKind::Point, "d₁ = (a₁, δ₁): axis direction a₁ and radius change δ₁ of cone 1 (δ₁ = 0: cylinder), |a₁|² > δ₁²; the blend leaves P₁ along +d₁"),
+        ParamSpec::required("sphere2", ParamKind::Point, "P₂ = (m₂, r₂), with equal pe tangent lengths to the common cycle of both lines"),
+        ParamSpec::required("direction2", ParamKind::Point, "d₂ = (a₂, δ₂) of cone 2"),
+    ],
+    example: r#"[[object]]
+name = "elbow_blend"
+op = "cyclide_blend"
+sphere1 = [2, 0, 0, 1]
+direction1 = [1, 0, 0, 0]
+sphere2 = [0, 2, 0, 1]
+direction2 = [0, 1, 0, 0]
+"#,
+    build: build_blend,
+};
+
+fn build_blend(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let (p1, d1) = (vec4(args, "sphere1")?, vec4(args, "direction1")?);
+    let (p2, d2) = (vec4(args, "sphere2")?, vec4(args, "direction2")?);
+    let blend = blend_cones(p1, d1, p2, d2).map_err(|e| OpError::param("sphere2", e.to_string()))?;
+    let patches = blend.patches().map_err(|e| OpError::new(e.to_string()))?;
+    let mut certs = blend.certify();
+    let (patches, wcert) = positive(patches)?;
+    certs.push(wcert);
+    let kind = NamedQuantity::new(
+        "kind",
+        "the type of the blending Dupin cyclide",
+        Quantity::Text(blend.cyclide.kind().name().into()),
+    );
+    Ok(vec![args.object(Geometry::Patches(patches), certs).with_values(vec![kind])])
+}

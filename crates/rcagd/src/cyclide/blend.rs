@@ -49,8 +49,8 @@ fn minors_vanish<F: Scalar>(vs: &[[F; 4]; 3], sc: f64) -> bool {
 ///
 /// # Errors
 /// [`CyclideError::IsotropicTangents`] if `⟨dᵢ, dᵢ⟩ ≤ 0` (not a real cone of revolution);
-/// [`CyclideError::DegenerateSpheres`] with a message naming the failure: skew axes (the
-/// lines are not coplanar: no cyclide blend exists), the same line, a non-Euclidean plane,
+/// [`CyclideError::SkewAxes`] if the lines are not coplanar (no cyclide blend exists);
+/// [`CyclideError::NoBlend`] with a message naming the failure: the same line, a non-Euclidean plane,
 /// unequal tangent lengths (the contact circles do not fit one pe circle), a contact
 /// sphere at the common vertex; [`CyclideError::NotRational`] if the circle needs a square
 /// root.
@@ -75,8 +75,8 @@ pub fn blend_cones<F: Scalar>(
     }
     let e = sub(&p2, &p1);
     if !minors_vanish(&[e.clone(), d1.clone(), d2.clone()], sc.powi(3)) {
-        return Err(CyclideError::DegenerateSpheres(
-            "skew: the lines of the two cones in R^{3,1} are not coplanar (the axes are skew, or the cones' radius functions do not fit): no cyclide blend exists".into(),
+        return Err(CyclideError::SkewAxes(
+            "the lines of the two cones in R^{3,1} are not coplanar (the axes are skew, or the cones' radius functions do not fit): no cyclide blend exists".into(),
         ));
     }
     let (g11, g12, g22) = (pe(&d1, &d1), pe(&d1, &d2), pe(&d2, &d2));
@@ -94,14 +94,14 @@ pub fn blend_cones<F: Scalar>(
         });
     let c0 = if parallel {
         if !negligible(&pe(&e, &d1), sc * sc) {
-            return Err(CyclideError::DegenerateSpheres(format!(
+            return Err(CyclideError::NoBlend(format!(
                 "parallel lines: P₂ − P₁ must be pe-orthogonal to the common direction (⟨P₂ − P₁, d⟩ = {}), else no pe circle touches both at P₁, P₂",
                 format_scalar(&pe(&e, &d1))
             )));
         }
         let ee = pe(&e, &e);
         if ee <= F::zero() || negligible(&ee, sc * sc) {
-            return Err(CyclideError::DegenerateSpheres(
+            return Err(CyclideError::NoBlend(
                 "the two lines coincide or span a non-Euclidean plane".into(),
             ));
         }
@@ -110,7 +110,7 @@ pub fn blend_cones<F: Scalar>(
     } else {
         let det = g11.clone() * g22.clone() - g12.clone() * g12.clone();
         if det <= F::zero() {
-            return Err(CyclideError::DegenerateSpheres(format!(
+            return Err(CyclideError::NoBlend(format!(
                 "the plane of the two lines is not Euclidean (Gram determinant {}): no pe circle touches both",
                 format_scalar(&det)
             )));
@@ -123,13 +123,13 @@ pub fn blend_cones<F: Scalar>(
         let t1 = l1.clone() * l1.clone() * g11.clone();
         let t2 = l2.clone() * l2.clone() * g22.clone();
         if negligible(&l1, sc) || negligible(&l2, sc) {
-            return Err(CyclideError::DegenerateSpheres(
+            return Err(CyclideError::NoBlend(
                 "a contact sphere is the common cycle of both lines (the vertex of the corner)"
                     .into(),
             ));
         }
         if !negligible(&(t1.clone() - t2.clone()), sc.powi(4)) {
-            return Err(CyclideError::DegenerateSpheres(format!(
+            return Err(CyclideError::NoBlend(format!(
                 "unequal tangent lengths from the common cycle S of the two lines: λ₁²⟨d₁,d₁⟩ = {} ≠ λ₂²⟨d₂,d₂⟩ = {} (move P₂ along its line)",
                 format_scalar(&t1),
                 format_scalar(&t2)
@@ -143,7 +143,7 @@ pub fn blend_cones<F: Scalar>(
     let w1 = sub(&p1, &c0);
     let r = pe(&w1, &w1);
     if r <= F::zero() || negligible(&r, sc * sc) {
-        return Err(CyclideError::DegenerateSpheres(
+        return Err(CyclideError::NoBlend(
             "the blend circle has radius 0".into(),
         ));
     }

@@ -50,6 +50,14 @@ pub enum CyclideError {
     /// Three spheres in a position without a cyclide of tangent spheres.
     #[error("three spheres in degenerate position: {0}")]
     DegenerateSpheres(String),
+    /// The axes of the two cones of a blend are skew (their lines in `R^{3,1}` are not
+    /// coplanar): no cyclide blend exists.
+    #[error("skew axes: {0}")]
+    SkewAxes(String),
+    /// The data of a cyclide blend admit no pe circle (unequal tangent lengths, a
+    /// non-Euclidean plane, coinciding lines).
+    #[error("no cyclide blend: {0}")]
+    NoBlend(String),
     /// A square root the construction needs is not in the scalar field.
     #[error("not rational over the input field: {0}")]
     NotRational(String),

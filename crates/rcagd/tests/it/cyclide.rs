@@ -468,5 +468,5 @@ fn blends_between_cones_and_cylinders() {
         v4([(0, 1), (1, 1), (0, 1), (0, 1)]),
     )
     .unwrap_err();
-    assert!(matches!(e, CyclideError::DegenerateSpheres(_)), "{e}");
+    assert!(matches!(e, CyclideError::NoBlend(_)), "{e}");
 }
