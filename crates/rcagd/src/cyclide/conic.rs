@@ -226,8 +226,9 @@ impl<F: Scalar> PeConic<F> {
 
     /// The conjugate conic: the cycles in oriented contact with every cycle of `self`
     /// (docs/math/cyclides.md#two-families). For the circle: the pe hyperbola
-    /// `{C₀ + Z : Z ⟂ U, V, ⟨Z, Z⟩ = −ρ²}` of Prop. 3.1 (both branches), as
-    /// `(s² N₊ + s k C₀ + a k⁻¹ … )` in the null basis `N±` of `span(U, V)^⊥`; for the
+    /// `{C₀ + Z : Z ⟂ U, V, ⟨Z, Z⟩ = −ρ²R}` of Prop. 3.1 (both branches, `R = ⟨U, U⟩`),
+    /// `D(s) = (k s² N₊ + s C₀ + (a/k) N₋) / s` in the isotropic basis `N±` of
+    /// `span(U, V)^⊥`, `a = −ρ²R / (2⟨N₊, N₋⟩)`, `k` a power of two near `√|a|`; for the
     /// parabola: `C₀ + M + sP − (s²/2)N` with `⟨P, P⟩ = 1`, `P ⟂ U, N`, `M` isotropic,
     /// `⟨M, N⟩ = 1`, `M ⟂ U, P` (Prop. 3.2).
     ///

@@ -129,7 +129,6 @@ pub fn certify_three_spheres<F: Scalar>(
         ));
         if let PeConic::Circle { center, u, v, rho } = cyclide.conic() {
             let w = sub(&ai, center);
-            let rr = pe(u, u) * rho.clone() * rho.clone();
             let (al, be) = (
                 pe(&w, u) / (pe(u, u) * rho.clone()),
                 pe(&w, v) / (pe(v, v) * rho.clone()),
@@ -143,7 +142,6 @@ pub fn certify_three_spheres<F: Scalar>(
                     al.clone() * al.clone() + be.clone() * be.clone() - F::one(),
                 ))
                 .collect();
-            let _ = rr;
             out.push(polynomial_is_zero_scaled(
                 &format!("A{} − C₀ = ρ(αU + βV) with α² + β² = 1 (sphere {} belongs to the first family)", i + 1, i + 1),
                 &rest,
