@@ -44,6 +44,10 @@ pub const RECIPES: &[(&str, &str)] = &[
         include_str!("../../../examples/recipes/canal.toml"),
     ),
     (
+        "examples/recipes/cyclide.toml",
+        include_str!("../../../examples/recipes/cyclide.toml"),
+    ),
+    (
         "examples/recipes/pn.toml",
         include_str!("../../../examples/recipes/pn.toml"),
     ),

@@ -342,7 +342,8 @@ pub fn write_iges_with(objects: &[Object], opts: &IgesOptions) -> Result<String,
     let date = format!("{y:04}{mo:02}{d:02}.{h:02}{mi:02}{s:02}");
     let version = env!("CARGO_PKG_VERSION");
     let start = [format!(
-        "rcagd exact rational geometry (IGES 5.3): {} object(s), entities 126/128",
+        // at most 72 columns: fits up to 9999 objects
+        "rcagd exact rational geometry (IGES 5.3): {} objects, entities 126/128",
         exch.len()
     )];
     let global = vec![

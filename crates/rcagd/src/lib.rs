@@ -18,6 +18,7 @@
 pub mod canal;
 pub mod conic;
 pub mod conic_surface;
+pub mod cyclide;
 pub mod cyclographic;
 pub mod cylinder;
 pub mod envelope;

@@ -1024,7 +1024,7 @@ fn shifted(x: &[BiPoly<Rational>; 4], c: &[Rational; 3]) -> [BiPoly<Rational>; 4
 
 const DUPIN_CANAL: OpSpec = OpSpec {
     name: "dupin_canal",
-    summary: "a Dupin cyclide as the canal surface of a pe-circle of R^{3,1}: spine (ρ cos θ, ρ a sin θ, 0), radius r₀ + ρ b sin θ with a = (1 + s²)/(1 − s²), b = 2s/(1 − s²)",
+    summary: "a Dupin cyclide as the canal surface of a pe-circle of R^{3,1}: spine (ρ cos θ, ρ a sin θ, 0), radius r₀ + ρ b sin θ with a = (1 + s²)/(1 − s²), b = 2s/(1 − s²) (rcagd::cyclide::DupinCyclide::tilted; 16 biquadratic patches)",
     params: &[
         ParamSpec::with_default("center", ParamKind::Point3, "[0, 0, 0]", "centre"),
         ParamSpec::required("rho", ParamKind::Number, "ρ ≠ 0 (size of the pe-circle)"),
@@ -1046,62 +1046,13 @@ fn build_dupin_canal(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let rho = args.number("rho")?;
     let r0 = args.number("r0")?;
     let s = args.number("s")?;
-    if rho.is_zero() {
-        return Err(OpError::param("rho", "ρ must be non-zero"));
-    }
-    let one = Rational::one();
-    let den = one.clone() - s.clone() * s.clone();
-    if den <= Rational::zero() {
-        return Err(OpError::param("s", "the tilt must satisfy |s| < 1 (a spacelike pe-circle)"));
-    }
-    let a = (one.clone() + s.clone() * s.clone()) / den.clone();
-    let b = Rational::from(2) * s / den;
-    let (a2, b2) = (a.clone(), b.clone());
-    // cos θ = (1 − t²)/(1 + t²), sin θ = 2t/(1 + t²)
-    let w = Poly::new(vec![one.clone(), Rational::zero(), one.clone()]);
-    let cos = Poly::new(vec![one.clone(), Rational::zero(), -one]);
-    let sin = Poly::new(vec![Rational::zero(), Rational::from(2)]);
-    let m = [
-        &cos.scale(&rho) + &w.scale(&c[0]),
-        &sin.scale(&(rho.clone() * a.clone())) + &w.scale(&c[1]),
-        w.scale(&c[2]),
-    ];
-    let r = &w.scale(&r0) + &sin.scale(&(rho.clone() * b.clone()));
-    let family = CanalSpine::new(w, m, r).map_err(|e| canal_err(e, "rho", "r0"))?;
-    // the pe-circle: ⟨U, U⟩ = ⟨V, V⟩ = 1, ⟨U, V⟩ = 0 for U = (1, 0, 0, 0), V = (0, a, 0, b)
-    let pe = a.clone() * a - b.clone() * b;
-    let pe_cert = Certificate::decide(
-        "V = (0, a, 0, b) is a pe-unit vector: a² − b² = 1 (the spine is a pe-circle, Dupin cyclide)",
-        pe == Rational::one(),
-        true,
-        move || format_rational(&pe),
-    );
-    // the cyclide (|x − c|² − r₀² + ρ²)² = 4(ρa(y − c₂) + ρb r₀)² + 4ρ²(x − c₁)² (Peternell §3.8.1,
-    // docs/math/lines-and-canal.md, "Canal surfaces", with the axes relabelled: semi-axes ρa along y, ρ along x, c = ρb, μ = r₀)
-    let (rr, la, lb) = (rho.clone() * rho.clone(), rho.clone() * a2, rho.clone() * b2 * r0.clone());
-    let k = rr.clone() - r0.clone() * r0;
-    let quartic = move |x: &[BiPoly<Rational>; 4]| {
-        let d = shifted(x, &c);
-        let x00 = d[0].mul(&d[0]);
-        let s = d[1]
-            .mul(&d[1])
-            .add(&d[2].mul(&d[2]))
-            .add(&d[3].mul(&d[3]))
-            .add(&x00.scale(&k));
-        let l = d[2].mul(&d[0]).scale(&la).add(&x00.scale(&lb));
-        let four = Rational::from(4);
-        s.mul(&s)
-            .sub(&l.mul(&l).scale(&four))
-            .sub(&d[1].mul(&d[1]).mul(&x00).scale(&(four * rr.clone())))
-    };
-    closed_canal(
-        args,
-        &family,
-        "rho",
-        "r0",
-        ("(|x − c|² − r₀² + ρ²)² − 4(ρa(y − c₂) + ρb r₀)² − 4ρ²(x − c₁)² (Dupin cyclide quartic)", &quartic),
-        vec![pe_cert],
-    )
+    let cy = rcagd::cyclide::DupinCyclide::tilted(c, rho, r0, s).map_err(|e| match e {
+        rcagd::cyclide::CyclideError::IsotropicTangents(m) => OpError::param("s", m),
+        rcagd::cyclide::CyclideError::ZeroRadius(m) => OpError::param("rho", m),
+        e => OpError::new(e.to_string()),
+    })?;
+    let patches = cy.covering_patches().map_err(|e| OpError::new(e.to_string()))?;
+    super::cyclide::cyclide_object(args, &cy, patches, Vec::new())
 }
 
 #[cfg(test)]

@@ -30,6 +30,7 @@ topics!(
     ph,
     ph_planar,
     canal,
+    cyclide,
     pn,
     sphere_family,
     conic_surface,

@@ -2,6 +2,7 @@
 //! see docs/ARCHITECTURE.md, "Tests").
 
 mod canal_props;
+mod cyclide;
 mod laguerre_props;
 mod lines_props;
 mod ph_planar;

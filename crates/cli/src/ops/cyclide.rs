@@ -1,0 +1,208 @@
+//! Ops of the `cyclide` topic: Dupin cyclides as cyclographic images of pe conics
+//! (`rcagd::cyclide`; Peternell, "Rational Parametrizations for Envelopes of Quadric
+//! Families", §3.8.1): from a pe circle, from three spheres, and the parabolic cyclide.
+//! The ring, horn and spindle cyclides arrive as 16 biquadratic patches covering the whole
+//! surface; the parabolic one (unbounded) on a parameter box.
+
+use super::{OpArgs, OpError, OpSpec, ParamSpec};
+use crate::model::{Geometry, Object};
+use crate::value::ParamKind;
+use rcagd::cyclide::spheres::certify_three_spheres;
+use rcagd::cyclide::{blend_cones, from_three_spheres, DualPencil, DupinCyclide};
+use rcagd::cyclographic::OrientedSphere;
+use rcagd::Certified;
+use rcagd_algebra::{Certificate, Rational};
+use rcagd_geom::weight_sign::{split_patches_adaptive, SignRule};
+use rcagd_geom::BezierPatch;
+use rcagd_io::quantity::{NamedQuantity, Quantity};
+
+/// The ops of this topic.
+pub const OPS: &[OpSpec] = &[
+    DUPIN_CYCLIDE,
+    DUPIN_CYCLIDE_SPHERES,
+    DUPIN_CYCLIDE_PARABOLIC,
+    CYCLIDE_BLEND,
+];
+
+const MAX_SPLITS: (usize, usize) = rcagd::canal::EXPORT_SPLITS;
+
+fn vec4(args: &OpArgs, param: &'static str) -> Result<[Rational; 4], OpError> {
+    let p = args.point(param)?;
+    <[Rational; 4]>::try_from(p).map_err(|_| OpError::param(param, format!("`{param}` must be a vector of R^{{3,1}}: [x, y, z, r]")))
+}
+
+fn range(args: &OpArgs, param: &'static str) -> Result<(Rational, Rational), OpError> {
+    let v = args.opt_numbers(param)?.unwrap_or_default();
+    match <[Rational; 2]>::try_from(v) {
+        Ok([a, b]) if a < b => Ok((a, b)),
+        _ => Err(OpError::param(param, format!("`{param}` must be an interval [a, b] with a < b"))),
+    }
+}
+
+fn positive(patches: Vec<BezierPatch<Rational>>) -> Result<(Vec<BezierPatch<Rational>>, Certificate), OpError> {
+    let split = split_patches_adaptive(patches, SignRule::Positive, MAX_SPLITS).map_err(|e| OpError::new(e.to_string()))?;
+    let (out, bad) = (split.pieces, split.failed);
+    let n = out.len();
+    let cert = Certificate::decide(
+        format!("every Bernstein weight of the {n} patches is > 0 (no pole, no base point)"),
+        bad == 0,
+        true,
+        || format!("{bad} patches keep a weight ≤ 0 after the largest subdivision"),
+    );
+    Ok((out, cert))
+}
+
+/// The object of a cyclide: its covering (or boxed) patches with positive weights, every
+/// certificate (surface, offset, pencil), and its type as a value.
+pub(super) fn cyclide_object(
+    args: &OpArgs,
+    cy: &DupinCyclide<Rational>,
+    patches: Vec<BezierPatch<Rational>>,
+    mut certs: Vec<Certificate>,
+) -> Result<Vec<Object>, OpError> {
+    certs.extend(cy.certify());
+    let pencil = DualPencil::of(cy).map_err(|e| OpError::new(e.to_string()))?;
+    certs.extend(pencil.certify(cy));
+    if let Some(d) = args.opt_number("offset")? {
+        certs.extend(cy.certify_offset(&d).map_err(|e| OpError::param("offset", e.to_string()))?);
+    }
+    let (patches, wcert) = positive(patches)?;
+    certs.push(wcert);
+    let kind = NamedQuantity::new("kind", "the type of the Dupin cyclide (ring, horn, spindle, parabolic)", Quantity::Text(cy.kind().name().into()));
+    Ok(vec![args.object(Geometry::Patches(patches), certs).with_values(vec![kind])])
+}
+
+const DUPIN_CYCLIDE: OpSpec = OpSpec {
+    name: "dupin_cyclide",
+    summary: "the Dupin cyclide of the pe circle C₀ + ρ(cos θ U + sin θ V) of R^{3,1} (⟨U,U⟩ = ⟨V,V⟩ = 1, ⟨U,V⟩ = 0; Peternell Lemma 3.4): 16 biquadratic patches x = (R_C M_D − R_D M_C)/(R_C W_D − R_D W_C) from the contact points of its two sphere families, with a rational unit normal; type ring/horn/spindle",
+    params: &[
+        ParamSpec::with_default("center", ParamKind::Point, "[0, 0, 0, 3]", "centre C₀ = (c, r₀): the middle sphere"),
+        ParamSpec::with_default("u", ParamKind::Point, "[1, 0, 0, 0]", "U, pe-unit"),
+        ParamSpec::with_default("v", ParamKind::Point, "[0, \"5/4\", 0, \"3/4\"]", "V, pe-unit and pe-orthogonal to U"),
+        ParamSpec::required("rho", ParamKind::Number, "pe radius ρ ≠ 0"),
+        ParamSpec::optional("offset", ParamKind::Number, "also certify the offset at this distance (r → r + d)"),
+    ],
+    example: r#"[[object]]
+name = "ring_cyclide"
+op = "dupin_cyclide"
+center = [0, 0, 0, 4]
+u = [1, 0, 0, 0]
+v = [0, "5/4", 0, "3/4"]
+rho = 4
+"#,
+    build: build_dupin_cyclide,
+};
+
+fn build_dupin_cyclide(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c = vec4(args, "center")?;
+    let (u, v) = (vec4(args, "u")?, vec4(args, "v")?);
+    let rho = args.number("rho")?;
+    let cy = DupinCyclide::from_pe_circle(c, u, v, rho).map_err(|e| OpError::new(e.to_string()))?;
+    let patches = cy.covering_patches().map_err(|e| OpError::new(e.to_string()))?;
+    cyclide_object(args, &cy, patches, Vec::new())
+}
+
+const DUPIN_CYCLIDE_SPHERES: OpSpec = OpSpec {
+    name: "dupin_cyclide_spheres",
+    summary: "the Dupin cyclide enveloping all spheres tangent (in oriented contact) to three oriented spheres (Peternell §3.8.1: Γ(A₁) ∩ Γ(A₂) ∩ Γ(A₃) is a pe circle); reversing a radius's sign picks another of the cyclides",
+    params: &[
+        ParamSpec::required("centers", ParamKind::Points, "the three centres [[x, y, z], …]"),
+        ParamSpec::required("radii", ParamKind::Numbers, "the three signed radii (the sign is the orientation)"),
+        ParamSpec::optional("offset", ParamKind::Number, "also certify the offset at this distance"),
+    ],
+    example: r#"[[object]]
+name = "cyclide_of_three_spheres"
+op = "dupin_cyclide_spheres"
+centers = [[0, 0, 0], [4, 0, 0], [0, 4, 0]]
+radii = [1, 1, 1]
+"#,
+    build: build_spheres,
+};
+
+fn build_spheres(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let centers = args.points("centers")?;
+    let radii = args.opt_numbers("radii")?.unwrap_or_default();
+    if centers.len() != 3 || centers.iter().any(|c| c.len() != 3) {
+        return Err(OpError::param("centers", "give exactly three centres [x, y, z]"));
+    }
+    if radii.len() != 3 {
+        return Err(OpError::param("radii", "give exactly three radii"));
+    }
+    let spheres: [OrientedSphere<Rational>; 3] = core::array::from_fn(|i| {
+        OrientedSphere::new(core::array::from_fn(|k| centers[i][k].clone()), radii[i].clone())
+    });
+    let cy = from_three_spheres(&spheres).map_err(|e| OpError::param("radii", e.to_string()))?;
+    let patches = cy.covering_patches().map_err(|e| OpError::new(e.to_string()))?;
+    let certs = certify_three_spheres(&cy, &spheres);
+    cyclide_object(args, &cy, patches, certs)
+}
+
+const DUPIN_CYCLIDE_PARABOLIC: OpSpec = OpSpec {
+    name: "dupin_cyclide_parabolic",
+    summary: "the parabolic Dupin cyclide (a cubic) of the pe parabola C₀ + tU + (t²/2)N in a γ-plane (⟨U,U⟩ = 1, N isotropic, ⟨U,N⟩ = 0; Peternell Prop. 3.2), as the biquadratic patch over a parameter box",
+    params: &[
+        ParamSpec::with_default("vertex", ParamKind::Point, "[0, 0, 0, 1]", "vertex C₀ = (c, r₀)"),
+        ParamSpec::with_default("u", ParamKind::Point, "[1, 0, 0, 0]", "U, pe-unit"),
+        ParamSpec::with_default("n", ParamKind::Point, "[0, \"3/5\", \"4/5\", 1]", "N ≠ 0 isotropic, pe-orthogonal to U"),
+        ParamSpec::with_default("t", ParamKind::Numbers, "[-2, 2]", "parameter interval of the first family"),
+        ParamSpec::with_default("s", ParamKind::Numbers, "[-2, 2]", "parameter interval of the second family"),
+        ParamSpec::optional("offset", ParamKind::Number, "also certify the offset at this distance"),
+    ],
+    example: r#"[[object]]
+name = "parabolic_cyclide"
+op = "dupin_cyclide_parabolic"
+vertex = [0, 0, 0, 1]
+u = [1, 0, 0, 0]
+n = [0, "3/5", "4/5", 1]
+t = [-2, 2]
+s = [-1, 1]
+"#,
+    build: build_parabolic,
+};
+
+fn build_parabolic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c = vec4(args, "vertex")?;
+    let (u, n) = (vec4(args, "u")?, vec4(args, "n")?);
+    let (t0, t1) = range(args, "t")?;
+    let (s0, s1) = range(args, "s")?;
+    let cy = DupinCyclide::from_pe_parabola(c, u, n).map_err(|e| OpError::new(e.to_string()))?;
+    let patch = cy.patch((&t0, &t1), (&s0, &s1)).map_err(|e| OpError::new(e.to_string()))?;
+    cyclide_object(args, &cy, vec![patch], Vec::new())
+}
+
+
+const CYCLIDE_BLEND: OpSpec = OpSpec {
+    name: "cyclide_blend",
+    summary: "a Dupin cyclide blend between two cones or cylinders of revolution with intersecting or parallel axes, tangent to both along the circles where the spheres P₁, P₂ touch them (Peternell §3.8: cones are images of lines of R^{3,1}; the blend is the image of the pe circle tangent to both lines)",
+    params: &[
+        ParamSpec::required("sphere1", ParamKind::Point, "P₁ = (m₁, r₁): the sphere inscribed in cone 1 along the contact circle"),
+        ParamSpec::required("direction1", ParamKind::Point, "d₁ = (a₁, δ₁): axis direction a₁ and radius change δ₁ of cone 1 (δ₁ = 0: cylinder), |a₁|² > δ₁²; the blend leaves P₁ along +d₁"),
+        ParamSpec::required("sphere2", ParamKind::Point, "P₂ = (m₂, r₂), with equal pe tangent lengths to the common cycle of both lines"),
+        ParamSpec::required("direction2", ParamKind::Point, "d₂ = (a₂, δ₂) of cone 2"),
+    ],
+    example: r#"[[object]]
+name = "elbow_blend"
+op = "cyclide_blend"
+sphere1 = [2, 0, 0, 1]
+direction1 = [1, 0, 0, 0]
+sphere2 = [0, 2, 0, 1]
+direction2 = [0, 1, 0, 0]
+"#,
+    build: build_blend,
+};
+
+fn build_blend(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let (p1, d1) = (vec4(args, "sphere1")?, vec4(args, "direction1")?);
+    let (p2, d2) = (vec4(args, "sphere2")?, vec4(args, "direction2")?);
+    let blend = blend_cones(p1, d1, p2, d2).map_err(|e| OpError::param("sphere2", e.to_string()))?;
+    let patches = blend.patches().map_err(|e| OpError::new(e.to_string()))?;
+    let mut certs = blend.certify();
+    let (patches, wcert) = positive(patches)?;
+    certs.push(wcert);
+    let kind = NamedQuantity::new(
+        "kind",
+        "the type of the blending Dupin cyclide",
+        Quantity::Text(blend.cyclide.kind().name().into()),
+    );
+    Ok(vec![args.object(Geometry::Patches(patches), certs).with_values(vec![kind])])
+}

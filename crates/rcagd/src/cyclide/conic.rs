@@ -1,0 +1,355 @@
+//! The pe conics of `R^{3,1}` whose cyclographic images are Dupin cyclides (Peternell,
+//! "Rational Parametrizations for Envelopes of Quadric Families", §3.8.1, Lemma 3.4,
+//! Prop. 3.1 and 3.2), and the conjugate conic of the second family of enveloped spheres
+//! (our derivation: docs/math/cyclides.md#two-families).
+
+use super::pe::{
+    add, negligible, pe, pe_row, power_of_two_near_sqrt, scale, size, sqrt_in_field, sub,
+};
+use super::CyclideError;
+use rcagd_algebra::{format_scalar, format_vector, Matrix, Poly, Scalar};
+
+/// A pe conic whose cyclographic image is a Dupin cyclide.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PeConic<F> {
+    /// The pe circle `C(θ) = C₀ + ρ (cos θ U + sin θ V)` in a Euclidean plane of
+    /// `R^{3,1}`: `⟨U, U⟩ = ⟨V, V⟩ = 1` (or, from [`PeConic::circle_scaled`], equal
+    /// positive norms `R` with `ρ = 1`), `⟨U, V⟩ = 0`, `ρ ≠ 0` (Lemma 3.4, Prop. 3.1).
+    Circle {
+        /// Centre `C₀ = (c, r₀)`: the middle sphere.
+        center: [F; 4],
+        /// First pe-unit vector `U`.
+        u: [F; 4],
+        /// Second pe-unit vector `V`, pe-orthogonal to `U`.
+        v: [F; 4],
+        /// The pe radius `ρ ≠ 0`.
+        rho: F,
+    },
+    /// The pe parabola `C(t) = C₀ + t U + (t²/2) N` in a γ-plane (Prop. 3.2):
+    /// `⟨U, U⟩ = 1`, `N ≠ 0` isotropic (`⟨N, N⟩ = 0`), `⟨U, N⟩ = 0`; its image is a
+    /// parabolic Dupin cyclide (a cubic).
+    Parabola {
+        /// The vertex `C₀`.
+        vertex: [F; 4],
+        /// The pe-unit tangent `U` at the vertex.
+        u: [F; 4],
+        /// The isotropic direction `N` (the point at infinity of the parabola).
+        n: [F; 4],
+    },
+}
+
+/// A rational curve of `R^{3,1}` of degree ≤ 2 in homogeneous form: the cycle
+/// `(P₁, P₂, P₃; P₄) / W` (centre and signed radius).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CycleCurve<F> {
+    /// The weight `W`.
+    pub w: Poly<F>,
+    /// The numerators `(M₁, M₂, M₃, R)`.
+    pub p: [Poly<F>; 4],
+}
+
+impl<F: Scalar> CycleCurve<F> {
+    /// The cycle at the parameter `t` as a point of `R^{3,1}`, or `None` where `W(t) = 0`
+    /// (a point at infinity of the conic).
+    pub fn eval(&self, t: &F) -> Option<[F; 4]> {
+        let w = self.w.eval(t);
+        if w.is_zero() {
+            return None;
+        }
+        Some(core::array::from_fn(|i| self.p[i].eval(t) / w.clone()))
+    }
+
+    /// The curve with `t = 1/τ` (coefficients reversed at degree 2): covers the
+    /// neighbourhood of `t = ∞`.
+    pub fn reversed(&self) -> CycleCurve<F> {
+        let rev = |p: &Poly<F>| {
+            let mut c = p.coeffs().to_vec();
+            c.resize(3, F::zero());
+            c.reverse();
+            Poly::new(c)
+        };
+        CycleCurve {
+            w: rev(&self.w),
+            p: core::array::from_fn(|i| rev(&self.p[i])),
+        }
+    }
+
+    /// The curve shifted by `d` in the radius: every cycle `(m; r)` becomes `(m; r + d)`
+    /// (the offset of the cyclographic image by `d`).
+    pub fn radius_shifted(&self, d: &F) -> CycleCurve<F> {
+        let mut p = self.p.clone();
+        p[3] = &p[3] + &self.w.scale(d);
+        CycleCurve {
+            w: self.w.clone(),
+            p,
+        }
+    }
+}
+
+fn quad<F: Scalar>(c0: F, c1: F, c2: F) -> Poly<F> {
+    Poly::new(vec![c0, c1, c2])
+}
+
+impl<F: Scalar> PeConic<F> {
+    /// The pe circle `C₀ + ρ (cos θ U + sin θ V)`, validated.
+    ///
+    /// # Errors
+    /// [`CyclideError::ZeroRadius`] for `ρ = 0`; [`CyclideError::IsotropicTangents`] if
+    /// `⟨U, U⟩ ≤ 0` or `⟨V, V⟩ ≤ 0` (the conic would have isotropic or timelike tangents);
+    /// [`CyclideError::NotOrthonormal`] unless `⟨U, U⟩ = ⟨V, V⟩ = 1`, `⟨U, V⟩ = 0`;
+    /// [`CyclideError::Degenerate`] if every cycle is a point (`r ≡ 0`: the circle lies
+    /// in `R³`, Lemma 3.4 excludes it).
+    pub fn circle(center: [F; 4], u: [F; 4], v: [F; 4], rho: F) -> Result<Self, CyclideError> {
+        Self::circle_checked(center, u, v, rho, true)
+    }
+
+    /// The pe circle `C₀ + cos θ W₁ + sin θ W₂` with `⟨W₁, W₁⟩ = ⟨W₂, W₂⟩ > 0`,
+    /// `⟨W₁, W₂⟩ = 0` (stored with `ρ = 1`; the norm need not be a rational square).
+    ///
+    /// # Errors
+    /// As [`PeConic::circle`], with "equal norms" in place of "pe-unit".
+    pub fn circle_scaled(center: [F; 4], w1: [F; 4], w2: [F; 4]) -> Result<Self, CyclideError> {
+        Self::circle_checked(center, w1, w2, F::one(), false)
+    }
+
+    fn circle_checked(
+        center: [F; 4],
+        u: [F; 4],
+        v: [F; 4],
+        rho: F,
+        unit: bool,
+    ) -> Result<Self, CyclideError> {
+        let s = size(&u).max(size(&v)).max(1.0);
+        if negligible(&rho, 1.0) {
+            return Err(CyclideError::ZeroRadius(format!(
+                "ρ = {}: a pe circle of radius 0 is a point, its image a single sphere",
+                format_scalar(&rho)
+            )));
+        }
+        let (uu, vv, uv) = (pe(&u, &u), pe(&v, &v), pe(&u, &v));
+        for (name, x) in [("⟨U, U⟩", &uu), ("⟨V, V⟩", &vv)] {
+            if *x <= F::zero() || negligible(x, s * s) {
+                return Err(CyclideError::IsotropicTangents(format!(
+                    "{name} = {} ≤ 0: the conic C₀ + ρ(cos θ U + sin θ V) has isotropic or timelike tangents (no real envelope there)",
+                    format_scalar(x)
+                )));
+            }
+        }
+        let one = if unit { F::one() } else { uu.clone() };
+        if !(negligible(&(uu.clone() - one.clone()), s * s)
+            && negligible(&(vv.clone() - one), s * s)
+            && negligible(&uv, s * s))
+        {
+            return Err(CyclideError::NotOrthonormal(format!(
+                "⟨U, U⟩ = {}, ⟨V, V⟩ = {}, ⟨U, V⟩ = {} (need {}) for U = {}, V = {}",
+                format_scalar(&uu),
+                format_scalar(&vv),
+                format_scalar(&uv),
+                if unit { "1, 1, 0" } else { "equal norms, 0" },
+                format_vector(&u),
+                format_vector(&v)
+            )));
+        }
+        let r0 = center[3].clone();
+        if negligible(&r0, 1.0) && negligible(&u[3], s) && negligible(&v[3], s) {
+            return Err(CyclideError::Degenerate(
+                "r ≡ 0: every cycle of the pe circle is a point (the circle lies in R³); its cyclographic image is the circle itself, not a surface".into(),
+            ));
+        }
+        Ok(PeConic::Circle { center, u, v, rho })
+    }
+
+    /// The pe parabola `C₀ + t U + (t²/2) N`, validated.
+    ///
+    /// # Errors
+    /// [`CyclideError::ZeroRadius`] for `N = 0` (a line, not a conic);
+    /// [`CyclideError::IsotropicTangents`] if `⟨U, U⟩ ≤ 0`;
+    /// [`CyclideError::NotOrthonormal`] unless `⟨U, U⟩ = 1`, `⟨N, N⟩ = 0`, `⟨U, N⟩ = 0`.
+    pub fn parabola(vertex: [F; 4], u: [F; 4], n: [F; 4]) -> Result<Self, CyclideError> {
+        let s = size(&u).max(size(&n)).max(1.0);
+        if n.iter().all(|x| negligible(x, s)) {
+            return Err(CyclideError::ZeroRadius(
+                "N = 0: the parabola C₀ + tU + (t²/2)N degenerates to a line".into(),
+            ));
+        }
+        let (uu, nn, un) = (pe(&u, &u), pe(&n, &n), pe(&u, &n));
+        if uu <= F::zero() || negligible(&uu, s * s) {
+            return Err(CyclideError::IsotropicTangents(format!(
+                "⟨U, U⟩ = {} ≤ 0: the parabola has isotropic or timelike tangents at its vertex",
+                format_scalar(&uu)
+            )));
+        }
+        if !(negligible(&(uu.clone() - F::one()), s * s)
+            && negligible(&nn, s * s)
+            && negligible(&un, s * s))
+        {
+            return Err(CyclideError::NotOrthonormal(format!(
+                "⟨U, U⟩ = {}, ⟨N, N⟩ = {}, ⟨U, N⟩ = {} (need 1, 0, 0: a pe parabola in a γ-plane) for U = {}, N = {}",
+                format_scalar(&uu),
+                format_scalar(&nn),
+                format_scalar(&un),
+                format_vector(&u),
+                format_vector(&n)
+            )));
+        }
+        Ok(PeConic::Parabola { vertex, u, n })
+    }
+
+    /// `true` for the parabola (parabolic cyclide).
+    pub fn is_parabola(&self) -> bool {
+        matches!(self, PeConic::Parabola { .. })
+    }
+
+    /// The rational parametrization: `((1+t²)C₀ + ρ((1−t²)U + 2tV)) / (1+t²)` for the
+    /// circle, `C₀ + tU + (t²/2)N` for the parabola.
+    pub fn curve(&self) -> CycleCurve<F> {
+        let (z, one, two) = (F::zero(), F::one(), F::from_i64(2));
+        match self {
+            PeConic::Circle { center, u, v, rho } => CycleCurve {
+                w: quad(one.clone(), z.clone(), one.clone()),
+                p: core::array::from_fn(|i| {
+                    quad(
+                        center[i].clone() + rho.clone() * u[i].clone(),
+                        two.clone() * rho.clone() * v[i].clone(),
+                        center[i].clone() - rho.clone() * u[i].clone(),
+                    )
+                }),
+            },
+            PeConic::Parabola { vertex, u, n } => CycleCurve {
+                w: Poly::constant(one),
+                p: core::array::from_fn(|i| {
+                    quad(vertex[i].clone(), u[i].clone(), n[i].clone() / two.clone())
+                }),
+            },
+        }
+    }
+
+    /// The conjugate conic: the cycles in oriented contact with every cycle of `self`
+    /// (docs/math/cyclides.md#two-families). For the circle: the pe hyperbola
+    /// `{C₀ + Z : Z ⟂ U, V, ⟨Z, Z⟩ = −ρ²R}` of Prop. 3.1 (both branches, `R = ⟨U, U⟩`),
+    /// `D(s) = (k s² N₊ + s C₀ + (a/k) N₋) / s` in the isotropic basis `N±` of
+    /// `span(U, V)^⊥`, `a = −ρ²R / (2⟨N₊, N₋⟩)`, `k` a power of two near `√|a|`; for the
+    /// parabola: `C₀ + M + sP − (s²/2)N` with `⟨P, P⟩ = 1`, `P ⟂ U, N`, `M` isotropic,
+    /// `⟨M, N⟩ = 1`, `M ⟂ U, P` (Prop. 3.2).
+    ///
+    /// # Errors
+    /// [`CyclideError::NotRational`] if a square root the construction needs is not in
+    /// the scalar field (cannot happen for exact input that passed validation: the
+    /// discriminants are squares, docs/math/cyclides.md#rationality).
+    pub fn conjugate(&self) -> Result<CycleCurve<F>, CyclideError> {
+        match self {
+            PeConic::Circle { center, u, v, rho } => {
+                let (na, nb) = null_pair(&[u.clone(), v.clone()])?;
+                let h = pe(&na, &nb);
+                // Z = α N₊ + β N₋ with 2αβh = −ρ²: α = s k, β = a/(s k)
+                let a = -(rho.clone() * rho.clone() * pe(u, u)) / (F::from_i64(2) * h);
+                let k = power_of_two_near_sqrt(&a);
+                // homogeneous: (s² k N₊ + s C₀ + (a/k) N₋) / s
+                let nk = scale(&k, &na);
+                let nm = scale(&(a / k.clone()), &nb);
+                Ok(CycleCurve {
+                    w: Poly::new(vec![F::zero(), F::one()]),
+                    p: core::array::from_fn(|i| {
+                        quad(nm[i].clone(), center[i].clone(), nk[i].clone())
+                    }),
+                })
+            }
+            PeConic::Parabola { vertex, u, n } => {
+                let (m, p) = parabola_frame(u, n)?;
+                let c = add(vertex, &m);
+                let two = F::from_i64(2);
+                Ok(CycleCurve {
+                    w: Poly::constant(F::one()),
+                    p: core::array::from_fn(|i| {
+                        quad(c[i].clone(), p[i].clone(), -n[i].clone() / two.clone())
+                    }),
+                })
+            }
+        }
+    }
+}
+
+/// A basis of `{X : ⟨X, Aᵢ⟩ = 0 ∀i}`.
+pub(crate) fn pe_complement<F: Scalar>(a: &[[F; 4]]) -> Result<Vec<[F; 4]>, CyclideError> {
+    let m = Matrix::from_rows(a.iter().map(pe_row).collect())
+        .map_err(|e| CyclideError::InvalidArgument(e.to_string()))?;
+    m.null_space()
+        .into_iter()
+        .map(|v| {
+            <[F; 4]>::try_from(v)
+                .map_err(|_| CyclideError::InvalidArgument("kernel vector of wrong length".into()))
+        })
+        .collect()
+}
+
+/// The two isotropic directions `N₊, N₋` of the Lorentzian plane `span(U, V)^⊥`; they are
+/// rational because its discriminant is `−1` times a square
+/// (docs/math/cyclides.md#rationality).
+pub(crate) fn null_pair<F: Scalar>(uv: &[[F; 4]; 2]) -> Result<([F; 4], [F; 4]), CyclideError> {
+    let basis = pe_complement(uv)?;
+    let [a, b] = <[[F; 4]; 2]>::try_from(basis)
+        .map_err(|_| CyclideError::InvalidArgument("U and V are linearly dependent".into()))?;
+    let (g11, g12, g22) = (pe(&a, &a), pe(&a, &b), pe(&b, &b));
+    let disc = g12.clone() * g12.clone() - g11.clone() * g22.clone();
+    let sc = size(&a).max(size(&b)).max(1.0);
+    if disc <= F::zero() || negligible(&disc, sc.powi(4)) {
+        return Err(CyclideError::InvalidArgument(format!(
+            "span(U, V)^⊥ is not a Lorentzian plane (discriminant {})",
+            format_scalar(&disc)
+        )));
+    }
+    if negligible(&g11, sc * sc) {
+        let nb = sub(&scale(&g22, &a), &scale(&(F::from_i64(2) * g12), &b));
+        return Ok((a, nb));
+    }
+    let root = sqrt_in_field(&disc).ok_or_else(|| {
+        CyclideError::NotRational(format!(
+            "the isotropic directions of span(U, V)^⊥ need √{}",
+            format_scalar(&disc)
+        ))
+    })?;
+    let np = add(&scale(&(root.clone() - g12.clone()), &a), &scale(&g11, &b));
+    let nm = add(&scale(&(-root - g12), &a), &scale(&g11, &b));
+    Ok((np, nm))
+}
+
+/// For the pe parabola: `M` isotropic with `⟨M, N⟩ = 1`, `M ⟂ U, P`, and `P` pe-unit,
+/// `P ⟂ U, N` (docs/math/cyclides.md#two-families).
+pub(crate) fn parabola_frame<F: Scalar>(
+    u: &[F; 4],
+    n: &[F; 4],
+) -> Result<([F; 4], [F; 4]), CyclideError> {
+    let basis = pe_complement(&[u.clone(), n.clone()])?;
+    let s = size(n).max(1.0);
+    let mut cands = basis.clone();
+    if let [a, b] = basis.as_slice() {
+        cands.push(add(a, b));
+    }
+    let p0 = cands
+        .into_iter()
+        .find(|c| !negligible(&pe(c, c), s * s))
+        .ok_or_else(|| {
+            CyclideError::InvalidArgument("span(U, N)^⊥ has no spacelike vector".into())
+        })?;
+    let pp = pe(&p0, &p0);
+    let root = sqrt_in_field(&pp).ok_or_else(|| {
+        CyclideError::NotRational(format!(
+            "the unit vector of span(U, N)^⊥ needs √{}",
+            format_scalar(&pp)
+        ))
+    })?;
+    let p = scale(&(F::one() / root), &p0);
+    let m = Matrix::from_rows(vec![pe_row(u), pe_row(&p), pe_row(n)])
+        .map_err(|e| CyclideError::InvalidArgument(e.to_string()))?;
+    let sol = m
+        .solve(&[F::zero(), F::zero(), F::one()])
+        .map_err(|e| CyclideError::InvalidArgument(e.to_string()))?;
+    let m0 = sol
+        .particular()
+        .and_then(|x| <[F; 4]>::try_from(x.to_vec()).ok())
+        .ok_or_else(|| {
+            CyclideError::InvalidArgument("no vector M with ⟨M, N⟩ = 1, M ⟂ U, P".into())
+        })?;
+    let c = pe(&m0, &m0) / F::from_i64(2);
+    Ok((sub(&m0, &scale(&c, n)), p))
+}

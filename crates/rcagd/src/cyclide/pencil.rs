@@ -1,0 +1,371 @@
+//! The pencil of dual quadrics `λC + μΩ` of a Dupin cyclide (Peternell, "Rational
+//! Parametrizations for Envelopes of Quadric Families", §3.8.1, Prop. 3.1 and 3.2;
+//! corrected determinant: docs/math/cyclides.md#pencil).
+//!
+//! Hyperplanes of `R⁴` are `X₀ + X₁x₁ + … + X₄x₄ = 0`; a conic is the dual quadric of the
+//! hyperplanes tangent to it, `Ω = diag(0, 1, 1, 1, −1)` the absolute quadric. For the pe
+//! circle, with `e = (1, C₀)`, `Ũ = (0, U)`, `Ṽ = (0, V)`:
+//! `C = e eᵀ − ρ²(Ũ Ũᵀ + Ṽ Ṽᵀ)` and the second singular member is `D = C + ρ²Ω` (the pe
+//! hyperbola of the second family); `det(λC + μΩ) = κ λ μ² (μ − ρ²λ)²`, i.e. `λ = 0` (Ω)
+//! is a simple zero and `μ = 0` (C) a double zero (the printed text has them the other
+//! way round). For the pe parabola, `C = ŨŨᵀ − (e Ñᵀ + Ñ eᵀ)` with `Ñ = (0, N)`, every
+//! member is singular (`det ≡ 0`), `D = Ω − C` is the parabola of the second family and
+//! `P = C + Ω` a paraboloid of rank 4 in the γ-hyperplane `⟨N, x − C₀⟩ = −1`.
+//!
+//! The cyclide is the cyclographic image of each singular member: its oriented tangent
+//! planes `e₀ + n·x = 0` give the γ-hyperplanes `(e₀, n, 1)`, tangent to every member.
+
+use super::conic::{pe_complement, PeConic};
+use super::pe::{negligible, size};
+use super::surface::DupinCyclide;
+use super::CyclideError;
+use crate::canal::bipoly::BiPoly;
+use rcagd_algebra::{format_scalar, Certificate, Poly, Scalar};
+use rcagd_geom::certify::polynomial_is_zero_scaled;
+
+/// One named member of the pencil: a symmetric 5×5 matrix.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PencilMember<F> {
+    /// `"C"`, `"Ω"`, `"D"` or `"P"`.
+    pub name: &'static str,
+    /// The symmetric matrix (hyperplane coordinates).
+    pub matrix: Vec<Vec<F>>,
+    /// Hyperplanes spanning its kernel (empty where not computed).
+    pub kernel: Vec<[F; 5]>,
+}
+
+/// The pencil `λC + μΩ` of a cyclide with its singular members.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DualPencil<F> {
+    /// `C`, `Ω`, `D` and, for the parabolic cyclide, `P`.
+    pub members: Vec<PencilMember<F>>,
+    /// `ρ²` for the pe circle (`D = C + ρ²Ω`), `None` for the parabola.
+    pub rho2: Option<F>,
+}
+
+fn outer<F: Scalar>(a: &[F; 5], b: &[F; 5]) -> Vec<Vec<F>> {
+    (0..5)
+        .map(|i| (0..5).map(|j| a[i].clone() * b[j].clone()).collect())
+        .collect()
+}
+
+fn lin<F: Scalar>(terms: &[(F, &Vec<Vec<F>>)]) -> Vec<Vec<F>> {
+    (0..5)
+        .map(|i| {
+            (0..5)
+                .map(|j| {
+                    terms
+                        .iter()
+                        .fold(F::zero(), |acc, (k, m)| acc + k.clone() * m[i][j].clone())
+                })
+                .collect()
+        })
+        .collect()
+}
+
+fn lift<F: Scalar>(a: &[F; 4], w: F) -> [F; 5] {
+    [w, a[0].clone(), a[1].clone(), a[2].clone(), a[3].clone()]
+}
+
+fn omega<F: Scalar>() -> Vec<Vec<F>> {
+    (0..5)
+        .map(|i| {
+            (0..5)
+                .map(|j| match (i, j) {
+                    (1, 1) | (2, 2) | (3, 3) => F::one(),
+                    (4, 4) => -F::one(),
+                    _ => F::zero(),
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// Hyperplanes containing the plane `{P₀ + αA + βB}`: `X·(1, P₀) = 0`, `X'·A = X'·B = 0`
+/// (Euclidean dot products in hyperplane coordinates).
+fn plane_kernel<F: Scalar>(
+    p0: &[F; 4],
+    a: &[F; 4],
+    b: &[F; 4],
+) -> Result<Vec<[F; 5]>, CyclideError> {
+    // pe_complement solves ⟨X, ·⟩ = 0; use it on 5-vectors via an explicit matrix instead
+    let rows = vec![
+        lift(p0, F::one()).to_vec(),
+        lift(a, F::zero()).to_vec(),
+        lift(b, F::zero()).to_vec(),
+    ];
+    let m = rcagd_algebra::Matrix::from_rows(rows)
+        .map_err(|e| CyclideError::InvalidArgument(e.to_string()))?;
+    m.null_space()
+        .into_iter()
+        .map(|v| {
+            <[F; 5]>::try_from(v).map_err(|_| CyclideError::InvalidArgument("kernel length".into()))
+        })
+        .collect()
+}
+
+impl<F: Scalar> DualPencil<F> {
+    /// The pencil of the cyclide's conic with its singular members and their kernels.
+    ///
+    /// # Errors
+    /// As [`PeConic::conjugate`].
+    pub fn of(cyclide: &DupinCyclide<F>) -> Result<Self, CyclideError> {
+        let om = omega::<F>();
+        match cyclide.conic() {
+            PeConic::Circle { center, u, v, rho } => {
+                let e = lift(center, F::one());
+                let (ut, vt) = (lift(u, F::zero()), lift(v, F::zero()));
+                let rr = rho.clone() * rho.clone();
+                let (ee, uu, vv) = (outer(&e, &e), outer(&ut, &ut), outer(&vt, &vt));
+                let c = lin(&[(F::one(), &ee), (-rr.clone(), &uu), (-rr.clone(), &vv)]);
+                let rr_d = rr.clone() * super::pe::pe(u, u);
+                let d = lin(&[(F::one(), &c), (rr_d.clone(), &om)]);
+                let ck = plane_kernel(center, u, v)?;
+                let comp = pe_complement(&[u.clone(), v.clone()])?;
+                let dk = match comp.as_slice() {
+                    [a, b] => plane_kernel(center, a, b)?,
+                    _ => Vec::new(),
+                };
+                Ok(DualPencil {
+                    members: vec![
+                        PencilMember {
+                            name: "C",
+                            matrix: c,
+                            kernel: ck,
+                        },
+                        PencilMember {
+                            name: "Ω",
+                            matrix: om,
+                            kernel: vec![lift(
+                                &[F::zero(), F::zero(), F::zero(), F::zero()],
+                                F::one(),
+                            )],
+                        },
+                        PencilMember {
+                            name: "D",
+                            matrix: d,
+                            kernel: dk,
+                        },
+                    ],
+                    rho2: Some(rr_d),
+                })
+            }
+            PeConic::Parabola { vertex, u, n } => {
+                let e = lift(vertex, F::one());
+                let (ut, nt) = (lift(u, F::zero()), lift(n, F::zero()));
+                let c = lin(&[
+                    (F::one(), &outer(&ut, &ut)),
+                    (-F::one(), &outer(&e, &nt)),
+                    (-F::one(), &outer(&nt, &e)),
+                ]);
+                let d = lin(&[(F::one(), &om), (-F::one(), &c)]);
+                let p = lin(&[(F::one(), &om), (F::one(), &c)]);
+                let ck = plane_kernel(vertex, u, n)?;
+                let (m, pv) = super::conic::parabola_frame(u, n)?;
+                let dv = super::pe::add(vertex, &m);
+                let dk = plane_kernel(&dv, &pv, n)?;
+                Ok(DualPencil {
+                    members: vec![
+                        PencilMember {
+                            name: "C",
+                            matrix: c,
+                            kernel: ck,
+                        },
+                        PencilMember {
+                            name: "Ω",
+                            matrix: om,
+                            kernel: Vec::new(),
+                        },
+                        PencilMember {
+                            name: "D",
+                            matrix: d,
+                            kernel: dk,
+                        },
+                        PencilMember {
+                            name: "P",
+                            matrix: p,
+                            kernel: Vec::new(),
+                        },
+                    ],
+                    rho2: None,
+                })
+            }
+        }
+    }
+
+    /// `det(λC + Ω)` as a polynomial in `λ` (`μ = 1`).
+    pub fn determinant(&self) -> Poly<F> {
+        let (c, om) = match (self.members.first(), self.members.get(1)) {
+            (Some(c), Some(o)) => (&c.matrix, &o.matrix),
+            _ => return Poly::zero(),
+        };
+        let m: Vec<Vec<Poly<F>>> = (0..5)
+            .map(|i| {
+                (0..5)
+                    .map(|j| Poly::new(vec![om[i][j].clone(), c[i][j].clone()]))
+                    .collect()
+            })
+            .collect();
+        det_poly(&m)
+    }
+
+    /// Certificates: the kernels (singular members of rank ≤ 3), the determinant of the
+    /// pencil, and the cyclide's tangent γ-hyperplanes `(−n·x, n, 1)` tangent to every
+    /// member (the cyclide is the cyclographic image of each).
+    pub fn certify(&self, cyclide: &DupinCyclide<F>) -> Vec<Certificate> {
+        let mut out = Vec::new();
+        let ex = F::EXACT;
+        for m in &self.members {
+            if m.kernel.len() >= 2 {
+                let sc = m
+                    .matrix
+                    .iter()
+                    .flatten()
+                    .map(|x| x.to_f64().abs())
+                    .fold(1.0, f64::max)
+                    * m.kernel.iter().map(|k| size(k)).fold(1.0, f64::max);
+                let res: Vec<F> = m
+                    .kernel
+                    .iter()
+                    .flat_map(|k| {
+                        m.matrix
+                            .iter()
+                            .map(|row| {
+                                row.iter()
+                                    .zip(k)
+                                    .fold(F::zero(), |a, (x, y)| a + x.clone() * y.clone())
+                            })
+                            .collect::<Vec<_>>()
+                    })
+                    .collect();
+                let first = res.iter().find(|x| !negligible(*x, sc)).cloned();
+                out.push(Certificate::decide(
+                    format!("{} K = 0 for {} independent hyperplanes K through the plane of the conic (a singular member of rank ≤ {})", m.name, m.kernel.len(), 5 - m.kernel.len()),
+                    first.is_none(),
+                    ex,
+                    || first.map(|x| format_scalar(&x)).unwrap_or_default(),
+                ));
+            }
+        }
+        let p = self.determinant();
+        match &self.rho2 {
+            Some(rr) => {
+                let l0 = F::one() / rr.clone();
+                let dp = p.derivative();
+                let ok = p.eval(&F::zero()).is_zero()
+                    && !dp.eval(&F::zero()).is_zero()
+                    && p.degree() == Some(3)
+                    && p.eval(&l0).is_zero()
+                    && dp.eval(&l0).is_zero();
+                let sc = p
+                    .coeffs()
+                    .iter()
+                    .map(|x| x.to_f64().abs())
+                    .fold(1.0, f64::max);
+                let ok = ok
+                    || (!ex && {
+                        let k = p.coeff(1);
+                        // κλ(1 − ρ²λ)² expanded
+                        let want = Poly::new(vec![
+                            F::zero(),
+                            k.clone(),
+                            -F::from_i64(2) * k.clone() * rr.clone(),
+                            k * rr.clone() * rr.clone(),
+                        ]);
+                        (&p - &want).coeffs().iter().all(|x| negligible(x, sc))
+                    });
+                out.push(Certificate::decide(
+                    "det(λC + μΩ) = κλμ²(μ − ρ²λ)², κ ≠ 0: Ω (λ = 0) simple, C (μ = 0) double, D = C + ρ²Ω double (Peternell §3.8.1, corrected)",
+                    ok,
+                    ex,
+                    || format!("det(λC + Ω) = {:?}", p.coeffs().iter().map(format_scalar).collect::<Vec<_>>()),
+                ));
+            }
+            None => {
+                let sc = p
+                    .coeffs()
+                    .iter()
+                    .map(|x| x.to_f64().abs())
+                    .fold(1.0, f64::max);
+                out.push(polynomial_is_zero_scaled(
+                    "det(λC + μΩ) ≡ 0 (every member of the parabolic pencil is singular; C and D have rank 3)",
+                    p.coeffs(),
+                    sc,
+                ));
+            }
+        }
+        // tangent γ-hyperplanes H = (−N·X, X₀N, X₀²)
+        let x = cyclide.homogeneous();
+        let n = cyclide.normal_numerators();
+        let nx = n[0].mul(&x[1]).add(&n[1].mul(&x[2])).add(&n[2].mul(&x[3]));
+        let h: [BiPoly<F>; 5] = [
+            nx.neg(),
+            x[0].mul(&n[0]),
+            x[0].mul(&n[1]),
+            x[0].mul(&n[2]),
+            x[0].mul(&x[0]),
+        ];
+        let hsc = h
+            .iter()
+            .flat_map(|p| p.all_coeffs())
+            .map(|c| c.to_f64().abs())
+            .fold(1.0, f64::max);
+        for m in &self.members {
+            let mut acc = BiPoly::zero();
+            for i in 0..5 {
+                for j in 0..5 {
+                    let k = m.matrix[i][j].clone();
+                    if !k.is_zero() {
+                        acc = acc.add(&h[i].mul(&h[j]).scale(&k));
+                    }
+                }
+            }
+            let msc = m
+                .matrix
+                .iter()
+                .flatten()
+                .map(|x| x.to_f64().abs())
+                .fold(1.0, f64::max);
+            out.push(polynomial_is_zero_scaled(
+                &format!("H {} Hᵀ ≡ 0 for the tangent γ-hyperplanes H = (−n·x, n, 1) (the cyclide is the cyclographic image of {})", m.name, m.name),
+                &acc.all_coeffs(),
+                hsc * hsc * msc,
+            ));
+        }
+        out
+    }
+}
+
+/// Determinant of a square matrix of polynomials (cofactor expansion; 5×5 here).
+fn det_poly<F: Scalar>(m: &[Vec<Poly<F>>]) -> Poly<F> {
+    let n = m.len();
+    if n == 0 {
+        return Poly::constant(F::one());
+    }
+    if n == 1 {
+        return m[0].first().cloned().unwrap_or_else(Poly::zero);
+    }
+    let mut acc = Poly::zero();
+    for (j, a) in m[0].iter().enumerate() {
+        if a.is_zero() {
+            continue;
+        }
+        let minor: Vec<Vec<Poly<F>>> = m[1..]
+            .iter()
+            .map(|row| {
+                row.iter()
+                    .enumerate()
+                    .filter(|(k, _)| *k != j)
+                    .map(|(_, x)| x.clone())
+                    .collect()
+            })
+            .collect();
+        let term = a * &det_poly(&minor);
+        acc = if j % 2 == 0 {
+            &acc + &term
+        } else {
+            &acc - &term
+        };
+    }
+    acc
+}

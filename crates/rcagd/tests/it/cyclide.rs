@@ -1,0 +1,469 @@
+//! Dupin cyclides (Peternell, "Rational Parametrizations for Envelopes of Quadric
+//! Families", §3.8.1): the printed example, all types, the pencil, three spheres, offsets,
+//! and property tests with random exact pe circles.
+
+use proptest::prelude::*;
+use rcagd::cyclide::{
+    from_three_spheres, spheres::certify_three_spheres, CyclideError, CyclideKind, DualPencil,
+    DupinCyclide, PeConic,
+};
+use rcagd::cyclographic::OrientedSphere;
+use rcagd::Certified;
+use rcagd_algebra::{Rational, Scalar};
+
+type Q = Rational;
+
+fn q(p: i64, d: i64) -> Q {
+    Q::from_ratio(p, d)
+}
+fn z4() -> [Q; 4] {
+    [qi(0), qi(0), qi(0), qi(0)]
+}
+fn qi(p: i64) -> Q {
+    Q::from(p)
+}
+fn v4(a: [(i64, i64); 4]) -> [Q; 4] {
+    core::array::from_fn(|i| q(a[i].0, a[i].1))
+}
+
+fn assert_all_hold(certs: &[rcagd_algebra::Certificate]) {
+    for c in certs {
+        assert!(c.holds, "{c}");
+        assert!(c.exact, "{c}");
+    }
+}
+
+/// The printed example of §3.8.1 / Lemma 3.4: U = (1, 0, 0, 0), V = (0, 5/4, 0, 3/4):
+/// spine (ρ cos θ, 5ρ/4 sin θ, 0), r = r₀ + 3ρ/4 sin θ, |ṁ|² − ṙ² = ρ², constant rational
+/// point f = (0, −3/5, 4/5) on every normal circle.
+#[test]
+fn printed_example_u_v() {
+    let u = v4([(1, 1), (0, 1), (0, 1), (0, 1)]);
+    let v = v4([(0, 1), (5, 4), (0, 1), (3, 4)]);
+    let (rho, r0) = (qi(2), qi(3));
+    let c0 = [qi(0), qi(0), qi(0), r0.clone()];
+    let cy = DupinCyclide::from_pe_circle(c0, u, v, rho.clone()).expect("cyclide");
+    assert_all_hold(&cy.certify());
+    // bidegree (2, 2)
+    let x = cy.homogeneous();
+    assert!(x
+        .iter()
+        .all(|p| p.degree_t().unwrap_or(0) <= 2 && p.degree_u().unwrap_or(0) <= 2));
+    // the first family is the printed spine and radius at θ with t = tan(θ/2)
+    let t = q(1, 3);
+    let c = cy.first_family().eval(&t).expect("finite");
+    let (cs, sn) = (q(8, 10), q(6, 10)); // cos θ, sin θ for t = 1/3
+    assert_eq!(c[0], rho.clone() * cs);
+    assert_eq!(c[1], rho.clone() * q(5, 4) * sn.clone());
+    assert_eq!(c[3], r0.clone() + rho.clone() * q(3, 4) * sn);
+    // normals where the second family is at infinity are the seed's constant f and its mirror
+    let n_inf = cy.normal(&t, &qi(0)).expect("finite");
+    let f = [qi(0), q(-3, 5), q(4, 5)];
+    let f2 = [qi(0), q(-3, 5), q(-4, 5)];
+    assert!(n_inf == f || n_inf == f2, "{n_inf:?}");
+    // ... and it is constant along the first family
+    assert_eq!(cy.normal(&q(-7, 2), &qi(0)).expect("finite"), n_inf);
+    // the classical quartic with a = 5/4, b = 3/4 (relabelled axes) agrees with F
+    for p in [[q(1, 2), q(3, 1), q(-2, 7)], [qi(5), qi(-1), qi(2)]] {
+        let (x, y, z) = (p[0].clone(), p[1].clone(), p[2].clone());
+        let s = x.clone() * x.clone() + y.clone() * y.clone() + z.clone() * z.clone()
+            - r0.clone() * r0.clone()
+            + rho.clone() * rho.clone();
+        let l = rho.clone() * q(5, 4) * y.clone() + rho.clone() * q(3, 4) * r0.clone();
+        let classical = s.clone() * s
+            - qi(4) * l.clone() * l
+            - qi(4) * rho.clone() * rho.clone() * x.clone() * x;
+        assert_eq!(cy.implicit_value(&p), classical);
+    }
+    // ρk = 2·3/4 = 3/2 and ρ√(1 + k²) = 2·5/4 = 5/2 < r₀ = 3: a spindle cyclide
+    assert_eq!(cy.kind(), CyclideKind::Spindle);
+}
+
+/// k² = u₄² + v₄²: ring for ρ²k² < r₀² < ρ²(1 + k²), horn at or below ρk and at ρ√(1+k²),
+/// spindle above.
+#[test]
+fn kinds_ring_horn_spindle_parabolic() {
+    let u = v4([(1, 1), (0, 1), (0, 1), (0, 1)]);
+    let v = v4([(0, 1), (5, 4), (0, 1), (3, 4)]);
+    // ρ = 4: ρk = 3, ρ√(1+k²) = 5
+    let kind = |r0: Q| {
+        DupinCyclide::from_pe_circle([qi(0), qi(0), qi(0), r0], u.clone(), v.clone(), qi(4))
+            .expect("cyclide")
+            .kind()
+    };
+    assert_eq!(kind(qi(4)), CyclideKind::Ring);
+    assert_eq!(kind(qi(3)), CyclideKind::Horn);
+    assert_eq!(kind(qi(1)), CyclideKind::Horn);
+    assert_eq!(kind(qi(0)), CyclideKind::Horn);
+    assert_eq!(kind(qi(5)), CyclideKind::Horn);
+    assert_eq!(kind(qi(-5)), CyclideKind::Horn);
+    assert_eq!(kind(qi(6)), CyclideKind::Spindle);
+    // tori: V = (0, 1, 0, 0)
+    let torus = |r0: i64| {
+        DupinCyclide::from_pe_circle(
+            [qi(0), qi(0), qi(0), qi(r0)],
+            u.clone(),
+            v4([(0, 1), (1, 1), (0, 1), (0, 1)]),
+            qi(3),
+        )
+        .expect("torus")
+    };
+    assert_eq!(torus(1).kind(), CyclideKind::Ring);
+    assert_eq!(torus(3).kind(), CyclideKind::Horn);
+    assert_eq!(torus(4).kind(), CyclideKind::Spindle);
+    for r0 in [1, 3, 4] {
+        assert_all_hold(&torus(r0).certify());
+    }
+    // the torus quartic (|x|² + R² − ρ²)² = 4R²(x² + y²) with R = 3, ρ = 1
+    let t = torus(1);
+    let p = [q(2, 1), q(1, 1), q(1, 3)];
+    let s = qi(4) + qi(1) + q(1, 9) + qi(9) - qi(1);
+    assert_eq!(t.implicit_value(&p), s.clone() * s - qi(36) * qi(5));
+    let par = DupinCyclide::from_pe_parabola(
+        [qi(1), qi(0), qi(0), qi(2)],
+        v4([(1, 1), (0, 1), (0, 1), (0, 1)]),
+        v4([(0, 1), (1, 1), (0, 1), (1, 1)]),
+    )
+    .expect("parabolic");
+    assert_eq!(par.kind(), CyclideKind::Parabolic);
+    assert_all_hold(&par.certify());
+}
+
+#[test]
+fn named_errors() {
+    let u = v4([(1, 1), (0, 1), (0, 1), (0, 1)]);
+    let v = v4([(0, 1), (5, 4), (0, 1), (3, 4)]);
+    let c0 = [qi(0), qi(0), qi(0), qi(1)];
+    let e = DupinCyclide::from_pe_circle(c0.clone(), u.clone(), v.clone(), qi(0)).unwrap_err();
+    assert!(matches!(e, CyclideError::ZeroRadius(_)), "{e}");
+    let e = DupinCyclide::from_pe_circle(
+        c0.clone(),
+        u.clone(),
+        v4([(0, 1), (1, 1), (0, 1), (1, 1)]),
+        qi(1),
+    )
+    .unwrap_err();
+    assert!(matches!(e, CyclideError::IsotropicTangents(_)), "{e}");
+    let e = DupinCyclide::from_pe_circle(
+        c0.clone(),
+        u.clone(),
+        v4([(0, 1), (2, 1), (0, 1), (0, 1)]),
+        qi(1),
+    )
+    .unwrap_err();
+    assert!(matches!(e, CyclideError::NotOrthonormal(_)), "{e}");
+    let e =
+        DupinCyclide::from_pe_circle(c0, u.clone(), v4([(1, 1), (1, 1), (0, 1), (0, 1)]), qi(1))
+            .unwrap_err();
+    assert!(matches!(e, CyclideError::NotOrthonormal(_)), "{e}");
+    // r ≡ 0: the circle lies in R³
+    let e =
+        DupinCyclide::from_pe_circle(z4(), u.clone(), v4([(0, 1), (1, 1), (0, 1), (0, 1)]), qi(1))
+            .unwrap_err();
+    assert!(matches!(e, CyclideError::Degenerate(_)), "{e}");
+    // parabola: N not isotropic, N = 0
+    let e = DupinCyclide::from_pe_parabola(z4(), u.clone(), v4([(0, 1), (1, 1), (0, 1), (0, 1)]))
+        .unwrap_err();
+    assert!(matches!(e, CyclideError::NotOrthonormal(_)), "{e}");
+    let e = DupinCyclide::from_pe_parabola(z4(), u, z4()).unwrap_err();
+    assert!(matches!(e, CyclideError::ZeroRadius(_)), "{e}");
+}
+
+#[test]
+fn offsets_are_cyclides() {
+    let cy = DupinCyclide::from_pe_circle(
+        [qi(1), qi(2), qi(0), qi(3)],
+        v4([(1, 1), (0, 1), (0, 1), (0, 1)]),
+        v4([(0, 1), (5, 4), (0, 1), (3, 4)]),
+        qi(4),
+    )
+    .expect("cyclide");
+    for d in [q(1, 2), qi(-2), qi(5)] {
+        assert_all_hold(&cy.certify_offset(&d).expect("offset"));
+    }
+    let par = DupinCyclide::from_pe_parabola(
+        [qi(0), qi(0), qi(0), qi(1)],
+        v4([(1, 1), (0, 1), (0, 1), (0, 1)]),
+        v4([(0, 1), (3, 5), (4, 5), (1, 1)]),
+    )
+    .expect("parabolic");
+    assert_all_hold(&par.certify_offset(&q(-1, 3)).expect("offset"));
+}
+
+/// Prop. 3.1 with erratum: det(λC + μΩ) = κλμ²(μ − ρ²λ)²; D singular; the tangent
+/// γ-hyperplanes touch C, Ω, D. Prop. 3.2: every member singular, C and D of rank 3.
+#[test]
+fn pencils_of_circle_and_parabola() {
+    let cy = DupinCyclide::from_pe_circle(
+        [qi(1), qi(0), q(1, 2), qi(3)],
+        v4([(1, 1), (0, 1), (0, 1), (0, 1)]),
+        v4([(0, 1), (5, 4), (0, 1), (3, 4)]),
+        qi(2),
+    )
+    .expect("cyclide");
+    let pencil = DualPencil::of(&cy).expect("pencil");
+    assert_all_hold(&pencil.certify(&cy));
+    let det = pencil.determinant();
+    assert_eq!(det.degree(), Some(3));
+    let par = DupinCyclide::from_pe_parabola(
+        [qi(0), qi(1), qi(0), qi(1)],
+        v4([(1, 1), (0, 1), (0, 1), (0, 1)]),
+        v4([(0, 1), (3, 5), (4, 5), (1, 1)]),
+    )
+    .expect("parabolic");
+    let pencil = DualPencil::of(&par).expect("pencil");
+    assert_eq!(pencil.members.len(), 4);
+    assert_all_hold(&pencil.certify(&par));
+}
+
+#[test]
+fn three_spheres() {
+    let s = |c: [i64; 3], r: i64| OrientedSphere::new([qi(c[0]), qi(c[1]), qi(c[2])], qi(r));
+    let spheres = [s([0, 0, 0], 1), s([4, 0, 0], 1), s([0, 4, 0], 1)];
+    let cy = from_three_spheres(&spheres).expect("cyclide");
+    assert_all_hold(&cy.certify());
+    assert_all_hold(&certify_three_spheres(&cy, &spheres));
+    // different radii
+    let spheres = [s([0, 0, 0], 1), s([6, 0, 0], 2), s([0, 6, 0], 2)];
+    match from_three_spheres(&spheres) {
+        Ok(cy) => {
+            assert_all_hold(&cy.certify());
+            assert_all_hold(&certify_three_spheres(&cy, &spheres));
+        }
+        Err(e) => assert!(matches!(e, CyclideError::NotRational(_)), "{e}"),
+    }
+    let e = from_three_spheres(&[s([0, 0, 0], 1), s([1, 0, 0], 1), s([3, 0, 0], 1)]).unwrap_err();
+    assert!(matches!(e, CyclideError::DegenerateSpheres(_)), "{e}");
+    let e = from_three_spheres(&[s([0, 0, 0], 0), s([1, 0, 0], 10), s([0, 1, 0], 10)]).unwrap_err();
+    assert!(matches!(e, CyclideError::DegenerateSpheres(_)), "{e}");
+    // f64 agrees
+    let sf = |c: [f64; 3], r: f64| OrientedSphere::new(c, r);
+    let cf = from_three_spheres(&[
+        sf([0.0, 0.0, 0.0], 1.0),
+        sf([4.0, 0.0, 0.0], 1.0),
+        sf([0.0, 4.0, 0.0], 1.0),
+    ])
+    .expect("f64");
+    assert!(cf.all_hold());
+}
+
+#[test]
+fn covering_patches_close_up() {
+    let cy = DupinCyclide::from_pe_circle(
+        [qi(0), qi(0), qi(0), qi(4)],
+        v4([(1, 1), (0, 1), (0, 1), (0, 1)]),
+        v4([(0, 1), (5, 4), (0, 1), (3, 4)]),
+        qi(4),
+    )
+    .expect("cyclide");
+    let patches = cy.covering_patches().expect("patches");
+    assert_eq!(patches.len(), 16);
+    for p in &patches {
+        assert_eq!(p.degree(), (2, 2));
+        assert!(
+            p.weights().iter().all(|w| *w > Q::from(0))
+                || p.weights().iter().any(|w| *w <= Q::from(0))
+        );
+        for (a, b) in [(q(1, 3), q(2, 3)), (qi(0), qi(1)), (q(1, 2), q(1, 7))] {
+            let pt = p.eval(&a, &b).expect("finite");
+            let pt: [Q; 3] = [pt[0].clone(), pt[1].clone(), pt[2].clone()];
+            assert_eq!(cy.implicit_value(&pt), Q::from(0));
+        }
+    }
+    assert!(matches!(
+        DupinCyclide::from_pe_parabola(
+            z4(),
+            v4([(1, 1), (0, 1), (0, 1), (0, 1)]),
+            v4([(0, 1), (1, 1), (0, 1), (1, 1)])
+        )
+        .expect("par")
+        .covering_patches(),
+        Err(CyclideError::InvalidArgument(_))
+    ));
+}
+
+/// A rational Lorentz transformation: boosts in the (x, w), (y, w), (z, w) planes with
+/// rational rapidity parameters and a rotation about z by a rational angle.
+fn lorentz(b: [Q; 3], rot: Q) -> impl Fn(&[Q; 4]) -> [Q; 4] {
+    move |x: &[Q; 4]| {
+        let mut y = x.clone();
+        // rotation about z: cos = (1 − r²)/(1 + r²), sin = 2r/(1 + r²)
+        let d = qi(1) + rot.clone() * rot.clone();
+        let (c, s) = (
+            (qi(1) - rot.clone() * rot.clone()) / d.clone(),
+            qi(2) * rot.clone() / d,
+        );
+        let (a0, a1) = (y[0].clone(), y[1].clone());
+        y[0] = c.clone() * a0.clone() - s.clone() * a1.clone();
+        y[1] = s * a0 + c * a1;
+        for (k, bk) in b.iter().enumerate() {
+            let d = qi(1) - bk.clone() * bk.clone();
+            let (ch, sh) = (
+                (qi(1) + bk.clone() * bk.clone()) / d.clone(),
+                qi(2) * bk.clone() / d,
+            );
+            let (xk, w) = (y[k].clone(), y[3].clone());
+            y[k] = ch.clone() * xk.clone() + sh.clone() * w.clone();
+            y[3] = sh * xk + ch * w;
+        }
+        y
+    }
+}
+
+fn small() -> impl Strategy<Value = Q> {
+    (-6i64..=6, 1i64..=4).prop_map(|(p, d)| q(p, d))
+}
+fn boost() -> impl Strategy<Value = Q> {
+    (-3i64..=3, 4i64..=6).prop_map(|(p, d)| q(p, d))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// Random exact pe circles (a rational Lorentz image of the unit circle pair): every
+    /// certificate holds exactly, the offset is certified, and f64 agrees with Q.
+    #[test]
+    fn random_pe_circles(
+        b in prop::array::uniform3(boost()),
+        rot in small(),
+        c in prop::array::uniform4(small()),
+        rho in (1i64..=5, 1i64..=3),
+        d in small(),
+    ) {
+        let l = lorentz(b, rot);
+        let u = l(&[qi(1), qi(0), qi(0), qi(0)]);
+        let v = l(&[qi(0), qi(1), qi(0), qi(0)]);
+        let rho = q(rho.0, rho.1);
+        let cy = match DupinCyclide::from_pe_circle(c.clone(), u.clone(), v.clone(), rho.clone()) {
+            Ok(cy) => cy,
+            Err(CyclideError::Degenerate(_)) => return Ok(()),
+            Err(e) => panic!("{e}"),
+        };
+        for cert in cy.certify() {
+            prop_assert!(cert.holds, "{}", cert);
+        }
+        match cy.certify_offset(&d) {
+            Ok(certs) => for cert in certs { prop_assert!(cert.holds, "{}", cert); },
+            Err(CyclideError::Degenerate(_)) => {}
+            Err(e) => panic!("{e}"),
+        }
+        let f = |x: &[Q; 4]| -> [f64; 4] { core::array::from_fn(|i| Scalar::to_f64(&x[i])) };
+        let cf = DupinCyclide::from_pe_circle(f(&c), f(&u), f(&v), Scalar::to_f64(&rho)).expect("f64");
+        for cert in cf.certify() {
+            prop_assert!(cert.holds, "f64: {}", cert);
+        }
+        prop_assert_eq!(cf.kind(), cy.kind());
+        for (t, s) in [(q(1, 3), q(2, 1)), (q(-2, 1), q(1, 5)), (qi(0), qi(-1))] {
+            let pe = cy.eval(&t, &s).expect("finite");
+            let pf = cf.eval(&Scalar::to_f64(&t), &Scalar::to_f64(&s)).expect("finite");
+            let scale = pe.iter().map(|x| Scalar::to_f64(x).abs()).fold(1.0, f64::max);
+            for i in 0..3 {
+                prop_assert!((Scalar::to_f64(&pe[i]) - pf[i]).abs() <= 1e-8 * scale, "{:?} {:?}", pe, pf);
+            }
+        }
+    }
+
+    /// Random pe parabolas: the parabolic cyclide and its pencil are certified.
+    #[test]
+    fn random_pe_parabolas(
+        b in prop::array::uniform3(boost()),
+        rot in small(),
+        c in prop::array::uniform4(small()),
+        k in small(),
+    ) {
+        prop_assume!(k != qi(0));
+        let l = lorentz(b, rot);
+        let u = l(&[qi(1), qi(0), qi(0), qi(0)]);
+        let n = l(&[qi(0), k.clone(), qi(0), k]);
+        let cy = DupinCyclide::from_pe_parabola(c, u, n).expect("parabolic");
+        for cert in cy.certify() {
+            prop_assert!(cert.holds, "{}", cert);
+        }
+        let pencil = DualPencil::of(&cy).expect("pencil");
+        for cert in pencil.certify(&cy) {
+            prop_assert!(cert.holds, "{}", cert);
+        }
+    }
+}
+
+#[test]
+fn conic_accessors() {
+    let cy = DupinCyclide::from_pe_circle(
+        [qi(0), qi(0), qi(0), qi(3)],
+        v4([(1, 1), (0, 1), (0, 1), (0, 1)]),
+        v4([(0, 1), (5, 4), (0, 1), (3, 4)]),
+        qi(2),
+    )
+    .expect("cyclide");
+    assert!(matches!(cy.conic(), PeConic::Circle { .. }));
+}
+
+/// Cyclide blends: two cylinders of radius 1 with axes x and y meeting at the origin
+/// (a quarter of the torus with major radius 2), two cones with intersecting axes, two
+/// parallel cylinders of different radii (a half cyclide); skew axes are refused.
+#[test]
+fn blends_between_cones_and_cylinders() {
+    use rcagd::cyclide::blend_cones;
+    let cyl = blend_cones(
+        v4([(2, 1), (0, 1), (0, 1), (1, 1)]),
+        v4([(1, 1), (0, 1), (0, 1), (0, 1)]),
+        v4([(0, 1), (2, 1), (0, 1), (1, 1)]),
+        v4([(0, 1), (1, 1), (0, 1), (0, 1)]),
+    )
+    .expect("cylinder blend");
+    assert_all_hold(&cyl.certify());
+    assert_eq!(cyl.t2, Some(qi(-1)));
+    let ps = cyl.patches().expect("patches");
+    assert_eq!(ps.len(), 4);
+    // a torus piece: (|x − c|² + R² − ρ²)² = 4R²((x − c₁)² + (y − c₂)²), c = (2, 2, 0)
+    for p in &ps {
+        let pt = p.eval(&q(1, 3), &q(3, 4)).expect("finite");
+        let (dx, dy, z) = (pt[0].clone() - qi(2), pt[1].clone() - qi(2), pt[2].clone());
+        let xy = dx.clone() * dx + dy.clone() * dy;
+        let s = xy.clone() + z.clone() * z + qi(4) - qi(1);
+        assert_eq!(s.clone() * s, qi(16) * xy);
+    }
+    // two cones: lines through S = (0, 0, 0, 1) with directions (1, 0, 0, 1/2), (0, 1, 0, 1/2)
+    let cone = blend_cones(
+        v4([(2, 1), (0, 1), (0, 1), (2, 1)]),
+        v4([(1, 1), (0, 1), (0, 1), (1, 2)]),
+        v4([(0, 1), (2, 1), (0, 1), (2, 1)]),
+        v4([(0, 1), (1, 1), (0, 1), (1, 2)]),
+    );
+    match cone {
+        Ok(b) => {
+            assert_all_hold(&b.certify());
+            assert!(!b.patches().expect("patches").is_empty());
+        }
+        Err(e) => assert!(matches!(e, CyclideError::NotRational(_)), "{e}"),
+    }
+    // parallel cylinders along z of radii 1 and 2 at distance √17 (a half cyclide)
+    let par = blend_cones(
+        v4([(0, 1), (0, 1), (0, 1), (1, 1)]),
+        v4([(0, 1), (0, 1), (1, 1), (0, 1)]),
+        v4([(4, 1), (1, 1), (0, 1), (2, 1)]),
+        v4([(0, 1), (0, 1), (1, 1), (0, 1)]),
+    )
+    .expect("parallel blend");
+    assert_all_hold(&par.certify());
+    assert_eq!(par.t2, None);
+    assert_eq!(par.patches().expect("patches").len(), 8);
+    // skew axes
+    let e = blend_cones(
+        v4([(2, 1), (0, 1), (0, 1), (1, 1)]),
+        v4([(1, 1), (0, 1), (0, 1), (0, 1)]),
+        v4([(0, 1), (2, 1), (1, 1), (1, 1)]),
+        v4([(0, 1), (1, 1), (0, 1), (0, 1)]),
+    )
+    .unwrap_err();
+    assert!(matches!(e, CyclideError::SkewAxes(_)), "{e}");
+    // unequal tangent lengths
+    let e = blend_cones(
+        v4([(2, 1), (0, 1), (0, 1), (1, 1)]),
+        v4([(1, 1), (0, 1), (0, 1), (0, 1)]),
+        v4([(0, 1), (3, 1), (0, 1), (1, 1)]),
+        v4([(0, 1), (1, 1), (0, 1), (0, 1)]),
+    )
+    .unwrap_err();
+    assert!(matches!(e, CyclideError::NoBlend(_)), "{e}");
+}
