@@ -296,6 +296,22 @@ impl<F: Scalar> PnCurve<F> {
         }
     }
 
+    /// The same curve with the opposite orientation: normal `−n`, support `−h`; its offset
+    /// at `d` is the offset of `self` at `−d` (docs/math/laguerre-pn.md#orientation).
+    pub fn opposite(&self) -> PnCurve<F> {
+        let n = &self.normal;
+        PnCurve {
+            point: self.point.clone(),
+            normal: [n[0].clone(), -n[1].clone(), -n[2].clone()],
+            support: RatFn {
+                num: -self.support.num.clone(),
+                den: self.support.den.clone(),
+            },
+            cofactor: self.cofactor.clone(),
+            distance: -self.distance.clone(),
+        }
+    }
+
     /// The oriented distance to the base curve (0 unless an offset).
     pub fn distance(&self) -> &F {
         &self.distance

@@ -286,6 +286,26 @@ impl<F: Scalar> PnSurface<F> {
         PnOffset::new(self, d)
     }
 
+    /// The same point set with the opposite orientation: unit normal `−n`, support
+    /// function `−h` (the oriented plane `h + n·x = 0` with both signs flipped), the same
+    /// point polynomials and cofactor. Its offset at distance `d` is the offset of `self`
+    /// at `−d`: `x + d(−n) = x − d n` (Peternell §3.1: an oriented plane and its opposite
+    /// are distinct elements of Laguerre geometry; docs/math/laguerre-pn.md#orientation).
+    pub fn opposite(&self) -> PnSurface<F> {
+        let n = &self.normal;
+        PnSurface {
+            point: self.point.clone(),
+            normal: [n[0].clone(), -n[1].clone(), -n[2].clone(), -n[3].clone()],
+            support: RatFn {
+                num: -self.support.num.clone(),
+                den: self.support.den.clone(),
+            },
+            cofactor: self.cofactor.clone(),
+            distance: -self.distance.clone(),
+            name: format!("{} (opposite orientation)", self.name),
+        }
+    }
+
     /// The surface at offset `d` as a plain PN surface.
     pub(crate) fn offset_surface(&self, d: &F) -> PnSurface<F> {
         // x + d n = (X + dKN)/W if W = N₀K, else (X N₀ + d W N)/(W N₀)
@@ -561,6 +581,37 @@ mod tests {
         assert!(surf.check_regular(&d).is_ok());
         let patch = surf.patch(&d).expect("patch");
         assert_eq!(patch.degree(), (2, 2));
+    }
+
+    /// The opposite orientation negates the normal and the support function, keeps the
+    /// point, and its offset at `d` is the offset of the original at `−d`.
+    #[test]
+    fn opposite_orientation_flips_the_normal() {
+        let (u, v) = (var::<Q>(0), var::<Q>(1));
+        let s = &(&u * &u) + &(&v * &v);
+        let w = &s + &int(1);
+        let n = [
+            w.clone(),
+            u.scale(&Q::from(2)),
+            v.scale(&Q::from(2)),
+            &s - &int(1),
+        ];
+        let surf = PnSurface::from_point_normal(n.clone(), n).expect("pn");
+        let opp = surf.opposite();
+        assert!(opp.all_hold(), "{:?}", opp.certify());
+        let (a, b) = (Q::from_ratio(1, 3), Q::from_ratio(-2, 5));
+        let n0 = surf.normal_at(&a, &b).expect("normal");
+        let n1 = opp.normal_at(&a, &b).expect("normal");
+        for k in 0..3 {
+            assert_eq!(n1[k], -n0[k].clone());
+        }
+        assert_eq!(surf.eval(&a, &b).expect("x"), opp.eval(&a, &b).expect("x"));
+        let d = Q::from_ratio(1, 2);
+        let p = opp.offset(d.clone()).surface().eval(&a, &b).expect("x");
+        let q = surf.offset(-d).surface().eval(&a, &b).expect("x");
+        assert_eq!(p, q);
+        assert!(opp.offset(Q::from(1)).all_hold());
+        assert_eq!(opp.opposite(), surf);
     }
 
     #[test]
