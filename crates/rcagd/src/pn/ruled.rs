@@ -432,11 +432,61 @@ impl<F: Scalar> ConeFamilyEnvelope<F> {
     }
 }
 
+impl<F: Scalar> ConeFamilyEnvelope<F> {
+    /// The certificates that the envelope touches every cone `Δ(t)` along a curve:
+    /// `Φ_t(x(t, u)) ≡ 0` and `(∂_tΦ_t)(x(t, u)) ≡ 0` (`x` held fixed when differentiating),
+    /// with the cone of revolution spanned by the two cycles in the vertex-free form
+    /// `Φ_t(x) = ((x − m₁)·M + r₁R)² − (|M|² − R²)(|x − m₁|² − r₁²)`
+    /// (Peternell §4.5 writes it with the vertex `V = (r₂m₁ − r₁m₂)/(r₂ − r₁)` as
+    /// `((x − V)·M)² − (|M|² − R²)|x − V|²`; both are the same polynomial, and the form used
+    /// here also covers cylinders, `R ≡ 0`: docs/math/laguerre-pn.md#cone-of-two-cycles).
+    ///
+    /// With `m₁ = m/w`, `r₁ = ρ/w`, `M = M̃/δ`, `R = R̃/δ`, `x = X/W` and `D = Xw − Wm`:
+    /// `Φ = 0 ⇔ S² ≡ Q G` with `S = D·M̃ + Wρ R̃`, `Q = |M̃|² − R̃²`, `G = |D|² − W²ρ²`; and
+    /// `∂_tΦ = 0 ⇔ S S′ ≡ w Q′ G − W δ Q G′` with `m′ = ṁw − mẇ`, `M′ = Ṁ̃δ − M̃δ̇` (same for
+    /// `ρ`, `R̃`), `S′ = −Wδ(m′·M̃) + w(D·M′) + Wδρ′R̃ + Wwρ R′`, `Q′ = M̃·M′ − R̃R′`,
+    /// `G′ = D·m′ + Wρρ′`.
+    pub fn cone_certificates(&self) -> Vec<Certificate> {
+        let x = self.surface.point_polys();
+        let (m, rho, w) = (&self.c1.center, &self.c1.radius, &self.c1.den);
+        let (mm, rr, md) = (&self.m, &self.r, &self.md);
+        let big_w = &x[0];
+        let d: [MPoly<F>; 3] = std::array::from_fn(|k| &(&x[k + 1] * w) - &(big_w * &m[k]));
+        let s = &dot3(&d, mm) + &(&(big_w * rho) * rr);
+        let q = &dot3(mm, mm) - &(rr * rr);
+        let g = &dot3(&d, &d) - &(&(big_w * big_w) * &(rho * rho));
+        let phi = identity_cert(
+            "the envelope lies on every cone Δ(t): Φ_t(x) = ((x − m₁)·M + r₁R)² − (|M|² − R²)(|x − m₁|² − r₁²) ≡ 0 (Peternell §4.5)",
+            &(&s * &s),
+            &(&q * &g),
+        );
+        let dot_t = |p: &MPoly<F>, den: &MPoly<F>| &(&p.partial(0) * den) - &(p * &den.partial(0));
+        let m_d: [MPoly<F>; 3] = std::array::from_fn(|k| dot_t(&m[k], w));
+        let rho_d = dot_t(rho, w);
+        let mm_d: [MPoly<F>; 3] = std::array::from_fn(|k| dot_t(&mm[k], md));
+        let rr_d = dot_t(rr, md);
+        let wd = big_w * md;
+        let s_d = &(&(&(&(-&wd) * &dot3(&m_d, mm)) + &(w * &dot3(&d, &mm_d)))
+            + &(&(&wd * &rho_d) * rr))
+            + &(&(&(big_w * w) * rho) * &rr_d);
+        let q_d = &dot3(mm, &mm_d) - &(rr * &rr_d);
+        let g_d = &dot3(&d, &m_d) + &(&(big_w * rho) * &rho_d);
+        let dphi = identity_cert(
+            "the envelope touches Δ(t) along its characteristic curve: ∂_tΦ_t(x) ≡ 0 (x fixed; Peternell §4.5)",
+            &(&s * &s_d),
+            &(&(&(w * &q_d) * &g) - &(&(&wd * &q) * &g_d)),
+        );
+        vec![phi, dphi]
+    }
+}
+
 impl<F: Scalar> Certified for ConeFamilyEnvelope<F> {
-    /// The PN identities and the tangency to both cycle families (Theorem 4.5).
+    /// The PN identities, the tangency to both cycle families and the contact with every
+    /// cone `Δ(t)` (Theorem 4.5).
     fn certify(&self) -> Vec<Certificate> {
         let mut out = self.surface.certify();
         out.extend(self.tangency_certificates());
+        out.extend(self.cone_certificates());
         out
     }
 }
