@@ -17,7 +17,7 @@ use crate::value::{ParamKind, Value};
 use rcagd::laguerre::LaguerreMap;
 use rcagd::pn::modeling::{HermiteDatum, PnModel};
 use rcagd::pn::planar::{surface_of_revolution, PnCurve};
-use rcagd::pn::ruled::{CanalPn, CycleFamily, EllipsoidPn, RuledPn};
+use rcagd::pn::ruled::{CanalPn, ConeFamilyEnvelope, CycleFamily, EllipsoidPn, RuledPn};
 use rcagd::pn::support::{anticaustic, anticaustic_certificates, from_support_function};
 use rcagd::pn::{Domain, IsotropicSurface, PnError, PnSurface, RatFn};
 use rcagd::Certified;
@@ -35,6 +35,7 @@ pub const OPS: &[OpSpec] = &[
     PN_LOFT,
     PN_RULED,
     PN_CANAL,
+    PN_CONE_ENVELOPE,
     PN_REVOLUTION,
     PN_ELLIPSOID,
     PN_LAGUERRE,
@@ -655,6 +656,86 @@ fn build_canal(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let canal = CanalPn::new(fam, None).map_err(blame("radius"))?;
     let certs = prefixed("canal: ", canal.on_spheres_certificates());
     surface_objects(args, canal.surface(), &domain(args)?, certs, "domain")
+}
+
+const PN_CONE_ENVELOPE: OpSpec = OpSpec {
+    name: "pn_cone_envelope",
+    summary: "the envelope of the cones of revolution spanned by two rational cycle curves (m₁; r₁)(t), (m₂; r₂)(t) (Peternell Thm 4.5) as a PN surface in (t, u), with exact offsets (r_i ↦ r_i + d); needs |m₁ − m₂|² − (r₁ − r₂)² to be a sum of two squares over Q(t)",
+    params: &[
+        ParamSpec::required(
+            "center1",
+            ParamKind::Grid,
+            "numerator of m₁(t): three rows (x, y, z) of power coefficients in t",
+        ),
+        ParamSpec::with_default(
+            "radius1",
+            ParamKind::Numbers,
+            "[0]",
+            "power coefficients of the numerator of the signed radius r₁(t)",
+        ),
+        ParamSpec::with_default(
+            "denominator1",
+            ParamKind::Numbers,
+            "[1]",
+            "power coefficients of the common denominator w₁(t) of m₁ and r₁",
+        ),
+        ParamSpec::required(
+            "center2",
+            ParamKind::Grid,
+            "numerator of m₂(t): three rows (x, y, z) of power coefficients in t",
+        ),
+        ParamSpec::with_default(
+            "radius2",
+            ParamKind::Numbers,
+            "[0]",
+            "power coefficients of the numerator of the signed radius r₂(t)",
+        ),
+        ParamSpec::with_default(
+            "denominator2",
+            ParamKind::Numbers,
+            "[1]",
+            "power coefficients of the common denominator w₂(t) of m₂ and r₂",
+        ),
+        DOMAIN,
+        OFFSET,
+        ORIENTATION,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_cone_envelope"
+op = "pn_cone_envelope"
+# c₁ = ((2t, t², 2); 3), c₂ = ((0, 1, 0); 1): |M|² − R² = (t² + 1)²
+center1 = [[0, 2, 0], [0, 0, 1], [2, 0, 0]]
+radius1 = [3]
+center2 = [[0], [1], [0]]
+radius2 = [1]
+domain = [1, 2, "1/4", 1]
+distances = ["1/4"]
+"#,
+    build: build_cone_envelope,
+};
+
+/// The cycle family `(center; radius)/denominator` of three parameters.
+fn cycle_family(
+    args: &OpArgs,
+    center: &'static str,
+    radius: &'static str,
+    den: &'static str,
+) -> Result<CycleFamily<Q>, OpError> {
+    let m = three_polys(args, center)?;
+    let r = poly_from_list(&args.opt_numbers(radius)?.unwrap_or_default())?;
+    let w = poly_from_list(&args.opt_numbers(den)?.unwrap_or_else(|| vec![Q::from(1)]))?;
+    CycleFamily::new([m[0].num.clone(), m[1].num.clone(), m[2].num.clone()], r, w)
+        .map_err(blame(den))
+}
+
+fn build_cone_envelope(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c1 = cycle_family(args, "center1", "radius1", "denominator1")?;
+    let c2 = cycle_family(args, "center2", "radius2", "denominator2")?;
+    let env = ConeFamilyEnvelope::new(c1, c2, None).map_err(blame("center2"))?;
+    let mut certs = prefixed("cone family: ", env.tangency_certificates());
+    certs.extend(prefixed("cone family: ", env.cone_certificates()));
+    surface_objects(args, &oriented(args, env.surface()), &domain(args)?, certs, "domain")
 }
 
 const PN_REVOLUTION: OpSpec = OpSpec {

@@ -101,6 +101,12 @@ pub enum PnError {
     /// construction was not found over Q (NOTES-004 §0 rationality caveat).
     #[error("no rational solution found: {0}")]
     NoRationalPoint(String),
+    /// A cycle curve whose chords or tangents are isotropic in the cyclographic model
+    /// (`|m₁ − m₂|² ≡ (r₁ − r₂)²`, or `|ṁ|² ≡ ṙ²` for a canal surface): the two cycles
+    /// touch each other in oriented contact for every `t`, and they span no real cone of
+    /// revolution (Peternell §3.3, (4.8): the isotropic circle `d′(t)` has radius 0).
+    #[error("isotropic cycle curve: {0}")]
+    IsotropicCycles(String),
     /// Data the modeling scheme of §4.4 cannot match.
     #[error("the modeling scheme cannot match the data: {0}")]
     ModelingData(String),

@@ -266,6 +266,11 @@ impl<F: Scalar> ConeFamilyEnvelope<F> {
                 "the two cycle families coincide: they span no cone".into(),
             ));
         }
+        if mm.is_zero() {
+            return Err(PnError::IsotropicCycles(
+                "|m₁ − m₂|² − (r₁ − r₂)² ≡ 0: the cycles c₁(t), c₂(t) are in oriented contact for every t, so their common tangent planes form no cone of revolution".into(),
+            ));
+        }
         let beta = &r + &m[2];
         let p = match p {
             Some(p) => {
@@ -596,6 +601,9 @@ impl<F: Scalar> CanalPn<F> {
             PnError::NoRationalPoint(m) => {
                 PnError::NoRationalPoint(m.replace("|m₁ − m₂|² − (r₁ − r₂)²", "|m′(t)|² − r′(t)²"))
             }
+            PnError::IsotropicCycles(_) => PnError::IsotropicCycles(
+                "|m′(t)|² − r′(t)² ≡ 0: every tangent of the cycle curve is isotropic (the spheres touch their neighbours), so the canal surface degenerates".into(),
+            ),
             e => e,
         })?;
         Ok(CanalPn { family, envelope })
