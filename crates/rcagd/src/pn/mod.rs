@@ -36,6 +36,7 @@
 //! orthogonal to both partial derivatives, the point on its tangent plane, and for offsets
 //! `x_d − x ≡ d n`; exact polynomial identities over `Rational`.
 
+pub mod developable;
 pub mod isotropic;
 pub mod modeling;
 pub mod offset;
