@@ -15,6 +15,7 @@ use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::{ParamKind, Value};
 use rcagd::laguerre::LaguerreMap;
+use rcagd::pn::developable::DevelopablePn;
 use rcagd::pn::modeling::{HermiteDatum, PnModel};
 use rcagd::pn::planar::{surface_of_revolution, PnCurve};
 use rcagd::pn::ruled::{CanalPn, ConeFamilyEnvelope, CycleFamily, EllipsoidPn, RuledPn};
@@ -36,6 +37,7 @@ pub const OPS: &[OpSpec] = &[
     PN_RULED,
     PN_CANAL,
     PN_CONE_ENVELOPE,
+    PN_DEVELOPABLE,
     PN_REVOLUTION,
     PN_ELLIPSOID,
     PN_LAGUERRE,
@@ -736,6 +738,57 @@ fn build_cone_envelope(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let mut certs = prefixed("cone family: ", env.tangency_certificates());
     certs.extend(prefixed("cone family: ", env.cone_certificates()));
     surface_objects(args, &oriented(args, env.surface()), &domain(args)?, certs, "domain")
+}
+
+const PN_DEVELOPABLE: OpSpec = OpSpec {
+    name: "pn_developable",
+    summary: "the developable PN surface enveloped by the planes Λ⁻¹(y(t)) of a rational curve y(t) of the isotropic model (Peternell Thm 4.3, developable case): x(t, v) = f(t) + v (P × Ṗ), rational unit normal constant along each ruling, exact offsets (planes e₀ ↦ e₀ − d)",
+    params: &[
+        ParamSpec::required(
+            "curve",
+            ParamKind::Grid,
+            "numerators of y(t) = (y₁, y₂, y₃): three rows of power coefficients in t",
+        ),
+        ParamSpec::with_default(
+            "denominator",
+            ParamKind::Numbers,
+            "[1]",
+            "power coefficients of the common denominator of y(t)",
+        ),
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[-1, 1, -1, 1]",
+            "parameter rectangle [t0, t1, v0, v1]: curve parameter t, ruling parameter v (away from the edge of regression)",
+        ),
+        OFFSET,
+        ORIENTATION,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_developable_cubic"
+op = "pn_developable"
+# the twisted cubic y = (t, t², t³/3) of the isotropic model
+curve = [[0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, "1/3"]]
+domain = ["1/2", 1, "1/4", 2]
+distances = ["1/4"]
+"#,
+    build: build_developable,
+};
+
+fn build_developable(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c = three_polys(args, "curve")?;
+    let den = poly_from_list(&args.opt_numbers("denominator")?.unwrap_or_else(|| vec![Q::from(1)]))?;
+    let y = [0, 1, 2].map(|i| RatFn::new(c[i].num.clone(), den.clone()));
+    let [y1, y2, y3] = y;
+    let y = [
+        y1.map_err(blame("denominator"))?,
+        y2.map_err(blame("denominator"))?,
+        y3.map_err(blame("denominator"))?,
+    ];
+    let dev = DevelopablePn::from_isotropic_curve(&y).map_err(blame("curve"))?;
+    let certs = prefixed("developable: ", dev.ruling_certificates());
+    surface_objects(args, &oriented(args, dev.surface()), &domain(args)?, certs, "domain")
 }
 
 const PN_REVOLUTION: OpSpec = OpSpec {

@@ -10,7 +10,9 @@
 //! **Parametrization** (docs/math/laguerre-pn.md#developable). With the planes written as
 //! `P₀ + P·x = 0` (polynomials in `t`), `Q = P × Ṗ` is the direction of the ruling, and the
 //! foot point `f` of the ruling (the point of `e ∩ ė` with `Q·f = 0`) is, by Cramer's rule,
-//! `f = −(P₀ (Ṗ × Q) + Ṗ₀ (Q × P))/|Q|²`. The surface is `x(t, v) = f(t) + v Q(t)`.
+//! `f = −(P₀ (Ṗ × Q) + Ṗ₀ (Q × P))/|Q|²`. The surface is `x(t, v) = f(t) + v Q(t)/|Q|²`
+//! (the ruling parameter scaled by `1/|Q|² > 0`, so that point and foot point share the
+//! denominator `|Q|²`).
 
 use super::poly::{cross3, dot3, identity_cert, RatFn};
 use super::surface::PnSurface;
@@ -83,9 +85,9 @@ impl<F: Scalar> DevelopablePn<F> {
             std::array::from_fn(|i| -(&(&planes[0] * &pdq[i]) + &(&p0d * &qp[i])));
         let point = [
             w.clone(),
-            &foot[0] + &(&(&v * &w) * &q[0]),
-            &foot[1] + &(&(&v * &w) * &q[1]),
-            &foot[2] + &(&(&v * &w) * &q[2]),
+            &foot[0] + &(&v * &q[0]),
+            &foot[1] + &(&v * &q[1]),
+            &foot[2] + &(&v * &q[2]),
         ];
         let surface = PnSurface::from_point_normal(point, normal)?
             .named("developable PN surface (Theorem 4.3, developable case)");

@@ -6,6 +6,7 @@
 //! degrees of Prop. 4.1 as the code finds them.
 
 use proptest::prelude::*;
+use rcagd::pn::developable::DevelopablePn;
 use rcagd::pn::ruled::{CanalPn, ConeFamilyEnvelope, CycleFamily};
 use rcagd::pn::{PnError, RatFn};
 use rcagd::Certified;
@@ -251,6 +252,38 @@ fn f64_envelope_of_random_integer_families() {
                 "{e} vs {}",
                 xf[i]
             );
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Random quadratic and cubic curves of the isotropic model: the developable PN surface
+    /// (Theorem 4.3, developable case) is certified exactly (n·n ≡ 1, n ⟂ x_t, x_v, x on
+    /// its plane and on the characteristic line e ∩ ė, ∂_v n ≡ 0), and so is its offset;
+    /// constant (y₁, y₂) is the named error.
+    #[test]
+    fn random_isotropic_curves_give_developable_pn_surfaces(
+        c in prop::collection::vec(rational(), 12),
+        d in rational(),
+    ) {
+        let y = [
+            RatFn::poly(tpoly(&c[0..4])),
+            RatFn::poly(tpoly(&c[4..8])),
+            RatFn::poly(tpoly(&c[8..12])),
+        ];
+        let constant = |p: &MPoly<Q>| p.total_degree().unwrap_or(0) == 0;
+        match DevelopablePn::from_isotropic_curve(&y) {
+            Ok(dev) => {
+                let certs = dev.certify();
+                prop_assert!(all_exact_hold(&certs), "{:?}", failing(&certs));
+                prop_assert!(all_exact_hold(&dev.surface().offset(d).certify()));
+            }
+            Err(PnError::Developable(_)) => {
+                prop_assert!(constant(&y[0].num) && constant(&y[1].num));
+            }
+            Err(e) => prop_assert!(false, "unexpected {e}"),
         }
     }
 }
