@@ -1,4 +1,4 @@
-//! PN-surface ops (`rcagd::pn`, `rcagd::laguerre`; seed 004 ch. 3–5): PN surfaces from a
+//! PN-surface ops (`rcagd::pn`, `rcagd::laguerre`; Peternell ch. 3–5): PN surfaces from a
 //! function of the isotropic model or from a support function, the §4.4 modeling scheme,
 //! PN ruled surfaces, canal surfaces, surfaces of revolution and ellipsoids, Laguerre
 //! images, planar PH curves from the isotropic model, anticaustics — each with its exact

@@ -1,8 +1,7 @@
-//! Envelopes of rational families of cones of revolution (seed 004 §4.5, Theorem 4.5,
-//! (4.5)–(4.19); NOTES-004 A4.4) and what the seed derives from them: non-developable
+//! Envelopes of rational families of cones of revolution (Peternell §4.5, Theorem 4.5,
+//! (4.5)–(4.19); docs/math/laguerre-pn.md) and what the seed derives from them: non-developable
 //! rational ruled surfaces and their offsets (Cor. 4.2), canal surfaces with rational spine
-//! and radius (Cor. 4.3), the ellipsoid and its offsets (Theorem 4.6, §4.7; NOTES-004
-//! A4.6), surfaces of revolution with a PH profile; and the offsets of ruled 2-manifolds
+//! and radius (Cor. 4.3), the ellipsoid and its offsets (Theorem 4.6, §4.7; docs/math/laguerre-pn.md), surfaces of revolution with a PH profile; and the offsets of ruled 2-manifolds
 //! in `Rⁿ` (Theorem 5.2, [`RuledManifold`]).
 //!
 //! **Theorem 4.5.** Two rational cycle families `c_i(t) = (m_i; r_i)(t)` span cones of
@@ -654,7 +653,7 @@ impl<F: Scalar> Certified for CanalPn<F> {
 /// the focal hyperbola, `c₁ = (m₁; 0)`, `c₂ = (m₂; b)`,
 /// `m₁ = (αγ(t⁴+1), 0, ac(t⁴+1) + 2b²t²)/(b(t⁴−1))`,
 /// `m₂ = (t²−1)/(b(t²+1))·(αγ, 0, ac − b²)`, and `p = β(ρ₁, ρ₂)`,
-/// `(ρ₁, ρ₂) = bt(μ(t²+1), (a−c)t)/(act² + b²)` (NOTES-004 A4.6), with `α = √(b²−c²)`,
+/// `(ρ₁, ρ₂) = bt(μ(t²+1), (a−c)t)/(act² + b²)` (docs/math/laguerre-pn.md), with `α = √(b²−c²)`,
 /// `γ = √(a²−b²)`, `μ = √(ac)`. The ellipsoid of revolution `a = b` needs only `μ`.
 /// In this frame the ellipsoid is, in plane coordinates,
 /// `e0² = K₁₁n₁² + b²n₂² + (a²c²/b²)n₃² + 2(αγac/b²)n₁n₃`,
@@ -805,7 +804,7 @@ impl<F: Scalar> Certified for EllipsoidPn<F> {
 
 /// How to obtain the rational unit normal of a ruled manifold (Theorem 5.2, Steps 1–2;
 /// the seed finds it with Prop. 5.1, a rational point on a conic family, which needs
-/// roots of polynomials in general — NOTES-004 §0).
+/// roots of polynomials in general — docs/math/laguerre-pn.md#conventions).
 #[derive(Debug, Clone)]
 pub enum NormalHint<F> {
     /// Search: a normal `z` linear in `u` (5.23)/(5.24) whose squared length is a square

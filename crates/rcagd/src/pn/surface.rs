@@ -1,6 +1,6 @@
 //! The PN surface type: point, rational unit normal, support function and cofactor as
 //! polynomials in `(u, v)`, with evaluation, Bézier export, certificates and regularity
-//! checks (seed 004 §4.1; NOTES-004 A4.1/A4.2).
+//! checks (Peternell §4.1; docs/math/laguerre-pn.md).
 
 use super::offset::PnOffset;
 use super::poly::{
@@ -15,14 +15,14 @@ use rcagd_algebra::mpoly::MPoly;
 use rcagd_algebra::{Certificate, Scalar};
 use rcagd_geom::BezierPatch;
 
-/// A PN surface (seed 004 §4.1): the rational point `x = (X₁, X₂, X₃)/W`, the rational
+/// A PN surface (Peternell §4.1): the rational point `x = (X₁, X₂, X₃)/W`, the rational
 /// unit normal `n = (N₁, N₂, N₃)/N₀` with `N₁² + N₂² + N₃² ≡ N₀²`, the support function
-/// `h` of the oriented tangent plane `h + n·x = 0` (NOTES-004 §0 convention), and the
+/// `h` of the oriented tangent plane `h + n·x = 0` (docs/math/laguerre-pn.md#conventions), and the
 /// cofactor `K` with `W = N₀ K`, all polynomials (or, for `h`, a rational function) in the
 /// parameters `(u, v)`.
 ///
 /// The offset at oriented distance `d` is `x_d = x + d n = (X + d K N)/W` with support
-/// function `h − d` ([`Self::offset`]; NOTES-004 §0, erratum E6).
+/// function `h − d` ([`Self::offset`]; docs/math/laguerre-pn.md#conventions, erratum E6).
 #[derive(Debug, Clone)]
 pub struct PnSurface<F> {
     point: [MPoly<F>; 4],
@@ -280,7 +280,7 @@ impl<F: Scalar> PnSurface<F> {
     }
 
     /// The offset at oriented distance `d`: `x + d n = (X + d K N)/W`, support `h − d`
-    /// (NOTES-004 §0; seed (4.2) with `h ↦ h − d`, erratum E6). The result has the same
+    /// (docs/math/laguerre-pn.md#conventions; seed (4.2) with `h ↦ h − d`, erratum E6). The result has the same
     /// weight `W`, normal and bidegree (up to the degree of `K N`).
     pub fn offset(&self, d: F) -> PnOffset<F> {
         PnOffset::new(self, d)
