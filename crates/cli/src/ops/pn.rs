@@ -737,7 +737,19 @@ fn build_cone_envelope(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let env = ConeFamilyEnvelope::new(c1, c2, None).map_err(blame("center2"))?;
     let mut certs = prefixed("cone family: ", env.tangency_certificates());
     certs.extend(prefixed("cone family: ", env.cone_certificates()));
-    surface_objects(args, &oriented(args, env.surface()), &domain(args)?, certs, "domain")
+    let mut objs =
+        surface_objects(args, &oriented(args, env.surface()), &domain(args)?, certs, "domain")?;
+    // each offset object: the offset touches the offset cycle families (m_i; r_i ± d)
+    let sign = if negative_orientation(args) { -Q::from(1) } else { Q::from(1) };
+    for (k, d) in distances(args)?.into_iter().enumerate() {
+        if let Some(o) = objs.get_mut(k + 1) {
+            o.certificates.extend(prefixed(
+                "cone family: ",
+                env.offset_tangency_certificates(&(d * sign.clone())),
+            ));
+        }
+    }
+    Ok(objs)
 }
 
 const PN_DEVELOPABLE: OpSpec = OpSpec {

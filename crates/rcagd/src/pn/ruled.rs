@@ -484,6 +484,34 @@ impl<F: Scalar> ConeFamilyEnvelope<F> {
     }
 }
 
+impl<F: Scalar> ConeFamilyEnvelope<F> {
+    /// The certificates that the offset at distance `d` is the envelope of the offset
+    /// cones: its tangent planes touch the cycle families `(m_i; r_i + d)` (offsets of
+    /// cycles, docs/math/laguerre-pn.md#conventions): `h_d + n·m_i + r_i + d ≡ 0`.
+    pub fn offset_tangency_certificates(&self, d: &F) -> Vec<Certificate> {
+        let off = self.surface.offset(d.clone());
+        let s = off.surface();
+        let h = s.support();
+        let n = s.normal_polys();
+        [(&self.c1, "c₁"), (&self.c2, "c₂")]
+            .into_iter()
+            .map(|(c, name)| {
+                let lhs = &(&h.num * &n[0]) * &c.den;
+                let r = &c.radius + &c.den.scale(d);
+                let rhs = -(&h.den * &(&dot3(&n[1..], &c.center) + &(&n[0] * &r)));
+                identity_cert(
+                    &format!(
+                        "the offset at distance {} touches the offset cycle family {name} + d: e0 + n·m + (r + d) ≡ 0",
+                        format_scalar(d)
+                    ),
+                    &lhs,
+                    &rhs,
+                )
+            })
+            .collect()
+    }
+}
+
 impl<F: Scalar> Certified for ConeFamilyEnvelope<F> {
     /// The PN identities, the tangency to both cycle families and the contact with every
     /// cone `Δ(t)` (Theorem 4.5).

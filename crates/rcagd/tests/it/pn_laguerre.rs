@@ -119,6 +119,7 @@ proptest! {
         prop_assert_eq!(env.cone_certificates().len(), 2);
         let off = env.surface().offset(d.clone());
         prop_assert!(all_exact_hold(&off.certify()));
+        prop_assert!(all_exact_hold(&env.offset_tangency_certificates(&d)));
     }
 }
 
