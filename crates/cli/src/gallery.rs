@@ -52,6 +52,10 @@ pub const RECIPES: &[(&str, &str)] = &[
         include_str!("../../../examples/recipes/pn.toml"),
     ),
     (
+        "examples/recipes/pn_laguerre.toml",
+        include_str!("../../../examples/recipes/pn_laguerre.toml"),
+    ),
+    (
         "examples/recipes/sphere_family.toml",
         include_str!("../../../examples/recipes/sphere_family.toml"),
     ),

@@ -1,27 +1,27 @@
 //! Sphere geometry models: the cyclographic (Laguerre) model `R^{3,1}` of oriented spheres
-//! (seed 003 §1.2, NOTES-000-003 item 003-3) and the Möbius model `Q ⊂ P⁴` (seed 004 §2.4,
-//! NOTES-004 A2.2).
+//! (Gruber 2008 §1.2) and the Möbius model `Q ⊂ P⁴` (Peternell §2.4,
+//! docs/math/laguerre-pn.md).
 //!
 //! **Cyclographic model.** An oriented sphere (cycle) with centre `m` and signed radius `r`
-//! (points are cycles of radius 0) is the point `(m, r) ∈ R⁴` (seed 003 (1.12)); `R⁴` carries
+//! (points are cycles of radius 0) is the point `(m, r) ∈ R⁴` (Gruber 2008 (1.12)); `R⁴` carries
 //! the Lorentz ("pseudo-euclidean") product `⟨a, b⟩_pe = a₁b₁ + a₂b₂ + a₃b₃ − a₄b₄`
 //! (1.15). Two cycles are in **oriented contact** iff their difference is isotropic:
 //! `⟨k₁ − k₂, k₁ − k₂⟩_pe = 0` (1.13) — the printed (1.16) `⟨k₁, k₂⟩_pe = 0` is wrong
 //! (erratum 003-E2). Oriented circles in the plane are the points of `R^{2,1}` in the same way.
-//! Orientation convention (NOTES-004 §0): the oriented plane `e₀ + n·x = 0` (`|n| = 1`)
+//! Orientation convention (docs/math/laguerre-pn.md#conventions): the oriented plane `e₀ + n·x = 0` (`|n| = 1`)
 //! touches the cycle `(m; r)` iff `e₀ + n·m + r = 0`, the contact point is `m + r n`; two
 //! touching cycles share the contact point `x = m₁ + r₁ν = m₂ + r₂ν` with the common unit
 //! normal `ν = (m₁ − m₂)/(r₂ − r₁)`.
 //!
 //! Vectors of `R^{3,1}` are *spacelike* (flachgängig, `⟨v,v⟩ > 0`), *lightlike* (isotrop) or
-//! *timelike* (steilgängig) (seed 003 §1.2.1). The cyclographic image of a point `F` along an
+//! *timelike* (steilgängig) (Gruber 2008 §1.2.1). The cyclographic image of a point `F` along an
 //! isotropic direction `w` is the point `F − (F₄/w₄)(w₁, w₂, w₃)` where the isotropic line
 //! meets `x₄ = 0` (003-3); the isotropic directions are `w(s,t) = (2s, 2t, 1 − s² − t²,
 //! 1 + s² + t²)` (the absolute quadric `Ω`). Lines of `R^{3,1}` map to cylinders of
 //! revolution (parallel to `x₄ = 0`), cones of revolution (spacelike), planes (lightlike) or
-//! nothing real (timelike) (seed 003 §1.2.2).
+//! nothing real (timelike) (Gruber 2008 §1.2.2).
 //!
-//! **Möbius model.** `Q: −x₀² + x₁² + x₂² + x₃² + x₄² = 0` (seed 004 (2.12)), north pole
+//! **Möbius model.** `Q: −x₀² + x₁² + x₂² + x₃² + x₄² = 0` (Peternell (2.12)), north pole
 //! `N = (1, 0, 0, 0, 1)`. A point `p ∉ Q` is the sphere with centre `pᵢ/(p₀ − p₄)` and
 //! squared radius `(p₁² + p₂² + p₃² + p₄² − p₀²)/(p₀ − p₄)²` (2.13, verified); for `p₀ = p₄` the
 //! plane `−p₀ + p₁y₁ + p₂y₂ + p₃y₃ = 0`; points of `Q` are the points
@@ -29,7 +29,7 @@
 //! is a pencil of spheres: elliptic (meets `Q` in two conjugate points: the spheres through a
 //! real circle), hyperbolic (two real points: two limit points) or parabolic (tangent).
 //! A curve `c(t)` has a real envelope (a canal surface) where its tangent lines do not meet
-//! `Q` in real points (seed 004 §2.4, Thm 2.3).
+//! `Q` in real points (Peternell §2.4, Thm 2.3).
 
 use crate::error::format_scalar;
 use crate::lines::{fmt_vec, is_small, scale_of};
@@ -62,7 +62,7 @@ pub enum CyclographicError {
     ZeroVector(String),
 }
 
-/// The Lorentz product `⟨a, b⟩_pe = a₁b₁ + a₂b₂ + a₃b₃ − a₄b₄` of `R^{3,1}` (seed 003 (1.15)).
+/// The Lorentz product `⟨a, b⟩_pe = a₁b₁ + a₂b₂ + a₃b₃ − a₄b₄` of `R^{3,1}` (Gruber 2008 (1.15)).
 pub fn lorentz<F: Scalar>(a: &[F; 4], b: &[F; 4]) -> F {
     a[0].clone() * b[0].clone() + a[1].clone() * b[1].clone() + a[2].clone() * b[2].clone()
         - a[3].clone() * b[3].clone()
@@ -73,7 +73,7 @@ pub fn lorentz3<F: Scalar>(a: &[F; 3], b: &[F; 3]) -> F {
     a[0].clone() * b[0].clone() + a[1].clone() * b[1].clone() - a[2].clone() * b[2].clone()
 }
 
-/// The causal type of a vector of `R^{3,1}` (seed 003 §1.2.1).
+/// The causal type of a vector of `R^{3,1}` (Gruber 2008 §1.2.1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum CausalType {
     /// `⟨v, v⟩_pe > 0` (flachgängig, "raumartig").
@@ -112,7 +112,7 @@ impl<F: Scalar> OrientedSphere<F> {
         OrientedSphere { center, radius }
     }
 
-    /// Its cyclographic preimage `(m₁, m₂, m₃, r) ∈ R^{3,1}` (seed 003 (1.12)).
+    /// Its cyclographic preimage `(m₁, m₂, m₃, r) ∈ R^{3,1}` (Gruber 2008 (1.12)).
     pub fn to_point(&self) -> [F; 4] {
         [
             self.center[0].clone(),
@@ -144,7 +144,7 @@ impl<F: Scalar> OrientedSphere<F> {
         crate::lines::dot(&d, &d) - self.radius.clone() * self.radius.clone()
     }
 
-    /// `⟨k₁ − k₂, k₁ − k₂⟩_pe` (zero iff in oriented contact; seed 003 (1.13), erratum 003-E2).
+    /// `⟨k₁ − k₂, k₁ − k₂⟩_pe` (zero iff in oriented contact; Gruber 2008 (1.13)).
     pub fn contact_residual(&self, other: &OrientedSphere<F>) -> F {
         let a = self.to_point();
         let b = other.to_point();
@@ -308,7 +308,7 @@ impl<F: Scalar> OrientedCircle<F> {
     }
 }
 
-/// An oriented plane `e₀ + n·x = 0` with a (rational) unit normal `n` (NOTES-004 §0).
+/// An oriented plane `e₀ + n·x = 0` with a (rational) unit normal `n` (docs/math/laguerre-pn.md#conventions).
 #[derive(Debug, Clone, PartialEq)]
 pub struct OrientedPlane<F> {
     /// The unit normal `n`.
@@ -380,12 +380,12 @@ pub fn isotropic_image<F: Scalar>(p: &[F; 4], w: &[F; 4]) -> Result<[F; 3], Cycl
 }
 
 /// The polar hyperplane `D p`, `D = diag(1, 1, 1, −1)`, of a point `p` of the ideal
-/// 3-space `ω` with respect to `Ω` (seed 003 (1.18)).
+/// 3-space `ω` with respect to `Ω` (Gruber 2008 (1.18)).
 pub fn polar_plane<F: Scalar>(p: &[F; 4]) -> [F; 4] {
     [p[0].clone(), p[1].clone(), p[2].clone(), -p[3].clone()]
 }
 
-/// The cyclographic image of a line `P + λd` of `R^{3,1}` (seed 003 §1.2.2).
+/// The cyclographic image of a line `P + λd` of `R^{3,1}` (Gruber 2008 §1.2.2).
 #[derive(Debug, Clone, PartialEq)]
 pub enum LineImage<F> {
     /// `d₄ = 0`: spheres of constant radius: a cylinder of revolution.
@@ -418,7 +418,7 @@ pub enum LineImage<F> {
     NotReal,
 }
 
-/// The cyclographic image of the line through `p` with direction `d` (seed 003 §1.2.2).
+/// The cyclographic image of the line through `p` with direction `d` (Gruber 2008 §1.2.2).
 ///
 /// # Errors
 /// [`CyclographicError::ZeroVector`] for `d = 0`.
@@ -463,10 +463,10 @@ pub fn line_image<F: Scalar>(p: &[F; 4], d: &[F; 4]) -> Result<LineImage<F>, Cyc
 }
 
 // ---------------------------------------------------------------------------------------
-// Möbius model (seed 004 §2.4)
+// Möbius model (Peternell §2.4)
 // ---------------------------------------------------------------------------------------
 
-/// `Q(x) = −x₀² + x₁² + x₂² + x₃² + x₄²` (seed 004 (2.12)).
+/// `Q(x) = −x₀² + x₁² + x₂² + x₃² + x₄²` (Peternell (2.12)).
 pub fn mobius_form<F: Scalar>(x: &[F; 5]) -> F {
     mobius_bilinear(x, x)
 }
@@ -478,7 +478,7 @@ pub fn mobius_bilinear<F: Scalar>(x: &[F; 5], y: &[F; 5]) -> F {
     })
 }
 
-/// What a point of `P⁴` represents in the standard model (seed 004 §2.4, (2.13)).
+/// What a point of `P⁴` represents in the standard model (Peternell §2.4, (2.13)).
 #[derive(Debug, Clone, PartialEq)]
 pub enum MobiusImage<F> {
     /// A sphere (`p ∉ Q`, `p₀ ≠ p₄`): centre and squared radius (negative: imaginary sphere).
@@ -496,7 +496,7 @@ pub enum MobiusImage<F> {
     Infinity,
 }
 
-/// The sphere, plane or point `μ(p)` of a point of `P⁴` (seed 004 (2.13)).
+/// The sphere, plane or point `μ(p)` of a point of `P⁴` (Peternell (2.13)).
 ///
 /// # Errors
 /// [`CyclographicError::ZeroVector`] for `p = 0`.
@@ -552,7 +552,7 @@ pub fn mobius_plane_point<F: Scalar>(normal: &[F; 3], h: &F) -> [F; 5] {
     ]
 }
 
-/// The type of the pencil of spheres of a line of `P⁴` (seed 004 §2.4, cases 1–3).
+/// The type of the pencil of spheres of a line of `P⁴` (Peternell §2.4, cases 1–3).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum PencilType {
     /// The line meets `Q` in two conjugate complex points: the spheres through a real
@@ -582,7 +582,7 @@ pub fn pencil_type<F: Scalar>(p: &[F; 5], q: &[F; 5]) -> PencilType {
 
 /// The Möbius reflection with centre `z ∉ Q` (an automorphic collineation of `Q`):
 /// `x ↦ x − 2 B(x, z)/Q(z) · z`. For `z` the point of a sphere `S` it is the inversion in `S`
-/// (a reflection for a plane), acting on points, spheres and planes alike (seed 004 §2.4).
+/// (a reflection for a plane), acting on points, spheres and planes alike (Peternell §2.4).
 ///
 /// # Errors
 /// [`CyclographicError::ZeroVector`] if `z ∈ Q` (no reflection).

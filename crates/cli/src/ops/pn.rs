@@ -1,4 +1,4 @@
-//! PN-surface ops (`rcagd::pn`, `rcagd::laguerre`; seed 004 ch. 3–5): PN surfaces from a
+//! PN-surface ops (`rcagd::pn`, `rcagd::laguerre`; Peternell ch. 3–5): PN surfaces from a
 //! function of the isotropic model or from a support function, the §4.4 modeling scheme,
 //! PN ruled surfaces, canal surfaces, surfaces of revolution and ellipsoids, Laguerre
 //! images, planar PH curves from the isotropic model, anticaustics — each with its exact
@@ -13,11 +13,12 @@
 
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
-use crate::value::ParamKind;
+use crate::value::{ParamKind, Value};
 use rcagd::laguerre::LaguerreMap;
+use rcagd::pn::developable::DevelopablePn;
 use rcagd::pn::modeling::{HermiteDatum, PnModel};
 use rcagd::pn::planar::{surface_of_revolution, PnCurve};
-use rcagd::pn::ruled::{CanalPn, CycleFamily, EllipsoidPn, RuledPn};
+use rcagd::pn::ruled::{CanalPn, ConeFamilyEnvelope, CycleFamily, EllipsoidPn, RuledPn};
 use rcagd::pn::support::{anticaustic, anticaustic_certificates, from_support_function};
 use rcagd::pn::{Domain, IsotropicSurface, PnError, PnSurface, RatFn};
 use rcagd::Certified;
@@ -35,6 +36,8 @@ pub const OPS: &[OpSpec] = &[
     PN_LOFT,
     PN_RULED,
     PN_CANAL,
+    PN_CONE_ENVELOPE,
+    PN_DEVELOPABLE,
     PN_REVOLUTION,
     PN_ELLIPSOID,
     PN_LAGUERRE,
@@ -56,6 +59,12 @@ const DISTANCES: ParamSpec = ParamSpec::optional(
     "distances",
     ParamKind::Numbers,
     "oriented offset distances d (x + d n); one extra object `<name>_offset<k>` per distance",
+);
+const ORIENTATION: ParamSpec = ParamSpec::with_default(
+    "orientation",
+    ParamKind::Choice(&["positive", "negative"]),
+    "\"positive\"",
+    "orientation of the exported surface: \"negative\" keeps the points and flips the unit normal n ↦ −n (support h ↦ −h), so an offset at distance d lies on the other side",
 );
 const OFFSET: ParamSpec = ParamSpec::optional(
     "offset",
@@ -207,6 +216,21 @@ fn main_offset(args: &OpArgs) -> Result<Option<Q>, OpError> {
     Ok(args.opt_number("offset")?.filter(|d| !d.is_zero()))
 }
 
+/// `true` if the `orientation` parameter asks for the opposite orientation (read as the
+/// canal ops read it; absent means positive).
+fn negative_orientation(args: &OpArgs) -> bool {
+    matches!(args.get("orientation"), Some(Value::Str(s)) if s == "negative")
+}
+
+/// `surface` with the orientation the `orientation` parameter asks for.
+fn oriented(args: &OpArgs, surface: &PnSurface<Q>) -> PnSurface<Q> {
+    if negative_orientation(args) {
+        surface.opposite()
+    } else {
+        surface.clone()
+    }
+}
+
 fn offset_object(
     args: &OpArgs,
     k: usize,
@@ -238,7 +262,7 @@ fn offset_object(
 const PN_GRAPH: OpSpec = OpSpec {
     name: "pn_graph",
     summary: "the PN surface Λ⁻¹ of the graph y₃ = F(u, v) of the isotropic model (Peternell Thm 4.3/4.4, closed formula), with exact offsets (F ↦ F − (d/2)(u² + v² + 1))",
-    params: &[COEFFICIENTS, DENOMINATOR, DOMAIN, OFFSET, DISTANCES],
+    params: &[COEFFICIENTS, DENOMINATOR, DOMAIN, OFFSET, ORIENTATION, DISTANCES],
     example: r#"[[object]]
 name = "pn_cubic_graph"
 op = "pn_graph"
@@ -255,7 +279,7 @@ fn build_graph(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let surface = IsotropicSurface::graph(&f)
         .to_pn_surface()
         .map_err(blame("coefficients"))?;
-    surface_objects(args, &surface, &domain(args)?, Vec::new(), "coefficients")
+    surface_objects(args, &oriented(args, &surface), &domain(args)?, Vec::new(), "coefficients")
 }
 
 // ---------------------------------------------------------------------------------
@@ -281,7 +305,7 @@ const PN_SUPPORT: OpSpec = OpSpec {
         ParamSpec::optional("c", ParamKind::Grid, "polynomial c(u, v) (default 1)"),
         DOMAIN,
         OFFSET,
-        DISTANCES,
+        ORIENTATION, DISTANCES,
     ],
     example: r#"[[object]]
 name = "pn_from_support"
@@ -307,7 +331,7 @@ fn build_support(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let b = opt_poly(args, "b", MPoly::var(2, 1))?;
     let c = opt_poly(args, "c", MPoly::constant(2, Q::from(1)))?;
     let surface = from_support_function(a, b, c, &h).map_err(blame("c"))?;
-    surface_objects(args, &surface, &domain(args)?, Vec::new(), "support")
+    surface_objects(args, &oriented(args, &surface), &domain(args)?, Vec::new(), "support")
 }
 
 // ---------------------------------------------------------------------------------
@@ -569,7 +593,7 @@ const PN_RULED: OpSpec = OpSpec {
         ),
         DOMAIN,
         OFFSET,
-        DISTANCES,
+        ORIENTATION, DISTANCES,
     ],
     example: r#"[[object]]
 name = "pn_hyperbolic_paraboloid"
@@ -590,7 +614,7 @@ fn build_ruled(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     // every point on its ruling, tangent planes through both point families (l; 0), (l + g; 0)
     let mut certs = prefixed("ruled: ", ruled.on_ruling_certificates());
     certs.extend(prefixed("ruled: ", ruled.envelope().tangency_certificates()));
-    surface_objects(args, ruled.surface(), &domain(args)?, certs, "domain")
+    surface_objects(args, &oriented(args, ruled.surface()), &domain(args)?, certs, "domain")
 }
 
 const PN_CANAL: OpSpec = OpSpec {
@@ -609,7 +633,7 @@ const PN_CANAL: OpSpec = OpSpec {
         ),
         DOMAIN,
         OFFSET,
-        DISTANCES,
+        ORIENTATION, DISTANCES,
     ],
     example: r#"[[object]]
 name = "pn_pipe"
@@ -626,12 +650,157 @@ distances = ["1/4"]
 fn build_canal(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let m = three_polys(args, "spine")?;
     let r = poly_from_list(&args.opt_numbers("radius")?.unwrap_or_default())?;
+    // the negative orientation envelopes the oriented family (m; −r), as the canal ops do
+    let r = if negative_orientation(args) { -r } else { r };
     let one = MPoly::constant(2, Q::from(1));
     let fam = CycleFamily::new([m[0].num.clone(), m[1].num.clone(), m[2].num.clone()], r, one)
         .map_err(blame("spine"))?;
     let canal = CanalPn::new(fam, None).map_err(blame("radius"))?;
     let certs = prefixed("canal: ", canal.on_spheres_certificates());
     surface_objects(args, canal.surface(), &domain(args)?, certs, "domain")
+}
+
+const PN_CONE_ENVELOPE: OpSpec = OpSpec {
+    name: "pn_cone_envelope",
+    summary: "the envelope of the cones of revolution spanned by two rational cycle curves (m₁; r₁)(t), (m₂; r₂)(t) (Peternell Thm 4.5) as a PN surface in (t, u), with exact offsets (r_i ↦ r_i + d); needs |m₁ − m₂|² − (r₁ − r₂)² to be a sum of two squares over Q(t)",
+    params: &[
+        ParamSpec::required(
+            "center1",
+            ParamKind::Grid,
+            "numerator of m₁(t): three rows (x, y, z) of power coefficients in t",
+        ),
+        ParamSpec::with_default(
+            "radius1",
+            ParamKind::Numbers,
+            "[0]",
+            "power coefficients of the numerator of the signed radius r₁(t)",
+        ),
+        ParamSpec::with_default(
+            "denominator1",
+            ParamKind::Numbers,
+            "[1]",
+            "power coefficients of the common denominator w₁(t) of m₁ and r₁",
+        ),
+        ParamSpec::required(
+            "center2",
+            ParamKind::Grid,
+            "numerator of m₂(t): three rows (x, y, z) of power coefficients in t",
+        ),
+        ParamSpec::with_default(
+            "radius2",
+            ParamKind::Numbers,
+            "[0]",
+            "power coefficients of the numerator of the signed radius r₂(t)",
+        ),
+        ParamSpec::with_default(
+            "denominator2",
+            ParamKind::Numbers,
+            "[1]",
+            "power coefficients of the common denominator w₂(t) of m₂ and r₂",
+        ),
+        DOMAIN,
+        OFFSET,
+        ORIENTATION,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_cone_envelope"
+op = "pn_cone_envelope"
+# c₁ = ((2t, t², 2); 3), c₂ = ((0, 1, 0); 1): |M|² − R² = (t² + 1)²
+center1 = [[0, 2, 0], [0, 0, 1], [2, 0, 0]]
+radius1 = [3]
+center2 = [[0], [1], [0]]
+radius2 = [1]
+domain = [1, 2, "1/4", 1]
+distances = ["1/4"]
+"#,
+    build: build_cone_envelope,
+};
+
+/// The cycle family `(center; radius)/denominator` of three parameters.
+fn cycle_family(
+    args: &OpArgs,
+    center: &'static str,
+    radius: &'static str,
+    den: &'static str,
+) -> Result<CycleFamily<Q>, OpError> {
+    let m = three_polys(args, center)?;
+    let r = poly_from_list(&args.opt_numbers(radius)?.unwrap_or_default())?;
+    let w = poly_from_list(&args.opt_numbers(den)?.unwrap_or_else(|| vec![Q::from(1)]))?;
+    CycleFamily::new([m[0].num.clone(), m[1].num.clone(), m[2].num.clone()], r, w)
+        .map_err(blame(den))
+}
+
+fn build_cone_envelope(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c1 = cycle_family(args, "center1", "radius1", "denominator1")?;
+    let c2 = cycle_family(args, "center2", "radius2", "denominator2")?;
+    let env = ConeFamilyEnvelope::new(c1, c2, None).map_err(blame("center2"))?;
+    let mut certs = prefixed("cone family: ", env.tangency_certificates());
+    certs.extend(prefixed("cone family: ", env.cone_certificates()));
+    let mut objs =
+        surface_objects(args, &oriented(args, env.surface()), &domain(args)?, certs, "domain")?;
+    // each offset object: the offset touches the offset cycle families (m_i; r_i ± d)
+    let sign = if negative_orientation(args) { -Q::from(1) } else { Q::from(1) };
+    for (k, d) in distances(args)?.into_iter().enumerate() {
+        if let Some(o) = objs.get_mut(k + 1) {
+            o.certificates.extend(prefixed(
+                "cone family: ",
+                env.offset_tangency_certificates(&(d * sign.clone())),
+            ));
+        }
+    }
+    Ok(objs)
+}
+
+const PN_DEVELOPABLE: OpSpec = OpSpec {
+    name: "pn_developable",
+    summary: "the developable PN surface enveloped by the planes Λ⁻¹(y(t)) of a rational curve y(t) of the isotropic model (Peternell Thm 4.3, developable case): x(t, v) = f(t) + v (P × Ṗ), rational unit normal constant along each ruling, exact offsets (planes e₀ ↦ e₀ − d)",
+    params: &[
+        ParamSpec::required(
+            "curve",
+            ParamKind::Grid,
+            "numerators of y(t) = (y₁, y₂, y₃): three rows of power coefficients in t",
+        ),
+        ParamSpec::with_default(
+            "denominator",
+            ParamKind::Numbers,
+            "[1]",
+            "power coefficients of the common denominator of y(t)",
+        ),
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[-1, 1, -1, 1]",
+            "parameter rectangle [t0, t1, v0, v1]: curve parameter t, ruling parameter v (away from the edge of regression)",
+        ),
+        OFFSET,
+        ORIENTATION,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_developable_cubic"
+op = "pn_developable"
+# the twisted cubic y = (t, t², t³/3) of the isotropic model
+curve = [[0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, "1/3"]]
+domain = ["1/2", 1, "1/4", 2]
+distances = ["1/4"]
+"#,
+    build: build_developable,
+};
+
+fn build_developable(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c = three_polys(args, "curve")?;
+    let den = poly_from_list(&args.opt_numbers("denominator")?.unwrap_or_else(|| vec![Q::from(1)]))?;
+    let y = [0, 1, 2].map(|i| RatFn::new(c[i].num.clone(), den.clone()));
+    let [y1, y2, y3] = y;
+    let y = [
+        y1.map_err(blame("denominator"))?,
+        y2.map_err(blame("denominator"))?,
+        y3.map_err(blame("denominator"))?,
+    ];
+    let dev = DevelopablePn::from_isotropic_curve(&y).map_err(blame("curve"))?;
+    let certs = prefixed("developable: ", dev.ruling_certificates());
+    surface_objects(args, &oriented(args, dev.surface()), &domain(args)?, certs, "domain")
 }
 
 const PN_REVOLUTION: OpSpec = OpSpec {
@@ -661,7 +830,7 @@ const PN_REVOLUTION: OpSpec = OpSpec {
             "rectangle [t0, t1, s0, s1]: profile parameter t, rotation parameter s (angle 2 atan s)",
         ),
         OFFSET,
-        DISTANCES,
+        ORIENTATION, DISTANCES,
     ],
     example: r#"[[object]]
 name = "pn_revolution_ph_cubic"
@@ -683,7 +852,7 @@ fn build_revolution(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let profile = PnCurve::from_ph_preimage(&u, &v, start).map_err(blame("v"))?;
     let surface = surface_of_revolution(&profile).map_err(blame("u"))?;
     let certs = prefixed("profile: ", profile.certify());
-    surface_objects(args, &surface, &domain(args)?, certs, "domain")
+    surface_objects(args, &oriented(args, &surface), &domain(args)?, certs, "domain")
 }
 
 const PN_ELLIPSOID: OpSpec = OpSpec {
@@ -704,7 +873,7 @@ const PN_ELLIPSOID: OpSpec = OpSpec {
             "parameter rectangle [t0, t1, u0, u1] (t = ±1 are poles)",
         ),
         OFFSET,
-        DISTANCES,
+        ORIENTATION, DISTANCES,
     ],
     example: r#"[[object]]
 name = "pn_ellipsoid_4_7"
@@ -722,22 +891,23 @@ distances = [1]
 fn build_ellipsoid(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let ell = EllipsoidPn::new(args.number("a")?, args.number("b")?, args.number("c")?)
         .map_err(blame("c"))?;
-    let mut objs = surface_objects(args, ell.surface(), &domain(args)?, Vec::new(), "domain")?;
+    let surface = oriented(args, ell.surface());
+    let mut objs = surface_objects(args, &surface, &domain(args)?, Vec::new(), "domain")?;
     // the dual quadric identity e0² = nᵀK*n for the base and every offset (with h − d)
     if let Some(first) = objs.first_mut() {
         first
             .certificates
-            .push(ell.dual_quadric_certificate(ell.surface()));
+            .push(ell.dual_quadric_certificate(&surface));
     }
     if let (Some(d), Some(first)) = (main_offset(args)?, objs.first_mut()) {
-        let off = ell.surface().offset(d);
+        let off = surface.offset(d);
         first
             .certificates
             .push(ell.dual_quadric_certificate(off.surface()));
     }
     for (k, d) in distances(args)?.into_iter().enumerate() {
         if let Some(o) = objs.get_mut(k + 1) {
-            let off = ell.surface().offset(d);
+            let off = surface.offset(d);
             o.certificates
                 .push(ell.dual_quadric_certificate(off.surface()));
         }
@@ -782,7 +952,7 @@ const PN_LAGUERRE: OpSpec = OpSpec {
         ),
         DOMAIN,
         OFFSET,
-        DISTANCES,
+        ORIENTATION, DISTANCES,
     ],
     example: r#"[[object]]
 name = "pn_boosted_cyclide"
@@ -817,7 +987,7 @@ fn build_laguerre(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         .compose(&LaguerreMap::dilatation(args.number("dilatation")?));
     let image = base.laguerre_image(&map).map_err(blame("boost"))?;
     let certs = prefixed("Laguerre map: ", map.certify());
-    surface_objects(args, &image, &domain(args)?, certs, "domain")
+    surface_objects(args, &oriented(args, &image), &domain(args)?, certs, "domain")
 }
 
 // ---------------------------------------------------------------------------------
@@ -841,7 +1011,7 @@ const PN_ANTICAUSTIC: OpSpec = OpSpec {
         ),
         DOMAIN,
         OFFSET,
-        DISTANCES,
+        ORIENTATION, DISTANCES,
     ],
     example: r#"[[object]]
 name = "pn_anticaustic_cubic_mirror"
@@ -866,7 +1036,7 @@ fn build_anticaustic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let c = args.number("level")?;
     let surface = anticaustic(&mirror, &c).map_err(blame("mirror"))?;
     let certs = prefixed("anticaustic: ", anticaustic_certificates(&mirror, &surface));
-    surface_objects(args, &surface, &domain(args)?, certs, "mirror")
+    surface_objects(args, &oriented(args, &surface), &domain(args)?, certs, "mirror")
 }
 
 // ---------------------------------------------------------------------------------
@@ -894,7 +1064,7 @@ const PN_PLANAR: OpSpec = OpSpec {
             "parameter interval [t0, t1], t0 < t1",
         ),
         OFFSET,
-        DISTANCES,
+        ORIENTATION, DISTANCES,
     ],
     example: r#"[[object]]
 name = "pn_planar_ph"
@@ -918,6 +1088,11 @@ fn build_planar(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let [t0, t1]: [Q; 2] = <[Q; 2]>::try_from(iv)
         .map_err(|_| OpError::param("interval", "give two numbers [t0, t1]"))?;
     let curve = PnCurve::from_graph(&f).map_err(blame("function"))?;
+    let curve = if negative_orientation(args) {
+        curve.opposite()
+    } else {
+        curve
+    };
     let mut certs = curve.certify();
     certs.push(curve.check_regular(&t0, &t1).map_err(blame("interval"))?);
     let bez = match main_offset(args)? {
@@ -991,6 +1166,75 @@ mod tests {
         let e = run(&PN_GRAPH, bad).expect_err("d = 1 degenerates");
         assert_eq!(e.param, Some("distances"));
         assert!(e.message.contains("(0, 0)"), "{}", e.message);
+    }
+
+    /// `orientation = "negative"` flips the unit normal: the exported surface is the same,
+    /// its offset at d is the positive orientation's offset at −d (and not at +d). For
+    /// the pipe of radius 1/2 around the parabola (t, t², 0), the offsets at d = 1/4 have radius 3/4
+    /// (positive) and 1/4 (negative: the family (m; −r)).
+    #[test]
+    fn negative_orientation_flips_the_normal() {
+        let str_val = |s: &str| Value::Str(s.to_string());
+        let ruled = |orient: &str, d: (i64, i64)| {
+            run(
+                &PN_RULED,
+                vec![
+                    ("directrix", grid(&[&[0, 1], &[0, 0], &[0, 0]])),
+                    ("ruling", grid(&[&[0, 0], &[1, 0], &[0, 1]])),
+                    ("domain", nums(&[(1, 4), (1, 1), (1, 4), (1, 1)])),
+                    ("distances", nums(&[d])),
+                    ("orientation", str_val(orient)),
+                ],
+            )
+            .expect("ruled")
+        };
+        let pos = ruled("positive", (1, 4));
+        let neg = ruled("negative", (-1, 4));
+        assert!(pos.iter().chain(&neg).all(|o| o.certificates.iter().all(|c| c.holds)));
+        assert_eq!(pos[0].geometry, neg[0].geometry);
+        assert_eq!(pos[1].geometry, neg[1].geometry);
+        assert_ne!(pos[1].geometry, ruled("negative", (1, 4))[1].geometry);
+        // the isotropic graph: same for pn_graph
+        let graph = |orient: &str, d: (i64, i64)| {
+            run(
+                &PN_GRAPH,
+                vec![
+                    ("coefficients", grid(&[&[1, 0, 1], &[0, -1, 0], &[2, 0, 0]])),
+                    ("domain", nums(&[(0, 1), (1, 2), (0, 1), (1, 2)])),
+                    ("distances", nums(&[d])),
+                    ("orientation", str_val(orient)),
+                ],
+            )
+            .expect("graph")
+        };
+        assert_eq!(graph("negative", (1, 3))[1].geometry, graph("positive", (-1, 3))[1].geometry);
+        assert_ne!(graph("negative", (1, 3))[1].geometry, graph("positive", (1, 3))[1].geometry);
+        // the pipe: the offset radius is |r ± d|
+        let pipe = |orient: &str| {
+            let objs = run(
+                &PN_CANAL,
+                vec![
+                    ("spine", grid(&[&[0, 1, 0], &[0, 0, 1], &[0, 0, 0]])),
+                    ("radius", nums(&[(1, 2)])),
+                    ("domain", nums(&[(1, 4), (1, 1), (1, 4), (3, 4)])),
+                    ("distances", nums(&[(1, 4)])),
+                    ("orientation", str_val(orient)),
+                ],
+            )
+            .expect("pipe");
+            assert!(objs.iter().all(|o| o.certificates.iter().all(|c| c.holds)));
+            let Geometry::Patch(p) = &objs[1].geometry else {
+                panic!("a patch")
+            };
+            let x = p.eval(&q(1, 9), &q(2, 7)).expect("point");
+            // local 1/9 is the family parameter t = 1/4 + (3/4)/9 = 1/3: spine point m = (1/3, 1/9, 0)
+            let m = [q(1, 3), q(1, 9), q(0, 1)];
+            (0..3)
+                .map(|k| (x[k].clone() - m[k].clone()) * (x[k].clone() - m[k].clone()))
+                .fold(q(0, 1), |a, b| a + b)
+        };
+        assert_eq!(pipe("positive"), q(9, 16));
+        assert_eq!(pipe("negative"), q(1, 16));
     }
 
     /// The planar analogue: F = t² is the circle of radius −1; the offset at d = 1 has a

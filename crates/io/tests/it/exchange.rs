@@ -223,7 +223,7 @@ END-ISO-10303-21;
 fn iges_snapshot_of_a_quarter_circle() {
     let text = iges_text(&[quarter_object()]);
     let want = "\
-rcagd exact rational geometry (IGES 5.3): 1 objects, entities 126/128   S      1
+rcagd exact rational geometry (IGES 5.3): 1 object(s), entities 126/128 S      1
 1H,,1H;,9Hrcagd.igs,9Hrcagd.igs,11Hrcagd 0.1.0,14Hrcagd-io 0.1.0,32,38, G      1
 6,308,15,9Hrcagd.igs,1.,2,2HMM,1,0.01,15H20240101.000000,1.E-07,1.,     G      2
 5Hrcagd,5Hrcagd,11,0,15H20240101.000000,;                               G      3

@@ -1,5 +1,5 @@
-//! Euclidean Laguerre geometry (seed 004, Peternell, ch. 3; corrected formulas in
-//! `NOTES-004` §0 and A3.1–A3.2): oriented planes and cycles (oriented spheres, points as
+//! Euclidean Laguerre geometry (Peternell, ch. 3; corrected formulas in
+//! docs/math/laguerre-pn.md): oriented planes and cycles (oriented spheres, points as
 //! cycles of radius 0), their oriented contact, the cyclographic, Blaschke, isotropic and
 //! dual isotropic models with the maps between them, and Laguerre transformations —
 //! offsetting among them, as the dilatation `r ↦ r + d`.
@@ -11,7 +11,7 @@
 //!   oriented planes and points of the isotropic model; dilatations (offsets),
 //!   translations, rotations, similarities and Lorentz boosts.
 //!
-//! **Conventions (NOTES-004 §0).** An oriented plane is `e = (e0, n)`, `|n| = 1`, with
+//! **Conventions (docs/math/laguerre-pn.md#conventions).** An oriented plane is `e = (e0, n)`, `|n| = 1`, with
 //! point set `e0 + n·x = 0`; a cycle `(m; r)` has signed radius `r`. Oriented contact is
 //! `e0 + n·m + r = 0` (3.3) with contact point `m + r n`. The offset `x ↦ x + d n` is
 //! `e0 ↦ e0 − d`, i.e. `r ↦ r + d`; the seed's `e0 ↦ e0 + d` ((3.15), (4.2), (5.4)) is

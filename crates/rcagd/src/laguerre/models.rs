@@ -1,5 +1,5 @@
-//! The models of Euclidean Laguerre geometry and the maps between them (seed 004 §3.1–§3.5,
-//! NOTES-004 §0 and A3.1–A3.2; every formula below was re-derived and is checked by the
+//! The models of Euclidean Laguerre geometry and the maps between them (Peternell §3.1–§3.5,
+//! docs/math/laguerre-pn.md#conventions; every formula below was re-derived and is checked by the
 //! unit tests and `tests/seed004_pn_examples.rs`).
 //!
 //! | object | standard model | cyclographic `R⁴` (3.5)/(3.6) | Blaschke cylinder (3.10) | isotropic `I³` (3.11)/(3.12) |
@@ -47,7 +47,7 @@ pub fn lorentz_product<F: Scalar>(a: &[F; 4], b: &[F; 4]) -> F {
         - a[3].clone() * b[3].clone()
 }
 
-/// An oriented plane `e0 + n·x = 0` with unit normal `n` (seed (3.1); NOTES-004 §0).
+/// An oriented plane `e0 + n·x = 0` with unit normal `n` (seed (3.1); docs/math/laguerre-pn.md#conventions).
 #[derive(Debug, Clone, PartialEq)]
 pub struct OrientedPlane<F> {
     /// The coefficient `e0` (minus the signed distance of the origin along `n`).
@@ -105,7 +105,7 @@ impl<F: Scalar> OrientedPlane<F> {
     }
 
     /// The one-sided offset at oriented distance `d`, `x ↦ x + d n`: `e0 ↦ e0 − d`
-    /// (NOTES-004 §0; the seed's `e0 ↦ e0 + d` in (3.15)/(4.2) is the offset by `−d`,
+    /// (docs/math/laguerre-pn.md#conventions; the seed's `e0 ↦ e0 + d` in (3.15)/(4.2) is the offset by `−d`,
     /// erratum E6).
     pub fn offset(&self, d: &F) -> Self {
         OrientedPlane {
@@ -330,7 +330,7 @@ impl<F: Scalar> Cycle<F> {
         is_negligible(&self.contact_residual(plane), scale)
     }
 
-    /// The point of contact `m + r n` of a plane in oriented contact (NOTES-004 §0).
+    /// The point of contact `m + r n` of a plane in oriented contact (docs/math/laguerre-pn.md#conventions).
     ///
     /// # Errors
     /// [`LaguerreError::NotInContact`] unless `e0 + n·m + r = 0`.

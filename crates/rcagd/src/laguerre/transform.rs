@@ -1,4 +1,4 @@
-//! Laguerre transformations (seed 004 §3.2 (3.8)/(3.9), §3.4 (3.14)/(3.15), §4.3 Thm 4.2).
+//! Laguerre transformations (Peternell §3.2 (3.8)/(3.9), §3.4 (3.14)/(3.15), §4.3 Thm 4.2).
 //!
 //! In the cyclographic model `R⁴` a Laguerre transformation is a pe similarity
 //! `x ↦ a + λ A x` with `AᵀEA = E`, `E = diag(1, 1, 1, −1)`, `λ ≠ 0` (3.8)/(3.9). It maps
@@ -8,7 +8,7 @@
 //! `ε_v' = ε_v B`, `ε₀' = ε₀ − ε_v B a`, `B = A⁻¹/λ = E Aᵀ E/λ` ([`LaguerreMap::hyperplane_matrix`]).
 //!
 //! Special maps: the **dilatation** `r ↦ r + d` (3.4), `a = (0,0,0,d)`, which is the
-//! offset at distance `d` (`e0 ↦ e0 − d`, NOTES-004 §0 / erratum E6); translations,
+//! offset at distance `d` (`e0 ↦ e0 − d`, docs/math/laguerre-pn.md#conventions); translations,
 //! rotations and central similarities (`A = diag(R, 1)`); Lorentz boosts (rational
 //! `cosh = (1+s²)/(1−s²)`, `sinh = 2s/(1−s²)`).
 //!
@@ -126,7 +126,7 @@ impl<F: Scalar> LaguerreMap<F> {
 
     /// The dilatation `(m; r) ↦ (m; r + d)` (3.4): on every surface (as a set of oriented
     /// tangent planes) the one-sided offset `x + d n`; on planes `e0 ↦ e0 − d`
-    /// (NOTES-004 §0, erratum E6).
+    /// (docs/math/laguerre-pn.md#conventions, erratum E6).
     pub fn dilatation(d: F) -> Self {
         LaguerreMap {
             shift: [F::zero(), F::zero(), F::zero(), d],

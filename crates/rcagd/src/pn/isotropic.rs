@@ -1,5 +1,5 @@
-//! PN surfaces from the isotropic model `I³` (seed 004 §4.3, Theorems 4.3/4.4, (4.4), §4.4;
-//! NOTES-004 A4.1/A4.2).
+//! PN surfaces from the isotropic model `I³` (Peternell §4.3, Theorems 4.3/4.4, (4.4), §4.4;
+//! docs/math/laguerre-pn.md).
 //!
 //! A point `y` of `I³` is the oriented plane `Λ⁻¹(y) = (2y₃, 2y₁, 2y₂, S − 1)/(S + 1)`
 //! (3.13), `S = y₁² + y₂²`. A rational surface `y(u, v)` of `I³` is therefore a rational
@@ -7,7 +7,7 @@
 //! `n = (2y₁, 2y₂, S − 1)/(S + 1)`; its envelope is a PN surface (Theorem 4.3), and every
 //! PN surface arises this way.
 //!
-//! **Closed formula.** For a graph `y₃ = F(u, v)` (NOTES-004 A4.2):
+//! **Closed formula.** For a graph `y₃ = F(u, v)` (docs/math/laguerre-pn.md):
 //! ```text
 //! x₁ = ((u² − v² − 1) F_u + 2uv F_v − 2u F)/(S + 1)
 //! x₂ = ((v² − u² − 1) F_v + 2uv F_u − 2v F)/(S + 1)
@@ -135,7 +135,7 @@ impl<F: Scalar> IsotropicSurface<F> {
 
     /// The graph of the isotropic sphere of a cycle (Lemma 3.1 (3.12)):
     /// `F = −[(r + m₃)S + 2m₁u + 2m₂v + r − m₃]/2`; its PN surface is the sphere itself,
-    /// `x = m + r n` (NOTES-004 A4.2 "special graphs").
+    /// `x = m + r n` (docs/math/laguerre-pn.md).
     pub fn from_cycle(cycle: &Cycle<F>) -> Self {
         let sph = cycle.isotropic_sphere();
         let (u, v) = (var::<F>(0), var::<F>(1));
@@ -158,7 +158,7 @@ impl<F: Scalar> IsotropicSurface<F> {
         g
     }
 
-    /// The graph `F = p·S/(S − 1)` (NOTES-004 A4.2): its PN surface is the paraboloid of
+    /// The graph `F = p·S/(S − 1)` (docs/math/laguerre-pn.md): its PN surface is the paraboloid of
     /// revolution `x₃ = (x₁² + x₂²)/(2p)` (checked in the tests), with rational offsets.
     pub fn paraboloid(p: F) -> Self {
         let (u, v) = (var::<F>(0), var::<F>(1));

@@ -1,13 +1,13 @@
 //! PN surfaces: rational surfaces with a rational unit normal field, hence rational offsets
-//! at every rational distance (seed 004, Peternell, ch. 4 and §5.4–§5.5; corrected formulas
-//! in `NOTES-004` A4.1–A4.6, A5.4–A5.5).
+//! at every rational distance (Peternell, ch. 4 and §5.4–§5.5; corrected formulas
+//! in docs/math/laguerre-pn.md).
 //!
 //! Every PN surface here is a [`PnSurface`]: polynomials in the parameters `(u, v)` for the
 //! homogeneous point `(W, X₁, X₂, X₃)`, the unit normal `(N₁, N₂, N₃)/N₀` with
 //! `N₁² + N₂² + N₃² ≡ N₀²`, the support function `h` of the oriented tangent plane
 //! `h + n·x = 0`, and a cofactor `K` with `W = N₀ K`. The offset at distance `d` is
 //! `x + d n = (X + d K N)/W` — the same denominator, so the same degree
-//! ([`PnSurface::offset`]); its support function is `h − d` (NOTES-004 §0, erratum E6).
+//! ([`PnSurface::offset`]); its support function is `h − d` (docs/math/laguerre-pn.md#conventions, erratum E6).
 //!
 //! * [`isotropic`]: the isotropic model `I³` (Theorem 4.3): any rational surface
 //!   `y(u,v) = (A/C, B/C, G/D)` of `I³` gives a PN surface by the closed formula (A4.2,
@@ -36,6 +36,7 @@
 //! orthogonal to both partial derivatives, the point on its tangent plane, and for offsets
 //! `x_d − x ≡ d n`; exact polynomial identities over `Rational`.
 
+pub mod developable;
 pub mod isotropic;
 pub mod modeling;
 pub mod offset;
@@ -98,9 +99,15 @@ pub enum PnError {
         detail: String,
     },
     /// A rational point (sum of two squares, point on a conic family) needed by the
-    /// construction was not found over Q (NOTES-004 §0 rationality caveat).
+    /// construction was not found over Q (docs/math/laguerre-pn.md#conventions).
     #[error("no rational solution found: {0}")]
     NoRationalPoint(String),
+    /// A cycle curve whose chords or tangents are isotropic in the cyclographic model
+    /// (`|m₁ − m₂|² ≡ (r₁ − r₂)²`, or `|ṁ|² ≡ ṙ²` for a canal surface): the two cycles
+    /// touch each other in oriented contact for every `t`, and they span no real cone of
+    /// revolution (Peternell §3.3, (4.8): the isotropic circle `d′(t)` has radius 0).
+    #[error("isotropic cycle curve: {0}")]
+    IsotropicCycles(String),
     /// Data the modeling scheme of §4.4 cannot match.
     #[error("the modeling scheme cannot match the data: {0}")]
     ModelingData(String),

@@ -1,4 +1,4 @@
-//! Modeling with PN surfaces (seed 004 §4.4; NOTES-004 A4.3): Hermite data — points `Aᵢ`
+//! Modeling with PN surfaces (Peternell §4.4; docs/math/laguerre-pn.md): Hermite data — points `Aᵢ`
 //! with oriented tangent planes `αᵢ` (unit normals `nᵢ`) — interpolated by a G¹ surface
 //! made of parabolic Dupin cyclide pieces, all with rational offsets.
 //!

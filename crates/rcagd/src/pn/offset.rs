@@ -1,6 +1,5 @@
 //! Offsets of PN surfaces at rational distances, with certificates, and where they
-//! degenerate (seed 004 §4.1, (3.4), (3.15) and (4.2) corrected per erratum E6; NOTES-004
-//! §0: `x_d = x + d n` ⇔ `e0 ↦ e0 − d` ⇔ `r ↦ r + d` ⇔ `y₃ ↦ y₃ − (d/2)(S + 1)`).
+//! degenerate (Peternell §4.1, (3.4), (3.15) and (4.2) corrected: docs/math/laguerre-pn.md#conventions: `x_d = x + d n` ⇔ `e0 ↦ e0 − d` ⇔ `r ↦ r + d` ⇔ `y₃ ↦ y₃ − (d/2)(S + 1)`).
 //!
 //! The offset of a [`PnSurface`] `x = X/W`, `n = N/N₀`, `W = N₀K` is
 //! `x_d = (X + d K N)/W` — exact, of the same denominator. It is singular where `d` is a

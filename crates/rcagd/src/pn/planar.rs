@@ -1,6 +1,6 @@
 //! The planar case: rational PH curves (PN curves of the plane) from the isotropic model of
 //! the Laguerre plane, their exact offsets, polynomial PH curves from a PH preimage, and
-//! surfaces of revolution with a PH profile (seed 004 §3.4 for `n = 2`, §4.1–§4.3 in
+//! surfaces of revolution with a PH profile (Peternell §3.4 for `n = 2`, §4.1–§4.3 in
 //! dimension 2; seed §4.5 Cor. 4.3 for the surfaces of revolution).
 //!
 //! In the plane an oriented line is `e0 + n·x = 0`, `|n| = 1`; the isotropic model `I²`
@@ -293,6 +293,22 @@ impl<F: Scalar> PnCurve<F> {
             support: self.support.sub(&RatFn::constant(d.clone())),
             cofactor,
             distance: self.distance.clone() + d,
+        }
+    }
+
+    /// The same curve with the opposite orientation: normal `−n`, support `−h`; its offset
+    /// at `d` is the offset of `self` at `−d` (docs/math/laguerre-pn.md#orientation).
+    pub fn opposite(&self) -> PnCurve<F> {
+        let n = &self.normal;
+        PnCurve {
+            point: self.point.clone(),
+            normal: [n[0].clone(), -n[1].clone(), -n[2].clone()],
+            support: RatFn {
+                num: -self.support.num.clone(),
+                den: self.support.den.clone(),
+            },
+            cofactor: self.cofactor.clone(),
+            distance: -self.distance.clone(),
         }
     }
 

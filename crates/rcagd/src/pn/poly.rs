@@ -214,7 +214,7 @@ pub(crate) fn div_exact<F: Scalar>(p: &MPoly<F>, d: &MPoly<F>) -> Option<MPoly<F
     let tol = if F::EXACT {
         0.0
     } else {
-        1e-9 * mag(p) * mag(d)
+        1e-12 * mag(p) * mag(d)
     };
     let mut r = p.clone();
     let mut q = MPoly::zero(nv);

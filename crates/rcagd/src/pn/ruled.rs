@@ -1,8 +1,7 @@
-//! Envelopes of rational families of cones of revolution (seed 004 §4.5, Theorem 4.5,
-//! (4.5)–(4.19); NOTES-004 A4.4) and what the seed derives from them: non-developable
+//! Envelopes of rational families of cones of revolution (Peternell §4.5, Theorem 4.5,
+//! (4.5)–(4.19); docs/math/laguerre-pn.md) and what the seed derives from them: non-developable
 //! rational ruled surfaces and their offsets (Cor. 4.2), canal surfaces with rational spine
-//! and radius (Cor. 4.3), the ellipsoid and its offsets (Theorem 4.6, §4.7; NOTES-004
-//! A4.6), surfaces of revolution with a PH profile; and the offsets of ruled 2-manifolds
+//! and radius (Cor. 4.3), the ellipsoid and its offsets (Theorem 4.6, §4.7; docs/math/laguerre-pn.md), surfaces of revolution with a PH profile; and the offsets of ruled 2-manifolds
 //! in `Rⁿ` (Theorem 5.2, [`RuledManifold`]).
 //!
 //! **Theorem 4.5.** Two rational cycle families `c_i(t) = (m_i; r_i)(t)` span cones of
@@ -252,6 +251,11 @@ impl<F: Scalar> ConeFamilyEnvelope<F> {
                 "the two cycle families coincide: they span no cone".into(),
             ));
         }
+        if mm.is_zero() {
+            return Err(PnError::IsotropicCycles(
+                "|m₁ − m₂|² − (r₁ − r₂)² ≡ 0: the cycles c₁(t), c₂(t) are in oriented contact for every t, so their common tangent planes form no cone of revolution".into(),
+            ));
+        }
         let beta = &r + &m[2];
         let p = match p {
             Some(p) => {
@@ -418,11 +422,89 @@ impl<F: Scalar> ConeFamilyEnvelope<F> {
     }
 }
 
+impl<F: Scalar> ConeFamilyEnvelope<F> {
+    /// The certificates that the envelope touches every cone `Δ(t)` along a curve:
+    /// `Φ_t(x(t, u)) ≡ 0` and `(∂_tΦ_t)(x(t, u)) ≡ 0` (`x` held fixed when differentiating),
+    /// with the cone of revolution spanned by the two cycles in the vertex-free form
+    /// `Φ_t(x) = ((x − m₁)·M + r₁R)² − (|M|² − R²)(|x − m₁|² − r₁²)`
+    /// (Peternell §4.5 writes it with the vertex `V = (r₂m₁ − r₁m₂)/(r₂ − r₁)` as
+    /// `((x − V)·M)² − (|M|² − R²)|x − V|²`; both are the same polynomial, and the form used
+    /// here also covers cylinders, `R ≡ 0`: docs/math/laguerre-pn.md#cone-of-two-cycles).
+    ///
+    /// With `m₁ = m/w`, `r₁ = ρ/w`, `M = M̃/δ`, `R = R̃/δ`, `x = X/W` and `D = Xw − Wm`:
+    /// `Φ = 0 ⇔ S² ≡ Q G` with `S = D·M̃ + Wρ R̃`, `Q = |M̃|² − R̃²`, `G = |D|² − W²ρ²`; and
+    /// `∂_tΦ = 0 ⇔ S S′ ≡ w Q′ G − W δ Q G′` with `m′ = ṁw − mẇ`, `M′ = Ṁ̃δ − M̃δ̇` (same for
+    /// `ρ`, `R̃`), `S′ = −Wδ(m′·M̃) + w(D·M′) + Wδρ′R̃ + Wwρ R′`, `Q′ = M̃·M′ − R̃R′`,
+    /// `G′ = D·m′ + Wρρ′`.
+    pub fn cone_certificates(&self) -> Vec<Certificate> {
+        let x = self.surface.point_polys();
+        let (m, rho, w) = (&self.c1.center, &self.c1.radius, &self.c1.den);
+        let (mm, rr, md) = (&self.m, &self.r, &self.md);
+        let big_w = &x[0];
+        let d: [MPoly<F>; 3] = std::array::from_fn(|k| &(&x[k + 1] * w) - &(big_w * &m[k]));
+        let s = &dot3(&d, mm) + &(&(big_w * rho) * rr);
+        let q = &dot3(mm, mm) - &(rr * rr);
+        let g = &dot3(&d, &d) - &(&(big_w * big_w) * &(rho * rho));
+        let phi = identity_cert(
+            "the envelope lies on every cone Δ(t): Φ_t(x) = ((x − m₁)·M + r₁R)² − (|M|² − R²)(|x − m₁|² − r₁²) ≡ 0 (Peternell §4.5)",
+            &(&s * &s),
+            &(&q * &g),
+        );
+        let dot_t = |p: &MPoly<F>, den: &MPoly<F>| &(&p.partial(0) * den) - &(p * &den.partial(0));
+        let m_d: [MPoly<F>; 3] = std::array::from_fn(|k| dot_t(&m[k], w));
+        let rho_d = dot_t(rho, w);
+        let mm_d: [MPoly<F>; 3] = std::array::from_fn(|k| dot_t(&mm[k], md));
+        let rr_d = dot_t(rr, md);
+        let wd = big_w * md;
+        let s_d = &(&(&(&(-&wd) * &dot3(&m_d, mm)) + &(w * &dot3(&d, &mm_d)))
+            + &(&(&wd * &rho_d) * rr))
+            + &(&(&(big_w * w) * rho) * &rr_d);
+        let q_d = &dot3(mm, &mm_d) - &(rr * &rr_d);
+        let g_d = &dot3(&d, &m_d) + &(&(big_w * rho) * &rho_d);
+        let dphi = identity_cert(
+            "the envelope touches Δ(t) along its characteristic curve: ∂_tΦ_t(x) ≡ 0 (x fixed; Peternell §4.5)",
+            &(&s * &s_d),
+            &(&(&(w * &q_d) * &g) - &(&(&wd * &q) * &g_d)),
+        );
+        vec![phi, dphi]
+    }
+}
+
+impl<F: Scalar> ConeFamilyEnvelope<F> {
+    /// The certificates that the offset at distance `d` is the envelope of the offset
+    /// cones: its tangent planes touch the cycle families `(m_i; r_i + d)` (offsets of
+    /// cycles, docs/math/laguerre-pn.md#conventions): `h_d + n·m_i + r_i + d ≡ 0`.
+    pub fn offset_tangency_certificates(&self, d: &F) -> Vec<Certificate> {
+        let off = self.surface.offset(d.clone());
+        let s = off.surface();
+        let h = s.support();
+        let n = s.normal_polys();
+        [(&self.c1, "c₁"), (&self.c2, "c₂")]
+            .into_iter()
+            .map(|(c, name)| {
+                let lhs = &(&h.num * &n[0]) * &c.den;
+                let r = &c.radius + &c.den.scale(d);
+                let rhs = -(&h.den * &(&dot3(&n[1..], &c.center) + &(&n[0] * &r)));
+                identity_cert(
+                    &format!(
+                        "the offset at distance {} touches the offset cycle family {name} + d: e0 + n·m + (r + d) ≡ 0",
+                        format_scalar(d)
+                    ),
+                    &lhs,
+                    &rhs,
+                )
+            })
+            .collect()
+    }
+}
+
 impl<F: Scalar> Certified for ConeFamilyEnvelope<F> {
-    /// The PN identities and the tangency to both cycle families (Theorem 4.5).
+    /// The PN identities, the tangency to both cycle families and the contact with every
+    /// cone `Δ(t)` (Theorem 4.5).
     fn certify(&self) -> Vec<Certificate> {
         let mut out = self.surface.certify();
         out.extend(self.tangency_certificates());
+        out.extend(self.cone_certificates());
         out
     }
 }
@@ -532,6 +614,9 @@ impl<F: Scalar> CanalPn<F> {
             PnError::NoRationalPoint(m) => {
                 PnError::NoRationalPoint(m.replace("|m₁ − m₂|² − (r₁ − r₂)²", "|m′(t)|² − r′(t)²"))
             }
+            PnError::IsotropicCycles(_) => PnError::IsotropicCycles(
+                "|m′(t)|² − r′(t)² ≡ 0: every tangent of the cycle curve is isotropic (the spheres touch their neighbours), so the canal surface degenerates".into(),
+            ),
             e => e,
         })?;
         Ok(CanalPn { family, envelope })
@@ -582,7 +667,7 @@ impl<F: Scalar> Certified for CanalPn<F> {
 /// the focal hyperbola, `c₁ = (m₁; 0)`, `c₂ = (m₂; b)`,
 /// `m₁ = (αγ(t⁴+1), 0, ac(t⁴+1) + 2b²t²)/(b(t⁴−1))`,
 /// `m₂ = (t²−1)/(b(t²+1))·(αγ, 0, ac − b²)`, and `p = β(ρ₁, ρ₂)`,
-/// `(ρ₁, ρ₂) = bt(μ(t²+1), (a−c)t)/(act² + b²)` (NOTES-004 A4.6), with `α = √(b²−c²)`,
+/// `(ρ₁, ρ₂) = bt(μ(t²+1), (a−c)t)/(act² + b²)` (docs/math/laguerre-pn.md), with `α = √(b²−c²)`,
 /// `γ = √(a²−b²)`, `μ = √(ac)`. The ellipsoid of revolution `a = b` needs only `μ`.
 /// In this frame the ellipsoid is, in plane coordinates,
 /// `e0² = K₁₁n₁² + b²n₂² + (a²c²/b²)n₃² + 2(αγac/b²)n₁n₃`,
@@ -733,7 +818,7 @@ impl<F: Scalar> Certified for EllipsoidPn<F> {
 
 /// How to obtain the rational unit normal of a ruled manifold (Theorem 5.2, Steps 1–2;
 /// the seed finds it with Prop. 5.1, a rational point on a conic family, which needs
-/// roots of polynomials in general — NOTES-004 §0).
+/// roots of polynomials in general — docs/math/laguerre-pn.md#conventions).
 #[derive(Debug, Clone)]
 pub enum NormalHint<F> {
     /// Search: a normal `z` linear in `u` (5.23)/(5.24) whose squared length is a square

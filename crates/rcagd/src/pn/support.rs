@@ -1,5 +1,5 @@
 //! PN surfaces from their tangent planes: the dual (support function) representation
-//! (seed 004 §4.1 (4.1)/(4.2), §5.2), anticaustics (§3.6, Theorem 4.1, (3.18) corrected)
+//! (Peternell §4.1 (4.1)/(4.2), §5.2), anticaustics (§3.6, Theorem 4.1, (3.18) corrected)
 //! and Laguerre images (Theorem 4.2).
 //!
 //! **Envelope of a plane field.** Let `e = (h, n)` be a rational field of oriented planes

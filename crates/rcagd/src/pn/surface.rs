@@ -1,6 +1,6 @@
 //! The PN surface type: point, rational unit normal, support function and cofactor as
 //! polynomials in `(u, v)`, with evaluation, Bézier export, certificates and regularity
-//! checks (seed 004 §4.1; NOTES-004 A4.1/A4.2).
+//! checks (Peternell §4.1; docs/math/laguerre-pn.md).
 
 use super::offset::PnOffset;
 use super::poly::{
@@ -15,14 +15,14 @@ use rcagd_algebra::mpoly::MPoly;
 use rcagd_algebra::{Certificate, Scalar};
 use rcagd_geom::BezierPatch;
 
-/// A PN surface (seed 004 §4.1): the rational point `x = (X₁, X₂, X₃)/W`, the rational
+/// A PN surface (Peternell §4.1): the rational point `x = (X₁, X₂, X₃)/W`, the rational
 /// unit normal `n = (N₁, N₂, N₃)/N₀` with `N₁² + N₂² + N₃² ≡ N₀²`, the support function
-/// `h` of the oriented tangent plane `h + n·x = 0` (NOTES-004 §0 convention), and the
+/// `h` of the oriented tangent plane `h + n·x = 0` (docs/math/laguerre-pn.md#conventions), and the
 /// cofactor `K` with `W = N₀ K`, all polynomials (or, for `h`, a rational function) in the
 /// parameters `(u, v)`.
 ///
 /// The offset at oriented distance `d` is `x_d = x + d n = (X + d K N)/W` with support
-/// function `h − d` ([`Self::offset`]; NOTES-004 §0, erratum E6).
+/// function `h − d` ([`Self::offset`]; docs/math/laguerre-pn.md#conventions, erratum E6).
 #[derive(Debug, Clone)]
 pub struct PnSurface<F> {
     point: [MPoly<F>; 4],
@@ -280,10 +280,30 @@ impl<F: Scalar> PnSurface<F> {
     }
 
     /// The offset at oriented distance `d`: `x + d n = (X + d K N)/W`, support `h − d`
-    /// (NOTES-004 §0; seed (4.2) with `h ↦ h − d`, erratum E6). The result has the same
+    /// (docs/math/laguerre-pn.md#conventions; seed (4.2) with `h ↦ h − d`, erratum E6). The result has the same
     /// weight `W`, normal and bidegree (up to the degree of `K N`).
     pub fn offset(&self, d: F) -> PnOffset<F> {
         PnOffset::new(self, d)
+    }
+
+    /// The same point set with the opposite orientation: unit normal `−n`, support
+    /// function `−h` (the oriented plane `h + n·x = 0` with both signs flipped), the same
+    /// point polynomials and cofactor. Its offset at distance `d` is the offset of `self`
+    /// at `−d`: `x + d(−n) = x − d n` (Peternell §3.1: an oriented plane and its opposite
+    /// are distinct elements of Laguerre geometry; docs/math/laguerre-pn.md#orientation).
+    pub fn opposite(&self) -> PnSurface<F> {
+        let n = &self.normal;
+        PnSurface {
+            point: self.point.clone(),
+            normal: [n[0].clone(), -n[1].clone(), -n[2].clone(), -n[3].clone()],
+            support: RatFn {
+                num: -self.support.num.clone(),
+                den: self.support.den.clone(),
+            },
+            cofactor: self.cofactor.clone(),
+            distance: -self.distance.clone(),
+            name: format!("{} (opposite orientation)", self.name),
+        }
     }
 
     /// The surface at offset `d` as a plain PN surface.
@@ -561,6 +581,37 @@ mod tests {
         assert!(surf.check_regular(&d).is_ok());
         let patch = surf.patch(&d).expect("patch");
         assert_eq!(patch.degree(), (2, 2));
+    }
+
+    /// The opposite orientation negates the normal and the support function, keeps the
+    /// point, and its offset at `d` is the offset of the original at `−d`.
+    #[test]
+    fn opposite_orientation_flips_the_normal() {
+        let (u, v) = (var::<Q>(0), var::<Q>(1));
+        let s = &(&u * &u) + &(&v * &v);
+        let w = &s + &int(1);
+        let n = [
+            w.clone(),
+            u.scale(&Q::from(2)),
+            v.scale(&Q::from(2)),
+            &s - &int(1),
+        ];
+        let surf = PnSurface::from_point_normal(n.clone(), n).expect("pn");
+        let opp = surf.opposite();
+        assert!(opp.all_hold(), "{:?}", opp.certify());
+        let (a, b) = (Q::from_ratio(1, 3), Q::from_ratio(-2, 5));
+        let n0 = surf.normal_at(&a, &b).expect("normal");
+        let n1 = opp.normal_at(&a, &b).expect("normal");
+        for k in 0..3 {
+            assert_eq!(n1[k], -n0[k].clone());
+        }
+        assert_eq!(surf.eval(&a, &b).expect("x"), opp.eval(&a, &b).expect("x"));
+        let d = Q::from_ratio(1, 2);
+        let p = opp.offset(d.clone()).surface().eval(&a, &b).expect("x");
+        let q = surf.offset(-d).surface().eval(&a, &b).expect("x");
+        assert_eq!(p, q);
+        assert!(opp.offset(Q::from(1)).all_hold());
+        assert_eq!(opp.opposite(), surf);
     }
 
     #[test]

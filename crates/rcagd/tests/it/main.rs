@@ -7,6 +7,7 @@ mod laguerre_props;
 mod lines_props;
 mod ph_planar;
 mod ph_props;
+mod pn_laguerre;
 mod pn_props;
 mod primitives;
 mod quadric_props;

@@ -1,0 +1,290 @@
+//! Theorem 4.5 in general (Peternell, "Rational Parametrizations for Envelopes of Quadric
+//! Families", §4.5): the envelope of the cones of revolution spanned by two arbitrary
+//! rational cycle curves — random exact families, the cone contact certificates
+//! `Φ_t(x) ≡ 0`, `∂_tΦ_t(x) ≡ 0`, offsets, `f64` agreement, the named errors for an
+//! isotropic cycle curve and for a missing sum-of-two-squares decomposition, and the
+//! degrees of Prop. 4.1 as the code finds them.
+
+use proptest::prelude::*;
+use rcagd::pn::developable::DevelopablePn;
+use rcagd::pn::ruled::{CanalPn, ConeFamilyEnvelope, CycleFamily};
+use rcagd::pn::{PnError, RatFn};
+use rcagd::Certified;
+use rcagd_algebra::mpoly::MPoly;
+use rcagd_algebra::{Rational, Scalar};
+
+type Q = Rational;
+
+fn q(p: i64, d: i64) -> Q {
+    Q::from_ratio(p, d)
+}
+
+/// `Σ c_k t^k` in the two-variable ring (variable 0 is `t`).
+fn tpoly(c: &[Q]) -> MPoly<Q> {
+    MPoly::from_terms(
+        2,
+        c.iter()
+            .enumerate()
+            .filter(|(_, x)| !x.is_zero())
+            .map(|(k, x)| (vec![k as u32, 0], x.clone()))
+            .collect(),
+    )
+    .expect("two variables")
+}
+
+fn k(c: i64) -> MPoly<Q> {
+    MPoly::constant(2, q(c, 1))
+}
+
+fn all_exact_hold(certs: &[rcagd_algebra::Certificate]) -> bool {
+    certs.iter().all(|c| c.holds && c.exact)
+}
+
+fn failing(certs: &[rcagd_algebra::Certificate]) -> Vec<String> {
+    certs
+        .iter()
+        .filter(|c| !c.holds)
+        .map(|c| c.property.clone())
+        .collect()
+}
+
+/// Two cycle families with `|M|² − R² = p₁² + p₂²` by construction: given random
+/// `M₁, M₂, p₁, p₂` and a constant `c ≠ 0`, `D = p₁² + p₂² − M₁² − M₂²` is split as
+/// `(M₃ − R)(M₃ + R) = c · D/c`. Returns `(c₁, c₂, p)`.
+#[allow(clippy::type_complexity)]
+fn families(
+    m1: &[Q],
+    r1: &[Q],
+    mm: [&[Q]; 2],
+    p: [&[Q]; 2],
+    c: Q,
+) -> (CycleFamily<Q>, CycleFamily<Q>, [RatFn<Q>; 2]) {
+    let big_m1 = tpoly(mm[0]);
+    let big_m2 = tpoly(mm[1]);
+    let (p1, p2) = (tpoly(p[0]), tpoly(p[1]));
+    let d = &(&(&p1 * &p1) + &(&p2 * &p2)) - &(&(&big_m1 * &big_m1) + &(&big_m2 * &big_m2));
+    let inv = Q::from(1) / c.clone();
+    let half = q(1, 2);
+    // M₃ − R = c, M₃ + R = D/c
+    let m3 =
+        &MPoly::constant(2, c.clone() * half.clone()) + &d.scale(&(inv.clone() * half.clone()));
+    let r = &d.scale(&(inv * half.clone())) - &MPoly::constant(2, c * half);
+    let center1 = [tpoly(&m1[0..2]), tpoly(&m1[2..4]), tpoly(&m1[4..6])];
+    let rad1 = tpoly(r1);
+    let c1 = CycleFamily::new(center1.clone(), rad1.clone(), k(1)).expect("family");
+    let c2 = CycleFamily::new(
+        [
+            &center1[0] - &big_m1,
+            &center1[1] - &big_m2,
+            &center1[2] - &m3,
+        ],
+        &rad1 - &r,
+        k(1),
+    )
+    .expect("family");
+    (c1, c2, [RatFn::poly(p1), RatFn::poly(p2)])
+}
+
+fn rational() -> impl Strategy<Value = Q> {
+    (-5i64..=5, 1i64..=3).prop_map(|(a, b)| q(a, b))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Random exact cycle curves (linear centres and radii, `|M|² − R²` a sum of two squares
+    /// by construction): the envelope is a certified PN surface touching both cycle
+    /// families and every cone (`Φ_t(x) ≡ 0`, `∂_tΦ_t(x) ≡ 0`), and its offset is certified.
+    /// (`f64` agreement: [`f64_agrees_with_exact_on_the_theorem_4_5_example`]; for random
+    /// families the `f64` path is not yet reliable, see [`f64_envelope_of_random_integer_families`].)
+    #[test]
+    fn random_cycle_curves_envelope_their_cones(
+        m1 in prop::collection::vec(rational(), 6),
+        r1 in prop::collection::vec(rational(), 2),
+        mm in prop::collection::vec(rational(), 4),
+        pp in prop::collection::vec(rational(), 4),
+        c in (1i64..=3, 1i64..=2),
+        d in rational(),
+    ) {
+        let (c1, c2, p) = families(&m1, &r1, [&mm[0..2], &mm[2..4]], [&pp[0..2], &pp[2..4]], q(c.0, c.1));
+        let env = match ConeFamilyEnvelope::new(c1.clone(), c2.clone(), Some(p.clone())) {
+            Ok(e) => e,
+            // degenerate draws (a developable envelope, cones that degenerate) are named errors
+            Err(PnError::Developable(_)) | Err(PnError::IsotropicCycles(_)) => return Ok(()),
+            Err(PnError::InvalidInput(m)) if m.contains("degenerate") || m.contains("coincide") => return Ok(()),
+            Err(e) => { prop_assert!(false, "unexpected {e}"); unreachable!() }
+        };
+        let certs = env.certify();
+        prop_assert!(all_exact_hold(&certs), "{:?}", failing(&certs));
+        prop_assert_eq!(env.cone_certificates().len(), 2);
+        let off = env.surface().offset(d.clone());
+        prop_assert!(all_exact_hold(&off.certify()));
+        prop_assert!(all_exact_hold(&env.offset_tangency_certificates(&d)));
+    }
+}
+
+/// Two rational (non-polynomial) cycle curves with `p` found by the sum-of-two-squares
+/// engine: `c₁ = ((1 − t², 2t, 0)/(1 + t²); 1/(1 + t²))` (centres on the unit circle) and
+/// `c₂ = ((0, 0, t); 1/(1 + t²))`: `R ≡ 0`, `|M|² = 1 + t²` is a sum of two squares but
+/// not a square.
+#[test]
+fn rational_cycle_curves_with_p_found_by_the_engine() {
+    let t = tpoly(&[q(0, 1), q(1, 1)]);
+    let w = tpoly(&[q(1, 1), q(0, 1), q(1, 1)]);
+    let c1 = CycleFamily::new(
+        [
+            tpoly(&[q(1, 1), q(0, 1), q(-1, 1)]),
+            t.scale(&q(2, 1)),
+            k(0),
+        ],
+        k(1),
+        w.clone(),
+    )
+    .expect("family");
+    let c2 = CycleFamily::new([k(0), k(0), &t * &w], k(1), w).expect("family");
+    let env = ConeFamilyEnvelope::new(c1, c2, None).expect("envelope");
+    let certs = env.certify();
+    assert!(all_exact_hold(&certs), "{:?}", failing(&certs));
+    let off = env.surface().offset(q(1, 3));
+    assert!(all_exact_hold(&off.certify()));
+}
+
+/// `|M|² − R² = t² + 2` is a sum of two squares only over `Q(√2)`: the named error says
+/// so; `|M|² − R² ≡ 0` (the cycles touch) and a canal surface whose cycle curve has
+/// isotropic tangents (`|ṁ|² ≡ ṙ²`) are named errors too.
+#[test]
+fn sum_of_squares_obstruction_and_isotropic_cycle_curves() {
+    let t = tpoly(&[q(0, 1), q(1, 1)]);
+    let c1 = CycleFamily::new([t.clone(), k(1), k(1)], k(0), k(1)).expect("family");
+    let c2 = CycleFamily::new([k(0), k(0), k(0)], k(0), k(1)).expect("family");
+    match ConeFamilyEnvelope::new(c1, c2, None) {
+        Err(PnError::NoRationalPoint(m)) => {
+            assert!(m.contains("sum of two squares"), "{m}");
+            assert!(
+                m.contains("√2") || m.contains("√8") || m.contains("√-2"),
+                "{m}"
+            );
+        }
+        other => panic!("expected the sum-of-squares obstruction, got {other:?}"),
+    }
+    // c₂ = ((t, 0, 0); t) touches c₁ = ((0, 0, 0); 0) for every t
+    let c1 = CycleFamily::new([k(0), k(0), k(0)], k(0), k(1)).expect("family");
+    let c2 = CycleFamily::new([t.clone(), k(0), k(0)], t.clone(), k(1)).expect("family");
+    assert!(matches!(
+        ConeFamilyEnvelope::new(c1, c2, None),
+        Err(PnError::IsotropicCycles(_))
+    ));
+    // m = (t, t, 0), r = √2·t is irrational; m = (t, 0, 0), r = t: |ṁ|² = ṙ²
+    let fam = CycleFamily::new([t.clone(), k(0), k(0)], t.clone(), k(1)).expect("family");
+    match CanalPn::new(fam, None) {
+        Err(PnError::IsotropicCycles(m)) => assert!(m.contains("isotropic"), "{m}"),
+        other => panic!("expected the isotropic-tangent error, got {other:?}"),
+    }
+}
+
+/// The `f64` construction of the Theorem 4.5 example agrees with the exact one.
+#[test]
+fn f64_agrees_with_exact_on_the_theorem_4_5_example() {
+    let t = tpoly(&[q(0, 1), q(1, 1)]);
+    let c1 = CycleFamily::new([t.scale(&q(2, 1)), &t * &t, k(2)], k(3), k(1)).expect("family");
+    let c2 = CycleFamily::new([k(0), k(1), k(0)], k(1), k(1)).expect("family");
+    let env = ConeFamilyEnvelope::new(c1.clone(), c2.clone(), None).expect("envelope");
+    let f = |p: &MPoly<Q>| p.map(Scalar::to_f64);
+    let fam = |c: &CycleFamily<Q>| {
+        let (m, r, w) = c.parts();
+        CycleFamily::new([f(m[0]), f(m[1]), f(m[2])], f(r), f(w)).expect("family")
+    };
+    let envf = ConeFamilyEnvelope::new(fam(&c1), fam(&c2), None).expect("f64 envelope");
+    assert!(envf.certify().iter().all(|c| c.holds && !c.exact));
+    for (a, b) in [(q(5, 4), q(1, 3)), (q(3, 2), q(1, 2)), (q(7, 4), q(-2, 3))] {
+        let xe = env.surface().eval(&a, &b).expect("point");
+        let xf = envf
+            .surface()
+            .eval(&Scalar::to_f64(&a), &Scalar::to_f64(&b))
+            .expect("point");
+        for i in 0..3 {
+            let e = Scalar::to_f64(&xe[i]);
+            assert!(
+                (e - xf[i]).abs() <= 1e-9 * (1.0 + e.abs()),
+                "{e} vs {}",
+                xf[i]
+            );
+        }
+    }
+}
+
+/// Known defect (found by the property test above): for `m₁ = 0, r₁ = t, M = (0, −t, ·)`,
+/// `p = (1 − 3t, 0)` the `f64` envelope differs from the exact one at `(t, u) = (1/3, 1/2)`
+/// although the data are integers (exact in `f64`) and the isotropic surfaces agree: the
+/// `f64` common-factor cancellation in `PnSurface::assemble` (tolerance-based division and
+/// gcd of `pn/poly.rs`) removes a factor that is not common. Run with `--ignored`.
+#[test]
+#[ignore = "known defect of the f64 path: docs/plans/pn-laguerre.md"]
+fn f64_envelope_of_random_integer_families() {
+    let z = || q(0, 1);
+    let (c1, c2, p) = families(
+        &[z(), z(), z(), z(), z(), z()],
+        &[z(), q(1, 1)],
+        [&[z(), z()], &[z(), q(-1, 1)]],
+        [&[q(1, 1), q(-3, 1)], &[z(), z()]],
+        q(1, 1),
+    );
+    let env = ConeFamilyEnvelope::new(c1.clone(), c2.clone(), Some(p.clone())).expect("e");
+    let f = |p: &MPoly<Q>| p.map(Scalar::to_f64);
+    let fam = |c: &CycleFamily<Q>| {
+        let (m, r, w) = c.parts();
+        CycleFamily::new([f(m[0]), f(m[1]), f(m[2])], f(r), f(w)).expect("family")
+    };
+    let pf = [
+        RatFn::new(f(&p[0].num), f(&p[0].den)).expect("den"),
+        RatFn::new(f(&p[1].num), f(&p[1].den)).expect("den"),
+    ];
+    let envf = ConeFamilyEnvelope::new(fam(&c1), fam(&c2), Some(pf)).expect("f64 envelope");
+    for (a, b) in [(q(1, 3), q(1, 2)), (q(2, 3), q(-1, 2)), (q(1, 1), q(0, 1))] {
+        let xe = env.surface().eval(&a, &b).expect("point");
+        let xf = envf
+            .surface()
+            .eval(&Scalar::to_f64(&a), &Scalar::to_f64(&b))
+            .expect("point");
+        for i in 0..3 {
+            let e = Scalar::to_f64(&xe[i]);
+            assert!(
+                (e - xf[i]).abs() <= 1e-9 * (1.0 + e.abs()),
+                "{e} vs {}",
+                xf[i]
+            );
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Random quadratic and cubic curves of the isotropic model: the developable PN surface
+    /// (Theorem 4.3, developable case) is certified exactly (n·n ≡ 1, n ⟂ x_t, x_v, x on
+    /// its plane and on the characteristic line e ∩ ė, ∂_v n ≡ 0), and so is its offset;
+    /// constant (y₁, y₂) is the named error.
+    #[test]
+    fn random_isotropic_curves_give_developable_pn_surfaces(
+        c in prop::collection::vec(rational(), 12),
+        d in rational(),
+    ) {
+        let y = [
+            RatFn::poly(tpoly(&c[0..4])),
+            RatFn::poly(tpoly(&c[4..8])),
+            RatFn::poly(tpoly(&c[8..12])),
+        ];
+        let constant = |p: &MPoly<Q>| p.total_degree().unwrap_or(0) == 0;
+        match DevelopablePn::from_isotropic_curve(&y) {
+            Ok(dev) => {
+                let certs = dev.certify();
+                prop_assert!(all_exact_hold(&certs), "{:?}", failing(&certs));
+                prop_assert!(all_exact_hold(&dev.surface().offset(d).certify()));
+            }
+            Err(PnError::Developable(_)) => {
+                prop_assert!(constant(&y[0].num) && constant(&y[1].num));
+            }
+            Err(e) => prop_assert!(false, "unexpected {e}"),
+        }
+    }
+}
