@@ -198,17 +198,6 @@ fn user_facing_text_cites_published_sources_only() {
     }
 }
 
-/// Files other sessions are rewriting; they may still cite the seed notes. Being
-/// rewritten; remove from this list when done.
-const NOTES_CITATIONS_ALLOWED: [&str; 6] = [
-    "crates/rcagd/src/pn/",
-    "crates/rcagd/src/laguerre/",
-    "crates/rcagd/src/cyclographic.rs",
-    "crates/rcagd/src/cyclide/",
-    "crates/rcagd/src/ndim/",
-    "crates/cli/src/ops/pn.rs",
-];
-
 /// All `.rs` files below `dir` (recursively), and `.md` files if `md`.
 fn source_files(dir: &Path, md: bool, out: &mut Vec<PathBuf>) {
     let Ok(entries) = std::fs::read_dir(dir) else {
@@ -251,9 +240,7 @@ fn sources_cite_published_sources_and_docs_math_only() {
             .to_string_lossy()
             .replace('\\', "/");
         let rel = rel.trim_start_matches("./").to_string();
-        if NOTES_CITATIONS_ALLOWED.iter().any(|a| rel.contains(a))
-            || rel.ends_with("cli/tests/it/docs.rs")
-        {
+        if rel.ends_with("cli/tests/it/docs.rs") {
             continue;
         }
         let text = std::fs::read_to_string(p).expect("read source");
