@@ -329,3 +329,40 @@ fn bending_energy_near_singular_speed() {
         Err(PhError::Degenerate(_))
     ));
 }
+
+/// Known defect (found by `helix_constructions` with a random seed): the f64 helix test
+/// loses seven digits on this septic helix (tan²ψ = 37 exactly, 36.99999988 in f64): the
+/// axis comes from an elimination on power-basis coefficients. Run with `--ignored`;
+/// remove the `ignore` when the f64 axis solve is made stable (least squares / refinement).
+#[test]
+#[ignore = "known f64 accuracy defect of the helix axis solve"]
+fn f64_helix_axis_of_a_septic_helix() {
+    let q = |n: i64, d: i64| Q::from_parts_signed(n.into(), d.into());
+    let c = |a: Q, b: Q| Complex::new(a, b);
+    let seed = LineCircle::new(
+        c(q(2, 1), q(0, 1)),
+        c(q(-6, 1), q(0, 1)),
+        c(q(0, 1), q(-2, 1)),
+        c(q(1, 1), q(0, 1)),
+    )
+    .expect("a line/circle seed");
+    let f = vec![q(-6, 1), q(-1, 2)];
+    let g = vec![q(-1, 2), q(0, 1)];
+    let w = vec![
+        c(q(-2, 3), q(0, 1)),
+        c(q(2, 3), q(-2, 1)),
+        c(q(0, 1), q(2, 1)),
+    ];
+    let curve = seed
+        .helix(&f, &g, &w, [Q::from(0), Q::from(0), Q::from(0)])
+        .expect("a helix");
+    let pc = curve.to_poly_curve();
+    let HelixTest::Helix(h) = pc.helix_test().expect("test") else {
+        panic!("the exact curve is a helix")
+    };
+    assert_eq!(h.tan2_psi(), Q::from(37));
+    let Ok(HelixTest::Helix(hf)) = pc.to_f64().helix_test() else {
+        panic!("the f64 curve is a helix")
+    };
+    assert!(close(hf.tan2_psi(), 37.0), "{}", hf.tan2_psi());
+}
