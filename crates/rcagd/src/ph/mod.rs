@@ -25,6 +25,8 @@
 //! * [`helix`]: the helix test (axis `a·r' ≡ σ`, Lancret), line/circle seeds and the
 //!   helix constructions by reparametrization, multiplication and both (ALG-6/7),
 //!   recognition of helical quintics;
+//! * [`preimage`]: the quaternion preimage `A(t)` of a given PH hodograph (Remark 3.15),
+//!   exact, with its one-parameter family `A·e^{iφ}`;
 //! * [`hermite`]: Hermite interpolation by general helical PH quintics (seed 001 ch. 9,
 //!   ALG-10) with every real solution and the least bending energy marked.
 //!
@@ -40,6 +42,7 @@ pub mod hermite;
 pub mod hodograph;
 pub mod planar;
 pub mod planar_hermite;
+pub mod preimage;
 pub mod spatial_hermite;
 pub mod speed;
 pub mod spline;

@@ -5,6 +5,7 @@ mod canal_props;
 mod laguerre_props;
 mod lines_props;
 mod ph_planar;
+mod ph_preimage;
 mod ph_props;
 mod pn_props;
 mod primitives;
