@@ -5,6 +5,9 @@
 //!   or quaternion preimage), its speed `σ`, arc length, `ρ` with `deg ρ ≤ 2n − 6`, the
 //!   DPH and helix tests with axis and `κ/τ`, and the exact Frenet data at given
 //!   parameters (`rcagd::ph::analysis`).
+//! * `ph_preimage`: the quaternion preimage `A(t)` of a PH curve, `r' = A i A*`
+//!   (`rcagd::ph::preimage::recover_preimage`).
+//! * `ph_qiq`: the solutions `Q(φ)` of `Q i Q* = c` (`rcagd::ph::preimage::solve_qiq_certified`).
 
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
@@ -17,7 +20,7 @@ use rcagd_geom::BezierCurve;
 use rcagd_io::quantity::{NamedQuantity, Quantity};
 
 /// The ops of this topic.
-pub const OPS: &[OpSpec] = &[PH_ANALYZE];
+pub const OPS: &[OpSpec] = &[PH_ANALYZE, PH_PREIMAGE, PH_QIQ];
 
 type Q = Rational;
 
@@ -60,6 +63,120 @@ at = [0, "1/2"]
 "#,
     build: build_ph_analyze,
 };
+
+const PH_PREIMAGE: OpSpec = OpSpec {
+    name: "ph_preimage",
+    summary: "the quaternion preimage A(t) of a PH curve, r' = A i A*, recovered exactly from its hodograph (Besednjak, DPH-krivulje in polinomske vijačnice, Remark 3.15; construction in docs/math/ph-preimage.md): Bernstein coefficients A_l = [u, v, p, q], the components u, v, p, q, σ = |A|², the content gcd(x', y', z') and the number of choices of its complex factors; every other preimage of a choice is A·(cos φ + i sin φ)",
+    params: &[
+        ParamSpec::optional("points", ParamKind::Points, "Bézier control points [x, y, z] of a PH curve on t ∈ [0, 1]"),
+        ParamSpec::optional("power", ParamKind::Points, "instead of `points`: power-form coefficients [x_k, y_k, z_k] of t^k"),
+        ParamSpec::optional("quaternions", ParamKind::Points, "instead of `points`: Bernstein coefficients [u, v, p, q] of some preimage (a round trip)"),
+        ParamSpec::with_default("start", ParamKind::Point3, "[0, 0, 0]", "r(0) for `quaternions`"),
+        ParamSpec::with_default("choice", ParamKind::Int, "0", "which complex factors of the content gcd(x', y', z') go into A (0 … choices − 1)"),
+        ParamSpec::optional("rotation", ParamKind::Point2, "[cos φ, sin φ] (rational, cos²φ + sin²φ = 1): the member A·(cos φ + i sin φ) of the family"),
+    ],
+    example: r#"[[object]]
+name = "ph_cubic_preimage"
+op = "ph_preimage"
+points = [[0, 0, 0], [0, 0, "-2/3"], ["1/3", "2/3", -1], ["2/3", "4/3", "-1/3"]]
+"#,
+    build: build_ph_preimage,
+};
+
+const PH_QIQ: OpSpec = OpSpec {
+    name: "ph_qiq",
+    summary: "the solution Q(φ) of Q i Q* = c (Besednjak, DPH-krivulje in polinomske vijačnice, Lemma 2.1, with the branch Q = √|c|(cos φ j + sin φ k) for every c = −|c| i), exact when |c| and (|c| + c_x)/2 are rational squares; the object is the PH segment t·c with preimage Q",
+    params: &[
+        ParamSpec::required("c", ParamKind::Point3, "the right-hand side c ≠ 0"),
+        ParamSpec::optional("rotation", ParamKind::Point2, "[cos φ, sin φ] (rational, cos²φ + sin²φ = 1); default φ = 0"),
+    ],
+    example: r#"[[object]]
+name = "lemma_2_1_solution"
+op = "ph_qiq"
+c = [-1, 2, 2]
+rotation = ["3/5", "4/5"]
+"#,
+    build: build_ph_qiq,
+};
+
+fn rotation(args: &OpArgs) -> Result<Option<(Q, Q)>, OpError> {
+    Ok(args.opt_point("rotation")?.and_then(|v| match v.as_slice() {
+        [c, s] => Some((c.clone(), s.clone())),
+        _ => None,
+    }))
+}
+
+fn quaternion_values(name: &str, doc: &str, a: &[rcagd_algebra::Quaternion<Q>]) -> NamedQuantity {
+    value(
+        name,
+        doc,
+        Quantity::Vector(
+            a.iter()
+                .map(|q| Quantity::rationals(&[q.w.clone(), q.x.clone(), q.y.clone(), q.z.clone()]))
+                .collect(),
+        ),
+    )
+}
+
+fn build_ph_preimage(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let (bez, _) = input_curve(args)?;
+    let polys = bez.coordinate_polys();
+    let [_, x, y, z] = <[Poly<Q>; 4]>::try_from(polys)
+        .map_err(|_| OpError::new("the curve must lie in space (x, y, z)"))?;
+    let choice = usize::try_from(args.int("choice")?)
+        .map_err(|_| OpError::param("choice", "a choice is 0, 1, …"))?;
+    let rec = rcagd::ph::preimage::recover_preimage([x, y, z], choice)?;
+    let mut certificates = rec.certify();
+    let curve = match rotation(args)? {
+        Some((c, s)) => {
+            let rotated = rec
+                .rotated(&c, &s)
+                .map_err(|e| OpError::param("rotation", e.to_string()))?;
+            certificates.extend(rotated.certify());
+            rotated
+        }
+        None => rec.curve.clone(),
+    };
+    let [u, v, p, q] = curve.preimage();
+    let values = vec![
+        quaternion_values(
+            "quaternion_coefficients",
+            "Bernstein coefficients A_l = [u, v, p, q] of A(t) = u + v i + p j + q k",
+            curve.coefficients(),
+        ),
+        value("u", "u(t), power form", Quantity::poly_t(u)),
+        value("v", "v(t)", Quantity::poly_t(v)),
+        value("p", "p(t)", Quantity::poly_t(p)),
+        value("q", "q(t)", Quantity::poly_t(q)),
+        value("sigma", "σ = |A|² = u² + v² + p² + q²", Quantity::poly_t(curve.speed())),
+        value("content", "gcd(x', y', z'), monic", Quantity::poly_t(rec.content.clone())),
+        value(
+            "choices",
+            "number of choices of complex factors of the content",
+            Quantity::Integer(rec.choices as i64),
+        ),
+    ];
+    Ok(vec![args
+        .object(Geometry::Curve(curve.to_bezier()?), certificates)
+        .with_values(values)])
+}
+
+fn build_ph_qiq(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c = <[Q; 3]>::try_from(args.point("c")?)
+        .map_err(|_| OpError::param("c", "c must be [x, y, z]"))?;
+    let sol = rcagd::ph::preimage::solve_qiq_certified(&c, rotation(args)?)?;
+    let values = vec![
+        quaternion_values("q", "Q = [w, x, y, z] = w + x i + y j + z k with Q i Q* = c", std::slice::from_ref(&sol.q)),
+        value(
+            "rotation",
+            "[cos φ, sin φ] of the member Q(φ)",
+            Quantity::rationals(&[sol.rotation.0.clone(), sol.rotation.1.clone()]),
+        ),
+    ];
+    Ok(vec![args
+        .object(Geometry::Curve(sol.segment.to_bezier()?), sol.certify())
+        .with_values(values)])
+}
 
 fn value(name: &str, doc: &str, v: Quantity) -> NamedQuantity {
     NamedQuantity::new(name, doc, v)

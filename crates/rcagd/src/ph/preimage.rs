@@ -61,7 +61,7 @@ fn complex(p: &Poly<Q>) -> CPoly {
 fn sos_error(e: SumOfSquaresError, what: &str) -> PhError {
     match e {
         SumOfSquaresError::Negative(m) => PhError::NotPh(format!(
-            "{what} must be |gcd(α, β)|² (up to a constant) but is negative somewhere: {m}; no quaternion preimage"
+            "{what} must be a positive constant times |gcd(α, β)|² for a preimage A = α + kβ, but it is negative somewhere ({m}): no quaternion preimage"
         )),
         SumOfSquaresError::Zero => PhError::Degenerate(format!("{what} is zero")),
         other => PhError::Irrational(format!(
@@ -96,7 +96,9 @@ fn gaussian_root(q: &Poly<Q>, choice: usize, what: &str) -> Result<(CPoly, usize
 fn div_exact_c(a: &CPoly, b: &CPoly, what: &str) -> Result<CPoly, PhError> {
     let (q, r) = a.div_rem(b)?;
     if !r.is_zero() {
-        return Err(PhError::Degenerate(format!("{what} does not divide exactly")));
+        return Err(PhError::Degenerate(format!(
+            "{what} does not divide exactly"
+        )));
     }
     Ok(q)
 }
@@ -150,17 +152,14 @@ pub fn recover_preimage(r: [Poly<Q>; 3], choice: usize) -> Result<RecoveredPreim
         let (delta, k) = gaussian_root(
             &content.scale(&(Q::ONE / c.clone())),
             choice,
-            "gcd(x', y', z')/c",
+            "a constant times the content gcd(x', y', z')",
         )?;
         let alpha = &delta * &g;
         let yg = div_exact_c(&y, &g, "gcd((σ + x')/2, (y' + iz')/2)")?;
         let beta = (&delta * &conj_poly(&yg)).scale(&Complex::new(c, Q::ZERO));
         (alpha, beta, k)
     };
-    let m = alpha
-        .degree()
-        .unwrap_or(0)
-        .max(beta.degree().unwrap_or(0));
+    let m = alpha.degree().unwrap_or(0).max(beta.degree().unwrap_or(0));
     let ab = bernstein::to_bernstein(&alpha, m)?;
     let bb = bernstein::to_bernstein(&beta, m)?;
     let pc = PhCurve::from_hopf(&ab, &bb, start)?;
@@ -183,9 +182,7 @@ impl RecoveredPreimage {
     pub fn rotated(&self, cos: &Q, sin: &Q) -> Result<PhCurve<Q>, PhError> {
         let n = cos.clone() * cos.clone() + sin.clone() * sin.clone() - Q::ONE;
         if !n.is_zero() {
-            return Err(PhError::OutOfRange(format!(
-                "cos²φ + sin²φ − 1 = {n} ≠ 0"
-            )));
+            return Err(PhError::OutOfRange(format!("cos²φ + sin²φ − 1 = {n} ≠ 0")));
         }
         let e = quat(cos.clone(), sin.clone(), Q::ZERO, Q::ZERO);
         let coeffs = self
@@ -213,6 +210,51 @@ impl RecoveredPreimage {
             })
             .collect();
         certs.extend(self.curve.certify());
+        certs
+    }
+}
+
+/// A solution `Q` of `Q i Q* = c` (Besednjak, Lemma 2.1; the exceptional branch for every
+/// `c = −|c| i`, not only `c = −i`: see [`super::solve_qiq`]) with the segment
+/// `r(t) = t·c` whose constant preimage it is.
+#[derive(Debug, Clone, PartialEq)]
+pub struct QiqSolution<F> {
+    /// The right-hand side `c`.
+    pub c: [F; 3],
+    /// `(cos φ, sin φ)` of the member `Q(φ)` of the family.
+    pub rotation: (F, F),
+    /// The solution `Q(φ)`.
+    pub q: rcagd_algebra::quaternion::Quaternion<F>,
+    /// The PH segment `r(t) = t·c` with `r' = Q i Q*` (degree 1).
+    pub segment: PhCurve<F>,
+}
+
+/// The solution `Q(φ)` of `Q i Q* = c` (Lemma 2.1) for `rotation = (cos φ, sin φ)`
+/// (`φ = 0` when `None`), with its certificate.
+///
+/// # Errors
+/// As [`super::solve_qiq`].
+pub fn solve_qiq_certified<F: rcagd_algebra::Scalar>(
+    c: &[F; 3],
+    rotation: Option<(F, F)>,
+) -> Result<QiqSolution<F>, PhError> {
+    let rotation = rotation.unwrap_or((F::one(), F::zero()));
+    let q = super::solve_qiq(c, Some(rotation.clone()))?;
+    let segment = PhCurve::new(vec![q.clone()], [F::zero(), F::zero(), F::zero()])?;
+    Ok(QiqSolution {
+        c: c.clone(),
+        rotation,
+        q,
+        segment,
+    })
+}
+
+impl<F: rcagd_algebra::Scalar> QiqSolution<F> {
+    /// Certificates: `Q i Q* = c` (each component) and the PH identities of the segment.
+    pub fn certify(&self) -> Vec<Certificate> {
+        let v = qvec(&sandwich(&self.q, 1, &self.q));
+        let mut certs = vec![v3_cert("Q i Q* − c = 0 (Besednjak Lemma 2.1)", &v, &self.c)];
+        certs.extend(self.segment.certify());
         certs
     }
 }

@@ -52,7 +52,10 @@ fn check(rows: &[[&str; 4]]) {
         assert_eq!(rec.curve.control_points(), given.control_points());
         found |= unit_ratio(&given, &rec.curve).is_some();
     }
-    assert!(found, "no choice reproduces the printed preimage up to e^(iφ)");
+    assert!(
+        found,
+        "no choice reproduces the printed preimage up to e^(iφ)"
+    );
 }
 
 /// Examples 8.1–8.9: the printed quaternion coefficients `A_0..A_3` (the same data as
@@ -141,7 +144,10 @@ fn no_preimage_is_an_error() {
     assert!(matches!(recover_preimage(r, 0), Err(PhError::NotPh(_))));
     // r' = (0, 0, 3): |α|² = 3/2 is no sum of two rational squares
     let r = [Poly::zero(), Poly::zero(), Poly::from_ints(&[0, 3])];
-    assert!(matches!(recover_preimage(r, 0), Err(PhError::Irrational(_))));
+    assert!(matches!(
+        recover_preimage(r, 0),
+        Err(PhError::Irrational(_))
+    ));
     let r = [Poly::from_ints(&[0, 1]), Poly::zero(), Poly::zero()];
     assert!(matches!(
         recover_preimage(r.clone(), 5),

@@ -1,0 +1,160 @@
+//! The analysis ops `ph_preimage` and `ph_qiq`: values compared with hand derivations.
+
+use crate::common::{bin, stderr, temp_dir, write};
+use rcagd_algebra::{parse_rational, Rational};
+use serde_json::Value;
+
+type Q = Rational;
+
+fn build_json(tag: &str, recipe: &str, name: &str) -> Value {
+    let dir = temp_dir(tag);
+    let file = write(&dir, "r.toml", recipe);
+    let out = dir.join("out");
+    let o = bin()
+        .args(["build"])
+        .arg(&file)
+        .args(["--format", "json", "--out"])
+        .arg(&out)
+        .output()
+        .expect("run rcagd");
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(out.join(format!("{name}.json"))).expect("json");
+    serde_json::from_str(&text).expect("valid json")
+}
+
+fn value<'a>(obj: &'a Value, name: &str) -> &'a Value {
+    obj["values"]
+        .as_array()
+        .expect("values")
+        .iter()
+        .find(|v| v["name"] == name)
+        .unwrap_or_else(|| panic!("no value {name}"))
+}
+
+fn rat(v: &Value) -> Q {
+    parse_rational(v.as_str().expect("exact string")).expect("rational")
+}
+
+/// `[w, x, y, z]` rows of a vector-of-vectors value.
+fn quats(v: &Value) -> Vec<[Q; 4]> {
+    v["items"]
+        .as_array()
+        .expect("items")
+        .iter()
+        .map(|q| {
+            let it = q["items"].as_array().expect("items");
+            [
+                rat(&it[0]["exact"]),
+                rat(&it[1]["exact"]),
+                rat(&it[2]["exact"]),
+                rat(&it[3]["exact"]),
+            ]
+        })
+        .collect()
+}
+
+fn qmul(a: &[Q; 4], b: &[Q; 4]) -> [Q; 4] {
+    let [a0, a1, a2, a3] = a.clone();
+    let [b0, b1, b2, b3] = b.clone();
+    [
+        a0.clone() * b0.clone()
+            - a1.clone() * b1.clone()
+            - a2.clone() * b2.clone()
+            - a3.clone() * b3.clone(),
+        a0.clone() * b1.clone() + a1.clone() * b0.clone() + a2.clone() * b3.clone()
+            - a3.clone() * b2.clone(),
+        a0.clone() * b2.clone() - a1.clone() * b3.clone()
+            + a2.clone() * b0.clone()
+            + a3.clone() * b1.clone(),
+        a0 * b3 + a1 * b2 - a2 * b1 + a3 * b0,
+    ]
+}
+
+fn q(s: &str) -> Q {
+    parse_rational(s).expect("number")
+}
+
+/// Lemma 2.1 for `c = (−1, 2, 2)`: `Q(0) = i + j + k`, so by hand
+/// `Q(φ) = (i + j + k)(3/5 + 4/5 i) = −4/5 + 3/5 i + 7/5 j − 1/5 k`.
+#[test]
+fn ph_qiq_matches_the_hand_derivation() {
+    let o = build_json(
+        "qiq",
+        "[[object]]\nname = \"s\"\nop = \"ph_qiq\"\nc = [-1, 2, 2]\nrotation = [\"3/5\", \"4/5\"]\n",
+        "s",
+    );
+    assert_eq!(o["all_certificates_hold"], true);
+    assert_eq!(
+        quats(value(&o, "q")),
+        vec![[q("-4/5"), q("3/5"), q("7/5"), q("-1/5")]]
+    );
+    // the exceptional branch c = −|c| i: Q = √|c| j = 2j
+    let o = build_json(
+        "qiq2",
+        "[[object]]\nname = \"s\"\nop = \"ph_qiq\"\nc = [-4, 0, 0]\n",
+        "s",
+    );
+    assert_eq!(
+        quats(value(&o, "q")),
+        vec![[q("0"), q("0"), q("2"), q("0")]]
+    );
+}
+
+/// The cubic with preimage `A_0 = 1 + j`, `A_1 = 1 + i + k` given by its control points
+/// (computed by hand with (8.2): `p_1 = A_0 i A_0*/3 = (0, 0, −2/3)`, …): the recovered
+/// preimage is `(A_0, A_1)·q` with a unit complex `q`, `σ = |A|²`, content 1.
+#[test]
+fn ph_preimage_recovers_the_cubic_preimage() {
+    let o = build_json(
+        "preimage",
+        "[[object]]\nname = \"c\"\nop = \"ph_preimage\"\npoints = [[0, 0, 0], [0, 0, \"-2/3\"], [\"1/3\", \"2/3\", -1], [\"2/3\", \"4/3\", \"-1/3\"]]\n",
+        "c",
+    );
+    assert_eq!(o["all_certificates_hold"], true);
+    let got = quats(value(&o, "quaternion_coefficients"));
+    let given = [
+        [q("1"), q("0"), q("1"), q("0")],
+        [q("1"), q("1"), q("0"), q("1")],
+    ];
+    // q = A_0⁻¹ R_0 = A_0* R_0 / |A_0|²
+    let a0c = [q("1/2"), q("0"), q("-1/2"), q("0")];
+    let unit = qmul(&a0c, &got[0]);
+    assert_eq!(unit[2], q("0"));
+    assert_eq!(unit[3], q("0"));
+    assert_eq!(
+        unit[0].clone() * unit[0].clone() + unit[1].clone() * unit[1].clone(),
+        q("1")
+    );
+    for (g, r) in given.iter().zip(&got) {
+        assert_eq!(&qmul(g, &unit), r);
+    }
+    // σ = |A|² = |A_0|²(1 − t)² + 2⟨A_0, A_1⟩ t(1 − t) + |A_1|² t² = 2 − 2t + 3t²
+    let sigma: Vec<Q> = value(&o, "sigma")["power"]
+        .as_array()
+        .expect("power")
+        .iter()
+        .map(rat)
+        .collect();
+    assert_eq!(sigma, vec![q("2"), q("-2"), q("3")]);
+    assert_eq!(value(&o, "content")["exact"], "1");
+}
+
+/// No preimage: the message names the content and says why.
+#[test]
+fn ph_preimage_without_preimage_is_an_error() {
+    let dir = temp_dir("preimage-err");
+    let file = write(
+        &dir,
+        "r.toml",
+        "[[object]]\nname = \"c\"\nop = \"ph_preimage\"\npower = [[0, 0, 0], [0, 0, 0], [1, 0, 0]]\n",
+    );
+    let o = bin()
+        .arg("build")
+        .arg(&file)
+        .args(["--format", "json", "--out"])
+        .arg(dir.join("out"))
+        .output()
+        .expect("run");
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("gcd(x', y', z')"), "{}", stderr(&o));
+}
