@@ -7,6 +7,7 @@
 //!   parameters (`rcagd::ph::analysis`).
 //! * `ph_preimage`: the quaternion preimage `A(t)` of a PH curve, `r' = A i A*`
 //!   (`rcagd::ph::preimage::recover_preimage`).
+//! * `ph_dph_forms`: the quaternion DPH forms of a DPH curve (`rcagd::ph::dph_forms`).
 //! * `ph_qiq`: the solutions `Q(φ)` of `Q i Q* = c` (`rcagd::ph::preimage::solve_qiq_certified`).
 
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
@@ -20,7 +21,7 @@ use rcagd_geom::BezierCurve;
 use rcagd_io::quantity::{NamedQuantity, Quantity};
 
 /// The ops of this topic.
-pub const OPS: &[OpSpec] = &[PH_ANALYZE, PH_PREIMAGE, PH_QIQ];
+pub const OPS: &[OpSpec] = &[PH_ANALYZE, PH_PREIMAGE, PH_QIQ, PH_DPH_FORMS];
 
 type Q = Rational;
 
@@ -98,6 +99,59 @@ rotation = ["3/5", "4/5"]
 "#,
     build: build_ph_qiq,
 };
+
+const PH_DPH_FORMS: OpSpec = OpSpec {
+    name: "ph_dph_forms",
+    summary: "the quaternion forms of the DPH condition of a PH curve given by its preimage (Besednjak, DPH-krivulje in polinomske vijačnice, §4.2–4.3): f, g with r'×r'' = 2A(f j + g k)A*, f + i g = h(a + ib)² (4.12), B = A·C with r'×r'' = h·B i B* (Prop. 4.6), and D with (A*A' − A'*A) × i = h̃·D i D* ((4.21), built from the Hopf form αβ' − α'β = h̃(ã + ib̃)²: docs/math/ph-preimage.md#dph-forms)",
+    params: &[
+        ParamSpec::required(
+            "quaternions",
+            ParamKind::Points,
+            "Bernstein coefficients [u, v, p, q] of the preimage A(t), r' = A i A*",
+        ),
+        ParamSpec::with_default("start", ParamKind::Point3, "[0, 0, 0]", "r(0)"),
+    ],
+    example: r#"[[object]]
+name = "ph_cubic_dph_forms"
+op = "ph_dph_forms"
+quaternions = [[1, 0, 1, 0], [0, 1, 0, 1]]
+"#,
+    build: build_ph_dph_forms,
+};
+
+fn quat_poly_value(name: &str, doc: &str, x: &[Poly<Q>; 4]) -> NamedQuantity {
+    value(
+        name,
+        doc,
+        Quantity::Vector(x.iter().cloned().map(Quantity::poly_t).collect()),
+    )
+}
+
+fn build_ph_dph_forms(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let coeffs = super::ph::quaternions(args)?;
+    let start = <[Q; 3]>::try_from(args.point("start")?)
+        .map_err(|_| OpError::param("start", "r(0) must be [x, y, z]"))?;
+    let pc = PhCurve::new(coeffs, start)?;
+    let forms = rcagd::ph::dph_forms::dph_quaternion_forms(&pc)?;
+    let mut certificates = pc.certify();
+    certificates.extend(forms.certify());
+    let values = vec![
+        value("f", "f = up' − u'p + vq' − v'q", Quantity::poly_t(forms.f.clone())),
+        value("g", "g = uq' − u'q − vp' + v'p", Quantity::poly_t(forms.g.clone())),
+        value("h", "h of f + i g = h(a + ib)² (4.12)", Quantity::poly_t(forms.h.clone())),
+        value("a", "a of (4.12)", Quantity::poly_t(forms.a.clone())),
+        value("b", "b of (4.12)", Quantity::poly_t(forms.b.clone())),
+        quat_poly_value("C", "C = −b + a i + a j + b k, components [1, i, j, k]", &forms.c),
+        quat_poly_value("B", "B = A·C, r'×r'' = h·B i B* (Prop. 4.6)", &forms.b_quat),
+        value("h_hopf", "h̃ of αβ' − α'β = h̃(ã + ib̃)²", Quantity::poly_t(forms.h_hopf.clone())),
+        value("a_hopf", "ã", Quantity::poly_t(forms.a_hopf.clone())),
+        value("b_hopf", "b̃", Quantity::poly_t(forms.b_hopf.clone())),
+        quat_poly_value("D", "D = −ã + b̃ i − b̃ j − ã k, (A*A' − A'*A) × i = h̃·D i D* (4.21)", &forms.d),
+    ];
+    Ok(vec![args
+        .object(Geometry::Curve(pc.to_bezier()?), certificates)
+        .with_values(values)])
+}
 
 fn rotation(args: &OpArgs) -> Result<Option<(Q, Q)>, OpError> {
     Ok(args.opt_point("rotation")?.and_then(|v| match v.as_slice() {

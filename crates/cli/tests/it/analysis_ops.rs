@@ -158,3 +158,42 @@ fn ph_preimage_without_preimage_is_an_error() {
     assert!(!o.status.success());
     assert!(stderr(&o).contains("gcd(x', y', z')"), "{}", stderr(&o));
 }
+
+fn poly_value(o: &Value, name: &str) -> Vec<Q> {
+    value(o, name)["power"]
+        .as_array()
+        .expect("power")
+        .iter()
+        .map(rat)
+        .collect()
+}
+
+/// The cubic `A = (1 − t)(1 + j) + t(i + k)`: by hand `α = 1 − t + it`, `β = i(1 − t) + t`,
+/// so `αβ' − α'β = α₀β₁ − α₁β₀ = 1·1 − i·i = 2 = g + i f`: `f = 0`, `g = 2`; every
+/// factorization must reproduce `f + ig = h(a + ib)²` and `g + if = h̃(ã + ib̃)²`.
+#[test]
+fn ph_dph_forms_match_the_hand_derivation() {
+    let o = build_json(
+        "dph-forms",
+        "[[object]]\nname = \"c\"\nop = \"ph_dph_forms\"\nquaternions = [[1, 0, 1, 0], [0, 1, 0, 1]]\n",
+        "c",
+    );
+    assert_eq!(o["all_certificates_hold"], true);
+    assert!(poly_value(&o, "f").iter().all(|x| *x == q("0")));
+    assert_eq!(poly_value(&o, "g"), vec![q("2")]);
+    let c0 = |n: &str| poly_value(&o, n).first().cloned().unwrap_or(q("0"));
+    let (h, a, b) = (c0("h"), c0("a"), c0("b"));
+    // f + ig = h(a² − b²) + 2hab i = 2i
+    assert_eq!(
+        h.clone() * (a.clone() * a.clone() - b.clone() * b.clone()),
+        q("0")
+    );
+    assert_eq!(q("2") * h * a * b, q("2"));
+    let (h, a, b) = (c0("h_hopf"), c0("a_hopf"), c0("b_hopf"));
+    // g + if = h̃(ã² − b̃²) + 2h̃ãb̃ i = 2
+    assert_eq!(
+        h.clone() * (a.clone() * a.clone() - b.clone() * b.clone()),
+        q("2")
+    );
+    assert_eq!(q("2") * h * a * b, q("0"));
+}
