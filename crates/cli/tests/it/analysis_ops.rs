@@ -197,3 +197,53 @@ fn ph_dph_forms_match_the_hand_derivation() {
     );
     assert_eq!(q("2") * h * a * b, q("0"));
 }
+
+fn approx(o: &Value, name: &str) -> f64 {
+    value(o, name)["f64"].as_f64().expect("f64")
+}
+
+/// Besednjak Example 9.1 (`p_s = 0`, `d_s = (1, 0, 1)`, `p_f = (1, 1, 1)`,
+/// `d_f = (0, 1, 1)`), printed values: energies 1.2735954 (least), 89.576305 and
+/// 322.29811 (twice); axes (0.354664, 0.354664, 0.865117) and (0.309913, 0.309913,
+/// 0.898837) (up to sign); |κ/τ| = 0.586692 and 0.607333. The elimination quartic has
+/// four real roots, two of them valid.
+#[test]
+fn ph_hermite_values_reproduce_example_9_1() {
+    let o = build_json(
+        "hermite",
+        "[[object]]\nname = \"h\"\nop = \"ph_hermite\"\np_s = [0, 0, 0]\nd_s = [1, 0, 1]\np_f = [1, 1, 1]\nd_f = [0, 1, 1]\n",
+        "h",
+    );
+    assert_eq!(
+        value(&o, "quartic_roots")["items"]
+            .as_array()
+            .unwrap()
+            .len(),
+        4
+    );
+    assert_eq!(value(&o, "valid_roots")["exact"], 2);
+    assert_eq!(value(&o, "interpolants")["exact"], 4);
+    assert_eq!(value(&o, "elimination_quartic")["type"], "polynomial");
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-6 * b.abs().max(1.0);
+    assert!(close(approx(&o, "bending_energy"), 1.2735954));
+    assert!(close(approx(&o, "kappa_over_tau"), 0.586692));
+    let axis: Vec<f64> = value(&o, "axis")["f64"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap().abs())
+        .collect();
+    for (a, b) in axis.iter().zip([0.354664, 0.354664, 0.865117]) {
+        assert!((a - b).abs() < 1e-6, "{axis:?}");
+    }
+    assert_eq!(value(&o, "least_energy")["exact"], true);
+    // the other interpolants are the objects h_2, h_3, …
+    let o2 = build_json(
+        "hermite2",
+        "[[object]]\nname = \"h\"\nop = \"ph_hermite\"\np_s = [0, 0, 0]\nd_s = [1, 0, 1]\np_f = [1, 1, 1]\nd_f = [0, 1, 1]\n",
+        "h_3",
+    );
+    assert!(close(approx(&o2, "bending_energy"), 322.29811));
+    assert!(close(approx(&o2, "kappa_over_tau"), 0.607333));
+    assert_eq!(value(&o2, "rank")["exact"], 3);
+}
