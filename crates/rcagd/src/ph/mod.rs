@@ -36,6 +36,7 @@
 
 pub mod analysis;
 pub mod dph;
+pub mod dph_criteria;
 pub mod dph_forms;
 pub mod frame;
 pub mod helix;
