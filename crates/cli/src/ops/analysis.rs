@@ -4,7 +4,8 @@
 //! * `ph_analyze`: the PH test of a polynomial space curve (control points, power form
 //!   or quaternion preimage), its speed `σ`, arc length, `ρ` with `deg ρ ≤ 2n − 6`, the
 //!   DPH and helix tests with axis and `κ/τ`, and the exact Frenet data at given
-//!   parameters (`rcagd::ph::analysis`).
+//!   parameters (`rcagd::ph::analysis`); for a septic preimage also the ch. 7 helicity
+//!   criteria (`rcagd::ph::dph_criteria`).
 //! * `ph_preimage`: the quaternion preimage `A(t)` of a PH curve, `r' = A i A*`
 //!   (`rcagd::ph::preimage::recover_preimage`).
 //! * `ph_dph_forms`: the quaternion DPH forms of a DPH curve (`rcagd::ph::dph_forms`).
@@ -27,7 +28,7 @@ type Q = Rational;
 
 const PH_ANALYZE: OpSpec = OpSpec {
     name: "ph_analyze",
-    summary: "answers about a polynomial space curve, exact: the PH test (|r'|² = σ²), σ, arc length, ρ = |r'×r''|²/σ² with deg ρ ≤ 2n − 6, the DPH test ρ = c·ω̃², the helix test a·r' ≡ σ with axis and (κ/τ)², the DPH class of a quaternion preimage, and the Frenet frame, curvature and torsion at given parameters in Q(√ρ(t)) (Besednjak, DPH-krivulje in polinomske vijačnice, §3–4, 7)",
+    summary: "answers about a polynomial space curve, exact: the PH test (|r'|² = σ²), σ, arc length, ρ = |r'×r''|²/σ² with deg ρ ≤ 2n − 6, the DPH test ρ = c·ω̃², the helix test a·r' ≡ σ with axis and (κ/τ)², the DPH class of a quaternion preimage (for degree 7 with the helicity criteria of ch. 7: Lemma 7.1, Props. 7.6–7.9 and Δ of (7.11)), and the Frenet frame, curvature and torsion at given parameters in Q(√ρ(t)) (Besednjak, DPH-krivulje in polinomske vijačnice, §3–4, 7)",
     params: &[
         ParamSpec::optional(
             "points",
@@ -396,6 +397,42 @@ fn analysis_values(a: &PhAnalysis<Q>) -> Vec<NamedQuantity> {
     v
 }
 
+/// The ch. 7 helicity criteria of a DPH septic as values.
+fn chapter7_values(c: &rcagd::ph::dph_criteria::SepticDphCriteria) -> Vec<NamedQuantity> {
+    let mut v = vec![
+        value(
+            "ch7_statement",
+            "the statement of Besednjak ch. 7 that decides helicity",
+            Quantity::Text(c.statement.citation().into()),
+        ),
+        value(
+            "ch7_gcd_degree",
+            "r = deg gcd(α, β)",
+            Quantity::Integer(c.gcd_degree as i64),
+        ),
+        value(
+            "ch7_helical",
+            "the verdict of the ch. 7 criterion",
+            Quantity::Bool(c.helical),
+        ),
+    ];
+    if let Some(d) = &c.delta {
+        v.push(value(
+            "ch7_delta",
+            "Δ = 9h₂² + 3h₀h₄ − 12h₁h₃ (7.11), h monic; helical iff Δ ≥ 0 (Prop. 7.9)",
+            Quantity::Rational(d.clone()),
+        ));
+    }
+    if let Some(r) = c.w_roots_real_or_conjugate {
+        v.push(value(
+            "ch7_w_roots_real_or_conjugate",
+            "the roots of w are both real or conjugate (Lemma 7.5)",
+            Quantity::Bool(r),
+        ));
+    }
+    v
+}
+
 fn frenet_values(a: &PhAnalysis<Q>, ts: &[Q]) -> Result<Vec<NamedQuantity>, OpError> {
     let mut v = Vec::new();
     for (k, t) in ts.iter().enumerate() {
@@ -475,6 +512,12 @@ fn build_ph_analyze(args: &OpArgs) -> Result<Vec<Object>, OpError> {
                     Quantity::Text(class),
                 ));
                 certificates.extend(pc.certify());
+                if pc.preimage_degree() == 3 && matches!(a.dph, DphTest::Dph(_)) {
+                    if let Ok(c) = rcagd::ph::dph_criteria::septic_dph_criteria(pc) {
+                        values.extend(chapter7_values(&c));
+                        certificates.extend(c.certify());
+                    }
+                }
             }
             if let Some(ts) = args.opt_numbers("at")? {
                 values.extend(frenet_values(a, &ts)?);

@@ -247,3 +247,19 @@ fn ph_hermite_values_reproduce_example_9_1() {
     assert!(close(approx(&o2, "kappa_over_tau"), 0.607333));
     assert_eq!(value(&o2, "rank")["exact"], 3);
 }
+
+/// Besednjak Example 8.9 through `ph_analyze`: not a helix, decided by Prop. 7.9 with
+/// `Δ < 0` (printed Δ = −9 for the printed h; ours is for h monic, same sign).
+#[test]
+fn ph_analyze_reports_the_chapter_7_criterion() {
+    let o = build_json(
+        "ch7",
+        "[[object]]\nname = \"c\"\nop = \"ph_analyze\"\nquaternions = [[1, 0, 0, -1], [1, 0, 0, \"-2/3\"], [2, 1, -1, \"-2/3\"], [2, 3, -2, 0]]\n",
+        "c",
+    );
+    assert_eq!(o["all_certificates_hold"], true);
+    assert_eq!(value(&o, "ch7_statement")["exact"], "Besednjak Prop. 7.9");
+    assert_eq!(value(&o, "ch7_helical")["exact"], false);
+    assert_eq!(value(&o, "helix")["exact"], "not a helix");
+    assert!(rat(&value(&o, "ch7_delta")["exact"]) < q("0"));
+}
