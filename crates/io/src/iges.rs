@@ -341,14 +341,11 @@ pub fn write_iges_with(objects: &[Object], opts: &IgesOptions) -> Result<String,
     let (y, mo, d, h, mi, s) = civil_time(secs);
     let date = format!("{y:04}{mo:02}{d:02}.{h:02}{mi:02}{s:02}");
     let version = env!("CARGO_PKG_VERSION");
-    // the Start section text in lines of at most 72 columns (a count of 100 objects or
-    // more makes the sentence longer than one line)
-    let text = format!(
-        "rcagd exact rational geometry (IGES 5.3): {} object(s), entities 126/128",
-        exch.len()
-    );
-    let chars: Vec<char> = text.chars().collect();
-    let start: Vec<String> = chars.chunks(72).map(|c| c.iter().collect()).collect();
+    // one Start line each, so that no count overflows the 72 columns of a card
+    let start = [
+        "rcagd exact rational geometry (IGES 5.3)".to_string(),
+        format!("{} object(s), entities 126/128", exch.len()),
+    ];
     let global = vec![
         hollerith(","),
         hollerith(";"),

@@ -231,6 +231,7 @@ struct Iges {
 
 fn parse_sections(text: &str) -> Result<Iges, IoError> {
     let mut global = String::new();
+    let mut global_line: Option<usize> = None;
     let mut dlines: Vec<(usize, String)> = Vec::new();
     let mut plines: Vec<(usize, String)> = Vec::new();
     let mut seen_t = false;
@@ -256,7 +257,10 @@ fn parse_sections(text: &str) -> Result<Iges, IoError> {
         let data = &line[..72];
         match section {
             'S' => {}
-            'G' => global.push_str(data),
+            'G' => {
+                global_line.get_or_insert(n);
+                global.push_str(data)
+            }
             'D' => dlines.push((n, data.to_string())),
             'P' => plines.push((n, line.to_string())),
             'T' => seen_t = true,
@@ -289,7 +293,7 @@ fn parse_sections(text: &str) -> Result<Iges, IoError> {
     } else {
         return Err(IoError::read(
             "IGES",
-            None,
+            global_line,
             None,
             "Global section: cannot read the parameter delimiter",
         ));

@@ -44,6 +44,9 @@ pub enum Quantity {
     },
     /// A vector (a point, a direction, a list of solutions).
     Vector(Vec<Quantity>),
+    /// A number known only approximately (a quadrature, a floating-point root), marked as
+    /// such: JSON `"exact": null`.
+    Approx(f64),
 }
 
 impl Quantity {
@@ -71,6 +74,7 @@ impl Quantity {
             Quantity::Polynomial { .. } => "polynomial",
             Quantity::RealRoot { .. } => "real_root",
             Quantity::Vector(_) => "vector",
+            Quantity::Approx(_) => "float",
         }
     }
 
@@ -81,6 +85,7 @@ impl Quantity {
             Quantity::Rational(q) => Some(Scalar::to_f64(q)),
             Quantity::Quadratic(x) => Some(quad_f64(x)),
             Quantity::RealRoot { poly, interval } => interval.root_f64(poly).ok(),
+            Quantity::Approx(x) => Some(*x),
             _ => None,
         }
     }
@@ -147,6 +152,9 @@ impl Quantity {
                     );
                 }
             }
+            Quantity::Approx(_) => {
+                map.insert("exact".into(), Value::Null);
+            }
             Quantity::Text(_) | Quantity::Rational(_) => {}
         }
         v
@@ -181,6 +189,7 @@ impl fmt::Display for Quantity {
                     format_rational(&interval.hi)
                 )
             }
+            Quantity::Approx(x) => write!(f, "≈ {x}"),
             Quantity::Vector(items) => {
                 f.write_str("(")?;
                 for (i, x) in items.iter().enumerate() {
@@ -230,6 +239,7 @@ impl NamedQuantity {
     pub fn summary_line(&self) -> String {
         let exact = self.value.to_string();
         match (&self.value, self.value.to_f64()) {
+            (Quantity::Approx(x), _) => format!("{} ≈ {x}", self.name),
             (Quantity::Rational(_) | Quantity::Integer(_), _) | (_, None) => {
                 format!("{} = {exact}", self.name)
             }
@@ -279,5 +289,10 @@ mod tests {
         let n = NamedQuantity::new("helix", "is a helix", Quantity::Bool(true));
         assert_eq!(n.to_json()["exact"], json!(true));
         assert_eq!(n.summary_line(), "helix = true");
+        let e = NamedQuantity::new("energy", "a quadrature", Quantity::Approx(1.5));
+        assert_eq!(e.to_json()["exact"], Value::Null);
+        assert_eq!(e.to_json()["f64"], json!(1.5));
+        assert_eq!(e.to_json()["type"], "float");
+        assert_eq!(e.summary_line(), "energy ≈ 1.5");
     }
 }

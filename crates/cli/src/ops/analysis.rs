@@ -4,7 +4,12 @@
 //! * `ph_analyze`: the PH test of a polynomial space curve (control points, power form
 //!   or quaternion preimage), its speed `σ`, arc length, `ρ` with `deg ρ ≤ 2n − 6`, the
 //!   DPH and helix tests with axis and `κ/τ`, and the exact Frenet data at given
-//!   parameters (`rcagd::ph::analysis`).
+//!   parameters (`rcagd::ph::analysis`); for a septic preimage also the ch. 7 helicity
+//!   criteria (`rcagd::ph::dph_criteria`).
+//! * `ph_preimage`: the quaternion preimage `A(t)` of a PH curve, `r' = A i A*`
+//!   (`rcagd::ph::preimage::recover_preimage`).
+//! * `ph_dph_forms`: the quaternion DPH forms of a DPH curve (`rcagd::ph::dph_forms`).
+//! * `ph_qiq`: the solutions `Q(φ)` of `Q i Q* = c` (`rcagd::ph::preimage::solve_qiq_certified`).
 
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
@@ -17,13 +22,13 @@ use rcagd_geom::BezierCurve;
 use rcagd_io::quantity::{NamedQuantity, Quantity};
 
 /// The ops of this topic.
-pub const OPS: &[OpSpec] = &[PH_ANALYZE];
+pub const OPS: &[OpSpec] = &[PH_ANALYZE, PH_PREIMAGE, PH_QIQ, PH_DPH_FORMS];
 
 type Q = Rational;
 
 const PH_ANALYZE: OpSpec = OpSpec {
     name: "ph_analyze",
-    summary: "answers about a polynomial space curve, exact: the PH test (|r'|² = σ²), σ, arc length, ρ = |r'×r''|²/σ² with deg ρ ≤ 2n − 6, the DPH test ρ = c·ω̃², the helix test a·r' ≡ σ with axis and (κ/τ)², the DPH class of a quaternion preimage, and the Frenet frame, curvature and torsion at given parameters in Q(√ρ(t)) (Besednjak, DPH-krivulje in polinomske vijačnice, §3–4, 7)",
+    summary: "answers about a polynomial space curve, exact: the PH test (|r'|² = σ²), σ, arc length, ρ = |r'×r''|²/σ² with deg ρ ≤ 2n − 6, the DPH test ρ = c·ω̃², the helix test a·r' ≡ σ with axis and (κ/τ)², the DPH class of a quaternion preimage (for degree 7 with the helicity criteria of ch. 7: Lemma 7.1, Props. 7.6–7.9 and Δ of (7.11)), and the Frenet frame, curvature and torsion at given parameters in Q(√ρ(t)) (Besednjak, DPH-krivulje in polinomske vijačnice, §3–4, 7)",
     params: &[
         ParamSpec::optional(
             "points",
@@ -60,6 +65,173 @@ at = [0, "1/2"]
 "#,
     build: build_ph_analyze,
 };
+
+const PH_PREIMAGE: OpSpec = OpSpec {
+    name: "ph_preimage",
+    summary: "the quaternion preimage A(t) of a PH curve, r' = A i A*, recovered exactly from its hodograph (Besednjak, DPH-krivulje in polinomske vijačnice, Remark 3.15; construction in docs/math/ph-preimage.md): Bernstein coefficients A_l = [u, v, p, q], the components u, v, p, q, σ = |A|², the content gcd(x', y', z') and the number of choices of its complex factors; every other preimage of a choice is A·(cos φ + i sin φ)",
+    params: &[
+        ParamSpec::optional("points", ParamKind::Points, "Bézier control points [x, y, z] of a PH curve on t ∈ [0, 1]"),
+        ParamSpec::optional("power", ParamKind::Points, "instead of `points`: power-form coefficients [x_k, y_k, z_k] of t^k"),
+        ParamSpec::optional("quaternions", ParamKind::Points, "instead of `points`: Bernstein coefficients [u, v, p, q] of some preimage (a round trip)"),
+        ParamSpec::with_default("start", ParamKind::Point3, "[0, 0, 0]", "r(0) for `quaternions`"),
+        ParamSpec::with_default("choice", ParamKind::Int, "0", "which complex factors of the content gcd(x', y', z') go into A (0 … choices − 1)"),
+        ParamSpec::optional("rotation", ParamKind::Point2, "[cos φ, sin φ] (rational, cos²φ + sin²φ = 1): the member A·(cos φ + i sin φ) of the family"),
+    ],
+    example: r#"[[object]]
+name = "ph_cubic_preimage"
+op = "ph_preimage"
+points = [[0, 0, 0], [0, 0, "-2/3"], ["1/3", "2/3", -1], ["2/3", "4/3", "-1/3"]]
+"#,
+    build: build_ph_preimage,
+};
+
+const PH_QIQ: OpSpec = OpSpec {
+    name: "ph_qiq",
+    summary: "the solution Q(φ) of Q i Q* = c (Besednjak, DPH-krivulje in polinomske vijačnice, Lemma 2.1, with the branch Q = √|c|(cos φ j + sin φ k) for every c = −|c| i), exact when |c| and (|c| + c_x)/2 are rational squares; the object is the PH segment t·c with preimage Q",
+    params: &[
+        ParamSpec::required("c", ParamKind::Point3, "the right-hand side c ≠ 0"),
+        ParamSpec::optional("rotation", ParamKind::Point2, "[cos φ, sin φ] (rational, cos²φ + sin²φ = 1); default φ = 0"),
+    ],
+    example: r#"[[object]]
+name = "lemma_2_1_solution"
+op = "ph_qiq"
+c = [-1, 2, 2]
+rotation = ["3/5", "4/5"]
+"#,
+    build: build_ph_qiq,
+};
+
+const PH_DPH_FORMS: OpSpec = OpSpec {
+    name: "ph_dph_forms",
+    summary: "the quaternion forms of the DPH condition of a PH curve given by its preimage (Besednjak, DPH-krivulje in polinomske vijačnice, §4.2–4.3): f, g with r'×r'' = 2A(f j + g k)A*, f + i g = h(a + ib)² (4.12), B = A·C with r'×r'' = h·B i B* (Prop. 4.6), and D with (A*A' − A'*A) × i = h̃·D i D* ((4.21), built from the Hopf form αβ' − α'β = h̃(ã + ib̃)²: docs/math/ph-preimage.md#dph-forms)",
+    params: &[
+        ParamSpec::required(
+            "quaternions",
+            ParamKind::Points,
+            "Bernstein coefficients [u, v, p, q] of the preimage A(t), r' = A i A*",
+        ),
+        ParamSpec::with_default("start", ParamKind::Point3, "[0, 0, 0]", "r(0)"),
+    ],
+    example: r#"[[object]]
+name = "ph_cubic_dph_forms"
+op = "ph_dph_forms"
+quaternions = [[1, 0, 1, 0], [0, 1, 0, 1]]
+"#,
+    build: build_ph_dph_forms,
+};
+
+fn quat_poly_value(name: &str, doc: &str, x: &[Poly<Q>; 4]) -> NamedQuantity {
+    value(
+        name,
+        doc,
+        Quantity::Vector(x.iter().cloned().map(Quantity::poly_t).collect()),
+    )
+}
+
+fn build_ph_dph_forms(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let coeffs = super::ph::quaternions(args)?;
+    let start = <[Q; 3]>::try_from(args.point("start")?)
+        .map_err(|_| OpError::param("start", "r(0) must be [x, y, z]"))?;
+    let pc = PhCurve::new(coeffs, start)?;
+    let forms = rcagd::ph::dph_forms::dph_quaternion_forms(&pc)?;
+    let mut certificates = pc.certify();
+    certificates.extend(forms.certify());
+    let values = vec![
+        value("f", "f = up' − u'p + vq' − v'q", Quantity::poly_t(forms.f.clone())),
+        value("g", "g = uq' − u'q − vp' + v'p", Quantity::poly_t(forms.g.clone())),
+        value("h", "h of f + i g = h(a + ib)² (4.12)", Quantity::poly_t(forms.h.clone())),
+        value("a", "a of (4.12)", Quantity::poly_t(forms.a.clone())),
+        value("b", "b of (4.12)", Quantity::poly_t(forms.b.clone())),
+        quat_poly_value("C", "C = −b + a i + a j + b k, components [1, i, j, k]", &forms.c),
+        quat_poly_value("B", "B = A·C, r'×r'' = h·B i B* (Prop. 4.6)", &forms.b_quat),
+        value("h_hopf", "h̃ of αβ' − α'β = h̃(ã + ib̃)²", Quantity::poly_t(forms.h_hopf.clone())),
+        value("a_hopf", "ã", Quantity::poly_t(forms.a_hopf.clone())),
+        value("b_hopf", "b̃", Quantity::poly_t(forms.b_hopf.clone())),
+        quat_poly_value("D", "D = −ã + b̃ i − b̃ j − ã k, (A*A' − A'*A) × i = h̃·D i D* (4.21)", &forms.d),
+    ];
+    Ok(vec![args
+        .object(Geometry::Curve(pc.to_bezier()?), certificates)
+        .with_values(values)])
+}
+
+fn rotation(args: &OpArgs) -> Result<Option<(Q, Q)>, OpError> {
+    Ok(args.opt_point("rotation")?.and_then(|v| match v.as_slice() {
+        [c, s] => Some((c.clone(), s.clone())),
+        _ => None,
+    }))
+}
+
+fn quaternion_values(name: &str, doc: &str, a: &[rcagd_algebra::Quaternion<Q>]) -> NamedQuantity {
+    value(
+        name,
+        doc,
+        Quantity::Vector(
+            a.iter()
+                .map(|q| Quantity::rationals(&[q.w.clone(), q.x.clone(), q.y.clone(), q.z.clone()]))
+                .collect(),
+        ),
+    )
+}
+
+fn build_ph_preimage(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let (bez, _) = input_curve(args)?;
+    let polys = bez.coordinate_polys();
+    let [_, x, y, z] = <[Poly<Q>; 4]>::try_from(polys)
+        .map_err(|_| OpError::new("the curve must lie in space (x, y, z)"))?;
+    let choice = usize::try_from(args.int("choice")?)
+        .map_err(|_| OpError::param("choice", "a choice is 0, 1, …"))?;
+    let rec = rcagd::ph::preimage::recover_preimage([x, y, z], choice)?;
+    let mut certificates = rec.certify();
+    let curve = match rotation(args)? {
+        Some((c, s)) => {
+            let rotated = rec
+                .rotated(&c, &s)
+                .map_err(|e| OpError::param("rotation", e.to_string()))?;
+            certificates.extend(rotated.certify());
+            rotated
+        }
+        None => rec.curve.clone(),
+    };
+    let [u, v, p, q] = curve.preimage();
+    let values = vec![
+        quaternion_values(
+            "quaternion_coefficients",
+            "Bernstein coefficients A_l = [u, v, p, q] of A(t) = u + v i + p j + q k",
+            curve.coefficients(),
+        ),
+        value("u", "u(t), power form", Quantity::poly_t(u)),
+        value("v", "v(t)", Quantity::poly_t(v)),
+        value("p", "p(t)", Quantity::poly_t(p)),
+        value("q", "q(t)", Quantity::poly_t(q)),
+        value("sigma", "σ = |A|² = u² + v² + p² + q²", Quantity::poly_t(curve.speed())),
+        value("content", "gcd(x', y', z'), monic", Quantity::poly_t(rec.content.clone())),
+        value(
+            "choices",
+            "number of choices of complex factors of the content",
+            Quantity::Integer(rec.choices as i64),
+        ),
+    ];
+    Ok(vec![args
+        .object(Geometry::Curve(curve.to_bezier()?), certificates)
+        .with_values(values)])
+}
+
+fn build_ph_qiq(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c = <[Q; 3]>::try_from(args.point("c")?)
+        .map_err(|_| OpError::param("c", "c must be [x, y, z]"))?;
+    let sol = rcagd::ph::preimage::solve_qiq_certified(&c, rotation(args)?)?;
+    let values = vec![
+        quaternion_values("q", "Q = [w, x, y, z] = w + x i + y j + z k with Q i Q* = c", std::slice::from_ref(&sol.q)),
+        value(
+            "rotation",
+            "[cos φ, sin φ] of the member Q(φ)",
+            Quantity::rationals(&[sol.rotation.0.clone(), sol.rotation.1.clone()]),
+        ),
+    ];
+    Ok(vec![args
+        .object(Geometry::Curve(sol.segment.to_bezier()?), sol.certify())
+        .with_values(values)])
+}
 
 fn value(name: &str, doc: &str, v: Quantity) -> NamedQuantity {
     NamedQuantity::new(name, doc, v)
@@ -225,6 +397,42 @@ fn analysis_values(a: &PhAnalysis<Q>) -> Vec<NamedQuantity> {
     v
 }
 
+/// The ch. 7 helicity criteria of a DPH septic as values.
+fn chapter7_values(c: &rcagd::ph::dph_criteria::SepticDphCriteria) -> Vec<NamedQuantity> {
+    let mut v = vec![
+        value(
+            "ch7_statement",
+            "the statement of Besednjak ch. 7 that decides helicity",
+            Quantity::Text(c.statement.citation().into()),
+        ),
+        value(
+            "ch7_gcd_degree",
+            "r = deg gcd(α, β)",
+            Quantity::Integer(c.gcd_degree as i64),
+        ),
+        value(
+            "ch7_helical",
+            "the verdict of the ch. 7 criterion",
+            Quantity::Bool(c.helical),
+        ),
+    ];
+    if let Some(d) = &c.delta {
+        v.push(value(
+            "ch7_delta",
+            "Δ = 9h₂² + 3h₀h₄ − 12h₁h₃ (7.11), h monic; helical iff Δ ≥ 0 (Prop. 7.9)",
+            Quantity::Rational(d.clone()),
+        ));
+    }
+    if let Some(r) = c.w_roots_real_or_conjugate {
+        v.push(value(
+            "ch7_w_roots_real_or_conjugate",
+            "the roots of w are both real or conjugate (Lemma 7.5)",
+            Quantity::Bool(r),
+        ));
+    }
+    v
+}
+
 fn frenet_values(a: &PhAnalysis<Q>, ts: &[Q]) -> Result<Vec<NamedQuantity>, OpError> {
     let mut v = Vec::new();
     for (k, t) in ts.iter().enumerate() {
@@ -304,6 +512,12 @@ fn build_ph_analyze(args: &OpArgs) -> Result<Vec<Object>, OpError> {
                     Quantity::Text(class),
                 ));
                 certificates.extend(pc.certify());
+                if pc.preimage_degree() == 3 && matches!(a.dph, DphTest::Dph(_)) {
+                    if let Ok(c) = rcagd::ph::dph_criteria::septic_dph_criteria(pc) {
+                        values.extend(chapter7_values(&c));
+                        certificates.extend(c.certify());
+                    }
+                }
             }
             if let Some(ts) = args.opt_numbers("at")? {
                 values.extend(frenet_values(a, &ts)?);

@@ -16,8 +16,12 @@ use crate::value::ParamKind;
 use num_traits::{One, Zero};
 use rcagd::ph::dph::{certify_dph_septic, dph_septic, dph_septic_z_roots};
 use rcagd::ph::{
-    DphTest, HelixTest, HermiteData, HermiteInterpolant, LineCircle, PhCurve, PhPolyCurve,
+    DphTest, HelixTest, HermiteData, HermiteInterpolant, HermiteSolution, LineCircle, PhCurve,
+    PhPolyCurve,
 };
+use rcagd_algebra::quadratic::QuadExt;
+use rcagd_algebra::roots::RootInterval;
+use rcagd_io::quantity::{NamedQuantity, Quantity};
 use rcagd_algebra::complex::Complex;
 use rcagd_algebra::quaternion::Quaternion;
 use rcagd_algebra::rational::format_rational;
@@ -754,7 +758,131 @@ fn build_ph_hermite(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             (_, true) => format!("{}_{}_min", args.name(), k + 1),
             (_, false) => format!("{}_{}", args.name(), k + 1),
         };
-        out.push(named(args, name, Geometry::Curve(bez), certs));
+        let mut values = if k == 0 {
+            hermite_problem_values(&sol)
+        } else {
+            Vec::new()
+        };
+        values.extend(hermite_interpolant_values(s, k + 1, exact));
+        out.push(named(args, name, Geometry::Curve(bez), certs).with_values(values));
     }
     Ok(out)
+}
+
+/// A polynomial over `Q(√d)` as a value: a rational polynomial in `var` when it is one,
+/// else the vector of its power coefficients.
+fn quad_poly_value(p: &Poly<QuadExt>, var: &str) -> Quantity {
+    if p.coeffs().iter().all(|c| c.b().is_zero()) {
+        Quantity::Polynomial {
+            variable: var.into(),
+            poly: p.map(|c| c.a().clone()),
+        }
+    } else {
+        Quantity::Vector(p.coeffs().iter().cloned().map(Quantity::Quadratic).collect())
+    }
+}
+
+/// The values of the whole Hermite problem (on the least-energy object): the elimination
+/// quartic, its real roots (exact, or with an exact isolating interval), counts.
+fn hermite_problem_values(sol: &HermiteSolution<QuadExt>) -> Vec<NamedQuantity> {
+    let rational_quartic = sol
+        .quartic
+        .coeffs()
+        .iter()
+        .map(QuadExt::to_rational)
+        .collect::<Option<Vec<Q>>>()
+        .map(Poly::new);
+    let roots: Vec<Quantity> = sol
+        .roots
+        .iter()
+        .map(|r| match (&r.exact, &rational_quartic, r.lo.to_rational(), r.hi.to_rational()) {
+            (Some(x), _, _, _) => Quantity::Quadratic(x.clone()),
+            (None, Some(poly), Some(lo), Some(hi)) => Quantity::RealRoot {
+                poly: poly.clone(),
+                interval: RootInterval { lo, hi },
+            },
+            _ => Quantity::Vector(vec![
+                Quantity::Quadratic(r.lo.clone()),
+                Quantity::Quadratic(r.hi.clone()),
+            ]),
+        })
+        .collect();
+    let valid = sol.roots.iter().filter(|r| r.valid).count();
+    vec![
+        NamedQuantity::new(
+            "elimination_quartic",
+            "Q(s), s = r₁ = 16k₀²: Besednjak (9.22) and (9.26) eliminated in r₁ instead of ξ = tan(φ/2); its real roots give the interpolants",
+            quad_poly_value(&sol.quartic, "s"),
+        ),
+        NamedQuantity::new(
+            "quartic_roots",
+            "the real roots s of Q, exact or with an exact isolating interval",
+            Quantity::Vector(roots),
+        ),
+        NamedQuantity::new(
+            "valid_roots",
+            "roots with r₁ ≥ 0, r₂ ≥ 0, r₃ ≠ 0 (each gives two interpolants)",
+            Quantity::Integer(valid as i64),
+        ),
+        NamedQuantity::new(
+            "interpolants",
+            "number of interpolating helical quintics",
+            Quantity::Integer(sol.interpolants.len() as i64),
+        ),
+    ]
+}
+
+/// The values of one interpolant: rank, energy, k₀, k₂, φ, the helix axis.
+fn hermite_interpolant_values(
+    s: &HermiteInterpolant,
+    rank: usize,
+    exact: bool,
+) -> Vec<NamedQuantity> {
+    let mut v = vec![
+        NamedQuantity::new(
+            "rank",
+            "rank by increasing bending energy (1 = least)",
+            Quantity::Integer(rank as i64),
+        ),
+        NamedQuantity::new(
+            "least_energy",
+            "the least bending energy of all interpolants",
+            Quantity::Bool(s.least_energy),
+        ),
+        NamedQuantity::new(
+            "bending_energy",
+            "E = ∫κ²σ dt (Besednjak (9.29)), by adaptive quadrature",
+            Quantity::Approx(s.bending_energy),
+        ),
+        NamedQuantity::new("k0", "k₀ = c₀ + 3/4", Quantity::Approx(s.k0)),
+        NamedQuantity::new("k2", "k₂ = c₂ + 3/4", Quantity::Approx(s.k2)),
+        NamedQuantity::new("phi", "φ with A₂ = Â₂e^{iφ}", Quantity::Approx(s.phi)),
+        NamedQuantity::new(
+            "exact_control_points",
+            "the control points are exact (rational root and square roots)",
+            Quantity::Bool(exact),
+        ),
+    ];
+    match &s.helix {
+        HelixTest::Helix(h) => {
+            let n = h.a.iter().map(|x| x * x).sum::<f64>().sqrt();
+            v.push(NamedQuantity::new(
+                "axis",
+                "unit helix axis a/|a| with a·r' ≡ σ",
+                Quantity::Vector(h.a.iter().map(|x| Quantity::Approx(x / n)).collect()),
+            ));
+            v.push(NamedQuantity::new(
+                "kappa_over_tau",
+                "|κ/τ| = tan ψ = √(|a|² − 1)",
+                Quantity::Approx((n * n - 1.0).max(0.0).sqrt()),
+            ));
+        }
+        HelixTest::Planar { normal } => v.push(NamedQuantity::new(
+            "plane_normal",
+            "planar interpolant: n with n·r' ≡ 0",
+            Quantity::Vector(normal.iter().map(|x| Quantity::Approx(*x)).collect()),
+        )),
+        HelixTest::Line | HelixTest::NotHelix => {}
+    }
+    v
 }

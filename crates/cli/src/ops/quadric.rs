@@ -4,7 +4,8 @@
 //! from a Miquel configuration, and an exact cover of the whole sphere.
 //!
 //! Every op takes the same quadric parameters: `quadric` (a name, default the unit sphere
-//! with Jüttler's δ; `"seed_paraboloid"` uses Jüttler's ψ; every other quadric its
+//! with Jüttler's δ; `"hyperbolic_paraboloid_xy"` (z = xy, formerly `"seed_paraboloid"`,
+//! still accepted) uses Jüttler's ψ; every other quadric its
 //! rational normal form `B∘N_{a,e}`), `coefficients` (the named quadric's numbers),
 //! `matrix` (a symmetric 4×4 matrix, with `quadric = "matrix"`) and `rational_point`.
 
@@ -41,6 +42,7 @@ const QUADRIC_NAMES: &[&str] = &[
     "hyperboloid_two_sheets",
     "elliptic_paraboloid",
     "hyperbolic_paraboloid",
+    "hyperbolic_paraboloid_xy",
     "seed_paraboloid",
     "cone",
     "elliptic_cylinder",
@@ -53,7 +55,7 @@ const QUADRIC: ParamSpec = ParamSpec::with_default(
     "quadric",
     ParamKind::Choice(QUADRIC_NAMES),
     "\"unit_sphere\"",
-    "the quadric: unit_sphere (seed δ), seed_paraboloid h0h3 = h1h2 (seed ψ), a named quadric with `coefficients`, or \"matrix\"",
+    "the quadric: unit_sphere (Jüttler's δ), hyperbolic_paraboloid_xy z = xy, i.e. h0h3 = h1h2 (Jüttler's ψ; \"seed_paraboloid\" is a deprecated alias), a named quadric with `coefficients`, or \"matrix\"",
 );
 const COEFFICIENTS: ParamSpec = ParamSpec::with_default(
     "coefficients",
@@ -285,7 +287,7 @@ fn target(args: &OpArgs) -> Result<Target, OpError> {
                     certs: Vec::new(),
                 })
             }
-            "seed_paraboloid" if coefficients.is_empty() => {
+            "hyperbolic_paraboloid_xy" | "seed_paraboloid" if coefficients.is_empty() => {
                 return Ok(Target {
                     proj: Box::new(Psi),
                     certs: Vec::new(),

@@ -1,6 +1,7 @@
 //! The integration tests of `rcagd-cli`, in one test binary (one link instead of one per file;
 //! see docs/ARCHITECTURE.md, "Tests").
 
+mod analysis_ops;
 mod cli;
 mod common;
 mod docs;

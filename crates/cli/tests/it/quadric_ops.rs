@@ -252,7 +252,7 @@ fn quadric_parameter_errors_are_located() {
         "exceptional-line",
         &recipe(
             "quadric_curve_image",
-            "points = [[0, 0, 0], [1, 0, 0]]\nquadric = \"seed_paraboloid\"\n",
+            "points = [[0, 0, 0], [1, 0, 0]]\nquadric = \"hyperbolic_paraboloid_xy\"\n",
         ),
         None,
         "vanishes identically",
@@ -291,7 +291,8 @@ fn patch_errors_are_located() {
         Some("weights"),
         "not both",
     );
-    // the patch lies in the focal line of ψ
+    // the patch lies in the focal line of ψ (the deprecated name "seed_paraboloid" of
+    // "hyperbolic_paraboloid_xy" is still accepted)
     expect_error(
         "patch-exceptional",
         &recipe(
@@ -431,4 +432,32 @@ fn every_example_builds_with_all_certificates() {
         );
         assert!(!text.contains("\"holds\":false"), "{}", op.name);
     }
+}
+
+/// `"seed_paraboloid"` is a deprecated alias of `"hyperbolic_paraboloid_xy"` (z = xy):
+/// both give the same patch.
+#[test]
+fn seed_paraboloid_is_an_alias() {
+    let dir = crate::common::temp_dir("paraboloid-alias");
+    let net = "net = [[[0, 0, 1], [0, 1, 1]], [[1, 0, 1], [1, 1, 2]]]\n";
+    let text = format!(
+        "[[object]]\nname = \"new\"\nop = \"quadric_patch_image\"\n{net}quadric = \"hyperbolic_paraboloid_xy\"\n\n[[object]]\nname = \"old\"\nop = \"quadric_patch_image\"\n{net}quadric = \"seed_paraboloid\"\n"
+    );
+    let file = crate::common::write(&dir, "r.toml", &text);
+    let out = dir.join("out");
+    let o = crate::common::bin()
+        .arg("build")
+        .arg(&file)
+        .args(["--format", "json", "--out"])
+        .arg(&out)
+        .output()
+        .expect("run");
+    assert!(o.status.success(), "{}", crate::common::stderr(&o));
+    let read = |n: &str| -> serde_json::Value {
+        serde_json::from_str(&std::fs::read_to_string(out.join(format!("{n}.json"))).unwrap())
+            .unwrap()
+    };
+    let (a, b) = (read("new"), read("old"));
+    assert_eq!(a["control_points"], b["control_points"]);
+    assert_eq!(a["all_certificates_hold"], true);
 }

@@ -223,7 +223,8 @@ END-ISO-10303-21;
 fn iges_snapshot_of_a_quarter_circle() {
     let text = iges_text(&[quarter_object()]);
     let want = "\
-rcagd exact rational geometry (IGES 5.3): 1 object(s), entities 126/128 S      1
+rcagd exact rational geometry (IGES 5.3)                                S      1
+1 object(s), entities 126/128                                           S      2
 1H,,1H;,9Hrcagd.igs,9Hrcagd.igs,11Hrcagd 0.1.0,14Hrcagd-io 0.1.0,32,38, G      1
 6,308,15,9Hrcagd.igs,1.,2,2HMM,1,0.01,15H20240101.000000,1.E-07,1.,     G      2
 5Hrcagd,5Hrcagd,11,0,15H20240101.000000,;                               G      3
@@ -237,9 +238,22 @@ rcagd exact rational geometry (IGES 5.3): 1 object(s), entities 126/128 S      1
 1.,0.,0.,1.,0.,0.,1.;                                                  1P      2
 406,1,3Harc;                                                           3P      3
 402,1,1,0,1,3;                                                         5P      4
-S      1G      3D      6P      4                                        T      1
+S      2G      3D      6P      4                                        T      1
 ";
     assert_eq!(text, want);
+}
+
+/// A regression: with 100 or more objects the one-line Start section was 81 characters
+/// wide, and the reader (rightly) refused the file. Every card is 80 columns.
+#[test]
+fn iges_cards_stay_80_columns_with_many_objects() {
+    let objects: Vec<_> = (0..120).map(|_| quarter_object()).collect();
+    let text = iges_text(&objects);
+    assert!(
+        text.lines().all(|l| l.len() == 80),
+        "a card is not 80 columns"
+    );
+    rcagd_io::iges_read::read_iges(&text).expect("reads back");
 }
 
 fn assert_err_mentions(
@@ -302,21 +316,21 @@ fn malformed_iges_is_an_error_with_line_and_entity() {
     use rcagd_io::iges_read::read_iges;
     let good = iges_text(&[quarter_object()]);
     let lines: Vec<&str> = good.lines().collect();
-    // a negative weight on the first P line of entity DE 1 (file line 11)
+    // a negative weight on the first P line of entity DE 1 (file line 12)
     let bad = good.replace("1.,1.,1.,1.,1.,2.,", "1.,1.,1.,1.,0.,2.,");
-    assert_err_mentions(read_iges(&bad), &["line 11", "DE 1", "weight"]);
+    assert_err_mentions(read_iges(&bad), &["line 12", "DE 1", "weight"]);
     // knots not clamped
     let bad = good.replace(
         "126,2,2,1,0,0,0,0.,0.,0.,1.,",
         "126,2,2,1,0,0,0,0.,0.,5.,1.,",
     );
-    assert_err_mentions(read_iges(&bad), &["line 11", "DE 1", "knot"]);
+    assert_err_mentions(read_iges(&bad), &["line 12", "DE 1", "knot"]);
     // a parameter pointer beyond the P section
     let bad = good.replace(
         "     126       1       0       0       0       0       0       000020000D      1",
         "     126      17       0       0       0       0       0       000020000D      1",
     );
-    assert_err_mentions(read_iges(&bad), &["line 5", "DE 1"]);
+    assert_err_mentions(read_iges(&bad), &["line 6", "DE 1"]);
     // a group member that does not exist
     let bad = good.replace("402,1,1,0,1,3;", "402,1,9,0,1,3;");
     assert_err_mentions(read_iges(&bad), &["DE 5", "DE 9"]);

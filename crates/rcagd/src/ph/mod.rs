@@ -25,6 +25,8 @@
 //! * [`helix`]: the helix test (axis `a·r' ≡ σ`, Lancret), line/circle seeds and the
 //!   helix constructions by reparametrization, multiplication and both (docs/math/ph-curves.md, "Helix test and axis", "Helix constructions"),
 //!   recognition of helical quintics;
+//! * [`preimage`]: the quaternion preimage `A(t)` of a given PH hodograph (Remark 3.15),
+//!   exact, with its one-parameter family `A·e^{iφ}`;
 //! * [`hermite`]: Hermite interpolation by general helical PH quintics (Besednjak ch. 9,
 //!   docs/math/ph-curves.md, "Hermite interpolation by helical PH quintics") with every real solution and the least bending energy marked.
 //!
@@ -34,12 +36,15 @@
 
 pub mod analysis;
 pub mod dph;
+pub mod dph_criteria;
+pub mod dph_forms;
 pub mod frame;
 pub mod helix;
 pub mod hermite;
 pub mod hodograph;
 pub mod planar;
 pub mod planar_hermite;
+pub mod preimage;
 pub mod spatial_hermite;
 pub mod speed;
 pub mod spline;

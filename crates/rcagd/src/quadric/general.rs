@@ -363,7 +363,8 @@ impl<F: Scalar> Quadric<F> {
     /// A named quadric with parameters, for recipes: `"unit_sphere"`, `"sphere"`
     /// (`cx, cy, cz, r`), `"ellipsoid"` (`a, b, c`), `"hyperboloid_one_sheet"` (`a, b, c`),
     /// `"hyperboloid_two_sheets"` (`a, b, c`), `"elliptic_paraboloid"` (`a, b`),
-    /// `"hyperbolic_paraboloid"` (`a, b`), `"seed_paraboloid"`, `"cone"` (`a, b, c`),
+    /// `"hyperbolic_paraboloid"` (`a, b`), `"hyperbolic_paraboloid_xy"` (`z = xy`, i.e.
+    /// `h0h3 = h1h2`; deprecated alias `"seed_paraboloid"`), `"cone"` (`a, b, c`),
     /// `"elliptic_cylinder"` (`a, b`), `"hyperbolic_cylinder"` (`a, b`),
     /// `"parabolic_cylinder"` (`a`).
     ///
@@ -396,7 +397,10 @@ impl<F: Scalar> Quadric<F> {
             "hyperbolic_paraboloid" => {
                 want(2).and_then(|_| Self::hyperbolic_paraboloid(p(0), p(1)))
             }
-            "seed_paraboloid" => want(0).map(|_| Self::seed_paraboloid()),
+            // "seed_paraboloid": the deprecated name of "hyperbolic_paraboloid_xy"
+            "hyperbolic_paraboloid_xy" | "seed_paraboloid" => {
+                want(0).map(|_| Self::seed_paraboloid())
+            }
             "cone" => want(3).and_then(|_| Self::cone(p(0), p(1), p(2))),
             "elliptic_cylinder" => want(2).and_then(|_| Self::elliptic_cylinder(p(0), p(1))),
             "hyperbolic_cylinder" => want(2).and_then(|_| Self::hyperbolic_cylinder(p(0), p(1))),

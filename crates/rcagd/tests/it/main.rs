@@ -6,6 +6,7 @@ mod cyclide;
 mod laguerre_props;
 mod lines_props;
 mod ph_planar;
+mod ph_preimage;
 mod ph_props;
 mod pn_laguerre;
 mod pn_props;
