@@ -35,4 +35,4 @@ pub use poly::Poly;
 pub use quadratic::QuadExt;
 pub use quaternion::Quaternion;
 pub use rational::{parse_rational, Rational};
-pub use scalar::{format_poly, format_scalar, format_vector, Field, Ring, Scalar};
+pub use scalar::{format_poly, format_scalar, format_vector, sqrt_in_field, Field, Ring, Scalar};

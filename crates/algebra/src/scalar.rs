@@ -148,6 +148,22 @@ pub fn format_vector<F: Scalar>(v: &[F]) -> String {
     format!("({})", parts.join(", "))
 }
 
+/// `√x` if it lies in the scalar field: for exact scalars the rational square root of a
+/// rational square, for `f64` the floating-point root; `None` for a negative `x` or an
+/// irrational root. The one square root of the constructions.
+pub fn sqrt_in_field<F: Scalar>(x: &F) -> Option<F> {
+    if *x < F::zero() {
+        return None;
+    }
+    if F::EXACT {
+        let q = x.to_rational()?;
+        crate::rational::rational_sqrt(&q).map(|r| F::from_rational(&r))
+    } else {
+        let r = Rational::try_from(x.to_f64().sqrt()).ok()?;
+        Some(F::from_rational(&r))
+    }
+}
+
 /// A polynomial as text in the variable `var`, highest degree first, with signs:
 /// `2·t^2 - 1`, `t^3 + (1/2)·t`, `0`. Coefficients by [`format_scalar`]; a coefficient ±1 is
 /// left out, a fraction is parenthesised. The one formatter for polynomials in messages,

@@ -4,8 +4,7 @@
 
 use crate::certs::is_negligible;
 pub use crate::cyclographic::lorentz as pe;
-use rcagd_algebra::rational::rational_sqrt;
-use rcagd_algebra::{Rational, Scalar};
+use rcagd_algebra::Scalar;
 
 /// `a + b`.
 pub(crate) fn add<F: Scalar>(a: &[F; 4], b: &[F; 4]) -> [F; 4] {
@@ -38,20 +37,7 @@ pub(crate) fn negligible<F: Scalar>(x: &F, scale: f64) -> bool {
     is_negligible(x, scale)
 }
 
-/// The square root of `x ≥ 0` if it lies in the scalar field: exact scalars need a
-/// rational square, `f64` takes the floating-point root.
-pub(crate) fn sqrt_in_field<F: Scalar>(x: &F) -> Option<F> {
-    if *x < F::zero() {
-        return None;
-    }
-    if F::EXACT {
-        let q = x.to_rational()?;
-        rational_sqrt(&q).map(|r| F::from_rational(&r))
-    } else {
-        let r = Rational::try_from(x.to_f64().sqrt()).ok()?;
-        Some(F::from_rational(&r))
-    }
-}
+pub(crate) use rcagd_algebra::sqrt_in_field;
 
 /// A power of two within a factor `√2` of `√|x|` (a rational scale that balances a
 /// parametrization; `1` for `x = 0`).

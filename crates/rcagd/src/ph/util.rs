@@ -9,9 +9,8 @@
 use num_traits::{One, Zero};
 use rcagd_algebra::complex::Complex;
 use rcagd_algebra::quaternion::Quaternion;
-use rcagd_algebra::rational::rational_sqrt;
 pub(crate) use rcagd_algebra::{format_poly, format_scalar as fmt_scalar};
-use rcagd_algebra::{Certificate, Poly, Rational, Scalar};
+use rcagd_algebra::{Certificate, Poly, Scalar};
 
 /// A 3-vector of scalars.
 pub(crate) type V3<F> = [F; 3];
@@ -32,20 +31,7 @@ pub(crate) fn binom<F: Scalar>(n: usize, k: usize) -> F {
     acc
 }
 
-/// `√x` in `F` if it exists there: exact rational square roots for exact scalars,
-/// `f64::sqrt` for `f64`. `None` for negative `x` or an irrational root.
-pub(crate) fn sqrt_scalar<F: Scalar>(x: &F) -> Option<F> {
-    if *x < F::zero() {
-        return None;
-    }
-    if F::EXACT {
-        let q = x.to_rational()?;
-        rational_sqrt(&q).map(|r| F::from_rational(&r))
-    } else {
-        let r = x.to_f64().sqrt();
-        Rational::try_from(r).ok().map(|q| F::from_rational(&q))
-    }
-}
+pub(crate) use rcagd_algebra::sqrt_in_field as sqrt_scalar;
 
 /// Formats a 3-vector.
 pub(crate) fn fmt_v3<F: Scalar>(v: &V3<F>) -> String {

@@ -644,21 +644,7 @@ impl<F: Scalar> PartialEq for RatFn<F> {
     }
 }
 
-/// The exact square root of a scalar (`None` if it is not a rational square; for `f64`
-/// the nearest `f64` square root of a non-negative number).
-pub(crate) fn scalar_sqrt<F: Scalar>(x: &F) -> Option<F> {
-    if F::EXACT {
-        let q = x.to_rational()?;
-        rcagd_algebra::rational::rational_sqrt(&q).map(|r| F::from_rational(&r))
-    } else {
-        let v = x.to_f64();
-        if v < 0.0 {
-            return None;
-        }
-        let r = rcagd_algebra::Rational::try_from(v.sqrt()).ok()?;
-        Some(F::from_rational(&r))
-    }
-}
+pub(crate) use rcagd_algebra::sqrt_in_field as scalar_sqrt;
 
 /// The square root of a polynomial in the single variable `x₀` (`None` if it is not the
 /// square of a polynomial with coefficients in the scalar field, or involves `x₁`).
