@@ -550,9 +550,8 @@ mod tests {
 
     type Q = Rational;
 
-    #[test]
-    fn unit_sphere_as_pn_surface() {
-        // x = n = (2u, 2v, S − 1)/(S + 1): the unit sphere with its outward normal
+    /// `x = n = (2u, 2v, S − 1)/(S + 1)`: the unit sphere with its outward normal.
+    fn unit_sphere() -> PnSurface<Q> {
         let (u, v) = (var::<Q>(0), var::<Q>(1));
         let s = &(&u * &u) + &(&v * &v);
         let w = &s + &int(1);
@@ -562,7 +561,12 @@ mod tests {
             v.scale(&Q::from(2)),
             &s - &int(1),
         ];
-        let surf = PnSurface::from_point_normal(n.clone(), n).expect("pn");
+        PnSurface::from_point_normal(n.clone(), n).expect("pn")
+    }
+
+    #[test]
+    fn unit_sphere_as_pn_surface() {
+        let surf = unit_sphere();
         assert!(surf.all_hold(), "{:?}", surf.certify());
         assert_eq!(surf.cofactor(), Some(&int(1)));
         let off = surf.offset(Q::from(2));
@@ -587,16 +591,7 @@ mod tests {
     /// point, and its offset at `d` is the offset of the original at `−d`.
     #[test]
     fn opposite_orientation_flips_the_normal() {
-        let (u, v) = (var::<Q>(0), var::<Q>(1));
-        let s = &(&u * &u) + &(&v * &v);
-        let w = &s + &int(1);
-        let n = [
-            w.clone(),
-            u.scale(&Q::from(2)),
-            v.scale(&Q::from(2)),
-            &s - &int(1),
-        ];
-        let surf = PnSurface::from_point_normal(n.clone(), n).expect("pn");
+        let surf = unit_sphere();
         let opp = surf.opposite();
         assert!(opp.all_hold(), "{:?}", opp.certify());
         let (a, b) = (Q::from_ratio(1, 3), Q::from_ratio(-2, 5));

@@ -182,6 +182,30 @@ fn sum_of_squares_obstruction_and_isotropic_cycle_curves() {
     }
 }
 
+/// The same cycle family with `f64` coefficients.
+fn family_f64(c: &CycleFamily<Q>) -> CycleFamily<f64> {
+    let f = |p: &MPoly<Q>| p.map(Scalar::to_f64);
+    let (m, r, w) = c.parts();
+    CycleFamily::new([f(m[0]), f(m[1]), f(m[2])], f(r), f(w)).expect("family")
+}
+
+/// The exact and the `f64` envelope give the same point at `(a, b)` (relative 1e-9).
+fn assert_points_agree(env: &ConeFamilyEnvelope<Q>, envf: &ConeFamilyEnvelope<f64>, a: &Q, b: &Q) {
+    let xe = env.surface().eval(a, b).expect("point");
+    let xf = envf
+        .surface()
+        .eval(&Scalar::to_f64(a), &Scalar::to_f64(b))
+        .expect("point");
+    for i in 0..3 {
+        let e = Scalar::to_f64(&xe[i]);
+        assert!(
+            (e - xf[i]).abs() <= 1e-9 * (1.0 + e.abs()),
+            "{e} vs {}",
+            xf[i]
+        );
+    }
+}
+
 /// The `f64` construction of the Theorem 4.5 example agrees with the exact one.
 #[test]
 fn f64_agrees_with_exact_on_the_theorem_4_5_example() {
@@ -189,27 +213,11 @@ fn f64_agrees_with_exact_on_the_theorem_4_5_example() {
     let c1 = CycleFamily::new([t.scale(&q(2, 1)), &t * &t, k(2)], k(3), k(1)).expect("family");
     let c2 = CycleFamily::new([k(0), k(1), k(0)], k(1), k(1)).expect("family");
     let env = ConeFamilyEnvelope::new(c1.clone(), c2.clone(), None).expect("envelope");
-    let f = |p: &MPoly<Q>| p.map(Scalar::to_f64);
-    let fam = |c: &CycleFamily<Q>| {
-        let (m, r, w) = c.parts();
-        CycleFamily::new([f(m[0]), f(m[1]), f(m[2])], f(r), f(w)).expect("family")
-    };
-    let envf = ConeFamilyEnvelope::new(fam(&c1), fam(&c2), None).expect("f64 envelope");
+    let envf =
+        ConeFamilyEnvelope::new(family_f64(&c1), family_f64(&c2), None).expect("f64 envelope");
     assert!(envf.certify().iter().all(|c| c.holds && !c.exact));
     for (a, b) in [(q(5, 4), q(1, 3)), (q(3, 2), q(1, 2)), (q(7, 4), q(-2, 3))] {
-        let xe = env.surface().eval(&a, &b).expect("point");
-        let xf = envf
-            .surface()
-            .eval(&Scalar::to_f64(&a), &Scalar::to_f64(&b))
-            .expect("point");
-        for i in 0..3 {
-            let e = Scalar::to_f64(&xe[i]);
-            assert!(
-                (e - xf[i]).abs() <= 1e-9 * (1.0 + e.abs()),
-                "{e} vs {}",
-                xf[i]
-            );
-        }
+        assert_points_agree(&env, &envf, &a, &b);
     }
 }
 
@@ -231,29 +239,14 @@ fn f64_envelope_of_random_integer_families() {
     );
     let env = ConeFamilyEnvelope::new(c1.clone(), c2.clone(), Some(p.clone())).expect("e");
     let f = |p: &MPoly<Q>| p.map(Scalar::to_f64);
-    let fam = |c: &CycleFamily<Q>| {
-        let (m, r, w) = c.parts();
-        CycleFamily::new([f(m[0]), f(m[1]), f(m[2])], f(r), f(w)).expect("family")
-    };
     let pf = [
         RatFn::new(f(&p[0].num), f(&p[0].den)).expect("den"),
         RatFn::new(f(&p[1].num), f(&p[1].den)).expect("den"),
     ];
-    let envf = ConeFamilyEnvelope::new(fam(&c1), fam(&c2), Some(pf)).expect("f64 envelope");
+    let envf =
+        ConeFamilyEnvelope::new(family_f64(&c1), family_f64(&c2), Some(pf)).expect("f64 envelope");
     for (a, b) in [(q(1, 3), q(1, 2)), (q(2, 3), q(-1, 2)), (q(1, 1), q(0, 1))] {
-        let xe = env.surface().eval(&a, &b).expect("point");
-        let xf = envf
-            .surface()
-            .eval(&Scalar::to_f64(&a), &Scalar::to_f64(&b))
-            .expect("point");
-        for i in 0..3 {
-            let e = Scalar::to_f64(&xe[i]);
-            assert!(
-                (e - xf[i]).abs() <= 1e-9 * (1.0 + e.abs()),
-                "{e} vs {}",
-                xf[i]
-            );
-        }
+        assert_points_agree(&env, &envf, &a, &b);
     }
 }
 
