@@ -55,6 +55,13 @@ pub fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
     p
 }
 
+/// Runs `cmd` and asserts that it exits successfully (showing its stderr if not).
+pub fn run_ok(cmd: &mut Command) -> Output {
+    let out = cmd.output().expect("run rcagd");
+    assert!(out.status.success(), "{}", stderr(&out));
+    out
+}
+
 pub fn stdout(o: &Output) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()
 }

@@ -7,7 +7,7 @@
 //! IGES, sidecar) carry balanced weights (`rcagd_io::balance`): every surface of the
 //! sidecar must stay below that threshold, by a wide margin.
 
-use crate::common::{bin, temp_dir};
+use crate::common::{bin, run_ok, temp_dir};
 
 const RECIPE: &str = r#"
 [[object]]
@@ -60,16 +60,11 @@ fn dupin_cyclide_weights_are_balanced_for_exchange() {
     let dir = temp_dir("exchange-weights");
     let recipe = dir.join("dupin.toml");
     std::fs::write(&recipe, RECIPE).expect("write recipe");
-    let out = bin()
-        .args(["build", "--format", "json,exact,iges", "--out"])
-        .arg(&dir)
-        .arg(&recipe)
-        .output()
-        .expect("run rcagd");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    run_ok(
+        bin()
+            .args(["build", "--format", "json,exact,iges", "--out"])
+            .arg(&dir)
+            .arg(&recipe),
     );
     let read = |name: &str| -> serde_json::Value {
         let text = std::fs::read_to_string(dir.join(name)).expect("output file");

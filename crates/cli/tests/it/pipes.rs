@@ -6,7 +6,7 @@
 //! `RCAGD_PIPE_SAMPLES=DIR` every case also writes its STEP, IGES and exact sidecar to
 //! `DIR` for `scripts/occ_check.sh DIR --strict-warnings`.
 
-use crate::common::{bin, temp_dir};
+use crate::common::{bin, run_ok, temp_dir};
 use proptest::prelude::*;
 use rcagd_cli::build::build_recipe;
 use rcagd_cli::model::{Geometry, Object};
@@ -83,16 +83,11 @@ fn pipe_ph_issue_recipe_exports_through_the_binary() {
     let dir = temp_dir("pipes-bin");
     let recipe = dir.join("pipe.toml");
     std::fs::write(&recipe, PIPE_PH).expect("write recipe");
-    let out = bin()
-        .args(["build", "--format", "step,iges", "--out"])
-        .arg(&dir)
-        .arg(&recipe)
-        .output()
-        .expect("run rcagd");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    run_ok(
+        bin()
+            .args(["build", "--format", "step,iges", "--out"])
+            .arg(&dir)
+            .arg(&recipe),
     );
     for ext in ["step", "igs"] {
         let f = dir.join(format!("pipe_ph_issue17.{ext}"));
@@ -397,15 +392,10 @@ fn pipe_around_a_spine_file() {
         "[[object]]\nname = \"p\"\nop = \"pipe\"\nspine_file = \"spine.json\"\nradius = \"1/8\"\n",
     )
     .expect("write recipe");
-    let out = bin()
-        .current_dir(env!("CARGO_TARGET_TMPDIR"))
-        .arg("build")
-        .arg(&recipe)
-        .output()
-        .expect("run rcagd");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    run_ok(
+        bin()
+            .current_dir(env!("CARGO_TARGET_TMPDIR"))
+            .arg("build")
+            .arg(&recipe),
     );
 }
