@@ -172,7 +172,7 @@ const MAX_SPLITS: (usize, usize) = rcagd::canal::EXPORT_SPLITS;
 /// all weights are positive ([`split_patches_adaptive`]), and certifies the result: all
 /// weights positive ⇒ the weight function has no zero on the patches (no pole, no base
 /// point).
-fn positive_pieces(
+pub(super) fn positive_pieces(
     patches: Vec<BezierPatch<Rational>>,
 ) -> Result<(Vec<BezierPatch<Rational>>, Certificate), OpError> {
     let split = split_patches_adaptive(patches, SignRule::Positive, MAX_SPLITS)

@@ -12,7 +12,6 @@ use rcagd::cyclide::{blend_cones, from_three_spheres, DualPencil, DupinCyclide};
 use rcagd::cyclographic::OrientedSphere;
 use rcagd::Certified;
 use rcagd_algebra::{Certificate, Rational};
-use rcagd_geom::weight_sign::{split_patches_adaptive, SignRule};
 use rcagd_geom::BezierPatch;
 use rcagd_io::quantity::{NamedQuantity, Quantity};
 
@@ -24,7 +23,6 @@ pub const OPS: &[OpSpec] = &[
     CYCLIDE_BLEND,
 ];
 
-const MAX_SPLITS: (usize, usize) = rcagd::canal::EXPORT_SPLITS;
 
 fn vec4(args: &OpArgs, param: &'static str) -> Result<[Rational; 4], OpError> {
     let p = args.point(param)?;
@@ -37,19 +35,6 @@ fn range(args: &OpArgs, param: &'static str) -> Result<(Rational, Rational), OpE
         Ok([a, b]) if a < b => Ok((a, b)),
         _ => Err(OpError::param(param, format!("`{param}` must be an interval [a, b] with a < b"))),
     }
-}
-
-fn positive(patches: Vec<BezierPatch<Rational>>) -> Result<(Vec<BezierPatch<Rational>>, Certificate), OpError> {
-    let split = split_patches_adaptive(patches, SignRule::Positive, MAX_SPLITS).map_err(|e| OpError::new(e.to_string()))?;
-    let (out, bad) = (split.pieces, split.failed);
-    let n = out.len();
-    let cert = Certificate::decide(
-        format!("every Bernstein weight of the {n} patches is > 0 (no pole, no base point)"),
-        bad == 0,
-        true,
-        || format!("{bad} patches keep a weight ≤ 0 after the largest subdivision"),
-    );
-    Ok((out, cert))
 }
 
 /// The object of a cyclide: its covering (or boxed) patches with positive weights, every
@@ -66,7 +51,7 @@ pub(super) fn cyclide_object(
     if let Some(d) = args.opt_number("offset")? {
         certs.extend(cy.certify_offset(&d).map_err(|e| OpError::param("offset", e.to_string()))?);
     }
-    let (patches, wcert) = positive(patches)?;
+    let (patches, wcert) = super::canal::positive_pieces(patches)?;
     certs.push(wcert);
     let kind = NamedQuantity::new("kind", "the type of the Dupin cyclide (ring, horn, spindle, parabolic)", Quantity::Text(cy.kind().name().into()));
     Ok(vec![args.object(Geometry::Patches(patches), certs).with_values(vec![kind])])
@@ -197,7 +182,7 @@ fn build_blend(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let blend = blend_cones(p1, d1, p2, d2).map_err(|e| OpError::param("sphere2", e.to_string()))?;
     let patches = blend.patches().map_err(|e| OpError::new(e.to_string()))?;
     let mut certs = blend.certify();
-    let (patches, wcert) = positive(patches)?;
+    let (patches, wcert) = super::canal::positive_pieces(patches)?;
     certs.push(wcert);
     let kind = NamedQuantity::new(
         "kind",
