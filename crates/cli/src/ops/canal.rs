@@ -24,8 +24,8 @@ use rcagd::ph::PhCurve;
 use rcagd::Certified;
 use rcagd_algebra::quaternion::Quaternion;
 use rcagd_algebra::rational::format_rational;
-use rcagd_algebra::{Certificate, Poly, QuadExt, Rational, Scalar};
-use rcagd_geom::certify::{patch_on_quadric, polynomial_is_zero};
+use rcagd_algebra::{Certificate, QuadExt, Rational, Scalar};
+use rcagd_geom::certify::patch_on_quadric;
 use rcagd_geom::weight_sign::{split_patches_adaptive, SignRule};
 use rcagd_geom::{BezierCurve, BezierPatch};
 
@@ -890,7 +890,7 @@ fn build_blend_sphere_plane(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 
 const TORUS: OpSpec = OpSpec {
     name: "torus",
-    summary: "a ring torus (axis ∥ z) as the exact rational pipe around a circle: spine (R(1 − t²), 2Rt, 0)/(1 + t²), constant radius ρ; built in four pieces without base points, patches with positive weights",
+    summary: "a ring torus (axis ∥ z): the canal surface of the circle of radius R with constant radius ρ, as the Dupin cyclide of an untilted pe circle (rcagd::cyclide::DupinCyclide::tilted with s = 0): 16 biquadratic patches with positive weights, one closed shell, implicit quartic (|x − c|² + R² − ρ²)² − 4R²((x − c₁)² + (y − c₂)²) certified",
     params: &[
         ParamSpec::with_default("center", ParamKind::Point3, "[0, 0, 0]", "centre"),
         ParamSpec::required("major_radius", ParamKind::Number, "radius R of the spine circle, > 0"),
@@ -904,69 +904,6 @@ minor_radius = "1/2"
 "#,
     build: build_torus,
 };
-
-/// The implicit equation of a closed canal surface: its formula (for the certificate) and the
-/// homogeneous polynomial it gives on `x(t, u)`.
-type Implicit<'a> = (&'a str, &'a dyn Fn(&[BiPoly<Rational>; 4]) -> BiPoly<Rational>);
-
-/// `p(1/s)·sᵏ` (the homogeneous reversal to degree `k`).
-fn reverse_poly(p: &Poly<Rational>, k: usize) -> Poly<Rational> {
-    let mut c: Vec<Rational> = (0..=k).map(|i| p.coeff(i)).collect();
-    c.reverse();
-    Poly::new(c)
-}
-
-/// The closed surface of a family defined for all `t ∈ R ∪ {∞}` in four pieces: `t ∈ [−1, 0]`,
-/// `[0, 1]` and, in the chart `t = 1/s`, `s ∈ [−1, 0]`, `[0, 1]`; each piece is built in a frame
-/// without base points on it (`rcagd::canal::frame`), and covered by two patches (`u` and
-/// `1/u`).
-fn closed_canal(
-    args: &OpArgs,
-    family: &CanalSpine<Rational>,
-    spine_param: &'static str,
-    radius_param: &'static str,
-    implicit: Implicit<'_>,
-    extra: Vec<Certificate>,
-) -> Result<Vec<Object>, OpError> {
-    let k = family.degree();
-    let [w, m0, m1, m2, r] = family.homogeneous();
-    let rev = CanalSpine::new(
-        reverse_poly(&w, k),
-        [reverse_poly(&m0, k), reverse_poly(&m1, k), reverse_poly(&m2, k)],
-        reverse_poly(&r, k),
-    )
-    .map_err(|e| canal_err(e, spine_param, radius_param))?;
-    let (m1r, zero, one) = (-Rational::one(), Rational::zero(), Rational::one());
-    let mut patches = Vec::new();
-    let mut certs = Vec::new();
-    let pieces = [
-        ("t ∈ [−1, 0]", family, (&m1r, &zero)),
-        ("t ∈ [0, 1]", family, (&zero, &one)),
-        ("t = 1/s, s ∈ [−1, 0]", &rev, (&m1r, &zero)),
-        ("t = 1/s, s ∈ [0, 1]", &rev, (&zero, &one)),
-    ];
-    for (name, sp, (a, b)) in pieces {
-        let options = CanalOptions {
-            domain: Some((a.clone(), b.clone())),
-            ..CanalOptions::default()
-        };
-        let build = canal_surface_pole_free(sp, &options)
-            .map_err(|e| canal_err(e, spine_param, radius_param))?;
-        let s = rational_build(&build, radius_param)?;
-        patches.extend(s.domain_patches().map_err(canal_err_plain)?);
-        certs.extend(prefixed(&format!("piece {name}: "), s.certify()));
-        certs.push(degree_cert(s));
-        let q = (implicit.1)(s.homogeneous());
-        certs.push(polynomial_is_zero(
-            &format!("piece {name}: {} ≡ 0 (x(t, u) on the implicit surface)", implicit.0),
-            &q.all_coeffs(),
-        ));
-    }
-    certs.extend(extra);
-    let (patches, wcert) = positive_pieces(patches)?;
-    certs.push(wcert);
-    Ok(vec![args.object(Geometry::Patches(patches), certs)])
-}
 
 fn build_torus(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let c = point3(args, "center")?;
@@ -985,41 +922,12 @@ fn build_torus(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             ),
         ));
     }
-    let w = Poly::new(vec![Rational::one(), Rational::zero(), Rational::one()]);
-    let m = [
-        &Poly::new(vec![big.clone(), Rational::zero(), -big.clone()]) + &w.scale(&c[0]),
-        &Poly::new(vec![Rational::zero(), big.clone() * Rational::from(2)]) + &w.scale(&c[1]),
-        w.scale(&c[2]),
-    ];
-    let family = CanalSpine::new(w.clone(), m, w.scale(&rho)).map_err(|e| canal_err(e, "major_radius", "minor_radius"))?;
-    let r2 = big.clone() * big.clone();
-    let k = r2.clone() - rho.clone() * rho.clone();
-    let quartic = move |x: &[BiPoly<Rational>; 4]| {
-        // (|x − c|² + R² − ρ²)² − 4R²((x − c₁)² + (y − c₂)²), homogeneous
-        let d = shifted(x, &c);
-        let xy = d[1].mul(&d[1]).add(&d[2].mul(&d[2]));
-        let s = xy.add(&d[3].mul(&d[3])).add(&d[0].mul(&d[0]).scale(&k));
-        s.mul(&s)
-            .sub(&xy.mul(&d[0]).mul(&d[0]).scale(&(r2.clone() * Rational::from(4))))
-    };
-    closed_canal(
-        args,
-        &family,
-        "major_radius",
-        "minor_radius",
-        ("(|x − c|² + R² − ρ²)² − 4R²((x − c₁)² + (y − c₂)²)", &quartic),
-        Vec::new(),
-    )
-}
-
-/// `(X₀, X₁ − c₁X₀, X₂ − c₂X₀, X₃ − c₃X₀)`.
-fn shifted(x: &[BiPoly<Rational>; 4], c: &[Rational; 3]) -> [BiPoly<Rational>; 4] {
-    [
-        x[0].clone(),
-        x[1].sub(&x[0].scale(&c[0])),
-        x[2].sub(&x[0].scale(&c[1])),
-        x[3].sub(&x[0].scale(&c[2])),
-    ]
+    // the torus is the Dupin cyclide of the untilted pe circle (s = 0): spine circle of
+    // radius R, constant radius ρ; one global parametrization, so the 16 patches share
+    // their edges exactly and the surface is one closed shell
+    let cy = rcagd::cyclide::DupinCyclide::tilted(c, big, rho, Rational::zero()).map_err(|e| OpError::new(e.to_string()))?;
+    let patches = cy.covering_patches().map_err(|e| OpError::new(e.to_string()))?;
+    super::cyclide::cyclide_object(args, &cy, patches, Vec::new())
 }
 
 const DUPIN_CANAL: OpSpec = OpSpec {
