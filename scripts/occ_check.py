@@ -247,8 +247,10 @@ def occ_imports():
     from OCP.IGESControl import IGESControl_Reader
     from OCP.STEPControl import STEPControl_Reader
     from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE, TopAbs_SOLID, TopAbs_VERTEX
+    from OCP.TopAbs import TopAbs_SHELL
     from OCP.TopExp import TopExp_Explorer
     from OCP.TopoDS import TopoDS
+    from OCP.ShapeAnalysis import ShapeAnalysis_FreeBounds
 
     return locals()
 
@@ -470,6 +472,23 @@ def solids_volumes(occ, shape):
     return vols
 
 
+def count(occ, shape, kind):
+    n = 0
+    exp = occ["TopExp_Explorer"](shape, occ[kind])
+    while exp.More():
+        n += 1
+        exp.Next()
+    return n
+
+
+def free_edges(occ, shape):
+    """Edges of the free boundary (ShapeAnalysis_FreeBounds: edges of one face only)."""
+    fb = occ["ShapeAnalysis_FreeBounds"](shape)
+    return count(occ, fb.GetClosedWires(), "TopAbs_EDGE") + count(
+        occ, fb.GetOpenWires(), "TopAbs_EDGE"
+    )
+
+
 def sidecar_for(path: Path):
     for cand in (
         path.with_suffix(".exact.json"),
@@ -536,6 +555,16 @@ def check_file(occ, path: Path, args):
             if any(v <= 0 for v in vols):
                 ok = False
                 desc += " (NOT POSITIVE: inward orientation)"
+        if path.suffix.lower() in (".step", ".stp") and path.stem in args.solids:
+            nsol, nsh, nfree = (
+                count(occ, sh, "TopAbs_SOLID"),
+                count(occ, sh, "TopAbs_SHELL"),
+                free_edges(occ, sh),
+            )
+            desc += f"; {nsol} solid(s), {nsh} shell(s), {nfree} free edge(s)"
+            if len(shapes) != 1 or nsol != 1 or nsh != 1 or nfree != 0 or not vols:
+                ok = False
+                desc += " (MUST BE ONE CLOSED SOLID)"
         lines.append(desc)
         ok &= valid
         nf, mf, df = check_faces(occ, sh, ex_f64, size, args.samples, report)
@@ -576,6 +605,13 @@ def main(argv=None):
         "--fractions",
         action="store_true",
         help="evaluate with exact fractions (slow) instead of 60-digit decimals",
+    )
+    ap.add_argument(
+        "--solids",
+        nargs="*",
+        default=[],
+        metavar="STEM",
+        help="STEP files (by stem) that must arrive as one solid of one closed shell",
     )
     args = ap.parse_args(argv)
     if args.fractions:

@@ -19,6 +19,7 @@ pub mod gltf;
 pub mod iges;
 pub mod iges_read;
 pub mod json;
+pub mod mesh;
 pub mod model;
 pub mod obj;
 pub mod ply;

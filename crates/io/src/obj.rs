@@ -9,9 +9,7 @@
 use crate::model::{Geometry, Object};
 use crate::IoError;
 use rcagd_algebra::Scalar;
-use rcagd_geom::tessellate::{
-    tessellate_curve_adaptive, tessellate_patch_adaptive, Polyline, TriMesh,
-};
+use rcagd_geom::tessellate::{tessellate_curve_adaptive, Polyline, TriMesh};
 use std::fmt::Write as _;
 
 fn num(x: f64) -> String {
@@ -233,12 +231,8 @@ pub fn geometry_to_obj(name: &str, g: &Geometry, tol: f64) -> Result<String, IoE
             polyline_list_to_obj(name, &lines)
         }
         Geometry::Patch(_) | Geometry::Patches(_) => {
-            let meshes = g
-                .drawable_patches()?
-                .iter()
-                .map(|(_, p)| tessellate_patch_adaptive(p, tol))
-                .collect::<Result<Vec<_>, _>>()?;
-            trimesh_to_obj(name, &merge_meshes(&meshes)?)
+            let pieces: Vec<_> = g.drawable_patches()?.into_iter().map(|(_, p)| p).collect();
+            trimesh_to_obj(name, &crate::mesh::patches_mesh(&pieces, tol)?)
         }
     }
 }

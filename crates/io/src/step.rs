@@ -260,6 +260,22 @@ fn patch_e3(p: &BezierPatch<Rational>, what: &str) -> Result<BezierPatch<Rationa
     )?))
 }
 
+/// A patch embedded in E3 (zero-padded from E1/E2) with positive weights (all-negative
+/// weights negated), not balanced.
+///
+/// # Errors
+/// [`IoError::Invalid`] beyond E3 or for weights of mixed sign or zero.
+pub(crate) fn embed_e3(
+    p: &BezierPatch<Rational>,
+    what: &str,
+) -> Result<BezierPatch<Rational>, IoError> {
+    check_dim(p.dim(), what)?;
+    let (m, n) = p.degree();
+    let mut coords = pad3(p.coords(), p.dim());
+    positive_weights(&mut coords).map_err(|m| IoError::Invalid(format!("{what}: {m}")))?;
+    Ok(BezierPatch::from_flat(3, m, n, coords)?)
+}
+
 /// The Euclidean point of a homogeneous point with non-zero weight.
 fn euclid(h: &[Rational]) -> Vec<Rational> {
     h[1..].iter().map(|x| x.clone() / h[0].clone()).collect()
@@ -377,7 +393,10 @@ fn collapsed(c: &BezierCurve<Rational>) -> bool {
 /// `ρ` if `q` is `p` reparametrized by an end-point-preserving Möbius map:
 /// `Qᵢ = λ ρⁱ Pᵢ` for some `λ ≠ 0`, `ρ > 0`; then `Q(s) = P(φ_ρ(s))` with
 /// `φ_ρ(s) = ρs / ((1 − s) + ρs)` (projectively).
-fn mobius_ratio(p: &BezierCurve<Rational>, q: &BezierCurve<Rational>) -> Option<Rational> {
+pub(crate) fn mobius_ratio(
+    p: &BezierCurve<Rational>,
+    q: &BezierCurve<Rational>,
+) -> Option<Rational> {
     if p.degree() != q.degree() || p.dim() != q.dim() {
         return None;
     }

@@ -17,7 +17,7 @@
 use crate::model::Object;
 use crate::IoError;
 use rcagd_algebra::{Rational, Scalar};
-use rcagd_geom::tessellate::{tessellate_patch_adaptive, TriMesh};
+use rcagd_geom::tessellate::TriMesh;
 use std::fmt::Write as _;
 
 /// How objects are meshed.
@@ -102,13 +102,15 @@ pub fn object_mesh(o: &Object, opts: &MeshOptions) -> Result<TriMesh, IoError> {
         )));
     }
     let tol = opts.relative_tolerance * object_size(o);
-    let mut out = TriMesh::default();
-    // pieces with weights of one sign (a weight zero inside would mesh a spike)
-    for (_, p) in o.geometry.drawable_patches()? {
-        let m = tessellate_patch_adaptive(&p, tol)?;
-        append_mesh(&mut out, &m)?;
-    }
-    Ok(out)
+    // pieces with weights of one sign (a weight zero inside would mesh a spike), shared
+    // boundaries tessellated once
+    let pieces: Vec<_> = o
+        .geometry
+        .drawable_patches()?
+        .into_iter()
+        .map(|(_, p)| p)
+        .collect();
+    crate::mesh::patches_mesh(&pieces, tol)
 }
 
 /// Appends `m` to `out` (indices shifted).

@@ -146,6 +146,40 @@ fn gallery_writes_everything_and_all_certificates_hold() {
         }
     }
     assert!(html.contains("href=\"gallery-all.step\""));
+    closed_objects_arrive_closed(&dir);
+}
+
+/// The closed gallery objects (examples/closed-objects.txt): one closed solid in STEP,
+/// a watertight, consistently and outward wound OBJ mesh (checked on the files).
+fn closed_objects_arrive_closed(dir: &std::path::Path) {
+    let list = include_str!("../../../../examples/closed-objects.txt");
+    let names: Vec<&str> = list
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.starts_with('#'))
+        .collect();
+    assert!(names.len() >= 8);
+    for name in names {
+        let step = std::fs::read_to_string(dir.join(format!("{name}.step"))).expect("step");
+        let count = |s: &str| step.matches(s).count();
+        assert_eq!(count("MANIFOLD_SOLID_BREP("), 1, "{name}.step: one solid");
+        assert_eq!(count("CLOSED_SHELL("), 1, "{name}.step: one closed shell");
+        assert_eq!(count("OPEN_SHELL("), 0, "{name}.step: no open shell");
+        let obj = std::fs::read_to_string(dir.join(format!("{name}.obj"))).expect("obj");
+        let m = crate::common::obj_mesh(&obj);
+        let a = rcagd_io::mesh::edge_census(&m);
+        assert_eq!(a.boundary, 0, "{name}.obj: cracks");
+        assert_eq!(
+            a.non_manifold, 0,
+            "{name}.obj: an edge in more than two triangles"
+        );
+        assert_eq!(a.repeated_directed, 0, "{name}.obj: inconsistent winding");
+        assert!(
+            a.volume > 0.0,
+            "{name}.obj: wound inward (volume {})",
+            a.volume
+        );
+    }
 }
 
 /// `--quiet` prints nothing; `--only` builds just the named recipes (one small recipe

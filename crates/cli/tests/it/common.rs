@@ -69,3 +69,32 @@ pub fn stdout(o: &Output) -> String {
 pub fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
+
+/// The triangle mesh of an OBJ text (`v` and `f` lines; `f a//n b//n c//n` or `f a b c`).
+pub fn obj_mesh(text: &str) -> rcagd_geom::tessellate::TriMesh {
+    let mut m = rcagd_geom::tessellate::TriMesh::default();
+    for line in text.lines() {
+        let mut it = line.split_whitespace();
+        match it.next() {
+            Some("v") => {
+                let c: Vec<f64> = it.map(|x| x.parse().expect("coordinate")).collect();
+                m.positions.push([c[0], c[1], c[2]]);
+            }
+            Some("f") => {
+                let i: Vec<u32> = it
+                    .map(|x| {
+                        x.split('/')
+                            .next()
+                            .expect("index")
+                            .parse::<u32>()
+                            .expect("index")
+                            - 1
+                    })
+                    .collect();
+                m.triangles.push([i[0], i[1], i[2]]);
+            }
+            _ => {}
+        }
+    }
+    m
+}

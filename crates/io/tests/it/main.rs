@@ -3,4 +3,5 @@
 
 mod exchange;
 mod export;
+mod mesh;
 mod samples;
