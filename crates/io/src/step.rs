@@ -303,8 +303,28 @@ fn join_curves(pieces: Vec<BezierCurve<Rational>>) -> Result<Vec<NurbsCurve<Rati
     Ok(out)
 }
 
+/// The patches with every face that is flipped in its shell ([`build_topology`])
+/// reversed in `u` (the same surface with the opposite normal): consistent orientation
+/// in every shell, outward in closed ones, in the patches themselves (IGES has no
+/// `same_sense` flag; STEP's faces then all have `same_sense = .T.`). Unchanged if
+/// the patches have no boundary representation.
+fn oriented(patches: Vec<BezierPatch<Rational>>) -> Vec<BezierPatch<Rational>> {
+    match build_topology(&patches) {
+        Ok(topo) if topo.faces.iter().any(|f| f.flipped) => {
+            let mut out = patches;
+            for f in &topo.faces {
+                if f.flipped {
+                    out[f.patch] = out[f.patch].reverse_u();
+                }
+            }
+            out
+        }
+        _ => patches,
+    }
+}
+
 /// The exchange form of an object (module docs): curves in E3 joined into NURBS,
-/// patches in E3, weights positive.
+/// patches in E3, weights positive, faces oriented consistently (outward in closed shells).
 ///
 /// # Errors
 /// [`IoError::Invalid`] for geometry beyond E3, degree 0, a zero weight or weights of
@@ -324,6 +344,7 @@ pub fn exchange_object(o: &Object) -> Result<ExchangeObject, IoError> {
         .enumerate()
         .map(|(k, p)| patch_e3(p, &format!("object {:?}, patch {k}", o.name)))
         .collect::<Result<Vec<_>, _>>()?;
+    let patches = oriented(patches);
     Ok(ExchangeObject {
         name: o.name.clone(),
         curves: join_curves(curves)?,
