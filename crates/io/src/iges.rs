@@ -1,5 +1,6 @@
 //! IGES 5.3 export of exact rational geometry: entities 126 (rational B-spline curve)
-//! and 128 (rational B-spline surface), grouped and named per object.
+//! and 128 (rational B-spline surface), closed objects as manifold solid B-reps (186),
+//! grouped and named per object.
 //!
 //! # Layout
 //!
@@ -13,6 +14,20 @@
 //!   entity 102 (composite curve) of its Bézier pieces, each an entity 126 on its knot
 //!   interval `[k, k+1]` with status `00010000` (physically dependent): the joints are
 //!   only C0 in the parameter, and readers split C0 B-splines (OpenCascade warns);
+//! * an object whose patches form closed shells only (a sphere, a torus, a cyclide:
+//!   [`crate::step::build_topology`], faces oriented outward by
+//!   [`crate::step::exchange_object`]) is written as a manifold solid B-rep instead of
+//!   loose surfaces: one entity 186 per shell (status `00020000`, the group's member)
+//!   pointing to a closed shell 514 form 1 of faces 510 form 1 (orientation flags 1),
+//!   each on its surface 128 with one outer loop 508 form 1 in side order
+//!   (counter-clockwise in `(u, v)`); the loop's edges point into one edge list 504 form
+//!   1 (shared edges once, their exact curves as entities 126, vertices in one vertex
+//!   list 502 form 1) with orientation flag 1 where the face traverses the edge in the
+//!   curve's direction; a collapsed side (a pole) is a vertex-type loop entry (TYPE 1,
+//!   read by OpenCascade as a degenerated edge). Every loop entry has one parameter-space
+//!   curve (ISOP 1): the side of the parameter square as an exact rational line
+//!   (126, status `00010500`), parametrized like the edge curve (as STEP's pcurves,
+//!   [`crate::step`]). All of these are physically dependent (`00010000`);
 //! * an entity 406 form 15 (name property) with the object's name;
 //! * an entity 402 form 7 (unordered group without back pointers) of the members,
 //!   carrying the name property through its property pointer; status `00000000`.
@@ -35,11 +50,14 @@
 
 use crate::model::Object;
 use crate::step::{
-    civil_time, exchange_object, export_time, format_real, rational_real, ExchangeObject,
+    build_topology, civil_time, collapsed, exchange_object, export_time, format_real, pcurve,
+    rational_real, ExchangeObject, Topology,
 };
 use crate::IoError;
 use rcagd_algebra::{Rational, Scalar};
 use rcagd_geom::nurbs::{NurbsCurve, NurbsSurface};
+use rcagd_geom::BezierCurve;
+use std::collections::HashMap;
 use std::fmt::Write as _;
 
 /// Header fields of an IGES file.
@@ -175,6 +193,173 @@ fn surface_params(s: &NurbsSurface<Rational>) -> Result<Vec<String>, IoError> {
     Ok(out)
 }
 
+/// The directory-entry pointer of the entity just pushed.
+fn last_de(entities: &[Entity]) -> usize {
+    2 * entities.len() - 1
+}
+
+/// A parameter-space line of the `(u, v)` square as a planar entity 126 (`z = 0`).
+fn pcurve_params(pc: &NurbsCurve<Rational>) -> Result<Vec<String>, IoError> {
+    let coords: Vec<Rational> = pc
+        .control_points()
+        .flat_map(|h| [h[0].clone(), h[1].clone(), h[2].clone(), Rational::from(0)])
+        .collect();
+    let line = BezierCurve::from_flat(3, coords)?;
+    curve_params(&NurbsCurve::from_bezier(&line)?)
+}
+
+/// The manifold solid B-rep of an object whose shells are all closed (module docs):
+/// entities 502, 126 (edge curves), 504, 128, 126 (parameter lines), 508, 510, 514 and
+/// one 186 per shell; returns the 186 pointers.
+fn brep_entities(
+    o: &ExchangeObject,
+    topo: &Topology,
+    label: &str,
+    entities: &mut Vec<Entity>,
+) -> Result<Vec<usize>, IoError> {
+    let dependent = |kind: u32, form: u32, status: &'static str, params: Vec<String>| Entity {
+        kind,
+        form,
+        status,
+        label: label.to_string(),
+        subscript: 0,
+        params,
+    };
+    // the vertices: the topology's and the poles of collapsed sides (by exact position)
+    let mut vertices: Vec<Vec<Rational>> = topo.vertices.clone();
+    let mut index: HashMap<Vec<Rational>, usize> = vertices
+        .iter()
+        .cloned()
+        .enumerate()
+        .map(|(i, v)| (v, i))
+        .collect();
+    for f in &topo.faces {
+        for (side, c) in o.patches[f.patch].boundary_curves().iter().enumerate() {
+            if !f.sides.contains(&side) && collapsed(c) {
+                let p = euclid(c.control_point(0));
+                if !index.contains_key(&p) {
+                    index.insert(p.clone(), vertices.len());
+                    vertices.push(p);
+                }
+            }
+        }
+    }
+    let mut params = vec!["502".to_string(), vertices.len().to_string()];
+    for v in &vertices {
+        reals(v, &mut params)?;
+    }
+    entities.push(dependent(502, 1, "00010000", params));
+    let vertex_list = last_de(entities);
+    // edge curves and the edge list
+    let mut curve_des = Vec::with_capacity(topo.edges.len());
+    for e in &topo.edges {
+        entities.push(dependent(
+            126,
+            0,
+            "00010000",
+            curve_params(&NurbsCurve::from_bezier(&e.curve)?)?,
+        ));
+        curve_des.push(last_de(entities));
+    }
+    let mut params = vec!["504".to_string(), topo.edges.len().to_string()];
+    for (e, c) in topo.edges.iter().zip(&curve_des) {
+        params.extend(
+            [c, &vertex_list, &(e.start + 1), &vertex_list, &(e.end + 1)].map(|x| x.to_string()),
+        );
+    }
+    entities.push(dependent(504, 1, "00010000", params));
+    let edge_list = last_de(entities);
+    // faces
+    let surfaces = o.surfaces()?;
+    let mut face_des = Vec::with_capacity(topo.faces.len());
+    for f in &topo.faces {
+        entities.push(dependent(
+            128,
+            0,
+            "00010000",
+            surface_params(&surfaces[f.patch])?,
+        ));
+        let surf = last_de(entities);
+        let boundary = o.patches[f.patch].boundary_curves();
+        // the loop in side order (counter-clockwise in (u, v)); parameter lines follow the
+        // model curve's direction (the loop's orientation flag reverses both)
+        let mut uses: Vec<[String; 6]> = Vec::with_capacity(4);
+        for (side, c) in boundary.iter().enumerate() {
+            if let Some(i) = f.sides.iter().position(|&x| x == side) {
+                let (e, fwd) = f.edges[i];
+                let along = if fwd { c.clone() } else { c.reverse() };
+                let pc = pcurve(&topo.edges[e].curve, &along, side, fwd)?;
+                entities.push(dependent(126, 0, "00010500", pcurve_params(&pc)?));
+                uses.push([
+                    "0".into(),
+                    edge_list.to_string(),
+                    (e + 1).to_string(),
+                    u8::from(fwd).to_string(),
+                    "1".into(),
+                    last_de(entities).to_string(),
+                ]);
+            } else if collapsed(c) {
+                let v = index
+                    .get(&euclid(c.control_point(0)))
+                    .copied()
+                    .ok_or_else(|| IoError::Invalid("a pole without a vertex".into()))?;
+                let pc = pcurve(c, c, side, true)?;
+                entities.push(dependent(126, 0, "00010500", pcurve_params(&pc)?));
+                uses.push([
+                    "1".into(),
+                    vertex_list.to_string(),
+                    (v + 1).to_string(),
+                    "1".into(),
+                    "1".into(),
+                    last_de(entities).to_string(),
+                ]);
+            }
+        }
+        let mut params = vec!["508".to_string(), uses.len().to_string()];
+        for [ty, list, ndx, of, k, pc] in uses {
+            // TYPE, EDGE, NDX, OF, K, then ISOP and CURV for the one parameter curve
+            params.extend([ty, list, ndx, of, k, "1".into(), pc]);
+        }
+        entities.push(dependent(508, 1, "00010000", params));
+        let lp = last_de(entities);
+        entities.push(dependent(
+            510,
+            1,
+            "00010000",
+            vec![
+                "510".into(),
+                surf.to_string(),
+                "1".into(),
+                "1".into(),
+                lp.to_string(),
+            ],
+        ));
+        face_des.push(last_de(entities));
+    }
+    let mut solids = Vec::with_capacity(topo.shells.len());
+    for s in &topo.shells {
+        let mut params = vec!["514".to_string(), s.faces.len().to_string()];
+        for &f in &s.faces {
+            params.extend([
+                face_des[f].to_string(),
+                u8::from(!topo.faces[f].flipped).to_string(),
+            ]);
+        }
+        entities.push(dependent(514, 1, "00010000", params));
+        let shell = last_de(entities);
+        entities.push(Entity {
+            kind: 186,
+            form: 0,
+            status: "00020000",
+            label: label.to_string(),
+            subscript: solids.len(),
+            params: vec!["186".into(), shell.to_string(), "1".into(), "0".into()],
+        });
+        solids.push(last_de(entities));
+    }
+    Ok(solids)
+}
+
 fn label_of(name: &str) -> String {
     let l: String = ascii_name(name)
         .to_ascii_uppercase()
@@ -303,16 +488,27 @@ pub fn write_iges_with(objects: &[Object], opts: &IgesOptions) -> Result<String,
             }
             members.push(2 * entities.len() - 1);
         }
-        for (k, s) in o.surfaces()?.iter().enumerate() {
-            entities.push(Entity {
-                kind: 128,
-                form: 0,
-                status: "00020000",
-                label: label.clone(),
-                subscript: k,
-                params: surface_params(s)?,
-            });
-            members.push(2 * entities.len() - 1);
+        let topo = if o.patches.is_empty() {
+            None
+        } else {
+            build_topology(&o.patches)
+                .ok()
+                .filter(|t| !t.shells.is_empty() && t.shells.iter().all(|s| s.closed))
+        };
+        if let Some(topo) = topo {
+            members.extend(brep_entities(o, &topo, &label, &mut entities)?);
+        } else {
+            for (k, s) in o.surfaces()?.iter().enumerate() {
+                entities.push(Entity {
+                    kind: 128,
+                    form: 0,
+                    status: "00020000",
+                    label: label.clone(),
+                    subscript: k,
+                    params: surface_params(s)?,
+                });
+                members.push(2 * entities.len() - 1);
+            }
         }
         entities.push(Entity {
             kind: 406,

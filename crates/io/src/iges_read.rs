@@ -12,9 +12,12 @@
 //!   else kept as separate curves;
 //! * 402 forms 1, 7, 14, 15 (groups) → one object per group that is not itself a member
 //!   of a group, named by its 406 form 15 name property, else by its entity label;
-//! * 406 form 15 (name property).
+//! * 406 form 15 (name property);
+//! * 186 (manifold solid B-rep object): the surfaces (128) of the faces (510) of its
+//!   shell (514), as rcagd writes closed objects; the loops (508) are not read (rcagd's
+//!   faces are whole patches).
 //!
-//! Without groups, every independent (subordinate switch `00`) 126, 128 or 102 is an
+//! Without groups, every independent (subordinate switch `00`) 126, 128, 102 or 186 is an
 //! object, and so is the surface of an independent 143/144 (its trimming is not read).
 //! Numbers are read exactly (`0.1` is `1/10`); [`crate::step_read::apply_sidecar`]
 //! restores rcagd's exact values. Errors ([`IoError::Read`]) name the line and entity:
@@ -597,9 +600,35 @@ impl Iges {
                     None => return Err(p.err(format!("the surface DE {s} does not exist"))),
                 }
             }
+            186 => {
+                // manifold solid B-rep: its shell's faces' surfaces (trimming by the
+                // loops is not read: rcagd's faces are whole patches)
+                let mut p = self.params(de)?;
+                let shell = p.count("shell", i64::MAX)?;
+                let mut q = self.expect(shell, 514, &p)?;
+                let n = q.count("number of faces", 1 << 24)?;
+                for _ in 0..n {
+                    let face = q.count("face", i64::MAX)?;
+                    q.int("face orientation flag")?;
+                    let mut f = self.expect(face, 510, &q)?;
+                    let surf = f.count("surface", i64::MAX)?;
+                    self.expect(surf, 128, &f)?;
+                    obj.surfaces.push(self.surface(surf)?);
+                }
+            }
             _ => {}
         }
         Ok(())
+    }
+
+    /// The parameters of the entity at `de`, which `from` points to and which must be of
+    /// type `kind`.
+    fn expect(&self, de: usize, kind: i64, from: &Params) -> Result<Params<'_>, IoError> {
+        match self.dirs.get(&de).map(|d| d.kind) {
+            Some(k) if k == kind => self.params(de),
+            Some(k) => Err(from.err(format!("DE {de} is entity {k}, expected {kind}"))),
+            None => Err(from.err(format!("DE {de} does not exist"))),
+        }
     }
 }
 
@@ -697,7 +726,7 @@ pub fn read_iges(text: &str) -> Result<Vec<ImportedObject>, IoError> {
         for &de in &iges.order {
             let d = &iges.dirs[&de];
             let independent = d.status.get(2..4) == Some("00");
-            if independent && matches!(d.kind, 102 | 126 | 128 | 143 | 144) {
+            if independent && matches!(d.kind, 102 | 126 | 128 | 143 | 144 | 186) {
                 let name = if d.subscript.is_empty() || d.subscript == "0" {
                     d.label.clone()
                 } else {

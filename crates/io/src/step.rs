@@ -406,7 +406,7 @@ pub struct Topology {
 }
 
 /// `true` if all Euclidean control points are equal (the curve is one point).
-fn collapsed(c: &BezierCurve<Rational>) -> bool {
+pub(crate) fn collapsed(c: &BezierCurve<Rational>) -> bool {
     let first = euclid(c.control_point(0));
     c.control_points().all(|p| euclid(p) == first)
 }
@@ -966,7 +966,7 @@ fn side_point(side: usize, s: i64) -> [i64; 2] {
 /// same parametrization) the face parameter at the edge parameter `t` is the side's
 /// corner-to-corner line at `φ_ρ⁻¹(t) = φ_{1/ρ}(t)`: the rational line with weights
 /// `1, 1/ρ` (an exact degree-1 rational B-spline in the `(u, v)` plane).
-fn pcurve(
+pub(crate) fn pcurve(
     edge: &BezierCurve<Rational>,
     along: &BezierCurve<Rational>,
     side: usize,

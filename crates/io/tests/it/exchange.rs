@@ -140,6 +140,43 @@ fn iges_text(objects: &[Object]) -> String {
     rcagd_io::iges::write_iges_with(objects, &opts).expect("iges")
 }
 
+/// Entity type → count, from the Directory Entry section.
+fn iges_entity_counts(text: &str) -> std::collections::BTreeMap<u32, usize> {
+    let mut out = std::collections::BTreeMap::new();
+    for line in text.lines().filter(|l| l.as_bytes().get(72) == Some(&b'D')) {
+        let seq: usize = line[73..].trim().parse().expect("sequence number");
+        if seq % 2 == 1 {
+            *out.entry(line[..8].trim().parse().expect("entity type")).or_default() += 1;
+        }
+    }
+    out
+}
+
+/// Closed objects are manifold solid B-reps (one 186 of one closed shell 514, a face
+/// 510 with a loop 508 per patch, shared edges once in the edge list); open ones loose
+/// surfaces.
+#[test]
+fn closed_objects_are_manifold_solids_in_iges() {
+    let all = gallery();
+    let counts = |name: &str| {
+        let o = all.iter().find(|o| o.name == name).expect("object");
+        iges_entity_counts(&iges_text(std::slice::from_ref(o)))
+    };
+    let sphere = counts("sphere");
+    for (kind, n) in [(186, 1), (514, 1), (510, 8), (508, 8), (128, 8), (504, 1), (502, 1)] {
+        assert_eq!(sphere.get(&kind), Some(&n), "sphere: entity {kind}: {sphere:?}");
+    }
+    // 12 shared edge curves (the 4 pole sides are vertex-type loop entries) and one
+    // parameter line per loop entry (8 faces × 4 sides)
+    assert_eq!(sphere.get(&126), Some(&(12 + 32)), "{sphere:?}");
+    let torus = counts("torus");
+    assert_eq!(torus.get(&186), Some(&1), "{torus:?}");
+    assert_eq!(torus.get(&126), Some(&(32 + 64)), "{torus:?}");
+    let tube = counts("tube");
+    assert_eq!(tube.get(&186), None, "an open tube is not a solid: {tube:?}");
+    assert_eq!(tube.get(&128), Some(&4));
+}
+
 #[test]
 fn iges_round_trip_is_exact_with_the_sidecar() {
     use rcagd_io::iges_read::read_iges;
