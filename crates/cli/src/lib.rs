@@ -8,12 +8,26 @@
 //! Every problem with an input file is a [`source::Diagnostic`] with file, line and
 //! column; nothing that depends on input panics.
 
-/// Writes to standard output, ignoring errors (a closed pipe must not panic).
+/// The first error writing to standard output (a full disk, `> /dev/full`, a closed
+/// pipe), kept for [`stdout_error`]: the command then exits non-zero.
+static STDOUT_ERROR: std::sync::OnceLock<std::io::Error> = std::sync::OnceLock::new();
+
+/// Writes to standard output without panicking; a failure is recorded
+/// ([`stdout_error`]) and later writes are skipped.
 pub fn write_stdout(s: &str) {
     use std::io::Write as _;
+    if STDOUT_ERROR.get().is_some() {
+        return;
+    }
     let mut o = std::io::stdout().lock();
-    let _ = o.write_all(s.as_bytes());
-    let _ = o.flush();
+    if let Err(e) = o.write_all(s.as_bytes()).and_then(|()| o.flush()) {
+        let _ = STDOUT_ERROR.set(e);
+    }
+}
+
+/// The error that made a write to standard output fail, if any.
+pub fn stdout_error() -> Option<&'static std::io::Error> {
+    STDOUT_ERROR.get()
 }
 
 /// Writes to standard error, ignoring errors.

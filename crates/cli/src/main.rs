@@ -92,5 +92,13 @@ fn main() -> ExitCode {
         } => build::run(&recipe, out.as_deref(), &formats),
         Command::Ops { name, markdown } => ops::describe::run(name.as_deref(), markdown),
     };
+    // output that did not arrive is a failure (a full disk, `> /dev/full`); a reader
+    // that closed the pipe early gets no message
+    if let Some(e) = rcagd_cli::stdout_error() {
+        if e.kind() != std::io::ErrorKind::BrokenPipe {
+            rcagd_cli::write_stderr(&format!("error: cannot write to standard output: {e}\n"));
+        }
+        return ExitCode::from(code.max(EXIT_INPUT));
+    }
     ExitCode::from(code)
 }

@@ -155,6 +155,22 @@ pub fn write_objects(
         .iter()
         .flat_map(|o| formats.iter().map(move |&f| (o, f)))
         .collect();
+    // two outputs with one path (object `a` with --format exact and `a.exact` with
+    // --format json) would overwrite each other silently
+    let mut owner: std::collections::HashMap<PathBuf, (&str, &str)> =
+        std::collections::HashMap::new();
+    for &(o, f) in &jobs {
+        let path = dir.join(format!("{}.{}", o.name, f.extension()));
+        if let Some((other, fmt)) = owner.insert(path.clone(), (o.name.as_str(), f.label())) {
+            return Err(format!(
+                "objects {other:?} (format {fmt}) and {:?} (format {}) would both be written to {}: \
+                 rename one of them (nothing was written)",
+                o.name,
+                f.label(),
+                path.display()
+            ));
+        }
+    }
     let files: Vec<(PathBuf, Vec<u8>)> = jobs
         .par_iter()
         .map(|&(o, f)| {
@@ -168,23 +184,60 @@ pub fn write_objects(
         .collect::<Result<_, _>>()?;
     let created = !dir.exists();
     create_dir(dir)?;
-    let mut written: Vec<PathBuf> = Vec::with_capacity(files.len());
-    for (path, bytes) in files {
-        if let Err(e) = std::fs::write(&path, bytes) {
-            // a partly written file may exist too
-            let _ = std::fs::remove_file(&path);
-            for p in &written {
-                let _ = std::fs::remove_file(p);
-            }
-            if created {
-                let _ = std::fs::remove_dir(dir);
-            }
+    // every file goes to a temporary name beside its target first; only when all were
+    // written completely (a full disk fails here) are they renamed into place, so a
+    // failure leaves the directory as it was (existing files of the same names intact)
+    let temp_of = |path: &Path| -> PathBuf {
+        let name = path
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        path.with_file_name(format!(".{name}.rcagd-partial"))
+    };
+    let mut temps: Vec<PathBuf> = Vec::with_capacity(files.len());
+    let cleanup = |temps: &[PathBuf]| {
+        for t in temps {
+            let _ = std::fs::remove_file(t);
+        }
+        if created {
+            let _ = std::fs::remove_dir(dir);
+        }
+    };
+    for (path, bytes) in &files {
+        let tmp = temp_of(path);
+        let result = std::fs::File::create(&tmp).and_then(|mut f| {
+            use std::io::Write as _;
+            f.write_all(bytes)?;
+            f.sync_all()
+        });
+        temps.push(tmp);
+        if let Err(e) = result {
+            cleanup(&temps);
             return Err(format!(
-                "cannot write {}: {e} (the files written before it were removed)",
+                "cannot write {}: {e} (nothing was written; the directory is as it was)",
                 path.display()
             ));
         }
-        written.push(path);
+    }
+    let mut written: Vec<PathBuf> = Vec::with_capacity(files.len());
+    for ((path, _), tmp) in files.iter().zip(&temps) {
+        if let Err(e) = std::fs::rename(tmp, path) {
+            cleanup(&temps);
+            return Err(format!(
+                "cannot move {} into place: {e} (the files moved before it: {})",
+                path.display(),
+                if written.is_empty() {
+                    "none".to_string()
+                } else {
+                    written
+                        .iter()
+                        .map(|p| p.display().to_string())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                }
+            ));
+        }
+        written.push(path.clone());
     }
     Ok(written)
 }

@@ -442,6 +442,83 @@ fn build_writes_formats_to_out_dir() {
     assert!(!out2.join("quarter.obj").exists());
 }
 
+/// A write that fails midway leaves the output directory as it was (files of the same
+/// names keep their old contents, no partial files); two objects whose files would
+/// collide are an error; output that cannot reach standard output is a failure.
+#[test]
+fn output_is_atomic_and_never_silently_lost() {
+    let dir = temp_dir("cli-atomic");
+    let p = write(&dir, "q.toml", QUARTER_TOML);
+    let out = dir.join("out");
+    std::fs::create_dir_all(&out).expect("mkdir");
+    std::fs::write(out.join("quarter.json"), "old").expect("old file");
+    // the temporary file of the SVG cannot be created (a directory has its name)
+    std::fs::create_dir_all(out.join(".quarter.svg.rcagd-partial")).expect("blocker");
+    let o = bin()
+        .arg("build")
+        .arg(&p)
+        .arg("--out")
+        .arg(&out)
+        .args(["--format", "json,svg"])
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("the directory is as it was"),
+        "{}",
+        stderr(&o)
+    );
+    assert_eq!(
+        std::fs::read_to_string(out.join("quarter.json")).expect("kept"),
+        "old"
+    );
+    let mut left: Vec<String> = std::fs::read_dir(&out)
+        .expect("read dir")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    left.sort();
+    assert_eq!(left, [".quarter.svg.rcagd-partial", "quarter.json"]);
+    // colliding outputs: `a` as exact NURBS and `a.exact` as JSON are both a.exact.json
+    let coll = write(
+        &dir,
+        "coll.toml",
+        &format!(
+            "{QUARTER_TOML}\n{}",
+            QUARTER_TOML.replace("\"quarter\"", "\"quarter.exact\"")
+        ),
+    );
+    let o = bin()
+        .arg("build")
+        .arg(&coll)
+        .arg("--out")
+        .arg(dir.join("coll"))
+        .args(["--format", "json,exact"])
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("would both be written to"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!dir.join("coll").exists());
+    // a full standard output
+    if let Ok(full) = std::fs::OpenOptions::new().write(true).open("/dev/full") {
+        let o = bin()
+            .arg("build")
+            .arg(&p)
+            .stdout(full)
+            .output()
+            .expect("run");
+        assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+        assert!(
+            stderr(&o).contains("cannot write to standard output"),
+            "{}",
+            stderr(&o)
+        );
+    }
+}
+
 #[test]
 fn build_from_stdin() {
     let mut child = bin()

@@ -146,7 +146,8 @@ fn iges_entity_counts(text: &str) -> std::collections::BTreeMap<u32, usize> {
     for line in text.lines().filter(|l| l.as_bytes().get(72) == Some(&b'D')) {
         let seq: usize = line[73..].trim().parse().expect("sequence number");
         if seq % 2 == 1 {
-            *out.entry(line[..8].trim().parse().expect("entity type")).or_default() += 1;
+            *out.entry(line[..8].trim().parse().expect("entity type"))
+                .or_default() += 1;
         }
     }
     out
@@ -163,8 +164,20 @@ fn closed_objects_are_manifold_solids_in_iges() {
         iges_entity_counts(&iges_text(std::slice::from_ref(o)))
     };
     let sphere = counts("sphere");
-    for (kind, n) in [(186, 1), (514, 1), (510, 8), (508, 8), (128, 8), (504, 1), (502, 1)] {
-        assert_eq!(sphere.get(&kind), Some(&n), "sphere: entity {kind}: {sphere:?}");
+    for (kind, n) in [
+        (186, 1),
+        (514, 1),
+        (510, 8),
+        (508, 8),
+        (128, 8),
+        (504, 1),
+        (502, 1),
+    ] {
+        assert_eq!(
+            sphere.get(&kind),
+            Some(&n),
+            "sphere: entity {kind}: {sphere:?}"
+        );
     }
     // 12 shared edge curves (the 4 pole sides are vertex-type loop entries) and one
     // parameter line per loop entry (8 faces × 4 sides)
@@ -173,7 +186,11 @@ fn closed_objects_are_manifold_solids_in_iges() {
     assert_eq!(torus.get(&186), Some(&1), "{torus:?}");
     assert_eq!(torus.get(&126), Some(&(32 + 64)), "{torus:?}");
     let tube = counts("tube");
-    assert_eq!(tube.get(&186), None, "an open tube is not a solid: {tube:?}");
+    assert_eq!(
+        tube.get(&186),
+        None,
+        "an open tube is not a solid: {tube:?}"
+    );
     assert_eq!(tube.get(&128), Some(&4));
 }
 
