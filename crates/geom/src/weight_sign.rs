@@ -332,3 +332,95 @@ mod tests {
         assert_eq!(split_patch_uniform(&p, 3).expect("ok"), None);
     }
 }
+
+/// Where the weight function of an exact curve vanishes on `[0, 1]`: the curve passes
+/// through a point at infinity there (a pole).
+#[derive(Debug, Clone, PartialEq)]
+pub struct WeightZero {
+    /// The distinct zeros of `w(t) = Σ wᵢ Bᵢⁿ(t)` in `[0, 1]`, as exact isolating
+    /// intervals `[lo, hi]` (equal ends for a rational zero) with the zero rounded to
+    /// `f64`.
+    pub zeros: Vec<(rcagd_algebra::Rational, rcagd_algebra::Rational, f64)>,
+}
+
+impl core::fmt::Display for WeightZero {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        use crate::certify::format_scalar;
+        let at: Vec<String> = self
+            .zeros
+            .iter()
+            .map(|(lo, hi, t)| {
+                if t.is_nan() {
+                    "every t (it is identically zero)".to_string()
+                } else if lo == hi {
+                    format!("t = {}", format_scalar(lo))
+                } else {
+                    format!(
+                        "t ≈ {t:.9} (in [{}, {}])",
+                        format_scalar(lo),
+                        format_scalar(hi)
+                    )
+                }
+            })
+            .collect();
+        write!(
+            f,
+            "the weight function Σ wᵢ Bᵢ(t) vanishes at {}: the curve passes through a point at infinity (a pole) on [0, 1]",
+            at.join(", ")
+        )
+    }
+}
+
+/// Decides exactly that an exact rational curve has no pole on `[0, 1]` — the one rule
+/// every op applies to a user's weights: weights of one sign suffice (convex hull
+/// property; all negative is the same curve), otherwise the weight polynomial's zeros in
+/// `[0, 1]` are counted by exact real-root isolation (Sturm/Descartes bisection,
+/// [`rcagd_algebra::roots::isolate_real_roots_in`]). Returns the certificate; weights of mixed
+/// sign whose weight function has no zero on `[0, 1]` are accepted (the exporters split
+/// such a curve into pieces of one sign).
+///
+/// # Errors
+/// [`WeightZero`] naming every zero of the weight function on `[0, 1]` (also for a
+/// weight function that is identically zero: every point is at infinity).
+pub fn curve_pole_free(
+    c: &BezierCurve<rcagd_algebra::Rational>,
+) -> Result<rcagd_algebra::Certificate, WeightZero> {
+    use rcagd_algebra::roots::isolate_real_roots_in;
+    use rcagd_algebra::Certificate;
+    use rcagd_algebra::Rational;
+    if curve_has_one_sign(c) {
+        return Ok(Certificate::decide(
+            "the weights wᵢ all have one sign (Σ wᵢ Bᵢ ≠ 0 on [0, 1]: no pole)",
+            true,
+            true,
+            String::new,
+        ));
+    }
+    let (zero, one) = (Rational::from(0), Rational::from(1));
+    let w = c.weight_poly();
+    if w.is_zero() {
+        return Err(WeightZero {
+            zeros: vec![(zero, one, f64::NAN)],
+        });
+    }
+    match isolate_real_roots_in(&w, &zero, &one) {
+        Ok(roots) if roots.is_empty() => Ok(Certificate::decide(
+            "the weight function Σ wᵢ Bᵢ(t) has no zero on [0, 1] (weights of mixed sign; exact real-root isolation): no pole",
+            true,
+            true,
+            String::new,
+        )),
+        Ok(roots) => Err(WeightZero {
+            zeros: roots
+                .iter()
+                .map(|r| {
+                    let t = r.root_f64(&w).unwrap_or((Scalar::to_f64(&r.lo) + Scalar::to_f64(&r.hi)) / 2.0);
+                    (r.lo.clone(), r.hi.clone(), t)
+                })
+                .collect(),
+        }),
+        Err(_) => Err(WeightZero {
+            zeros: vec![(zero, one, f64::NAN)],
+        }),
+    }
+}

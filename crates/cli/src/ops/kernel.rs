@@ -348,19 +348,35 @@ pub(super) fn homogeneous_points(
         .collect())
 }
 
-/// The certificate "every weight is positive": then the denominator `Σ wᵢ Bᵢ(t)` has
-/// no zero on the closed parameter domain, so the curve or patch has no pole there.
-fn positive_weights_certificate<'a>(weights: impl Iterator<Item = &'a Rational>) -> Certificate {
-    let bad: Vec<String> = weights
-        .filter(|w| **w <= Rational::zero())
-        .map(format_rational)
-        .collect();
-    Certificate::decide(
-        "every weight wᵢ > 0 (Σ wᵢ Bᵢ ≠ 0: no pole on the parameter domain)",
-        bad.is_empty(),
-        true,
-        || format!("non-positive weights {}", bad.join(", ")),
-    )
+/// The certificate that a patch has no pole on `[0, 1]²`: weights of one sign, or (mixed
+/// signs) pieces of one sign after at most 5 + 5 bisections
+/// ([`rcagd_geom::weight_sign::split_patches_adaptive`]); otherwise an input error on
+/// `param`.
+fn patch_pole_certificate(patch: &BezierPatch<Rational>, param: &'static str) -> Result<Certificate, OpError> {
+    use rcagd_geom::weight_sign::{patch_has_one_sign, split_patches_adaptive, SignRule};
+    if patch_has_one_sign(patch) {
+        return Ok(Certificate::decide(
+            "the weights wᵢⱼ all have one sign (Σ wᵢⱼ Bᵢ Bⱼ ≠ 0 on [0, 1]²: no pole)",
+            true,
+            true,
+            String::new,
+        ));
+    }
+    match split_patches_adaptive(vec![patch.clone()], SignRule::OneSign, (5, 5)) {
+        Ok(split) if split.failed == 0 => Ok(Certificate::decide(
+            format!(
+                "weights of mixed sign, but each of {} subpatches (exact bisections) has weights of one sign: Σ wᵢⱼ Bᵢ Bⱼ ≠ 0 on [0, 1]² (no pole)",
+                split.pieces.len()
+            ),
+            true,
+            true,
+            String::new,
+        )),
+        _ => Err(OpError::param(
+            param,
+            "weights of mixed sign whose weight function Σ wᵢⱼ Bᵢ Bⱼ could not be shown to be non-zero on [0, 1]² (5 bisections per direction): the patch passes through or near points at infinity",
+        )),
+    }
 }
 
 /// The inline curve of the `points` / `weights` / `homogeneous` parameters.
@@ -374,13 +390,18 @@ fn inline_curve(args: &OpArgs) -> Result<BezierCurve<Rational>, OpError> {
     BezierCurve::from_homogeneous(hom).map_err(|e| OpError::param("points", e.to_string()))
 }
 
-fn curve_weights_certificate(curve: &BezierCurve<Rational>) -> Certificate {
-    positive_weights_certificate(curve.control_points().filter_map(|p| p.first()))
+/// The inline curve and its certificate of having no pole on `[0, 1]`
+/// ([`rcagd_geom::weight_sign::curve_pole_free`]: the same rule for every op that takes
+/// a user's weights); a weight function with a zero there is an input error.
+fn inline_curve_pole_free(args: &OpArgs) -> Result<(BezierCurve<Rational>, Certificate), OpError> {
+    let curve = inline_curve(args)?;
+    let param = if args.bool("homogeneous")? { "points" } else { "weights" };
+    let cert = rcagd_geom::weight_sign::curve_pole_free(&curve).map_err(|e| OpError::param(param, e.to_string()))?;
+    Ok((curve, cert))
 }
 
 fn build_bezier_curve(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let curve = inline_curve(args)?;
-    let cert = curve_weights_certificate(&curve);
+    let (curve, cert) = inline_curve_pole_free(args)?;
     Ok(vec![args.object(Geometry::Curve(curve), vec![cert])])
 }
 
@@ -388,7 +409,7 @@ fn build_bezier_curve(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 const MAX_ELEVATION: i64 = 32;
 
 fn build_degree_elevate(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let curve = inline_curve(args)?;
+    let (curve, pole_cert) = inline_curve_pole_free(args)?;
     let by = args.int("by")?;
     let r = usize::try_from(by)
         .ok()
@@ -401,12 +422,12 @@ fn build_degree_elevate(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         })?;
     let elevated = curve.elevate(r);
     let mut certs = vec![curves_agree(&curve, &elevated)?];
-    certs.push(curve_weights_certificate(&elevated));
+    certs.push(pole_cert);
     Ok(vec![args.object(Geometry::Curve(elevated), certs)])
 }
 
 fn build_subdivide(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let curve = inline_curve(args)?;
+    let (curve, pole_cert) = inline_curve_pole_free(args)?;
     let at = args.number("at")?;
     if at <= Rational::zero() || at >= Rational::one() {
         return Err(OpError::param(
@@ -416,7 +437,7 @@ fn build_subdivide(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     }
     let (left, right) = curve.subdivide(&at)?;
     // Cross-check de Casteljau against the blossom-based affine reparametrization.
-    let mut certs = Vec::new();
+    let mut certs = vec![pole_cert];
     let restricted_left = curve.restrict(&Rational::zero(), &at)?;
     let restricted_right = curve.restrict(&at, &Rational::one())?;
     certs.extend(prefixed(
@@ -467,7 +488,7 @@ fn build_bezier_patch(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         })?);
     }
     let patch = BezierPatch::from_homogeneous(rows).map_err(|e| OpError::param("net", e.to_string()))?;
-    let s = patch.dim() + 1;
-    let cert = positive_weights_certificate(patch.coords().iter().step_by(s));
+    let param = if homogeneous { "net" } else { "weights" };
+    let cert = patch_pole_certificate(&patch, param)?;
     Ok(vec![args.object(Geometry::Patch(patch), vec![cert])])
 }

@@ -3,3 +3,4 @@
 
 mod bezier_props;
 mod nurbs_tess;
+mod pole_free;
