@@ -105,6 +105,39 @@ pub enum SphereFamilyError {
     InvalidDomain(String),
 }
 
+impl SphereFamilyError {
+    /// The input of [`SphereFamilyEnvelope::from_data`] that violates the precondition, as a
+    /// recipe names it: `"points"` (the net), `"a"`, `"a_imaginary"`, `"b"` (the support
+    /// functions) or `"domain"`.
+    pub fn input(&self) -> &'static str {
+        match self {
+            SphereFamilyError::Net(_)
+            | SphereFamilyError::SingularSystem
+            | SphereFamilyError::Undefined(_)
+            | SphereFamilyError::NoRealEnvelope(_) => "points",
+            SphereFamilyError::DegenerateFamily => "a",
+            SphereFamilyError::PoleInDomain(_) | SphereFamilyError::InvalidDomain(_) => "domain",
+            SphereFamilyError::InconsistentSupport(m) => {
+                if m.starts_with("b_u")
+                    || m.starts_with("b ≠")
+                    || m.starts_with("a_u ≠ b_v")
+                    || m.starts_with("the support function b")
+                {
+                    "b"
+                } else if m.starts_with("a_v") {
+                    "a"
+                } else if m
+                    .starts_with("the support functions of a hyperbolic or parabolic net are real")
+                {
+                    "a_imaginary"
+                } else {
+                    "points"
+                }
+            }
+        }
+    }
+}
+
 /// A support function `a(u, v)` (Gruber (3.6)): real part and, for elliptic nets, imaginary
 /// part (polynomials in the net parameters `u` = variable 0, `v` = variable 1).
 #[derive(Debug, Clone)]
@@ -534,6 +567,11 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
     /// The net.
     pub fn net(&self) -> &LineNet<F> {
         &self.net
+    }
+
+    /// The support functions `(a, b)` in the net parameters.
+    pub fn supports(&self) -> (&Support<F>, &Support<F>) {
+        (&self.a, &self.b)
     }
 
     /// The subcase of Gruber chapter 3.
