@@ -94,18 +94,17 @@ fn support_function_errors_name_a_or_b() {
         "net = \"hyperbolic\"\npoints = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 2, 0, 1], [0, 0, 1, 0]]\n";
     // a depends on v: blamed on a (line 6)
     let (line, msg) = build_err(&format!(
-        "{HEAD}op = \"sphere_family_envelope\"\n{net}a = [[0, 1], [0], [1]]\nb = [[0, 0, 1]]\n"
+        "{HEAD}op = \"sphere_family_envelope\"\n{net}a = [[0, 1], [0, 0], [1, 0]]\nb = [[0, 0, 1]]\n"
     ));
     assert_eq!(line, 6, "{msg}");
     assert!(msg.contains("a_v"), "{msg}");
     // b depends on u: blamed on b (line 7)
     let (line, msg) = build_err(&format!(
-        "{HEAD}op = \"sphere_family_envelope\"\n{net}a = [[0], [0], [1]]\nb = [[0, 0, 1], [1]]\n"
+        "{HEAD}op = \"sphere_family_envelope\"\n{net}a = [[0], [0], [1]]\nb = [[0, 0, 1], [1, 0, 0]]\n"
     ));
     assert_eq!(line, 7, "{msg}");
     assert!(msg.contains("b_u"), "{msg}");
-    // a missing b of a hyperbolic net: blamed on b's absence at the op... and the net itself
-    // (axes meet) on points (line 5)
+    // a degenerate net (the axes meet): blamed on points (line 5)
     let (line, msg) = build_err(&format!(
         "{HEAD}op = \"sphere_family_envelope\"\nnet = \"hyperbolic\"\npoints = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]\na = [[0], [0], [1]]\nb = [[0, 0, 1]]\n"
     ));
