@@ -31,6 +31,8 @@
 //! * [`cyclographic_param`]: the cyclographic parametrization `Γ(s, t)` (Gruber §2.3) of a
 //!   quadratic family as the rational fallback when the spine-parameter constructions need
 //!   `Q(√d)` ([`canal_surface_rational`]);
+//! * [`normal_field`]: the canal surface from any rational unit normal field along the
+//!   spine (a rational point on every circle of normals, Gruber (2.10) ff.);
 //! * [`krasauskas`]: Krasauskas' construction (Gruber §2.4): the circles of normals as
 //!   `f_s(a(t) + u b(t))` of a real pencil in `C²`, reduced by the operations (2.36) (and
 //!   their combination, which also removes collapsed circles). [`canal_surface`] tries it
@@ -55,6 +57,7 @@ pub mod exportable;
 pub mod factor;
 pub mod frame;
 pub mod krasauskas;
+pub mod normal_field;
 pub mod pipe;
 pub mod regularity;
 pub mod sum_of_squares;
@@ -77,6 +80,7 @@ pub use exportable::{
 pub use frame::{
     canal_surface_pole_free, pipe_around_ph_pole_free, pole_free_direction, EXPORT_SPLITS,
 };
+pub use normal_field::{canal_surface_from_normal_field, NormalFieldCanal};
 pub use pipe::{pipe_around_ph, pipe_around_ph_poly, pipe_around_planar, pipe_surface};
 pub use regularity::{check_pipe_global, check_pipe_regularity, pipe_regularity_polynomials};
 pub use sum_of_squares::{

@@ -6,7 +6,8 @@
 
 use proptest::prelude::*;
 use rcagd::canal::{
-    canal_surface_rational, CanalError, CanalOptions, CanalSpine, QuadraticCanal, RationalCanal,
+    canal_surface_from_normal_field, canal_surface_rational, CanalError, CanalOptions, CanalSpine,
+    QuadraticCanal, RationalCanal,
 };
 use rcagd::Certified;
 use rcagd_algebra::{Certificate, Poly, Rational, Scalar};
@@ -148,6 +149,91 @@ proptest! {
                         prop_assert!((v - y[k]).abs() <= 1e-9 * (1.0 + v.abs()), "{} vs {}", v, y[k]);
                     }
                 }
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// (2.10) with an arbitrary rational normal field: a rational point n₀(t) on every circle of
+// normals instead of a split of |ṁ|² − ṙ².
+
+#[test]
+fn canal_surface_from_a_rational_normal_field() {
+    // m = (t, t²/2, 0), r = t: ṁ = (1, t, 0), ṙ = 1, and n₀ = (−1, 0, 0) is a unit normal
+    // with ⟨n₀, ṁ⟩ + ṙ = 0 (docs/math/lines-and-canal.md, Errata G9 family)
+    let spine = CanalSpine::polynomial(
+        [
+            Poly::from_ints(&[0, 1]),
+            Poly::new(vec![r(0, 1), r(0, 1), r(1, 2)]),
+            Poly::zero(),
+        ],
+        Poly::from_ints(&[0, 1]),
+    );
+    let n0 = [Poly::from_ints(&[-1]), Poly::zero(), Poly::zero()];
+    let c = canal_surface_from_normal_field(&spine, &n0, &Poly::from_ints(&[1])).expect("built");
+    let certs = c.certify();
+    assert!(Certificate::all_hold(&certs), "{certs:#?}");
+    assert_eq!(certs.len(), 4);
+    assert_eq!(c.bidegree().1, 2, "circles of degree 2 in u");
+    // a point is at distance r(t) from m(t)
+    let (t, u) = (r(1, 2), r(3, 1));
+    let x = c.eval(&t, &u).expect("point");
+    let (m, rad) = spine.eval(&t).expect("sphere");
+    let dist = (0..3).fold(r(0, 1), |a, k| a + (x[k].clone() - m[k].clone()).pow(2));
+    assert_eq!(dist, rad.clone() * rad);
+    assert!(c.patch((r(1, 4), r(1, 1)), (r(0, 1), r(1, 1))).is_ok());
+    // not a unit field / not on the circles of normals: named errors
+    let bad = [Poly::from_ints(&[0, 1]), Poly::zero(), Poly::zero()];
+    match canal_surface_from_normal_field(&spine, &bad, &Poly::from_ints(&[1])) {
+        Err(CanalError::InvalidArgument(m)) => assert!(m.contains("unit"), "{m}"),
+        other => panic!("{other:?}"),
+    }
+    let off = [Poly::from_ints(&[1]), Poly::zero(), Poly::zero()];
+    match canal_surface_from_normal_field(&spine, &off, &Poly::from_ints(&[1])) {
+        Err(CanalError::InvalidArgument(m)) => assert!(m.contains("circles of normals"), "{m}"),
+        other => panic!("{other:?}"),
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// Random families built around a random rational unit vector n₀ = σ(a, b) (inverse
+    /// stereographic projection): m random, r = c − ⟨n₀, m⟩ so that ⟨n₀, ṁ⟩ + ṙ = 0; the
+    /// surface is certified and f64 agrees with exact.
+    #[test]
+    fn random_normal_fields(
+        a in small(), b in small(), c in proptest::array::uniform6(small()), k in 1i64..=3,
+    ) {
+        let den = 1 + a * a + b * b;
+        let n0 = [r(2 * a, den), r(2 * b, den), r(1 - a * a - b * b, den)];
+        let m = [
+            Poly::from_ints(&[0, 1, c[0]]),
+            Poly::from_ints(&[0, c[1], c[2]]),
+            Poly::from_ints(&[0, c[3], c[4]]),
+        ];
+        let mut rad = Poly::new(vec![r(k, 1)]);
+        for (i, mi) in m.iter().enumerate() {
+            rad = &rad - &mi.scale(&n0[i]);
+        }
+        let spine = CanalSpine::polynomial(m, rad);
+        let nf = n0.clone().map(|x| Poly::new(vec![x]));
+        let built = match canal_surface_from_normal_field(&spine, &nf, &Poly::from_ints(&[1])) {
+            Ok(b) => b,
+            Err(CanalError::InvalidArgument(m)) if m.contains("ṁ ≡ 0") => return Ok(()),
+            Err(e) => return Err(TestCaseError::fail(format!("{e}"))),
+        };
+        prop_assert!(built.all_hold());
+        let nf64 = nf.clone().map(|p| p.map(Scalar::to_f64));
+        let f = canal_surface_from_normal_field(&spine.map_scalar(Scalar::to_f64), &nf64, &Poly::new(vec![1.0]))
+            .map_err(|e| TestCaseError::fail(format!("{e}")))?;
+        prop_assert!(f.all_hold());
+        let (t, u) = (r(2, 5), r(-3, 7));
+        if let (Ok(x), Ok(y)) = (built.eval(&t, &u), f.eval(&Scalar::to_f64(&t), &Scalar::to_f64(&u))) {
+            for i in 0..3 {
+                let v = Scalar::to_f64(&x[i]);
+                prop_assert!((v - y[i]).abs() <= 1e-9 * (1.0 + v.abs()), "{} vs {}", v, y[i]);
             }
         }
     }
