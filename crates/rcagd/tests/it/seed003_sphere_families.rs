@@ -1037,6 +1037,13 @@ fn recognition_through_a_change_of_the_family_parameters() {
         assert!(rec.all_hold());
         assert!(same_envelope(rec.envelope(), &build(c)));
     }
+    // elliptic 3.4.2 (3.53) with (m, n) ↦ (u + 1, 2v)
+    let c = &cases()[8];
+    let phi = c.phi.map(|t| compose(&uv(t), &uv("u+1"), &uv("2*v")));
+    let rec = family(phi).recognize().expect("recognized");
+    assert_eq!(rec.subcase().section(), c.section);
+    assert!(rec.all_hold());
+    assert!(same_envelope(rec.envelope(), &build(c)));
     // 3.3.4 (polar) with the Möbius change u ↦ 1/u of the first parameter: Φ becomes
     // rational, and the support function a has a pole that is moved to the parameter ∞
     let c = &cases()[4];
@@ -1093,6 +1100,21 @@ fn recognition_errors_are_named() {
             // Δ = 2 · (a square)
             assert!(
                 rcagd_algebra::sqrt_in_field(&(dq * q(2))).is_some(),
+                "d = {d}"
+            );
+        }
+        other => panic!("{other:?}"),
+    }
+    // elliptic: the axis c(u) = (1, i√2, 0, 0) + u (0, 1, 1, i√2) with a = u², b = ā,
+    // u = m + i√2 n gives the rational family below, Δ = −2·(a square): Q(√−2) ≠ Q(i)
+    let e = family_of(["-u^2+2*v^2", "-2*u*v", "2*u*v+2*u", "-2*v"]).recognize();
+    match e {
+        Err(RecognitionError::NeedsExtension { d, .. }) => {
+            let (dn, dd) = parse(&d, "uv");
+            let dq = dn.coeff(&[0, 0]) / dd.coeff(&[0, 0]);
+            assert!(dq < q(0), "d = {d}");
+            assert!(
+                rcagd_algebra::sqrt_in_field(&(dq * q(-2))).is_some(),
                 "d = {d}"
             );
         }
