@@ -27,6 +27,10 @@
 //! 3. The envelope is built from the recovered net and support functions
 //!    ([`SphereFamilyEnvelope`]), and the certificate `Φ_net(u(u, v), v(u, v)) ≡ Φ(u, v)`
 //!    proves that it is the envelope of the given family.
+//!
+//! The decisions (the rank of the span, `Δ` zero or a square, the kernel of the support
+//! system) are exact for exact scalars; recognize exact data and convert the result
+//! ([`SphereFamilyEnvelope::map_scalar`]) for `f64` work.
 
 use super::sphere_family::{SphereFamilyEnvelope, SphereFamilyError, Subcase, Support};
 use crate::error::format_scalar;
