@@ -55,6 +55,7 @@ const SPHERE_FAMILY_ENVELOPE: OpSpec = OpSpec {
             "[\"1/4\", 1, \"1/4\", 1]",
             "parameter rectangle [s0, s1, t0, t1] of Ω(s, t) = (2s, 2t, 1 − s² − t², 1 + s² + t²); the envelope must have no pole on it",
         ),
+        CENTRES,
     ],
     example: r#"[[object]]
 name = "sphere_family_polar_axes"
@@ -112,11 +113,27 @@ fn envelope_object(
         )
     })?;
     let (patches, weight_cert) = env
-        .export_patches((s0, s1), (t0, t1))
+        .export_patches((s0.clone(), s1.clone()), (t0.clone(), t1.clone()))
         .map_err(|e| OpError::param("domain", e.to_string()))?;
     certs.push(weight_cert);
-    Ok(vec![args.object(Geometry::Patches(patches), certs)])
+    let mut out = vec![args.object(Geometry::Patches(patches), certs)];
+    if args.bool("centres")? {
+        let (pieces, cert) = env
+            .centre_patches((s0, s1), (t0, t1))
+            .map_err(|e| OpError::param("centres", e.to_string()))?;
+        let mut o = args.object(Geometry::Patches(pieces), vec![cert]);
+        o.name = format!("{}_centres", args.name());
+        out.push(o);
+    }
+    Ok(out)
 }
+
+const CENTRES: ParamSpec = ParamSpec::with_default(
+    "centres",
+    ParamKind::Bool,
+    "false",
+    "also output the centre surface of the enveloped spheres over the same rectangle, as the object NAME_centres",
+);
 
 const SPHERE_FAMILY_RECOGNIZE: OpSpec = OpSpec {
     name: "sphere_family_recognize",
@@ -144,6 +161,7 @@ const SPHERE_FAMILY_RECOGNIZE: OpSpec = OpSpec {
             "[\"1/4\", 1, \"1/4\", 1]",
             "parameter rectangle [s0, s1, t0, t1] of Ω(s, t) = (2s, 2t, 1 − s² − t², 1 + s² + t²); the envelope must have no pole on it",
         ),
+        CENTRES,
     ],
     example: r#"[[object]]
 name = "sphere_family_recognized_331"

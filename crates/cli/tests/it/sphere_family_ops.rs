@@ -117,3 +117,27 @@ fn support_function_errors_name_a_or_b() {
     assert_eq!(line, 7, "{msg}");
     assert!(msg.contains("a_u ≠ b_v"), "{msg}");
 }
+
+#[test]
+fn the_centre_surface_is_a_second_object() {
+    let objs = build(&format!(
+        "{HEAD}op = \"sphere_family_envelope\"\nnet = \"hyperbolic\"\npoints = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 2, 0, 1], [0, 0, 1, 0]]\na = [[0], [0], [1]]\nb = [[0, 0, 1]]\ncentres = true\n"
+    ));
+    assert_eq!(objs.len(), 2);
+    assert_eq!(objs[1].name, "f_centres");
+    assert!(objs[1].certificates.iter().all(|c| c.holds && c.exact));
+    // a corner of the centre patch is π(Φ(s, t)) at (s, t) = (1/4, 1/4): Φ = (−u², 2u, 2v, …)
+    // with u, v from (3.17); it lies on the paraboloid x = −y²/4 of (3.15)
+    let Geometry::Patches(p) = &objs[1].geometry else {
+        panic!("patches")
+    };
+    for piece in p {
+        let c = piece
+            .eval(&Rational::from(0), &Rational::from(0))
+            .expect("corner");
+        assert_eq!(
+            c[0].clone(),
+            -(c[1].clone() * c[1].clone()) / Rational::from(4)
+        );
+    }
+}

@@ -775,6 +775,51 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
         patch_of(&self.psi, &d).map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))
     }
 
+    /// The centre surface `π(Φ(s, t))` of the enveloped spheres on `[s₀, s₁] × [t₀, t₁]`
+    /// (the sphere touching `Ψ(s, t)` has its centre there), as positive-weight pieces with
+    /// the certificate that every weight is positive.
+    ///
+    /// # Errors
+    /// [`SphereFamilyError::InvalidDomain`] for an empty rectangle,
+    /// [`SphereFamilyError::PoleInDomain`] if the denominator of `Φ(s, t)` vanishes on it.
+    pub fn centre_patches(
+        &self,
+        s: (F, F),
+        t: (F, F),
+    ) -> Result<(Vec<BezierPatch<F>>, Certificate), SphereFamilyError> {
+        let d = Domain::new(s.0, s.1, t.0, t.1)
+            .map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))?;
+        let den = &self.phi_st_den;
+        let sign = match sign_on_domain(den, &d, 4096) {
+            Sign::Positive => F::one(),
+            Sign::Negative => -F::one(),
+            Sign::ZeroAt(p) | Sign::Changes(p, _) | Sign::Undecided(p) => {
+                return Err(SphereFamilyError::PoleInDomain(format!(
+                    "the denominator of Φ(s, t) vanishes near (s, t) = ({}, {})",
+                    format_scalar(&p[0]),
+                    format_scalar(&p[1])
+                )))
+            }
+        };
+        let coords: Vec<MPoly<F>> = [den, &self.phi_st[0], &self.phi_st[1], &self.phi_st[2]]
+            .iter()
+            .map(|p| p.scale(&sign))
+            .collect();
+        let patch =
+            patch_of(&coords, &d).map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))?;
+        let split = split_patches_adaptive(vec![patch], SignRule::Positive, (6, 6))
+            .map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))?;
+        let (pieces, bad) = (split.pieces, split.failed);
+        let n = pieces.len();
+        let cert = Certificate::decide(
+            format!("every Bernstein weight of the {n} centre-surface patches is > 0"),
+            bad == 0,
+            F::EXACT,
+            || format!("{bad} pieces keep a weight ≤ 0"),
+        );
+        Ok((pieces, cert))
+    }
+
     /// The envelope on `[s₀, s₁] × [t₀, t₁]` as rational Bézier patches whose Bernstein
     /// weights are all positive (the patch of [`Self::patch`], negated if `W < 0`, bisected
     /// where a weight is ≤ 0), with the certificate that every weight is positive.
