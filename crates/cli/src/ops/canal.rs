@@ -15,9 +15,9 @@ use num_traits::{One, Zero};
 use rcagd::canal::bipoly::{patch_of, BiPoly};
 use rcagd::canal::blend::PlaneEnd;
 use rcagd::canal::{
-    blend_sphere_plane, blend_spheres, canal_surface_pole_free, pipe_along_chain,
+    blend_sphere_plane, blend_spheres, canal_surface_pole_free, canal_surface_rational, pipe_along_chain,
     pipe_around_ph_exportable, pipe_exportable, BlendEnd, BlendSpine, CanalBuild, CanalError, CanalOptions, CanalSpine,
-    CanalSurface, Method, Orientation,
+    CanalSurface, Method, Orientation, RationalCanal,
 };
 use rcagd::lines::{common_transversals, CommonTransversals, Line, Regulus};
 use rcagd::ph::PhCurve;
@@ -520,6 +520,11 @@ const CANAL_SURFACE: OpSpec = OpSpec {
             "\"lowest\"",
             "the construction: \"lowest\" builds both and keeps the one with fewer control points once split into pieces with positive weights (on a tie the lower bidegree), or exactly the one named (Krasauskas' pencil is built over Q only)",
         ),
+        ParamSpec::optional(
+            "cyclographic_domain",
+            ParamKind::Numbers,
+            "[s0, s1, t0, t1]: when |ṁ|² − ṙ² splits only over Q(√d) and the family is polynomial of degree ≤ 2, the surface is built over Q by the cyclographic parametrization Γ(s, t) of Gruber §2.3 on this rectangle of Ω(s, t) = (2s, 2t, 1 − s² − t², 1 + s² + t²) (not a spine interval)",
+        ),
     ],
     example: r#"[[object]]
 name = "canal_parabola"
@@ -602,10 +607,31 @@ fn build_canal_surface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         method,
         ..CanalOptions::default()
     };
-    let build =
-        canal_surface_pole_free(&family, &options).map_err(|e| canal_err(e, "points", "radius"))?;
-    let s = rational_build(&build, "radius")?;
-    Ok(vec![canal_object(args, s, Vec::new())?])
+    let dom = match args.opt_numbers("cyclographic_domain")? {
+        None => None,
+        Some(d) => Some(<[Rational; 4]>::try_from(d.clone()).map_err(|_| {
+            OpError::param(
+                "cyclographic_domain",
+                format!("four numbers [s0, s1, t0, t1], got {}", d.len()),
+            )
+        })?),
+    };
+    let built = canal_surface_rational(&family, &options, dom.as_ref()).map_err(|e| match e {
+        CanalError::IrrationalSplit { .. } | CanalError::CyclographicDomainNeeded { .. } => {
+            OpError::param("radius", e.to_string())
+        }
+        CanalError::InvalidArgument(_) if dom.is_some() => {
+            OpError::param("cyclographic_domain", e.to_string())
+        }
+        e => canal_err(e, "points", "radius"),
+    })?;
+    match built {
+        RationalCanal::Spine(s) => Ok(vec![canal_object(args, &s, Vec::new())?]),
+        RationalCanal::Cyclographic(c) => Ok(vec![args.object(
+            Geometry::Patches(c.patches().to_vec()),
+            c.certify(),
+        )]),
+    }
 }
 
 const PIPE_PH: OpSpec = OpSpec {

@@ -2,19 +2,23 @@
 //! net and two support functions (`rcagd::envelope`; D. Gruber, "Rationale
 //! Parametrisierungen von Kugelhüllflächen", 2008, §3.2–3.5). The envelope `Ψ(s, t)` is
 //! rational over the whole absolute quadric `Ω(s, t)`; both sheets (the two contact points
-//! with each sphere) are parameter regions of the same map.
+//! with each sphere) are parameter regions of the same map. `sphere_family_recognize` takes
+//! the family itself (centre and radius as rational functions of two parameters), recovers
+//! its line net and support functions (`rcagd::envelope::SphereFamily::recognize`) and
+//! builds the same envelope, or names why the family has none of this kind.
 
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::Geometry;
 use crate::model::Object;
 use crate::value::ParamKind;
-use rcagd::envelope::SphereFamilyEnvelope;
+use rcagd::envelope::{SphereFamily, SphereFamilyEnvelope};
+use rcagd_algebra::mpoly::MPoly;
 use rcagd::lines::NetKind;
 use rcagd::Certified;
 use rcagd_algebra::{Certificate, Rational};
 
 /// The ops of this topic.
-pub const OPS: &[OpSpec] = &[SPHERE_FAMILY_ENVELOPE];
+pub const OPS: &[OpSpec] = &[SPHERE_FAMILY_ENVELOPE, SPHERE_FAMILY_RECOGNIZE];
 
 const SPHERE_FAMILY_ENVELOPE: OpSpec = OpSpec {
     name: "sphere_family_envelope",
@@ -51,6 +55,7 @@ const SPHERE_FAMILY_ENVELOPE: OpSpec = OpSpec {
             "[\"1/4\", 1, \"1/4\", 1]",
             "parameter rectangle [s0, s1, t0, t1] of Ω(s, t) = (2s, 2t, 1 − s² − t², 1 + s² + t²); the envelope must have no pole on it",
         ),
+        CENTRES,
     ],
     example: r#"[[object]]
 name = "sphere_family_polar_axes"
@@ -78,18 +83,146 @@ fn build_envelope(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         .ok_or_else(|| OpError::param("a", "the support function a is required"))?;
     let a_im = args.opt_grid("a_imaginary")?;
     let b = args.opt_grid("b")?;
-    let env = SphereFamilyEnvelope::<Rational>::from_data(kind, &points, &a, a_im.as_deref(), b.as_deref())
-        .map_err(|e| OpError::param("points", e.to_string()))?;
-    let dom = args
-        .opt_numbers("domain")?
-        .unwrap_or_default();
+    let env = SphereFamilyEnvelope::<Rational>::from_data(
+        kind,
+        &points,
+        &a,
+        a_im.as_deref(),
+        b.as_deref(),
+    )
+    .map_err(|e| OpError::param(e.input(), e.to_string()))?;
+    let certs = env.certify();
+    envelope_object(args, &env, certs)
+}
+
+/// The envelope's positive-weight patches on the `domain` rectangle, with `certs` and the
+/// weight certificate.
+fn envelope_object(
+    args: &OpArgs,
+    env: &SphereFamilyEnvelope<Rational>,
+    mut certs: Vec<Certificate>,
+) -> Result<Vec<Object>, OpError> {
+    let dom = args.opt_numbers("domain")?.unwrap_or_default();
     let [s0, s1, t0, t1] = <[Rational; 4]>::try_from(dom.clone()).map_err(|_| {
-        OpError::param("domain", format!("the domain has four numbers [s0, s1, t0, t1], got {}", dom.len()))
+        OpError::param(
+            "domain",
+            format!(
+                "the domain has four numbers [s0, s1, t0, t1], got {}",
+                dom.len()
+            ),
+        )
     })?;
     let (patches, weight_cert) = env
-        .export_patches((s0, s1), (t0, t1))
+        .export_patches((s0.clone(), s1.clone()), (t0.clone(), t1.clone()))
         .map_err(|e| OpError::param("domain", e.to_string()))?;
-    let mut certs: Vec<Certificate> = env.certify();
     certs.push(weight_cert);
-    Ok(vec![args.object(Geometry::Patches(patches), certs)])
+    let mut out = vec![args.object(Geometry::Patches(patches), certs)];
+    if args.bool("centres")? {
+        let (pieces, cert) = env
+            .centre_patches((s0, s1), (t0, t1))
+            .map_err(|e| OpError::param("centres", e.to_string()))?;
+        let mut o = args.object(Geometry::Patches(pieces), vec![cert]);
+        o.name = format!("{}_centres", args.name());
+        out.push(o);
+    }
+    Ok(out)
+}
+
+const CENTRES: ParamSpec = ParamSpec::with_default(
+    "centres",
+    ParamKind::Bool,
+    "false",
+    "also output the centre surface of the enveloped spheres over the same rectangle, as the object NAME_centres",
+);
+
+const SPHERE_FAMILY_RECOGNIZE: OpSpec = OpSpec {
+    name: "sphere_family_recognize",
+    summary: "a given rational two-parameter sphere family (centre, radius) recognized as the family of a line net (Gruber §3.2–3.5): the normal lines E(Φ_u ∧ Φ_v) span a linear congruence, whose axes, the support functions and the rational envelope Ψ(s, t) are recovered — or a named error (not two-parametric, no real envelope, not a fibration, axes over Q(√d), non-polynomial support)",
+    params: &[
+        ParamSpec::required(
+            "centre",
+            ParamKind::Net,
+            "numerators of the centres: centre[i][j] = [x, y, z] is the coefficient of u^i v^j",
+        ),
+        ParamSpec::required(
+            "radius",
+            ParamKind::Grid,
+            "numerator of the signed radius: radius[i][j] is the coefficient of u^i v^j",
+        ),
+        ParamSpec::with_default(
+            "denominator",
+            ParamKind::Grid,
+            "[[1]]",
+            "common denominator W(u, v) of centre and radius (power coefficients of u^i v^j)",
+        ),
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[\"1/4\", 1, \"1/4\", 1]",
+            "parameter rectangle [s0, s1, t0, t1] of Ω(s, t) = (2s, 2t, 1 − s² − t², 1 + s² + t²); the envelope must have no pole on it",
+        ),
+        CENTRES,
+    ],
+    example: r#"[[object]]
+name = "sphere_family_recognized_331"
+op = "sphere_family_recognize"
+# Gruber (3.15): centres (−u², 2u, 2v), radii 4u + v² — recognized as the hyperbolic net
+# with two passant axes (§3.3.1)
+centre = [[[0, 0, 0], [0, 0, 2]], [[0, 2, 0], [0, 0, 0]], [[-1, 0, 0], [0, 0, 0]]]
+radius = [[0, 0, 1], [4, 0, 0]]
+domain = [1, 2, "1/4", 1]
+"#,
+    build: build_recognized,
+};
+
+/// `Σ g[i][j] uⁱ vʲ`.
+fn grid_poly(g: &[Vec<Rational>]) -> MPoly<Rational> {
+    let mut p = MPoly::zero(2);
+    for (i, row) in g.iter().enumerate() {
+        for (j, c) in row.iter().enumerate() {
+            p = &p + &MPoly::monomial(2, &[i as u32, j as u32], c.clone());
+        }
+    }
+    p
+}
+
+fn build_recognized(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let centre = args.net("centre")?;
+    let mut xyz: [Vec<Vec<Rational>>; 3] = Default::default();
+    for (i, row) in centre.iter().enumerate() {
+        for (j, p) in row.iter().enumerate() {
+            if p.len() != 3 {
+                return Err(OpError::param(
+                    "centre",
+                    format!(
+                        "centre[{i}][{j}] has {} coordinates, a centre coefficient has three [x, y, z]",
+                        p.len()
+                    ),
+                ));
+            }
+            for (k, g) in xyz.iter_mut().enumerate() {
+                if g.len() <= i {
+                    g.resize(i + 1, Vec::new());
+                }
+                g[i].push(p[k].clone());
+            }
+        }
+    }
+    let radius = args
+        .opt_grid("radius")?
+        .ok_or_else(|| OpError::param("radius", "the radius is required"))?;
+    let den = args
+        .opt_grid("denominator")?
+        .unwrap_or_else(|| vec![vec![Rational::from(1)]]);
+    let fam = SphereFamily::new(
+        xyz.each_ref().map(|g| grid_poly(g)),
+        grid_poly(&radius),
+        grid_poly(&den),
+    )
+    .map_err(|e| OpError::param("denominator", e.to_string()))?;
+    let rec = fam
+        .recognize()
+        .map_err(|e| OpError::param("centre", e.to_string()))?;
+    let certs = rec.certify();
+    envelope_object(args, rec.envelope(), certs)
 }

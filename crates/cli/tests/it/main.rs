@@ -2,6 +2,7 @@
 //! see docs/ARCHITECTURE.md, "Tests").
 
 mod analysis_ops;
+mod canal_cyclographic_op;
 mod cli;
 mod common;
 mod docs;
@@ -9,3 +10,4 @@ mod exchange_weights;
 mod fuzz;
 mod pipes;
 mod quadric_ops;
+mod sphere_family_ops;

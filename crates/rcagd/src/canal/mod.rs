@@ -28,6 +28,11 @@
 //! * [`blend`]: canal-surface blends between two spheres (or a sphere and a plane) with
 //!   prescribed contact circles.
 //!
+//! * [`cyclographic_param`]: the cyclographic parametrization `Γ(s, t)` (Gruber §2.3) of a
+//!   quadratic family as the rational fallback when the spine-parameter constructions need
+//!   `Q(√d)` ([`canal_surface_rational`]);
+//! * [`normal_field`]: the canal surface from any rational unit normal field along the
+//!   spine (a rational point on every circle of normals, Gruber (2.10) ff.);
 //! * [`krasauskas`]: Krasauskas' construction (Gruber §2.4): the circles of normals as
 //!   `f_s(a(t) + u b(t))` of a real pencil in `C²`, reduced by the operations (2.36) (and
 //!   their combination, which also removes collapsed circles). [`canal_surface`] tries it
@@ -46,11 +51,13 @@
 
 pub mod bipoly;
 pub mod blend;
+pub mod cyclographic_param;
 pub mod envelope;
 pub mod exportable;
 pub mod factor;
 pub mod frame;
 pub mod krasauskas;
+pub mod normal_field;
 pub mod pipe;
 pub mod regularity;
 pub mod sum_of_squares;
@@ -60,6 +67,7 @@ pub use blend::{
     blend_sphere_plane, blend_sphere_plane_f64, blend_spheres, blend_spheres_f64, BlendEnd,
     BlendSpine, PlaneEnd, SphereBlend, SpherePlaneBlend,
 };
+pub use cyclographic_param::{canal_surface_rational, CyclographicCanal, RationalCanal};
 pub use envelope::{
     canal_surface, canal_surface_approx, canal_surface_f64, canal_surface_with_split,
     krasauskas_bound, AxisChoice, CanalBuild, CanalOptions, CanalSurface, CharacteristicCircle,
@@ -72,6 +80,7 @@ pub use exportable::{
 pub use frame::{
     canal_surface_pole_free, pipe_around_ph_pole_free, pole_free_direction, EXPORT_SPLITS,
 };
+pub use normal_field::{canal_surface_from_normal_field, NormalFieldCanal};
 pub use pipe::{pipe_around_ph, pipe_around_ph_poly, pipe_around_planar, pipe_surface};
 pub use regularity::{check_pipe_global, check_pipe_regularity, pipe_regularity_polynomials};
 pub use sum_of_squares::{
@@ -122,6 +131,14 @@ pub enum CanalError {
     /// carry rational geometry only.
     #[error("|ṁ|² − ṙ² is not a sum of two squares over Q: the exact surface needs the field Q(√{radicand}) (rcagd::canal::canal_surface builds it there); STEP and IGES carry rational geometry only — change the data so that it splits over Q (e.g. a PH spine for a pipe)")]
     IrrationalSplit {
+        /// The square-free radicand `d`.
+        radicand: String,
+    },
+    /// The spine-parameter constructions need `Q(√d)`, but the family is quadratic: its
+    /// cyclographic parametrization `Γ(s, t)` (Gruber §2.3) is rational over `Q` on a
+    /// rectangle of Ω(s, t), which must be given ([`canal_surface_rational`]).
+    #[error("|ṁ|² − ṙ² is not a sum of two squares over Q (the constructions in the spine parameter need Q(√{radicand})), but the family is quadratic, so its cyclographic parametrization Γ(s, t) (Gruber §2.3) is rational over Q: give a rectangle [s0, s1, t0, t1] of Ω(s, t) = (2s, 2t, 1 − s² − t², 1 + s² + t²) for it")]
+    CyclographicDomainNeeded {
         /// The square-free radicand `d`.
         radicand: String,
     },

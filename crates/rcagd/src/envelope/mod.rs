@@ -6,11 +6,17 @@
 //!   (3.7), the net's fibration reparametrizes it over the absolute quadric Ω (3.16), and the
 //!   isotropic projection gives the rational envelope `Ψ(s, t)` (both sheets); the direct
 //!   envelope `S ∩ S_u ∩ S_v` of §3.1.1 as an independent check; the subcases 3.3.1–3.5.3.
+//! * [`recognition`]: a given rational family `Φ(u, v)` (centre, radius) → its line net
+//!   (the normal lines span a linear congruence), support functions and envelope, or a
+//!   named reason why not (not two-parametric, no real envelope, not a fibration, axes over
+//!   `Q(√d)`, non-polynomial support functions).
 //!
 //! Derivations and corrections of the printed formulas: `docs/math/sphere-families.md`.
 
+pub mod recognition;
 pub mod sphere_family;
 
+pub use recognition::{Recognition, RecognitionError, SphereFamily};
 pub use sphere_family::{
     DirectEnvelope, SphereFamilyEnvelope, SphereFamilyError, Subcase, Support,
 };

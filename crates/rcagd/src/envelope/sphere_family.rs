@@ -105,6 +105,39 @@ pub enum SphereFamilyError {
     InvalidDomain(String),
 }
 
+impl SphereFamilyError {
+    /// The input of [`SphereFamilyEnvelope::from_data`] that violates the precondition, as a
+    /// recipe names it: `"points"` (the net), `"a"`, `"a_imaginary"`, `"b"` (the support
+    /// functions) or `"domain"`.
+    pub fn input(&self) -> &'static str {
+        match self {
+            SphereFamilyError::Net(_)
+            | SphereFamilyError::SingularSystem
+            | SphereFamilyError::Undefined(_)
+            | SphereFamilyError::NoRealEnvelope(_) => "points",
+            SphereFamilyError::DegenerateFamily => "a",
+            SphereFamilyError::PoleInDomain(_) | SphereFamilyError::InvalidDomain(_) => "domain",
+            SphereFamilyError::InconsistentSupport(m) => {
+                if m.starts_with("b_u")
+                    || m.starts_with("b ≠")
+                    || m.starts_with("a_u ≠ b_v")
+                    || m.starts_with("the support function b")
+                {
+                    "b"
+                } else if m.starts_with("a_v") {
+                    "a"
+                } else if m
+                    .starts_with("the support functions of a hyperbolic or parabolic net are real")
+                {
+                    "a_imaginary"
+                } else {
+                    "points"
+                }
+            }
+        }
+    }
+}
+
 /// A support function `a(u, v)` (Gruber (3.6)): real part and, for elliptic nets, imaginary
 /// part (polynomials in the net parameters `u` = variable 0, `v` = variable 1).
 #[derive(Debug, Clone)]
@@ -536,6 +569,11 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
         &self.net
     }
 
+    /// The support functions `(a, b)` in the net parameters.
+    pub fn supports(&self) -> (&Support<F>, &Support<F>) {
+        (&self.a, &self.b)
+    }
+
     /// The subcase of Gruber chapter 3.
     pub fn subcase(&self) -> Subcase {
         Subcase::of_net(&self.net)
@@ -735,6 +773,51 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
             }
         }
         patch_of(&self.psi, &d).map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))
+    }
+
+    /// The centre surface `π(Φ(s, t))` of the enveloped spheres on `[s₀, s₁] × [t₀, t₁]`
+    /// (the sphere touching `Ψ(s, t)` has its centre there), as positive-weight pieces with
+    /// the certificate that every weight is positive.
+    ///
+    /// # Errors
+    /// [`SphereFamilyError::InvalidDomain`] for an empty rectangle,
+    /// [`SphereFamilyError::PoleInDomain`] if the denominator of `Φ(s, t)` vanishes on it.
+    pub fn centre_patches(
+        &self,
+        s: (F, F),
+        t: (F, F),
+    ) -> Result<(Vec<BezierPatch<F>>, Certificate), SphereFamilyError> {
+        let d = Domain::new(s.0, s.1, t.0, t.1)
+            .map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))?;
+        let den = &self.phi_st_den;
+        let sign = match sign_on_domain(den, &d, 4096) {
+            Sign::Positive => F::one(),
+            Sign::Negative => -F::one(),
+            Sign::ZeroAt(p) | Sign::Changes(p, _) | Sign::Undecided(p) => {
+                return Err(SphereFamilyError::PoleInDomain(format!(
+                    "the denominator of Φ(s, t) vanishes near (s, t) = ({}, {})",
+                    format_scalar(&p[0]),
+                    format_scalar(&p[1])
+                )))
+            }
+        };
+        let coords: Vec<MPoly<F>> = [den, &self.phi_st[0], &self.phi_st[1], &self.phi_st[2]]
+            .iter()
+            .map(|p| p.scale(&sign))
+            .collect();
+        let patch =
+            patch_of(&coords, &d).map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))?;
+        let split = split_patches_adaptive(vec![patch], SignRule::Positive, (6, 6))
+            .map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))?;
+        let (pieces, bad) = (split.pieces, split.failed);
+        let n = pieces.len();
+        let cert = Certificate::decide(
+            format!("every Bernstein weight of the {n} centre-surface patches is > 0"),
+            bad == 0,
+            F::EXACT,
+            || format!("{bad} pieces keep a weight ≤ 0"),
+        );
+        Ok((pieces, cert))
     }
 
     /// The envelope on `[s₀, s₁] × [t₀, t₁]` as rational Bézier patches whose Bernstein

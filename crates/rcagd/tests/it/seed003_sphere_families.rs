@@ -7,7 +7,9 @@
 //! bad input, and property tests with random exact nets and support functions.
 
 use proptest::prelude::*;
-use rcagd::envelope::{SphereFamilyEnvelope, SphereFamilyError, Subcase, Support};
+use rcagd::envelope::{
+    RecognitionError, SphereFamily, SphereFamilyEnvelope, SphereFamilyError, Subcase, Support,
+};
 use rcagd::lines::{AxisPosition, ComplexPointRow, LineNet, NetError, PointRow};
 use rcagd::Certified;
 use rcagd_algebra::mpoly::MPoly;
@@ -946,6 +948,228 @@ fn f64_envelopes_certify_and_agree() {
                 c.section,
                 y[k]
             );
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Recognition: a given sphere family (centre, radius) → its line net, support functions and
+// envelope, or the named reason why not (docs/math/sphere-families.md#recognition).
+
+fn family(phi: [MPoly<Rational>; 4]) -> SphereFamily<Rational> {
+    let [x, y, z, r] = phi;
+    SphereFamily::new([x, y, z], r, MPoly::constant(2, q(1))).expect("family")
+}
+
+fn family_of(texts: [&str; 4]) -> SphereFamily<Rational> {
+    family(texts.map(uv))
+}
+
+/// `p(U(u, v), V(u, v))` for polynomials `U`, `V`.
+fn compose(p: &MPoly<Rational>, us: &MPoly<Rational>, vs: &MPoly<Rational>) -> MPoly<Rational> {
+    let mut acc = MPoly::zero(2);
+    for (e, c) in p.terms() {
+        let t = &(&us.pow(e[0]) * &vs.pow(e[1])) * &MPoly::constant(2, c.clone());
+        acc = &acc + &t;
+    }
+    acc
+}
+
+fn same_envelope(a: &SphereFamilyEnvelope<Rational>, b: &SphereFamilyEnvelope<Rational>) -> bool {
+    let (ha, hb) = (a.homogeneous(), b.homogeneous());
+    (1..4).all(|k| same_ratio((&ha[k], &ha[0]), (&hb[k], &hb[0])))
+}
+
+#[test]
+fn every_printed_subcase_recognized_from_its_sphere_family() {
+    for c in cases() {
+        // the printed Φ as a plain family of spheres: centre Φ₁..₃, radius Φ₄
+        let fam = family_of(c.phi);
+        let rec = fam
+            .recognize()
+            .unwrap_or_else(|e| panic!("{}: not recognized: {e}", c.section));
+        let env = build(&c);
+        assert_eq!(rec.subcase(), env.subcase(), "subcase of {}", c.section);
+        assert_eq!(rec.subcase().section(), c.section);
+        let certs = rec.certify();
+        assert!(Certificate::all_hold(&certs), "{}: {certs:#?}", c.section);
+        assert!(certs
+            .iter()
+            .any(|x| x.property.contains("recognized family")));
+        // the envelope is a property of the family: Ψ(s, t) is the same map
+        assert!(
+            same_envelope(rec.envelope(), &env),
+            "{}: recognized envelope differs",
+            c.section
+        );
+        // f64: the recognized net and support functions rebuilt in f64 agree
+        let fenv = rec
+            .envelope()
+            .map_scalar(Scalar::to_f64)
+            .expect("f64 envelope");
+        let (s, t) = (Rational::from_ratio(3, 5), Rational::from_ratio(4, 7));
+        let x = rec.envelope().eval(&s, &t).expect("exact");
+        let y = fenv
+            .eval(&Scalar::to_f64(&s), &Scalar::to_f64(&t))
+            .expect("f64");
+        for k in 0..3 {
+            let xe = Scalar::to_f64(&x[k]);
+            assert!(
+                (xe - y[k]).abs() <= 1e-9 * (1.0 + xe.abs()),
+                "{}: {xe} vs {}",
+                c.section,
+                y[k]
+            );
+        }
+    }
+}
+
+#[test]
+fn recognition_through_a_change_of_the_family_parameters() {
+    // 3.3.1 and 3.5.2 with (u, v) ↦ (2u + v − 1, v − u): the net parameters are found as
+    // rational functions of the new parameters
+    for i in [0usize, 10] {
+        let c = &cases()[i];
+        let (us, vs) = (uv("2*u+v-1"), uv("v-u"));
+        let phi = c.phi.map(|t| compose(&uv(t), &us, &vs));
+        let rec = family(phi).recognize().expect("recognized");
+        assert_eq!(rec.subcase().section(), c.section);
+        assert!(rec.all_hold());
+        assert!(same_envelope(rec.envelope(), &build(c)));
+    }
+    // elliptic 3.4.2 (3.53) with (m, n) ↦ (u + 1, 2v)
+    let c = &cases()[8];
+    let phi = c.phi.map(|t| compose(&uv(t), &uv("u+1"), &uv("2*v")));
+    let rec = family(phi).recognize().expect("recognized");
+    assert_eq!(rec.subcase().section(), c.section);
+    assert!(rec.all_hold());
+    assert!(same_envelope(rec.envelope(), &build(c)));
+    // 3.3.4 (polar) with the Möbius change u ↦ 1/u of the first parameter: Φ becomes
+    // rational, and the support function a has a pole that is moved to the parameter ∞
+    let c = &cases()[4];
+    let (n, d) = parse("(-1)/u^2", "uv");
+    let (n2, d2) = parse("2/u", "uv");
+    let fam = SphereFamily::from_rational([
+        (n, d),
+        (uv("-v^2"), uv("1")),
+        (uv("2*v"), uv("1")),
+        (n2, d2),
+    ])
+    .expect("family");
+    let rec = fam.recognize().expect("recognized");
+    assert_eq!(rec.subcase().section(), c.section);
+    assert!(rec.all_hold());
+    assert!(same_envelope(rec.envelope(), &build(c)));
+}
+
+#[test]
+fn recognition_errors_are_named() {
+    // one-parametric: everything depends on u + v
+    let e = family_of(["u+v", "(u+v)^2", "0", "1"]).recognize();
+    assert!(
+        matches!(e, Err(RecognitionError::NotTwoParametric)),
+        "{e:?}"
+    );
+    // nested spheres: centre (u, v, v²), radius 2u; the Gram determinant is −3 − 12v²
+    let e = family_of(["u", "v", "v^2", "2*u"]).recognize();
+    assert!(
+        matches!(e, Err(RecognitionError::NoRealEnvelope(_))),
+        "{e:?}"
+    );
+    // centres in a plane: the normal lines pass through one point (a bundle, rank 3)
+    let e = family_of(["u", "v", "0", "u^2+v^2"]).recognize();
+    match e {
+        Err(RecognitionError::NotAFibration(m)) => assert!(m.contains("3-dimensional"), "{m}"),
+        other => panic!("{other:?}"),
+    }
+    // a cubic family: the normal lines span 5 dimensions of Plücker space
+    let e = family_of(["u", "v", "u^3+v^2", "u*v"]).recognize();
+    match e {
+        Err(RecognitionError::NotAFibration(m)) => {
+            assert!(m.contains("5-dimensional"), "{m}")
+        }
+        other => panic!("{other:?}"),
+    }
+    // axes conjugate over Q(√2): c(u) = (1, √2, 0, 0) + u (0, 1, 1, √2), d = its conjugate,
+    // a = u², b = v², u = m + √2 n (Φ computed from (3.7) by hand: rational in m, n)
+    let e = family_of(["-u^2-2*v^2", "-2*u*v", "2*u*v+2*u", "-2*v"]).recognize();
+    match e {
+        Err(RecognitionError::NeedsExtension { d, .. }) => {
+            let (dn, dd) = parse(&d, "uv");
+            let dq = dn.coeff(&[0, 0]) / dd.coeff(&[0, 0]);
+            // Δ = 2 · (a square)
+            assert!(
+                rcagd_algebra::sqrt_in_field(&(dq * q(2))).is_some(),
+                "d = {d}"
+            );
+        }
+        other => panic!("{other:?}"),
+    }
+    // elliptic: the axis c(u) = (1, i√2, 0, 0) + u (0, 1, 1, i√2) with a = u², b = ā,
+    // u = m + i√2 n gives the rational family below, Δ = −2·(a square): Q(√−2) ≠ Q(i)
+    let e = family_of(["-u^2+2*v^2", "-2*u*v", "2*u*v+2*u", "-2*v"]).recognize();
+    match e {
+        Err(RecognitionError::NeedsExtension { d, .. }) => {
+            let (dn, dd) = parse(&d, "uv");
+            let dq = dn.coeff(&[0, 0]) / dd.coeff(&[0, 0]);
+            assert!(dq < q(0), "d = {d}");
+            assert!(
+                rcagd_algebra::sqrt_in_field(&(dq * q(-2))).is_some(),
+                "d = {d}"
+            );
+        }
+        other => panic!("{other:?}"),
+    }
+    // bad input
+    let e = SphereFamily::new([uv("u"), uv("v"), uv("0")], uv("u"), MPoly::zero(2));
+    assert!(matches!(e, Err(RecognitionError::InvalidInput(_))));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// Random exact hyperbolic and parabolic nets with quadratic support functions: the
+    /// family Φ alone is recognized, with the same subcase and envelope, certified; the f64
+    /// envelope of the recognized net agrees with the exact one.
+    #[test]
+    fn random_families_recognized(
+        c in proptest::array::uniform8(small()),
+        d in proptest::array::uniform8(small()),
+        ka in 1i64..=3, kb in -3i64..=3, la in -2i64..=2, parab in proptest::bool::ANY,
+    ) {
+        let cr = PointRow::new([c[0], c[1], c[2], c[3]].map(q), [c[4], c[5], c[6], c[7]].map(q));
+        let dr = PointRow::new([d[0], d[1], d[2], d[3]].map(q), [d[4], d[5], d[6], d[7]].map(q));
+        let (Ok(cr), Ok(dr)) = (cr, dr) else { return Ok(()) };
+        prop_assume!(kb != 0);
+        let a = Support::univariate(&[q(0), q(la), q(ka)], 0);
+        let (net, b) = if parab {
+            let Ok(net) = LineNet::parabolic(cr, dr) else { return Ok(()) };
+            // b = v a'(u) + b₀(u)
+            let b = Support::real(&uv(&format!("v*({la}+2*{ka}*u)")) + &uv(&format!("{kb}*u^2+1")));
+            (net, b)
+        } else {
+            let Ok(net) = LineNet::hyperbolic(cr, dr) else { return Ok(()) };
+            (net, Support::univariate(&[q(1), q(0), q(kb)], 1))
+        };
+        let env = match SphereFamilyEnvelope::new(&net, a, b) {
+            Ok(e) => e,
+            Err(SphereFamilyError::DegenerateFamily) | Err(SphereFamilyError::Net(_)) => return Ok(()),
+            Err(e) => return Err(TestCaseError::fail(format!("{e}"))),
+        };
+        let (phi, den) = env.phi();
+        let [x, y, z, r] = phi.clone();
+        let fam = SphereFamily::new([x, y, z], r, den.clone()).expect("family");
+        let rec = fam.recognize().map_err(|e| TestCaseError::fail(format!("{e}")))?;
+        prop_assert_eq!(rec.subcase(), env.subcase());
+        prop_assert!(rec.all_hold());
+        prop_assert!(same_envelope(rec.envelope(), &env));
+        let fenv = rec.envelope().map_scalar(Scalar::to_f64).expect("f64");
+        let (s, t) = (Rational::from_ratio(2, 7), Rational::from_ratio(5, 9));
+        if let (Ok(xe), Ok(xf)) = (rec.envelope().eval(&s, &t), fenv.eval(&Scalar::to_f64(&s), &Scalar::to_f64(&t))) {
+            for k in 0..3 {
+                let v = Scalar::to_f64(&xe[k]);
+                prop_assert!((v - xf[k]).abs() <= 1e-6 * (1.0 + v.abs()), "{} vs {}", v, xf[k]);
+            }
         }
     }
 }

@@ -1,0 +1,143 @@
+//! The sphere-family ops (`crates/cli/src/ops/sphere_family.rs`): a family given by its
+//! centres and radii is recognized (net, support functions, envelope, certificates), and
+//! every failure is located at the parameter that causes it — the net's `points`, the
+//! support functions `a`, `b`, or the family's `centre` — with the named reason.
+
+use rcagd_algebra::Rational;
+use rcagd_cli::build::build_recipe;
+use rcagd_cli::model::{Geometry, Object};
+use rcagd_cli::recipe::Recipe;
+
+fn build(text: &str) -> Vec<Object> {
+    let recipe = Recipe::parse("t.toml", text, None).expect("recipe parses");
+    build_recipe(&recipe, |_| {}).expect("recipe builds")
+}
+
+/// Builds a one-object recipe expecting an error: `(line, message)`.
+fn build_err(text: &str) -> (usize, String) {
+    let recipe = Recipe::parse("t.toml", text, None).expect("recipe parses");
+    let d = build_recipe(&recipe, |_| {}).expect_err("the recipe must fail");
+    (d[0].line, d[0].message.clone())
+}
+
+const HEAD: &str = "[[object]]\nname = \"f\"\n";
+
+#[test]
+fn a_family_given_by_centres_and_radii_is_recognized_and_certified() {
+    // Gruber (3.15): centres (−u², 2u, 2v), radii 4u + v² (§3.3.1)
+    let text = format!(
+        "{HEAD}op = \"sphere_family_recognize\"\ncentre = [[[0, 0, 0], [0, 0, 2]], [[0, 2, 0], [0, 0, 0]], [[-1, 0, 0], [0, 0, 0]]]\nradius = [[0, 0, 1], [4, 0, 0]]\ndomain = [\"1/4\", 1, \"1/4\", 1]\n"
+    );
+    let objs = build(&text);
+    assert_eq!(objs.len(), 1);
+    let o = &objs[0];
+    assert!(matches!(o.geometry, Geometry::Patches(_)));
+    assert!(
+        o.certificates.iter().all(|c| c.holds && c.exact),
+        "{:#?}",
+        o.certificates
+    );
+    assert!(o
+        .certificates
+        .iter()
+        .any(|c| c.property.contains("recognized family is the given one")));
+    // the same envelope as the net recipe of §3.3.1
+    let net = build(&format!(
+        "{HEAD}op = \"sphere_family_envelope\"\nnet = \"hyperbolic\"\npoints = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 2, 0, 1], [0, 0, 1, 0]]\na = [[0], [0], [1]]\nb = [[0, 0, 1]]\ndomain = [\"1/4\", 1, \"1/4\", 1]\n"
+    ));
+    let pts = |o: &Object| match &o.geometry {
+        Geometry::Patches(p) => p
+            .iter()
+            .map(|x| {
+                x.eval(
+                    &(Rational::from(1) / Rational::from(2)),
+                    &(Rational::from(1) / Rational::from(3)),
+                )
+                .ok()
+            })
+            .collect::<Vec<_>>(),
+        _ => Vec::new(),
+    };
+    assert_eq!(pts(o), pts(&net[0]));
+}
+
+#[test]
+fn recognition_errors_are_located_at_the_family() {
+    // centres (u, v, u³ + v²), radii uv: the normal lines span 5 dimensions
+    let text = format!(
+        "{HEAD}op = \"sphere_family_recognize\"\ncentre = [[[0, 0, 0], [0, 1, 0], [0, 0, 1]], [[1, 0, 0], [0, 0, 0], [0, 0, 0]], [[0, 0, 0], [0, 0, 0], [0, 0, 0]], [[0, 0, 1], [0, 0, 0], [0, 0, 0]]]\nradius = [[0, 0], [0, 1]]\n"
+    );
+    let (line, msg) = build_err(&text);
+    assert_eq!(line, 4, "{msg}");
+    assert!(
+        msg.contains("not a fibration") && msg.contains("5-dimensional"),
+        "{msg}"
+    );
+    // nested spheres: centres (u, v, v²), radii 2u
+    let text = format!(
+        "{HEAD}op = \"sphere_family_recognize\"\ncentre = [[[0, 0, 0], [0, 1, 0], [0, 0, 1]], [[1, 0, 0], [0, 0, 0], [0, 0, 0]]]\nradius = [[0], [2]]\n"
+    );
+    let (line, msg) = build_err(&text);
+    assert_eq!(line, 4, "{msg}");
+    assert!(msg.contains("no real envelope"), "{msg}");
+    // a centre coefficient with two coordinates
+    let (line, msg) = build_err(&format!(
+        "{HEAD}op = \"sphere_family_recognize\"\ncentre = [[[0, 0], [1, 0]]]\nradius = [[0, 1]]\n"
+    ));
+    assert_eq!(line, 4, "{msg}");
+    assert!(msg.contains("three [x, y, z]"), "{msg}");
+}
+
+#[test]
+fn support_function_errors_name_a_or_b() {
+    let net =
+        "net = \"hyperbolic\"\npoints = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 2, 0, 1], [0, 0, 1, 0]]\n";
+    // a depends on v: blamed on a (line 6)
+    let (line, msg) = build_err(&format!(
+        "{HEAD}op = \"sphere_family_envelope\"\n{net}a = [[0, 1], [0, 0], [1, 0]]\nb = [[0, 0, 1]]\n"
+    ));
+    assert_eq!(line, 6, "{msg}");
+    assert!(msg.contains("a_v"), "{msg}");
+    // b depends on u: blamed on b (line 7)
+    let (line, msg) = build_err(&format!(
+        "{HEAD}op = \"sphere_family_envelope\"\n{net}a = [[0], [0], [1]]\nb = [[0, 0, 1], [1, 0, 0]]\n"
+    ));
+    assert_eq!(line, 7, "{msg}");
+    assert!(msg.contains("b_u"), "{msg}");
+    // a degenerate net (the axes meet): blamed on points (line 5)
+    let (line, msg) = build_err(&format!(
+        "{HEAD}op = \"sphere_family_envelope\"\nnet = \"hyperbolic\"\npoints = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]\na = [[0], [0], [1]]\nb = [[0, 0, 1]]\n"
+    ));
+    assert_eq!(line, 5, "{msg}");
+    assert!(msg.contains("axes"), "{msg}");
+    // parabolic a_u ≠ b_v: blamed on b
+    let (line, msg) = build_err(&format!(
+        "{HEAD}op = \"sphere_family_envelope\"\nnet = \"parabolic\"\npoints = [[1, 0, 0, 0], [0, 0, 0, 1], [1, -1, 0, 0], [0, 0, 1, 0]]\na = [[0], [0], [1]]\nb = [[0, 0], [0, 1]]\n"
+    ));
+    assert_eq!(line, 7, "{msg}");
+    assert!(msg.contains("a_u ≠ b_v"), "{msg}");
+}
+
+#[test]
+fn the_centre_surface_is_a_second_object() {
+    let objs = build(&format!(
+        "{HEAD}op = \"sphere_family_envelope\"\nnet = \"hyperbolic\"\npoints = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 2, 0, 1], [0, 0, 1, 0]]\na = [[0], [0], [1]]\nb = [[0, 0, 1]]\ncentres = true\n"
+    ));
+    assert_eq!(objs.len(), 2);
+    assert_eq!(objs[1].name, "f_centres");
+    assert!(objs[1].certificates.iter().all(|c| c.holds && c.exact));
+    // a corner of the centre patch is π(Φ(s, t)) at (s, t) = (1/4, 1/4): Φ = (−u², 2u, 2v, …)
+    // with u, v from (3.17); it lies on the paraboloid x = −y²/4 of (3.15)
+    let Geometry::Patches(p) = &objs[1].geometry else {
+        panic!("patches")
+    };
+    for piece in p {
+        let c = piece
+            .eval(&Rational::from(0), &Rational::from(0))
+            .expect("corner");
+        assert_eq!(
+            c[0].clone(),
+            -(c[1].clone() * c[1].clone()) / Rational::from(4)
+        );
+    }
+}

@@ -1,0 +1,240 @@
+//! Canal surfaces by the cyclographic parametrization Γ(s, t) of D. Gruber, "Rationale
+//! Parametrisierungen von Kugelhüllflächen" (2008), §2.3, as the rational fallback of the
+//! canal builder (`rcagd::canal::canal_surface_rational`): families whose discriminant
+//! |ṁ|² − ṙ² splits only over Q(√d) are built over Q when they are quadratic; the named
+//! errors otherwise; random quadratic families certified, f64 agreeing with exact.
+
+use proptest::prelude::*;
+use rcagd::canal::{
+    canal_surface_from_normal_field, canal_surface_rational, CanalError, CanalOptions, CanalSpine,
+    QuadraticCanal, RationalCanal,
+};
+use rcagd::Certified;
+use rcagd_algebra::{Certificate, Poly, Rational, Scalar};
+
+fn r(n: i64, d: i64) -> Rational {
+    Rational::from_ratio(n, d)
+}
+
+fn opts() -> CanalOptions {
+    CanalOptions {
+        domain: Some((r(0, 1), r(1, 1))),
+        ..CanalOptions::default()
+    }
+}
+
+/// Gruber (2.19): m(u) = (u, 0, u²), r(u) = u²/4; D = 1 + (15/4)u².
+fn example_2_3() -> CanalSpine<Rational> {
+    CanalSpine::polynomial(
+        [
+            Poly::from_ints(&[0, 1]),
+            Poly::zero(),
+            Poly::from_ints(&[0, 0, 1]),
+        ],
+        Poly::new(vec![r(0, 1), r(0, 1), r(1, 4)]),
+    )
+}
+
+#[test]
+fn the_example_of_2_3_is_built_over_q_by_gamma() {
+    let spine = example_2_3();
+    // inside the circle 5(s² + t²) = 3 (where p = 4s/(5s² + 5t² − 3) has its pole), s < 0:
+    // spine parameters p ∈ (0.18, 4)
+    let dom = [r(-1, 2), r(-1, 8), r(1, 8), r(1, 2)];
+    let built = canal_surface_rational(&spine, &opts(), Some(&dom)).expect("built");
+    let RationalCanal::Cyclographic(c) = built else {
+        panic!("the spine-parameter constructions need Q(√15): expected the fallback");
+    };
+    assert_eq!(c.radicand(), &r(15, 1));
+    let certs = c.certify();
+    assert!(Certificate::all_hold(&certs), "{certs:#?}");
+    assert!(certs.iter().all(|x| x.exact));
+    // a point of a piece lies on the sphere of its spine parameter
+    let g = c.surface();
+    let (s, t) = (r(-1, 3), r(1, 4));
+    let x = g.eval(&s, &t).expect("point");
+    let (n, d) = g.parameter();
+    let p = n.eval(&s, &t) / d.eval(&s, &t);
+    let (m, rad) = spine.eval(&p).expect("sphere");
+    let dist: Rational = (0..3).fold(r(0, 1), |a, k| {
+        a + (x[k].clone() - m[k].clone()) * (x[k].clone() - m[k].clone())
+    });
+    assert_eq!(dist, rad.clone() * rad);
+    assert!(!c.patches().is_empty());
+}
+
+#[test]
+fn fallback_errors_are_named() {
+    let spine = example_2_3();
+    // Γ applies but no rectangle is given
+    match canal_surface_rational(&spine, &opts(), None) {
+        Err(CanalError::CyclographicDomainNeeded { radicand }) => assert_eq!(radicand, "15"),
+        other => panic!("{other:?}"),
+    }
+    // a rectangle across the pole circle 5(s² + t²) = 3
+    let dom = [r(-1, 1), r(-1, 4), r(1, 8), r(1, 2)];
+    match canal_surface_rational(&spine, &opts(), Some(&dom)) {
+        Err(CanalError::InvalidArgument(m)) => assert!(m.contains("pole"), "{m}"),
+        other => panic!("{other:?}"),
+    }
+    // an empty rectangle
+    let dom = [r(1, 2), r(-1, 8), r(1, 8), r(1, 2)];
+    assert!(matches!(
+        canal_surface_rational(&spine, &opts(), Some(&dom)),
+        Err(CanalError::InvalidArgument(_))
+    ));
+    // a cone m = (0, 0, t), r = t/2: D = 3/4 needs Q(√3), and k̇ is constant, so
+    // ⟨w, k̇⟩ = 0 does not involve the spine parameter: Γ does not apply
+    let cone = CanalSpine::polynomial(
+        [Poly::zero(), Poly::zero(), Poly::from_ints(&[0, 1])],
+        Poly::new(vec![r(0, 1), r(1, 2)]),
+    );
+    let dom = [r(1, 4), r(1, 2), r(1, 4), r(1, 2)];
+    match canal_surface_rational(&cone, &opts(), Some(&dom)) {
+        Err(CanalError::IrrationalSplit { radicand }) => assert_eq!(radicand, "3"),
+        other => panic!("{other:?}"),
+    }
+    // a family that splits over Q keeps its spine-parameter construction
+    let pipe = CanalSpine::polynomial(
+        [Poly::from_ints(&[0, 1]), Poly::zero(), Poly::zero()],
+        Poly::new(vec![r(1, 4)]),
+    );
+    assert!(matches!(
+        canal_surface_rational(&pipe, &opts(), Some(&dom)),
+        Ok(RationalCanal::Spine(_))
+    ));
+}
+
+fn small() -> impl Strategy<Value = i64> {
+    -3i64..=3
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// Random quadratic families: whenever the spine-parameter constructions need a
+    /// quadratic field, Γ is built over Q on some small rectangle, certified, and the f64
+    /// construction agrees with the exact one.
+    #[test]
+    fn random_quadratic_families(c in proptest::array::uniform8(small())) {
+        let spine = CanalSpine::polynomial(
+            [
+                Poly::from_ints(&[0, 2 + c[0].abs(), c[1]]),
+                Poly::from_ints(&[0, c[2], c[3]]),
+                Poly::from_ints(&[0, c[4], c[5]]),
+            ],
+            Poly::new(vec![r(1, 1), r(c[6], 4), r(c[7], 8)]),
+        );
+        let mut built = None;
+        'outer: for i in 0..4 {
+            for j in 0..4 {
+                let dom = [r(i, 4), r(2 * i + 1, 8), r(j, 4), r(2 * j + 1, 8)];
+                match canal_surface_rational(&spine, &opts(), Some(&dom)) {
+                    Ok(b) => { built = Some(b); break 'outer; }
+                    Err(CanalError::InvalidArgument(_)) => continue,
+                    Err(_) => return Ok(()),
+                }
+            }
+        }
+        let Some(built) = built else { return Ok(()) };
+        match built {
+            RationalCanal::Spine(s) => prop_assert!(s.all_hold()),
+            RationalCanal::Cyclographic(g) => {
+                prop_assert!(g.all_hold());
+                let f = QuadraticCanal::from_spine(&spine.map_scalar(Scalar::to_f64)).expect("f64");
+                let (s, t) = (r(1, 3), r(2, 7));
+                if let (Ok(x), Ok(y)) = (g.surface().eval(&s, &t), f.eval(&Scalar::to_f64(&s), &Scalar::to_f64(&t))) {
+                    for k in 0..3 {
+                        let v = Scalar::to_f64(&x[k]);
+                        prop_assert!((v - y[k]).abs() <= 1e-9 * (1.0 + v.abs()), "{} vs {}", v, y[k]);
+                    }
+                }
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// (2.10) with an arbitrary rational normal field: a rational point n₀(t) on every circle of
+// normals instead of a split of |ṁ|² − ṙ².
+
+#[test]
+fn canal_surface_from_a_rational_normal_field() {
+    // m = (t, t²/2, 0), r = t: ṁ = (1, t, 0), ṙ = 1, and n₀ = (−1, 0, 0) is a unit normal
+    // with ⟨n₀, ṁ⟩ + ṙ = 0 (docs/math/lines-and-canal.md, Errata G9 family)
+    let spine = CanalSpine::polynomial(
+        [
+            Poly::from_ints(&[0, 1]),
+            Poly::new(vec![r(0, 1), r(0, 1), r(1, 2)]),
+            Poly::zero(),
+        ],
+        Poly::from_ints(&[0, 1]),
+    );
+    let n0 = [Poly::from_ints(&[-1]), Poly::zero(), Poly::zero()];
+    let c = canal_surface_from_normal_field(&spine, &n0, &Poly::from_ints(&[1])).expect("built");
+    let certs = c.certify();
+    assert!(Certificate::all_hold(&certs), "{certs:#?}");
+    assert_eq!(certs.len(), 4);
+    assert_eq!(c.bidegree().1, 2, "circles of degree 2 in u");
+    // a point is at distance r(t) from m(t)
+    let (t, u) = (r(1, 2), r(3, 1));
+    let x = c.eval(&t, &u).expect("point");
+    let (m, rad) = spine.eval(&t).expect("sphere");
+    let dist = (0..3).fold(r(0, 1), |a, k| a + (x[k].clone() - m[k].clone()).pow(2));
+    assert_eq!(dist, rad.clone() * rad);
+    assert!(c.patch((r(1, 4), r(1, 1)), (r(0, 1), r(1, 1))).is_ok());
+    // not a unit field / not on the circles of normals: named errors
+    let bad = [Poly::from_ints(&[0, 1]), Poly::zero(), Poly::zero()];
+    match canal_surface_from_normal_field(&spine, &bad, &Poly::from_ints(&[1])) {
+        Err(CanalError::InvalidArgument(m)) => assert!(m.contains("unit"), "{m}"),
+        other => panic!("{other:?}"),
+    }
+    let off = [Poly::from_ints(&[1]), Poly::zero(), Poly::zero()];
+    match canal_surface_from_normal_field(&spine, &off, &Poly::from_ints(&[1])) {
+        Err(CanalError::InvalidArgument(m)) => assert!(m.contains("circles of normals"), "{m}"),
+        other => panic!("{other:?}"),
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// Random families built around a random rational unit vector n₀ = σ(a, b) (inverse
+    /// stereographic projection): m random, r = c − ⟨n₀, m⟩ so that ⟨n₀, ṁ⟩ + ṙ = 0; the
+    /// surface is certified and f64 agrees with exact.
+    #[test]
+    fn random_normal_fields(
+        a in small(), b in small(), c in proptest::array::uniform6(small()), k in 1i64..=3,
+    ) {
+        let den = 1 + a * a + b * b;
+        let n0 = [r(2 * a, den), r(2 * b, den), r(1 - a * a - b * b, den)];
+        let m = [
+            Poly::from_ints(&[0, 1, c[0]]),
+            Poly::from_ints(&[0, c[1], c[2]]),
+            Poly::from_ints(&[0, c[3], c[4]]),
+        ];
+        let mut rad = Poly::new(vec![r(k, 1)]);
+        for (i, mi) in m.iter().enumerate() {
+            rad = &rad - &mi.scale(&n0[i]);
+        }
+        let spine = CanalSpine::polynomial(m, rad);
+        let nf = n0.clone().map(|x| Poly::new(vec![x]));
+        let built = match canal_surface_from_normal_field(&spine, &nf, &Poly::from_ints(&[1])) {
+            Ok(b) => b,
+            Err(CanalError::InvalidArgument(m)) if m.contains("ṁ ≡ 0") => return Ok(()),
+            Err(e) => return Err(TestCaseError::fail(format!("{e}"))),
+        };
+        prop_assert!(built.all_hold());
+        let nf64 = nf.clone().map(|p| p.map(Scalar::to_f64));
+        let f = canal_surface_from_normal_field(&spine.map_scalar(Scalar::to_f64), &nf64, &Poly::new(vec![1.0]))
+            .map_err(|e| TestCaseError::fail(format!("{e}")))?;
+        prop_assert!(f.all_hold());
+        let (t, u) = (r(2, 5), r(-3, 7));
+        if let (Ok(x), Ok(y)) = (built.eval(&t, &u), f.eval(&Scalar::to_f64(&t), &Scalar::to_f64(&u))) {
+            for i in 0..3 {
+                let v = Scalar::to_f64(&x[i]);
+                prop_assert!((v - y[i]).abs() <= 1e-9 * (1.0 + v.abs()), "{} vs {}", v, y[i]);
+            }
+        }
+    }
+}
