@@ -4,6 +4,7 @@
 mod canal_props;
 mod cyclide;
 mod laguerre_props;
+mod laguerre_query;
 mod lines_props;
 mod ph_planar;
 mod ph_preimage;
@@ -12,6 +13,7 @@ mod pn_laguerre;
 mod pn_props;
 mod primitives;
 mod quadric_props;
+mod quadric_query;
 mod seed000_examples;
 mod seed001_examples;
 mod seed003_examples;
