@@ -799,6 +799,17 @@ fn admissible<F: Scalar>(c: &[F], r: usize, params: &[F]) -> bool {
     full && g.degree().unwrap_or(0) == 0 && !(a.is_zero() && b.is_zero())
 }
 
+/// All > 0 or all < 0.
+fn one_sign<'a, F: Scalar + 'a>(mut xs: impl Iterator<Item = &'a F>) -> bool {
+    let z = F::zero();
+    let first = xs.next();
+    match first {
+        Some(f) if *f > z => xs.all(|x| *x > z),
+        Some(f) if *f < z => xs.all(|x| *x < z),
+        _ => false,
+    }
+}
+
 fn lowest_degree<F: Scalar>(targets: &[[F; 2]], params: &[F]) -> Option<usize> {
     (0..=targets.len()).find(|&r| {
         let basis = binary_space(targets, params, r);
@@ -808,7 +819,8 @@ fn lowest_degree<F: Scalar>(targets: &[[F; 2]], params: &[F]) -> Option<usize> {
 
 /// Interpolation on `H` by `ψ` of total degree `degree = r + s`, through `points` at
 /// `params`; `u_degree` fixes `r` (default: the extra degree over the lowest one split as
-/// evenly as possible, `u` first). The member of each solution space is the first one
+/// evenly as possible, `u` first, else the nearest split that admits coprime factors:
+/// the solutions of degree `r_min + 1` may all be multiples of the lowest one). The member of each solution space is the first one
 /// (moment-curve combination) whose components are coprime of full degree and do not
 /// vanish at the parameters.
 ///
@@ -866,7 +878,7 @@ pub fn psi_interpolate<F: Scalar>(
         });
     }
     let extra = degree - r_min - s_min;
-    let r = match u_degree {
+    let candidates: Vec<usize> = match u_degree {
         Some(r) if r < r_min || r > degree - s_min => {
             return Err(QuadricError::NoInterpolant {
                 degree,
@@ -876,16 +888,39 @@ pub fn psi_interpolate<F: Scalar>(
                 ),
             })
         }
-        Some(r) => r,
-        None => r_min + extra.div_ceil(2),
+        Some(r) => vec![r],
+        None => {
+            // the extra degree split evenly (u first), then the other splits by distance
+            let preferred = r_min + extra.div_ceil(2);
+            let mut c: Vec<usize> = (r_min..=degree - s_min).collect();
+            c.sort_by_key(|&r| (r.abs_diff(preferred), r < preferred));
+            c
+        }
     };
-    let s = degree - r;
-    let ubasis = binary_space(&us, params, r);
-    let vbasis = binary_space(&vs, params, s);
-    let u = pick_member(&ubasis, r.max(1) * 2, |c| admissible(c, r, params))
-        .ok_or_else(|| none("u"))?;
-    let v = pick_member(&vbasis, s.max(1) * 2, |c| admissible(c, s, params))
-        .ok_or_else(|| none("v"))?;
+    // prefer members whose weight component (u0 resp. v0) has Bernstein coefficients of
+    // one sign (then the weight u0·v0 of y has no zero on [0, 1]: exportable pieces)
+    let choose = |basis: &[Vec<F>], deg: usize| {
+        pick_member(basis, deg.max(1) * 2, |c| {
+            admissible(c, deg, params) && one_sign(c.iter().step_by(2))
+        })
+        .or_else(|| pick_member(basis, deg.max(1) * 2, |c| admissible(c, deg, params)))
+    };
+    let mut found = None;
+    for &r in &candidates {
+        let s = degree - r;
+        let ubasis = binary_space(&us, params, r);
+        let vbasis = binary_space(&vs, params, s);
+        if let (Some(u), Some(v)) = (choose(&ubasis, r), choose(&vbasis, s)) {
+            found = Some((r, s, u, v, ubasis.len(), vbasis.len()));
+            break;
+        }
+    }
+    let (r, s, u, v, u_dimension, v_dimension) = found.ok_or_else(|| QuadricError::NoInterpolant {
+        degree,
+        reason: format!(
+            "no split n = r + s with u of degree r ∈ {candidates:?} and v of degree s whose components are coprime (every solution of these degrees is a lower one times a common factor)"
+        ),
+    })?;
     let u: Vec<[F; 2]> = u.chunks(2).map(|p| [p[0].clone(), p[1].clone()]).collect();
     let v: Vec<[F; 2]> = v.chunks(2).map(|p| [p[0].clone(), p[1].clone()]).collect();
     let mut pts = vec![helpers::zero4::<F>(); r + s + 1];
@@ -908,8 +943,8 @@ pub fn psi_interpolate<F: Scalar>(
     Ok(PsiInterpolant {
         u,
         v,
-        u_dimension: ubasis.len(),
-        v_dimension: vbasis.len(),
+        u_dimension,
+        v_dimension,
         lowest: (r_min, s_min),
         curve,
         params: params.to_vec(),

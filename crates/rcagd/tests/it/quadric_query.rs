@@ -321,3 +321,26 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn psi_interpolation_skips_splits_without_coprime_factors() {
+    // u-factors (1, 0), (1, 1), (1, 2), (1, 3) at t = 0, 1/3, 2/3, 1 lie on u = (1, 3t)
+    // (degree 1); with 4 points the u-solutions of degree 2 form a 2-dimensional space,
+    // (a + bt)·(1, 3t), all with a common factor: degree 4 must take r = 1, s = 3.
+    let pts: Vec<Hom<Q>> = [[1, 0, 0, 0], [1, 1, 2, 2], [1, 2, 1, 2], [1, 3, 3, 9]]
+        .iter()
+        .map(|p| h(*p))
+        .collect();
+    let params = [r(0), q(1, 3), q(2, 3), r(1)];
+    let expected = [(3, (1, 2)), (4, (1, 3)), (5, (3, 2)), (6, (3, 3))];
+    for (d, degs) in expected {
+        let it = psi_interpolate(&pts, &params, d, None).unwrap();
+        assert_eq!(it.lowest, (1, 2));
+        assert_eq!(it.degrees(), degs, "degree {d}");
+        assert_all(&it.certify());
+    }
+    assert!(matches!(
+        psi_interpolate(&pts, &params, 4, Some(2)),
+        Err(QuadricError::NoInterpolant { .. })
+    ));
+}
