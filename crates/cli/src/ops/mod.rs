@@ -35,7 +35,8 @@ topics!(
     sphere_family,
     conic_surface,
     analysis,
-    quadric_query
+    quadric_query,
+    laguerre_query
 );
 
 pub mod describe;

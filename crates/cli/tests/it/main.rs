@@ -9,3 +9,4 @@ mod exchange_weights;
 mod fuzz;
 mod pipes;
 mod quadric_ops;
+mod queries;
