@@ -241,3 +241,39 @@ fn laguerre_cycles_of_a_boost() {
         &["matrix", "pe-orthogonal"],
     );
 }
+
+/// Farouki–Neff for p0 = 0, d0 = 1, p1 = 2/15 + 2/3 i, d1 = 2i (all complex): w0 = 1,
+/// w2 = ±√(2i) = ±(1 + i). By hand for w2 = 1 + i: c1 = 3(w0 + w2) = 6 + 3i,
+/// c0 = 3 + (1 + i) + 3·2i − 15Δp = 2 − 3i, discriminant 120Δp − 15(d0 + d1) + 10w0w2 =
+/// 11 + 60i = (6 + 5i)², so w1 = (−(6 + 3i) ± (6 + 5i))/4 = i/2 or −3 − 2i.
+#[test]
+fn ph_planar_hermite_values() {
+    let v = build_json(
+        "h_planar",
+        "[[object]]\nname = \"h\"\nop = \"ph_planar_hermite\"\np0 = [0, 0]\nd0 = [1, 0]\np1 = [\"2/15\", \"2/3\"]\nd1 = [0, 2]\n",
+        "h",
+    );
+    assert_eq!(exact(&v, "solutions"), "4");
+    assert_eq!(exact(&v, "quadratic_0"), "((2, -3), (6, 3), (2, 0))");
+    assert_eq!(exact(&v, "discriminant_0"), "(11, 60)");
+    assert_eq!(exact(&v, "w_0"), "((1, 0), (0, 1/2), (1, 1))");
+    assert_eq!(exact(&v, "w_1"), "((1, 0), (-3, -2), (1, 1))");
+    // every interpolant has the arc length ∫|w|² = 4/5 here; the energies are quadratures
+    for k in 0..4 {
+        assert_eq!(exact(&v, &format!("arc_length_{k}")), "4/5");
+    }
+    assert_eq!(exact(&v, "best_0"), "true");
+}
+
+/// The spatial Hermite member τ0 = τ2 = 0 reports its angles (cos, sin) = (1, 0) and the
+/// exact arc length of its preimage.
+#[test]
+fn ph_spatial_hermite_values() {
+    let v = build_json(
+        "h_spatial",
+        "[[object]]\nname = \"s\"\nop = \"ph_spatial_hermite\"\np0 = [0, 0, 0]\nd0 = [1, 0, 0]\np1 = [\"-1/15\", \"9/5\", \"-1/15\"]\nd1 = [-1, 2, 2]\ntau0 = 0\ntau2 = 0\n",
+        "s",
+    );
+    assert_eq!(exact(&v, "rotation0"), "(1, 0)");
+    assert_eq!(exact(&v, "arc_length"), "31/15");
+}
