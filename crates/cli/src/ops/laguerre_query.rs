@@ -61,7 +61,7 @@ cycle = [1, 2, 3, 4]
 
 const LAGUERRE_ISOTROPIC_QUADRIC: OpSpec = OpSpec {
     name: "laguerre_isotropic_quadric",
-    summary: "the isotropic-model function y3 = F(y1, y2) of a quadric given implicitly: its tangent planes Λ⁻¹(y) (Peternell (3.13)) satisfy A y3² + B y3 + C = 0 (uᵀ Q* u = 0, Q* = adj Q); F = −C/B is rational exactly when A = 0 (paraboloids), and then its PN surface lies on the quadric (Peternell Thm 4.3); derivation in the op's library docs; the object is a patch of the quadric",
+    summary: "the isotropic-model function y3 = F(y1, y2) of a quadric given implicitly: its tangent planes Λ⁻¹(y) (Peternell (3.13)) satisfy A y3² + B y3 + C = 0 (uᵀ Q* u = 0, Q* = adj Q); F = −C/B is rational exactly when A = 0 (paraboloids), and then its PN surface lies on the quadric (Peternell Thm 4.3); derivation in docs/math/laguerre-pn.md#isotropic-function-of-a-quadric; the object is a patch of the quadric",
     params: &[QUADRIC, COEFFICIENTS, MATRIX, RATIONAL_POINT],
     example: r#"[[object]]
 name = "paraboloid_isotropic_function"

@@ -71,7 +71,7 @@ distance = "-1/4"
 
 const PH_PLANAR_HERMITE: OpSpec = OpSpec {
     name: "ph_planar_hermite",
-    summary: "planar PH quintic C1 Hermite interpolants (Farouki–Neff): the best (least absolute rotation index) or all four; exact when the square roots are rational",
+    summary: "planar PH quintic C1 Hermite interpolants (Farouki–Neff): the best (least absolute rotation index) or all four; exact when the square roots are rational; values for all four: the elimination quadratic 2w₁² + 3(w₀ + w₂)w₁ + 3w₀² + w₀w₂ + 3w₂² − 15Δp = 0, its discriminant, w, arc length, rotation index, bending energy",
     params: &[
         ParamSpec::required("p0", ParamKind::Point2, "start point"),
         ParamSpec::required("d0", ParamKind::Point2, "start derivative r'(0), non-zero"),
@@ -121,7 +121,7 @@ ends = "natural"
 
 const PH_SPATIAL_HERMITE: OpSpec = OpSpec {
     name: "ph_spatial_hermite",
-    summary: "a spatial PH quintic C1 Hermite interpolant (Farouki–al-Kandari–Sakkalis) with free angles φ0, φ2; exact when the square roots are rational",
+    summary: "a spatial PH quintic C1 Hermite interpolant (Farouki–al-Kandari–Sakkalis) with free angles φ0, φ2; exact when the square roots are rational; values: the angles, the preimage coefficients, arc length, bending energy, end residual",
     params: &[
         ParamSpec::required("p0", ParamKind::Point3, "start point"),
         ParamSpec::required("d0", ParamKind::Point3, "start derivative, non-zero"),

@@ -13,7 +13,8 @@
 //!   `Xᵀ Q X = 0`: `F` solves `A F² + B F + C = 0`, the condition that the plane
 //!   `Λ⁻¹(y₁, y₂, F)` of (3.13) touches the quadric (`uᵀ Q* u = 0` for its coordinates
 //!   `u = (2F, 2y₁, 2y₂, y₁² + y₂² − 1)` and the dual quadric `Q* = adj Q`); rational,
-//!   `F = −C/B`, exactly when `A = 4Q*₀₀ = 0` (the plane at infinity touches: paraboloids);
+//!   `F = −C/B`, exactly when `A = 4Q*₀₀ = 0` (the plane at infinity touches: paraboloids;
+//!   docs/math/laguerre-pn.md#isotropic-function-of-a-quadric);
 //! * [`laguerre_cycles`]: the images of cycles under a Laguerre map `x ↦ a + λAx`
 //!   (3.8) and its fixed cycles, the solutions of `(I − λA)x = a`.
 
