@@ -61,7 +61,7 @@ cycle = [1, 2, 3, 4]
 
 const LAGUERRE_ISOTROPIC_QUADRIC: OpSpec = OpSpec {
     name: "laguerre_isotropic_quadric",
-    summary: "the isotropic-model function y3 = F(y1, y2) of a quadric given implicitly: its tangent planes Λ⁻¹(y) (Peternell (3.13)) satisfy A y3² + B y3 + C = 0 (uᵀ Q* u = 0, Q* = adj Q); F = −C/B is rational exactly when A = 0 (paraboloids), and then its PN surface lies on the quadric (Peternell Thm 4.3); derivation in docs/math/laguerre-pn.md#isotropic-function-of-a-quadric; the object is a patch of the quadric",
+    summary: "the isotropic-model function y3 = F(y1, y2) of a quadric given implicitly: its tangent planes Λ⁻¹(y) (Peternell (3.13)) satisfy A y3² + B y3 + C = 0 (uᵀ Q* u = 0, Q* = adj Q); F = −C/B is rational exactly when A = 0 (paraboloids), and then its PN surface lies on the quadric (Peternell Thm 4.3); otherwise the branches F± = (−B ± g)/(2A) are rational when B² − 4AC = g² (spheres: their two isotropic spheres); derivation in docs/math/laguerre-pn.md#isotropic-function-of-a-quadric; the object is a patch of the quadric",
     params: &[QUADRIC, COEFFICIENTS, MATRIX, RATIONAL_POINT],
     example: r#"[[object]]
 name = "paraboloid_isotropic_function"
@@ -290,6 +290,11 @@ fn build_isotropic_quadric(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         mpoly_value("discriminant", "B² − 4AC", &iq.discriminant),
         value("rational", "F is a rational function (A = 0)", Quantity::Bool(iq.rational.is_some())),
     ];
+    if let Some([fp, fm]) = iq.branches() {
+        values.push(mpoly_value("F_plus_numerator", "F+ = (−B + g)/(2A), g² = B² − 4AC: numerator", &fp.num));
+        values.push(mpoly_value("F_minus_numerator", "F− = (−B − g)/(2A): numerator", &fm.num));
+        values.push(value("F_denominator_branches", "2A, the denominator of F±", Quantity::Rational(Q::from(2) * iq.a.clone())));
+    }
     if let Some(f) = &iq.rational {
         values.push(mpoly_value("F_numerator", "F = numerator/denominator = −C/B", &f.num));
         values.push(mpoly_value("F_denominator", "the denominator B", &f.den));

@@ -413,6 +413,59 @@ pub struct IsotropicQuadric<F> {
     pub discriminant: MPoly<F>,
     /// `F = −C/B` when `A = 0` (the quadric touches the plane at infinity).
     pub rational: Option<RatFn<F>>,
+    /// `g` with `g² = B² − 4AC` when `A ≠ 0` and the discriminant is a square in
+    /// `Q[y₁, y₂]` (exact scalars): the two rational branches `F± = (−B ± g)/(2A)` (the two
+    /// orientations of the tangent planes; for a sphere its two isotropic spheres).
+    pub discriminant_root: Option<MPoly<F>>,
+}
+
+/// The branches `F± = (−B ± g)/(2A)` for a square discriminant `g²`.
+impl<F: Scalar> IsotropicQuadric<F> {
+    /// `[F+, F−]` when both are rational (`A ≠ 0`, `B² − 4AC = g²`).
+    pub fn branches(&self) -> Option<[RatFn<F>; 2]> {
+        let g = self.discriminant_root.as_ref()?;
+        let den = MPoly::constant(2, F::from_i64(2) * self.a.clone());
+        let mk = |num: MPoly<F>| RatFn::new(num, den.clone()).ok();
+        Some([
+            mk(g.clone() - self.b.clone())?,
+            mk(-(g.clone() + self.b.clone()))?,
+        ])
+    }
+}
+
+/// The square root of a polynomial in the lexicographic monomial order (exact scalars):
+/// the leading term of `g` is the root of that of `p`, every further term `t` is
+/// `LT(p − g²)/(2 LT(g))`; `None` if a step is not exact or the remainder does not vanish.
+fn mpoly_sqrt<F: Scalar>(p: &MPoly<F>) -> Option<MPoly<F>> {
+    if !F::EXACT || p.is_zero() {
+        return None;
+    }
+    let n = p.nvars();
+    let lt = |q: &MPoly<F>| q.terms().last().map(|(e, c)| (e.to_vec(), c.clone()));
+    let (e0, c0) = lt(p)?;
+    if e0.iter().any(|d| d % 2 != 0) {
+        return None;
+    }
+    let lead_e: Vec<u32> = e0.iter().map(|d| d / 2).collect();
+    let lead_c = rcagd_algebra::scalar::sqrt_in_field(&c0)?;
+    let mut g = MPoly::monomial(n, &lead_e, lead_c.clone());
+    let two_lead = F::from_i64(2) * lead_c;
+    let bound = p.num_terms() * 4 + 8;
+    for _ in 0..bound {
+        let r = p.clone() - g.clone() * g.clone();
+        let Some((e, c)) = lt(&r) else {
+            return Some(g);
+        };
+        if e.iter().zip(&lead_e).any(|(a, b)| a < b) || e >= e0 {
+            return None;
+        }
+        let te: Vec<u32> = e.iter().zip(&lead_e).map(|(a, b)| a - b).collect();
+        if te >= lead_e {
+            return None;
+        }
+        g += MPoly::monomial(n, &te, c / two_lead.clone());
+    }
+    None
 }
 
 fn adjugate<F: Scalar>(q: &Mat4<F>) -> Mat4<F> {
@@ -510,6 +563,11 @@ pub fn isotropic_quadric<F: Scalar>(q: &Mat4<F>) -> Result<IsotropicQuadric<F>, 
     } else {
         None
     };
+    let discriminant_root = if rational.is_none() {
+        mpoly_sqrt(&discriminant)
+    } else {
+        None
+    };
     Ok(IsotropicQuadric {
         quadric: q.clone(),
         dual,
@@ -519,6 +577,7 @@ pub fn isotropic_quadric<F: Scalar>(q: &Mat4<F>) -> Result<IsotropicQuadric<F>, 
         c,
         discriminant,
         rational,
+        discriminant_root,
     })
 }
 
@@ -578,6 +637,31 @@ impl<F: Scalar> crate::Certified for IsotropicQuadric<F> {
             F::EXACT,
             || format!("residual {diff:?}"),
         ));
+        if let Some(g) = &self.discriminant_root {
+            let d = g.clone() * g.clone() - self.discriminant.clone();
+            out.push(Certificate::decide(
+                "g² ≡ B² − 4AC: both branches F± = (−B ± g)/(2A) are rational",
+                d.is_zero(),
+                F::EXACT,
+                || format!("residual {d:?}"),
+            ));
+        }
+        for (k, f) in self.branches().into_iter().flatten().enumerate() {
+            if let Ok(s) = IsotropicSurface::graph(&f).to_pn_surface() {
+                let x = s.point_polys();
+                let r = form(&self.quadric, x, x[0].nvars());
+                let ok = r.terms().all(|(_, c)| crate::certs::is_negligible(c, 1.0));
+                out.push(Certificate::decide(
+                    format!(
+                        "the PN surface Λ⁻¹ of the branch F{} lies on the quadric: xᵀ Q x ≡ 0",
+                        if k == 0 { "+" } else { "−" }
+                    ),
+                    ok,
+                    F::EXACT,
+                    || format!("residual {r:?}"),
+                ));
+            }
+        }
         if let Ok(s) = self.pn_surface() {
             let x = s.point_polys();
             let r = form(&self.quadric, x, x[0].nvars());

@@ -112,6 +112,32 @@ fn isotropic_function_of_a_sphere_has_the_two_isotropic_spheres_as_branches() {
     assert!(iq.rational.is_none());
     assert_ne!(iq.a, r(0));
     assert_all(&iq.certify());
+    // B² − 4AC is a square: the branches are the isotropic spheres of (m; ±3)
+    let [fp, fm] = iq.branches().expect("rational branches");
+    let sp = Cycle::new(m.clone(), r(3)).unwrap().isotropic_sphere();
+    let sm = Cycle::new(m.clone(), r(-3)).unwrap().isotropic_sphere();
+    for (y1, y2) in [(0, 0), (1, 2), (-3, 1), (2, -5)] {
+        let (y1, y2) = (q(y1, 3), q(y2, 2));
+        let got = [
+            fp.eval(&[y1.clone(), y2.clone()]).unwrap(),
+            fm.eval(&[y1.clone(), y2.clone()]).unwrap(),
+        ];
+        let want = [sp.eval(&y1, &y2), sm.eval(&y1, &y2)];
+        assert!(
+            got == want || got == [want[1].clone(), want[0].clone()],
+            "{got:?} vs {want:?}"
+        );
+    }
+    // a triaxial ellipsoid x² + y²/4 + z²/9 = 1: B² − 4AC is no square
+    let e = [
+        [r(-1), r(0), r(0), r(0)],
+        [r(0), r(1), r(0), r(0)],
+        [r(0), r(0), q(1, 4), r(0)],
+        [r(0), r(0), r(0), q(1, 9)],
+    ];
+    let ie = isotropic_quadric(&e).unwrap();
+    assert!(ie.branches().is_none() && ie.rational.is_none());
+    assert_all(&ie.certify());
     for sign in [1, -1] {
         let s = Cycle::new(m.clone(), r(3 * sign))
             .unwrap()
