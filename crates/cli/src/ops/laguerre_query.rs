@@ -309,7 +309,9 @@ fn build_isotropic_quadric(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     certs.extend(img.certify());
     let (geometry, extra) = exportable_patch(img.into_image(), &q)?;
     certs.extend(extra);
-    Ok(vec![args.object(geometry, certs).with_values(values)])
+    Ok(vec![args
+        .object(super::quadric_query::positive_weights(geometry)?, certs)
+        .with_values(values)])
 }
 
 fn build_cycles(args: &OpArgs) -> Result<Vec<Object>, OpError> {

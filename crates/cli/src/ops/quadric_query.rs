@@ -272,7 +272,7 @@ fn build_preimage(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     ];
     let (geometry, extra) = exportable_curve(section.curve().clone(), &t.proj.quadric())?;
     certs.extend(extra);
-    Ok(vec![args.object(geometry, certs).with_values(values)])
+    Ok(vec![args.object(positive_weights(geometry)?, certs).with_values(values)])
 }
 
 fn mat4(rows: &[Vec<Q>], param: &'static str) -> Result<Mat4<Q>, OpError> {
@@ -353,7 +353,7 @@ fn build_collineation(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     if let Some(q) = &image_q {
         values.push(matrix_value("image_quadric", "Q' = A⁻ᵀ Q A⁻¹", q));
     }
-    Ok(vec![args.object(geometry, certs).with_values(values)])
+    Ok(vec![args.object(positive_weights(geometry)?, certs).with_values(values)])
 }
 
 fn build_miquel_points(args: &OpArgs) -> Result<Vec<Object>, OpError> {
@@ -388,7 +388,7 @@ fn build_miquel_points(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     }
     let (geometry, extra) = exportable_patch(patch, &q)?;
     certs.extend(extra);
-    Ok(vec![args.object(geometry, certs).with_values(values)])
+    Ok(vec![args.object(positive_weights(geometry)?, certs).with_values(values)])
 }
 
 fn build_psi_interpolate(args: &OpArgs) -> Result<Vec<Object>, OpError> {
@@ -432,5 +432,57 @@ fn build_psi_interpolate(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let h = rcagd::quadric::paraboloid::paraboloid_matrix::<Q>();
     let (geometry, extra) = exportable_curve(it.curve.clone(), &h)?;
     certs.extend(extra);
-    Ok(vec![args.object(geometry, certs).with_values(values)])
+    Ok(vec![args.object(positive_weights(geometry)?, certs).with_values(values)])
+}
+
+/// The same geometry with every curve or patch whose weights are all negative negated
+/// and, where all weights are equal, scaled to weight 1 (the same projective object; the
+/// exchange formats then write a polynomial B-spline whose numbers are the exact ones).
+pub(super) fn positive_weights(g: Geometry) -> Result<Geometry, OpError> {
+    let scale = |coords: &[Q], stride: usize| -> Option<Q> {
+        let ws: Vec<&Q> = coords.iter().step_by(stride).collect();
+        let first = (*ws.first()?).clone();
+        if ws.iter().all(|w| **w == first) && !first.is_zero() && first != Q::from(1) {
+            return Some(first);
+        }
+        ws.iter().all(|w| **w < Q::zero()).then(|| Q::from(-1))
+    };
+    let apply = |coords: &[Q], c: &Q| coords.iter().map(|x| x.clone() / c.clone()).collect::<Vec<Q>>();
+    let curve = |c: BezierCurve<Q>| -> Result<BezierCurve<Q>, OpError> {
+        match scale(c.coords(), c.dim() + 1) {
+            Some(k) => Ok(BezierCurve::from_flat(c.dim(), apply(c.coords(), &k))?),
+            None => Ok(c),
+        }
+    };
+    let patch = |p: BezierPatch<Q>| -> Result<BezierPatch<Q>, OpError> {
+        match scale(p.coords(), p.dim() + 1) {
+            Some(k) => {
+                let (m, n) = p.degree();
+                Ok(BezierPatch::from_flat(p.dim(), m, n, apply(p.coords(), &k))?)
+            }
+            None => Ok(p),
+        }
+    };
+    // several pieces: only a factor common to all of them (joins stay exact)
+    let common = |ks: Vec<Option<Q>>| -> bool {
+        ks.first().is_some_and(|k0| k0.is_some() && ks.iter().all(|k| k == k0))
+    };
+    Ok(match g {
+        Geometry::Curve(c) => Geometry::Curve(curve(c)?),
+        Geometry::Patch(p) => Geometry::Patch(patch(p)?),
+        Geometry::Curves(cs) => {
+            if common(cs.iter().map(|c| scale(c.coords(), c.dim() + 1)).collect()) {
+                Geometry::Curves(cs.into_iter().map(curve).collect::<Result<_, _>>()?)
+            } else {
+                Geometry::Curves(cs)
+            }
+        }
+        Geometry::Patches(ps) => {
+            if common(ps.iter().map(|p| scale(p.coords(), p.dim() + 1)).collect()) {
+                Geometry::Patches(ps.into_iter().map(patch).collect::<Result<_, _>>()?)
+            } else {
+                Geometry::Patches(ps)
+            }
+        }
+    })
 }
