@@ -249,4 +249,25 @@ proptest! {
         let c = iq.c.eval(&[y1, y2]).unwrap();
         prop_assert_eq!(iq.a.clone() * f.clone() * f.clone() + b * f + c, r(0));
     }
+
+    /// Random similarities with translation and dilatation: images certified (contact
+    /// preserved), the fixed cycle fixed, f64 images agree with exact ones.
+    #[test]
+    fn random_laguerre_cycles(lam in 2i64..=4, t in proptest::array::uniform3(small()), d in small(), c in proptest::array::uniform4(small())) {
+        let map = LaguerreMap::similarity(r(lam)).unwrap()
+            .compose(&LaguerreMap::translation(t.map(r)))
+            .compose(&LaguerreMap::dilatation(r(d)));
+        let cyc = Cycle::new([r(c[0]), r(c[1]), r(c[2])], r(c[3])).unwrap();
+        let lc = laguerre_cycles(&map, std::slice::from_ref(&cyc));
+        for x in lc.certify() { prop_assert!(x.holds, "{}", x); }
+        prop_assert!(lc.fixed.is_some());
+        let mapf = LaguerreMap::similarity(lam as f64).unwrap()
+            .compose(&LaguerreMap::translation(t.map(|x| x as f64)))
+            .compose(&LaguerreMap::dilatation(d as f64));
+        let cf = Cycle::new([c[0] as f64, c[1] as f64, c[2] as f64], c[3] as f64).unwrap();
+        let lf = laguerre_cycles(&mapf, std::slice::from_ref(&cf));
+        for x in lf.certify() { prop_assert!(x.holds, "{}", x); }
+        let (e, f) = (lc.images[0].1.to_cyclographic(), lf.images[0].1.to_cyclographic());
+        for i in 0..4 { prop_assert!((Scalar::to_f64(&e[i]) - f[i]).abs() < 1e-9); }
+    }
 }

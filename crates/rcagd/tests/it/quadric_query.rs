@@ -344,3 +344,44 @@ fn psi_interpolation_skips_splits_without_coprime_factors() {
         Err(QuadricError::NoInterpolant { .. })
     ));
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// Random regular diagonal-plus-shear collineations of a sphere arc: certified, the
+    /// image quadric transfers back, and the f64 image agrees with the exact one.
+    #[test]
+    fn random_collineations(d in proptest::array::uniform4(1i64..=4), sh in proptest::array::uniform3(small())) {
+        let a = [
+            [r(d[0]), r(0), r(0), r(0)],
+            [r(sh[0]), r(d[1]), r(0), r(0)],
+            [r(sh[1]), r(sh[2]), r(d[2]), r(0)],
+            [r(0), r(0), r(0), r(d[3])],
+        ];
+        let c = sphere_conic();
+        let img = collineation_curve(&a, &c, Some(&sphere_matrix())).unwrap();
+        for x in img.certify() { prop_assert!(x.holds, "{}", x); }
+        let af = a.clone().map(|row| row.map(|x| Scalar::to_f64(&x)));
+        let cf = c.to_f64();
+        let imf = collineation_curve(&af, &cf, Some(&sphere_matrix::<f64>())).unwrap();
+        for x in imf.certify() { prop_assert!(x.holds, "{}", x); }
+        for (e, f) in img.image.coords().iter().zip(imf.image.coords()) {
+            prop_assert!((Scalar::to_f64(e) - f).abs() < 1e-9 * (1.0 + f.abs()));
+        }
+    }
+
+    /// Random points of H (images of random q): ψ interpolation of degree lowest + 2 is
+    /// certified.
+    #[test]
+    fn random_psi_interpolation(qs in proptest::array::uniform3(proptest::array::uniform4(1i64..=6))) {
+        let pts: Vec<Hom<Q>> = qs.iter().map(|p| psi(&h(*p))).collect();
+        prop_assume!((0..3).all(|i| (i + 1..3).all(|j| !parallel(&pts[i], &pts[j]))));
+        let params = [r(0), q(1, 2), r(1)];
+        let low = psi_interpolate(&pts, &params, 0, None).err();
+        let refused = matches!(low, Some(QuadricError::NoInterpolant { .. }));
+        prop_assert!(refused);
+        let it = psi_interpolate(&pts, &params, 4, None).unwrap();
+        for x in it.certify() { prop_assert!(x.holds, "{}", x); }
+        prop_assert_eq!(it.curve.degree(), 4);
+    }
+}
