@@ -299,13 +299,39 @@ fn build_isotropic_quadric(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         values.push(mpoly_value("F_numerator", "F = numerator/denominator = −C/B", &f.num));
         values.push(mpoly_value("F_denominator", "the denominator B", &f.den));
     }
-    let corner = |x: i64, y: i64| vec![Q::one(), Q::from(x), Q::from(y), Q::zero()];
-    let bilinear = BezierPatch::from_homogeneous(vec![
-        vec![corner(0, 0), corner(0, 1)],
-        vec![corner(1, 0), corner(1, 1)],
-    ])?;
-    let img = patch_image(t.proj.as_ref(), &bilinear)
-        .map_err(|e| OpError::param("quadric", format!("no patch of the quadric to draw: {e}")))?;
+    // a patch of the quadric: the image of the first of a few bilinear patches whose image
+    // has weights of one sign (the projection's exceptional lines differ per quadric)
+    let bases: [[i64; 4]; 4] = [[1, 0, 0, 0], [2, 1, 1, 1], [3, 1, 2, -1], [2, -1, 1, 3]];
+    let mut chosen = None;
+    let mut last_err = None;
+    for b in bases {
+        let corner = |x: i64, y: i64| vec![Q::from(b[0]), Q::from(b[1] + x), Q::from(b[2] + y), Q::from(b[3])];
+        let bilinear = BezierPatch::from_homogeneous(vec![
+            vec![corner(0, 0), corner(0, 1)],
+            vec![corner(1, 0), corner(1, 1)],
+        ])?;
+        match patch_image(t.proj.as_ref(), &bilinear) {
+            Ok(img) => {
+                let stride = img.image().dim() + 1;
+                let ws: Vec<&Q> = img.image().coords().iter().step_by(stride).collect();
+                let one_sign = ws.iter().all(|w| **w > Q::zero()) || ws.iter().all(|w| **w < Q::zero());
+                if one_sign {
+                    chosen = Some(img);
+                    break;
+                }
+                if chosen.is_none() && last_err.is_none() {
+                    last_err = Some(format!("the patch {b:?} + [0, 1]² has weights of both signs"));
+                }
+            }
+            Err(e) => last_err = Some(e.to_string()),
+        }
+    }
+    let img = chosen.ok_or_else(|| {
+        OpError::param(
+            "quadric",
+            format!("no patch of the quadric to draw: {}", last_err.unwrap_or_default()),
+        )
+    })?;
     certs.extend(img.certify());
     let (geometry, extra) = exportable_patch(img.into_image(), &q)?;
     certs.extend(extra);
