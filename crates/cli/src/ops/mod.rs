@@ -34,7 +34,9 @@ topics!(
     pn,
     sphere_family,
     conic_surface,
-    analysis
+    analysis,
+    quadric_query,
+    laguerre_query
 );
 
 pub mod describe;

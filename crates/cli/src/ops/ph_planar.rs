@@ -14,7 +14,9 @@ use rcagd::ph::{
     PhCurve, PhQuinticSpline, PlanarHermiteData, PlanarHermiteInterpolant, PlanarHermiteResult,
     PlanarPhCurve, SpatialHermiteData, SpatialHermiteQuintic, SpatialHermiteResult, SplineEnds,
 };
+use rcagd::ph::hermite_values::{planar_hermite_branches, PlanarHermiteBranch};
 use rcagd_algebra::{Certificate, Complex, Quaternion, Rational, Scalar};
+use rcagd_io::quantity::{NamedQuantity, Quantity};
 
 /// The ops of this topic.
 pub const OPS: &[OpSpec] = &[
@@ -69,7 +71,7 @@ distance = "-1/4"
 
 const PH_PLANAR_HERMITE: OpSpec = OpSpec {
     name: "ph_planar_hermite",
-    summary: "planar PH quintic C1 Hermite interpolants (Farouki–Neff): the best (least absolute rotation index) or all four; exact when the square roots are rational",
+    summary: "planar PH quintic C1 Hermite interpolants (Farouki–Neff): the best (least absolute rotation index) or all four; exact when the square roots are rational; values for all four: the elimination quadratic 2w₁² + 3(w₀ + w₂)w₁ + 3w₀² + w₀w₂ + 3w₂² − 15Δp = 0, its discriminant, w, arc length, rotation index, bending energy",
     params: &[
         ParamSpec::required("p0", ParamKind::Point2, "start point"),
         ParamSpec::required("d0", ParamKind::Point2, "start derivative r'(0), non-zero"),
@@ -119,7 +121,7 @@ ends = "natural"
 
 const PH_SPATIAL_HERMITE: OpSpec = OpSpec {
     name: "ph_spatial_hermite",
-    summary: "a spatial PH quintic C1 Hermite interpolant (Farouki–al-Kandari–Sakkalis) with free angles φ0, φ2; exact when the square roots are rational",
+    summary: "a spatial PH quintic C1 Hermite interpolant (Farouki–al-Kandari–Sakkalis) with free angles φ0, φ2; exact when the square roots are rational; values: the angles, the preimage coefficients, arc length, bending energy, end residual",
     params: &[
         ParamSpec::required("p0", ParamKind::Point3, "start point"),
         ParamSpec::required("d0", ParamKind::Point3, "start derivative, non-zero"),
@@ -241,7 +243,7 @@ fn build_hermite(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let mut curves = Vec::new();
     let mut certs = Vec::new();
     let keep = |best: bool| all || best;
-    match data.solve_auto()? {
+    let values = match data.solve_auto()? {
         PlanarHermiteResult::Exact(s) => {
             for (k, c) in s.interpolants.iter().enumerate() {
                 if !keep(c.best) {
@@ -256,6 +258,11 @@ fn build_hermite(args: &OpArgs) -> Result<Vec<Object>, OpError> {
                 certs.extend(prefixed(&tag, one.certify()));
                 curves.push(c.curve.to_bezier()?);
             }
+            let branches = planar_hermite_branches(&s);
+            for b in &branches {
+                certs.extend(b.certify());
+            }
+            hermite_values(&branches, true, |x: &Rational| Quantity::Rational(x.clone()))
         }
         PlanarHermiteResult::Float(s) => {
             for (k, c) in s.interpolants.iter().enumerate() {
@@ -268,14 +275,46 @@ fn build_hermite(args: &OpArgs) -> Result<Vec<Object>, OpError> {
                 certs.push(planar_residual_cert(&exact, &data));
                 curves.push(exact.to_bezier()?);
             }
+            let branches = planar_hermite_branches(&s);
+            for b in &branches {
+                certs.extend(b.certify());
+            }
+            hermite_values(&branches, false, |x: &f64| Quantity::Approx(*x))
         }
-    }
+    };
     let geometry = if curves.len() == 1 {
         Geometry::Curve(curves.remove(0))
     } else {
         Geometry::Curves(curves)
     };
-    Ok(vec![args.object(geometry, certs)])
+    Ok(vec![args.object(geometry, certs).with_values(values)])
+}
+
+/// The values of the four interpolants: the elimination quadratic of `w₁`, its
+/// discriminant, `w`, arc length, rotation index, energy; exact when `exact`.
+fn hermite_values<F: Scalar>(
+    branches: &[PlanarHermiteBranch<F>],
+    exact: bool,
+    num: impl Fn(&F) -> Quantity,
+) -> Vec<NamedQuantity> {
+    let cx = |z: &Complex<F>| Quantity::Vector(vec![num(&z.re), num(&z.im)]);
+    let sign = |s: i8| if s > 0 { '+' } else { '−' };
+    let mut v = vec![
+        NamedQuantity::new("exact", "every square root is rational: exact interpolants", Quantity::Bool(exact)),
+        NamedQuantity::new("solutions", "the number of interpolants (w₂ = ±√d₁, two roots w₁ each)", Quantity::Integer(branches.len() as i64)),
+    ];
+    for (k, b) in branches.iter().enumerate() {
+        let t = |s: &str| format!("{s}_{k}");
+        v.push(NamedQuantity::new(t("signs"), "(sign of w₂ = ±√d₁, sign of the root of the quadratic)", Quantity::Text(format!("({}, {})", sign(b.signs.0), sign(b.signs.1)))));
+        v.push(NamedQuantity::new(t("quadratic"), "[c₀, c₁, c₂] of c₂w₁² + c₁w₁ + c₀ = 0, each [re, im] (Farouki–Neff)", Quantity::Vector(b.quadratic.iter().map(cx).collect())));
+        v.push(NamedQuantity::new(t("discriminant"), "120Δp − 15(d₀ + d₁) + 10w₀w₂, [re, im]", cx(&b.discriminant)));
+        v.push(NamedQuantity::new(t("w"), "Bernstein coefficients w₀, w₁, w₂ of w(t), r' = w², each [re, im]", Quantity::Vector(b.w.iter().map(cx).collect())));
+        v.push(NamedQuantity::new(t("arc_length"), "∫₀¹ |w|² dt", num(&b.arc_length)));
+        v.push(NamedQuantity::new(t("rotation_index"), "absolute rotation index (1/2π)∫|κ| ds", Quantity::Approx(b.absolute_rotation_index)));
+        v.push(NamedQuantity::new(t("bending_energy"), "∫κ² ds", Quantity::Approx(b.bending_energy)));
+        v.push(NamedQuantity::new(t("best"), "the good interpolant (least rotation index, then energy)", Quantity::Bool(b.best)));
+    }
+    v
 }
 
 fn tag<F>(k: usize, c: &PlanarHermiteInterpolant<F>) -> String {
@@ -359,7 +398,7 @@ fn build_spatial(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     );
     let t0 = args.opt_number("tau0")?;
     let t2 = args.opt_number("tau2")?;
-    let (curve, certs) = match (t0, t2) {
+    let (curve, certs) = match (t0.clone(), t2.clone()) {
         (Some(a), Some(b)) => match data.solve_auto(&a, &b)? {
             SpatialHermiteResult::Exact(s) => {
                 let c = s.certify();
@@ -375,5 +414,43 @@ fn build_spatial(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             ))
         }
     };
-    Ok(vec![args.object(Geometry::Curve(curve.to_bezier()?), certs)])
+    let values = spatial_values(&curve, &data, t0.as_ref(), t2.as_ref());
+    Ok(vec![args
+        .object(Geometry::Curve(curve.to_bezier()?), certs)
+        .with_values(values)])
+}
+
+/// The values of the chosen spatial interpolant: the angles, its preimage coefficients,
+/// arc length and bending energy.
+fn spatial_values(
+    curve: &PhCurve<Rational>,
+    data: &SpatialHermiteData<Rational>,
+    t0: Option<&Rational>,
+    t2: Option<&Rational>,
+) -> Vec<NamedQuantity> {
+    let mut v = Vec::new();
+    if let (Some(a), Some(b)) = (t0, t2) {
+        let (c0, s0) = rcagd::ph::spatial_hermite::rotation_from_half_tangent(a);
+        let (c2, s2) = rcagd::ph::spatial_hermite::rotation_from_half_tangent(b);
+        v.push(NamedQuantity::new("rotation0", "(cos φ0, sin φ0) from τ0 = tan(φ0/2)", Quantity::rationals(&[c0, s0])));
+        v.push(NamedQuantity::new("rotation2", "(cos φ2, sin φ2) from τ2 = tan(φ2/2)", Quantity::rationals(&[c2, s2])));
+    }
+    v.push(NamedQuantity::new(
+        "quaternion_coefficients",
+        "Bernstein coefficients [w, x, y, z] of the preimage A(t), r' = A i A*",
+        Quantity::Vector(curve.coefficients().iter().map(|q| Quantity::rationals(&[q.w.clone(), q.x.clone(), q.y.clone(), q.z.clone()])).collect()),
+    ));
+    v.push(NamedQuantity::new("arc_length", "∫₀¹ σ dt", Quantity::Rational(curve.arc_length())));
+    let member = SpatialHermiteQuintic {
+        data: data.clone(),
+        rotation0: (Rational::from(1), Rational::from(0)),
+        rotation2: (Rational::from(1), Rational::from(0)),
+        curve: curve.clone(),
+        bending_energy: 0.0,
+    };
+    v.push(NamedQuantity::new("residual", "max deviation of the end conditions (0 when exact)", Quantity::Approx(member.residual())));
+    if let Ok(e) = curve.to_poly_curve().bending_energy() {
+        v.push(NamedQuantity::new("bending_energy", "∫κ² ds", Quantity::Approx(e)));
+    }
+    v
 }

@@ -51,24 +51,24 @@ const QUADRIC_NAMES: &[&str] = &[
     "matrix",
 ];
 
-const QUADRIC: ParamSpec = ParamSpec::with_default(
+pub(super) const QUADRIC: ParamSpec = ParamSpec::with_default(
     "quadric",
     ParamKind::Choice(QUADRIC_NAMES),
     "\"unit_sphere\"",
     "the quadric: unit_sphere (Jüttler's δ), hyperbolic_paraboloid_xy z = xy, i.e. h0h3 = h1h2 (Jüttler's ψ; \"seed_paraboloid\" is a deprecated alias), a named quadric with `coefficients`, or \"matrix\"",
 );
-const COEFFICIENTS: ParamSpec = ParamSpec::with_default(
+pub(super) const COEFFICIENTS: ParamSpec = ParamSpec::with_default(
     "coefficients",
     ParamKind::Numbers,
     "[]",
     "the named quadric's numbers: sphere [cx, cy, cz, r]; ellipsoid, hyperboloids, cone [a, b, c]; paraboloids, elliptic/hyperbolic cylinder [a, b]; parabolic_cylinder [a]",
 );
-const MATRIX: ParamSpec = ParamSpec::optional(
+pub(super) const MATRIX: ParamSpec = ParamSpec::optional(
     "matrix",
     ParamKind::Grid,
     "with quadric = \"matrix\": the symmetric 4×4 matrix Q of Xᵀ Q X = 0, X = (w, x, y, z)",
 );
-const RATIONAL_POINT: ParamSpec = ParamSpec::optional(
+pub(super) const RATIONAL_POINT: ParamSpec = ParamSpec::optional(
     "rational_point",
     ParamKind::Point,
     "a rational point of the quadric, [x, y, z] or homogeneous [w, x, y, z] (default: the named quadric's, or one found exactly)",
@@ -227,9 +227,9 @@ op = "sphere_cover"
 
 /// A projection chosen from the quadric parameters, with the certificates of the
 /// projection itself (empty for Jüttler's δ and ψ, which the image certificates cover).
-struct Target {
-    proj: Box<dyn GeneralizedProjection<Rational>>,
-    certs: Vec<Certificate>,
+pub(super) struct Target {
+    pub(super) proj: Box<dyn GeneralizedProjection<Rational>>,
+    pub(super) certs: Vec<Certificate>,
 }
 
 /// Which parameter to blame for an error of the quadric itself.
@@ -244,7 +244,7 @@ fn quadric_param(args: &OpArgs) -> &'static str {
 }
 
 /// A homogeneous point from `[x, y, z]` or `[w, x, y, z]`.
-fn hom(p: &[Rational], param: &'static str, what: &str) -> Result<Hom<Rational>, OpError> {
+pub(super) fn hom(p: &[Rational], param: &'static str, what: &str) -> Result<Hom<Rational>, OpError> {
     match p {
         [x, y, z] => Ok([Rational::one(), x.clone(), y.clone(), z.clone()]),
         [w, x, y, z] => Ok([w.clone(), x.clone(), y.clone(), z.clone()]),
@@ -258,7 +258,7 @@ fn hom(p: &[Rational], param: &'static str, what: &str) -> Result<Hom<Rational>,
     }
 }
 
-fn target(args: &OpArgs) -> Result<Target, OpError> {
+pub(super) fn target(args: &OpArgs) -> Result<Target, OpError> {
     let name = args.string("quadric")?;
     let coefficients = args.opt_numbers("coefficients")?.unwrap_or_default();
     let matrix = args.opt_grid("matrix")?;
@@ -329,7 +329,7 @@ fn target(args: &OpArgs) -> Result<Target, OpError> {
 }
 
 /// Prefixes every certificate's property.
-fn prefixed(prefix: &str, certs: Vec<Certificate>) -> Vec<Certificate> {
+pub(super) fn prefixed(prefix: &str, certs: Vec<Certificate>) -> Vec<Certificate> {
     certs
         .into_iter()
         .map(|mut c| {
@@ -345,7 +345,7 @@ fn mentions(msg: &str, word: &str) -> bool {
 }
 
 /// Maps a construction error to the parameter that caused it.
-fn located(e: QuadricError, point_param: &'static str) -> OpError {
+pub(super) fn located(e: QuadricError, point_param: &'static str) -> OpError {
     let msg = e.to_string();
     let param = match &e {
         QuadricError::NotOnQuadric { what, .. } | QuadricError::ZeroPoint(what) => {
@@ -484,7 +484,7 @@ fn build_interpolate(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 }
 
 /// Homogeneous control points in 3-space from points / weights / homogeneous.
-fn control_points(
+pub(super) fn control_points(
     points: Vec<Vec<Rational>>,
     weights: Option<Vec<Rational>>,
     homogeneous: bool,
@@ -642,7 +642,7 @@ fn one_sign(coords: &[Rational], stride: usize) -> bool {
 /// weights of one sign ([`split_curve_uniform`]). STEP/IGES need such weights. The
 /// certificates: every piece on the quadric (`Xᵀ Q X ≡ 0`, exact), consecutive pieces
 /// join exactly.
-fn exportable_curve(
+pub(super) fn exportable_curve(
     curve: BezierCurve<Rational>,
     q: &rcagd::quadric::Mat4<Rational>,
 ) -> Result<(Geometry, Vec<Certificate>), OpError> {
@@ -675,7 +675,7 @@ fn exportable_curve(
 
 /// As [`exportable_curve`] for a patch: its restrictions to the `2^L × 2^L` sub-squares
 /// ([`split_patch_uniform`], `L ≤ 3`).
-fn exportable_patch(
+pub(super) fn exportable_patch(
     patch: BezierPatch<Rational>,
     q: &rcagd::quadric::Mat4<Rational>,
 ) -> Result<(Geometry, Vec<Certificate>), OpError> {

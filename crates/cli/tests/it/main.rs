@@ -10,4 +10,5 @@ mod exchange_weights;
 mod fuzz;
 mod pipes;
 mod quadric_ops;
+mod queries;
 mod sphere_family_ops;

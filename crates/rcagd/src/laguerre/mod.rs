@@ -9,7 +9,10 @@
 //! * [`transform`]: [`LaguerreMap`] — a pe similarity `x ↦ a + λ A x` of the cyclographic
 //!   model `R⁴` (`AᵀEA = E`, `E = diag(1,1,1,−1)`, seed (3.8)/(3.9)) acting on cycles,
 //!   oriented planes and points of the isotropic model; dilatations (offsets),
-//!   translations, rotations, similarities and Lorentz boosts.
+//!   translations, rotations, similarities and Lorentz boosts;
+//! * [`query`]: questions answered exactly — a cycle or an oriented plane in every model
+//!   (cyclographic, Blaschke, isotropic, dual isotropic, Möbius) and back, the
+//!   isotropic-model function of an implicit quadric, the cycles of a Laguerre map.
 //!
 //! **Conventions (docs/math/laguerre-pn.md#conventions).** An oriented plane is `e = (e0, n)`, `|n| = 1`, with
 //! point set `e0 + n·x = 0`; a cycle `(m; r)` has signed radius `r`. Oriented contact is
@@ -22,6 +25,7 @@
 //! [`crate::pn::PnSurface::laguerre_image`].
 
 pub mod models;
+pub mod query;
 pub mod transform;
 
 pub use models::{lorentz_product, Cycle, IsotropicSphere, OrientedPlane};

@@ -27,7 +27,10 @@
 //!   stereographic projection onto it, and the degenerate quadrics (cones, cylinders)
 //!   through a parabolic congruence;
 //! * [`rational_points`]: exact decision whether a quadric has a rational point
-//!   (Hasse–Minkowski), and a search for one.
+//!   (Hasse–Minkowski), and a search for one;
+//! * [`query`]: questions answered exactly — the fibre and stereographic inverse at a
+//!   point, the preimage quadric of a plane section, images under a collineation, the
+//!   Miquel points of a biquadratic patch, ψ interpolation of any degree on `H`.
 //!
 //! Every map implements [`GeneralizedProjection`]; the constructions are generic over it
 //! and over the scalar ([`Scalar`]: exact [`rcagd_algebra::Rational`] or `f64`).
@@ -39,6 +42,7 @@ pub mod image;
 pub mod interpolation;
 pub mod paraboloid;
 pub mod quadratic_map;
+pub mod query;
 pub mod rational_points;
 pub mod sphere_patch;
 pub mod stereographic;

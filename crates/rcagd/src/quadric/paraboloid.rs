@@ -167,7 +167,7 @@ pub fn psi_focal_lines<F: Scalar>() -> [[Hom<F>; 2]; 2] {
 
 /// The Segre factors `u = (q0, q1)`, `v = (q3, q2)` of a point `h ∈ H`: `h ∥ u⊗v`, i.e.
 /// `h = (u0v0, u1v0, u0v1, u1v1)` up to a factor.
-fn segre_factors<F: Scalar>(h: &Hom<F>) -> ([F; 2], [F; 2]) {
+pub(crate) fn segre_factors<F: Scalar>(h: &Hom<F>) -> ([F; 2], [F; 2]) {
     let pick = |a: [F; 2], b: [F; 2]| {
         let na = a[0].to_f64().abs() + a[1].to_f64().abs();
         let nb = b[0].to_f64().abs() + b[1].to_f64().abs();
