@@ -239,9 +239,20 @@ fn curve_e3(c: &BezierCurve<Rational>, what: &str) -> Result<BezierCurve<Rationa
     }
     let mut coords = pad3(c.coords(), c.dim());
     positive_weights(&mut coords).map_err(|m| IoError::Invalid(format!("{what}: {m}")))?;
-    Ok(crate::balance::balance_curve(&BezierCurve::from_flat(
-        3, coords,
-    )?))
+    let b = crate::balance::balance_curve(&BezierCurve::from_flat(3, coords)?);
+    Ok(BezierCurve::from_flat(3, unit_equal_weights(b.coords()))?)
+}
+
+/// The homogeneous coordinates divided by the common weight when every weight is the
+/// same `w ≠ 1` (the same points): such a piece is written in the polynomial form,
+/// whose implied weights are 1, so the sidecar must carry weight 1 too.
+fn unit_equal_weights(coords: &[Rational]) -> Vec<Rational> {
+    let w = coords.first().cloned().unwrap_or_else(|| Rational::from(1));
+    let one = Rational::from(1);
+    if w == one || w == Rational::from(0) || coords.iter().step_by(4).any(|x| *x != w) {
+        return coords.to_vec();
+    }
+    coords.iter().map(|x| x.clone() / w.clone()).collect()
 }
 
 /// The patch in E3 with positive weights.
@@ -255,9 +266,13 @@ fn patch_e3(p: &BezierPatch<Rational>, what: &str) -> Result<BezierPatch<Rationa
     }
     let mut coords = pad3(p.coords(), p.dim());
     positive_weights(&mut coords).map_err(|m| IoError::Invalid(format!("{what}: {m}")))?;
-    Ok(crate::balance::balance_patch(&BezierPatch::from_flat(
-        3, m, n, coords,
-    )?))
+    let b = crate::balance::balance_patch(&BezierPatch::from_flat(3, m, n, coords)?);
+    Ok(BezierPatch::from_flat(
+        3,
+        m,
+        n,
+        unit_equal_weights(b.coords()),
+    )?)
 }
 
 /// A patch embedded in E3 (zero-padded from E1/E2) with positive weights (all-negative

@@ -5,7 +5,7 @@
 //! to `DIR` (for `scripts/occ_check.sh DIR`, the OpenCascade check).
 
 use rcagd_algebra::{Rational, Scalar};
-use rcagd_geom::BezierPatch;
+use rcagd_geom::{BezierCurve, BezierPatch};
 use rcagd_io::model::{Geometry, Object};
 use rcagd_io::IoError;
 use serde_json::Value;
@@ -729,4 +729,30 @@ fn collapsed_sides_are_degenerate_edges_with_parameter_lines() {
     assert_eq!(loop_sizes(&text), vec![4]);
     let back = read_step(&text).expect("reads back");
     assert_eq!(back[0].surfaces.len(), 1);
+}
+
+/// A piece whose weights are all equal but not 1 is written in the polynomial form; the
+/// sidecar carries weight 1 too, so the exact round trip works (a defect before: the
+/// sidecar kept the weight 3 and `apply_sidecar` refused the file's numbers).
+#[test]
+fn equal_weights_other_than_one_round_trip() {
+    use rcagd_io::step_read::{apply_sidecar, read_step};
+    let three = int(3);
+    let h = |x: i64, y: i64, z: i64| vec![three.clone(), int(3 * x), int(3 * y), int(3 * z)];
+    let patch = BezierPatch::from_homogeneous(vec![
+        vec![h(0, 0, 0), h(1, 0, 0)],
+        vec![h(0, 1, 0), h(1, 1, 1)],
+    ])
+    .expect("bilinear");
+    let curve =
+        BezierCurve::from_homogeneous(vec![h(0, 0, 0), h(1, 2, 0), h(2, 0, 1)]).expect("curve");
+    let objects = vec![
+        object("bilinear", Geometry::Patch(patch)),
+        object("parabola", Geometry::Curve(curve)),
+    ];
+    let side = rcagd_io::step::exact_sidecar(&objects).expect("sidecar");
+    let mut read = read_step(&step_text(&objects)).expect("reads");
+    apply_sidecar(&mut read, &side).expect("the sidecar matches the file");
+    let mut read = rcagd_io::iges_read::read_iges(&iges_text(&objects)).expect("reads");
+    apply_sidecar(&mut read, &side).expect("the sidecar matches the IGES file");
 }
