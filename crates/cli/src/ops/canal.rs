@@ -15,7 +15,7 @@ use num_traits::{One, Zero};
 use rcagd::canal::bipoly::{patch_of, BiPoly};
 use rcagd::canal::blend::PlaneEnd;
 use rcagd::canal::{
-    blend_sphere_plane, blend_spheres, canal_surface_pole_free, canal_surface_rational, pipe_along_chain,
+    blend_sphere_plane, blend_spheres, canal_surface_rational, pipe_along_chain,
     pipe_around_ph_exportable, pipe_exportable, BlendEnd, BlendSpine, CanalBuild, CanalError, CanalOptions, CanalSpine,
     CanalSurface, Method, Orientation, RationalCanal,
 };
