@@ -5,6 +5,7 @@ mod canal_props;
 mod cyclide;
 mod laguerre_props;
 mod lines_props;
+mod ndim;
 mod ph_planar;
 mod ph_preimage;
 mod ph_props;

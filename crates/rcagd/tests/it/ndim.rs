@@ -1,0 +1,362 @@
+//! The n-dimensional chapter (Peternell ch. 5): PN hypersurfaces of Rⁿ from the dual form
+//! with exact offsets, ruled (k+1)-manifolds with their structure and offsets; the §5.5
+//! examples of 2-manifolds in R⁴, property tests with random exact input, named errors.
+
+use proptest::prelude::*;
+use rcagd::ndim::ruled::RuledKind;
+use rcagd::ndim::{NdimError, PnHypersurface, RuledManifold};
+use rcagd::pn::{Domain, RatFn};
+use rcagd::Certified;
+use rcagd_algebra::mpoly::MPoly;
+use rcagd_algebra::{Certificate, Rational, Scalar};
+
+type Q = Rational;
+
+fn q(p: i64, d: i64) -> Q {
+    Q::from_ratio(p, d)
+}
+
+fn var(n: usize, i: usize) -> MPoly<Q> {
+    MPoly::var(n, i)
+}
+
+fn cst(n: usize, c: i64) -> MPoly<Q> {
+    MPoly::constant(n, q(c, 1))
+}
+
+/// A polynomial in `t` from its power coefficients.
+fn tp(c: &[i64]) -> MPoly<Q> {
+    c.iter().enumerate().fold(MPoly::zero(1), |acc, (i, &x)| {
+        &acc + &MPoly::monomial(1, &[i as u32], q(x, 1))
+    })
+}
+
+fn exact_hold(certs: &[Certificate]) -> bool {
+    !certs.is_empty() && certs.iter().all(|c| c.holds && c.exact)
+}
+
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-7 * (1.0 + a.abs().max(b.abs()))
+}
+
+fn to_f64(p: &MPoly<Q>) -> MPoly<f64> {
+    p.map(Scalar::to_f64)
+}
+
+// ---------------------------------------------------------------------------------
+// PN hypersurfaces (§5.2)
+// ---------------------------------------------------------------------------------
+
+/// The dual form (5.3) with a = (u₁, u₂, u₃), c = 1, g = −r(|a|² + c²), f = 1 is the
+/// hypersphere |x| = r of R⁴ with x = r·n; its offset at d is the sphere of radius r + d.
+#[test]
+fn hypersphere_of_r4_from_the_dual_form_with_offsets() {
+    let a = [var(3, 0), var(3, 1), var(3, 2)];
+    let s = &(&(&(&a[0] * &a[0]) + &(&a[1] * &a[1])) + &(&a[2] * &a[2])) + &cst(3, 1);
+    let r = q(3, 2);
+    let g = s.scale(&-r.clone());
+    let h = PnHypersurface::from_dual(&a, &cst(3, 1), &g, &cst(3, 1)).expect("sphere");
+    assert_eq!(h.dim(), 4);
+    assert!(exact_hold(&h.certify()));
+    let u = [q(1, 2), q(-1, 3), q(2, 1)];
+    let x = h.eval_point(&u).expect("point");
+    let n = h.eval_normal(&u).expect("normal");
+    for i in 0..4 {
+        assert_eq!(x[i], r.clone() * n[i].clone());
+    }
+    let d = q(1, 4);
+    let off = h.offset(&d).expect("offset");
+    assert!(exact_hold(&off.certify()));
+    let xd = off.surface().eval_point(&u).expect("offset point");
+    let norm2: Q = xd
+        .iter()
+        .fold(q(0, 1), |acc, v| acc + v.clone() * v.clone());
+    assert_eq!(norm2, (r.clone() + d.clone()) * (r + d));
+}
+
+/// A general PN hypersurface of R⁴ from the support-function form (5.4): certificates,
+/// exact offsets at two distances, and the point solves e, e_u₁, e_u₂, e_u₃ at a sample.
+#[test]
+fn support_function_form_in_r4() {
+    let (u1, u2, u3) = (var(3, 0), var(3, 1), var(3, 2));
+    let a = [u1.clone(), u2.clone(), &u3 + &cst(3, 1)];
+    let c = &cst(3, 2) + &u1;
+    // h = 1 + u₁u₂ − u₃²/2
+    let hnum = &(&cst(3, 1) + &(&u1 * &u2)) - &(&u3 * &u3).scale(&q(1, 2));
+    let h = RatFn::new(hnum, cst(3, 1)).expect("h");
+    let surf = PnHypersurface::from_support(&a, &c, &h).expect("PN hypersurface");
+    assert!(exact_hold(&surf.certify()));
+    for d in [q(1, 2), q(-3, 7)] {
+        assert!(exact_hold(&surf.offset(&d).expect("offset").certify()));
+    }
+    // the support function is h + n·x = 0 at a sample point
+    let u = [q(1, 3), q(2, 5), q(-1, 2)];
+    let x = surf.eval_point(&u).expect("point");
+    let n = surf.eval_normal(&u).expect("normal");
+    let hv = surf.support().eval(&u).expect("h");
+    let nx: Q = x
+        .iter()
+        .zip(&n)
+        .fold(q(0, 1), |acc, (a, b)| acc + a.clone() * b.clone());
+    assert_eq!(hv + nx, q(0, 1));
+}
+
+/// The isotropic model route (3.13) in R⁴ and a slice projected to R³ as a patch.
+#[test]
+fn isotropic_hypersurface_and_its_projected_slice() {
+    let (u1, u2, u3) = (var(3, 0), var(3, 1), var(3, 2));
+    // y₄ = u₁² + u₂u₃ − u₃²/3 over the parameter space (y₁, y₂, y₃) = (u₁, u₂, u₃)
+    let y4 = &(&(&u1 * &u1) + &(&u2 * &u3)) - &(&u3 * &u3).scale(&q(1, 3));
+    let s = PnHypersurface::from_isotropic(&[u1, u2, u3, y4], &cst(3, 1)).expect("iso");
+    assert!(exact_hold(&s.certify()));
+    let dom = Domain::new(q(0, 1), q(1, 2), q(0, 1), q(1, 2)).expect("domain");
+    let patch = s
+        .projected_slice([0, 1], &[q(0, 1), q(0, 1), q(1, 3)], [1, 2, 4], &dom)
+        .expect("patch");
+    // patch(σ, τ) = projection of x(σ/2, τ/2, 1/3)
+    let p = patch.eval(&q(1, 2), &q(1, 3)).expect("eval");
+    let x = s.eval_point(&[q(1, 4), q(1, 6), q(1, 3)]).expect("x");
+    assert_eq!(p, vec![x[0].clone(), x[1].clone(), x[3].clone()]);
+    assert!(matches!(
+        s.projected_slice([0, 0], &vec![q(0, 1); 3], [1, 2, 3], &dom),
+        Err(NdimError::InvalidInput(_))
+    ));
+    assert!(matches!(
+        s.projected_slice([0, 1], &vec![q(0, 1); 3], [1, 2, 5], &dom),
+        Err(NdimError::InvalidInput(_))
+    ));
+}
+
+#[test]
+fn hypersurface_errors_are_named() {
+    let (u1, u2) = (var(2, 0), var(2, 1));
+    // not Pythagorean
+    let bad = PnHypersurface::from_plane_field(
+        vec![cst(2, 1), u1.clone(), u2.clone(), cst(2, 1)],
+        cst(2, 1),
+    );
+    assert!(matches!(bad, Err(NdimError::NotUnitNormal(_))));
+    // a one-parameter family of normals (a = (u₁, u₁)): no envelope point
+    let dev = PnHypersurface::from_dual(&[u1.clone(), u1.clone()], &cst(2, 1), &u2, &cst(2, 1));
+    assert!(matches!(dev, Err(NdimError::Degenerate(_))));
+    // too many variables
+    let extra = PnHypersurface::from_dual(&[u1.clone(), var(3, 2)], &cst(2, 1), &u2, &cst(2, 1));
+    assert!(matches!(extra, Err(NdimError::InvalidInput(_))));
+    assert!(matches!(
+        PnHypersurface::from_dual(&[u1, u2.clone()], &MPoly::zero(2), &u2, &cst(2, 1)),
+        Err(NdimError::InvalidInput(_))
+    ));
+}
+
+fn small() -> impl Strategy<Value = i64> {
+    -4i64..=4
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// Random linear aᵢ, c and quadratic support functions in R⁴: the hypersurface and its
+    /// offset at a random distance are certified exactly, and f64 agrees with Q.
+    #[test]
+    fn random_pn_hypersurfaces_of_r4(
+        lin in prop::collection::vec(small(), 16),
+        hq in prop::collection::vec(small(), 10),
+        (dp, dq) in (-5i64..=5, 1i64..=4),
+        su in prop::collection::vec((-3i64..=3, 1i64..=3), 3),
+    ) {
+        let vars = [var(3, 0), var(3, 1), var(3, 2)];
+        let linear = |k: usize| -> MPoly<Q> {
+            (0..3).fold(cst(3, lin[4 * k + 3]), |acc, i| &acc + &vars[i].scale(&q(lin[4 * k + i], 1)))
+        };
+        let a = [linear(0), linear(1), linear(2)];
+        let c = &linear(3) + &cst(3, 7);
+        let mut hnum = cst(3, hq[9]);
+        let mut idx = 0;
+        for i in 0..3 {
+            hnum = &hnum + &vars[i].scale(&q(hq[idx], 1));
+            idx += 1;
+            for j in i..3 {
+                hnum = &hnum + &(&vars[i] * &vars[j]).scale(&q(hq[idx], 2));
+                idx += 1;
+            }
+        }
+        let h = RatFn::new(hnum, cst(3, 1)).expect("h");
+        let Ok(s) = PnHypersurface::from_support(&a, &c, &h) else {
+            // a degenerate normal map (rank < 3) is the only admissible failure
+            let n = [a[0].clone(), a[1].clone(), a[2].clone()];
+            prop_assume!(false, "degenerate normal map {:?}", n.len());
+            unreachable!()
+        };
+        prop_assert!(exact_hold(&s.certify()));
+        let d = q(dp, dq);
+        let off = s.offset(&d).expect("offset of a PN hypersurface");
+        prop_assert!(exact_hold(&off.certify()));
+        // f64 path
+        let af: Vec<MPoly<f64>> = a.iter().map(to_f64).collect();
+        let hf = RatFn::new(to_f64(&h.num), to_f64(&h.den)).expect("h");
+        let sf = PnHypersurface::from_support(&af, &to_f64(&c), &hf).expect("f64 path");
+        let fc = sf.certify();
+        prop_assert!(fc.iter().all(|c| c.holds && !c.exact), "{:?}", fc.iter().find(|c| !c.holds));
+        let u: Vec<Q> = su.iter().map(|&(p, d)| q(p, d)).collect();
+        let uf: Vec<f64> = u.iter().map(Scalar::to_f64).collect();
+        if let (Some(x), Some(xf)) = (s.eval_point(&u), sf.eval_point(&uf)) {
+            for (a, b) in x.iter().zip(&xf) {
+                prop_assert!(close(Scalar::to_f64(a), *b), "{} vs {}", Scalar::to_f64(a), b);
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------
+// Ruled (k+1)-manifolds (§5.4, §5.5)
+// ---------------------------------------------------------------------------------
+
+/// §5.5, first example: the developable 2-manifold p = c + u ċ in R⁴ of the inflection-free
+/// curve c = (t, t², t³, t⁴): Case 1 with m = 1 (the edge of regression c is the singular
+/// set, u* = 0), the normal space N(t) is 2-dimensional and constant along the rulings;
+/// the unit normal comes from a conic point of (5.28), the offset from (5.26).
+#[test]
+fn developable_two_manifold_in_r4() {
+    let c = vec![
+        tp(&[0, 1]),
+        tp(&[0, 0, 1]),
+        tp(&[0, 0, 0, 1]),
+        tp(&[0, 0, 0, 0, 1]),
+    ];
+    let cd: Vec<MPoly<Q>> = c.iter().map(|x| x.partial(0)).collect();
+    let m = RuledManifold::new(c, tp(&[1]), vec![cd]).expect("manifold");
+    let st = m.structure().expect("structure");
+    assert_eq!(
+        (st.m, st.dim_a, st.dim_t, st.kind),
+        (1, 2, 2, RuledKind::Singular)
+    );
+    assert!(
+        st.params[0].num.is_zero(),
+        "the singular point is the curve point (u* = 0)"
+    );
+    assert!(st.directions.is_empty());
+    assert!(exact_hold(st.certificates()));
+    let off = m.offset(q(1, 2)).expect("offset");
+    assert!(exact_hold(&off.certify()));
+    // no reparametrization of the rulings was needed (the normal is constant along them)
+    assert_eq!(off.reparametrization()[0].num, var(3, 1));
+}
+
+/// §5.5, second example: the non-developable 2-manifold p = c + u g in R⁴ (ċ, g, ġ
+/// independent): Case 2 with m = 1, the central (striction) curve, and the unit normal on
+/// a reparametrized ruling (Step 2, stereographic projection of (5.25)).
+#[test]
+fn non_developable_two_manifold_in_r4() {
+    let c = vec![tp(&[0, 1]), tp(&[0, 0, 1]), tp(&[0]), tp(&[0])];
+    let g = vec![tp(&[0]), tp(&[0]), tp(&[1]), tp(&[0, 1])];
+    let m = RuledManifold::new(c, tp(&[1]), vec![g]).expect("manifold");
+    let st = m.structure().expect("structure");
+    assert_eq!(
+        (st.m, st.dim_a, st.dim_t, st.kind),
+        (1, 2, 3, RuledKind::Central)
+    );
+    assert!(exact_hold(st.certificates()));
+    let off = m.offset(q(1, 3)).expect("offset");
+    assert!(exact_hold(&off.certify()));
+}
+
+/// A ruled 3-manifold (k = 2) in R⁵ and one in R⁴: offsets for k = 2 with certificates.
+#[test]
+fn ruled_three_manifolds_offsets() {
+    // R⁴: l = (t, 0, 0, t²), g₁ = (0, 1, 0, t), g₂ = (0, 0, 1, t²)
+    let l = vec![tp(&[0, 1]), tp(&[0]), tp(&[0]), tp(&[0, 0, 1])];
+    let g1 = vec![tp(&[0]), tp(&[1]), tp(&[0]), tp(&[0, 1])];
+    let g2 = vec![tp(&[0]), tp(&[0]), tp(&[1]), tp(&[0, 0, 1])];
+    let m = RuledManifold::new(l, tp(&[1]), vec![g1, g2]).expect("manifold");
+    let st = m.structure().expect("structure");
+    assert!(exact_hold(st.certificates()));
+    let off = m.offset(q(1, 2)).expect("offset in R⁴");
+    assert!(exact_hold(&off.certify()));
+    // R⁵: l = (0, 0, 0, t², t), g₁ = (1, t, 0, 0, 0), g₂ = (0, 0, 1, t, 0): m = 2, Case 2
+    let l = vec![tp(&[0]), tp(&[0]), tp(&[0]), tp(&[0, 0, 1]), tp(&[0, 1])];
+    let g1 = vec![tp(&[1]), tp(&[0, 1]), tp(&[0]), tp(&[0]), tp(&[0])];
+    let g2 = vec![tp(&[0]), tp(&[0]), tp(&[1]), tp(&[0, 1]), tp(&[0])];
+    let m = RuledManifold::new(l, tp(&[1]), vec![g1, g2]).expect("manifold");
+    let st = m.structure().expect("structure");
+    assert_eq!((st.m, st.kind), (2, RuledKind::Central));
+    assert!(exact_hold(st.certificates()));
+    let off = m.offset(q(1, 2)).expect("offset in R⁵");
+    assert!(exact_hold(&off.certify()));
+}
+
+#[test]
+fn ruled_errors_are_named() {
+    // developable surface of R³ (dim N = 1, normal constant along rulings): not rational
+    let c = vec![tp(&[0, 1]), tp(&[0, 0, 1]), tp(&[0, 0, 0, 1])];
+    let cd: Vec<MPoly<Q>> = c.iter().map(|x| x.partial(0)).collect();
+    let m = RuledManifold::new(c, tp(&[1]), vec![cd]).expect("manifold");
+    assert!(matches!(m.offset(q(1, 1)), Err(NdimError::NotRational(_))));
+    // cylinder over a parabola in R³ (Case 2, m = 0): |N|² = 4t² + 1, not rational
+    let l = vec![tp(&[0, 1]), tp(&[0, 0, 1]), tp(&[0])];
+    let cyl = RuledManifold::new(l, tp(&[1]), vec![vec![tp(&[0]), tp(&[0]), tp(&[1])]])
+        .expect("cylinder");
+    let st = cyl.structure().expect("structure");
+    assert_eq!((st.m, st.kind), (0, RuledKind::Central));
+    assert!(matches!(
+        cyl.offset(q(1, 1)),
+        Err(NdimError::NotRational(_))
+    ));
+    // a fixed plane (every point singular)
+    let l = vec![tp(&[0]), tp(&[0]), tp(&[0]), tp(&[0])];
+    let plane = RuledManifold::new(
+        l,
+        tp(&[1]),
+        vec![vec![tp(&[1]), tp(&[0]), tp(&[0]), tp(&[0])]],
+    )
+    .expect("line");
+    assert!(matches!(plane.structure(), Err(NdimError::Degenerate(_))));
+    // k too large, dependent generators
+    let l = vec![tp(&[0]); 3];
+    assert!(matches!(
+        RuledManifold::new(
+            l.clone(),
+            tp(&[1]),
+            vec![vec![tp(&[1]), tp(&[0]), tp(&[0])]; 2]
+        ),
+        Err(NdimError::InvalidInput(_))
+    ));
+    let l4 = vec![tp(&[0]); 4];
+    assert!(matches!(
+        RuledManifold::new(
+            l4,
+            tp(&[1]),
+            vec![vec![tp(&[1]), tp(&[0]), tp(&[0]), tp(&[0])]; 2]
+        ),
+        Err(NdimError::InvalidInput(_))
+    ));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// Random ruled 2-manifolds l + u g in R⁴ with quadratic l and linear g: the structure
+    /// and, where a rational unit normal exists over Q, the offset are certified exactly.
+    #[test]
+    fn random_ruled_two_manifolds_of_r4(
+        lc in prop::collection::vec(small(), 12),
+        gc in prop::collection::vec(small(), 8),
+        (dp, dq) in (1i64..=5, 1i64..=4),
+    ) {
+        let l: Vec<MPoly<Q>> = (0..4).map(|i| tp(&lc[3 * i..3 * i + 3])).collect();
+        let g: Vec<MPoly<Q>> = (0..4).map(|i| tp(&gc[2 * i..2 * i + 2])).collect();
+        let Ok(m) = RuledManifold::new(l, tp(&[1]), vec![g]) else {
+            prop_assume!(false);
+            unreachable!()
+        };
+        match m.structure() {
+            Ok(st) => prop_assert!(exact_hold(st.certificates())),
+            Err(NdimError::Degenerate(_)) => {}
+            Err(e) => prop_assert!(false, "{e}"),
+        }
+        match m.offset(q(dp, dq)) {
+            Ok(off) => prop_assert!(exact_hold(&off.certify())),
+            Err(NdimError::NoRationalPoint(_) | NdimError::Degenerate(_) | NdimError::NotRational(_)) => {}
+            Err(e) => prop_assert!(false, "{e}"),
+        }
+    }
+}
