@@ -67,6 +67,10 @@ pub const RECIPES: &[(&str, &str)] = &[
         "examples/recipes/analysis.toml",
         include_str!("../../../examples/recipes/analysis.toml"),
     ),
+    (
+        "examples/recipes/n_dimensional.toml",
+        include_str!("../../../examples/recipes/n_dimensional.toml"),
+    ),
 ];
 
 /// The formats written per gallery object.

@@ -20,6 +20,7 @@ pub mod iges;
 pub mod iges_read;
 pub mod json;
 pub mod model;
+pub mod ndim;
 pub mod obj;
 pub mod ply;
 pub mod png;

@@ -34,7 +34,8 @@ topics!(
     pn,
     sphere_family,
     conic_surface,
-    analysis
+    analysis,
+    ndim
 );
 
 pub mod describe;

@@ -7,5 +7,6 @@ mod common;
 mod docs;
 mod exchange_weights;
 mod fuzz;
+mod ndim;
 mod pipes;
 mod quadric_ops;

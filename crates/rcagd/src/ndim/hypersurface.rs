@@ -254,7 +254,8 @@ impl<F: Scalar> PnHypersurface<F> {
     ///
     /// # Errors
     /// [`NdimError::InvalidInput`] for out-of-range indices or a `fixed` of the wrong
-    /// length; a failure of the patch conversion.
+    /// length; [`NdimError::Degenerate`] if `X₀` vanishes on the domain (decided exactly by
+    /// Bernstein signs); a failure of the patch conversion.
     pub fn projected_slice(
         &self,
         free: [usize; 2],
@@ -307,6 +308,17 @@ pub(crate) fn slice_patch<F: Scalar>(
         .collect();
     let pick = |i: usize| relabel(&compose(&point[i], &subs), &[0, 1], 2);
     let map = [pick(0), pick(coords[0]), pick(coords[1]), pick(coords[2])];
+    match crate::pn::poly::sign_on_domain(&map[0], domain, 256) {
+        crate::pn::poly::Sign::Positive | crate::pn::poly::Sign::Negative => {}
+        crate::pn::poly::Sign::ZeroAt(p)
+        | crate::pn::poly::Sign::Changes(p, _)
+        | crate::pn::poly::Sign::Undecided(p) => {
+            return Err(NdimError::Degenerate(format!(
+                "the slice reaches infinity (X₀ = 0 or undecided) near (s, t) = {} of the domain",
+                crate::error::format_point(&p)
+            )))
+        }
+    }
     Ok(patch_of(&map, domain)?)
 }
 
