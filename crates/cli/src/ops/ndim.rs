@@ -12,7 +12,7 @@ use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
 use rcagd::ndim::ruled::RuledKind;
-use rcagd::ndim::{NdimError, PnHypersurface, RuledManifold};
+use rcagd::ndim::{HyperconeEnvelope, NdimError, PnHypersurface, RuledManifold};
 use rcagd::pn::{Domain, RatFn};
 use rcagd::Certified;
 use rcagd_algebra::mpoly::MPoly;
@@ -24,7 +24,7 @@ use rcagd_io::quantity::{NamedQuantity, Quantity};
 type Q = Rational;
 
 /// The ops of this topic.
-pub const OPS: &[OpSpec] = &[PN_HYPERSURFACE, RULED_OFFSET];
+pub const OPS: &[OpSpec] = &[PN_HYPERSURFACE, HYPERCONE_ENVELOPE, RULED_OFFSET];
 
 const SLICE: ParamSpec = ParamSpec::optional(
     "slice",
@@ -203,8 +203,19 @@ fn build_hypersurface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         None => MPoly::constant(p, Q::ONE),
     };
     let surface = PnHypersurface::from_support(&a, &c, &h).map_err(blame("support"))?;
-    let (free, fixed, proj, dom) = picture(args, p, n)?;
     let names: Vec<String> = (1..=p).map(|i| format!("u{i}")).collect();
+    hypersurface_objects(args, &surface, surface.certify(), names)
+}
+
+/// The object of a PN hypersurface (its picture and exact map) and one per offset distance.
+fn hypersurface_objects(
+    args: &OpArgs,
+    surface: &PnHypersurface<Q>,
+    certs: Vec<rcagd_algebra::Certificate>,
+    names: Vec<String>,
+) -> Result<Vec<Object>, OpError> {
+    let n = surface.dim();
+    let (free, fixed, proj, dom) = picture(args, n - 1, n)?;
     let object = |s: &PnHypersurface<Q>, certs, name: Option<String>| -> Result<Object, OpError> {
         let patch = s.projected_slice(free, &fixed, proj, &dom).map_err(blame("domain"))?;
         let mut o = args
@@ -215,7 +226,7 @@ fn build_hypersurface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         }
         Ok(o)
     };
-    let mut out = vec![object(&surface, surface.certify(), None)?];
+    let mut out = vec![object(surface, certs, None)?];
     for (k, d) in args.opt_numbers("distances")?.unwrap_or_default().iter().enumerate() {
         let off = surface.offset(d).map_err(blame("distances"))?;
         let mut o = object(off.surface(), off.certify(), Some(format!("{}_offset{}", args.name(), k + 1)))?;
@@ -225,6 +236,55 @@ fn build_hypersurface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         out.push(o);
     }
     Ok(out)
+}
+
+// ---------------------------------------------------------------------------------
+// envelopes of sphere-hypercones (Theorem 5.1)
+// ---------------------------------------------------------------------------------
+
+const HYPERCONE_ENVELOPE: OpSpec = OpSpec {
+    name: "hypercone_envelope",
+    summary: "the envelope of the sphere-hypercones spanned by two rational cycle families (m₁; r₁)(t), (m₂; r₂)(t) of Rⁿ (Peternell Theorem 5.1, (5.5)–(5.12)): a PN hypersurface in (t, u₁, …, uₙ₋₂) with exact offsets; exported exactly and as a projected 3-D slice",
+    params: &[
+        ParamSpec::required("center1", ParamKind::Grid, "n rows: power coefficients in t of the centres m₁(t)"),
+        ParamSpec::required("radius1", ParamKind::Numbers, "power coefficients in t of the signed radius r₁(t)"),
+        ParamSpec::required("center2", ParamKind::Grid, "n rows: power coefficients in t of m₂(t)"),
+        ParamSpec::required("radius2", ParamKind::Numbers, "power coefficients in t of r₂(t)"),
+        ParamSpec::optional(
+            "distances",
+            ParamKind::Numbers,
+            "oriented offset distances d (x + d n); one extra object `<name>_offset<k>` per distance",
+        ),
+        SLICE,
+        FREE,
+        PROJECT,
+        DOMAIN,
+    ],
+    example: r#"[[object]]
+name = "hypercone_envelope_r4"
+op = "hypercone_envelope"
+# point cycles on the line (t, 0, 0, 0) and unit spheres about (0, t, 1, 0): |M|² − R² = 2t²
+center1 = [[0, 1], [0, 0], [0, 0], [0, 0]]
+radius1 = [0]
+center2 = [[0, 0], [0, 1], [1, 0], [0, 0]]
+radius2 = [1]
+slice = [0, 0, "1/2"]
+project = [1, 2, 3]
+domain = ["1/4", "3/4", "1/4", "3/4"]
+"#,
+    build: build_hypercone,
+};
+
+fn build_hypercone(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let m1 = polys_t(&args.opt_grid("center1")?.unwrap_or_default());
+    let m2 = polys_t(&args.opt_grid("center2")?.unwrap_or_default());
+    let r1 = polys_t(&[args.opt_numbers("radius1")?.unwrap_or_default()]).remove(0);
+    let r2 = polys_t(&[args.opt_numbers("radius2")?.unwrap_or_default()]).remove(0);
+    let env = HyperconeEnvelope::new(m1, r1, m2, r2, None).map_err(blame("center2"))?;
+    let n = env.surface().dim();
+    let mut names = vec!["t".to_string()];
+    names.extend((1..n - 1).map(|j| format!("u{j}")));
+    hypersurface_objects(args, env.surface(), env.certify(), names)
 }
 
 // ---------------------------------------------------------------------------------

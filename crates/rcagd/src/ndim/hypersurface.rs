@@ -138,29 +138,76 @@ impl<F: Scalar> PnHypersurface<F> {
         )
     }
 
-    /// The hypersurface `Λ⁻¹(y)` of a rational hypersurface `y = (Y₁, …, Yₙ)/Q` of the
-    /// isotropic model `Iⁿ` (Peternell (3.13) in `n` dimensions): the hyperplane
+    /// The hypersurface `Λ⁻¹(y)` of a rational hypersurface `y = (Y₁/Q, …, Y_{n−1}/Q, Yₙ/Qₙ)`
+    /// of the isotropic model `Iⁿ` (Peternell (3.13) in `n` dimensions): the hyperplanes
     /// `(2yₙ, 2y₁, …, 2y_{n−1}, S − 1)/(S + 1)`, `S = y₁² + … + y_{n−1}²`, i.e.
-    /// `E = (2YₙQ, 2Y₁Q, …, 2Y_{n−1}Q, ΣY² − Q²)`, `L = ΣY² + Q²` (`Σ` over `i < n`).
+    /// `E = (2YₙQ², 2Y₁QQₙ, …, (ΣY² − Q²)Qₙ)`, `L = (ΣY² + Q²)Qₙ`. The point comes from the
+    /// closed formula of docs/math/n-dimensional.md#isotropic-points (an `(n−1)×(n−1)` solve
+    /// with the Jacobian of `(y₁, …, y_{n−1})`, cheaper than the general envelope).
     ///
     /// # Errors
-    /// As [`PnHypersurface::from_plane_field`]; [`NdimError::InvalidInput`] for `Q ≡ 0`.
-    pub fn from_isotropic(y: &[MPoly<F>], q: &MPoly<F>) -> Result<Self, NdimError> {
-        if q.is_zero() || y.len() < 2 {
+    /// [`NdimError::InvalidInput`] for `n < 2` or a zero denominator;
+    /// [`NdimError::Degenerate`] if `(y₁, …, y_{n−1})` is not a local coordinate system
+    /// (the Gauss image is not `(n−1)`-dimensional); [`NdimError::NotUnitNormal`] cannot
+    /// occur.
+    pub fn from_isotropic(y: &[MPoly<F>], q: &MPoly<F>, qn: &MPoly<F>) -> Result<Self, NdimError> {
+        if q.is_zero() || qn.is_zero() || y.len() < 2 {
             return Err(NdimError::InvalidInput(
-                "an isotropic hypersurface needs n ≥ 2 coordinates and a non-zero denominator"
+                "an isotropic hypersurface needs n ≥ 2 coordinates and non-zero denominators"
                     .into(),
             ));
         }
         let n = y.len();
+        let p = n - 1;
         let two = F::from_i64(2);
-        let s = dot(&y[..n - 1], &y[..n - 1]);
+        let yp = &y[..p];
+        let yn = &y[p];
+        let s = dot(yp, yp);
         let qq = q * q;
-        let mut plane = vec![(&y[n - 1] * q).scale(&two)];
-        plane.extend(y[..n - 1].iter().map(|yi| (yi * q).scale(&two)));
-        plane.push(&s - &qq);
-        Ok(Self::from_plane_field(plane, &s + &qq)?
-            .named(format!("PN hypersurface of R^{n} (isotropic model)")))
+        let sig = &s + &qq;
+        let mut plane = vec![(yn * &qq).scale(&two)];
+        plane.extend(yp.iter().map(|yi| (&(yi * q) * qn).scale(&two)));
+        plane.push(&(&s - &qq) * qn);
+        let norm = &sig * qn;
+        // J'[i][k] = ∂ᵢY_k Q − Y_k ∂ᵢQ, g_i = ∂ᵢYₙ Qₙ − Yₙ ∂ᵢQₙ
+        let jac: Vec<Vec<MPoly<F>>> = (0..p)
+            .map(|i| {
+                yp.iter()
+                    .map(|yk| clean(&(&(&yk.partial(i) * q) - &(yk * &q.partial(i)))))
+                    .collect()
+            })
+            .collect();
+        let g: Vec<MPoly<F>> = (0..p)
+            .map(|i| clean(&(&(&yn.partial(i) * qn) - &(yn * &qn.partial(i)))))
+            .collect();
+        let d = clean(&super::poly::det(&jac));
+        if d.is_zero() {
+            return Err(NdimError::Degenerate(
+                "the isotropic coordinates (y₁, …, yₙ₋₁) are not a local coordinate system: the Gauss image is lower-dimensional".into(),
+            ));
+        }
+        let dk: Vec<MPoly<F>> = (0..p)
+            .map(|k| {
+                let mut m = jac.clone();
+                for (i, row) in m.iter_mut().enumerate() {
+                    row[k] = -g[i].clone();
+                }
+                super::poly::det(&m)
+            })
+            .collect();
+        let a = &(&(yn * qn) * &d) + &(q * &dot(yp, &dk));
+        let mut point = vec![&(&(qn * qn) * &d) * &sig];
+        point.extend(
+            (0..p).map(|k| clean(&(&(&(&qq * &dk[k]) * &sig) - &(&(q * &yp[k]) * &a).scale(&two)))),
+        );
+        point.push(clean(&(&qq * &a).scale(&two)));
+        cancel_common(&mut point, &[q.clone(), qn.clone(), d.clone(), sig.clone()]);
+        Ok(PnHypersurface {
+            name: format!("PN hypersurface of R^{n} (isotropic model)"),
+            plane,
+            norm,
+            point,
+        })
     }
 
     /// The same hypersurface under another name.

@@ -5,6 +5,7 @@
 //! * [`hypersurface`]: PN hypersurfaces of `Rⁿ` from their tangent hyperplanes (§5.2, the
 //!   dual forms (5.3)/(5.4), the isotropic model), exact offsets `h ↦ h − d`, and their
 //!   3-dimensional pictures (a parameter slice projected onto three coordinates);
+//! * [`hypercone`]: envelopes of rational families of sphere-hypercones (Theorem 5.1);
 //! * [`ruled`]: ruled `(k+1)`-manifolds `x = l(t) + Σ uⱼ gⱼ(t)` (5.13) with the asymptotic
 //!   bundle `A(t)`, the space `T(t)`, the singular space (Lemma 5.1) or central space, and
 //!   their offset hypersurfaces for every `k` (Theorem 5.2, Steps 1–3), the rational unit
@@ -14,10 +15,12 @@
 //! Everything is generic over [`rcagd_algebra::Scalar`] and implements
 //! [`crate::Certified`] (exact polynomial identities over `Rational`).
 
+pub mod hypercone;
 pub mod hypersurface;
 pub(crate) mod poly;
 pub mod ruled;
 
+pub use hypercone::HyperconeEnvelope;
 pub use hypersurface::{PnHypersurface, PnHypersurfaceOffset};
 pub use ruled::{RuledKind, RuledManifold, RuledOffset};
 

@@ -107,7 +107,7 @@ fn isotropic_hypersurface_and_its_projected_slice() {
     let (u1, u2, u3) = (var(3, 0), var(3, 1), var(3, 2));
     // y₄ = u₁² + u₂u₃ − u₃²/3 over the parameter space (y₁, y₂, y₃) = (u₁, u₂, u₃)
     let y4 = &(&(&u1 * &u1) + &(&u2 * &u3)) - &(&u3 * &u3).scale(&q(1, 3));
-    let s = PnHypersurface::from_isotropic(&[u1, u2, u3, y4], &cst(3, 1)).expect("iso");
+    let s = PnHypersurface::from_isotropic(&[u1, u2, u3, y4], &cst(3, 1), &cst(3, 1)).expect("iso");
     assert!(exact_hold(&s.certify()));
     let dom = Domain::new(q(0, 1), q(1, 2), q(0, 1), q(1, 2)).expect("domain");
     let patch = s
@@ -356,6 +356,120 @@ proptest! {
         match m.offset(q(dp, dq)) {
             Ok(off) => prop_assert!(exact_hold(&off.certify())),
             Err(NdimError::NoRationalPoint(_) | NdimError::Degenerate(_) | NdimError::NotRational(_)) => {}
+            Err(e) => prop_assert!(false, "{e}"),
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------
+// Sphere-hypercones (§5.3, Theorem 5.1)
+// ---------------------------------------------------------------------------------
+
+use rcagd::ndim::HyperconeEnvelope;
+use rcagd::pn::ruled::{ConeFamilyEnvelope, CycleFamily};
+
+/// `p` as a polynomial in the two variables of the 3-D module (t = variable 0).
+fn two_var(p: &MPoly<Q>) -> MPoly<Q> {
+    &MPoly::zero(2) + p
+}
+
+/// For n = 3, Theorem 5.1 is Theorem 4.5: the same isotropic construction, so the same
+/// points at the same parameters as the library's cone-family envelope.
+#[test]
+fn hypercones_in_r3_agree_with_theorem_4_5() {
+    // m₁ − m₂ = (1, t, t + 1), r₁ − r₂ = t + 1: |M|² − R² = 1 + t²
+    let m1 = vec![tp(&[0, 1]), tp(&[1]), tp(&[0, 0, 1])];
+    let r1 = tp(&[1]);
+    let m2 = vec![tp(&[-1, 1]), tp(&[1, -1]), tp(&[-1, -1, 1])];
+    let r2 = tp(&[0, -1]);
+    let Ok(env) = HyperconeEnvelope::new(m1.clone(), r1.clone(), m2.clone(), r2.clone(), None)
+    else {
+        panic!("n = 3 envelope");
+    };
+    assert!(exact_hold(&env.certify()));
+    let fam = |m: &[MPoly<Q>], r: &MPoly<Q>| {
+        CycleFamily::new(
+            [two_var(&m[0]), two_var(&m[1]), two_var(&m[2])],
+            two_var(r),
+            MPoly::constant(2, q(1, 1)),
+        )
+        .expect("family")
+    };
+    let three = ConeFamilyEnvelope::new(fam(&m1, &r1), fam(&m2, &r2), Some(env.p().clone()))
+        .expect("Theorem 4.5");
+    let mut compared = 0;
+    let params = [(1, 2, 1, 3), (-2, 1, 3, 4), (5, 3, -1, 1), (1, 7, 2, 1)];
+    for (tp_, tq, up, uq) in params {
+        let (t, u) = (q(tp_, tq), q(up, uq));
+        let a = env.surface().eval_point(&[t.clone(), u.clone()]);
+        let b = three.surface().eval(&t, &u);
+        if let (Some(a), Ok(b)) = (a, b) {
+            assert_eq!(a, b.to_vec());
+            compared += 1;
+        }
+    }
+    assert!(compared >= 2, "compared {compared} points");
+}
+
+/// A family of hypercones of R⁴: point cycles on the line (t, 0, 0, 0) and spheres of
+/// radius 1 about (0, t, 1, 0); |M|² − R² = 2t² = t² + t².
+#[test]
+fn hypercone_envelope_in_r4_with_offsets() {
+    let m1 = vec![tp(&[0, 1]), tp(&[0]), tp(&[0]), tp(&[0])];
+    let m2 = vec![tp(&[0]), tp(&[0, 1]), tp(&[1]), tp(&[0])];
+    let env = HyperconeEnvelope::new(m1, tp(&[0]), m2, tp(&[1]), None).expect("envelope");
+    assert!(exact_hold(&env.certify()));
+    assert_eq!(env.surface().num_params(), 3);
+    let off = env.surface().offset(&q(1, 3)).expect("offset");
+    assert!(exact_hold(&off.certify()));
+}
+
+#[test]
+fn hypercone_errors_are_named() {
+    let z = || vec![tp(&[0]); 4];
+    // cycles in oriented contact for every t: |M|² ≡ R²
+    let m2 = vec![tp(&[1]), tp(&[0]), tp(&[0]), tp(&[0])];
+    assert!(matches!(
+        HyperconeEnvelope::new(z(), tp(&[0]), m2, tp(&[1]), None),
+        Err(NdimError::Degenerate(_))
+    ));
+    // β = R + Mₙ ≡ 0
+    let m2 = vec![tp(&[0, 1]), tp(&[0]), tp(&[0]), tp(&[1])];
+    assert!(matches!(
+        HyperconeEnvelope::new(z(), tp(&[0]), m2, tp(&[-1]), None),
+        Err(NdimError::InvalidInput(_))
+    ));
+    // |M|² − R² = 3 is not a sum of two rational squares
+    let m2 = vec![tp(&[1]), tp(&[1]), tp(&[1]), tp(&[0, 1])];
+    assert!(matches!(
+        HyperconeEnvelope::new(z(), tp(&[0]), m2, tp(&[0, 1]), None),
+        Err(NdimError::NoRationalPoint(_))
+    ));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// Random hypercone families of R⁴ with M = (a, b, 0, d), R = d (so |M|² − R² = a² + b²):
+    /// the envelope is certified exactly (PN identities and both contacts).
+    #[test]
+    fn random_hypercone_envelopes_of_r4(
+        m1c in prop::collection::vec(small(), 4),
+        (r0, r1c) in (small(), small()),
+        abd in prop::collection::vec(small(), 6),
+    ) {
+        let a = tp(&abd[0..2]);
+        let b = tp(&abd[2..4]);
+        let d = tp(&abd[4..6]);
+        prop_assume!(!d.is_zero() && (!a.is_zero() || !b.is_zero()));
+        // constant centres m₁, a linear radius r₁
+        let m1: Vec<MPoly<Q>> = (0..4).map(|i| tp(&m1c[i..=i])).collect();
+        let r1 = tp(&[r0, r1c]);
+        let m2 = vec![&m1[0] - &a, &m1[1] - &b, m1[2].clone(), &m1[3] - &d];
+        let r2 = &r1 - &d;
+        match HyperconeEnvelope::new(m1, r1, m2, r2, None) {
+            Ok(env) => prop_assert!(exact_hold(&env.certify())),
+            Err(NdimError::Degenerate(_)) => {}
             Err(e) => prop_assert!(false, "{e}"),
         }
     }
