@@ -210,6 +210,22 @@ impl<F: Scalar> PnHypersurface<F> {
         })
     }
 
+    /// A hypersurface from its parts, unchecked (the constructions that know their point map
+    /// in closed form; `certify` decides the identities).
+    pub(crate) fn from_parts(
+        name: String,
+        plane: Vec<MPoly<F>>,
+        norm: MPoly<F>,
+        point: Vec<MPoly<F>>,
+    ) -> Self {
+        PnHypersurface {
+            name,
+            plane,
+            norm,
+            point,
+        }
+    }
+
     /// The same hypersurface under another name.
     #[must_use]
     pub fn named(mut self, name: impl Into<String>) -> Self {
@@ -275,18 +291,29 @@ impl<F: Scalar> PnHypersurface<F> {
             .collect()
     }
 
-    /// The offset at oriented distance `d` (`x_d = x + d n`; hyperplanes `E₀ − dL`).
+    /// The offset at oriented distance `d`: the points `x_d = x + d n =
+    /// (X L + d X₀ E)/(X₀ L)` (the degree grows by `deg L` only) with the hyperplanes
+    /// `E₀ − dL` (`h ↦ h − d`); its certificates check that these points are the envelope of
+    /// those hyperplanes (`E_d·X̂_d ≡ 0`, `n ⟂ ∂ⱼx_d`) and `x_d − x ≡ d n`.
     ///
     /// # Errors
-    /// [`NdimError::Degenerate`] if the offset hyperplanes have no envelope point.
+    /// None at present (the `Result` is kept for degenerate offsets).
     pub fn offset(&self, d: &F) -> Result<PnHypersurfaceOffset<F>, NdimError> {
         let mut plane = self.plane.clone();
         plane[0] = &plane[0] - &self.norm.scale(d);
-        let surface = Self::from_plane_field(plane, self.norm.clone())?.named(format!(
-            "offset of {} at distance {}",
-            self.name,
-            format_scalar(d)
-        ));
+        let (x0, l) = (&self.point[0], &self.norm);
+        let mut point = vec![x0 * l];
+        point.extend(
+            (1..=self.dim())
+                .map(|i| clean(&(&(&self.point[i] * l) + &(x0 * &self.plane[i]).scale(d)))),
+        );
+        cancel_common(&mut point, std::slice::from_ref(l));
+        let surface = PnHypersurface {
+            name: format!("offset of {} at distance {}", self.name, format_scalar(d)),
+            plane,
+            norm: self.norm.clone(),
+            point,
+        };
         Ok(PnHypersurfaceOffset {
             base: self.clone(),
             surface,

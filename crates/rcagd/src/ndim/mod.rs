@@ -5,6 +5,8 @@
 //! * [`hypersurface`]: PN hypersurfaces of `Rⁿ` from their tangent hyperplanes (§5.2, the
 //!   dual forms (5.3)/(5.4), the isotropic model), exact offsets `h ↦ h − d`, and their
 //!   3-dimensional pictures (a parameter slice projected onto three coordinates);
+//! * [`anticaustic`]: anticaustics of mirror hypersurfaces and `k`-dimensional mirrors for
+//!   parallel light (§3.6, (3.18) corrected), and the converse of Theorem 4.1;
 //! * [`hypercone`]: envelopes of rational families of sphere-hypercones (Theorem 5.1);
 //! * [`ruled`]: ruled `(k+1)`-manifolds `x = l(t) + Σ uⱼ gⱼ(t)` (5.13) with the asymptotic
 //!   bundle `A(t)`, the space `T(t)`, the singular space (Lemma 5.1) or central space, and
@@ -15,11 +17,13 @@
 //! Everything is generic over [`rcagd_algebra::Scalar`] and implements
 //! [`crate::Certified`] (exact polynomial identities over `Rational`).
 
+pub mod anticaustic;
 pub mod hypercone;
 pub mod hypersurface;
 pub(crate) mod poly;
 pub mod ruled;
 
+pub use anticaustic::{mirror_of, Anticaustic};
 pub use hypercone::HyperconeEnvelope;
 pub use hypersurface::{PnHypersurface, PnHypersurfaceOffset};
 pub use ruled::{RuledKind, RuledManifold, RuledOffset};

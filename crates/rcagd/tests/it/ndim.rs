@@ -474,3 +474,134 @@ proptest! {
         }
     }
 }
+
+// ---------------------------------------------------------------------------------
+// Anticaustics (§3.6, (3.18) corrected; Theorem 4.1 and its converse)
+// ---------------------------------------------------------------------------------
+
+use rcagd::ndim::{mirror_of, Anticaustic};
+
+/// The parabola y = x² reflects the rays e₂ through its focus (0, 1/4): the anticaustics are
+/// the circles about the focus of radius c + 1/4 (the printed (3.18) would not give them).
+#[test]
+fn anticaustics_of_a_parabola_are_circles_about_the_focus() {
+    let t = MPoly::<Q>::var(1, 0);
+    let mirror = vec![cst(1, 1), t.clone(), &t * &t];
+    for c in [q(0, 1), q(3, 4), q(-1, 8)] {
+        let ac = Anticaustic::new(mirror.clone(), 1, c.clone()).expect("anticaustic");
+        assert!(exact_hold(&ac.certify()));
+        let r = c + q(1, 4);
+        for s in [q(0, 1), q(1, 2), q(-3, 1), q(7, 5)] {
+            let x = ac
+                .surface()
+                .eval_point(std::slice::from_ref(&s))
+                .expect("point");
+            let d2 =
+                x[0].clone() * x[0].clone() + (x[1].clone() - q(1, 4)) * (x[1].clone() - q(1, 4));
+            assert_eq!(d2, r.clone() * r.clone());
+        }
+    }
+}
+
+/// In R³ the construction agrees with the surface anticaustic of the PN module, and the
+/// anticaustic at c + d is its offset at d (∂q/∂c = r).
+#[test]
+fn anticaustic_in_r3_agrees_with_the_pn_module_and_offsets_by_c() {
+    let (u, v) = (var(2, 0), var(2, 1));
+    // mirror x₃ = u²/2 + u v − v²/3 + u
+    let f = &(&(&(&u * &u).scale(&q(1, 2)) + &(&u * &v)) - &(&v * &v).scale(&q(1, 3))) + &u;
+    let mirror = vec![cst(2, 1), u.clone(), v.clone(), f];
+    let c = q(1, 2);
+    let ac = Anticaustic::new(mirror.clone(), 2, c.clone()).expect("anticaustic");
+    assert!(exact_hold(&ac.certify()));
+    let arr: [MPoly<Q>; 4] = [
+        mirror[0].clone(),
+        mirror[1].clone(),
+        mirror[2].clone(),
+        mirror[3].clone(),
+    ];
+    let three = rcagd::pn::support::anticaustic(&arr, &c).expect("3-D anticaustic");
+    let d = q(2, 3);
+    let shifted = Anticaustic::new(mirror, 2, c + d.clone()).expect("shifted");
+    let off = ac.surface().offset(&d).expect("offset");
+    for (a, b) in [(q(1, 3), q(1, 2)), (q(-1, 1), q(2, 1))] {
+        let x = ac
+            .surface()
+            .eval_point(&[a.clone(), b.clone()])
+            .expect("point");
+        assert_eq!(x, three.eval(&a, &b).expect("point").to_vec());
+        assert_eq!(
+            shifted.surface().eval_point(&[a.clone(), b.clone()]),
+            off.surface().eval_point(&[a, b])
+        );
+    }
+}
+
+/// A curve mirror in R³ (k = 1): the anticaustic is a surface in (t, v) (a canal surface in
+/// line contact with the plane x₃ = c, Theorem 4.1); certified, and a mirror curve in R⁴.
+#[test]
+fn anticaustics_of_k_dimensional_mirrors() {
+    let t = MPoly::<Q>::var(1, 0);
+    let curve = vec![cst(1, 1), t.clone(), &t * &t, &(&t * &t) * &t];
+    let ac = Anticaustic::new(curve, 1, q(1, 1)).expect("curve mirror in R³");
+    assert!(exact_hold(&ac.certify()));
+    assert_eq!(ac.surface().num_params(), 2);
+    let curve4 = vec![cst(1, 1), t.clone(), &t * &t, cst(1, 1), &t + &cst(1, 2)];
+    let ac4 = Anticaustic::new(curve4, 1, q(0, 1)).expect("curve mirror in R⁴");
+    assert!(exact_hold(&ac4.certify()));
+    assert_eq!(ac4.surface().num_params(), 3);
+}
+
+/// The converse of Theorem 4.1: a PN hypersurface of R⁴ is the anticaustic of the mirror
+/// built from it (certified by recomputing the anticaustic from the mirror alone).
+#[test]
+fn pn_hypersurfaces_are_anticaustics_of_mirrors() {
+    let (u1, u2, u3) = (var(3, 0), var(3, 1), var(3, 2));
+    let a = [u1.clone(), u2.clone(), u3.clone()];
+    let h = RatFn::new(&cst(3, 2) + &(&u1 * &u2), cst(3, 1)).expect("h");
+    let s = PnHypersurface::from_support(&a, &cst(3, 1), &h).expect("PN");
+    let (ac, cert) = mirror_of(&s, &q(1, 3)).expect("mirror");
+    assert!(cert.holds && cert.exact, "{cert:?}");
+    assert!(exact_hold(&ac.certify()));
+}
+
+#[test]
+fn anticaustic_errors_are_named() {
+    let t = MPoly::<Q>::var(1, 0);
+    assert!(matches!(
+        Anticaustic::new(vec![cst(1, 1), t.clone(), t.clone()], 2, q(0, 1)),
+        Err(NdimError::InvalidInput(_))
+    ));
+    assert!(matches!(
+        Anticaustic::new(vec![cst(1, 1), cst(1, 2), cst(1, 3)], 1, q(0, 1)),
+        Err(NdimError::Degenerate(_))
+    ));
+    assert!(matches!(
+        Anticaustic::new(vec![MPoly::zero(1), t.clone(), t], 1, q(0, 1)),
+        Err(NdimError::InvalidInput(_))
+    ));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// Random quadratic graph mirrors in R⁴: the anticaustic is certified exactly (PN
+    /// identities, on the reflected rays).
+    #[test]
+    fn random_mirrors_in_r4(coeffs in prop::collection::vec(small(), 10), (cp, cq) in (-4i64..=4, 1i64..=3)) {
+        let vars = [var(3, 0), var(3, 1), var(3, 2)];
+        let mut f = cst(3, coeffs[9]);
+        let mut k = 0;
+        for i in 0..3 {
+            f = &f + &vars[i].scale(&q(coeffs[k], 1));
+            k += 1;
+            for j in i..3 {
+                f = &f + &(&vars[i] * &vars[j]).scale(&q(coeffs[k], 2));
+                k += 1;
+            }
+        }
+        let mirror = vec![cst(3, 1), vars[0].clone(), vars[1].clone(), vars[2].clone(), f];
+        let ac = Anticaustic::new(mirror, 3, q(cp, cq)).expect("graph mirrors are regular");
+        prop_assert!(exact_hold(&ac.certify()));
+    }
+}
