@@ -12,7 +12,7 @@ use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
 use rcagd::ndim::ruled::RuledKind;
-use rcagd::ndim::{HyperconeEnvelope, NdimError, PnHypersurface, RuledManifold};
+use rcagd::ndim::{Anticaustic, HyperconeEnvelope, NdimError, PnHypersurface, RuledManifold};
 use rcagd::pn::{Domain, RatFn};
 use rcagd::Certified;
 use rcagd_algebra::mpoly::MPoly;
@@ -24,7 +24,7 @@ use rcagd_io::quantity::{NamedQuantity, Quantity};
 type Q = Rational;
 
 /// The ops of this topic.
-pub const OPS: &[OpSpec] = &[PN_HYPERSURFACE, HYPERCONE_ENVELOPE, RULED_OFFSET];
+pub const OPS: &[OpSpec] = &[PN_HYPERSURFACE, HYPERCONE_ENVELOPE, ANTICAUSTIC_ND, RULED_OFFSET];
 
 const SLICE: ParamSpec = ParamSpec::optional(
     "slice",
@@ -285,6 +285,72 @@ fn build_hypercone(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let mut names = vec!["t".to_string()];
     names.extend((1..n - 1).map(|j| format!("u{j}")));
     hypersurface_objects(args, env.surface(), env.certify(), names)
+}
+
+// ---------------------------------------------------------------------------------
+// anticaustics (§3.6)
+// ---------------------------------------------------------------------------------
+
+const ANTICAUSTIC_ND: OpSpec = OpSpec {
+    name: "anticaustic_nd",
+    summary: "the anticaustic in Rⁿ of a rational mirror of dimension k ≤ n − 1 for light parallel to xₙ: q = (p₁, …, pₙ₋₁, c) + 2(pₙ − c) mₙ m/|m|² (Peternell (3.18), corrected), m running over the mirror's normals; a PN hypersurface with unit normal the reflected ray (Theorem 4.1), offsets by c ↦ c + d; exported exactly and as a projected 3-D slice",
+    params: &[
+        ParamSpec::required("dimension", ParamKind::Int, "the dimension n of the ambient space, 3 to 6"),
+        ParamSpec::required("mirror_dimension", ParamKind::Int, "the dimension k of the mirror, 1 to n − 1"),
+        ParamSpec::required(
+            "mirror",
+            ParamKind::Points,
+            "terms [i, c, e₁, …, e_k] of the mirror's homogeneous coordinates Pᵢ (i = 0 the weight, 1 … n the coordinates)",
+        ),
+        ParamSpec::with_default("c", ParamKind::Number, "0", "the height c of the wavefront plane xₙ = c"),
+        ParamSpec::optional(
+            "distances",
+            ParamKind::Numbers,
+            "oriented offset distances d (x + d n); one extra object `<name>_offset<k>` per distance",
+        ),
+        SLICE,
+        FREE,
+        PROJECT,
+        DOMAIN,
+    ],
+    example: r#"[[object]]
+name = "anticaustic_r4"
+op = "anticaustic_nd"
+dimension = 4
+mirror_dimension = 3
+# the mirror x₄ = (u₁² + u₂² − u₃²)/2 + u₁u₃
+mirror = [[0, 1, 0, 0, 0], [1, 1, 1, 0, 0], [2, 1, 0, 1, 0], [3, 1, 0, 0, 1], [4, "1/2", 2, 0, 0], [4, "1/2", 0, 2, 0], [4, "-1/2", 0, 0, 2], [4, 1, 1, 0, 1]]
+c = "1/2"
+slice = [0, 0, "1/4"]
+domain = [0, "1/2", 0, "1/2"]
+distances = ["1/4"]
+"#,
+    build: build_anticaustic,
+};
+
+fn build_anticaustic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let n = usize::try_from(args.int("dimension")?)
+        .ok()
+        .filter(|n| (3..=6).contains(n))
+        .ok_or_else(|| OpError::param("dimension", "n must be 3 to 6"))?;
+    let k = usize::try_from(args.int("mirror_dimension")?)
+        .ok()
+        .filter(|k| (1..n).contains(k))
+        .ok_or_else(|| OpError::param("mirror_dimension", format!("k must be 1 to {}", n - 1)))?;
+    let mut mirror = vec![MPoly::zero(k); n + 1];
+    for r in args.points("mirror")? {
+        let i = r
+            .first()
+            .and_then(|x| x.to_string().parse::<usize>().ok())
+            .filter(|&i| i <= n)
+            .ok_or_else(|| OpError::param("mirror", format!("the first entry of a term is the coordinate 0 … {n}")))?;
+        mirror[i] = &mirror[i] + &terms_poly(&[r[1..].to_vec()], k, "mirror")?;
+    }
+    let c = args.opt_number("c")?.unwrap_or(Q::ZERO);
+    let ac = Anticaustic::new(mirror, k, c).map_err(blame("mirror"))?;
+    let mut names: Vec<String> = (1..=k).map(|i| format!("u{i}")).collect();
+    names.extend((1..n - k).map(|j| format!("v{j}")));
+    hypersurface_objects(args, ac.surface(), ac.certify(), names)
 }
 
 // ---------------------------------------------------------------------------------

@@ -62,7 +62,7 @@ fn mirror_normal<F: Scalar>(t: &[Vec<MPoly<F>>], n: usize) -> Result<Vec<MPoly<F
             (!v.iter().all(MPoly::is_zero)).then_some(v)
         })
         .collect();
-    // keep n − k − 1 independent ones
+    // keep n − k independent ones (a basis of the normal space)
     let mut chosen: Vec<Vec<MPoly<F>>> = Vec::new();
     for b in basis {
         let mut rows = chosen.clone();
@@ -70,11 +70,11 @@ fn mirror_normal<F: Scalar>(t: &[Vec<MPoly<F>>], n: usize) -> Result<Vec<MPoly<F
         if super::poly::rank(&rows) == rows.len() {
             chosen.push(b);
         }
-        if chosen.len() == n - k - 1 {
+        if chosen.len() == n - k {
             break;
         }
     }
-    if chosen.len() < n - k - 1 {
+    if chosen.len() < n - k {
         return Err(NdimError::Degenerate(format!(
             "the mirror's tangent vectors do not span a {k}-dimensional space"
         )));
@@ -173,7 +173,8 @@ impl<F: Scalar> Anticaustic<F> {
             all,
             norm,
             point,
-        );
+        )
+        .ensure_hypersurface()?;
         Ok(Anticaustic {
             mirror,
             normal: m,

@@ -11,7 +11,9 @@
 //! envelope of `E₀ ↦ E₀ − d L` (`h ↦ h − d`; the printed `h + d` of (5.4) gives `x − d n`).
 //!
 //! Certificates (exact polynomial identities for `Rational`): `Σ Eᵢ² ≡ L²`, `E·X̂ ≡ 0` (the
-//! point on its hyperplane), `n ⟂ ∂_{u_j} x` for every `j`, and for offsets `x_d − x ≡ d n`.
+//! point on its hyperplane), `n ⟂ ∂_{u_j} x` for every `j`, and for offsets `x_d − x ≡ d n`;
+//! and that the point map has rank `n − 1` (exact rank of the tangent vectors at a sample
+//! parameter point, which bounds the generic rank from below).
 
 use super::poly::{clean, compose, cross, dot, dot_scale, mag, relabel};
 use super::NdimError;
@@ -40,7 +42,8 @@ impl<F: Scalar> PnHypersurface<F> {
     /// [`NdimError::InvalidInput`] for `n < 2`, `L ≡ 0` or a polynomial in more than `n − 1`
     /// variables; [`NdimError::NotUnitNormal`] unless `Σ Eᵢ² ≡ L²`; [`NdimError::Degenerate`]
     /// if the hyperplanes do not envelope a hypersurface (`X₀ ≡ 0`: the analogue of a
-    /// developable, §5.2).
+    /// developable, §5.2; or a point map of rank < n − 1, e.g. all hyperplanes through one
+    /// point).
     pub fn from_plane_field(plane: Vec<MPoly<F>>, norm: MPoly<F>) -> Result<Self, NdimError> {
         let n = plane.len().saturating_sub(1);
         if n < 2 {
@@ -82,12 +85,13 @@ impl<F: Scalar> PnHypersurface<F> {
             ));
         }
         cancel_common(&mut point, std::slice::from_ref(&norm));
-        Ok(PnHypersurface {
+        PnHypersurface {
             name: format!("PN hypersurface of R^{n}"),
             plane,
             norm,
             point,
-        })
+        }
+        .ensure_hypersurface()
     }
 
     /// The dual form (5.3): `E = (g, 2a₁cf, …, 2a_{n−1}cf, (a₁² + … + a_{n−1}² − c²) f)`,
@@ -202,12 +206,13 @@ impl<F: Scalar> PnHypersurface<F> {
         );
         point.push(clean(&(&qq * &a).scale(&two)));
         cancel_common(&mut point, &[q.clone(), qn.clone(), d.clone(), sig.clone()]);
-        Ok(PnHypersurface {
+        PnHypersurface {
             name: format!("PN hypersurface of R^{n} (isotropic model)"),
             plane,
             norm,
             point,
-        })
+        }
+        .ensure_hypersurface()
     }
 
     /// A hypersurface from its parts, unchecked (the constructions that know their point map
@@ -223,6 +228,21 @@ impl<F: Scalar> PnHypersurface<F> {
             plane,
             norm,
             point,
+        }
+    }
+
+    /// `Ok(self)` if the point map has rank `n − 1` ([`PnHypersurface::rank_certificate`]),
+    /// else [`NdimError::Degenerate`] (e.g. all hyperplanes through one point).
+    pub(crate) fn ensure_hypersurface(self) -> Result<Self, NdimError> {
+        let c = self.rank_certificate();
+        if c.holds {
+            Ok(self)
+        } else {
+            Err(NdimError::Degenerate(format!(
+                "the envelope is not a hypersurface: {} fails ({})",
+                c.property,
+                c.residual.unwrap_or_default()
+            )))
         }
     }
 
@@ -341,6 +361,86 @@ impl<F: Scalar> PnHypersurface<F> {
     }
 }
 
+impl<F: Scalar> PnHypersurface<F> {
+    /// The point map has rank `n − 1` (it is a hypersurface, not a lower-dimensional set):
+    /// the tangent vectors `X₀∂ⱼX − X∂ⱼX₀` evaluated exactly at a parameter point are
+    /// independent there (then they are independent generically). Up to eight sample points
+    /// are tried; the certificate names the one that proves it.
+    pub fn rank_certificate(&self) -> Certificate {
+        let (n, p) = (self.dim(), self.num_params());
+        let x = &self.point;
+        let tangents: Vec<Vec<MPoly<F>>> = (0..p)
+            .map(|j| {
+                (1..=n)
+                    .map(|i| &(&x[i].partial(j) * &x[0]) - &(&x[i] * &x[0].partial(j)))
+                    .collect()
+            })
+            .collect();
+        let property = format!("the point map has rank {p} (a hypersurface of R^{n})");
+        for s in 0..8i64 {
+            let u: Vec<F> = (0..p)
+                .map(|j| F::from_ratio(2 * s + 1 + j as i64 * (s + 3), 3 + s + 2 * j as i64))
+                .collect();
+            let Some(rows) = tangents
+                .iter()
+                .map(|t| t.iter().map(|c| eval(c, &u)).collect::<Option<Vec<F>>>())
+                .collect::<Option<Vec<Vec<F>>>>()
+            else {
+                continue;
+            };
+            if numeric_rank(rows) == p {
+                return Certificate::holds(
+                    format!("{property}, at u = {}", crate::error::format_point(&u)),
+                    F::EXACT,
+                );
+            }
+        }
+        Certificate::fails(
+            property,
+            "rank < n − 1 at eight sample parameter points",
+            F::EXACT,
+        )
+    }
+}
+
+/// The rank of a matrix of scalars (Gaussian elimination; `f64` pivots below `10⁻⁹` of the
+/// largest entry count as zero).
+fn numeric_rank<F: Scalar>(mut m: Vec<Vec<F>>) -> usize {
+    let big = m
+        .iter()
+        .flatten()
+        .map(|x| x.to_f64().abs())
+        .fold(0.0, f64::max);
+    let tiny = |x: &F| {
+        if F::EXACT {
+            x.is_zero()
+        } else {
+            x.to_f64().abs() <= 1e-9 * big
+        }
+    };
+    let cols = m.first().map_or(0, Vec::len);
+    let mut r = 0;
+    for c in 0..cols {
+        let Some(piv) = (r..m.len()).find(|&i| !tiny(&m[i][c])) else {
+            continue;
+        };
+        m.swap(r, piv);
+        let inv = match m[r][c].inv() {
+            Some(v) => v,
+            None => continue,
+        };
+        let pivot_row = m[r].clone();
+        for row in m.iter_mut().skip(r + 1) {
+            let f = row[c].clone() * inv.clone();
+            for (x, p) in row.iter_mut().zip(&pivot_row).skip(c) {
+                *x = x.clone() - p.clone() * f.clone();
+            }
+        }
+        r += 1;
+    }
+    r
+}
+
 /// The parameter slice and coordinate projection of a homogeneous point map as a patch
 /// (see [`PnHypersurface::projected_slice`]).
 pub(crate) fn slice_patch<F: Scalar>(
@@ -427,6 +527,7 @@ impl<F: Scalar> Certified for PnHypersurface<F> {
             &on,
             dot_scale(e, x),
         ));
+        out.push(self.rank_certificate());
         for j in 0..self.num_params() {
             let dx: Vec<MPoly<F>> = (1..=n)
                 .map(|i| &(&x[i].partial(j) * &x[0]) - &(&x[i] * &x[0].partial(j)))

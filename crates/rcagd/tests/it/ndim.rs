@@ -546,6 +546,15 @@ fn anticaustics_of_k_dimensional_mirrors() {
     let ac = Anticaustic::new(curve, 1, q(1, 1)).expect("curve mirror in R³");
     assert!(exact_hold(&ac.certify()));
     assert_eq!(ac.surface().num_params(), 2);
+    // the reflections of the foot point in all planes through a tangent line: a circle in v
+    let x = ac.surface().point_polys();
+    assert!(
+        x.iter().any(|c| c.degree_in(1).unwrap_or(0) > 0),
+        "{:?}",
+        x.iter()
+            .map(|c| (c.degree_in(0), c.degree_in(1), c.nvars()))
+            .collect::<Vec<_>>()
+    );
     let curve4 = vec![cst(1, 1), t.clone(), &t * &t, cst(1, 1), &t + &cst(1, 2)];
     let ac4 = Anticaustic::new(curve4, 1, q(0, 1)).expect("curve mirror in R⁴");
     assert!(exact_hold(&ac4.certify()));
