@@ -29,7 +29,7 @@
 //! in general irrational and the offset is not rational ([`NdimError::NotRational`]).
 //! Step 3 (5.26): `y = p + dM − 2d (M·c/(c·c)) c` with `c(v) = Σ vᵢzᵢ + z_last` in `N(p)`.
 
-use super::poly::{clean, cross, dot, dot_scale, only_var0, rank};
+use super::poly::{clean, cross, dot, dot_scale, mag, only_var0, rank};
 use super::NdimError;
 use crate::error::format_scalar;
 use crate::pn::poly::{univariate_sqrt, zero_cert};
@@ -416,11 +416,16 @@ impl<F: Scalar> RuledManifold<F> {
         for &i in &sel {
             // cᵢ·(l̇' + w² Σ u*ⱼ ġⱼ) with u*ⱼ = x/dm: dm·cᵢ·l̇' + w² Σ xⱼ cᵢ·ġⱼ
             let mut r = &dm * &dot(&c[i], &ld);
+            // f64 tolerance: the size of the terms before cancellation
+            let mut scale = mag(&dm) * dot_scale(&c[i], &ld);
             for (a, &j) in sel.iter().enumerate() {
                 r = &r + &(&(&x0[a] * &w2) * &dot(&c[i], &gd[j]));
+                scale += mag(&x0[a]) * mag(&w2) * dot_scale(&c[i], &gd[j]);
             }
+            let dscale = mag(&dm) * (0..k).map(|j| dot_scale(&c[i], &gd[j])).sum::<f64>();
             out_cert(
                 &mut certs,
+                scale,
                 &format!(
                     "{name} space (Lemma 5.1): p_t(s)·c{} ≡ 0 (p_t ∈ span(g) resp. span(a, g))",
                     i + 1
@@ -429,8 +434,10 @@ impl<F: Scalar> RuledManifold<F> {
             );
             for (dn, d) in directions.iter().enumerate() {
                 let r = rest_term(d, &c[i], &gd, &rest, &dm);
+                let dir_scale = dscale * d.iter().map(|x| mag(&x.num)).fold(1.0, f64::max);
                 out_cert(
                     &mut certs,
+                    dir_scale,
                     &format!(
                         "{name} space: direction {} stays in it ((Σ δⱼ ġⱼ)·c{} ≡ 0)",
                         dn + 1,
@@ -473,9 +480,8 @@ fn rest_term<F: Scalar>(
     r
 }
 
-fn out_cert<F: Scalar>(certs: &mut Vec<Certificate>, name: &str, r: &MPoly<F>) {
-    // structure certificates are decided exactly; for f64 relative to the residual's size
-    certs.push(zero_cert(name, r, 1e3 * super::poly::mag(r)));
+fn out_cert<F: Scalar>(certs: &mut Vec<Certificate>, scale: f64, name: &str, r: &MPoly<F>) {
+    certs.push(zero_cert(name, r, scale.max(1.0)));
 }
 
 /// All `k`-subsets of `0..n`, in lexicographic order.

@@ -258,6 +258,22 @@ fn non_developable_two_manifold_in_r4() {
     assert!(exact_hold(st.certificates()));
     let off = m.offset(q(1, 3)).expect("offset");
     assert!(exact_hold(&off.certify()));
+    // the f64 path: same structure, certificates within tolerance
+    let lf: Vec<MPoly<f64>> = [tp(&[0, 1]), tp(&[0, 0, 1]), tp(&[0]), tp(&[0])]
+        .iter()
+        .map(to_f64)
+        .collect();
+    let gf: Vec<MPoly<f64>> = [tp(&[0]), tp(&[0]), tp(&[1]), tp(&[0, 1])]
+        .iter()
+        .map(to_f64)
+        .collect();
+    let mf = RuledManifold::new(lf, to_f64(&tp(&[1])), vec![gf]).expect("f64 manifold");
+    let sf = mf.structure().expect("f64 structure");
+    assert_eq!((sf.m, sf.kind), (1, RuledKind::Central));
+    assert!(sf.certificates().iter().all(|c| c.holds && !c.exact));
+    let x = Scalar::to_f64(&st.params[0].eval(&[q(1, 2)]).expect("u*"));
+    let xf = sf.params[0].eval(&[0.5]).expect("u* f64");
+    assert!(close(x, xf), "{x} vs {xf}");
 }
 
 /// A ruled 3-manifold (k = 2) in R⁵ and one in R⁴: offsets for k = 2 with certificates.
