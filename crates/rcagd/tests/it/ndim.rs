@@ -466,7 +466,8 @@ fn hypercone_errors_are_named() {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(16))]
 
-    /// Random hypercone families of R⁴ with M = (a, b, 0, d), R = d (so |M|² − R² = a² + b²):
+    /// Random hypercone families of R⁴ with M = (a, b, 0, d), R = d (so |M|² − R² = a² + b²;
+    /// a, b linear, d constant):
     /// the envelope is certified exactly (PN identities and both contacts).
     #[test]
     fn random_hypercone_envelopes_of_r4(
@@ -476,7 +477,7 @@ proptest! {
     ) {
         let a = tp(&abd[0..2]);
         let b = tp(&abd[2..4]);
-        let d = tp(&abd[4..6]);
+        let d = tp(&abd[4..5]); // a constant d keeps the degrees (and the test time) small
         prop_assume!(!d.is_zero() && (!a.is_zero() || !b.is_zero()));
         // constant centres m₁, a linear radius r₁
         let m1: Vec<MPoly<Q>> = (0..4).map(|i| tp(&m1c[i..=i])).collect();
