@@ -71,6 +71,10 @@ pub const RECIPES: &[(&str, &str)] = &[
         "examples/recipes/queries.toml",
         include_str!("../../../examples/recipes/queries.toml"),
     ),
+    (
+        "examples/recipes/n_dimensional.toml",
+        include_str!("../../../examples/recipes/n_dimensional.toml"),
+    ),
 ];
 
 /// The formats written per gallery object.

@@ -21,6 +21,7 @@ pub mod iges_read;
 pub mod json;
 pub mod mesh;
 pub mod model;
+pub mod ndim;
 pub mod obj;
 pub mod ply;
 pub mod png;

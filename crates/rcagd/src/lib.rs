@@ -25,6 +25,7 @@ pub mod envelope;
 pub mod error;
 pub mod laguerre;
 pub mod lines;
+pub mod ndim;
 pub mod ph;
 pub mod pn;
 pub mod quadric;

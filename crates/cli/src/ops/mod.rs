@@ -36,7 +36,8 @@ topics!(
     conic_surface,
     analysis,
     quadric_query,
-    laguerre_query
+    laguerre_query,
+    ndim
 );
 
 pub mod describe;

@@ -7,6 +7,7 @@ mod cyclide;
 mod laguerre_props;
 mod laguerre_query;
 mod lines_props;
+mod ndim;
 mod ph_planar;
 mod ph_preimage;
 mod ph_props;

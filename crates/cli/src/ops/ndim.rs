@@ -1,0 +1,448 @@
+//! n-dimensional ops (`rcagd::ndim`; Peternell ch. 5): PN hypersurfaces of `Rⁿ` from the
+//! support-function form (5.4) with exact offsets, and the offset hypersurfaces of ruled
+//! `(k+1)`-manifolds (Theorem 5.2).
+//!
+//! An object of `Rⁿ`, `n > 3`, is exported twice: exactly, as the named value
+//! `homogeneous_map` (its homogeneous polynomial coordinates `X₀, …, Xₙ` in all parameters,
+//! `rcagd_io::ndim`), and as a picture: the 2-parameter slice with the parameters `free`
+//! running over `domain` and the others fixed at `slice`, projected orthogonally onto the
+//! coordinates `project` — an ordinary rational Bézier patch of `R³`.
+
+use super::{OpArgs, OpError, OpSpec, ParamSpec};
+use crate::model::{Geometry, Object};
+use crate::value::ParamKind;
+use rcagd::ndim::ruled::RuledKind;
+use rcagd::ndim::{Anticaustic, HyperconeEnvelope, NdimError, PnHypersurface, RuledManifold};
+use rcagd::pn::{Domain, RatFn};
+use rcagd::Certified;
+use rcagd_algebra::mpoly::MPoly;
+use rcagd_algebra::rational::format_rational;
+use rcagd_algebra::Rational;
+use rcagd_io::ndim::NdimMap;
+use rcagd_io::quantity::{NamedQuantity, Quantity};
+
+type Q = Rational;
+
+/// The ops of this topic.
+pub const OPS: &[OpSpec] = &[PN_HYPERSURFACE, HYPERCONE_ENVELOPE, ANTICAUSTIC_ND, RULED_OFFSET];
+
+const SLICE: ParamSpec = ParamSpec::optional(
+    "slice",
+    ParamKind::Numbers,
+    "values of all parameters for the 3-D picture (the two `free` ones are ignored; default all 0)",
+);
+const FREE: ParamSpec = ParamSpec::with_default(
+    "free",
+    ParamKind::Numbers,
+    "[1, 2]",
+    "the two parameters (1-based) that run over `domain` in the 3-D picture",
+);
+const PROJECT: ParamSpec = ParamSpec::with_default(
+    "project",
+    ParamKind::Numbers,
+    "[1, 2, 3]",
+    "the three coordinates (1-based) of Rⁿ the picture is projected onto",
+);
+const DOMAIN: ParamSpec = ParamSpec::with_default(
+    "domain",
+    ParamKind::Numbers,
+    "[0, 1, 0, 1]",
+    "rectangle [s0, s1, t0, t1] of the two free parameters in the picture",
+);
+
+fn blame(param: &'static str) -> impl Fn(NdimError) -> OpError {
+    move |e| OpError::param(param, e.to_string())
+}
+
+fn index(x: &Q, max: usize, param: &'static str) -> Result<usize, OpError> {
+    let msg = || OpError::param(param, format!("entries must be integers in 1..={max}"));
+    let i: i64 = x.to_string().parse().map_err(|_| msg())?;
+    usize::try_from(i)
+        .ok()
+        .filter(|&i| (1..=max).contains(&i))
+        .map(|i| i - 1)
+        .ok_or_else(msg)
+}
+
+/// `(free, fixed, project, domain)` of a 3-D picture.
+type Picture = ([usize; 2], Vec<Q>, [usize; 3], Domain<Q>);
+
+/// `(free, fixed, project, domain)` of the 3-D picture of a map with `params` parameters
+/// into `Rⁿ`.
+fn picture(
+    args: &OpArgs,
+    params: usize,
+    n: usize,
+) -> Result<Picture, OpError> {
+    let free = args.opt_numbers("free")?.unwrap_or_default();
+    let proj = args.opt_numbers("project")?.unwrap_or_default();
+    if free.len() != 2 || proj.len() != 3 {
+        return Err(OpError::new("`free` needs two entries and `project` three"));
+    }
+    let f = [index(&free[0], params, "free")?, index(&free[1], params, "free")?];
+    let p = [
+        index(&proj[0], n, "project")? + 1,
+        index(&proj[1], n, "project")? + 1,
+        index(&proj[2], n, "project")? + 1,
+    ];
+    let fixed = args.opt_numbers("slice")?.unwrap_or_else(|| vec![Q::ZERO; params]);
+    if fixed.len() != params {
+        return Err(OpError::param(
+            "slice",
+            format!("give a value for each of the {params} parameters, got {}", fixed.len()),
+        ));
+    }
+    let d = args.opt_numbers("domain")?.unwrap_or_default();
+    if d.len() != 4 {
+        return Err(OpError::param("domain", "give [s0, s1, t0, t1]"));
+    }
+    let dom = Domain::new(d[0].clone(), d[1].clone(), d[2].clone(), d[3].clone())
+        .map_err(|e| OpError::param("domain", e.to_string()))?;
+    Ok((f, fixed, p, dom))
+}
+
+fn map_value(names: Vec<String>, coords: &[MPoly<Q>], what: &str) -> Result<NamedQuantity, OpError> {
+    let map = NdimMap::new(names, coords.to_vec()).map_err(|e| OpError::new(e.to_string()))?;
+    Ok(NamedQuantity::new(
+        "homogeneous_map",
+        format!("{what}: exact homogeneous coordinates (X₀, X₁, …, Xₙ), each a list of terms [c, e₁, …] of c·∏ parameterᵢ^eᵢ"),
+        map.quantity(),
+    ))
+}
+
+// ---------------------------------------------------------------------------------
+// PN hypersurfaces (5.4)
+// ---------------------------------------------------------------------------------
+
+const PN_HYPERSURFACE: OpSpec = OpSpec {
+    name: "pn_hypersurface",
+    summary: "a PN hypersurface of Rⁿ from its tangent hyperplanes h + n·x = 0, n = (2a₁c, …, 2aₙ₋₁c, Σaᵢ² − c²)/(Σaᵢ² + c²) (Peternell (5.3)/(5.4)), points e ∩ e_u₁ ∩ … ∩ e_uₙ₋₁, exact offsets h ↦ h − d; exported exactly and as a projected 3-D slice",
+    params: &[
+        ParamSpec::required("dimension", ParamKind::Int, "the dimension n of the ambient space, 3 to 6"),
+        ParamSpec::required(
+            "support",
+            ParamKind::Points,
+            "terms [c, e₁, …, eₙ₋₁] of the numerator of the support function h(u₁, …, uₙ₋₁)",
+        ),
+        ParamSpec::optional(
+            "support_denominator",
+            ParamKind::Points,
+            "terms [c, e₁, …, eₙ₋₁] of the denominator of h (default 1)",
+        ),
+        ParamSpec::optional(
+            "a",
+            ParamKind::Points,
+            "terms [i, c, e₁, …, eₙ₋₁] of the polynomials aᵢ, i = 1 … n − 1 (default aᵢ = uᵢ)",
+        ),
+        ParamSpec::optional("c", ParamKind::Points, "terms [c, e₁, …, eₙ₋₁] of c (default 1)"),
+        ParamSpec::optional(
+            "distances",
+            ParamKind::Numbers,
+            "oriented offset distances d (x + d n); one extra object `<name>_offset<k>` per distance",
+        ),
+        SLICE,
+        FREE,
+        PROJECT,
+        DOMAIN,
+    ],
+    example: r#"[[object]]
+name = "pn_hypersurface_r4"
+op = "pn_hypersurface"
+dimension = 4
+# h = 1 + u₁u₂ − u₃²/2, n = (2u₁, 2u₂, 2u₃, u₁² + u₂² + u₃² − 1)/(u₁² + u₂² + u₃² + 1)
+support = [[1, 0, 0, 0], [1, 1, 1, 0], ["-1/2", 0, 0, 2]]
+slice = [0, 0, "1/2"]
+project = [1, 2, 4]
+domain = [0, "1/2", 0, "1/2"]
+distances = ["1/4"]
+"#,
+    build: build_hypersurface,
+};
+
+fn terms_poly(rows: &[Vec<Q>], nvars: usize, param: &'static str) -> Result<MPoly<Q>, OpError> {
+    let mut p = MPoly::zero(nvars);
+    for r in rows {
+        if r.len() != nvars + 1 {
+            return Err(OpError::param(
+                param,
+                format!("each term is [c, e₁, …, e_{nvars}] ({} entries), got {}", nvars + 1, r.len()),
+            ));
+        }
+        let e: Vec<u32> = r[1..]
+            .iter()
+            .map(|x| x.to_string().parse::<u32>())
+            .collect::<Result<_, _>>()
+            .map_err(|_| OpError::param(param, "exponents must be non-negative integers"))?;
+        p = &p + &MPoly::monomial(nvars, &e, r[0].clone());
+    }
+    Ok(p)
+}
+
+fn build_hypersurface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let n = usize::try_from(args.int("dimension")?)
+        .ok()
+        .filter(|n| (3..=6).contains(n))
+        .ok_or_else(|| OpError::param("dimension", "n must be 3 to 6"))?;
+    let p = n - 1;
+    let num = terms_poly(&args.points("support")?, p, "support")?;
+    let den = match args.get("support_denominator") {
+        Some(_) => terms_poly(&args.points("support_denominator")?, p, "support_denominator")?,
+        None => MPoly::constant(p, Q::ONE),
+    };
+    let h = RatFn::new(num, den).map_err(|e| OpError::param("support_denominator", e.to_string()))?;
+    let mut a: Vec<MPoly<Q>> = (0..p).map(|i| MPoly::var(p, i)).collect();
+    if args.get("a").is_some() {
+        a = vec![MPoly::zero(p); p];
+        for r in args.points("a")? {
+            let i = r.first().map_or(Ok(0), |x| index(x, p, "a"))?;
+            a[i] = &a[i] + &terms_poly(&[r[1..].to_vec()], p, "a")?;
+        }
+    }
+    let c = match args.get("c") {
+        Some(_) => terms_poly(&args.points("c")?, p, "c")?,
+        None => MPoly::constant(p, Q::ONE),
+    };
+    let surface = PnHypersurface::from_support(&a, &c, &h).map_err(blame("support"))?;
+    let names: Vec<String> = (1..=p).map(|i| format!("u{i}")).collect();
+    hypersurface_objects(args, &surface, surface.certify(), names)
+}
+
+/// The object of a PN hypersurface (its picture and exact map) and one per offset distance.
+fn hypersurface_objects(
+    args: &OpArgs,
+    surface: &PnHypersurface<Q>,
+    certs: Vec<rcagd_algebra::Certificate>,
+    names: Vec<String>,
+) -> Result<Vec<Object>, OpError> {
+    let n = surface.dim();
+    let (free, fixed, proj, dom) = picture(args, n - 1, n)?;
+    let object = |s: &PnHypersurface<Q>, certs, name: Option<String>| -> Result<Object, OpError> {
+        let patch = s.projected_slice(free, &fixed, proj, &dom).map_err(blame("domain"))?;
+        let mut o = args
+            .object(Geometry::Patch(patch), certs)
+            .with_values(vec![map_value(names.clone(), s.point_polys(), s.name())?]);
+        if let Some(nm) = name {
+            o.name = nm;
+        }
+        Ok(o)
+    };
+    let mut out = vec![object(surface, certs, None)?];
+    for (k, d) in args.opt_numbers("distances")?.unwrap_or_default().iter().enumerate() {
+        let off = surface.offset(d).map_err(blame("distances"))?;
+        let mut o = object(off.surface(), off.certify(), Some(format!("{}_offset{}", args.name(), k + 1)))?;
+        if let Some(m) = o.params.as_object_mut() {
+            m.insert("offset_distance".into(), serde_json::Value::String(format_rational(d)));
+        }
+        out.push(o);
+    }
+    Ok(out)
+}
+
+// ---------------------------------------------------------------------------------
+// envelopes of sphere-hypercones (Theorem 5.1)
+// ---------------------------------------------------------------------------------
+
+const HYPERCONE_ENVELOPE: OpSpec = OpSpec {
+    name: "hypercone_envelope",
+    summary: "the envelope of the sphere-hypercones spanned by two rational cycle families (m₁; r₁)(t), (m₂; r₂)(t) of Rⁿ (Peternell Theorem 5.1, (5.5)–(5.12)): a PN hypersurface in (t, u₁, …, uₙ₋₂) with exact offsets; exported exactly and as a projected 3-D slice",
+    params: &[
+        ParamSpec::required("center1", ParamKind::Grid, "n rows: power coefficients in t of the centres m₁(t)"),
+        ParamSpec::required("radius1", ParamKind::Numbers, "power coefficients in t of the signed radius r₁(t)"),
+        ParamSpec::required("center2", ParamKind::Grid, "n rows: power coefficients in t of m₂(t)"),
+        ParamSpec::required("radius2", ParamKind::Numbers, "power coefficients in t of r₂(t)"),
+        ParamSpec::optional(
+            "distances",
+            ParamKind::Numbers,
+            "oriented offset distances d (x + d n); one extra object `<name>_offset<k>` per distance",
+        ),
+        SLICE,
+        FREE,
+        PROJECT,
+        DOMAIN,
+    ],
+    example: r#"[[object]]
+name = "hypercone_envelope_r4"
+op = "hypercone_envelope"
+# point cycles on the line (t, 0, 0, 0) and unit spheres about (0, t, 1, 0): |M|² − R² = 2t²
+center1 = [[0, 1], [0, 0], [0, 0], [0, 0]]
+radius1 = [0]
+center2 = [[0, 0], [0, 1], [1, 0], [0, 0]]
+radius2 = [1]
+slice = [0, 0, "1/2"]
+project = [1, 2, 3]
+domain = ["1/4", "3/4", "1/4", "3/4"]
+"#,
+    build: build_hypercone,
+};
+
+fn build_hypercone(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let m1 = polys_t(&args.opt_grid("center1")?.unwrap_or_default());
+    let m2 = polys_t(&args.opt_grid("center2")?.unwrap_or_default());
+    let r1 = polys_t(&[args.opt_numbers("radius1")?.unwrap_or_default()]).remove(0);
+    let r2 = polys_t(&[args.opt_numbers("radius2")?.unwrap_or_default()]).remove(0);
+    let env = HyperconeEnvelope::new(m1, r1, m2, r2, None).map_err(blame("center2"))?;
+    let n = env.surface().dim();
+    let mut names = vec!["t".to_string()];
+    names.extend((1..n - 1).map(|j| format!("u{j}")));
+    hypersurface_objects(args, env.surface(), env.certify(), names)
+}
+
+// ---------------------------------------------------------------------------------
+// anticaustics (§3.6)
+// ---------------------------------------------------------------------------------
+
+const ANTICAUSTIC_ND: OpSpec = OpSpec {
+    name: "anticaustic_nd",
+    summary: "the anticaustic in Rⁿ of a rational mirror of dimension k ≤ n − 1 for light parallel to xₙ: q = (p₁, …, pₙ₋₁, c) + 2(pₙ − c) mₙ m/|m|² (Peternell (3.18), corrected), m running over the mirror's normals; a PN hypersurface with unit normal the reflected ray (Theorem 4.1), offsets by c ↦ c + d; exported exactly and as a projected 3-D slice",
+    params: &[
+        ParamSpec::required("dimension", ParamKind::Int, "the dimension n of the ambient space, 3 to 6"),
+        ParamSpec::required("mirror_dimension", ParamKind::Int, "the dimension k of the mirror, 1 to n − 1"),
+        ParamSpec::required(
+            "mirror",
+            ParamKind::Points,
+            "terms [i, c, e₁, …, e_k] of the mirror's homogeneous coordinates Pᵢ (i = 0 the weight, 1 … n the coordinates)",
+        ),
+        ParamSpec::with_default("c", ParamKind::Number, "0", "the height c of the wavefront plane xₙ = c"),
+        ParamSpec::optional(
+            "distances",
+            ParamKind::Numbers,
+            "oriented offset distances d (x + d n); one extra object `<name>_offset<k>` per distance",
+        ),
+        SLICE,
+        FREE,
+        PROJECT,
+        DOMAIN,
+    ],
+    example: r#"[[object]]
+name = "anticaustic_r4"
+op = "anticaustic_nd"
+dimension = 4
+mirror_dimension = 3
+# the mirror x₄ = (u₁² + u₂² − u₃²)/2 + u₁u₃
+mirror = [[0, 1, 0, 0, 0], [1, 1, 1, 0, 0], [2, 1, 0, 1, 0], [3, 1, 0, 0, 1], [4, "1/2", 2, 0, 0], [4, "1/2", 0, 2, 0], [4, "-1/2", 0, 0, 2], [4, 1, 1, 0, 1]]
+c = "1/2"
+slice = [0, 0, "1/4"]
+domain = [0, "1/2", 0, "1/2"]
+distances = ["1/4"]
+"#,
+    build: build_anticaustic,
+};
+
+fn build_anticaustic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let n = usize::try_from(args.int("dimension")?)
+        .ok()
+        .filter(|n| (3..=6).contains(n))
+        .ok_or_else(|| OpError::param("dimension", "n must be 3 to 6"))?;
+    let k = usize::try_from(args.int("mirror_dimension")?)
+        .ok()
+        .filter(|k| (1..n).contains(k))
+        .ok_or_else(|| OpError::param("mirror_dimension", format!("k must be 1 to {}", n - 1)))?;
+    let mut mirror = vec![MPoly::zero(k); n + 1];
+    for r in args.points("mirror")? {
+        let i = r
+            .first()
+            .and_then(|x| x.to_string().parse::<usize>().ok())
+            .filter(|&i| i <= n)
+            .ok_or_else(|| OpError::param("mirror", format!("the first entry of a term is the coordinate 0 … {n}")))?;
+        mirror[i] = &mirror[i] + &terms_poly(&[r[1..].to_vec()], k, "mirror")?;
+    }
+    let c = args.opt_number("c")?.unwrap_or(Q::ZERO);
+    let ac = Anticaustic::new(mirror, k, c).map_err(blame("mirror"))?;
+    let mut names: Vec<String> = (1..=k).map(|i| format!("u{i}")).collect();
+    names.extend((1..n - k).map(|j| format!("v{j}")));
+    hypersurface_objects(args, ac.surface(), ac.certify(), names)
+}
+
+// ---------------------------------------------------------------------------------
+// offsets of ruled (k+1)-manifolds (Theorem 5.2)
+// ---------------------------------------------------------------------------------
+
+const RULED_OFFSET: OpSpec = OpSpec {
+    name: "ruled_manifold_offset",
+    summary: "the offset hypersurface at distance d of a ruled (k+1)-manifold l(t) + Σ uⱼ gⱼ(t) of Rⁿ (Peternell (5.13), Theorem 5.2: unit normal from a polynomial point on the quadric family (5.25) by the conic-point engine, spheres (5.26)), with its structure (m, Case 1/2, singular or central space); exported exactly and as a projected 3-D slice",
+    params: &[
+        ParamSpec::required(
+            "directrix",
+            ParamKind::Grid,
+            "n rows: power coefficients in t of the numerators of l(t) (zero-padded to one length)",
+        ),
+        ParamSpec::optional(
+            "directrix_denominator",
+            ParamKind::Numbers,
+            "power coefficients of the common denominator w(t) of l (default 1)",
+        ),
+        ParamSpec::required(
+            "generators",
+            ParamKind::Grid,
+            "k·n rows: power coefficients in t of g₁ (n rows), then g₂, … (1 ≤ k ≤ n − 2)",
+        ),
+        ParamSpec::required("distance", ParamKind::Number, "the offset distance d"),
+        SLICE,
+        FREE,
+        PROJECT,
+        DOMAIN,
+    ],
+    example: r#"[[object]]
+name = "ruled_2_manifold_r4_offset"
+op = "ruled_manifold_offset"
+# the non-developable 2-manifold (t, t², 0, 0) + u (0, 0, 1, t) of R⁴ (Peternell §5.5, second example)
+directrix = [[0, 1, 0], [0, 0, 1], [0, 0, 0], [0, 0, 0]]
+generators = [[0, 0], [0, 0], [1, 0], [0, 1]]
+distance = "1/4"
+slice = [0, 0, "1/2"]
+free = [1, 2]
+project = [1, 3, 4]
+domain = ["1/4", "3/4", "1/4", "3/4"]
+"#,
+    build: build_ruled_offset,
+};
+
+fn polys_t(rows: &[Vec<Q>]) -> Vec<MPoly<Q>> {
+    rows.iter()
+        .map(|r| {
+            r.iter().enumerate().fold(MPoly::zero(1), |acc, (i, c)| {
+                &acc + &MPoly::monomial(1, &[i as u32], c.clone())
+            })
+        })
+        .collect()
+}
+
+fn build_ruled_offset(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let l = polys_t(&args.opt_grid("directrix")?.unwrap_or_default());
+    let n = l.len();
+    let g = polys_t(&args.opt_grid("generators")?.unwrap_or_default());
+    if n < 3 || g.is_empty() || !g.len().is_multiple_of(n) {
+        return Err(OpError::param(
+            "generators",
+            format!("give k·n rows (n = {n} directrix rows), got {}", g.len()),
+        ));
+    }
+    let gens: Vec<Vec<MPoly<Q>>> = g.chunks(n).map(<[MPoly<Q>]>::to_vec).collect();
+    let w = match args.opt_numbers("directrix_denominator")? {
+        Some(c) => polys_t(&[c]).remove(0),
+        None => MPoly::constant(1, Q::ONE),
+    };
+    let k = gens.len();
+    let manifold = RuledManifold::new(l, w, gens).map_err(blame("generators"))?;
+    let st = manifold.structure().map_err(blame("generators"))?;
+    let d = args.number("distance")?;
+    let off = manifold.offset(d).map_err(blame("generators"))?;
+    let (free, fixed, proj, dom) = picture(args, n - 1, n)?;
+    let patch = off.projected_slice(free, &fixed, proj, &dom).map_err(blame("domain"))?;
+    let mut certs = st.certificates().to_vec();
+    certs.extend(off.certify());
+    let mut names = vec!["t".to_string()];
+    names.extend((1..=k).map(|j| format!("s{j}")));
+    names.extend((1..n - k - 1).map(|j| format!("v{j}")));
+    let case = match st.kind {
+        RuledKind::Singular => "case 1: singular space",
+        RuledKind::Central => "case 2: central space",
+    };
+    let values = vec![
+        map_value(names, &off.homogeneous(), "offset hypersurface")?,
+        NamedQuantity::new("m", "dim A(t) − k (5.14)", Quantity::Integer(st.m as i64)),
+        NamedQuantity::new("dim_T", "dim T(t) (5.15)", Quantity::Integer(st.dim_t as i64)),
+        NamedQuantity::new("case", "§5.4 case of the generators", Quantity::Text(case.into())),
+    ];
+    Ok(vec![args.object(Geometry::Patch(patch), certs).with_values(values)])
+}

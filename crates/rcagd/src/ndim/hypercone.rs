@@ -1,0 +1,197 @@
+//! Envelopes of rational one-parameter families of sphere-hypercones in `Rⁿ` (Peternell
+//! §5.3, Theorem 5.1, (5.5)–(5.12); docs/math/n-dimensional.md#sphere-hypercones).
+//!
+//! Two rational cycle families `cᵢ(t) = (mᵢ; rᵢ)(t)` (centres in `Rⁿ`, signed radii) span
+//! the sphere-hypercones `Δ(t)`: their common oriented tangent hyperplanes. In the
+//! isotropic model the cycles are the isotropic spheres (5.5); their intersection projects
+//! to the `(n−2)`-sphere `d'(t)` (5.6) with centre `p = −(M₁, …, M_{n−1})/β` (5.7) and
+//! `ρ² = (|M|² − R²)/β²` (5.8), `M = m₁ − m₂`, `R = r₁ − r₂`, `β = R + Mₙ`. With
+//! `P₁² + P₂² = |M|² − R²` (the algebra layer's sum-of-two-squares engine), the point
+//! `f = p + (P₁, P₂, 0, …)/β` (5.10) lies on `d'(t)`; reflecting it in the diameter
+//! hyperplanes with normals `c(u) = (u₁, …, u_{n−2}, 1)` gives `d'(t)` (5.11), (5.12) lifts
+//! it to the isotropic sphere, and `Λ⁻¹` gives the envelope as a PN hypersurface in the
+//! parameters `(t, u₁, …, u_{n−2})`.
+
+use super::hypersurface::PnHypersurface;
+use super::poly::{clean, dot, dot_scale};
+use super::NdimError;
+use crate::pn::poly::zero_cert;
+use crate::pn::ruled::find_two_squares;
+use crate::pn::RatFn;
+use crate::Certified;
+use rcagd_algebra::mpoly::MPoly;
+use rcagd_algebra::{Certificate, Scalar};
+
+/// The envelope of the sphere-hypercones of two cycle families (module docs).
+#[derive(Debug, Clone)]
+pub struct HyperconeEnvelope<F> {
+    centers: [Vec<MPoly<F>>; 2],
+    radii: [MPoly<F>; 2],
+    p: [RatFn<F>; 2],
+    surface: PnHypersurface<F>,
+}
+
+impl<F: Scalar> HyperconeEnvelope<F> {
+    /// The envelope of the hypercones spanned by the cycles `(m₁; r₁)(t)` and `(m₂; r₂)(t)`
+    /// (polynomials in `t`, centres of length `n ≥ 3`). `p = (P₁, P₂)` with
+    /// `P₁² + P₂² = |M|² − R²` may be given; otherwise it is found exactly.
+    ///
+    /// # Errors
+    /// [`NdimError::InvalidInput`] for wrong lengths, a dependence on other variables, or
+    /// `β = R + Mₙ ≡ 0` (the sphere `d'(t)` is a hyperplane: exchange the last coordinate with
+    /// another); [`NdimError::Degenerate`] for `|M|² ≡ R²` (isotropic cycle pairs: the
+    /// cycles touch, `d'(t)` has radius 0) or a degenerate Gauss image;
+    /// [`NdimError::NoRationalPoint`] if `|M|² − R²` is no sum of two squares over `Q(t)`.
+    pub fn new(
+        m1: Vec<MPoly<F>>,
+        r1: MPoly<F>,
+        m2: Vec<MPoly<F>>,
+        r2: MPoly<F>,
+        p: Option<[RatFn<F>; 2]>,
+    ) -> Result<Self, NdimError> {
+        let n = m1.len();
+        if n < 3 || m2.len() != n {
+            return Err(NdimError::InvalidInput(format!(
+                "two cycle families of Rⁿ need centres of one length n ≥ 3, got {} and {}",
+                n,
+                m2.len()
+            )));
+        }
+        if !m1
+            .iter()
+            .chain(&m2)
+            .chain([&r1, &r2])
+            .all(super::poly::only_var0)
+        {
+            return Err(NdimError::InvalidInput(
+                "the cycle families must depend on t (variable 0) only".into(),
+            ));
+        }
+        let nv = n - 1;
+        let lift = |x: &MPoly<F>| &MPoly::zero(nv) + x;
+        let mm: Vec<MPoly<F>> = m1.iter().zip(&m2).map(|(a, b)| lift(&(a - b))).collect();
+        let rr = lift(&(&r1 - &r2));
+        let beta = clean(&(&rr + &mm[n - 1]));
+        if beta.is_zero() {
+            return Err(NdimError::InvalidInput(
+                "β = (r₁ − r₂) + (m₁ − m₂)ₙ ≡ 0: the sphere d'(t) (5.6) is a hyperplane; exchange the last coordinate with another".into(),
+            ));
+        }
+        let disc = clean(&(&dot(&mm, &mm) - &(&rr * &rr)));
+        if disc.is_zero() {
+            return Err(NdimError::Degenerate(
+                "|m₁ − m₂|² ≡ (r₁ − r₂)²: the two cycles touch for every t and span no real hypercone ((5.8): ρ = 0)".into(),
+            ));
+        }
+        let p = match p {
+            Some(p) => {
+                let s = p[0].mul(&p[0]).add(&p[1].mul(&p[1])).sub(&RatFn::poly(disc.clone()));
+                if !clean(&s.num).is_zero() {
+                    return Err(NdimError::InvalidInput(
+                        "the given (P₁, P₂) do not satisfy P₁² + P₂² ≡ |M|² − R²".into(),
+                    ));
+                }
+                p
+            }
+            None => find_two_squares(&disc).ok_or_else(|| {
+                NdimError::NoRationalPoint(
+                    "|m₁ − m₂|² − (r₁ − r₂)² is not a sum of two squares of rational functions of t (the point f(t) of (5.10) needs one)".into(),
+                )
+            })?,
+        };
+        // f, p over Q0 = β B, B = b₁ b₂
+        let (a1, b1, a2, b2) = (
+            lift(&p[0].num),
+            lift(&p[0].den),
+            lift(&p[1].num),
+            lift(&p[1].den),
+        );
+        let bb = &b1 * &b2;
+        let pc: Vec<MPoly<F>> = (0..nv).map(|j| -(&mm[j] * &bb)).collect();
+        let mut ff = pc.clone();
+        ff[0] = &ff[0] + &(&a1 * &b2);
+        ff[1] = &ff[1] + &(&a2 * &b1);
+        let q0 = &beta * &bb;
+        let c: Vec<MPoly<F>> = (0..nv)
+            .map(|j| {
+                if j + 1 < nv {
+                    MPoly::var(nv, j + 1)
+                } else {
+                    MPoly::constant(nv, F::one())
+                }
+            })
+            .collect();
+        let cc = dot(&c, &c);
+        let diff: Vec<MPoly<F>> = pc.iter().zip(&ff).map(|(a, b)| a - b).collect();
+        let two = F::from_i64(2);
+        let pfc = dot(&diff, &c).scale(&two);
+        let z: Vec<MPoly<F>> = (0..nv)
+            .map(|j| clean(&(&(&ff[j] * &cc) + &(&pfc * &c[j]))))
+            .collect();
+        let q = &q0 * &cc;
+        // (5.12) with i = 1: 2zₙ = −r₁(S + 1) − m₁ₙ(S − 1) − 2Σ m₁ⱼ zⱼ
+        let s = dot(&z, &z);
+        let qq = &q * &q;
+        let m1l: Vec<MPoly<F>> = m1.iter().map(lift).collect();
+        let yn = -(&(&(&lift(&r1) * &(&s + &qq)) + &(&m1l[n - 1] * &(&s - &qq)))
+            + &(&q * &dot(&m1l[..nv], &z)).scale(&two));
+        let qn = qq.scale(&two);
+        let mut y = z;
+        y.push(clean(&yn));
+        let surface = PnHypersurface::from_isotropic(&y, &q, &qn)?.named(format!(
+            "envelope of sphere-hypercones in R^{n} (Theorem 5.1)"
+        ));
+        Ok(HyperconeEnvelope {
+            centers: [m1, m2],
+            radii: [r1, r2],
+            p,
+            surface,
+        })
+    }
+
+    /// The envelope, a PN hypersurface in `(t, u₁, …, u_{n−2})`.
+    pub fn surface(&self) -> &PnHypersurface<F> {
+        &self.surface
+    }
+
+    /// The sum of two squares `(P₁, P₂)` used for `f(t)` (5.10).
+    pub fn p(&self) -> &[RatFn<F>; 2] {
+        &self.p
+    }
+
+    /// The contact certificates: every tangent hyperplane touches both cycles in oriented
+    /// contact, `E₀ + E·mᵢ + L rᵢ ≡ 0` (`i = 1, 2`): it belongs to the hypercone `Δ(t)`.
+    pub fn contact_certificates(&self) -> Vec<Certificate> {
+        let e = self.surface.plane_polys();
+        let l = self.surface.norm_poly();
+        (0..2)
+            .map(|i| {
+                let r = &(&e[0] + &dot(&e[1..], &self.centers[i])) + &(l * &self.radii[i]);
+                let mut terms = self.centers[i].clone();
+                terms.insert(0, MPoly::constant(0, F::one()));
+                terms.push(self.radii[i].clone());
+                let mut coeffs = e.to_vec();
+                coeffs.push(l.clone());
+                zero_cert(
+                    &format!(
+                        "tangent hyperplanes touch cycle {} (E₀ + E·m{} + L r{} ≡ 0)",
+                        i + 1,
+                        i + 1,
+                        i + 1
+                    ),
+                    &r,
+                    dot_scale(&coeffs, &terms),
+                )
+            })
+            .collect()
+    }
+}
+
+impl<F: Scalar> Certified for HyperconeEnvelope<F> {
+    /// The PN identities of the envelope and both contact conditions.
+    fn certify(&self) -> Vec<Certificate> {
+        let mut out = self.surface.certify();
+        out.extend(self.contact_certificates());
+        out
+    }
+}
