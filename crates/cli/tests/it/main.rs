@@ -8,6 +8,7 @@ mod common;
 mod docs;
 mod exchange_weights;
 mod fuzz;
+mod messages;
 mod pipes;
 mod quadric_ops;
 mod sphere_family_ops;
