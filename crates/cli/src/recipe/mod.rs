@@ -19,7 +19,7 @@ pub mod json;
 pub mod toml;
 pub mod tree;
 
-use crate::source::{closest, Diagnostic, SourceFile, Span};
+use crate::source::{clip, closest, Diagnostic, SourceFile, Span};
 pub use tree::{Entry, NumberText, RecipeValue, ValueKind};
 
 /// The two recipe syntaxes.
@@ -193,7 +193,10 @@ fn objects(
         if e.key == "object" {
             list = Some(e);
         } else {
-            let mut d = file.error(e.key_span, format!("unknown top-level key `{}`", e.key));
+            let mut d = file.error(
+                e.key_span,
+                format!("unknown top-level key `{}`", clip(&e.key)),
+            );
             if let Some(s) = closest(&e.key, ["object"]) {
                 d = d.note(format!("did you mean `{s}`?"));
             }
@@ -239,7 +242,7 @@ fn objects(
                     let first = file.line_col(first.start);
                     let at = item.get("name").map_or(item.span, |e| e.value.span);
                     diags.push(
-                        file.error(at, format!("duplicate object name {:?}", o.name))
+                        file.error(at, format!("duplicate object name {:?}", clip(&o.name)))
                             .note(format!(
                                 "the first object called {:?} is at line {}, column {}; names must be unique",
                                 o.name, first.line, first.column

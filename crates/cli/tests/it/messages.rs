@@ -105,3 +105,95 @@ fn gallery_writes_all_or_nothing() {
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert_eq!(listing(&fresh).len(), after.len());
 }
+
+/// Runs `rcagd build FILE` on a recipe written to a fresh directory; returns (exit
+/// code, standard error).
+fn build_err(tag: &str, file: &str, text: &str) -> (Option<i32>, String) {
+    let dir = temp_dir(tag);
+    let path = write(&dir, file, text);
+    let o = bin().arg("build").arg(&path).output().expect("run");
+    (o.status.code(), stderr(&o))
+}
+
+/// A 10 MB object name, key or number is not echoed: the source line is shown as a
+/// window of about 200 characters and the text in messages is cut with `… (N bytes)`.
+#[test]
+fn long_user_text_is_not_echoed_in_full() {
+    let big = "a".repeat(10_000_000);
+    let cases = [
+        format!("[[object]]\nname = \"{big}\"\nop = \"circle\"\nradius = 1\n"),
+        format!("[[object]]\nname = \"c\"\nop = \"circle\"\nradius = 1\n{big} = 2\n"),
+        format!("[[object]]\nname = \"c\"\nop = \"{big}\"\nradius = 1\n"),
+        format!("[[object]]\nname = \"c\"\nop = \"circle\"\nradius = \"{big}\"\n"),
+        format!(
+            "[[object]]\nname = \"c\"\nop = \"circle\"\nradius = 1{}x\n",
+            "0".repeat(10_000_000)
+        ),
+    ];
+    for (i, text) in cases.iter().enumerate() {
+        let (code, e) = build_err(&format!("messages-long-{i}"), "r.toml", text);
+        assert_eq!(code, Some(2), "case {i}: {}", &e[..e.len().min(2000)]);
+        assert!(
+            e.len() < 8_000,
+            "case {i}: {} bytes of error output",
+            e.len()
+        );
+        assert!(e.contains("error:"), "case {i}: {e}");
+        // the unknown key and op are named, cut, with their length
+        let cut = format!("{}… (10000000 bytes)", "a".repeat(200));
+        match i {
+            1 => assert!(e.contains(&format!("unknown parameter `{cut}`")), "{e}"),
+            2 => assert!(e.contains(&format!("unknown op \"{cut}\"")), "{e}"),
+            _ => {}
+        }
+    }
+}
+
+/// A recipe with 20 000 unknown keys prints 50 diagnostics, the parameter list once,
+/// and the count of the rest.
+#[test]
+fn many_errors_print_a_bounded_report() {
+    let keys: String = (0..20_000).map(|i| format!("k{i} = 1\n")).collect();
+    let text = format!("[[object]]\nname = \"c\"\nop = \"circle\"\nradius = 1\n{keys}");
+    let (code, e) = build_err("messages-many", "r.toml", &text);
+    assert_eq!(code, Some(2));
+    assert_eq!(e.matches(": error: ").count(), 50, "{e}");
+    assert_eq!(e.matches("parameters of `circle`:").count(), 1, "{e}");
+    assert_eq!(
+        e.matches("parameters of `circle` (as above)").count(),
+        49,
+        "{e}"
+    );
+    assert!(
+        e.ends_with("… and 19950 more errors (the first 50 are shown)\n20000 errors\n"),
+        "{}",
+        &e[e.len().saturating_sub(500)..]
+    );
+    assert!(e.len() < 20_000, "{} bytes", e.len());
+}
+
+/// `"1/0"` as a number says "zero denominator" (as a string and inside a point), once.
+#[test]
+fn zero_denominator_is_named() {
+    for (i, value) in [
+        "radius = \"1/0\"",
+        "radius = \"-3/0.0\"",
+        "center = [\"1/0\", 0]\nradius = 1",
+    ]
+    .iter()
+    .enumerate()
+    {
+        let text = format!("[[object]]\nname = \"c\"\nop = \"circle\"\n{value}\n");
+        let (code, e) = build_err(&format!("messages-zero-den-{i}"), "r.toml", &text);
+        assert_eq!(code, Some(2), "{e}");
+        assert!(e.contains(": zero denominator"), "{e}");
+        if i == 0 {
+            assert!(e.contains("`radius`: \"1/0\": zero denominator"), "{e}");
+        }
+    }
+    // other bad numbers keep the hint on how to write one
+    let text = "[[object]]\nname = \"c\"\nop = \"circle\"\nradius = \"x1\"\n";
+    let (_, e) = build_err("messages-not-number", "r.toml", text);
+    assert!(e.contains("not a number: \"x1\""), "{e}");
+    assert!(e.contains("a fraction \"3/7\""), "{e}");
+}
