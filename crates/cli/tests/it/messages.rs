@@ -197,3 +197,67 @@ fn zero_denominator_is_named() {
     assert!(e.contains("not a number: \"x1\""), "{e}");
     assert!(e.contains("a fraction \"3/7\""), "{e}");
 }
+
+/// A `.json` recipe that holds TOML (and the reverse) gets a hint that the extension
+/// chose the format.
+#[test]
+fn wrong_extension_is_hinted() {
+    let toml_text = "[[object]]\nname = \"c\"\nop = \"circle\"\nradius = 1\n";
+    let (code, e) = build_err("messages-ext-json", "r.json", toml_text);
+    assert_eq!(code, Some(2), "{e}");
+    assert!(e.contains("JSON syntax error"), "{e}");
+    assert!(
+        e.contains(
+            "the file's extension chose JSON, but the file reads as TOML: rename it to `.toml`"
+        ),
+        "{e}"
+    );
+    let json_text = r#"{"object": [{"name": "c", "op": "circle", "radius": 1}]}"#;
+    let (code, e) = build_err("messages-ext-toml", "r.toml", json_text);
+    assert_eq!(code, Some(2), "{e}");
+    assert!(e.contains("reads as JSON: rename it to `.json`"), "{e}");
+    // the renamed files build
+    let (code, e) = build_err("messages-ext-ok", "r.toml", toml_text);
+    assert_eq!(code, Some(0), "{e}");
+}
+
+/// An empty list for a list parameter that needs numbers is an "empty" error naming the
+/// parameter and pointing at it (exit 2), not an unrelated geometric message.
+#[test]
+fn empty_lists_are_named() {
+    let cases = [
+        ("pn_planar", "function = []", "function"),
+        (
+            "canal_surface",
+            "points = [[0, 0, 0], [1, 0, 0]]\nradius = []",
+            "radius",
+        ),
+    ];
+    for (i, (op, params, name)) in cases.iter().enumerate() {
+        let text = format!("[[object]]\nname = \"c\"\nop = \"{op}\"\n{params}\n");
+        let (code, e) = build_err(&format!("messages-empty-{i}"), "r.toml", &text);
+        assert_eq!(code, Some(2), "{e}");
+        assert!(
+            e.contains(&format!("`{name}` is empty: give at least one number")),
+            "{e}"
+        );
+        let line = text
+            .lines()
+            .position(|l| l.starts_with(name))
+            .expect("line")
+            + 1;
+        assert!(e.contains(&format!("r.toml:{line}:")), "{e}");
+    }
+    // an optional list without a default may be empty (`at = []`, `distances = []`:
+    // none); where that is meaningless the op's own error still points at it
+    let text =
+        "[[object]]\nname = \"c\"\nop = \"pn_planar\"\nfunction = [0, 0, 1]\ndenominator = []\n";
+    let (code, e) = build_err("messages-empty-optional", "r.toml", text);
+    assert_eq!(code, Some(2), "{e}");
+    assert!(e.contains("r.toml:5:15: error:"), "{e}");
+    assert!(e.contains("non-zero denominator"), "{e}");
+    // the same op with a list builds (the check is about emptiness only)
+    let text = "[[object]]\nname = \"c\"\nop = \"pn_planar\"\nfunction = [0, 0, 1]\n";
+    let (code, e) = build_err("messages-empty-ok", "r.toml", text);
+    assert_eq!(code, Some(0), "{e}");
+}
