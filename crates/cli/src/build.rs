@@ -5,7 +5,7 @@ use crate::model::Object;
 use crate::ops::{self, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::output::{self, OutFormat};
 use crate::recipe::{Recipe, RecipeObject, RecipeValue};
-use crate::source::{closest, Diagnostic, SourceFile, Span};
+use crate::source::{clip, closest, Diagnostic, SourceFile, Span};
 use crate::value::{convert, Value};
 use crate::{EXIT_FAIL, EXIT_INPUT, EXIT_OK};
 use rayon::prelude::*;
@@ -56,7 +56,7 @@ pub fn check_object(
     obj: &RecipeObject,
 ) -> Result<(&'static OpSpec, OpArgs), Vec<Diagnostic>> {
     let Some(op) = ops::find(&obj.op) else {
-        let mut d = file.error(obj.op_span, format!("unknown op {:?}", obj.op));
+        let mut d = file.error(obj.op_span, format!("unknown op {:?}", clip(&obj.op)));
         if let Some(s) = closest(&obj.op, ops::all().map(|o| o.name)) {
             d = d.note(format!("did you mean {s:?}?"));
         }
@@ -72,7 +72,7 @@ pub fn check_object(
         if op.param(&e.key).is_none() {
             let mut d = file.error(
                 e.key_span,
-                format!("unknown parameter `{}` for op `{}`", e.key, op.name),
+                format!("unknown parameter `{}` for op `{}`", clip(&e.key), op.name),
             );
             if let Some(s) = closest(&e.key, op.params.iter().map(|p| p.name)) {
                 d = d.note(format!("did you mean `{s}`?"));
@@ -252,12 +252,7 @@ pub fn load(path: &Path) -> Result<Recipe, Vec<Diagnostic>> {
 }
 
 fn print_diagnostics(diags: &[Diagnostic]) {
-    for d in diags {
-        err!("{d}");
-    }
-    if diags.len() > 1 {
-        errln!("{} errors", diags.len());
-    }
+    err!("{}", crate::source::render_all(diags));
 }
 
 /// Runs `rcagd build`; returns the exit code (0 all certificates hold, 1 one fails,

@@ -193,16 +193,20 @@ fn progress_bar(quiet: bool) -> ProgressBar {
 /// object. An object that an exporter cannot write is reported in the returned list
 /// and left out of that format.
 ///
+/// All or nothing, like `rcagd build --out` ([`output::write_objects`]): every file is
+/// rendered in memory first, then written under a temporary name beside its target
+/// and renamed into place only when all were written; if a write fails, the
+/// temporaries are removed and `out` is as it was (old files of the same names intact).
+///
 /// # Errors
-/// A file-system error (the directory or a file cannot be written).
+/// A file-system error (the directory or a file cannot be written), naming the path.
 pub fn write_all(
     out: &Path,
     objects: &[Object],
     tick: impl Fn(&str) + Sync,
 ) -> Result<Vec<String>, String> {
-    output::create_dir(out)?;
     // Rendering (tessellation, rasterisation, exact export) is the expensive part: one
-    // object per task, in parallel; writing stays sequential and in order.
+    // object per task, in parallel; the files are collected in order.
     let rendered: Vec<Vec<_>> = objects
         .par_iter()
         .map(|o| {
@@ -213,11 +217,11 @@ pub fn write_all(
         .collect();
     let mut export_errors = Vec::new();
     let mut entries = Vec::with_capacity(objects.len());
+    let mut files: Vec<(String, Vec<u8>)> = Vec::new();
     for (o, renders) in objects.iter().zip(rendered) {
         let mut entry = ReportEntry::new(o.clone());
         for (f, text) in renders {
             let file = format!("{}.{}", o.name, f.extension());
-            let path = out.join(&file);
             let text = match text {
                 Ok(t) => t,
                 Err(e) => {
@@ -229,8 +233,6 @@ pub fn write_all(
                     continue;
                 }
             };
-            std::fs::write(&path, &text)
-                .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
             match f {
                 OutFormat::Svg => {
                     entry = entry.with_svg(String::from_utf8_lossy(&text).into_owned());
@@ -241,12 +243,28 @@ pub fn write_all(
                 }
                 _ => {}
             }
-            entry = entry.with_file(f.label(), file);
+            entry = entry.with_file(f.label(), file.clone());
+            files.push((file, text));
         }
         entries.push(entry);
     }
-    let links = write_combined(out, objects, &mut export_errors)?;
-    rcagd_io::report::write_report_with(out, &entries, &links).map_err(|e| e.to_string())?;
+    let links = combined_files(objects, &mut export_errors, &mut files)?;
+    let mut json = rcagd_io::report::report_json(&entries);
+    if let serde_json::Value::Object(map) = &mut json {
+        if !links.is_empty() {
+            let list = links
+                .iter()
+                .map(|f| serde_json::json!({"label": f.label, "path": f.path}))
+                .collect();
+            map.insert("files".into(), serde_json::Value::Array(list));
+        }
+    }
+    files.push(("report.json".into(), json_bytes(&json)?));
+    files.push((
+        "index.html".into(),
+        rcagd_io::report::report_html_with(&entries, &links).into_bytes(),
+    ));
+    write_files_atomically(out, &files)?;
     Ok(export_errors)
 }
 
@@ -254,18 +272,88 @@ pub fn write_all(
 /// `.exact.json`.
 pub const ALL_STEM: &str = "gallery-all";
 
-fn write_json(path: &Path, v: &serde_json::Value) -> Result<(), String> {
-    let text = serde_json::to_string_pretty(v).map_err(|e| e.to_string())? + "\n";
-    std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))
+fn json_bytes(v: &serde_json::Value) -> Result<Vec<u8>, String> {
+    Ok((serde_json::to_string_pretty(v).map_err(|e| e.to_string())? + "\n").into_bytes())
 }
 
-/// Writes every object that STEP can hold into one STEP and one IGES file (one
-/// product / group per object, named after it) with their exact sidecar; returns
-/// the links for the report's header.
-fn write_combined(
-    out: &Path,
+/// The temporary name of `file` while the gallery is written: `.FILE.rcagd-partial`
+/// beside it (as `rcagd build --out` uses).
+fn partial_name(file: &str) -> String {
+    format!(".{file}.rcagd-partial")
+}
+
+/// Writes `files` (name in `dir`, contents) all or nothing: `dir` is created if
+/// missing; a target that exists as a directory is refused before anything is
+/// written; every file goes to [`partial_name`] first (synced), and only when all were
+/// written are they renamed into place. On a failed write the temporaries (and `dir`,
+/// when this call created it) are removed.
+///
+/// # Errors
+/// A message naming the file and saying that nothing was written.
+fn write_files_atomically(dir: &Path, files: &[(String, Vec<u8>)]) -> Result<(), String> {
+    let mut seen = std::collections::HashSet::new();
+    for (name, _) in files {
+        if !seen.insert(name.as_str()) {
+            return Err(format!(
+                "two gallery files would both be written to {} (nothing was written)",
+                dir.join(name).display()
+            ));
+        }
+        if dir.join(name).is_dir() {
+            return Err(format!(
+                "cannot write {}: a directory of that name is in the way (nothing was written)",
+                dir.join(name).display()
+            ));
+        }
+    }
+    let created = !dir.exists();
+    output::create_dir(dir)?;
+    let mut temps: Vec<std::path::PathBuf> = Vec::with_capacity(files.len());
+    let cleanup = |temps: &[std::path::PathBuf]| {
+        for t in temps {
+            let _ = std::fs::remove_file(t);
+        }
+        if created {
+            let _ = std::fs::remove_dir(dir);
+        }
+    };
+    for (name, bytes) in files {
+        let tmp = dir.join(partial_name(name));
+        let result = std::fs::File::create(&tmp).and_then(|mut f| {
+            use std::io::Write as _;
+            f.write_all(bytes)?;
+            f.sync_all()
+        });
+        if result.is_ok() || tmp.is_file() {
+            temps.push(tmp);
+        }
+        if let Err(e) = result {
+            cleanup(&temps);
+            return Err(format!(
+                "cannot write {} (as its temporary {}): {e} (nothing was written; the \
+                 directory is as it was)",
+                dir.join(name).display(),
+                partial_name(name)
+            ));
+        }
+    }
+    for ((name, _), tmp) in files.iter().zip(&temps) {
+        let path = dir.join(name);
+        if let Err(e) = std::fs::rename(tmp, &path) {
+            cleanup(&temps);
+            return Err(format!("cannot move {} into place: {e}", path.display()));
+        }
+    }
+    Ok(())
+}
+
+/// Renders every object that STEP can hold into one STEP and one IGES file (one
+/// product / group per object, named after it) with their exact sidecar, appending
+/// them to `files`; returns the links for the report's header.
+fn combined_files(
     objects: &[Object],
     export_errors: &mut Vec<String>,
+    files: &mut Vec<(String, Vec<u8>)>,
 ) -> Result<Vec<FileLink>, String> {
     let ok: Vec<Object> = objects
         .iter()
@@ -276,18 +364,16 @@ fn write_combined(
     if ok.is_empty() {
         return Ok(links);
     }
-    let files = [
+    let rendered = [
         (OutFormat::Step, rcagd_io::step::write_step(&ok)),
         (OutFormat::Iges, rcagd_io::iges::write_iges(&ok)),
     ];
-    for (f, r) in files {
+    for (f, r) in rendered {
         let ext = f.extension();
         match r {
-            Ok(bytes) => {
+            Ok(text) => {
                 let file = format!("{ALL_STEM}.{ext}");
-                let path = out.join(&file);
-                std::fs::write(&path, bytes)
-                    .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+                files.push((file.clone(), text.into_bytes()));
                 links.push(FileLink {
                     label: format!("all objects as {}", f.label()),
                     path: file,
@@ -299,7 +385,7 @@ fn write_combined(
     match rcagd_io::step::exact_sidecar(&ok) {
         Ok(side) => {
             let file = format!("{ALL_STEM}.exact.json");
-            write_json(&out.join(&file), &side)?;
+            files.push((file.clone(), json_bytes(&side)?));
             links.push(FileLink {
                 label: "their exact NURBS".into(),
                 path: file,
@@ -308,6 +394,32 @@ fn write_combined(
         Err(e) => export_errors.push(format!("cannot write the exact sidecar: {e}")),
     }
     Ok(links)
+}
+
+/// Checks before the (long) build that `dir` can be created and written: creates it
+/// (reporting whether this call did) and writes and removes a probe file in it.
+///
+/// # Errors
+/// A message naming the directory.
+fn check_writable(dir: &Path) -> Result<bool, String> {
+    let created = !dir.exists();
+    output::create_dir(dir)?;
+    let probe = dir.join(partial_name("write-test"));
+    match std::fs::File::create(&probe) {
+        Ok(_) => {
+            let _ = std::fs::remove_file(&probe);
+            Ok(created)
+        }
+        Err(e) => {
+            if created {
+                let _ = std::fs::remove_dir(dir);
+            }
+            Err(format!(
+                "cannot write into the output directory {}: {e} (nothing was built)",
+                dir.display()
+            ))
+        }
+    }
 }
 
 /// Runs `rcagd gallery` on the recipes named in `only` (all when empty); returns the
@@ -320,11 +432,15 @@ pub fn run(out: &Path, quiet: bool, only: &[String]) -> u8 {
             return EXIT_INPUT;
         }
     };
-    // An output directory that cannot be created fails before the (long) build.
-    if let Err(e) = output::create_dir(out) {
-        errln!("error: {e}");
-        return EXIT_INPUT;
-    }
+    // An output directory that cannot be created or written fails before the (long)
+    // build; one this run created is removed again if the gallery is not written.
+    let created = match check_writable(out) {
+        Ok(c) => c,
+        Err(e) => {
+            errln!("error: {e}");
+            return EXIT_INPUT;
+        }
+    };
     let pb = progress_bar(quiet);
     let built = build_all(
         &recipes,
@@ -350,6 +466,9 @@ pub fn run(out: &Path, quiet: bool, only: &[String]) -> u8 {
     let export_errors = match written {
         Ok(e) => e,
         Err(e) => {
+            if created {
+                let _ = std::fs::remove_dir(out);
+            }
             errln!("error: {e}");
             return EXIT_INPUT;
         }

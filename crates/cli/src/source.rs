@@ -128,7 +128,7 @@ impl SourceFile {
         let start = self.clamp(span.start);
         let end = self.clamp(span.end.max(span.start));
         let pos = self.line_col(start);
-        let line_text = self.line_text(pos.line).to_string();
+        let line_text = self.line_text(pos.line);
         // Caret width: the span's characters on its first line, at least one.
         let line_end_col = line_text.chars().count() + 1;
         let end_pos = self.line_col(end);
@@ -143,17 +143,78 @@ impl SourceFile {
             line: pos.line,
             column: pos.column,
             message: message.into(),
-            snippet: Some(Snippet { line_text, width }),
+            snippet: Some(Box::new(Snippet::window(line_text, pos.column - 1, width))),
             notes: Vec::new(),
         }
     }
 }
 
-/// The source line shown under a diagnostic.
+/// The most characters of user text (a name, a value, a source line) that a message
+/// shows; longer text is cut by [`clip`].
+pub const MAX_SHOWN: usize = 200;
+
+/// `s` itself when it has at most [`MAX_SHOWN`] characters, else its first
+/// [`MAX_SHOWN`] characters followed by `… (N bytes)`: error output stays bounded
+/// whatever the user wrote (a 10 MB object name is not echoed).
+pub fn clip(s: &str) -> std::borrow::Cow<'_, str> {
+    clip_to(s, MAX_SHOWN)
+}
+
+/// The most characters of one line of a message or note: a safety net for user text
+/// that reaches a message without [`clip`] (an op's list of names is longer than
+/// [`MAX_SHOWN`]).
+pub const MAX_LINE: usize = 2000;
+
+/// `s` cut after `max` characters, with `… (N bytes)`.
+fn clip_to(s: &str, max: usize) -> std::borrow::Cow<'_, str> {
+    match s.char_indices().nth(max) {
+        None => std::borrow::Cow::Borrowed(s),
+        Some((cut, _)) => std::borrow::Cow::Owned(format!("{}… ({} bytes)", &s[..cut], s.len())),
+    }
+}
+
+/// The source line shown under a diagnostic: at most [`MAX_SHOWN`] characters of it
+/// around the caret (`…` marks a cut).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Snippet {
     line_text: String,
+    /// 0-based character position of the caret in `line_text`.
+    caret: usize,
     width: usize,
+}
+
+impl Snippet {
+    /// The window of `line` shown for a caret at character `col` (0-based) of `width`
+    /// characters.
+    fn window(line: &str, col: usize, width: usize) -> Snippet {
+        let n = line.chars().count();
+        if n <= MAX_SHOWN {
+            return Snippet {
+                line_text: line.to_string(),
+                caret: col,
+                width,
+            };
+        }
+        // a little context before the caret, the rest after it
+        let first = col
+            .saturating_sub(MAX_SHOWN / 5)
+            .min(n.saturating_sub(MAX_SHOWN));
+        let last = (first + MAX_SHOWN).min(n);
+        let mut text = String::new();
+        if first > 0 {
+            text.push('…');
+        }
+        text.extend(line.chars().skip(first).take(last - first));
+        if last < n {
+            text.push('…');
+        }
+        let caret = col.saturating_sub(first) + usize::from(first > 0);
+        Snippet {
+            line_text: text,
+            caret,
+            width: width.min(last.saturating_sub(col)).max(1),
+        }
+    }
 }
 
 /// A located error message about an input file.
@@ -167,7 +228,7 @@ pub struct Diagnostic {
     pub column: usize,
     /// The main message.
     pub message: String,
-    snippet: Option<Snippet>,
+    snippet: Option<Box<Snippet>>,
     /// Extra lines: hints, expected parameters, the list of ops.
     pub notes: Vec<String>,
 }
@@ -203,7 +264,10 @@ impl fmt::Display for Diagnostic {
         writeln!(
             f,
             "{}:{}:{}: error: {}",
-            self.file, self.line, self.column, self.message
+            clip_to(&self.file, MAX_LINE),
+            self.line,
+            self.column,
+            clip_lines(&self.message)
         )?;
         if let Some(s) = &self.snippet {
             let num = self.line.to_string();
@@ -216,15 +280,10 @@ impl fmt::Display for Diagnostic {
                 .collect();
             writeln!(f, "{pad} |")?;
             writeln!(f, "{num} | {text}")?;
-            writeln!(
-                f,
-                "{pad} | {}{}",
-                " ".repeat(self.column.saturating_sub(1)),
-                "^".repeat(s.width)
-            )?;
+            writeln!(f, "{pad} | {}{}", " ".repeat(s.caret), "^".repeat(s.width))?;
         }
         for n in &self.notes {
-            for (i, l) in n.lines().enumerate() {
+            for (i, l) in n.lines().map(|l| clip_to(l, MAX_LINE)).enumerate() {
                 if i == 0 {
                     writeln!(f, "  = {l}")?;
                 } else {
@@ -234,6 +293,52 @@ impl fmt::Display for Diagnostic {
         }
         Ok(())
     }
+}
+
+/// The most diagnostics [`render_all`] prints for one input.
+pub const MAX_DIAGNOSTICS: usize = 50;
+
+/// Renders diagnostics for the terminal, bounded whatever the input: at most
+/// [`MAX_DIAGNOSTICS`] of them, then `… and N more errors`; a note of several lines
+/// (an op's parameter list) is printed in full once, later repeats as its first line
+/// with `(as above)`; a final count when there is more than one.
+pub fn render_all(diags: &[Diagnostic]) -> String {
+    let mut out = String::new();
+    let mut shown: std::collections::HashSet<&str> = std::collections::HashSet::new();
+    for d in diags.iter().take(MAX_DIAGNOSTICS) {
+        let mut d2 = d.clone();
+        d2.notes = d
+            .notes
+            .iter()
+            .map(|n| {
+                if !n.contains('\n') || shown.insert(n.as_str()) {
+                    n.clone()
+                } else {
+                    let first = n.lines().next().unwrap_or("");
+                    format!("{} (as above)", first.trim_end_matches(':'))
+                }
+            })
+            .collect();
+        out.push_str(&d2.to_string());
+    }
+    if diags.len() > MAX_DIAGNOSTICS {
+        out.push_str(&format!(
+            "… and {} more errors (the first {MAX_DIAGNOSTICS} are shown)\n",
+            diags.len() - MAX_DIAGNOSTICS
+        ));
+    }
+    if diags.len() > 1 {
+        out.push_str(&format!("{} errors\n", diags.len()));
+    }
+    out
+}
+
+/// Every line of `s` cut after [`MAX_LINE`] characters.
+fn clip_lines(s: &str) -> String {
+    s.lines()
+        .map(|l| clip_to(l, MAX_LINE))
+        .collect::<Vec<_>>()
+        .join("\n")
 }
 
 /// The edit distance between two strings (for "did you mean …?" suggestions).
@@ -293,6 +398,82 @@ mod tests {
         assert!(s.starts_with("r.toml:1:6: error: unknown op\n"), "{s}");
         assert!(s.contains("  |      ^^^^^^^\n"), "{s}");
         assert!(s.contains("  = did you mean?"), "{s}");
+    }
+
+    #[test]
+    fn long_text_is_clipped_around_the_caret() {
+        let name = "é".repeat(1_000_000);
+        let f = SourceFile::new("r.toml", format!("op = 1\nname = \"{name}\" # tail\n"));
+        let d = f.error(
+            Span::new(14, 16 + name.len()),
+            format!("bad name {}", clip(&name)),
+        );
+        let s = d.to_string();
+        assert!(s.len() < 3 * 4 * MAX_SHOWN, "{} bytes", s.len());
+        assert!(s.starts_with("r.toml:2:8: error: bad name éé"), "{s}");
+        assert!(s.contains(&format!("… ({} bytes)\n", name.len())), "{s}");
+        // the window starts at the line's start (the caret is near it) and is cut after
+        let lines: Vec<&str> = s.lines().collect();
+        assert!(
+            lines[2].starts_with("2 | name = \"éé") && lines[2].ends_with('…'),
+            "{s}"
+        );
+        assert_eq!(
+            lines[3],
+            format!("  |        {}", "^".repeat(MAX_SHOWN - 7))
+        );
+        // a caret far into a long line: the window moves to it, marked at both ends
+        let long = format!("{}X{}", "a".repeat(5000), "b".repeat(5000));
+        let f = SourceFile::new("r.toml", long.clone());
+        let s = f.error(Span::new(5000, 5001), "here").to_string();
+        let lines: Vec<&str> = s.lines().collect();
+        let caret = lines[3].find('^').expect("caret");
+        assert_eq!(lines[2].chars().nth(caret), Some('X'), "{s}");
+        assert!(
+            lines[2].starts_with("1 | …a") && lines[2].ends_with("b…"),
+            "{s}"
+        );
+        assert_eq!(clip("short"), "short");
+        // the safety net: a message line is cut after MAX_LINE characters
+        let s = f
+            .error(Span::new(0, 1), "m".repeat(10 * MAX_LINE))
+            .to_string();
+        assert!(
+            s.starts_with(&format!(
+                "r.toml:1:1: error: {}… (20000 bytes)\n",
+                "m".repeat(MAX_LINE)
+            )),
+            "{s}"
+        );
+    }
+
+    #[test]
+    fn many_diagnostics_are_capped_and_long_notes_not_repeated() {
+        let f = SourceFile::new("r.toml", "k = 1\n".repeat(20_000));
+        let list = "parameters of `circle`:\n  radius: number".to_string();
+        let diags: Vec<Diagnostic> = (0..20_000)
+            .map(|i| {
+                f.error(Span::new(6 * i, 6 * i + 1), "unknown parameter `k`")
+                    .note("did you mean `x`?")
+                    .note(list.clone())
+            })
+            .collect();
+        let s = render_all(&diags);
+        assert_eq!(
+            s.matches("error: unknown parameter").count(),
+            MAX_DIAGNOSTICS
+        );
+        assert_eq!(s.matches("radius: number").count(), 1, "{s}");
+        assert_eq!(
+            s.matches("parameters of `circle` (as above)").count(),
+            MAX_DIAGNOSTICS - 1
+        );
+        assert_eq!(s.matches("did you mean").count(), MAX_DIAGNOSTICS);
+        assert!(
+            s.ends_with("… and 19950 more errors (the first 50 are shown)\n20000 errors\n"),
+            "{s}"
+        );
+        assert_eq!(render_all(&diags[..1]), diags[0].to_string());
     }
 
     #[test]

@@ -178,6 +178,23 @@ fn check_exponent(text: &str, span: Span) -> Result<(), ValueError> {
     Ok(())
 }
 
+/// The message for `text` that [`parse_rational`] refused: the reason it gives (a zero
+/// denominator said as such, the text shown once and [`clip`](crate::source::clip)ped)
+/// and how to write a number.
+fn number_message(text: &str, e: &rcagd_algebra::AlgebraError) -> String {
+    let shown = crate::source::clip(text);
+    match e {
+        rcagd_algebra::AlgebraError::ParseNumber { reason, .. } if reason == "zero denominator" => {
+            format!("{shown:?}: zero denominator (a fraction p/q needs q ≠ 0)")
+        }
+        rcagd_algebra::AlgebraError::ParseNumber { reason, .. } => format!(
+            "not a number: {shown:?} ({reason}; write an integer \"12\", a fraction \"3/7\" or a \
+             decimal \"-0.125\", \"1e-3\")"
+        ),
+        other => format!("not a number: {shown:?} ({other})"),
+    }
+}
+
 /// Reads an exact number: a number literal (from its source text) or a string.
 ///
 /// # Errors
@@ -194,11 +211,13 @@ pub fn number(v: &RecipeValue) -> Result<Rational, ValueError> {
             if lower.contains("inf") || lower.contains("nan") {
                 return Err(err(
                     v.span,
-                    format!("not a number: `{}` (infinities and NaN are not exact numbers)", n.raw),
+                    format!(
+                        "not a number: `{}` (infinities and NaN are not exact numbers)",
+                        crate::source::clip(&n.raw)
+                    ),
                 ));
             }
-            parse_rational(&n.raw)
-                .map_err(|e| err(v.span, format!("not a number: `{}` ({e})", n.raw)))
+            parse_rational(&n.raw).map_err(|e| err(v.span, number_message(&n.raw, &e)))
         }
         ValueKind::Number(n) => {
             let digits = n.raw.replace('_', "");
@@ -206,15 +225,7 @@ pub fn number(v: &RecipeValue) -> Result<Rational, ValueError> {
                 .map(Rational::from)
                 .map_err(|_| err(v.span, format!("not a number: `{}`", v.preview())))
         }
-        ValueKind::String(s) => parse_rational(s).map_err(|_| {
-            err(
-                v.span,
-                format!(
-                    "not a number: {:?} (write an integer \"12\", a fraction \"3/7\" or a decimal \"-0.125\", \"1e-3\")",
-                    s
-                ),
-            )
-        }),
+        ValueKind::String(s) => parse_rational(s).map_err(|e| err(v.span, number_message(s, &e))),
         _ => Err(wrong_type(v, "a number")),
     }
 }
@@ -400,7 +411,10 @@ pub fn convert(kind: ParamKind, v: &RecipeValue) -> Result<Value, ValueError> {
         ParamKind::Choice(choices) => match &v.kind {
             ValueKind::String(s) if choices.contains(&s.as_str()) => Value::Str(s.clone()),
             ValueKind::String(s) => {
-                return Err(err(v.span, format!("{s:?} is not {}", kind.type_name())))
+                return Err(err(
+                    v.span,
+                    format!("{:?} is not {}", crate::source::clip(s), kind.type_name()),
+                ))
             }
             _ => return Err(wrong_type(v, &kind.type_name())),
         },

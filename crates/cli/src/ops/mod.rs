@@ -316,10 +316,21 @@ impl OpArgs {
         }
     }
 
-    /// An optional list of numbers.
+    /// An optional list of numbers. An empty list is refused, naming the parameter, when
+    /// the parameter is required or has a non-empty default (`function = []`,
+    /// `radius = []`): the op would otherwise fail with an unrelated geometric message.
     pub fn opt_numbers(&self, param: &str) -> Result<Option<Vec<Rational>>, OpError> {
         match self.get(param) {
             None => Ok(None),
+            Some(Value::Numbers(p)) if p.is_empty() => match self.op.param(param) {
+                Some(spec) if spec.required || spec.default.is_some_and(|d| d.trim() != "[]") => {
+                    Err(OpError::param(
+                        spec.name,
+                        format!("`{}` is empty: give at least one number", spec.name),
+                    ))
+                }
+                _ => Ok(Some(Vec::new())),
+            },
             Some(Value::Numbers(p)) => Ok(Some(p.clone())),
             Some(_) => Err(self.missing(param)),
         }

@@ -146,7 +146,7 @@ impl Parser<'_> {
         self.err(
             start,
             end,
-            format!("unknown literal `{word}` (expected true, false, null, a number, a string, an array or an object)"),
+            format!("unknown literal `{}` (expected true, false, null, a number, a string, an array or an object)", crate::source::clip(word)),
         )
     }
 
@@ -230,7 +230,11 @@ impl Parser<'_> {
                 let key = self.string()?;
                 let key_span = Span::new(key_start, self.pos);
                 if entries.iter().any(|e| e.key == key) {
-                    return Err(self.err(key_start, self.pos, format!("duplicate key {key:?}")));
+                    return Err(self.err(
+                        key_start,
+                        self.pos,
+                        format!("duplicate key {:?}", crate::source::clip(&key)),
+                    ));
                 }
                 self.skip_ws();
                 if self.peek() != Some(b':') {

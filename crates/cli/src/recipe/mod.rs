@@ -19,7 +19,7 @@ pub mod json;
 pub mod toml;
 pub mod tree;
 
-use crate::source::{closest, Diagnostic, SourceFile, Span};
+use crate::source::{clip, closest, Diagnostic, SourceFile, Span};
 pub use tree::{Entry, NumberText, RecipeValue, ValueKind};
 
 /// The two recipe syntaxes.
@@ -148,19 +148,38 @@ impl Recipe {
         format: Option<Format>,
     ) -> Result<Recipe, Vec<Diagnostic>> {
         let file = SourceFile::new(file_name, text);
+        let by_extension = format.is_none() && Format::from_extension(file_name).is_some();
         let format = format
             .or_else(|| Format::from_extension(file_name))
             .unwrap_or_else(|| Format::sniff(text));
-        let root = match format {
+        let parse = |f: Format| match f {
             Format::Toml => toml::parse(text),
             Format::Json => json::parse(text),
-        }
-        .map_err(|e| {
-            let what = match format {
-                Format::Toml => "TOML",
-                Format::Json => "JSON",
+        };
+        let name = |f: Format| match f {
+            Format::Toml => "TOML",
+            Format::Json => "JSON",
+        };
+        let root = parse(format).map_err(|e| {
+            let mut d = file.error(
+                e.span,
+                format!("{} syntax error: {}", name(format), e.message),
+            );
+            // a `.json` file holding TOML (or the reverse): the extension chose the format
+            let other = match format {
+                Format::Toml => Format::Json,
+                Format::Json => Format::Toml,
             };
-            vec![file.error(e.span, format!("{what} syntax error: {}", e.message))]
+            if by_extension && parse(other).is_ok() {
+                d = d.note(format!(
+                    "the file's extension chose {}, but the file reads as {}: rename it to \
+                     `.{}`",
+                    name(format),
+                    name(other),
+                    name(other).to_ascii_lowercase()
+                ));
+            }
+            vec![d]
         })?;
         let objects = objects(&file, &root, format)?;
         Ok(Recipe { file, objects })
@@ -193,7 +212,10 @@ fn objects(
         if e.key == "object" {
             list = Some(e);
         } else {
-            let mut d = file.error(e.key_span, format!("unknown top-level key `{}`", e.key));
+            let mut d = file.error(
+                e.key_span,
+                format!("unknown top-level key `{}`", clip(&e.key)),
+            );
             if let Some(s) = closest(&e.key, ["object"]) {
                 d = d.note(format!("did you mean `{s}`?"));
             }
@@ -239,7 +261,7 @@ fn objects(
                     let first = file.line_col(first.start);
                     let at = item.get("name").map_or(item.span, |e| e.value.span);
                     diags.push(
-                        file.error(at, format!("duplicate object name {:?}", o.name))
+                        file.error(at, format!("duplicate object name {:?}", clip(&o.name)))
                             .note(format!(
                                 "the first object called {:?} is at line {}, column {}; names must be unique",
                                 o.name, first.line, first.column
@@ -335,6 +357,28 @@ mod tests {
         }
         let p = t.file.line_col(t.objects[0].op_key_span.start);
         assert_eq!((p.line, p.column), (3, 1));
+    }
+
+    #[test]
+    fn extension_that_chose_the_wrong_format_is_named() {
+        let toml_text = "[[object]]\nname = \"c\"\nop = \"circle\"\nradius = 1\n";
+        let json_text = r#"{"object": [{"name": "c", "op": "circle", "radius": 1}]}"#;
+        let s = first_error("r.json", toml_text).to_string();
+        assert!(s.contains("JSON syntax error"), "{s}");
+        assert!(
+            s.contains(
+                "the file's extension chose JSON, but the file reads as TOML: rename it to `.toml`"
+            ),
+            "{s}"
+        );
+        let s = first_error("r.toml", json_text).to_string();
+        assert!(s.contains("TOML syntax error"), "{s}");
+        assert!(s.contains("reads as JSON: rename it to `.json`"), "{s}");
+        // broken in both formats, or the format forced: no hint
+        let s = first_error("r.json", "[[object]\n").to_string();
+        assert!(!s.contains("extension"), "{s}");
+        let e = Recipe::parse("r.json", toml_text, Some(Format::Json)).expect_err("JSON");
+        assert!(!e[0].to_string().contains("extension"), "{}", e[0]);
     }
 
     #[test]

@@ -109,7 +109,7 @@ impl RecipeValue {
                 16 => format!("0x{}", n.raw),
                 8 => format!("0o{}", n.raw),
                 2 => format!("0b{}", n.raw),
-                _ => n.raw.clone(),
+                _ => crate::source::clip(&n.raw).into_owned(),
             },
             ValueKind::String(s) => {
                 let short: String = s.chars().take(40).collect();

@@ -8,6 +8,7 @@ mod common;
 mod docs;
 mod exchange_weights;
 mod fuzz;
+mod messages;
 mod ndim;
 mod pipes;
 mod quadric_ops;
