@@ -470,6 +470,72 @@ impl<F: Scalar> crate::Certified for SegreInterpolant<F> {
     }
 }
 
+/// The Segre factors `(Uᵢ, Vᵢ)` of points `kᵢ ∥ Uᵢ⊗Vᵢ` on `H`, after checking the
+/// interpolation data: as many parameters as points (at least one), every point on `H`,
+/// no two parameters and no two points equal.
+///
+/// # Errors
+/// [`QuadricError::Dimension`], [`QuadricError::NotOnQuadric`],
+/// [`QuadricError::RepeatedParameters`], [`QuadricError::RepeatedPoints`].
+#[allow(clippy::type_complexity)]
+pub(crate) fn checked_segre_factors<F: Scalar>(
+    points: &[Hom<F>],
+    params: &[F],
+) -> Result<(Vec<[F; 2]>, Vec<[F; 2]>), QuadricError> {
+    if points.len() != params.len() || points.is_empty() {
+        return Err(QuadricError::Dimension(format!(
+            "{} points but {} parameters",
+            points.len(),
+            params.len()
+        )));
+    }
+    let q = paraboloid_matrix::<F>();
+    let mut us = Vec::new();
+    let mut vs = Vec::new();
+    for (i, k) in points.iter().enumerate() {
+        check_on_quadric(&q, k, &format!("point {i}"), "H")?;
+        for j in 0..i {
+            if helpers::negligible(
+                &(params[i].clone() - params[j].clone()),
+                helpers::magnitude(std::slice::from_ref(&params[i])),
+            ) {
+                return Err(QuadricError::RepeatedParameters(j, i));
+            }
+            if helpers::parallel(k, &points[j]) {
+                return Err(QuadricError::RepeatedPoints(j, i));
+            }
+        }
+        let (u, v) = segre_factors(k);
+        us.push(u);
+        vs.push(v);
+    }
+    Ok((us, vs))
+}
+
+/// `y = u⊗v = (u0v0, u1v0, u0v1, u1v1)` in Bernstein form of degree `r + s` (product
+/// rule `C(r,i)·C(s,j)/C(r+s,i+j)`) for binary forms `u`, `v` of degrees `r`, `s`
+/// given by their Bernstein coefficients (both non-empty).
+pub(crate) fn segre_product<F: Scalar>(u: &[[F; 2]], v: &[[F; 2]]) -> Vec<[F; 4]> {
+    let (r, s) = (u.len().saturating_sub(1), v.len().saturating_sub(1));
+    let mut pts = vec![helpers::zero4::<F>(); r + s + 1];
+    for (i, ui) in u.iter().enumerate() {
+        for (j, vj) in v.iter().enumerate() {
+            let w = helpers::binom::<F>(r, i) * helpers::binom::<F>(s, j)
+                / helpers::binom::<F>(r + s, i + j);
+            let prod = [
+                ui[0].clone() * vj[0].clone(),
+                ui[1].clone() * vj[0].clone(),
+                ui[0].clone() * vj[1].clone(),
+                ui[1].clone() * vj[1].clone(),
+            ];
+            for (o, x) in pts[i + j].iter_mut().zip(prod) {
+                *o += w.clone() * x;
+            }
+        }
+    }
+    pts
+}
+
 /// The lowest-degree binary polynomial `w(t)` (Bernstein coefficients) with
 /// `w(tᵢ) ∥ Wᵢ` and `w(tᵢ) ≠ 0` for all `i`.
 fn lowest_binary<F: Scalar>(targets: &[[F; 2]], params: &[F]) -> Option<Vec<[F; 2]>> {
@@ -521,57 +587,14 @@ pub fn interpolate_segre<F: Scalar>(
     points: &[Hom<F>],
     params: &[F],
 ) -> Result<SegreInterpolant<F>, QuadricError> {
-    if points.len() != params.len() || points.is_empty() {
-        return Err(QuadricError::Dimension(format!(
-            "{} points but {} parameters",
-            points.len(),
-            params.len()
-        )));
-    }
-    let q = paraboloid_matrix::<F>();
-    let mut us = Vec::new();
-    let mut vs = Vec::new();
-    for (i, k) in points.iter().enumerate() {
-        check_on_quadric(&q, k, &format!("point {i}"), "H")?;
-        for j in 0..i {
-            if helpers::negligible(
-                &(params[i].clone() - params[j].clone()),
-                helpers::magnitude(std::slice::from_ref(&params[i])),
-            ) {
-                return Err(QuadricError::RepeatedParameters(j, i));
-            }
-            if helpers::parallel(k, &points[j]) {
-                return Err(QuadricError::RepeatedPoints(j, i));
-            }
-        }
-        let (u, v) = segre_factors(k);
-        us.push(u);
-        vs.push(v);
-    }
+    let (us, vs) = checked_segre_factors(points, params)?;
     let none = |what: &str| QuadricError::NoInterpolant {
         degree: points.len(),
         reason: format!("no admissible {what} factor"),
     };
     let u = lowest_binary(&us, params).ok_or_else(|| none("u"))?;
     let v = lowest_binary(&vs, params).ok_or_else(|| none("v"))?;
-    // y = (u0v0, u1v0, u0v1, u1v1) by the Bernstein product rule
-    let (r, s) = (u.len() - 1, v.len() - 1);
-    let mut pts = vec![helpers::zero4::<F>(); r + s + 1];
-    for (i, ui) in u.iter().enumerate() {
-        for (j, vj) in v.iter().enumerate() {
-            let w = helpers::binom::<F>(r, i) * helpers::binom::<F>(s, j)
-                / helpers::binom::<F>(r + s, i + j);
-            let prod = [
-                ui[0].clone() * vj[0].clone(),
-                ui[1].clone() * vj[0].clone(),
-                ui[0].clone() * vj[1].clone(),
-                ui[1].clone() * vj[1].clone(),
-            ];
-            for (o, x) in pts[i + j].iter_mut().zip(prod) {
-                *o += w.clone() * x;
-            }
-        }
-    }
+    let pts = segre_product(&u, &v);
     let curve =
         rcagd_geom::BezierCurve::from_homogeneous(pts.into_iter().map(|p| p.to_vec()).collect())?;
     Ok(SegreInterpolant {

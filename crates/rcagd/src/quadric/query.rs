@@ -24,7 +24,7 @@
 use super::helpers::{self, fmt_scalar, fmt_vec};
 use super::image::{certify_curve_on_quadric, certify_patch_on_quadric, pick_member};
 use super::interpolation::{interpolate_lowest_degree, HermiteDatum, Interpolant};
-use super::paraboloid::{paraboloid_matrix, segre_factors, tau_inverse};
+use super::paraboloid::{checked_segre_factors, paraboloid_matrix, segre_product, tau_inverse};
 use super::sphere_patch::{miquel_residuals, second_intersection};
 use super::stereographic::sigma_inverse;
 use super::{
@@ -835,33 +835,7 @@ pub fn psi_interpolate<F: Scalar>(
     degree: usize,
     u_degree: Option<usize>,
 ) -> Result<PsiInterpolant<F>, QuadricError> {
-    if points.len() != params.len() || points.is_empty() {
-        return Err(QuadricError::Dimension(format!(
-            "{} points but {} parameters",
-            points.len(),
-            params.len()
-        )));
-    }
-    let q = paraboloid_matrix::<F>();
-    let mut us = Vec::new();
-    let mut vs = Vec::new();
-    for (i, k) in points.iter().enumerate() {
-        check_on_quadric(&q, k, &format!("point {i}"), "H")?;
-        for j in 0..i {
-            if helpers::negligible(
-                &(params[i].clone() - params[j].clone()),
-                helpers::magnitude(std::slice::from_ref(&params[i])),
-            ) {
-                return Err(QuadricError::RepeatedParameters(j, i));
-            }
-            if helpers::parallel(k, &points[j]) {
-                return Err(QuadricError::RepeatedPoints(j, i));
-            }
-        }
-        let (u, v) = segre_factors(k);
-        us.push(u);
-        vs.push(v);
-    }
+    let (us, vs) = checked_segre_factors(points, params)?;
     let none = |what: &str| QuadricError::NoInterpolant {
         degree,
         reason: format!("no admissible {what} factor"),
@@ -915,7 +889,7 @@ pub fn psi_interpolate<F: Scalar>(
             break;
         }
     }
-    let (r, s, u, v, u_dimension, v_dimension) = found.ok_or_else(|| QuadricError::NoInterpolant {
+    let (_, _, u, v, u_dimension, v_dimension) = found.ok_or_else(|| QuadricError::NoInterpolant {
         degree,
         reason: format!(
             "no split n = r + s with u of degree r ∈ {candidates:?} and v of degree s whose components are coprime (every solution of these degrees is a lower one times a common factor)"
@@ -923,22 +897,7 @@ pub fn psi_interpolate<F: Scalar>(
     })?;
     let u: Vec<[F; 2]> = u.chunks(2).map(|p| [p[0].clone(), p[1].clone()]).collect();
     let v: Vec<[F; 2]> = v.chunks(2).map(|p| [p[0].clone(), p[1].clone()]).collect();
-    let mut pts = vec![helpers::zero4::<F>(); r + s + 1];
-    for (i, ui) in u.iter().enumerate() {
-        for (j, vj) in v.iter().enumerate() {
-            let w = helpers::binom::<F>(r, i) * helpers::binom::<F>(s, j)
-                / helpers::binom::<F>(r + s, i + j);
-            let prod = [
-                ui[0].clone() * vj[0].clone(),
-                ui[1].clone() * vj[0].clone(),
-                ui[0].clone() * vj[1].clone(),
-                ui[1].clone() * vj[1].clone(),
-            ];
-            for (o, x) in pts[i + j].iter_mut().zip(prod) {
-                *o += w.clone() * x;
-            }
-        }
-    }
+    let pts = segre_product(&u, &v);
     let curve = BezierCurve::from_homogeneous(pts.into_iter().map(|p| p.to_vec()).collect())?;
     Ok(PsiInterpolant {
         u,
