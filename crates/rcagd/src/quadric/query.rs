@@ -375,6 +375,34 @@ fn image_quadric<F: Scalar>(q: &Mat4<F>, inv: &Mat4<F>) -> Mat4<F> {
     helpers::mat_mul(&helpers::transpose(inv), &helpers::mat_mul(q, inv))
 }
 
+/// With a quadric `Q` that the object lies on (`on` certifies it), `(Q, Q')` for the
+/// image quadric `Q' = A⁻ᵀ Q A⁻¹` (`inv = A⁻¹`); `None` without a quadric.
+///
+/// # Errors
+/// [`QuadricError::NotOnQuadric`] naming `what` and `describe()` if `on` fails.
+#[allow(clippy::type_complexity)]
+fn quadric_and_image<F: Scalar>(
+    quadric: Option<&Mat4<F>>,
+    inv: &Mat4<F>,
+    on: impl FnOnce(&Mat4<F>) -> Certificate,
+    what: &str,
+    describe: impl FnOnce() -> String,
+) -> Result<Option<(Mat4<F>, Mat4<F>)>, QuadricError> {
+    let Some(q) = quadric else {
+        return Ok(None);
+    };
+    let c = on(q);
+    if !c.holds {
+        return Err(QuadricError::NotOnQuadric {
+            what: what.into(),
+            point: describe(),
+            quadric: "the given quadric".into(),
+            residual: c.residual.unwrap_or_default(),
+        });
+    }
+    Ok(Some((q.clone(), image_quadric(q, inv))))
+}
+
 /// The image of a space curve (homogeneous `(w, wx, wy, wz)`) under `X ↦ A X`; with a
 /// quadric `Q` that the curve lies on, the image quadric `Q'`.
 ///
@@ -394,21 +422,13 @@ pub fn collineation_curve<F: Scalar>(
         )));
     }
     let (det, inv) = regular(a)?;
-    let quadrics = match quadric {
-        Some(q) => {
-            let c = certify_curve_on_quadric(curve, q, "");
-            if !c.holds {
-                return Err(QuadricError::NotOnQuadric {
-                    what: "the curve".into(),
-                    point: format!("of degree {}", curve.degree()),
-                    quadric: "the given quadric".into(),
-                    residual: c.residual.unwrap_or_default(),
-                });
-            }
-            Some((q.clone(), image_quadric(q, &inv)))
-        }
-        None => None,
-    };
+    let quadrics = quadric_and_image(
+        quadric,
+        &inv,
+        |q| certify_curve_on_quadric(curve, q, ""),
+        "the curve",
+        || format!("of degree {}", curve.degree()),
+    )?;
     let image = curve.apply_projective(&rows(a))?;
     Ok(CollineationImage {
         matrix: a.clone(),
@@ -435,21 +455,13 @@ pub fn collineation_patch<F: Scalar>(
         )));
     }
     let (det, inv) = regular(a)?;
-    let quadrics = match quadric {
-        Some(q) => {
-            let c = certify_patch_on_quadric(patch, q, "");
-            if !c.holds {
-                return Err(QuadricError::NotOnQuadric {
-                    what: "the patch".into(),
-                    point: format!("of bidegree {:?}", patch.degree()),
-                    quadric: "the given quadric".into(),
-                    residual: c.residual.unwrap_or_default(),
-                });
-            }
-            Some((q.clone(), image_quadric(q, &inv)))
-        }
-        None => None,
-    };
+    let quadrics = quadric_and_image(
+        quadric,
+        &inv,
+        |q| certify_patch_on_quadric(patch, q, ""),
+        "the patch",
+        || format!("of bidegree {:?}", patch.degree()),
+    )?;
     let image = patch.apply_projective(&rows(a))?;
     Ok(CollineationImage {
         matrix: a.clone(),
