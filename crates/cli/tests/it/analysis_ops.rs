@@ -1,6 +1,6 @@
 //! The analysis ops `ph_preimage` and `ph_qiq`: values compared with hand derivations.
 
-use crate::common::{bin, stderr, temp_dir, write};
+use crate::common::{bin, build_json_in, read_json, stderr, temp_dir, write};
 use rcagd_algebra::{parse_rational, Rational};
 use serde_json::Value;
 
@@ -8,18 +8,7 @@ type Q = Rational;
 
 fn build_json(tag: &str, recipe: &str, name: &str) -> Value {
     let dir = temp_dir(tag);
-    let file = write(&dir, "r.toml", recipe);
-    let out = dir.join("out");
-    let o = bin()
-        .args(["build"])
-        .arg(&file)
-        .args(["--format", "json", "--out"])
-        .arg(&out)
-        .output()
-        .expect("run rcagd");
-    assert!(o.status.success(), "{}", stderr(&o));
-    let text = std::fs::read_to_string(out.join(format!("{name}.json"))).expect("json");
-    serde_json::from_str(&text).expect("valid json")
+    read_json(&build_json_in(&dir, recipe), name)
 }
 
 fn value<'a>(obj: &'a Value, name: &str) -> &'a Value {

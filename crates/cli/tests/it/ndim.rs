@@ -1,7 +1,7 @@
 //! The n-dimensional ops: the exact homogeneous map of a hypersurface of R⁴ read back from
 //! the JSON output and checked by hand, and named errors.
 
-use crate::common::{bin, stderr, temp_dir, write};
+use crate::common::{bin, build_json_in, read_json, stderr, temp_dir, write};
 use rcagd_algebra::{parse_rational, Rational, Scalar};
 use serde_json::Value;
 
@@ -55,19 +55,9 @@ project = [1, 2, 4]
 domain = ["-1/2", "1/2", "-1/2", "1/2"]
 distances = ["1/2"]
 "#;
-    let file = write(&dir, "r.toml", recipe);
-    let out = dir.join("out");
-    let o = bin()
-        .arg("build")
-        .arg(&file)
-        .args(["--format", "json", "--out"])
-        .arg(&out)
-        .output()
-        .expect("run rcagd");
-    assert!(o.status.success(), "{}", stderr(&o));
+    let out = build_json_in(&dir, recipe);
     for (name, r) in [("s", Q::from_ratio(3, 2)), ("s_offset1", Q::from(2))] {
-        let text = std::fs::read_to_string(out.join(format!("{name}.json"))).expect("json");
-        let obj: Value = serde_json::from_str(&text).expect("json");
+        let obj = read_json(&out, name);
         assert_eq!(obj["all_certificates_hold"], true);
         let u = [Q::from_ratio(1, 2), Q::from_ratio(-2, 3), Q::from(3)];
         let x = eval_map(&obj, &u);

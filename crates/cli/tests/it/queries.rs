@@ -1,7 +1,7 @@
 //! The query ops of the quadric and Laguerre topics: values compared with hand
 //! derivations (in the comments), and bad input refused with the parameter named.
 
-use crate::common::{bin, stderr, temp_dir, write};
+use crate::common::{bin, build_json_in, read_json, stderr, temp_dir, write};
 use serde_json::Value;
 
 fn build(tag: &str, recipe: &str) -> std::process::Output {
@@ -18,18 +18,7 @@ fn build(tag: &str, recipe: &str) -> std::process::Output {
 
 fn build_json(tag: &str, recipe: &str, name: &str) -> Value {
     let dir = temp_dir(tag);
-    let file = write(&dir, "r.toml", recipe);
-    let out = dir.join("out");
-    let o = bin()
-        .args(["build"])
-        .arg(&file)
-        .args(["--format", "json", "--out"])
-        .arg(&out)
-        .output()
-        .expect("run rcagd");
-    assert!(o.status.success(), "{}", stderr(&o));
-    let text = std::fs::read_to_string(out.join(format!("{name}.json"))).expect("json");
-    let v: Value = serde_json::from_str(&text).expect("valid json");
+    let v = read_json(&build_json_in(&dir, recipe), name);
     assert_eq!(v["all_certificates_hold"], true, "{v}");
     v
 }
