@@ -77,6 +77,21 @@ pub fn build_json_in(dir: &Path, recipe: &str) -> PathBuf {
     out
 }
 
+/// Writes `recipe` to `dir/r.toml`, runs `rcagd build r.toml --format json --out dir/out`,
+/// asserts that it is refused (exit code 2) and returns its stderr.
+pub fn build_refused(dir: &Path, recipe: &str) -> String {
+    let file = write(dir, "r.toml", recipe);
+    let o = bin()
+        .arg("build")
+        .arg(&file)
+        .args(["--format", "json", "--out"])
+        .arg(dir.join("out"))
+        .output()
+        .expect("run rcagd");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    stderr(&o)
+}
+
 /// The JSON document `out/<name>.json` written by a build.
 pub fn read_json(out: &Path, name: &str) -> serde_json::Value {
     let text = std::fs::read_to_string(out.join(format!("{name}.json"))).expect("json");
