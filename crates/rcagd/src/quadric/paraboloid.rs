@@ -540,28 +540,10 @@ pub(crate) fn segre_product<F: Scalar>(u: &[[F; 2]], v: &[[F; 2]]) -> Vec<[F; 4]
 /// `w(tᵢ) ∥ Wᵢ` and `w(tᵢ) ≠ 0` for all `i`.
 fn lowest_binary<F: Scalar>(targets: &[[F; 2]], params: &[F]) -> Option<Vec<[F; 2]>> {
     for r in 0..=targets.len() {
-        let rows: Vec<Vec<F>> = targets
-            .iter()
-            .zip(params)
-            .map(|(w, t)| {
-                let b = helpers::bernstein::<F>(r, t);
-                let mut row = vec![F::zero(); 2 * (r + 1)];
-                for (j, bj) in b.iter().enumerate() {
-                    row[2 * j] = bj.clone() * w[1].clone();
-                    row[2 * j + 1] = -(bj.clone() * w[0].clone());
-                }
-                row
-            })
-            .collect();
-        let basis = helpers::null_space(&rows, 2 * (r + 1));
+        let basis = binary_space(targets, params, r);
         let pick = super::image::pick_member(&basis, 1, |c| {
             params.iter().all(|t| {
-                let b = helpers::bernstein::<F>(r, t);
-                let mut w = [F::zero(), F::zero()];
-                for (j, bj) in b.iter().enumerate() {
-                    w[0] += bj.clone() * c[2 * j].clone();
-                    w[1] += bj.clone() * c[2 * j + 1].clone();
-                }
+                let w = binary_eval(c, r, t);
                 !helpers::all_negligible(&w, helpers::magnitude(c))
             })
         });
@@ -570,6 +552,35 @@ fn lowest_binary<F: Scalar>(targets: &[[F; 2]], params: &[F]) -> Option<Vec<[F; 
         }
     }
     None
+}
+
+/// The binary form with flattened Bernstein coefficients `c` (degree `r`) at `t`.
+pub(crate) fn binary_eval<F: Scalar>(c: &[F], r: usize, t: &F) -> [F; 2] {
+    let b = helpers::bernstein::<F>(r, t);
+    let mut w = [F::zero(), F::zero()];
+    for (j, bj) in b.iter().enumerate() {
+        w[0] += bj.clone() * c[2 * j].clone();
+        w[1] += bj.clone() * c[2 * j + 1].clone();
+    }
+    w
+}
+
+/// The solution space `{w of degree r : w(tᵢ) ∥ Wᵢ}` (flattened Bernstein coefficients).
+pub(crate) fn binary_space<F: Scalar>(targets: &[[F; 2]], params: &[F], r: usize) -> Vec<Vec<F>> {
+    let rows: Vec<Vec<F>> = targets
+        .iter()
+        .zip(params)
+        .map(|(w, t)| {
+            let b = helpers::bernstein::<F>(r, t);
+            let mut row = vec![F::zero(); 2 * (r + 1)];
+            for (j, bj) in b.iter().enumerate() {
+                row[2 * j] = bj.clone() * w[1].clone();
+                row[2 * j + 1] = -(bj.clone() * w[0].clone());
+            }
+            row
+        })
+        .collect();
+    helpers::null_space(&rows, 2 * (r + 1))
 }
 
 /// Interpolation on `H` of lowest degree, odd degrees included: the conditions

@@ -24,7 +24,9 @@
 use super::helpers::{self, fmt_scalar, fmt_vec};
 use super::image::{certify_curve_on_quadric, certify_patch_on_quadric, pick_member};
 use super::interpolation::{interpolate_lowest_degree, HermiteDatum, Interpolant};
-use super::paraboloid::{checked_segre_factors, paraboloid_matrix, segre_product, tau_inverse};
+use super::paraboloid::{
+    binary_eval, binary_space, checked_segre_factors, paraboloid_matrix, segre_product, tau_inverse,
+};
 use super::sphere_patch::{miquel_residuals, second_intersection};
 use super::stereographic::sigma_inverse;
 use super::{
@@ -761,34 +763,6 @@ impl<F: Scalar> PsiInterpolant<F> {
     pub fn free_parameters(&self) -> usize {
         self.u_dimension + self.v_dimension - 2
     }
-}
-
-fn binary_eval<F: Scalar>(c: &[F], r: usize, t: &F) -> [F; 2] {
-    let b = helpers::bernstein::<F>(r, t);
-    let mut w = [F::zero(), F::zero()];
-    for (j, bj) in b.iter().enumerate() {
-        w[0] += bj.clone() * c[2 * j].clone();
-        w[1] += bj.clone() * c[2 * j + 1].clone();
-    }
-    w
-}
-
-/// The solution space `{w of degree r : w(tᵢ) ∥ Wᵢ}` (flattened Bernstein coefficients).
-fn binary_space<F: Scalar>(targets: &[[F; 2]], params: &[F], r: usize) -> Vec<Vec<F>> {
-    let rows: Vec<Vec<F>> = targets
-        .iter()
-        .zip(params)
-        .map(|(w, t)| {
-            let b = helpers::bernstein::<F>(r, t);
-            let mut row = vec![F::zero(); 2 * (r + 1)];
-            for (j, bj) in b.iter().enumerate() {
-                row[2 * j] = bj.clone() * w[1].clone();
-                row[2 * j + 1] = -(bj.clone() * w[0].clone());
-            }
-            row
-        })
-        .collect();
-    helpers::null_space(&rows, 2 * (r + 1))
 }
 
 /// `true` if the binary form has no zero at the parameters and (exact scalars) its two
