@@ -31,6 +31,11 @@ const SLICE: ParamSpec = ParamSpec::optional(
     ParamKind::Numbers,
     "values of all parameters for the 3-D picture (the two `free` ones are ignored; default all 0)",
 );
+const DISTANCES: ParamSpec = ParamSpec::optional(
+    "distances",
+    ParamKind::Numbers,
+    "oriented offset distances d (x + d n); one extra object `<name>_offset<k>` per distance",
+);
 const FREE: ParamSpec = ParamSpec::with_default(
     "free",
     ParamKind::Numbers,
@@ -135,11 +140,7 @@ const PN_HYPERSURFACE: OpSpec = OpSpec {
             "terms [i, c, e₁, …, eₙ₋₁] of the polynomials aᵢ, i = 1 … n − 1 (default aᵢ = uᵢ)",
         ),
         ParamSpec::optional("c", ParamKind::Points, "terms [c, e₁, …, eₙ₋₁] of c (default 1)"),
-        ParamSpec::optional(
-            "distances",
-            ParamKind::Numbers,
-            "oriented offset distances d (x + d n); one extra object `<name>_offset<k>` per distance",
-        ),
+        DISTANCES,
         SLICE,
         FREE,
         PROJECT,
@@ -179,10 +180,7 @@ fn terms_poly(rows: &[Vec<Q>], nvars: usize, param: &'static str) -> Result<MPol
 }
 
 fn build_hypersurface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let n = usize::try_from(args.int("dimension")?)
-        .ok()
-        .filter(|n| (3..=6).contains(n))
-        .ok_or_else(|| OpError::param("dimension", "n must be 3 to 6"))?;
+    let n = dimension(args)?;
     let p = n - 1;
     let num = terms_poly(&args.points("support")?, p, "support")?;
     let den = match args.get("support_denominator") {
@@ -250,11 +248,7 @@ const HYPERCONE_ENVELOPE: OpSpec = OpSpec {
         ParamSpec::required("radius1", ParamKind::Numbers, "power coefficients in t of the signed radius r₁(t)"),
         ParamSpec::required("center2", ParamKind::Grid, "n rows: power coefficients in t of m₂(t)"),
         ParamSpec::required("radius2", ParamKind::Numbers, "power coefficients in t of r₂(t)"),
-        ParamSpec::optional(
-            "distances",
-            ParamKind::Numbers,
-            "oriented offset distances d (x + d n); one extra object `<name>_offset<k>` per distance",
-        ),
+        DISTANCES,
         SLICE,
         FREE,
         PROJECT,
@@ -303,11 +297,7 @@ const ANTICAUSTIC_ND: OpSpec = OpSpec {
             "terms [i, c, e₁, …, e_k] of the mirror's homogeneous coordinates Pᵢ (i = 0 the weight, 1 … n the coordinates)",
         ),
         ParamSpec::with_default("c", ParamKind::Number, "0", "the height c of the wavefront plane xₙ = c"),
-        ParamSpec::optional(
-            "distances",
-            ParamKind::Numbers,
-            "oriented offset distances d (x + d n); one extra object `<name>_offset<k>` per distance",
-        ),
+        DISTANCES,
         SLICE,
         FREE,
         PROJECT,
@@ -329,10 +319,7 @@ distances = ["1/4"]
 };
 
 fn build_anticaustic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let n = usize::try_from(args.int("dimension")?)
-        .ok()
-        .filter(|n| (3..=6).contains(n))
-        .ok_or_else(|| OpError::param("dimension", "n must be 3 to 6"))?;
+    let n = dimension(args)?;
     let k = usize::try_from(args.int("mirror_dimension")?)
         .ok()
         .filter(|k| (1..n).contains(k))
@@ -396,6 +383,14 @@ domain = ["1/4", "3/4", "1/4", "3/4"]
 "#,
     build: build_ruled_offset,
 };
+
+/// The parameter `dimension`: the ambient dimension n, 3 to 6.
+fn dimension(args: &OpArgs) -> Result<usize, OpError> {
+    usize::try_from(args.int("dimension")?)
+        .ok()
+        .filter(|n| (3..=6).contains(n))
+        .ok_or_else(|| OpError::param("dimension", "n must be 3 to 6"))
+}
 
 fn polys_t(rows: &[Vec<Q>]) -> Vec<MPoly<Q>> {
     rows.iter()

@@ -49,12 +49,7 @@ const SPHERE_FAMILY_ENVELOPE: OpSpec = OpSpec {
             ParamKind::Grid,
             "support function b of the planes f = D d: power coefficients b[i][j] of u^i v^j (hyperbolic: v only; parabolic: b_v = a_u; elliptic: default and required value ā(v))",
         ),
-        ParamSpec::with_default(
-            "domain",
-            ParamKind::Numbers,
-            "[\"1/4\", 1, \"1/4\", 1]",
-            "parameter rectangle [s0, s1, t0, t1] of Ω(s, t) = (2s, 2t, 1 − s² − t², 1 + s² + t²); the envelope must have no pole on it",
-        ),
+        DOMAIN,
         CENTRES,
     ],
     example: r#"[[object]]
@@ -128,6 +123,14 @@ fn envelope_object(
     Ok(out)
 }
 
+/// The parameter rectangle of the sphere-family ops.
+const DOMAIN: ParamSpec = ParamSpec::with_default(
+    "domain",
+    ParamKind::Numbers,
+    "[\"1/4\", 1, \"1/4\", 1]",
+    "parameter rectangle [s0, s1, t0, t1] of Ω(s, t) = (2s, 2t, 1 − s² − t², 1 + s² + t²); the envelope must have no pole on it",
+);
+
 const CENTRES: ParamSpec = ParamSpec::with_default(
     "centres",
     ParamKind::Bool,
@@ -155,12 +158,7 @@ const SPHERE_FAMILY_RECOGNIZE: OpSpec = OpSpec {
             "[[1]]",
             "common denominator W(u, v) of centre and radius (power coefficients of u^i v^j)",
         ),
-        ParamSpec::with_default(
-            "domain",
-            ParamKind::Numbers,
-            "[\"1/4\", 1, \"1/4\", 1]",
-            "parameter rectangle [s0, s1, t0, t1] of Ω(s, t) = (2s, 2t, 1 − s² − t², 1 + s² + t²); the envelope must have no pole on it",
-        ),
+        DOMAIN,
         CENTRES,
     ],
     example: r#"[[object]]

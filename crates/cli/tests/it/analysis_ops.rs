@@ -1,6 +1,6 @@
 //! The analysis ops `ph_preimage` and `ph_qiq`: values compared with hand derivations.
 
-use crate::common::{bin, stderr, temp_dir, write};
+use crate::common::{build_json_in, build_refused, read_json, temp_dir};
 use rcagd_algebra::{parse_rational, Rational};
 use serde_json::Value;
 
@@ -8,18 +8,7 @@ type Q = Rational;
 
 fn build_json(tag: &str, recipe: &str, name: &str) -> Value {
     let dir = temp_dir(tag);
-    let file = write(&dir, "r.toml", recipe);
-    let out = dir.join("out");
-    let o = bin()
-        .args(["build"])
-        .arg(&file)
-        .args(["--format", "json", "--out"])
-        .arg(&out)
-        .output()
-        .expect("run rcagd");
-    assert!(o.status.success(), "{}", stderr(&o));
-    let text = std::fs::read_to_string(out.join(format!("{name}.json"))).expect("json");
-    serde_json::from_str(&text).expect("valid json")
+    read_json(&build_json_in(&dir, recipe), name)
 }
 
 fn value<'a>(obj: &'a Value, name: &str) -> &'a Value {
@@ -143,20 +132,11 @@ fn ph_preimage_recovers_the_cubic_preimage() {
 #[test]
 fn ph_preimage_without_preimage_is_an_error() {
     let dir = temp_dir("preimage-err");
-    let file = write(
+    let e = build_refused(
         &dir,
-        "r.toml",
         "[[object]]\nname = \"c\"\nop = \"ph_preimage\"\npower = [[0, 0, 0], [0, 0, 0], [1, 0, 0]]\n",
     );
-    let o = bin()
-        .arg("build")
-        .arg(&file)
-        .args(["--format", "json", "--out"])
-        .arg(dir.join("out"))
-        .output()
-        .expect("run");
-    assert!(!o.status.success());
-    assert!(stderr(&o).contains("gcd(x', y', z')"), "{}", stderr(&o));
+    assert!(e.contains("gcd(x', y', z')"), "{e}");
 }
 
 fn poly_value(o: &Value, name: &str) -> Vec<Q> {

@@ -3,7 +3,6 @@
 //! on the `cyclographic_domain` rectangle; without it the error says so at `radius`.
 
 use rcagd_cli::build::build_recipe;
-use rcagd_cli::model::Geometry;
 use rcagd_cli::recipe::Recipe;
 
 const SPINE: &str = "[[object]]\nname = \"c\"\nop = \"canal_surface\"\npoints = [[0, 0, 0], [\"1/2\", 0, 0], [1, 0, 1]]\nradius = [0, 0, \"1/4\"]\n";
@@ -14,16 +13,7 @@ fn a_quadratic_family_over_q_sqrt_15_is_built_by_gamma() {
     let recipe = Recipe::parse("t.toml", &text, None).expect("recipe parses");
     let objs = build_recipe(&recipe, |_| {}).expect("recipe builds");
     let o = &objs[0];
-    assert!(matches!(o.geometry, Geometry::Patches(_)));
-    assert!(
-        o.certificates.iter().all(|c| c.holds && c.exact),
-        "{:#?}",
-        o.certificates
-    );
-    assert!(o
-        .certificates
-        .iter()
-        .any(|c| c.property.contains("Gruber §2.3")));
+    crate::common::assert_exact_patches_certifying(o, "Gruber §2.3");
 }
 
 #[test]

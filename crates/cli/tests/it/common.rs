@@ -62,6 +62,58 @@ pub fn run_ok(cmd: &mut Command) -> Output {
     out
 }
 
+/// Writes `recipe` to `dir/r.toml`, runs `rcagd build r.toml --format json --out dir/out`,
+/// asserts that it succeeds and returns the output directory.
+pub fn build_json_in(dir: &Path, recipe: &str) -> PathBuf {
+    let file = write(dir, "r.toml", recipe);
+    let out = dir.join("out");
+    run_ok(
+        bin()
+            .arg("build")
+            .arg(&file)
+            .args(["--format", "json", "--out"])
+            .arg(&out),
+    );
+    out
+}
+
+/// Writes `recipe` to `dir/r.toml`, runs `rcagd build r.toml --format json --out dir/out`,
+/// asserts that it is refused (exit code 2) and returns its stderr.
+pub fn build_refused(dir: &Path, recipe: &str) -> String {
+    let file = write(dir, "r.toml", recipe);
+    let o = bin()
+        .arg("build")
+        .arg(&file)
+        .args(["--format", "json", "--out"])
+        .arg(dir.join("out"))
+        .output()
+        .expect("run rcagd");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    stderr(&o)
+}
+
+/// The JSON document `out/<name>.json` written by a build.
+pub fn read_json(out: &Path, name: &str) -> serde_json::Value {
+    let text = std::fs::read_to_string(out.join(format!("{name}.json"))).expect("json");
+    serde_json::from_str(&text).expect("valid json")
+}
+
+/// Asserts that `o` is a patch set whose certificates all hold exactly, one of them
+/// naming `property`.
+pub fn assert_exact_patches_certifying(o: &rcagd_cli::model::Object, property: &str) {
+    assert!(matches!(o.geometry, rcagd_cli::model::Geometry::Patches(_)));
+    assert!(
+        o.certificates.iter().all(|c| c.holds && c.exact),
+        "{:#?}",
+        o.certificates
+    );
+    assert!(
+        o.certificates.iter().any(|c| c.property.contains(property)),
+        "no certificate names {property:?}: {:#?}",
+        o.certificates
+    );
+}
+
 pub fn stdout(o: &Output) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()
 }

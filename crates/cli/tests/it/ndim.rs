@@ -1,7 +1,7 @@
 //! The n-dimensional ops: the exact homogeneous map of a hypersurface of R⁴ read back from
 //! the JSON output and checked by hand, and named errors.
 
-use crate::common::{bin, stderr, temp_dir, write};
+use crate::common::{build_json_in, build_refused, read_json, temp_dir};
 use rcagd_algebra::{parse_rational, Rational, Scalar};
 use serde_json::Value;
 
@@ -55,19 +55,9 @@ project = [1, 2, 4]
 domain = ["-1/2", "1/2", "-1/2", "1/2"]
 distances = ["1/2"]
 "#;
-    let file = write(&dir, "r.toml", recipe);
-    let out = dir.join("out");
-    let o = bin()
-        .arg("build")
-        .arg(&file)
-        .args(["--format", "json", "--out"])
-        .arg(&out)
-        .output()
-        .expect("run rcagd");
-    assert!(o.status.success(), "{}", stderr(&o));
+    let out = build_json_in(&dir, recipe);
     for (name, r) in [("s", Q::from_ratio(3, 2)), ("s_offset1", Q::from(2))] {
-        let text = std::fs::read_to_string(out.join(format!("{name}.json"))).expect("json");
-        let obj: Value = serde_json::from_str(&text).expect("json");
+        let obj = read_json(&out, name);
         assert_eq!(obj["all_certificates_hold"], true);
         let u = [Q::from_ratio(1, 2), Q::from_ratio(-2, 3), Q::from(3)];
         let x = eval_map(&obj, &u);
@@ -86,21 +76,15 @@ distances = ["1/2"]
 #[test]
 fn ndim_errors_name_the_parameter() {
     let dir = temp_dir("ndim-errors");
-    let bad_dim = write(
+    let e = build_refused(
         &dir,
-        "a.toml",
         "[[object]]\nname = \"x\"\nop = \"pn_hypersurface\"\ndimension = 9\nsupport = [[1, 0, 0]]\n",
     );
-    let o = bin().arg("build").arg(&bad_dim).output().expect("run");
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("dimension"), "{}", stderr(&o));
+    assert!(e.contains("dimension"), "{e}");
     // the developable surface of the twisted cubic in R³: Theorem 5.2's excluded case
-    let dev = write(
+    let e = build_refused(
         &dir,
-        "b.toml",
         "[[object]]\nname = \"y\"\nop = \"ruled_manifold_offset\"\ndirectrix = [[0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]\ngenerators = [[1, 0, 0], [0, 2, 0], [0, 0, 3]]\ndistance = 1\n",
     );
-    let o = bin().arg("build").arg(&dev).output().expect("run");
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("not rational"), "{}", stderr(&o));
+    assert!(e.contains("not rational"), "{e}");
 }

@@ -443,20 +443,8 @@ fn seed_paraboloid_is_an_alias() {
     let text = format!(
         "[[object]]\nname = \"new\"\nop = \"quadric_patch_image\"\n{net}quadric = \"hyperbolic_paraboloid_xy\"\n\n[[object]]\nname = \"old\"\nop = \"quadric_patch_image\"\n{net}quadric = \"seed_paraboloid\"\n"
     );
-    let file = crate::common::write(&dir, "r.toml", &text);
-    let out = dir.join("out");
-    let o = crate::common::bin()
-        .arg("build")
-        .arg(&file)
-        .args(["--format", "json", "--out"])
-        .arg(&out)
-        .output()
-        .expect("run");
-    assert!(o.status.success(), "{}", crate::common::stderr(&o));
-    let read = |n: &str| -> serde_json::Value {
-        serde_json::from_str(&std::fs::read_to_string(out.join(format!("{n}.json"))).unwrap())
-            .unwrap()
-    };
+    let out = crate::common::build_json_in(&dir, &text);
+    let read = |n: &str| crate::common::read_json(&out, n);
     let (a, b) = (read("new"), read("old"));
     assert_eq!(a["control_points"], b["control_points"]);
     assert_eq!(a["all_certificates_hold"], true);

@@ -1,35 +1,12 @@
 //! The query ops of the quadric and Laguerre topics: values compared with hand
 //! derivations (in the comments), and bad input refused with the parameter named.
 
-use crate::common::{bin, stderr, temp_dir, write};
+use crate::common::{build_json_in, build_refused, read_json, temp_dir};
 use serde_json::Value;
-
-fn build(tag: &str, recipe: &str) -> std::process::Output {
-    let dir = temp_dir(tag);
-    let file = write(&dir, "r.toml", recipe);
-    bin()
-        .args(["build"])
-        .arg(&file)
-        .args(["--format", "json", "--out"])
-        .arg(dir.join("out"))
-        .output()
-        .expect("run rcagd")
-}
 
 fn build_json(tag: &str, recipe: &str, name: &str) -> Value {
     let dir = temp_dir(tag);
-    let file = write(&dir, "r.toml", recipe);
-    let out = dir.join("out");
-    let o = bin()
-        .args(["build"])
-        .arg(&file)
-        .args(["--format", "json", "--out"])
-        .arg(&out)
-        .output()
-        .expect("run rcagd");
-    assert!(o.status.success(), "{}", stderr(&o));
-    let text = std::fs::read_to_string(out.join(format!("{name}.json"))).expect("json");
-    let v: Value = serde_json::from_str(&text).expect("valid json");
+    let v = read_json(&build_json_in(&dir, recipe), name);
     assert_eq!(v["all_certificates_hold"], true, "{v}");
     v
 }
@@ -48,9 +25,7 @@ fn exact(obj: &Value, name: &str) -> String {
 }
 
 fn refused(tag: &str, recipe: &str, words: &[&str]) {
-    let o = build(tag, recipe);
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    let e = stderr(&o);
+    let e = build_refused(&temp_dir(tag), recipe);
     for w in words {
         assert!(e.contains(w), "{w:?} not in {e}");
     }

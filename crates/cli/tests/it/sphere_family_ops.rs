@@ -31,16 +31,7 @@ fn a_family_given_by_centres_and_radii_is_recognized_and_certified() {
     let objs = build(&text);
     assert_eq!(objs.len(), 1);
     let o = &objs[0];
-    assert!(matches!(o.geometry, Geometry::Patches(_)));
-    assert!(
-        o.certificates.iter().all(|c| c.holds && c.exact),
-        "{:#?}",
-        o.certificates
-    );
-    assert!(o
-        .certificates
-        .iter()
-        .any(|c| c.property.contains("recognized family is the given one")));
+    crate::common::assert_exact_patches_certifying(o, "recognized family is the given one");
     // the same envelope as the net recipe of §3.3.1
     let net = build(&format!(
         "{HEAD}op = \"sphere_family_envelope\"\nnet = \"hyperbolic\"\npoints = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 2, 0, 1], [0, 0, 1, 0]]\na = [[0], [0], [1]]\nb = [[0, 0, 1]]\ndomain = [\"1/4\", 1, \"1/4\", 1]\n"

@@ -34,8 +34,10 @@
 
 use super::sphere_family::{SphereFamilyEnvelope, SphereFamilyError, Subcase, Support};
 use crate::error::format_scalar;
-use crate::lines::net::{substitute_rational, CPoly, NetParameters};
-use crate::lines::plucker::{klein_form, reciprocal_product, swap, wedge};
+use crate::lines::net::{CPoly, NetParameters};
+use crate::lines::plucker::{
+    coordinate_plane_points, klein_form, reciprocal_product, swap, wedge, POINT_PAIRS,
+};
 use crate::lines::{ComplexPointRow, LineNet, PointRow};
 use crate::pn::poly::{cancel_gcd, div_exact, gcd2, identity_cert, mag, normalize_content};
 use crate::Certified;
@@ -260,27 +262,8 @@ fn same_family_certificates<F: Scalar>(
     params: &NetParameters<F>,
 ) -> Vec<Certificate> {
     let (phi, den) = env.phi();
-    let dx = phi
-        .iter()
-        .chain([den])
-        .filter_map(|p| p.degree_in(0))
-        .max()
-        .unwrap_or(0);
-    let dy = phi
-        .iter()
-        .chain([den])
-        .filter_map(|p| p.degree_in(1))
-        .max()
-        .unwrap_or(0);
-    let sub = |p: &MPoly<F>| {
-        substitute_rational(
-            p,
-            (&params.first, &params.first_den),
-            (&params.second, &params.second_den),
-            dx,
-            dy,
-        )
-    };
+    let d = NetParameters::degree_bounds(phi.iter().chain([den]));
+    let sub = |p: &MPoly<F>| params.substitute(p, d);
     let rd = sub(den);
     let names = ["x", "y", "z", "r"];
     (0..4)
@@ -406,32 +389,10 @@ fn polar_omega<F: Scalar>(g: &[MPoly<F>; 6]) -> [MPoly<F>; 6] {
     ]
 }
 
-/// The points `s₁ … s₄` of a line (its points in the coordinate planes), over any ring.
-fn coordinate_plane_points<R: rcagd_algebra::Ring>(l: &[R; 6]) -> [[R; 4]; 4] {
-    let [l1, l2, l3, l4, l5, l6] = l.clone();
-    let z = R::zero;
-    [
-        [z(), l1.clone(), l2.clone(), l3.clone()],
-        [-l1, z(), l6.clone(), -l5.clone()],
-        [-l2, -l6, z(), l4.clone()],
-        [-l3, l5, -l4, z()],
-    ]
-}
-
-/// The pairs `(i, j, k)`: `sᵢ ∧ sⱼ = ±l_k · l`.
-const PAIRS: [(usize, usize, usize); 6] = [
-    (0, 1, 0),
-    (0, 2, 1),
-    (0, 3, 2),
-    (1, 2, 5),
-    (1, 3, 4),
-    (2, 3, 3),
-];
-
 /// Two points spanning the real line `l`.
 fn real_points<F: Scalar>(l: &[F; 6]) -> Option<([F; 4], [F; 4])> {
     let s = coordinate_plane_points(l);
-    let best = PAIRS
+    let best = POINT_PAIRS
         .iter()
         .max_by(|a, b| {
             l[a.2]
@@ -453,7 +414,7 @@ type ComplexRow<F> = ([Cx<F>; 4], [Cx<F>; 4]);
 fn complex_points<F: Scalar>(re: &[F; 6], im: &[F; 6]) -> Option<ComplexRow<F>> {
     let sr = coordinate_plane_points(re);
     let si = coordinate_plane_points(im);
-    let (i, j, _) = PAIRS
+    let (i, j, _) = POINT_PAIRS
         .iter()
         .copied()
         .find(|p| !re[p.2].is_zero() || !im[p.2].is_zero())?;

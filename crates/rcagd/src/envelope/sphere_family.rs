@@ -57,8 +57,7 @@
 
 use crate::error::format_scalar;
 use crate::lines::net::{
-    cst2, fibration_certificate, omega_form, omega_parametrization, substitute_rational, CPoly,
-    NetParameters,
+    cst2, fibration_certificate, omega_form, omega_parametrization, CPoly, NetParameters,
 };
 use crate::lines::{
     AxisPosition, ComplexPointRow, LineNet, NetError, NetKind, PointRow, SqrtScalar,
@@ -462,18 +461,8 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
                 params.second_den = pair[1].clone();
             }
         }
-        let dx = all.iter().filter_map(|p| p.degree_in(0)).max().unwrap_or(0);
-        let dy = all.iter().filter_map(|p| p.degree_in(1)).max().unwrap_or(0);
-        let sub = |p: &MPoly<F>| {
-            substitute_rational(
-                p,
-                (&params.first, &params.first_den),
-                (&params.second, &params.second_den),
-                dx,
-                dy,
-            )
-        };
-        let mut st: Vec<MPoly<F>> = all.iter().map(sub).collect();
+        let d = NetParameters::degree_bounds(all.iter());
+        let mut st: Vec<MPoly<F>> = all.iter().map(|p| params.substitute(p, d)).collect();
         let candidates = factor_candidates(&params, &w);
         cancel_common(&mut st, &candidates);
         normalize_content(&mut st);

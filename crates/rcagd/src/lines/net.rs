@@ -294,6 +294,30 @@ pub struct NetParameters<F> {
     pub second_den: MPoly<F>,
 }
 
+impl<F: Scalar> NetParameters<F> {
+    /// The largest degrees `(dx, dy)` in the first and the second variable of `ps`.
+    pub(crate) fn degree_bounds<'a>(ps: impl Iterator<Item = &'a MPoly<F>> + Clone) -> (u32, u32)
+    where
+        F: 'a,
+    {
+        let dx = ps.clone().filter_map(|p| p.degree_in(0)).max().unwrap_or(0);
+        let dy = ps.filter_map(|p| p.degree_in(1)).max().unwrap_or(0);
+        (dx, dy)
+    }
+
+    /// `p(first/first_den, second/second_den) · first_den^{dx} · second_den^{dy}`
+    /// (see [`substitute_rational`]).
+    pub(crate) fn substitute(&self, p: &MPoly<F>, (dx, dy): (u32, u32)) -> MPoly<F> {
+        substitute_rational(
+            p,
+            (&self.first, &self.first_den),
+            (&self.second, &self.second_den),
+            dx,
+            dy,
+        )
+    }
+}
+
 fn mag<F: Scalar>(p: &MPoly<F>) -> f64 {
     p.terms().map(|(_, c)| c.to_f64().abs()).fold(1.0, f64::max)
 }
@@ -882,17 +906,8 @@ pub(crate) fn fibration_certificate<F: Scalar>(
     w: &[MPoly<F>; 4],
 ) -> Certificate {
     let h = net.line_polynomials();
-    let dx = h.iter().filter_map(|x| x.degree_in(0)).max().unwrap_or(0);
-    let dy = h.iter().filter_map(|x| x.degree_in(1)).max().unwrap_or(0);
-    let hs: [MPoly<F>; 6] = core::array::from_fn(|k| {
-        substitute_rational(
-            &h[k],
-            (&p.first, &p.first_den),
-            (&p.second, &p.second_den),
-            dx,
-            dy,
-        )
-    });
+    let d = NetParameters::degree_bounds(h.iter());
+    let hs: [MPoly<F>; 6] = core::array::from_fn(|k| p.substitute(&h[k], d));
     let m = incidence_matrix(&hs);
     let r: Vec<MPoly<F>> = m.iter().map(|row| dot4(row, w)).collect();
     let coeffs: Vec<F> = r

@@ -108,6 +108,32 @@ pub struct Line<F> {
     origin: LineOrigin<F>,
 }
 
+/// The points `s₁ … s₄` of the line with Plücker coordinates `l` in the coordinate
+/// planes `xᵢ = 0` (docs/math/lines-and-canal.md, "Plücker coordinates"), over any ring;
+/// some may be zero.
+pub(crate) fn coordinate_plane_points<R: rcagd_algebra::Ring>(l: &[R; 6]) -> [[R; 4]; 4] {
+    let [l1, l2, l3, l4, l5, l6] = l.clone();
+    let z = R::zero;
+    [
+        [z(), l1.clone(), l2.clone(), l3.clone()],
+        [-l1, z(), l6.clone(), -l5.clone()],
+        [-l2, -l6, z(), l4.clone()],
+        [-l3, l5, -l4, z()],
+    ]
+}
+
+/// The pairs `(i, j, k)` with `sᵢ ∧ sⱼ = ±l_k · l` for the points of
+/// [`coordinate_plane_points`] (factors `l₁, l₂, l₃, l₆, −l₅, l₄` for the pairs 12, 13,
+/// 14, 23, 24, 34).
+pub(crate) const POINT_PAIRS: [(usize, usize, usize); 6] = [
+    (0, 1, 0),
+    (0, 2, 1),
+    (0, 3, 2),
+    (1, 2, 5),
+    (1, 3, 4),
+    (2, 3, 3),
+];
+
 impl<F: Scalar> Line<F> {
     /// The line `p ∧ q` through two homogeneous points (Gruber (1.1)).
     ///
@@ -282,14 +308,7 @@ impl<F: Scalar> Line<F> {
     /// The points `s₁, …, s₄` of the line in the coordinate planes `xᵢ = 0` (docs/math/lines-and-canal.md, "Plücker coordinates"); some
     /// may be zero.
     pub fn coordinate_plane_points(&self) -> [[F; 4]; 4] {
-        let [l1, l2, l3, l4, l5, l6] = self.coords.clone();
-        let z = F::zero;
-        [
-            [z(), l1.clone(), l2.clone(), l3.clone()],
-            [-l1, z(), l6.clone(), -l5.clone()],
-            [-l2, -l6, z(), l4.clone()],
-            [-l3, l5, -l4, z()],
-        ]
+        coordinate_plane_points(&self.coords)
     }
 
     /// Two distinct points spanning the line: the pair `sᵢ, sⱼ` of docs/math/lines-and-canal.md, "Plücker coordinates" whose factor
@@ -297,15 +316,7 @@ impl<F: Scalar> Line<F> {
     /// absolute value (non-zero, docs/math/lines-and-canal.md, Errata G23), so `sᵢ ∧ sⱼ = factor · l`.
     pub fn points(&self) -> ([F; 4], [F; 4]) {
         let s = self.coordinate_plane_points();
-        let pairs = [
-            (0, 1, 0),
-            (0, 2, 1),
-            (0, 3, 2),
-            (1, 2, 5),
-            (1, 3, 4),
-            (2, 3, 3),
-        ];
-        let best = pairs
+        let best = POINT_PAIRS
             .iter()
             .max_by(|a, b| {
                 let x = self.coords[a.2].abs();

@@ -470,57 +470,18 @@ impl<F: Scalar> crate::Certified for SegreInterpolant<F> {
     }
 }
 
-/// The lowest-degree binary polynomial `w(t)` (Bernstein coefficients) with
-/// `w(tᵢ) ∥ Wᵢ` and `w(tᵢ) ≠ 0` for all `i`.
-fn lowest_binary<F: Scalar>(targets: &[[F; 2]], params: &[F]) -> Option<Vec<[F; 2]>> {
-    for r in 0..=targets.len() {
-        let rows: Vec<Vec<F>> = targets
-            .iter()
-            .zip(params)
-            .map(|(w, t)| {
-                let b = helpers::bernstein::<F>(r, t);
-                let mut row = vec![F::zero(); 2 * (r + 1)];
-                for (j, bj) in b.iter().enumerate() {
-                    row[2 * j] = bj.clone() * w[1].clone();
-                    row[2 * j + 1] = -(bj.clone() * w[0].clone());
-                }
-                row
-            })
-            .collect();
-        let basis = helpers::null_space(&rows, 2 * (r + 1));
-        let pick = super::image::pick_member(&basis, 1, |c| {
-            params.iter().all(|t| {
-                let b = helpers::bernstein::<F>(r, t);
-                let mut w = [F::zero(), F::zero()];
-                for (j, bj) in b.iter().enumerate() {
-                    w[0] += bj.clone() * c[2 * j].clone();
-                    w[1] += bj.clone() * c[2 * j + 1].clone();
-                }
-                !helpers::all_negligible(&w, helpers::magnitude(c))
-            })
-        });
-        if let Some(c) = pick {
-            return Some(c.chunks(2).map(|p| [p[0].clone(), p[1].clone()]).collect());
-        }
-    }
-    None
-}
-
-/// Interpolation on `H` of lowest degree, odd degrees included: the conditions
-/// `u(tᵢ) ∥ Uᵢ`, `v(tᵢ) ∥ Vᵢ` for the Segre factors of `kᵢ ∥ Uᵢ⊗Vᵢ` decouple (Jüttler's
-/// linear problem for ψ splits into its `u`- and `v`-parts), so the lowest degrees `r`
-/// and `s` are found separately and `y = u⊗v` has the lowest degree `r + s` of all
-/// rational curves on `H` through the points at these parameters (every coprime curve on
-/// `H` is `u⊗v`, Jüttler (8)). Points on one generator give a line (`r = 0` or `s = 0`).
+/// The Segre factors `(Uᵢ, Vᵢ)` of points `kᵢ ∥ Uᵢ⊗Vᵢ` on `H`, after checking the
+/// interpolation data: as many parameters as points (at least one), every point on `H`,
+/// no two parameters and no two points equal.
 ///
 /// # Errors
 /// [`QuadricError::Dimension`], [`QuadricError::NotOnQuadric`],
-/// [`QuadricError::RepeatedParameters`], [`QuadricError::RepeatedPoints`],
-/// [`QuadricError::NoInterpolant`].
-pub fn interpolate_segre<F: Scalar>(
+/// [`QuadricError::RepeatedParameters`], [`QuadricError::RepeatedPoints`].
+#[allow(clippy::type_complexity)]
+pub(crate) fn checked_segre_factors<F: Scalar>(
     points: &[Hom<F>],
     params: &[F],
-) -> Result<SegreInterpolant<F>, QuadricError> {
+) -> Result<(Vec<[F; 2]>, Vec<[F; 2]>), QuadricError> {
     if points.len() != params.len() || points.is_empty() {
         return Err(QuadricError::Dimension(format!(
             "{} points but {} parameters",
@@ -548,14 +509,14 @@ pub fn interpolate_segre<F: Scalar>(
         us.push(u);
         vs.push(v);
     }
-    let none = |what: &str| QuadricError::NoInterpolant {
-        degree: points.len(),
-        reason: format!("no admissible {what} factor"),
-    };
-    let u = lowest_binary(&us, params).ok_or_else(|| none("u"))?;
-    let v = lowest_binary(&vs, params).ok_or_else(|| none("v"))?;
-    // y = (u0v0, u1v0, u0v1, u1v1) by the Bernstein product rule
-    let (r, s) = (u.len() - 1, v.len() - 1);
+    Ok((us, vs))
+}
+
+/// `y = u⊗v = (u0v0, u1v0, u0v1, u1v1)` in Bernstein form of degree `r + s` (product
+/// rule `C(r,i)·C(s,j)/C(r+s,i+j)`) for binary forms `u`, `v` of degrees `r`, `s`
+/// given by their Bernstein coefficients (both non-empty).
+pub(crate) fn segre_product<F: Scalar>(u: &[[F; 2]], v: &[[F; 2]]) -> Vec<[F; 4]> {
+    let (r, s) = (u.len().saturating_sub(1), v.len().saturating_sub(1));
     let mut pts = vec![helpers::zero4::<F>(); r + s + 1];
     for (i, ui) in u.iter().enumerate() {
         for (j, vj) in v.iter().enumerate() {
@@ -572,6 +533,79 @@ pub fn interpolate_segre<F: Scalar>(
             }
         }
     }
+    pts
+}
+
+/// The lowest-degree binary polynomial `w(t)` (Bernstein coefficients) with
+/// `w(tᵢ) ∥ Wᵢ` and `w(tᵢ) ≠ 0` for all `i`.
+fn lowest_binary<F: Scalar>(targets: &[[F; 2]], params: &[F]) -> Option<Vec<[F; 2]>> {
+    for r in 0..=targets.len() {
+        let basis = binary_space(targets, params, r);
+        let pick = super::image::pick_member(&basis, 1, |c| {
+            params.iter().all(|t| {
+                let w = binary_eval(c, r, t);
+                !helpers::all_negligible(&w, helpers::magnitude(c))
+            })
+        });
+        if let Some(c) = pick {
+            return Some(c.chunks(2).map(|p| [p[0].clone(), p[1].clone()]).collect());
+        }
+    }
+    None
+}
+
+/// The binary form with flattened Bernstein coefficients `c` (degree `r`) at `t`.
+pub(crate) fn binary_eval<F: Scalar>(c: &[F], r: usize, t: &F) -> [F; 2] {
+    let b = helpers::bernstein::<F>(r, t);
+    let mut w = [F::zero(), F::zero()];
+    for (j, bj) in b.iter().enumerate() {
+        w[0] += bj.clone() * c[2 * j].clone();
+        w[1] += bj.clone() * c[2 * j + 1].clone();
+    }
+    w
+}
+
+/// The solution space `{w of degree r : w(tᵢ) ∥ Wᵢ}` (flattened Bernstein coefficients).
+pub(crate) fn binary_space<F: Scalar>(targets: &[[F; 2]], params: &[F], r: usize) -> Vec<Vec<F>> {
+    let rows: Vec<Vec<F>> = targets
+        .iter()
+        .zip(params)
+        .map(|(w, t)| {
+            let b = helpers::bernstein::<F>(r, t);
+            let mut row = vec![F::zero(); 2 * (r + 1)];
+            for (j, bj) in b.iter().enumerate() {
+                row[2 * j] = bj.clone() * w[1].clone();
+                row[2 * j + 1] = -(bj.clone() * w[0].clone());
+            }
+            row
+        })
+        .collect();
+    helpers::null_space(&rows, 2 * (r + 1))
+}
+
+/// Interpolation on `H` of lowest degree, odd degrees included: the conditions
+/// `u(tᵢ) ∥ Uᵢ`, `v(tᵢ) ∥ Vᵢ` for the Segre factors of `kᵢ ∥ Uᵢ⊗Vᵢ` decouple (Jüttler's
+/// linear problem for ψ splits into its `u`- and `v`-parts), so the lowest degrees `r`
+/// and `s` are found separately and `y = u⊗v` has the lowest degree `r + s` of all
+/// rational curves on `H` through the points at these parameters (every coprime curve on
+/// `H` is `u⊗v`, Jüttler (8)). Points on one generator give a line (`r = 0` or `s = 0`).
+///
+/// # Errors
+/// [`QuadricError::Dimension`], [`QuadricError::NotOnQuadric`],
+/// [`QuadricError::RepeatedParameters`], [`QuadricError::RepeatedPoints`],
+/// [`QuadricError::NoInterpolant`].
+pub fn interpolate_segre<F: Scalar>(
+    points: &[Hom<F>],
+    params: &[F],
+) -> Result<SegreInterpolant<F>, QuadricError> {
+    let (us, vs) = checked_segre_factors(points, params)?;
+    let none = |what: &str| QuadricError::NoInterpolant {
+        degree: points.len(),
+        reason: format!("no admissible {what} factor"),
+    };
+    let u = lowest_binary(&us, params).ok_or_else(|| none("u"))?;
+    let v = lowest_binary(&vs, params).ok_or_else(|| none("v"))?;
+    let pts = segre_product(&u, &v);
     let curve =
         rcagd_geom::BezierCurve::from_homogeneous(pts.into_iter().map(|p| p.to_vec()).collect())?;
     Ok(SegreInterpolant {

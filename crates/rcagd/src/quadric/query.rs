@@ -24,7 +24,9 @@
 use super::helpers::{self, fmt_scalar, fmt_vec};
 use super::image::{certify_curve_on_quadric, certify_patch_on_quadric, pick_member};
 use super::interpolation::{interpolate_lowest_degree, HermiteDatum, Interpolant};
-use super::paraboloid::{paraboloid_matrix, segre_factors, tau_inverse};
+use super::paraboloid::{
+    binary_eval, binary_space, checked_segre_factors, paraboloid_matrix, segre_product, tau_inverse,
+};
 use super::sphere_patch::{miquel_residuals, second_intersection};
 use super::stereographic::sigma_inverse;
 use super::{
@@ -375,6 +377,34 @@ fn image_quadric<F: Scalar>(q: &Mat4<F>, inv: &Mat4<F>) -> Mat4<F> {
     helpers::mat_mul(&helpers::transpose(inv), &helpers::mat_mul(q, inv))
 }
 
+/// With a quadric `Q` that the object lies on (`on` certifies it), `(Q, Q')` for the
+/// image quadric `Q' = A⁻ᵀ Q A⁻¹` (`inv = A⁻¹`); `None` without a quadric.
+///
+/// # Errors
+/// [`QuadricError::NotOnQuadric`] naming `what` and `describe()` if `on` fails.
+#[allow(clippy::type_complexity)]
+fn quadric_and_image<F: Scalar>(
+    quadric: Option<&Mat4<F>>,
+    inv: &Mat4<F>,
+    on: impl FnOnce(&Mat4<F>) -> Certificate,
+    what: &str,
+    describe: impl FnOnce() -> String,
+) -> Result<Option<(Mat4<F>, Mat4<F>)>, QuadricError> {
+    let Some(q) = quadric else {
+        return Ok(None);
+    };
+    let c = on(q);
+    if !c.holds {
+        return Err(QuadricError::NotOnQuadric {
+            what: what.into(),
+            point: describe(),
+            quadric: "the given quadric".into(),
+            residual: c.residual.unwrap_or_default(),
+        });
+    }
+    Ok(Some((q.clone(), image_quadric(q, inv))))
+}
+
 /// The image of a space curve (homogeneous `(w, wx, wy, wz)`) under `X ↦ A X`; with a
 /// quadric `Q` that the curve lies on, the image quadric `Q'`.
 ///
@@ -394,21 +424,13 @@ pub fn collineation_curve<F: Scalar>(
         )));
     }
     let (det, inv) = regular(a)?;
-    let quadrics = match quadric {
-        Some(q) => {
-            let c = certify_curve_on_quadric(curve, q, "");
-            if !c.holds {
-                return Err(QuadricError::NotOnQuadric {
-                    what: "the curve".into(),
-                    point: format!("of degree {}", curve.degree()),
-                    quadric: "the given quadric".into(),
-                    residual: c.residual.unwrap_or_default(),
-                });
-            }
-            Some((q.clone(), image_quadric(q, &inv)))
-        }
-        None => None,
-    };
+    let quadrics = quadric_and_image(
+        quadric,
+        &inv,
+        |q| certify_curve_on_quadric(curve, q, ""),
+        "the curve",
+        || format!("of degree {}", curve.degree()),
+    )?;
     let image = curve.apply_projective(&rows(a))?;
     Ok(CollineationImage {
         matrix: a.clone(),
@@ -435,21 +457,13 @@ pub fn collineation_patch<F: Scalar>(
         )));
     }
     let (det, inv) = regular(a)?;
-    let quadrics = match quadric {
-        Some(q) => {
-            let c = certify_patch_on_quadric(patch, q, "");
-            if !c.holds {
-                return Err(QuadricError::NotOnQuadric {
-                    what: "the patch".into(),
-                    point: format!("of bidegree {:?}", patch.degree()),
-                    quadric: "the given quadric".into(),
-                    residual: c.residual.unwrap_or_default(),
-                });
-            }
-            Some((q.clone(), image_quadric(q, &inv)))
-        }
-        None => None,
-    };
+    let quadrics = quadric_and_image(
+        quadric,
+        &inv,
+        |q| certify_patch_on_quadric(patch, q, ""),
+        "the patch",
+        || format!("of bidegree {:?}", patch.degree()),
+    )?;
     let image = patch.apply_projective(&rows(a))?;
     Ok(CollineationImage {
         matrix: a.clone(),
@@ -751,34 +765,6 @@ impl<F: Scalar> PsiInterpolant<F> {
     }
 }
 
-fn binary_eval<F: Scalar>(c: &[F], r: usize, t: &F) -> [F; 2] {
-    let b = helpers::bernstein::<F>(r, t);
-    let mut w = [F::zero(), F::zero()];
-    for (j, bj) in b.iter().enumerate() {
-        w[0] += bj.clone() * c[2 * j].clone();
-        w[1] += bj.clone() * c[2 * j + 1].clone();
-    }
-    w
-}
-
-/// The solution space `{w of degree r : w(tᵢ) ∥ Wᵢ}` (flattened Bernstein coefficients).
-fn binary_space<F: Scalar>(targets: &[[F; 2]], params: &[F], r: usize) -> Vec<Vec<F>> {
-    let rows: Vec<Vec<F>> = targets
-        .iter()
-        .zip(params)
-        .map(|(w, t)| {
-            let b = helpers::bernstein::<F>(r, t);
-            let mut row = vec![F::zero(); 2 * (r + 1)];
-            for (j, bj) in b.iter().enumerate() {
-                row[2 * j] = bj.clone() * w[1].clone();
-                row[2 * j + 1] = -(bj.clone() * w[0].clone());
-            }
-            row
-        })
-        .collect();
-    helpers::null_space(&rows, 2 * (r + 1))
-}
-
 /// `true` if the binary form has no zero at the parameters and (exact scalars) its two
 /// components are coprime of degree `r` (no base point: the degree is really `r`).
 fn admissible<F: Scalar>(c: &[F], r: usize, params: &[F]) -> bool {
@@ -835,33 +821,7 @@ pub fn psi_interpolate<F: Scalar>(
     degree: usize,
     u_degree: Option<usize>,
 ) -> Result<PsiInterpolant<F>, QuadricError> {
-    if points.len() != params.len() || points.is_empty() {
-        return Err(QuadricError::Dimension(format!(
-            "{} points but {} parameters",
-            points.len(),
-            params.len()
-        )));
-    }
-    let q = paraboloid_matrix::<F>();
-    let mut us = Vec::new();
-    let mut vs = Vec::new();
-    for (i, k) in points.iter().enumerate() {
-        check_on_quadric(&q, k, &format!("point {i}"), "H")?;
-        for j in 0..i {
-            if helpers::negligible(
-                &(params[i].clone() - params[j].clone()),
-                helpers::magnitude(std::slice::from_ref(&params[i])),
-            ) {
-                return Err(QuadricError::RepeatedParameters(j, i));
-            }
-            if helpers::parallel(k, &points[j]) {
-                return Err(QuadricError::RepeatedPoints(j, i));
-            }
-        }
-        let (u, v) = segre_factors(k);
-        us.push(u);
-        vs.push(v);
-    }
+    let (us, vs) = checked_segre_factors(points, params)?;
     let none = |what: &str| QuadricError::NoInterpolant {
         degree,
         reason: format!("no admissible {what} factor"),
@@ -915,7 +875,7 @@ pub fn psi_interpolate<F: Scalar>(
             break;
         }
     }
-    let (r, s, u, v, u_dimension, v_dimension) = found.ok_or_else(|| QuadricError::NoInterpolant {
+    let (_, _, u, v, u_dimension, v_dimension) = found.ok_or_else(|| QuadricError::NoInterpolant {
         degree,
         reason: format!(
             "no split n = r + s with u of degree r ∈ {candidates:?} and v of degree s whose components are coprime (every solution of these degrees is a lower one times a common factor)"
@@ -923,22 +883,7 @@ pub fn psi_interpolate<F: Scalar>(
     })?;
     let u: Vec<[F; 2]> = u.chunks(2).map(|p| [p[0].clone(), p[1].clone()]).collect();
     let v: Vec<[F; 2]> = v.chunks(2).map(|p| [p[0].clone(), p[1].clone()]).collect();
-    let mut pts = vec![helpers::zero4::<F>(); r + s + 1];
-    for (i, ui) in u.iter().enumerate() {
-        for (j, vj) in v.iter().enumerate() {
-            let w = helpers::binom::<F>(r, i) * helpers::binom::<F>(s, j)
-                / helpers::binom::<F>(r + s, i + j);
-            let prod = [
-                ui[0].clone() * vj[0].clone(),
-                ui[1].clone() * vj[0].clone(),
-                ui[0].clone() * vj[1].clone(),
-                ui[1].clone() * vj[1].clone(),
-            ];
-            for (o, x) in pts[i + j].iter_mut().zip(prod) {
-                *o += w.clone() * x;
-            }
-        }
-    }
+    let pts = segre_product(&u, &v);
     let curve = BezierCurve::from_homogeneous(pts.into_iter().map(|p| p.to_vec()).collect())?;
     Ok(PsiInterpolant {
         u,

@@ -188,18 +188,24 @@ fn collineation_errors_are_named() {
     ));
 }
 
-#[test]
-fn miquel_points_of_a_delta_patch_agree_with_the_construction() {
-    // the δ-image of a bilinear patch (Satz 7): the q's computed from the net alone equal
-    // those of the construction (images of the projecting lines in the corner planes)
-    let bp = BiquadraticPatch::from_bilinear(
+/// The δ-image of the bilinear patch with corners (1,0,0,0), (1,1,0,0), (2,1,1,1),
+/// (1,0,1,0) (Satz 7): a biquadratic patch on the sphere.
+fn delta_bilinear_patch() -> BiquadraticPatch<Q> {
+    BiquadraticPatch::from_bilinear(
         &Delta,
         h([1, 0, 0, 0]),
         h([1, 1, 0, 0]),
         h([2, 1, 1, 1]),
         h([1, 0, 1, 0]),
     )
-    .unwrap();
+    .unwrap()
+}
+
+#[test]
+fn miquel_points_of_a_delta_patch_agree_with_the_construction() {
+    // the δ-image of a bilinear patch (Satz 7): the q's computed from the net alone equal
+    // those of the construction (images of the projecting lines in the corner planes)
+    let bp = delta_bilinear_patch();
     let m = miquel_points(&sphere_matrix(), bp.patch()).unwrap();
     for i in 0..4 {
         assert!(parallel(&m.second[i], &bp.second_points()[i]), "q{}", i + 1);
@@ -212,14 +218,7 @@ fn miquel_points_of_a_delta_patch_agree_with_the_construction() {
 
 #[test]
 fn miquel_points_errors_are_named() {
-    let bp = BiquadraticPatch::from_bilinear(
-        &Delta,
-        h([1, 0, 0, 0]),
-        h([1, 1, 0, 0]),
-        h([2, 1, 1, 1]),
-        h([1, 0, 1, 0]),
-    )
-    .unwrap();
+    let bp = delta_bilinear_patch();
     // the same patch is not on the hyperbolic paraboloid
     assert!(matches!(
         miquel_points(&rcagd::quadric::paraboloid::paraboloid_matrix(), bp.patch()),

@@ -935,26 +935,35 @@ fn f64_envelopes_certify_and_agree() {
             c.section
         );
         assert!(Certificate::all_hold(&certs), "{}: {certs:#?}", c.section);
-        let (s, t) = (Rational::from_ratio(3, 5), Rational::from_ratio(4, 7));
-        let x = env.eval(&s, &t).expect("exact");
-        let y = fenv
-            .eval(&Scalar::to_f64(&s), &Scalar::to_f64(&t))
-            .expect("f64");
-        for k in 0..3 {
-            let xe = Scalar::to_f64(&x[k]);
-            assert!(
-                (xe - y[k]).abs() <= 1e-9 * (1.0 + xe.abs()),
-                "{}: {xe} vs {}",
-                c.section,
-                y[k]
-            );
-        }
+        assert_f64_agrees(&env, &fenv, c.section);
     }
 }
 
 // ---------------------------------------------------------------------------------------
 // Recognition: a given sphere family (centre, radius) → its line net, support functions and
 // envelope, or the named reason why not (docs/math/sphere-families.md#recognition).
+
+/// The exact envelope and its f64 version agree at `(s, t) = (3/5, 4/7)` to 1e-9.
+fn assert_f64_agrees(
+    env: &SphereFamilyEnvelope<Rational>,
+    fenv: &SphereFamilyEnvelope<f64>,
+    section: &str,
+) {
+    let (s, t) = (Rational::from_ratio(3, 5), Rational::from_ratio(4, 7));
+    let x = env.eval(&s, &t).expect("exact");
+    let y = fenv
+        .eval(&Scalar::to_f64(&s), &Scalar::to_f64(&t))
+        .expect("f64");
+    for k in 0..3 {
+        let xe = Scalar::to_f64(&x[k]);
+        assert!(
+            (xe - y[k]).abs() <= 1e-9 * (1.0 + xe.abs()),
+            "{}: {xe} vs {}",
+            section,
+            y[k]
+        );
+    }
+}
 
 fn family(phi: [MPoly<Rational>; 4]) -> SphereFamily<Rational> {
     let [x, y, z, r] = phi;
@@ -1007,20 +1016,7 @@ fn every_printed_subcase_recognized_from_its_sphere_family() {
             .envelope()
             .map_scalar(Scalar::to_f64)
             .expect("f64 envelope");
-        let (s, t) = (Rational::from_ratio(3, 5), Rational::from_ratio(4, 7));
-        let x = rec.envelope().eval(&s, &t).expect("exact");
-        let y = fenv
-            .eval(&Scalar::to_f64(&s), &Scalar::to_f64(&t))
-            .expect("f64");
-        for k in 0..3 {
-            let xe = Scalar::to_f64(&x[k]);
-            assert!(
-                (xe - y[k]).abs() <= 1e-9 * (1.0 + xe.abs()),
-                "{}: {xe} vs {}",
-                c.section,
-                y[k]
-            );
-        }
+        assert_f64_agrees(rec.envelope(), &fenv, c.section);
     }
 }
 
