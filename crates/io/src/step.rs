@@ -51,7 +51,10 @@
 //! ([`crate::step_read::apply_sidecar`]).
 //!
 //! Weights must be positive (CAD kernels reject others): a piece whose weights are all
-//! negative is negated (the same curve), zero or mixed signs are an error. Pieces whose
+//! negative is negated (the same curve); a piece with zero or mixed-sign weights whose
+//! weight function has no zero is split exactly into pieces of one sign
+//! ([`crate::model::Geometry::drawable_curves`], `drawable_patches`); a weight function
+//! with a zero on the domain (a point at infinity) is an error. Pieces whose
 //! weights vary by more than 16× or leave `[2⁻⁸, 2⁸]` are balanced by an exact Möbius
 //! reparametrization and a power-of-2 scale ([`crate::balance`]) before anything is
 //! written, so the files and the sidecar carry the same, balanced, weights. Geometry in
@@ -345,19 +348,27 @@ fn oriented(patches: Vec<BezierPatch<Rational>>) -> Vec<BezierPatch<Rational>> {
 /// [`IoError::Invalid`] for geometry beyond E3, degree 0, a zero weight or weights of
 /// mixed sign (the message names the object and piece).
 pub fn exchange_object(o: &Object) -> Result<ExchangeObject, IoError> {
+    // pieces whose weights have mixed signs but whose weight function has no zero are
+    // split exactly into pieces of one sign first (Geometry::drawable_curves/_patches)
+    let located = |e: IoError| match e {
+        IoError::Invalid(m) => IoError::Invalid(format!("object {:?}: {m}", o.name)),
+        e => e,
+    };
     let curves = o
         .geometry
-        .curves()
-        .into_iter()
+        .drawable_curves()
+        .map_err(located)?
+        .iter()
         .enumerate()
         .map(|(k, c)| curve_e3(c, &format!("object {:?}, curve piece {k}", o.name)))
         .collect::<Result<Vec<_>, _>>()?;
     let patches = o
         .geometry
-        .patches()
-        .into_iter()
+        .drawable_patches()
+        .map_err(located)?
+        .iter()
         .enumerate()
-        .map(|(k, p)| patch_e3(p, &format!("object {:?}, patch {k}", o.name)))
+        .map(|(k, (_, p))| patch_e3(p, &format!("object {:?}, patch {k}", o.name)))
         .collect::<Result<Vec<_>, _>>()?;
     let patches = oriented(patches);
     Ok(ExchangeObject {
@@ -1501,7 +1512,20 @@ mod tests {
         ])
         .expect("valid");
         let o = Object::new("m", "t", Value::Null, Geometry::Curve(bad), Vec::new());
-        let e = exchange_object(&o).expect_err("mixed");
-        assert!(e.to_string().contains("mixed signs"), "{e}");
+        // w(t) = 1 − 3t vanishes at t = 1/3: a pole, no split helps
+        let e = exchange_object(&o).expect_err("pole");
+        assert!(e.to_string().contains("point at infinity"), "{e}");
+        // weights 1, −1, 2 have mixed signs but w(t) = 5t² − 4t + 1 > 0: split exactly into
+        // pieces with positive weights, joined into one B-spline
+        let mixed = BezierCurve::from_homogeneous(vec![
+            vec![q(1, 1), q(0, 1)],
+            vec![q(-1, 1), q(-1, 1)],
+            vec![q(2, 1), q(4, 1)],
+        ])
+        .expect("valid");
+        let o = Object::new("s", "t", Value::Null, Geometry::Curve(mixed), Vec::new());
+        let x = exchange_object(&o).expect("split into positive pieces");
+        assert!(x.curves[0].control_points().all(|h| h[0] > q(0, 1)));
+        assert!(x.curves[0].num_control_points() > 3);
     }
 }

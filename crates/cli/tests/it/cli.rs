@@ -385,11 +385,11 @@ fn build_writes_formats_to_out_dir() {
         .expect("run");
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(stderr(&o).contains("no patches"), "{}", stderr(&o));
-    // An object STEP cannot write (mixed-sign weights) is an input error.
+    // An object STEP cannot write (a coordinate beyond the f64 range) is an input error.
     let bad = write(
         &dir,
         "bad.toml",
-        "[[object]]\nname = \"pole\"\nop = \"bezier_curve\"\npoints = [[0, 0], [1, 1], [2, 0]]\nweights = [1, -1, 2]\n",
+        "[[object]]\nname = \"pole\"\nop = \"bezier_curve\"\npoints = [[0, 0], [1, 1], [\"1e400\", 0]]\n",
     );
     let o = bin()
         .arg("build")
