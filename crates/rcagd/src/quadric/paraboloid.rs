@@ -448,25 +448,41 @@ impl<F: Scalar> SegreInterpolant<F> {
     }
 }
 
+/// The certificates of an interpolant on `H`: the curve lies on `H` (`on_h` names it) and
+/// `y(tᵢ) ∥ kᵢ` for every parameter and point.
+pub(crate) fn certify_interpolant_on_h<F: Scalar>(
+    curve: &rcagd_geom::BezierCurve<F>,
+    params: &[F],
+    points: &[Hom<F>],
+    on_h: &str,
+) -> Vec<Certificate> {
+    let mut out = vec![super::image::certify_curve_on_quadric(
+        curve,
+        &paraboloid_matrix(),
+        on_h,
+    )];
+    for (i, (t, k)) in params.iter().zip(points).enumerate() {
+        let y = helpers::eval_curve(curve, t);
+        let ok = !helpers::is_zero_vec(&y) && helpers::parallel(&y, k);
+        out.push(Certificate::decide(
+            format!("y(t{i}) ∥ k{i}"),
+            ok,
+            F::EXACT,
+            || format!("{} vs {}", fmt_vec(&y), fmt_vec(k)),
+        ));
+    }
+    out
+}
+
 impl<F: Scalar> crate::Certified for SegreInterpolant<F> {
     /// The curve lies on `H` and passes through every point at its parameter.
     fn certify(&self) -> Vec<Certificate> {
-        let mut out = vec![super::image::certify_curve_on_quadric(
+        certify_interpolant_on_h(
             &self.curve,
-            &paraboloid_matrix(),
+            &self.params,
+            &self.points,
             "the Segre interpolant lies on H: h0h3 − h1h2 ≡ 0",
-        )];
-        for (i, (t, k)) in self.params.iter().zip(&self.points).enumerate() {
-            let y = helpers::eval_curve(&self.curve, t);
-            let ok = !helpers::is_zero_vec(&y) && helpers::parallel(&y, k);
-            out.push(Certificate::decide(
-                format!("y(t{i}) ∥ k{i}"),
-                ok,
-                F::EXACT,
-                || format!("{} vs {}", fmt_vec(&y), fmt_vec(k)),
-            ));
-        }
-        out
+        )
     }
 }
 

@@ -25,7 +25,7 @@ use super::helpers::{self, fmt_scalar, fmt_vec};
 use super::image::{certify_curve_on_quadric, certify_patch_on_quadric, pick_member};
 use super::interpolation::{interpolate_lowest_degree, HermiteDatum, Interpolant};
 use super::paraboloid::{
-    binary_eval, binary_space, checked_segre_factors, paraboloid_matrix, segre_product, tau_inverse,
+    binary_eval, binary_space, checked_segre_factors, segre_product, tau_inverse,
 };
 use super::sphere_patch::{miquel_residuals, second_intersection};
 use super::stereographic::sigma_inverse;
@@ -902,21 +902,12 @@ impl<F: Scalar> Certified for PsiInterpolant<F> {
     /// the products of those of `u` and `v`), and `u`, `v` are coprime of full degree, so
     /// `deg y = r + s`.
     fn certify(&self) -> Vec<Certificate> {
-        let mut out = vec![certify_curve_on_quadric(
+        let mut out = super::paraboloid::certify_interpolant_on_h(
             &self.curve,
-            &paraboloid_matrix(),
+            &self.params,
+            &self.points,
             "the interpolant lies on H: h0h3 − h1h2 ≡ 0",
-        )];
-        for (i, (t, k)) in self.params.iter().zip(&self.points).enumerate() {
-            let y = helpers::eval_curve(&self.curve, t);
-            let ok = !helpers::is_zero_vec(&y) && helpers::parallel(&y, k);
-            out.push(Certificate::decide(
-                format!("y(t{i}) ∥ k{i}"),
-                ok,
-                F::EXACT,
-                || format!("{} vs {}", fmt_vec(&y), fmt_vec(k)),
-            ));
-        }
+        );
         let comp = |w: &[[F; 2]], k: usize| -> Poly<F> {
             bernstein::from_bernstein(&w.iter().map(|p| p[k].clone()).collect::<Vec<_>>())
         };
