@@ -50,8 +50,8 @@
 
 use crate::model::Object;
 use crate::step::{
-    build_topology, civil_time, collapsed, exchange_object, export_time, format_real, pcurve,
-    rational_real, ExchangeObject, Topology,
+    civil_time, collapsed, exchange_object, export_time, format_real, pcurve, rational_real,
+    ExchangeObject, Topology,
 };
 use crate::IoError;
 use rcagd_algebra::{Rational, Scalar};
@@ -488,15 +488,12 @@ pub fn write_iges_with(objects: &[Object], opts: &IgesOptions) -> Result<String,
             }
             members.push(2 * entities.len() - 1);
         }
-        let topo = if o.patches.is_empty() {
-            None
-        } else {
-            build_topology(&o.patches)
-                .ok()
-                .filter(|t| !t.shells.is_empty() && t.shells.iter().all(|s| s.closed))
-        };
+        let topo = o
+            .topology
+            .as_ref()
+            .filter(|t| !t.shells.is_empty() && t.shells.iter().all(|s| s.closed));
         if let Some(topo) = topo {
-            members.extend(brep_entities(o, &topo, &label, &mut entities)?);
+            members.extend(brep_entities(o, topo, &label, &mut entities)?);
         } else {
             for (k, s) in o.surfaces()?.iter().enumerate() {
                 entities.push(Entity {

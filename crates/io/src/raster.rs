@@ -36,7 +36,7 @@
 
 use crate::model::Object;
 use crate::png::{encode_png, ColorType};
-use crate::step::{build_topology, exchange_object};
+use crate::step::exchange_object;
 use crate::stl::object_size;
 use crate::IoError;
 use rcagd_geom::grid::eval_patch_f64;
@@ -270,11 +270,9 @@ fn scene(o: &Object, opts: &RenderOptions) -> Result<(Vec<Mesh>, Vec<Line>), IoE
     let flips: Vec<bool> = if patches.is_empty() {
         Vec::new()
     } else {
-        exchange_object(o)
-            .ok()
-            .and_then(|x| build_topology(&x.patches).ok())
-            .map(|t| t.faces.iter().map(|f| f.flipped).collect())
-            .unwrap_or_default()
+        // the exchange form orients its patches; the pieces drawn here are the
+        // unoriented drawable pieces, so reverse those it reversed
+        exchange_object(o).map(|x| x.reversed).unwrap_or_default()
     };
     // pieces with weights of one sign (a weight zero inside would draw a spike)
     for (k, p) in o.geometry.drawable_patches()? {

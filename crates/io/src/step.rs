@@ -163,11 +163,29 @@ pub struct ExchangeObject {
     pub name: String,
     /// The curves, consecutive meeting pieces joined (see the module docs).
     pub curves: Vec<NurbsCurve<Rational>>,
-    /// The patches (one face each).
+    /// The patches (one face each), oriented consistently in their shells.
     pub patches: Vec<BezierPatch<Rational>>,
+    /// For each patch, whether it was reversed in `u` to orient it (relative to the
+    /// object's drawable pieces, [`crate::model::Geometry::drawable_patches`]).
+    pub reversed: Vec<bool>,
+    /// The boundary representation of `patches`, built once for every writer; `None` if
+    /// the patches have none ([`Self::brep`] then reports why).
+    pub topology: Option<Topology>,
 }
 
 impl ExchangeObject {
+    /// The boundary representation of the patches ([`build_topology`]), computed once in
+    /// [`exchange_object`].
+    ///
+    /// # Errors
+    /// As [`build_topology`], when the patches have none.
+    pub fn brep(&self) -> Result<std::borrow::Cow<'_, Topology>, IoError> {
+        match &self.topology {
+            Some(t) => Ok(std::borrow::Cow::Borrowed(t)),
+            None => build_topology(&self.patches).map(std::borrow::Cow::Owned),
+        }
+    }
+
     /// The patches as NURBS surfaces on `[0, 1]²`.
     ///
     /// # Errors
@@ -267,9 +285,7 @@ fn patch_e3(p: &BezierPatch<Rational>, what: &str) -> Result<BezierPatch<Rationa
             "{what} has bidegree ({m}, {n}); a B-spline surface needs degree ≥ 1 in both directions"
         )));
     }
-    let mut coords = pad3(p.coords(), p.dim());
-    positive_weights(&mut coords).map_err(|m| IoError::Invalid(format!("{what}: {m}")))?;
-    let b = crate::balance::balance_patch(&BezierPatch::from_flat(3, m, n, coords)?);
+    let b = crate::balance::balance_patch(&embed_e3(p, what)?);
     Ok(BezierPatch::from_flat(
         3,
         m,
@@ -324,20 +340,29 @@ fn join_curves(pieces: Vec<BezierCurve<Rational>>) -> Result<Vec<NurbsCurve<Rati
 /// The patches with every face that is flipped in its shell ([`build_topology`])
 /// reversed in `u` (the same surface with the opposite normal): consistent orientation
 /// in every shell, outward in closed ones, in the patches themselves (IGES has no
-/// `same_sense` flag; STEP's faces then all have `same_sense = .T.`). Unchanged if
-/// the patches have no boundary representation.
-fn oriented(patches: Vec<BezierPatch<Rational>>) -> Vec<BezierPatch<Rational>> {
+/// `same_sense` flag; STEP's faces then all have `same_sense = .T.`); which patches were
+/// reversed; and the topology of the result (rebuilt only if a patch was reversed, as
+/// that changes its boundary curves). Unchanged, without topology, if the patches have
+/// no boundary representation.
+fn oriented(
+    patches: Vec<BezierPatch<Rational>>,
+) -> (Vec<BezierPatch<Rational>>, Vec<bool>, Option<Topology>) {
+    let n = patches.len();
     match build_topology(&patches) {
         Ok(topo) if topo.faces.iter().any(|f| f.flipped) => {
             let mut out = patches;
+            let mut reversed = vec![false; n];
             for f in &topo.faces {
                 if f.flipped {
                     out[f.patch] = out[f.patch].reverse_u();
+                    reversed[f.patch] = true;
                 }
             }
-            out
+            let topo = build_topology(&out).ok();
+            (out, reversed, topo)
         }
-        _ => patches,
+        Ok(topo) => (patches, vec![false; n], Some(topo)),
+        Err(_) => (patches, vec![false; n], None),
     }
 }
 
@@ -370,11 +395,13 @@ pub fn exchange_object(o: &Object) -> Result<ExchangeObject, IoError> {
         .enumerate()
         .map(|(k, (_, p))| patch_e3(p, &format!("object {:?}, patch {k}", o.name)))
         .collect::<Result<Vec<_>, _>>()?;
-    let patches = oriented(patches);
+    let (patches, reversed, topology) = oriented(patches);
     Ok(ExchangeObject {
         name: o.name.clone(),
         curves: join_curves(curves)?,
         patches,
+        reversed,
+        topology,
     })
 }
 
@@ -1078,7 +1105,7 @@ fn object_items(
             vec![set],
         ));
     }
-    let topo = build_topology(&o.patches)?;
+    let topo = o.brep()?;
     let surfaces = o.surfaces()?;
     let mut vertex_ids = Vec::with_capacity(topo.vertices.len());
     for v in &topo.vertices {
@@ -1395,7 +1422,7 @@ pub fn exact_sidecar(objects: &[Object]) -> Result<Value, IoError> {
         let edges = if x.patches.is_empty() {
             Vec::new()
         } else {
-            build_topology(&x.patches)?
+            x.brep()?
                 .edges
                 .iter()
                 .map(|e| NurbsCurve::from_bezier(&e.curve).map(|c| nurbs_curve_json(&c)))
