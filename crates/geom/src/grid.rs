@@ -492,6 +492,12 @@ pub fn eval_patch_grid_derivatives(
     Ok(())
 }
 
+/// `a − b`.
+#[inline]
+pub fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
 /// The cross product `a × b`.
 #[inline]
 pub fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {

@@ -41,7 +41,7 @@ use crate::curve::BezierCurve;
 use crate::error::GeomError;
 use crate::grid::{
     control_net_scale, cross, eval_curve_f64, eval_patch_derivatives_f64, eval_patch_grid,
-    eval_patch_grid_with_normals, linspace, norm, unit_normal, DEGENERATE_NORMAL_RELATIVE,
+    eval_patch_grid_with_normals, linspace, norm, sub, unit_normal, DEGENERATE_NORMAL_RELATIVE,
 };
 use crate::patch::BezierPatch;
 use rcagd_algebra::Scalar;
@@ -141,10 +141,6 @@ fn point3(curve: &BezierCurve<f64>, t: f64) -> Result<[f64; 3], GeomError> {
             "the curve passes through a point at infinity (weight 0) near t = {t}"
         )))
     }
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
 fn dist(a: [f64; 3], b: [f64; 3]) -> f64 {

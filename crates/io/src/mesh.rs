@@ -32,7 +32,7 @@ use crate::step::{build_topology, embed_e3, mobius_ratio, Topology};
 use crate::IoError;
 use rcagd_algebra::{Rational, Scalar};
 use rcagd_geom::grid::{
-    cross, eval_curve_f64, eval_patch_derivatives_f64, eval_patch_f64, norm,
+    cross, eval_curve_f64, eval_patch_derivatives_f64, eval_patch_f64, norm, sub,
     DEGENERATE_NORMAL_RELATIVE,
 };
 use rcagd_geom::tessellate::{
@@ -137,10 +137,6 @@ impl Builder {
             triangles,
         }
     }
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
 fn to3(v: &[f64]) -> [f64; 3] {

@@ -17,6 +17,7 @@
 use crate::model::Object;
 use crate::IoError;
 use rcagd_algebra::{Rational, Scalar};
+use rcagd_geom::grid::{cross, sub};
 use rcagd_geom::tessellate::TriMesh;
 use std::fmt::Write as _;
 
@@ -168,18 +169,6 @@ pub fn check_mesh(mesh: &TriMesh) -> Result<(), IoError> {
         )));
     }
     Ok(())
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
 }
 
 fn unit(v: [f64; 3]) -> Option<[f64; 3]> {
