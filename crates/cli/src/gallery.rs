@@ -264,7 +264,7 @@ pub fn write_all(
         "index.html".into(),
         rcagd_io::report::report_html_with(&entries, &links).into_bytes(),
     ));
-    write_files_atomically(out, &files)?;
+    output::write_files_atomically(out, &files)?;
     Ok(export_errors)
 }
 
@@ -274,77 +274,6 @@ pub const ALL_STEM: &str = "gallery-all";
 
 fn json_bytes(v: &serde_json::Value) -> Result<Vec<u8>, String> {
     Ok((serde_json::to_string_pretty(v).map_err(|e| e.to_string())? + "\n").into_bytes())
-}
-
-/// The temporary name of `file` while the gallery is written: `.FILE.rcagd-partial`
-/// beside it (as `rcagd build --out` uses).
-fn partial_name(file: &str) -> String {
-    format!(".{file}.rcagd-partial")
-}
-
-/// Writes `files` (name in `dir`, contents) all or nothing: `dir` is created if
-/// missing; a target that exists as a directory is refused before anything is
-/// written; every file goes to [`partial_name`] first (synced), and only when all were
-/// written are they renamed into place. On a failed write the temporaries (and `dir`,
-/// when this call created it) are removed.
-///
-/// # Errors
-/// A message naming the file and saying that nothing was written.
-fn write_files_atomically(dir: &Path, files: &[(String, Vec<u8>)]) -> Result<(), String> {
-    let mut seen = std::collections::HashSet::new();
-    for (name, _) in files {
-        if !seen.insert(name.as_str()) {
-            return Err(format!(
-                "two gallery files would both be written to {} (nothing was written)",
-                dir.join(name).display()
-            ));
-        }
-        if dir.join(name).is_dir() {
-            return Err(format!(
-                "cannot write {}: a directory of that name is in the way (nothing was written)",
-                dir.join(name).display()
-            ));
-        }
-    }
-    let created = !dir.exists();
-    output::create_dir(dir)?;
-    let mut temps: Vec<std::path::PathBuf> = Vec::with_capacity(files.len());
-    let cleanup = |temps: &[std::path::PathBuf]| {
-        for t in temps {
-            let _ = std::fs::remove_file(t);
-        }
-        if created {
-            let _ = std::fs::remove_dir(dir);
-        }
-    };
-    for (name, bytes) in files {
-        let tmp = dir.join(partial_name(name));
-        let result = std::fs::File::create(&tmp).and_then(|mut f| {
-            use std::io::Write as _;
-            f.write_all(bytes)?;
-            f.sync_all()
-        });
-        if result.is_ok() || tmp.is_file() {
-            temps.push(tmp);
-        }
-        if let Err(e) = result {
-            cleanup(&temps);
-            return Err(format!(
-                "cannot write {} (as its temporary {}): {e} (nothing was written; the \
-                 directory is as it was)",
-                dir.join(name).display(),
-                partial_name(name)
-            ));
-        }
-    }
-    for ((name, _), tmp) in files.iter().zip(&temps) {
-        let path = dir.join(name);
-        if let Err(e) = std::fs::rename(tmp, &path) {
-            cleanup(&temps);
-            return Err(format!("cannot move {} into place: {e}", path.display()));
-        }
-    }
-    Ok(())
 }
 
 /// Renders every object that STEP can hold into one STEP and one IGES file (one
@@ -404,7 +333,7 @@ fn combined_files(
 fn check_writable(dir: &Path) -> Result<bool, String> {
     let created = !dir.exists();
     output::create_dir(dir)?;
-    let probe = dir.join(partial_name("write-test"));
+    let probe = dir.join(output::partial_name("write-test"));
     match std::fs::File::create(&probe) {
         Ok(_) => {
             let _ = std::fs::remove_file(&probe);

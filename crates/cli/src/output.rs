@@ -171,31 +171,54 @@ pub fn write_objects(
             ));
         }
     }
-    let files: Vec<(PathBuf, Vec<u8>)> = jobs
+    let files: Vec<(String, Vec<u8>)> = jobs
         .par_iter()
         .map(|&(o, f)| {
-            let path = dir.join(format!("{}.{}", o.name, f.extension()));
+            let file = format!("{}.{}", o.name, f.extension());
             render(o, f)
-                .map(|bytes| (path.clone(), bytes))
-                .map_err(|e| format!("{}: {e} (nothing was written)", path.display()))
+                .map(|bytes| (file.clone(), bytes))
+                .map_err(|e| format!("{}: {e} (nothing was written)", dir.join(&file).display()))
         })
         .collect::<Vec<_>>()
         .into_iter()
         .collect::<Result<_, _>>()?;
+    write_files_atomically(dir, &files)?;
+    Ok(files.iter().map(|(name, _)| dir.join(name)).collect())
+}
+
+/// The temporary name of `file` while it is written: `.FILE.rcagd-partial` beside it.
+pub fn partial_name(file: &str) -> String {
+    format!(".{file}.rcagd-partial")
+}
+
+/// Writes `files` (name in `dir`, contents) all or nothing: `dir` is created if
+/// missing; a target that exists as a directory is refused before anything is
+/// written; every file goes to [`partial_name`] first (synced), and only when all were
+/// written are they renamed into place. On a failed write the temporaries (and `dir`,
+/// when this call created it) are removed.
+///
+/// # Errors
+/// A message naming the file and saying that nothing was written.
+pub fn write_files_atomically(dir: &Path, files: &[(String, Vec<u8>)]) -> Result<(), String> {
+    let mut seen = std::collections::HashSet::new();
+    for (name, _) in files {
+        if !seen.insert(name.as_str()) {
+            return Err(format!(
+                "two files would both be written to {} (nothing was written)",
+                dir.join(name).display()
+            ));
+        }
+        if dir.join(name).is_dir() {
+            return Err(format!(
+                "cannot write {}: a directory of that name is in the way (nothing was written)",
+                dir.join(name).display()
+            ));
+        }
+    }
     let created = !dir.exists();
     create_dir(dir)?;
-    // every file goes to a temporary name beside its target first; only when all were
-    // written completely (a full disk fails here) are they renamed into place, so a
-    // failure leaves the directory as it was (existing files of the same names intact)
-    let temp_of = |path: &Path| -> PathBuf {
-        let name = path
-            .file_name()
-            .map(|n| n.to_string_lossy().into_owned())
-            .unwrap_or_default();
-        path.with_file_name(format!(".{name}.rcagd-partial"))
-    };
-    let mut temps: Vec<PathBuf> = Vec::with_capacity(files.len());
-    let cleanup = |temps: &[PathBuf]| {
+    let mut temps: Vec<std::path::PathBuf> = Vec::with_capacity(files.len());
+    let cleanup = |temps: &[std::path::PathBuf]| {
         for t in temps {
             let _ = std::fs::remove_file(t);
         }
@@ -203,43 +226,34 @@ pub fn write_objects(
             let _ = std::fs::remove_dir(dir);
         }
     };
-    for (path, bytes) in &files {
-        let tmp = temp_of(path);
+    for (name, bytes) in files {
+        let tmp = dir.join(partial_name(name));
         let result = std::fs::File::create(&tmp).and_then(|mut f| {
             use std::io::Write as _;
             f.write_all(bytes)?;
             f.sync_all()
         });
-        temps.push(tmp);
+        if result.is_ok() || tmp.is_file() {
+            temps.push(tmp);
+        }
         if let Err(e) = result {
             cleanup(&temps);
             return Err(format!(
-                "cannot write {}: {e} (nothing was written; the directory is as it was)",
-                path.display()
+                "cannot write {} (as its temporary {}): {e} (nothing was written; the \
+                 directory is as it was)",
+                dir.join(name).display(),
+                partial_name(name)
             ));
         }
     }
-    let mut written: Vec<PathBuf> = Vec::with_capacity(files.len());
-    for ((path, _), tmp) in files.iter().zip(&temps) {
-        if let Err(e) = std::fs::rename(tmp, path) {
+    for ((name, _), tmp) in files.iter().zip(&temps) {
+        let path = dir.join(name);
+        if let Err(e) = std::fs::rename(tmp, &path) {
             cleanup(&temps);
-            return Err(format!(
-                "cannot move {} into place: {e} (the files moved before it: {})",
-                path.display(),
-                if written.is_empty() {
-                    "none".to_string()
-                } else {
-                    written
-                        .iter()
-                        .map(|p| p.display().to_string())
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                }
-            ));
+            return Err(format!("cannot move {} into place: {e}", path.display()));
         }
-        written.push(path.clone());
     }
-    Ok(written)
+    Ok(())
 }
 
 /// `"3/3 hold"` or `"2/3 hold, 1 FAILS"`.
