@@ -16,6 +16,7 @@ pub mod conic_point;
 pub mod error;
 pub mod factor;
 pub mod integer;
+pub mod interval;
 pub mod linalg;
 pub mod mpoly;
 pub mod poly;

@@ -133,6 +133,68 @@ pub fn is_rational_square(q: &Rational) -> bool {
     rational_sqrt(q).is_some()
 }
 
+/// `q` rounded down (or up) to `digits` significant decimal digits.
+pub fn round_decimal(q: &Rational, digits: u32, up: bool) -> Rational {
+    if *q == Rational::ZERO {
+        return q.clone();
+    }
+    // e = ⌊log10 |q|⌋ (approximately; any e gives a valid outward rounding)
+    let e = q.to_f64().value().abs().log10().floor();
+    let e = if e.is_finite() { e as i64 } else { 0 };
+    let k = i64::from(digits) - 1 - e; // scale 10^k
+    let ten = UBig::from(10u8);
+    let scale = if k >= 0 {
+        Rational::from(ten.pow(k as usize))
+    } else {
+        Rational::from_parts(IBig::ONE, ten.pow((-k) as usize))
+    };
+    let x = q * &scale;
+    let n = if up { x.ceil() } else { x.floor() };
+    Rational::from(n) / scale
+}
+
+/// A rational whose denominator divides a power of ten, as a decimal (`-12.0625`); any other
+/// rational as `p/q`.
+pub fn format_decimal(q: &Rational) -> String {
+    // q = n/(2^a 5^b): k = max(a, b) decimals
+    let mut den = q.denominator().clone();
+    let (two, five) = (UBig::from(2u8), UBig::from(5u8));
+    let (mut a, mut b) = (0usize, 0usize);
+    while &den % &two == UBig::ZERO {
+        den /= &two;
+        a += 1;
+    }
+    while &den % &five == UBig::ZERO {
+        den /= &five;
+        b += 1;
+    }
+    let k = a.max(b);
+    let ten = UBig::from(10u8);
+    if den != UBig::ONE {
+        return format_rational(q);
+    }
+    let n = q * Rational::from(ten.pow(k));
+    let n = n.numerator().clone();
+    let neg = n < IBig::ZERO;
+    let digits = if neg { (-n).to_string() } else { n.to_string() };
+    let body = if k == 0 {
+        digits
+    } else if digits.len() > k {
+        format!(
+            "{}.{}",
+            &digits[..digits.len() - k],
+            &digits[digits.len() - k..]
+        )
+    } else {
+        format!("0.{}{}", "0".repeat(k - digits.len()), digits)
+    };
+    if neg {
+        format!("-{body}")
+    } else {
+        body
+    }
+}
+
 /// Formats a rational as `"p/q"` (or `"p"` when integral), the exchange form of rcagd.
 pub fn format_rational(q: &Rational) -> String {
     if q.denominator() == &UBig::ONE {
@@ -148,6 +210,26 @@ mod tests {
 
     fn q(p: i64, d: i64) -> Rational {
         Rational::from_parts_signed(IBig::from(p), IBig::from(d))
+    }
+
+    #[test]
+    fn decimals_round_outward_and_print_exactly() {
+        assert_eq!(format_decimal(&q(-1, 8)), "-0.125");
+        assert_eq!(format_decimal(&q(12, 1)), "12");
+        assert_eq!(format_decimal(&q(1, 3)), "1/3");
+        assert_eq!(format_decimal(&q(3, 400)), "0.0075");
+        let third = q(1, 3);
+        let (lo, hi) = (
+            round_decimal(&third, 4, false),
+            round_decimal(&third, 4, true),
+        );
+        assert_eq!(
+            (format_decimal(&lo), format_decimal(&hi)),
+            ("0.3333".into(), "0.3334".into())
+        );
+        let big = q(-200_000_001, 3);
+        assert!(round_decimal(&big, 5, false) <= big && big <= round_decimal(&big, 5, true));
+        assert_eq!(format_decimal(&round_decimal(&big, 5, true)), "-66666000");
     }
 
     #[test]

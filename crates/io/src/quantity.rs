@@ -9,7 +9,7 @@
 
 use crate::json::{f64_to_json, rational_to_json};
 use rcagd_algebra::quadratic::QuadExt;
-use rcagd_algebra::rational::format_rational;
+use rcagd_algebra::rational::{format_decimal, format_rational, round_decimal};
 use rcagd_algebra::roots::RootInterval;
 use rcagd_algebra::{bernstein, format_poly, Poly, Rational, Scalar};
 use serde_json::{json, Value};
@@ -44,9 +44,17 @@ pub enum Quantity {
     },
     /// A vector (a point, a direction, a list of solutions).
     Vector(Vec<Quantity>),
-    /// A number known only approximately (a quadrature, a floating-point root), marked as
+    /// A number known only approximately (a floating-point quantity), marked as
     /// such: JSON `"exact": null`.
     Approx(f64),
+    /// A real number proven to lie in `[lo, hi]` (interval arithmetic, a validated
+    /// quadrature); the end points are exact decimals.
+    Enclosure {
+        /// Lower end.
+        lo: Rational,
+        /// Upper end.
+        hi: Rational,
+    },
 }
 
 impl Quantity {
@@ -55,6 +63,15 @@ impl Quantity {
         Quantity::Polynomial {
             variable: "t".into(),
             poly: p,
+        }
+    }
+
+    /// An enclosure `[lo, hi]` with its end points rounded outward to `digits` significant
+    /// decimal digits (so that they print exactly as short decimals).
+    pub fn enclosure(lo: &Rational, hi: &Rational, digits: u32) -> Self {
+        Quantity::Enclosure {
+            lo: round_decimal(lo, digits, false),
+            hi: round_decimal(hi, digits, true),
         }
     }
 
@@ -75,6 +92,7 @@ impl Quantity {
             Quantity::RealRoot { .. } => "real_root",
             Quantity::Vector(_) => "vector",
             Quantity::Approx(_) => "float",
+            Quantity::Enclosure { .. } => "enclosure",
         }
     }
 
@@ -86,6 +104,9 @@ impl Quantity {
             Quantity::Quadratic(x) => Some(quad_f64(x)),
             Quantity::RealRoot { poly, interval } => interval.root_f64(poly).ok(),
             Quantity::Approx(x) => Some(*x),
+            Quantity::Enclosure { lo, hi } => {
+                Some(Scalar::to_f64(&((lo + hi) / Rational::from(2))))
+            }
             _ => None,
         }
     }
@@ -155,6 +176,14 @@ impl Quantity {
             Quantity::Approx(_) => {
                 map.insert("exact".into(), Value::Null);
             }
+            Quantity::Enclosure { lo, hi } => {
+                map.insert("exact".into(), Value::Null);
+                map.insert(
+                    "interval".into(),
+                    json!([rational_to_json(lo), rational_to_json(hi)]),
+                );
+                map.insert("text".into(), json!(self.to_string()));
+            }
             Quantity::Text(_) | Quantity::Rational(_) => {}
         }
         v
@@ -190,6 +219,9 @@ impl fmt::Display for Quantity {
                 )
             }
             Quantity::Approx(x) => write!(f, "≈ {x}"),
+            Quantity::Enclosure { lo, hi } => {
+                write!(f, "in [{}, {}]", format_decimal(lo), format_decimal(hi))
+            }
             Quantity::Vector(items) => {
                 f.write_str("(")?;
                 for (i, x) in items.iter().enumerate() {
@@ -240,6 +272,7 @@ impl NamedQuantity {
         let exact = self.value.to_string();
         match (&self.value, self.value.to_f64()) {
             (Quantity::Approx(x), _) => format!("{} ≈ {x}", self.name),
+            (Quantity::Enclosure { .. }, _) => format!("{} {exact}", self.name),
             (Quantity::Rational(_) | Quantity::Integer(_), _) | (_, None) => {
                 format!("{} = {exact}", self.name)
             }
@@ -294,5 +327,13 @@ mod tests {
         assert_eq!(e.to_json()["f64"], json!(1.5));
         assert_eq!(e.to_json()["type"], "float");
         assert_eq!(e.summary_line(), "energy ≈ 1.5");
+        // an enclosure of 1/3 to 4 digits, rounded outward
+        let c = NamedQuantity::new("third", "1/3", Quantity::enclosure(&q(1, 3), &q(1, 3), 4));
+        assert_eq!(c.summary_line(), "third in [0.3333, 0.3334]");
+        let j = c.to_json();
+        assert_eq!(j["type"], "enclosure");
+        assert_eq!(j["exact"], Value::Null);
+        assert_eq!(j["interval"], json!(["3333/10000", "1667/5000"]));
+        assert!((j["f64"].as_f64().expect("f64") - 0.33335).abs() < 1e-12);
     }
 }

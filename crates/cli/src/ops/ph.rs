@@ -15,6 +15,8 @@ use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
 use num_traits::{One, Zero};
 use rcagd::ph::dph::{certify_dph_septic, dph_septic, dph_septic_z_roots};
+use rcagd::ph::hermite_enclosure::EnclosedInterpolant;
+use rcagd::ph::PhError;
 use rcagd::ph::{
     DphTest, HelixTest, HermiteData, HermiteInterpolant, HermiteSolution, LineCircle, PhCurve,
     PhPolyCurve,
@@ -24,7 +26,8 @@ use rcagd_algebra::roots::RootInterval;
 use rcagd_io::quantity::{NamedQuantity, Quantity};
 use rcagd_algebra::complex::Complex;
 use rcagd_algebra::quaternion::Quaternion;
-use rcagd_algebra::rational::format_rational;
+use rcagd_algebra::interval::pow2;
+use rcagd_algebra::rational::{format_rational, round_decimal};
 use rcagd_algebra::{Certificate, Poly, Rational, Scalar};
 use rcagd_geom::BezierCurve;
 
@@ -684,16 +687,32 @@ fn build_ph_hermite(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         point3(args, "d_f")?,
     );
     let sol = data.solve_exact()?;
-    let mut order: Vec<&HermiteInterpolant> = sol.interpolants.iter().collect();
-    order.sort_by(|a, b| a.bending_energy.total_cmp(&b.bending_energy));
+    // every interpolant enclosed from the exact root: control points to 2⁻⁸⁰, the bending
+    // energy to 2⁻⁴⁰ relative (None where σ cannot be proven positive: the energy diverges)
+    let (tp, te) = (pow2(-80), pow2(-40));
+    let encs: Vec<Result<EnclosedInterpolant, PhError>> =
+        (0..sol.interpolants.len()).map(|i| sol.enclose(i, &tp, &te)).collect();
+    let energy = |i: usize| match &encs[i] {
+        Ok(e) => e.bending_energy.to_f64(),
+        Err(_) => sol.interpolants[i].bending_energy,
+    };
+    let mut order: Vec<usize> = (0..sol.interpolants.len()).collect();
+    order.sort_by(|a, b| energy(*a).total_cmp(&energy(*b)));
     let count = order.len();
-    let energies: Vec<f64> = order.iter().map(|i| i.bending_energy).collect();
+    let energies: Vec<f64> = order.iter().map(|i| energy(*i)).collect();
     let mut out = Vec::with_capacity(count);
-    for (k, s) in order.into_iter().enumerate() {
+    for (k, idx) in order.into_iter().enumerate() {
+        let s = &sol.interpolants[idx];
+        let enc = encs[idx].as_ref();
         let exact = s.exact_control_points.is_some();
-        let pts: Vec<Vec<Q>> = match &s.exact_control_points {
-            Some(p) => p.iter().map(|v| v.to_vec()).collect(),
-            None => s
+        let pts: Vec<Vec<Q>> = match (&s.exact_control_points, enc) {
+            (Some(p), _) => p.iter().map(|v| v.to_vec()).collect(),
+            (None, Ok(e)) => e
+                .control_points_f64()
+                .iter()
+                .map(|v| v.iter().map(|x| to_q(*x)).collect::<Result<Vec<_>, _>>())
+                .collect::<Result<Vec<_>, _>>()?,
+            (None, Err(_)) => s
                 .curve
                 .control_points()
                 .iter()
@@ -737,7 +756,10 @@ fn build_ph_hermite(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             "f64 quaternion form: ",
             s.curve.to_poly_curve().certify_helix_test(&s.helix),
         ));
-        let e = s.bending_energy;
+        if let Ok(e) = enc {
+            certs.extend(e.certify());
+        }
+        let e = energy(idx);
         let least = energies.iter().all(|x| e <= *x * (1.0 + 1e-9));
         certs.push(Certificate::decide(
             format!(
@@ -763,7 +785,19 @@ fn build_ph_hermite(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         } else {
             Vec::new()
         };
-        values.extend(hermite_interpolant_values(s, k + 1, exact));
+        values.extend(hermite_interpolant_values(s, enc.ok(), k + 1, exact));
+        if let (Ok(e), false) = (enc, exact) {
+            let written: Vec<[Q; 3]> = pts
+                .iter()
+                .map(|p| [p[0].clone(), p[1].clone(), p[2].clone()])
+                .collect();
+            values.push(NamedQuantity::new(
+                "control_point_error",
+                "every exact control point is within this distance (per coordinate) of the \
+                 written one (interval arithmetic from the exact root)",
+                Quantity::Rational(round_decimal(&e.distance_bound(&written), 3, true)),
+            ));
+        }
         out.push(named(args, name, Geometry::Curve(bez), certs).with_values(values));
     }
     Ok(out)
@@ -835,9 +869,24 @@ fn hermite_problem_values(sol: &HermiteSolution<QuadExt>) -> Vec<NamedQuantity> 
 /// The values of one interpolant: rank, energy, k₀, k₂, φ, the helix axis.
 fn hermite_interpolant_values(
     s: &HermiteInterpolant,
+    enc: Option<&EnclosedInterpolant>,
     rank: usize,
     exact: bool,
 ) -> Vec<NamedQuantity> {
+    let energy = match enc {
+        Some(e) => NamedQuantity::new(
+            "bending_energy",
+            "E = ∫κ²σ dt (Besednjak (9.29)): an interval proven to contain it (validated \
+             quadrature on control points enclosed from the exact root)",
+            Quantity::enclosure(&e.bending_energy.lo(), &e.bending_energy.hi(), 17),
+        ),
+        None => NamedQuantity::new(
+            "bending_energy",
+            "E = ∫κ²σ dt (Besednjak (9.29)), by adaptive quadrature (σ could not be proven \
+             positive: no enclosure)",
+            Quantity::Approx(s.bending_energy),
+        ),
+    };
     let mut v = vec![
         NamedQuantity::new(
             "rank",
@@ -849,11 +898,7 @@ fn hermite_interpolant_values(
             "the least bending energy of all interpolants",
             Quantity::Bool(s.least_energy),
         ),
-        NamedQuantity::new(
-            "bending_energy",
-            "E = ∫κ²σ dt (Besednjak (9.29)), by adaptive quadrature",
-            Quantity::Approx(s.bending_energy),
-        ),
+        energy,
         NamedQuantity::new("k0", "k₀ = c₀ + 3/4", Quantity::Approx(s.k0)),
         NamedQuantity::new("k2", "k₂ = c₂ + 3/4", Quantity::Approx(s.k2)),
         NamedQuantity::new("phi", "φ with A₂ = Â₂e^{iφ}", Quantity::Approx(s.phi)),

@@ -206,6 +206,25 @@ fn ph_hermite_values_reproduce_example_9_1() {
     assert_eq!(value(&o, "elimination_quartic")["type"], "polynomial");
     let close = |a: f64, b: f64| (a - b).abs() <= 1e-6 * b.abs().max(1.0);
     assert!(close(approx(&o, "bending_energy"), 1.2735954));
+    // the energy is an enclosure proven to contain the exact value; the written control
+    // points are within the stated bound of the exact ones
+    let e = value(&o, "bending_energy");
+    assert_eq!(e["type"], "enclosure");
+    let iv: Vec<f64> = e["interval"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| {
+            let (p, q) = x.as_str().unwrap().split_once('/').unwrap();
+            p.parse::<f64>().unwrap() / q.parse::<f64>().unwrap()
+        })
+        .collect();
+    assert!(
+        iv[0] <= 1.273_595_441_493 && 1.273_595_441_493 <= iv[1] && iv[1] - iv[0] < 1e-11,
+        "{iv:?}"
+    );
+    assert_eq!(value(&o, "control_point_error")["type"], "rational");
+    assert!(value(&o, "control_point_error")["f64"].as_f64().unwrap() < 1e-15);
     assert!(close(approx(&o, "kappa_over_tau"), 0.586692));
     let axis: Vec<f64> = value(&o, "axis")["f64"]
         .as_array()

@@ -90,6 +90,8 @@ pub struct HermiteRoot<K> {
 pub struct HermiteInterpolant {
     /// Index of its root in [`HermiteSolution::roots`].
     pub root_index: usize,
+    /// The branch `ε = ±1`: `k_0 = ε√r_1/4`, `k_2 = ε·sgn(r_3 + 5)·√r_2/4`.
+    pub eps: i8,
     /// `k_0 = c_0 + 3/4`.
     pub k0: f64,
     /// `k_2 = c_2 + 3/4`.
@@ -358,6 +360,7 @@ fn solve_in<K: Scalar>(data: HermiteData<K>, m: K) -> Result<HermiteSolution<K>,
             let phi = phi_of(&curve);
             interpolants.push(HermiteInterpolant {
                 root_index: idx,
+                eps: if eps > 0.0 { 1 } else { -1 },
                 k0,
                 k2,
                 c0,
@@ -717,7 +720,7 @@ fn sign_changes<K: Scalar>(chain: &[Poly<K>], x: &K) -> usize {
 }
 
 /// Square-free part (exact division by `gcd(p, p')`).
-fn square_free<K: Scalar>(p: &Poly<K>) -> Poly<K> {
+pub(super) fn square_free<K: Scalar>(p: &Poly<K>) -> Poly<K> {
     let g = gcd_tol(p, &p.derivative());
     if g.degree().unwrap_or(0) == 0 {
         return p.clone();
@@ -1004,7 +1007,7 @@ fn sign_at_root<K: Scalar>(p: &Poly<K>, lo: &K, hi: &K, exact: &Option<K>, q: &P
     }
 }
 
-fn refine_once<K: Scalar>(p: &Poly<K>, lo: K, hi: K) -> (K, K) {
+pub(super) fn refine_once<K: Scalar>(p: &Poly<K>, lo: K, hi: K) -> (K, K) {
     let mid = (lo.clone() + hi.clone()) / K::from_i64(2);
     let pm = p.eval(&mid);
     if pm.is_zero() {

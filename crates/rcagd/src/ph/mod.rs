@@ -41,6 +41,7 @@ pub mod dph_forms;
 pub mod frame;
 pub mod helix;
 pub mod hermite;
+pub mod hermite_enclosure;
 pub mod hermite_values;
 pub mod hodograph;
 pub mod planar;

@@ -1,0 +1,424 @@
+//! Closed real intervals with exact rational end points, rounded outward to a dyadic grid:
+//! rigorous enclosures for quantities that are not rational (square roots, real roots of
+//! polynomials) and everything computed from them.
+//!
+//! Every operation returns an interval that contains `x ∘ y` for all `x ∈ X`, `y ∈ Y`
+//! (Moore, *Interval Analysis*, 1966): sums exactly, products as the hull of the four end
+//! point products, square roots and reciprocals from the monotone end points. The end
+//! points live on the grid `2^−GRID_BITS ℤ` (fixed point); after each product, reciprocal
+//! or square root they are rounded *outward* to it, so the sizes of the numbers stay
+//! bounded (the price is an absolute widening of at most `2^−GRID_BITS ≈ 10^−77` per
+//! operation; the enclosure property is kept). Intervals implement [`Ring`], so `Poly<Interval>` and the Bernstein routines
+//! work on them.
+
+use crate::quadratic::QuadExt;
+use crate::rational::Rational;
+use crate::scalar::Ring;
+use core::cmp::Ordering;
+use core::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+use dashu_base::{Abs, SquareRoot, UnsignedAbs};
+use dashu_int::{IBig, UBig};
+use num_traits::{One, Zero};
+
+/// Fractional bits of the outward-rounding grid.
+pub const GRID_BITS: usize = 256;
+
+/// `2^e` as an exact rational.
+pub fn pow2(e: isize) -> Rational {
+    if e >= 0 {
+        Rational::from(UBig::ONE << e.unsigned_abs())
+    } else {
+        Rational::from_parts(IBig::ONE, UBig::ONE << e.unsigned_abs())
+    }
+}
+
+/// A closed interval `[lo, hi]`, `lo ≤ hi`, with end points on the grid `2^−GRID_BITS ℤ`,
+/// stored as the integers `lo·2^GRID_BITS`, `hi·2^GRID_BITS` (fixed point: no gcd per
+/// operation).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Interval {
+    lo: IBig,
+    hi: IBig,
+}
+
+/// `⌊a/b⌋` for `b > 0`.
+fn floor_div(a: &IBig, b: &IBig) -> IBig {
+    let (q, r) = (a / b, a % b);
+    if r < IBig::ZERO {
+        q - IBig::ONE
+    } else {
+        q
+    }
+}
+
+/// `⌈a/b⌉` for `b > 0`.
+fn ceil_div(a: &IBig, b: &IBig) -> IBig {
+    let (q, r) = (a / b, a % b);
+    if r > IBig::ZERO {
+        q + IBig::ONE
+    } else {
+        q
+    }
+}
+
+/// `⌊q·2^B⌋`.
+fn fix_down(q: &Rational) -> IBig {
+    floor_div(
+        &(q.numerator() << GRID_BITS),
+        &IBig::from(q.denominator().clone()),
+    )
+}
+
+/// `⌈q·2^B⌉`.
+fn fix_up(q: &Rational) -> IBig {
+    ceil_div(
+        &(q.numerator() << GRID_BITS),
+        &IBig::from(q.denominator().clone()),
+    )
+}
+
+fn unfix(n: &IBig) -> Rational {
+    Rational::from_parts(n.clone(), UBig::ONE << GRID_BITS)
+}
+
+/// `⌊n·2^−B⌋` (floor shift).
+fn shr_down(n: &IBig) -> IBig {
+    n >> GRID_BITS
+}
+
+/// `⌈n·2^−B⌉`.
+fn shr_up(n: &IBig) -> IBig {
+    -((-n) >> GRID_BITS)
+}
+
+/// `⌊√m⌋` for `m ≥ 0`.
+fn isqrt_down(m: &IBig) -> IBig {
+    IBig::from(m.unsigned_abs().sqrt())
+}
+
+/// `⌈√m⌉` for `m ≥ 0`.
+fn isqrt_up(m: &IBig) -> IBig {
+    let u = m.unsigned_abs();
+    let r = u.sqrt();
+    IBig::from(if &r * &r == u { r } else { r + UBig::ONE })
+}
+
+impl Interval {
+    /// `[lo, hi]`, rounded outward to the grid; `None` unless `lo ≤ hi`.
+    pub fn new(lo: &Rational, hi: &Rational) -> Option<Self> {
+        (lo <= hi).then(|| Interval {
+            lo: fix_down(lo),
+            hi: fix_up(hi),
+        })
+    }
+
+    /// The smallest grid interval containing `q` (the point itself when `q` is on the grid).
+    pub fn point(q: &Rational) -> Self {
+        Interval {
+            lo: fix_down(q),
+            hi: fix_up(q),
+        }
+    }
+
+    /// An enclosure of `a + b√d`.
+    pub fn from_quad(x: &QuadExt) -> Self {
+        let a = Interval::point(x.a());
+        if x.b() == &Rational::ZERO {
+            return a;
+        }
+        // √d ∈ [⌊√⌊d·4^B⌋⌋, ⌈√⌈d·4^B⌉⌉]·2^−B
+        let d = x.d();
+        let den = IBig::from(d.denominator().clone());
+        let scaled = d.numerator() << (2 * GRID_BITS);
+        let root = Interval {
+            lo: isqrt_down(&floor_div(&scaled, &den)),
+            hi: isqrt_up(&ceil_div(&scaled, &den)),
+        };
+        a + Interval::point(x.b()) * root
+    }
+
+    /// Lower end.
+    pub fn lo(&self) -> Rational {
+        unfix(&self.lo)
+    }
+
+    /// Upper end.
+    pub fn hi(&self) -> Rational {
+        unfix(&self.hi)
+    }
+
+    /// `hi − lo`.
+    pub fn width(&self) -> Rational {
+        unfix(&(&self.hi - &self.lo))
+    }
+
+    /// The midpoint.
+    pub fn mid(&self) -> Rational {
+        unfix(&(&self.lo + &self.hi)) / Rational::from(2)
+    }
+
+    /// `max(|lo|, |hi|)`.
+    pub fn mag(&self) -> Rational {
+        let (a, b) = (self.lo.clone().abs(), self.hi.clone().abs());
+        unfix(if a > b { &a } else { &b })
+    }
+
+    /// `true` if `q ∈ [lo, hi]`.
+    pub fn contains(&self, q: &Rational) -> bool {
+        self.lo <= fix_down(q) && fix_up(q) <= self.hi
+    }
+
+    /// `true` if `other ⊆ self`.
+    pub fn encloses(&self, other: &Interval) -> bool {
+        self.lo <= other.lo && other.hi <= self.hi
+    }
+
+    /// The sign of every element, when it is the same for all (`Equal` only for `[0, 0]`).
+    pub fn sign(&self) -> Option<Ordering> {
+        if self.lo > IBig::ZERO {
+            Some(Ordering::Greater)
+        } else if self.hi < IBig::ZERO {
+            Some(Ordering::Less)
+        } else if self.lo == IBig::ZERO && self.hi == IBig::ZERO {
+            Some(Ordering::Equal)
+        } else {
+            None
+        }
+    }
+
+    /// The smallest interval containing both.
+    pub fn hull(&self, other: &Interval) -> Interval {
+        Interval {
+            lo: self.lo.clone().min(other.lo.clone()),
+            hi: self.hi.clone().max(other.hi.clone()),
+        }
+    }
+
+    /// `1/x` for every `x` of the interval; `None` if it contains 0.
+    pub fn recip(&self) -> Option<Interval> {
+        if self.sign().is_none_or(|s| s == Ordering::Equal) {
+            return None;
+        }
+        // 1/(n·2^−B) = 2^{2B}/n · 2^−B
+        let one = IBig::ONE << (2 * GRID_BITS);
+        let (lo, hi) = if self.lo > IBig::ZERO {
+            (floor_div(&one, &self.hi), ceil_div(&one, &self.lo))
+        } else {
+            // both negative: 1/hi ≤ 1/x ≤ 1/lo; divide by the positive −n
+            let (nh, nl) = (-self.hi.clone(), -self.lo.clone());
+            (-ceil_div(&one, &nh), -floor_div(&one, &nl))
+        };
+        Some(Interval { lo, hi })
+    }
+
+    /// `x/y`; `None` if `y` contains 0.
+    pub fn checked_div(&self, y: &Interval) -> Option<Interval> {
+        Some(self.clone() * y.recip()?)
+    }
+
+    /// `√x` for every `x ≥ 0` of the interval; `None` if `hi < 0`. A negative lower end is
+    /// clipped to 0 (the square root of the non-negative part).
+    pub fn sqrt(&self) -> Option<Interval> {
+        if self.hi < IBig::ZERO {
+            return None;
+        }
+        let lo = if self.lo < IBig::ZERO {
+            IBig::ZERO
+        } else {
+            isqrt_down(&(&self.lo << GRID_BITS))
+        };
+        Some(Interval {
+            lo,
+            hi: isqrt_up(&(&self.hi << GRID_BITS)),
+        })
+    }
+
+    /// The midpoint rounded to `f64`.
+    pub fn to_f64(&self) -> f64 {
+        self.mid().to_f64().value()
+    }
+
+    /// `[lo, hi]` as the two nearest `f64`s outward (for display).
+    pub fn to_f64_bounds(&self) -> (f64, f64) {
+        let (lq, hq) = (self.lo(), self.hi());
+        let lo = lq.to_f64().value();
+        let hi = hq.to_f64().value();
+        let lo = if Rational::try_from(lo).is_ok_and(|l| l > lq) {
+            lo.next_down()
+        } else {
+            lo
+        };
+        let hi = if Rational::try_from(hi).is_ok_and(|h| h < hq) {
+            hi.next_up()
+        } else {
+            hi
+        };
+        (lo, hi)
+    }
+}
+
+impl Add for Interval {
+    type Output = Interval;
+    fn add(self, rhs: Interval) -> Interval {
+        Interval {
+            lo: self.lo + rhs.lo,
+            hi: self.hi + rhs.hi,
+        }
+    }
+}
+
+impl Sub for Interval {
+    type Output = Interval;
+    fn sub(self, rhs: Interval) -> Interval {
+        Interval {
+            lo: self.lo - rhs.hi,
+            hi: self.hi - rhs.lo,
+        }
+    }
+}
+
+impl Neg for Interval {
+    type Output = Interval;
+    fn neg(self) -> Interval {
+        Interval {
+            lo: -self.hi,
+            hi: -self.lo,
+        }
+    }
+}
+
+impl Mul for Interval {
+    type Output = Interval;
+    fn mul(self, rhs: Interval) -> Interval {
+        let p = [
+            &self.lo * &rhs.lo,
+            &self.lo * &rhs.hi,
+            &self.hi * &rhs.lo,
+            &self.hi * &rhs.hi,
+        ];
+        let mut lo = &p[0];
+        let mut hi = &p[0];
+        for x in &p[1..] {
+            if x < lo {
+                lo = x;
+            }
+            if x > hi {
+                hi = x;
+            }
+        }
+        Interval {
+            lo: shr_down(lo),
+            hi: shr_up(hi),
+        }
+    }
+}
+
+impl AddAssign for Interval {
+    fn add_assign(&mut self, rhs: Interval) {
+        self.lo += rhs.lo;
+        self.hi += rhs.hi;
+    }
+}
+
+impl SubAssign for Interval {
+    fn sub_assign(&mut self, rhs: Interval) {
+        self.lo -= rhs.hi;
+        self.hi -= rhs.lo;
+    }
+}
+
+impl MulAssign for Interval {
+    fn mul_assign(&mut self, rhs: Interval) {
+        *self = self.clone() * rhs;
+    }
+}
+
+impl Zero for Interval {
+    fn zero() -> Self {
+        Interval {
+            lo: IBig::ZERO,
+            hi: IBig::ZERO,
+        }
+    }
+    fn is_zero(&self) -> bool {
+        self.lo == IBig::ZERO && self.hi == IBig::ZERO
+    }
+}
+
+impl One for Interval {
+    fn one() -> Self {
+        let one = IBig::ONE << GRID_BITS;
+        Interval {
+            lo: one.clone(),
+            hi: one,
+        }
+    }
+}
+
+impl Ring for Interval {
+    fn from_i64(n: i64) -> Self {
+        let v = IBig::from(n) << GRID_BITS;
+        Interval {
+            lo: v.clone(),
+            hi: v,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(p: i64, d: i64) -> Rational {
+        Rational::from(p) / Rational::from(d)
+    }
+
+    #[test]
+    fn sqrt_two_is_enclosed_tightly() {
+        let r = Interval::point(&q(2, 1)).sqrt().expect("sqrt");
+        assert!(r.lo() * r.lo() <= q(2, 1));
+        assert!(r.hi() * r.hi() >= q(2, 1));
+        assert!(r.width() <= pow2(-(GRID_BITS as isize)) * Rational::from(2));
+        let (lo, hi) = r.to_f64_bounds();
+        assert!(lo <= std::f64::consts::SQRT_2 && std::f64::consts::SQRT_2 <= hi);
+    }
+
+    #[test]
+    fn thirds_are_rounded_outward() {
+        let t = Interval::point(&q(1, 3));
+        assert!(t.contains(&q(1, 3)));
+        assert!(t.lo() < q(1, 3) && q(1, 3) < t.hi());
+        let three = (t.clone() + t.clone() + t) - Interval::one();
+        assert!(three.contains(&Rational::ZERO));
+    }
+
+    #[test]
+    fn products_and_reciprocals_enclose_every_pair() {
+        let a = Interval::new(&q(-2, 1), &q(3, 1)).expect("a");
+        let b = Interval::new(&q(-5, 1), &q(1, 7)).expect("b");
+        let p = a.clone() * b.clone();
+        for x in [q(-2, 1), q(0, 1), q(3, 1)] {
+            for y in [q(-5, 1), q(1, 7), q(-1, 2)] {
+                assert!(p.contains(&(&x * &y)));
+            }
+        }
+        assert!(a.recip().is_none());
+        let c = Interval::new(&q(1, 3), &q(1, 2)).expect("c");
+        let r = c.recip().expect("recip");
+        assert!(r.contains(&q(2, 1)) && r.contains(&q(3, 1)));
+        assert_eq!(c.sign(), Some(Ordering::Greater));
+        assert_eq!(a.sign(), None);
+    }
+
+    #[test]
+    fn quadratic_extension_elements_are_enclosed() {
+        let x = QuadExt::new(q(1, 2), q(3, 4), q(5, 1)).expect("quad");
+        let e = Interval::from_quad(&x);
+        let v = 0.5 + 0.75 * 5f64.sqrt();
+        let (lo, hi) = e.to_f64_bounds();
+        assert!(lo <= v && v <= hi && hi - lo < 1e-15);
+        // (x − 1/2)² = 45/16 lies in the square of the enclosure's shift
+        let s = e - Interval::point(&q(1, 2));
+        assert!((s.clone() * s).contains(&q(45, 16)));
+    }
+}
