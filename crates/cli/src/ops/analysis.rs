@@ -28,7 +28,7 @@ type Q = Rational;
 
 const PH_ANALYZE: OpSpec = OpSpec {
     name: "ph_analyze",
-    summary: "answers about a polynomial space curve, exact: the PH test (|r'|² = σ²), σ, arc length, ρ = |r'×r''|²/σ² with deg ρ ≤ 2n − 6, the DPH test ρ = c·ω̃², the helix test a·r' ≡ σ with axis and (κ/τ)², the DPH class of a quaternion preimage (for degree 7 with the helicity criteria of ch. 7: Lemma 7.1, Props. 7.6–7.9 and Δ of (7.11)), and the Frenet frame, curvature and torsion at given parameters in Q(√ρ(t)) (Besednjak, DPH-krivulje in polinomske vijačnice, §3–4, 7)",
+    summary: "answers about a polynomial space curve, exact: the PH test (|r'|² = σ²), σ, arc length, ρ = |r'×r''|²/σ² with deg ρ ≤ 2n − 6, the DPH test ρ = c·ω̃², the helix test a·r' ≡ σ with axis and (κ/τ)², the DPH class of a quaternion preimage (for degree 7 with the helicity criteria of ch. 7: Lemmas 7.1, 7.2, Props. 7.6–7.9 and Δ of (7.11)), and the Frenet frame, curvature and torsion at given parameters in Q(√ρ(t)) (Besednjak, DPH-krivulje in polinomske vijačnice, §3–4, 7)",
     params: &[
         ParamSpec::optional(
             "points",
@@ -517,6 +517,18 @@ fn build_ph_analyze(args: &OpArgs) -> Result<Vec<Object>, OpError> {
                         values.extend(chapter7_values(&c));
                         certificates.extend(c.certify());
                     }
+                }
+                // Lemma 7.2 whenever r = deg gcd(α, β) = 1 (DPH or not)
+                if let Ok(l) = rcagd::ph::dph_criteria::lemma_7_2(pc) {
+                    values.push(value(
+                        "reduced_wronskian_discriminant",
+                        "discriminant of α̃β̃' − α̃'β̃ (α = γα̃, β = γβ̃, deg γ = 1); Besednjak Lemma 7.2: never c·(t − τ)², so h is not constant or a square",
+                        Quantity::Vector(vec![
+                            Quantity::Rational(l.discriminant.re.clone()),
+                            Quantity::Rational(l.discriminant.im.clone()),
+                        ]),
+                    ));
+                    certificates.push(l.certify());
                 }
             }
             if let Some(ts) = args.opt_numbers("at")? {

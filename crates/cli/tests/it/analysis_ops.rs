@@ -262,3 +262,18 @@ fn ph_analyze_reports_the_chapter_7_criterion() {
     assert_eq!(value(&o, "helix")["exact"], "not a helix");
     assert!(rat(&value(&o, "ch7_delta")["exact"]) < q("0"));
 }
+
+/// Besednjak Lemma 7.2 through `ph_analyze`: α = (t + 2)(1 + t²), β = (t + 2)(t + 1) have
+/// r = 1; the reduced Wronskian 1 − 2t − t² has discriminant 8 ≠ 0 (hand computation).
+#[test]
+fn ph_analyze_reports_lemma_7_2() {
+    let o = build_json(
+        "lemma72",
+        "[[object]]\nname = \"c\"\nop = \"ph_analyze\"\nquaternions = [[2, 0, 0, 2], [\"7/3\", 0, 0, 3], [\"10/3\", 0, 0, \"13/3\"], [6, 0, 0, 6]]\n",
+        "c",
+    );
+    assert_eq!(o["all_certificates_hold"], true);
+    let d = value(&o, "reduced_wronskian_discriminant");
+    assert_eq!(d["items"][0]["exact"], "8");
+    assert_eq!(d["items"][1]["exact"], "0");
+}

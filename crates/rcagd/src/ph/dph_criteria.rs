@@ -5,9 +5,11 @@
 //! [`super::ProportionalityFactors`]):
 //!
 //! * Lemma 7.1: a non-helical DPH curve has `r ≤ 1` (so `r ≥ 2` means a helix);
-//! * Lemma 7.2: `r = 1` with `h` constant or a square is not DPH;
+//! * Lemma 7.2: `r = 1` with `h` constant or a square is not DPH ([`lemma_7_2`]: the reduced
+//!   Wronskian `α̃β̃' − α̃'β̃` is never `c·(t − τ)²`);
 //! * Lemmas 7.3 and 7.5: `z = (a₁(t − τ₁)^m + a₂(t − τ₂)^m)/(b₁(t − τ₁)^m + b₂(t − τ₂)^m)`
-//!   is a line or circle iff `τ₁, τ₂` are both real or complex conjugate;
+//!   is a line or circle iff `τ₁, τ₂` are both real or complex conjugate (as functions in
+//!   [`super::generalized_circle`]);
 //! * Prop. 7.6 (`st h = 0`, `st w = 2`): non-helical iff the roots of `w` are neither both
 //!   real nor conjugate (and `α, β` have the form (7.8), forced for `r = 0`). With `h`
 //!   maximal, a monic `W` with real coefficients never occurs here (its square would be
@@ -23,8 +25,9 @@
 use super::helix::HelixTest;
 use super::hodograph::PhCurve;
 use super::PhError;
+use num_traits::Zero;
 use rcagd_algebra::complex::Complex;
-use rcagd_algebra::{bernstein, Certificate, Rational};
+use rcagd_algebra::{bernstein, Certificate, Poly, Rational};
 
 type Q = Rational;
 
@@ -93,6 +96,66 @@ pub fn prop_7_9_delta(h: &[Q]) -> Result<Q, PhError> {
         Q::from(9) * h2.clone() * h2.clone() + Q::from(3) * h0.clone() * h4.clone()
             - Q::from(12) * h1.clone() * h3.clone(),
     )
+}
+
+/// Lemma 7.2 on a curve of degree 7 whose Hopf preimage has `r = deg gcd(α, β) = 1`:
+/// with `α = γα̃`, `β = γβ̃`, the reduced Wronskian `p = α̃β̃' − α̃'β̃` (degree ≤ 2) is never
+/// `c·(t − τ)²`, so the DPH condition cannot hold with `h` constant or a square.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Lemma72 {
+    /// `γ = gcd(α, β)`, monic, linear.
+    pub gcd: Poly<Complex<Q>>,
+    /// `p = α̃β̃' − α̃'β̃`.
+    pub reduced_wronskian: Poly<Complex<Q>>,
+    /// The discriminant `p₁² − 4p₀p₂` of `p` (non-zero when `deg p = 2`).
+    pub discriminant: Complex<Q>,
+}
+
+/// Lemma 7.2 (see [`Lemma72`]).
+///
+/// # Errors
+/// [`PhError::DegreeMismatch`] unless the preimage is cubic with `deg gcd(α, β) = 1`.
+pub fn lemma_7_2(curve: &PhCurve<Q>) -> Result<Lemma72, PhError> {
+    if curve.preimage_degree() != 3 {
+        return Err(PhError::DegreeMismatch(format!(
+            "Lemma 7.2 is about curves of degree 7 (a cubic preimage), got degree {}",
+            curve.degree()
+        )));
+    }
+    let (alpha, beta) = curve.hopf_polys();
+    let gcd = alpha.gcd(&beta).monic();
+    if gcd.degree() != Some(1) {
+        return Err(PhError::DegreeMismatch(format!(
+            "Lemma 7.2 needs r = deg gcd(α, β) = 1, got {}",
+            gcd.degree().unwrap_or(0)
+        )));
+    }
+    let inexact = |e| PhError::Degenerate(format!("gcd division: {e}"));
+    let a = alpha.div_exact(&gcd).map_err(inexact)?;
+    let b = beta.div_exact(&gcd).map_err(inexact)?;
+    let p = &(&a * &b.derivative()) - &(&a.derivative() * &b);
+    let c = |k: usize| p.coeffs().get(k).cloned().unwrap_or_else(Complex::zero);
+    let discriminant = c(1) * c(1) - Complex::from_real(Q::from(4)) * c(0) * c(2);
+    Ok(Lemma72 {
+        gcd,
+        reduced_wronskian: p,
+        discriminant,
+    })
+}
+
+impl Lemma72 {
+    /// Certificate: `p` is not a constant times the square of a linear polynomial
+    /// (`deg p < 2`, or its discriminant is non-zero), as the lemma states.
+    pub fn certify(&self) -> Certificate {
+        let deg = self.reduced_wronskian.degree();
+        let z = self.discriminant.re == Q::ZERO && self.discriminant.im == Q::ZERO;
+        Certificate::decide(
+            "Besednjak Lemma 7.2: with r = 1, α̃β̃' − α̃'β̃ is not c·(t − τ)², so h is neither constant nor a square",
+            deg.is_some_and(|d| d < 2) || !z,
+            true,
+            || format!("α̃β̃' − α̃'β̃ = {:?} is a square up to a constant", self.reduced_wronskian),
+        )
+    }
 }
 
 /// The ch. 7 criteria for a DPH curve of degree 7 (module docs).

@@ -39,6 +39,7 @@ pub mod dph;
 pub mod dph_criteria;
 pub mod dph_forms;
 pub mod frame;
+pub mod generalized_circle;
 pub mod helix;
 pub mod hermite;
 pub mod hermite_enclosure;

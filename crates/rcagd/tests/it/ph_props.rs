@@ -366,3 +366,60 @@ fn f64_helix_axis_of_a_septic_helix() {
     };
     assert!(close(hf.tan2_psi(), 37.0), "{}", hf.tan2_psi());
 }
+
+fn cpoly(cs: Vec<Complex<Q>>) -> Poly<Complex<Q>> {
+    Poly::new(cs)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Besednjak Lemma 7.2 on random cubic preimages α = γα̃, β = γβ̃ with a common
+    /// linear factor: the reduced Wronskian is never a constant times a square, and a DPH
+    /// curve among them never has h constant (st h = 0).
+    #[test]
+    fn lemma_7_2_on_random_preimages(g0 in cplx(), a in (cplx(), cplx(), cplx()), b in (cplx(), cplx(), cplx())) {
+        let gamma = cpoly(vec![g0, Complex::from_real(Q::from(1))]);
+        let at = cpoly(vec![a.0, a.1, a.2]);
+        let bt = cpoly(vec![b.0, b.1, b.2]);
+        prop_assume!(at.degree() == Some(2) || bt.degree() == Some(2));
+        let alpha = &gamma * &at;
+        let beta = &gamma * &bt;
+        let ab = rcagd_algebra::bernstein::to_bernstein(&alpha, 3).unwrap();
+        let bb = rcagd_algebra::bernstein::to_bernstein(&beta, 3).unwrap();
+        let curve = PhCurve::from_hopf(&ab, &bb, [Q::from(0), Q::from(0), Q::from(0)]).unwrap();
+        match rcagd::ph::dph_criteria::lemma_7_2(&curve) {
+            Ok(l) => {
+                prop_assert!(l.certify().holds, "{}", l.certify());
+                if let Ok(Some(f)) = curve.proportionality_factors() {
+                    prop_assert!(f.h.degree().unwrap_or(0) > 0, "DPH with r = 1 and h constant");
+                }
+            }
+            // α̃, β̃ share a factor too (r ≥ 2)
+            Err(PhError::DegreeMismatch(_)) => prop_assert!(at.gcd(&bt).degree().unwrap_or(0) > 0 || at.is_zero() || bt.is_zero()),
+            Err(e) => return Err(TestCaseError::fail(format!("{e}"))),
+        }
+    }
+
+    /// Besednjak Lemma 7.5 with random Gaussian-rational data: the linear-system decision
+    /// agrees with the lemma's prediction (and the circle found is certified).
+    #[test]
+    fn lemma_7_5_on_random_data(a1 in cplx(), a2 in cplx(), b1 in cplx(), b2 in cplx(), t1 in cplx(), t2 in cplx(), m in 1u32..=3, kind in 0usize..3) {
+        use rcagd::ph::generalized_circle::lemma_7_5;
+        let t2 = match kind {
+            0 => Complex::from_real(t2.re),          // with t1 real below: both real
+            1 => t1.conj(),                           // conjugate pair
+            _ => t2,                                  // general
+        };
+        let t1 = if kind == 0 { Complex::from_real(t1.re) } else { t1 };
+        match lemma_7_5([&a1, &a2], [&b1, &b2], [&t1, &t2], m) {
+            Ok(l) => {
+                for c in l.certify() {
+                    prop_assert!(c.holds && c.exact, "{}", c);
+                }
+            }
+            Err(PhError::Degenerate(_)) => {}
+            Err(e) => return Err(TestCaseError::fail(format!("{e}"))),
+        }
+    }
+}
