@@ -197,21 +197,49 @@ pub fn build_recipe(
         })
         .collect();
     let mut out: Vec<Object> = Vec::new();
+    // which recipe object made each output name
+    let mut owner: Vec<&crate::recipe::RecipeObject> = Vec::new();
     let mut diags = Vec::new();
     for (obj, result) in recipe.objects.iter().zip(built) {
         match result {
             Ok(objs) => {
                 for o in objs {
-                    if out.iter().any(|x| x.name == o.name) {
-                        diags.push(recipe.file.error(
-                            obj.op_key_span,
-                            format!(
-                                "op `{}` produced a second object called {:?}",
-                                obj.op, o.name
-                            ),
-                        ));
-                    } else {
-                        out.push(o);
+                    match out.iter().position(|x| x.name == o.name) {
+                        Some(i) if std::ptr::eq(owner[i], obj) => {
+                            diags.push(recipe.file.error(
+                                obj.op_key_span,
+                                format!(
+                                    "op `{}` produced a second object called {:?}",
+                                    obj.op, o.name
+                                ),
+                            ));
+                        }
+                        Some(i) => {
+                            let first = owner[i];
+                            let made = |r: &crate::recipe::RecipeObject| {
+                                if r.name == o.name {
+                                    format!("object {:?} (op `{}`)", r.name, r.op)
+                                } else {
+                                    format!(
+                                        "object {:?} (op `{}`, which names its extra results {:?}, …)",
+                                        r.name, r.op, o.name
+                                    )
+                                }
+                            };
+                            diags.push(recipe.file.error(
+                                obj.span,
+                                format!(
+                                    "two results are called {:?}: {} and {}; rename one of them",
+                                    o.name,
+                                    made(first),
+                                    made(obj)
+                                ),
+                            ));
+                        }
+                        None => {
+                            out.push(o);
+                            owner.push(obj);
+                        }
                     }
                 }
             }

@@ -261,3 +261,33 @@ fn empty_lists_are_named() {
     let (code, e) = build_err("messages-empty-ok", "r.toml", text);
     assert_eq!(code, Some(0), "{e}");
 }
+
+/// A user's object name that clashes with a name an op generates for its extra results
+/// (`h_2` of `ph_hermite` named `h`) is an input error naming both objects; nothing is
+/// written.
+#[test]
+fn a_name_clashing_with_a_generated_name_is_explained() {
+    let dir = temp_dir("messages-name-clash");
+    let recipe = write(
+        &dir,
+        "clash.toml",
+        "[[object]]\nname = \"h\"\nop = \"ph_hermite\"\np_s = [0, 0, 0]\nd_s = [1, 0, 1]\np_f = [1, 1, 1]\nd_f = [0, 1, 1]\n\n[[object]]\nname = \"h_2\"\nop = \"circle\"\nradius = 1\n",
+    );
+    let out = dir.join("out");
+    let o = bin()
+        .arg("build")
+        .arg(&recipe)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let e = stderr(&o);
+    assert!(
+        e.contains("two results are called \"h_2\"")
+            && e.contains("object \"h\" (op `ph_hermite`")
+            && e.contains("object \"h_2\" (op `circle`)"),
+        "{e}"
+    );
+    assert!(!out.exists());
+}
