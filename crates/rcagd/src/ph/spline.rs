@@ -429,13 +429,31 @@ impl<F: Scalar> PhQuinticSpline<F> {
             let db = Self::end_derivatives(sb);
             let as_poly = |c: &C<F>| Poly::new(vec![c.re.clone(), c.im.clone()]);
             let closing = self.closed && b == 0;
+            let ea = sa.end();
+            let sb0 = sb.start();
             if !closing {
-                let ea = sa.end();
-                let sb0 = sb.start();
                 out.push(identity_cert(
                     format!("C0 at junction {}→{}", a + 1, b + 1),
                     &Poly::new(ea.to_vec()),
                     &Poly::new(sb0.to_vec()),
+                ));
+            } else {
+                // each segment starts where the previous one ends by construction; the
+                // last one ends at p_0 only up to the rounding of the z's
+                let gap = ea
+                    .iter()
+                    .zip(sb0.iter())
+                    .map(|(x, y)| (x.clone() - y.clone()).to_f64().abs())
+                    .fold(0.0, f64::max);
+                out.push(Certificate::decide(
+                    format!(
+                        "C0 at the closing junction {}→1: |r_{}(1) − r_1(0)| ≤ {tol:e} (rounded preimage)",
+                        a + 1,
+                        a + 1
+                    ),
+                    gap <= tol,
+                    false,
+                    || format!("{gap:e}"),
                 ));
             }
             out.push(identity_cert(
@@ -515,7 +533,19 @@ mod tests {
         let s = PhQuinticSpline::interpolate(&square, &SplineEnds::Closed).unwrap();
         assert_eq!(s.segments.len(), 4);
         assert_eq!(s.closure_sign, -1);
-        assert!(Certificate::all_hold(&s.certify()));
+        let certs = s.certify();
+        assert!(Certificate::all_hold(&certs));
+        // the closing junction has its C0 certificate too (a tolerance check)
+        assert!(certs
+            .iter()
+            .any(|c| c.property.starts_with("C0 at the closing junction 4→1") && !c.exact));
+        assert_eq!(
+            certs
+                .iter()
+                .filter(|c| c.property.starts_with("C0"))
+                .count(),
+            4
+        );
         let f = PhQuinticSpline::interpolate(
             &[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]],
             &SplineEnds::Closed,
