@@ -63,13 +63,13 @@ const DISPLAY_PARAMS: [ParamSpec; 6] = [
         "comb",
         ParamKind::Bool,
         "false",
-        "draw the curvature comb `<name>_comb` (exact: κn = (σr''−σ'r')/σ³)",
+        "draw the curvature comb `<name>_comb`: teeth from r(t) to r(t) − comb_scale·κn(t), away from the centre of curvature as CAD systems draw them (exact: κn = (σr''−σ'r')/σ³)",
     ),
     ParamSpec::with_default(
         "comb_scale",
         ParamKind::Number,
         "1",
-        "length of a comb tooth per unit curvature",
+        "length of a comb tooth per unit curvature (negative: teeth toward the centre of curvature)",
     ),
     ParamSpec::with_default(
         "feed",
