@@ -23,6 +23,7 @@ use rcagd_algebra::rational::format_rational;
 use rcagd_algebra::{Certificate, Rational};
 use rcagd_geom::weight_sign::{split_curve_uniform, split_patch_uniform, SignRule};
 use rcagd_geom::{BezierCurve, BezierPatch};
+use rcagd_io::quantity::{NamedQuantity, Quantity};
 
 /// The ops of this topic.
 pub const OPS: &[OpSpec] = &[
@@ -89,7 +90,7 @@ const QUADRIC_INTERPOLATE: OpSpec = OpSpec {
         ParamSpec::optional(
             "tangents",
             ParamKind::Points,
-            "one tangent direction [vx, vy, vz] per point, in the tangent plane there; [0, 0, 0] for none",
+            "one tangent direction [vx, vy, vz] per point, in the tangent plane there; [0, 0, 0] for none. The curve touches the tangent line; whether it runs along or against v is returned as the value `tangent_senses`",
         ),
         ParamSpec::optional(
             "degree",
@@ -478,9 +479,28 @@ fn build_interpolate(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             || "an interpolant of lower degree exists".to_string(),
         ));
     }
+    let senses = interpolant.tangent_senses().map_err(|e| located(e, "tangents"))?;
     let (geometry, extra) = exportable_curve(interpolant.curve().clone(), &proj.quadric())?;
     certs.extend(extra);
-    Ok(vec![args.object(geometry, certs)])
+    let mut object = args.object(geometry, certs);
+    if senses.iter().any(Option::is_some) {
+        let items = senses
+            .iter()
+            .map(|s| {
+                Quantity::Integer(match s {
+                    Some(std::cmp::Ordering::Greater) => 1,
+                    Some(std::cmp::Ordering::Less) => -1,
+                    _ => 0,
+                })
+            })
+            .collect();
+        object = object.with_values(vec![NamedQuantity::new(
+            "tangent_senses",
+            "per point: 1 if the curve runs along the given tangent direction, −1 if against it (the interpolation fixes the tangent line; the sense follows), 0 without a tangent",
+            Quantity::Vector(items),
+        )]);
+    }
+    Ok(vec![object])
 }
 
 /// Homogeneous control points in 3-space from points / weights / homogeneous.

@@ -252,3 +252,17 @@ fn ph_spatial_hermite_values() {
     assert_eq!(exact(&v, "rotation0"), "(1, 0)");
     assert_eq!(exact(&v, "arc_length"), "31/15");
 }
+
+/// `quadric_interpolate` matches tangent lines; the sense of the curve along each given
+/// direction is returned. Quarter arc from (1, 0, 0) to (0, 0, 1) on the unit sphere with
+/// tangents (0, 1, 0) and (0, −1, 0): the lowest-degree interpolant leaves along +y and
+/// arrives moving along +y (against the second direction) — reported, not hidden.
+#[test]
+fn quadric_interpolate_reports_tangent_senses() {
+    let o = build_json(
+        "interp-senses",
+        "[[object]]\nname = \"q\"\nop = \"quadric_interpolate\"\npoints = [[1, 0, 0], [0, 0, 1]]\ntangents = [[0, 1, 0], [0, -1, 0]]\n",
+        "q",
+    );
+    assert_eq!(exact(&o, "tangent_senses"), "(1, -1)");
+}

@@ -97,6 +97,41 @@ impl<F: Scalar> Interpolant<F> {
     pub fn degree(&self) -> usize {
         2 * self.degree
     }
+    /// For each datum, the sense of the curve at a given tangent: `Some(Greater)` if
+    /// `y'(tᵢ)` points from the point towards the tangent's second point (along the
+    /// direction `v` of a tangent `(0, v)`), `Some(Less)` if against, `None` without a
+    /// tangent. The interpolation conditions are linear and fix the tangent *line* only; the
+    /// sense is an outcome, decided exactly here.
+    ///
+    /// # Errors
+    /// [`QuadricError::Geom`] if the curve has a pole at a datum's parameter.
+    pub fn tangent_senses(&self) -> Result<Vec<Option<std::cmp::Ordering>>, QuadricError> {
+        self.data
+            .iter()
+            .map(|d| {
+                let Some(tan) = &d.tangent else {
+                    return Ok(None);
+                };
+                let v: Vec<F> = if tan[0].is_zero() {
+                    tan[1..].to_vec()
+                } else {
+                    (1..4)
+                        .map(|i| {
+                            tan[i].clone() / tan[0].clone()
+                                - d.point[i].clone() / d.point[0].clone()
+                        })
+                        .collect()
+                };
+                let dy = self.curve().derivative_euclidean(&d.t, 1)?;
+                let dot = dy
+                    .iter()
+                    .zip(&v)
+                    .fold(F::zero(), |acc, (a, b)| acc + a.clone() * b.clone());
+                Ok(dot.partial_cmp(&F::zero()))
+            })
+            .collect()
+    }
+
     /// The interpolation data.
     pub fn data(&self) -> &[HermiteDatum<F>] {
         &self.data
