@@ -131,7 +131,9 @@ fn meets_cert(name: &str, g: &Line<Rational>, h: &Line<Rational>, hname: &str) -
 /// Blames a canal error on the parameter that controls it.
 fn canal_err(e: CanalError, spine_param: &'static str, radius_param: &'static str) -> OpError {
     match &e {
-        CanalError::NoRealEnvelope { .. } => OpError::param(radius_param, e.to_string()),
+        CanalError::NoRealEnvelope { .. } | CanalError::ZeroRadius => {
+            OpError::param(radius_param, e.to_string())
+        }
         CanalError::DegenerateSpine(_) => OpError::param(spine_param, e.to_string()),
         _ => OpError::new(e.to_string()),
     }
@@ -617,9 +619,9 @@ fn build_canal_surface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         })?),
     };
     let built = canal_surface_rational(&family, &options, dom.as_ref()).map_err(|e| match e {
-        CanalError::IrrationalSplit { .. } | CanalError::CyclographicDomainNeeded { .. } => {
-            OpError::param("radius", e.to_string())
-        }
+        CanalError::IrrationalSplit { .. }
+        | CanalError::CyclographicDomainNeeded { .. }
+        | CanalError::ZeroRadius => OpError::param("radius", e.to_string()),
         CanalError::InvalidArgument(_) if dom.is_some() => {
             OpError::param("cyclographic_domain", e.to_string())
         }

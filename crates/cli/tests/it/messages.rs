@@ -291,3 +291,18 @@ fn a_name_clashing_with_a_generated_name_is_explained() {
     );
     assert!(!out.exists());
 }
+
+/// `canal_surface` with a radius that vanishes identically is an input error at `radius`
+/// (exit 2), as `pipe` with radius 0 is; a radius vanishing at one end only still builds.
+#[test]
+fn canal_surface_refuses_a_zero_radius() {
+    let dir = temp_dir("messages-canal-zero-radius");
+    let e = crate::common::build_refused(
+        &dir,
+        "[[object]]\nname = \"c\"\nop = \"canal_surface\"\npoints = [[0, 0, 0], [0, 2, 0], [4, 4, 0]]\nradius = [0, 0]\n",
+    );
+    assert!(
+        e.contains("vanishes identically") && e.contains("radius = [0, 0]"),
+        "{e}"
+    );
+}

@@ -636,11 +636,15 @@ fn oriented_on_domain(
 /// # Errors
 /// [`CanalError::NoRealEnvelope`] naming the interval where `|ṁ| < |ṙ|` (on the domain, or
 /// on `R` without one); [`CanalError::DegenerateSpine`]; [`CanalError::NeedsLargerExtension`];
-/// [`CanalError::Factorization`].
+/// [`CanalError::Factorization`]; [`CanalError::ZeroRadius`] for a radius that vanishes
+/// identically (the envelope is the spine itself, not a surface).
 pub fn canal_surface(
     spine: &CanalSpine<Rational>,
     options: &CanalOptions,
 ) -> Result<CanalBuild, CanalError> {
+    if spine.r.is_zero() {
+        return Err(CanalError::ZeroRadius);
+    }
     let (spine, reparam) = oriented_on_domain(spine, options)?;
     let d = spine.discriminant()?;
     let split = super::sum_of_squares::gaussian_split(&d)?;

@@ -127,6 +127,10 @@ pub enum CanalError {
     /// Any other invalid argument; the message names the precondition.
     #[error("invalid argument: {0}")]
     InvalidArgument(String),
+    /// The radius vanishes identically: the spheres are points, their envelope is the
+    /// spine curve, not a surface.
+    #[error("the radius r(t) vanishes identically: the spheres are points and their envelope is the spine curve, not a surface; give a radius that is not zero everywhere")]
+    ZeroRadius,
     /// Every exact build of the surface needs a quadratic field `Q(√d)`: exchange files
     /// carry rational geometry only.
     #[error("|ṁ|² − ṙ² is not a sum of two squares over Q: the exact surface needs the field Q(√{radicand}) (rcagd::canal::canal_surface builds it there); STEP and IGES carry rational geometry only — change the data so that it splits over Q (e.g. a PH spine for a pipe)")]
