@@ -4,6 +4,7 @@
 mod canal_cyclographic;
 mod canal_props;
 mod cyclide;
+mod hypercyclide;
 mod laguerre_props;
 mod laguerre_query;
 mod lines_props;
