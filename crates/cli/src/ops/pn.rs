@@ -16,6 +16,7 @@ use crate::model::{Geometry, Object};
 use crate::value::{ParamKind, Value};
 use rcagd::laguerre::LaguerreMap;
 use rcagd::pn::developable::DevelopablePn;
+use rcagd::pn::hypercyclide::{Hypercyclide, PeSimilarity, RegularQuadric};
 use rcagd::pn::modeling::{HermiteDatum, PnModel};
 use rcagd::pn::planar::{surface_of_revolution, PnCurve};
 use rcagd::pn::ruled::{CanalPn, ConeFamilyEnvelope, CycleFamily, EllipsoidPn, RuledPn};
@@ -40,6 +41,8 @@ pub const OPS: &[OpSpec] = &[
     PN_DEVELOPABLE,
     PN_REVOLUTION,
     PN_ELLIPSOID,
+    PN_QUADRIC,
+    HYPERCYCLIDE,
     PN_LAGUERRE,
     PN_ANTICAUSTIC,
     PN_PLANAR,
@@ -913,6 +916,180 @@ fn build_ellipsoid(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         }
     }
     Ok(objs)
+}
+
+// ---------------------------------------------------------------------------------
+// regular quadrics (Theorem 4.6) and hypercyclides (Prop. 4.3)
+// ---------------------------------------------------------------------------------
+
+const QUADRIC_KIND: ParamSpec = ParamSpec::required(
+    "quadric",
+    ParamKind::Choice(&["ellipsoid", "two_sheet_hyperboloid", "elliptic_paraboloid"]),
+    "ellipsoid x²/a² + y²/b² + z²/c² = 1 (a > b > c > 0), two_sheet_hyperboloid x²/a² − y²/b² − z²/c² = 1 (b > c > 0), elliptic_paraboloid x²/a² + y²/b² = 2z (a > b > 0; c unused)",
+);
+const QA: ParamSpec = ParamSpec::required("a", ParamKind::Number, "first axis parameter a");
+const QB: ParamSpec = ParamSpec::required("b", ParamKind::Number, "second axis parameter b");
+const QC: ParamSpec = ParamSpec::with_default(
+    "c",
+    ParamKind::Number,
+    "0",
+    "third axis parameter c (not used by the elliptic paraboloid)",
+);
+const FAMILY: ParamSpec = ParamSpec::with_default(
+    "family",
+    ParamKind::Choice(&["first", "second"]),
+    "\"first\"",
+    "which of the two ruling families of the ruled quadric ψ of the pencil gives the cones",
+);
+
+fn regular_quadric(args: &OpArgs) -> Result<RegularQuadric, OpError> {
+    let (a, b) = (args.number("a")?, args.number("b")?);
+    let c = args.opt_number("c")?.unwrap_or_default();
+    Ok(match args.get("quadric") {
+        Some(Value::Str(s)) if s == "two_sheet_hyperboloid" => {
+            RegularQuadric::TwoSheetHyperboloid { a, b, c }
+        }
+        Some(Value::Str(s)) if s == "elliptic_paraboloid" => {
+            RegularQuadric::EllipticParaboloid { a, b }
+        }
+        _ => RegularQuadric::Ellipsoid { a, b, c },
+    })
+}
+
+fn first_family(args: &OpArgs) -> bool {
+    !matches!(args.get("family"), Some(Value::Str(s)) if s == "second")
+}
+
+/// The objects of a hypercyclide (or quadric) with the certificates of the cyclographic
+/// image on the base surface and on every offset.
+fn hypercyclide_objects(args: &OpArgs, h: &Hypercyclide<Q>) -> Result<Vec<Object>, OpError> {
+    let mut certs = h.rulings().certify();
+    certs.extend(prefixed("cones: ", h.envelope().tangency_certificates()));
+    certs.extend(prefixed("cones: ", h.envelope().cone_certificates()));
+    certs.extend(h.image_certificates(h.surface()));
+    if let Some(d) = main_offset(args)? {
+        certs.extend(h.image_certificates(h.surface().offset(d).surface()));
+    }
+    let mut objs = surface_objects(
+        args,
+        &oriented(args, h.surface()),
+        &domain(args)?,
+        certs,
+        "domain",
+    )?;
+    for (k, d) in distances(args)?.into_iter().enumerate() {
+        if let Some(o) = objs.get_mut(k + 1) {
+            o.certificates
+                .extend(h.image_certificates(h.surface().offset(d).surface()));
+        }
+    }
+    Ok(objs)
+}
+
+const PN_QUADRIC: OpSpec = OpSpec {
+    name: "pn_quadric",
+    summary: "a regular quadric (ellipsoid, two-sheet hyperboloid, elliptic paraboloid) in its principal frame as a PN surface with exact rational offsets (Peternell Thm 4.6): envelope of the cones of revolution of the rulings of the ruled quadric ψ of the pencil φ* + μΩ*",
+    params: &[
+        QUADRIC_KIND,
+        QA,
+        QB,
+        QC,
+        FAMILY,
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[\"1/4\", \"3/4\", -1, 1]",
+            "parameter rectangle [s0, s1, u0, u1] (s: the double-cover parameter of the rulings, u: along the characteristic conics)",
+        ),
+        OFFSET,
+        ORIENTATION,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_quadric_ellipsoid"
+op = "pn_quadric"
+# the ellipsoid (25/3, 5, 3) of Peternell §4.7, here in its principal frame
+quadric = "ellipsoid"
+a = "25/3"
+b = 5
+c = 3
+domain = [40, 80, "-1/2", "1/2"]
+distances = [1]
+"#,
+    build: build_pn_quadric,
+};
+
+fn build_pn_quadric(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let h = Hypercyclide::<Q>::quadric(regular_quadric(args)?, first_family(args))
+        .map_err(blame("a"))?;
+    hypercyclide_objects(args, &h)
+}
+
+const HYPERCYCLIDE: OpSpec = OpSpec {
+    name: "hypercyclide",
+    summary: "the hypercyclide η(L(φ)): cyclographic image of a regular quadric φ moved into a (tilted) Euclidean hyperplane of R⁴ by a rational pe similarity L (boost, translation, scale), as a PN surface (Peternell Prop. 4.3, §4.7), certified as the envelope of the cycles of L(φ)",
+    params: &[
+        QUADRIC_KIND,
+        QA,
+        QB,
+        QC,
+        FAMILY,
+        ParamSpec::with_default(
+            "boost_axis",
+            ParamKind::Int,
+            "0",
+            "axis 0, 1 or 2 of the Lorentz boost in the (x_axis, r) plane",
+        ),
+        ParamSpec::with_default(
+            "boost",
+            ParamKind::Number,
+            "0",
+            "boost parameter β (cosh = (1 + β²)/(1 − β²)), β² ≠ 1",
+        ),
+        ParamSpec::with_default(
+            "translation",
+            ParamKind::Numbers,
+            "[0, 0, 0, 0]",
+            "translation (x, y, z, r) of R⁴ (r: a dilatation, i.e. an offset)",
+        ),
+        ParamSpec::with_default("scale", ParamKind::Number, "1", "similarity factor s ≠ 0"),
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[\"1/4\", \"3/4\", -1, 1]",
+            "parameter rectangle [s0, s1, u0, u1]",
+        ),
+        OFFSET,
+        ORIENTATION,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "hypercyclide_boosted_paraboloid"
+op = "hypercyclide"
+# the paraboloid x²/25 + y²/9 = 2z in the hyperplane tilted by the boost β = 1/3
+quadric = "elliptic_paraboloid"
+a = 5
+b = 3
+boost_axis = 1
+boost = "1/3"
+translation = [0, 0, 0, "1/2"]
+domain = [1, 3, "-1/2", "1/2"]
+"#,
+    build: build_hypercyclide,
+};
+
+fn build_hypercyclide(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let axis = usize::try_from(args.int("boost_axis")?)
+        .map_err(|_| OpError::param("boost_axis", "the boost axis must be 0, 1 or 2"))?;
+    let t = args.opt_numbers("translation")?.unwrap_or_default();
+    let t: [Q; 4] = <[Q; 4]>::try_from(t).map_err(|_| {
+        OpError::param("translation", "the translation needs four numbers (x, y, z, r)")
+    })?;
+    let mut map = PeSimilarity::boost(axis, args.number("boost")?, t).map_err(blame("boost"))?;
+    map.s = args.number("scale")?;
+    let h = Hypercyclide::<Q>::new(regular_quadric(args)?, map, first_family(args))
+        .map_err(blame("a"))?;
+    hypercyclide_objects(args, &h)
 }
 
 // ---------------------------------------------------------------------------------

@@ -510,15 +510,54 @@ fn find_cover(n: &P, deg: usize) -> Result<Cover, PnError> {
             });
         }
     }
+    let sos = |num: &P, den: &P| -> bool {
+        let sub = subst(n, num, den, deg);
+        // N(T(S)) = sub/den^deg (deg even): a sum of two squares iff sub is
+        matches!(sum_of_two_squares(&sub), Ok(SumOfSquares::Rational { .. }))
+    };
+    // Cauchy bound of the roots: candidates T₀ beyond every root as well
+    let lead = n.leading();
+    let bound = n
+        .coeffs()
+        .iter()
+        .map(|c| Scalar::to_f64(&(c / &lead)).abs() + 1.0)
+        .fold(1.0f64, f64::max)
+        .ceil()
+        .min(1e6);
+    let bound = Q::from(bound as i64);
     let mut tried: Vec<(usize, Q)> = Vec::new();
     for (bi, qb) in branches.iter().enumerate() {
+        // the cover through the point at infinity of w² = lc·q(T): q(T(S)) = lc·square
+        let (num, den) = if qb.degree() == Some(2) {
+            let lc = qb.leading();
+            let p = &qb.coeff(1) / &lc;
+            let r = &qb.coeff(0) / &lc;
+            let delta = &(&(&p * &p) / &q(4)) - &r;
+            (poly(&[delta, -p, Q::ONE]), poly(&[Q::ZERO, q(2)]))
+        } else {
+            (poly(&[-qb.coeff(0), Q::ZERO, Q::ONE]), poly(&[qb.coeff(1)]))
+        };
+        tried.push((bi, qb.leading()));
+        if sos(&num, &den) {
+            return Ok(Cover {
+                branch: qb.clone(),
+                t0: Q::ZERO,
+                num,
+                den,
+            });
+        }
         let lc2 = if qb.degree() == Some(2) {
             qb.leading()
         } else {
             Q::ZERO
         };
         let dq = qb.derivative();
-        for t0 in small_rationals() {
+        let small = small_rationals();
+        let cands = small
+            .iter()
+            .cloned()
+            .chain(small.iter().skip(1).map(|t| t * &bound));
+        for t0 in cands {
             let kappa = qb.eval(&t0);
             if kappa.is_zero() {
                 continue;
@@ -536,14 +575,7 @@ fn find_cover(n: &P, deg: usize) -> Result<Cover, PnError> {
             let den = poly(&[-(&kappa * &lc2), Q::ZERO, Q::ONE]);
             let lin = poly(&[&kappa * &dq.eval(&t0), -(&w0 * &q(2))]);
             let num = &den.scale(&t0) + &lin;
-            let sub = subst(n, &num, &den, deg);
-            // N(T(S)) = sub/den^deg: a sum of two squares iff sub·den^deg is
-            let test = if deg % 2 == 0 {
-                sub.clone()
-            } else {
-                &sub * &den
-            };
-            if let Ok(SumOfSquares::Rational { .. }) = sum_of_two_squares(&test) {
+            if sos(&num, &den) {
                 return Ok(Cover {
                     branch: qb.clone(),
                     t0,
@@ -698,7 +730,8 @@ pub struct Hypercyclide<F> {
     map: PeSimilarity,
     rulings: RulingFamily,
     cover: Cover,
-    envelope: ConeFamilyEnvelope<F>,
+    envelope: ConeFamilyEnvelope<Q>,
+    surface: PnSurface<F>,
 }
 
 impl<F: Scalar> Hypercyclide<F> {
@@ -737,7 +770,7 @@ impl<F: Scalar> Hypercyclide<F> {
                 })
             })
         };
-        let fam = |c: &[P; 5]| -> Result<CycleFamily<F>, PnError> {
+        let fam = |c: &[P; 5]| -> Result<CycleFamily<Q>, PnError> {
             let c = apply(c);
             CycleFamily::new(
                 [to_f(&c[1]), to_f(&c[2]), to_f(&c[3])],
@@ -751,28 +784,32 @@ impl<F: Scalar> Hypercyclide<F> {
         let p = [0, 1].map(|i| {
             let (n, d) = &cones.p[i];
             RatFn {
-                num: to_f::<F>(n).scale(&F::from_rational(&map.s)),
+                num: to_f::<Q>(n).scale(&map.s),
                 den: to_f(d),
             }
         });
         // the families' denominators: c1 over P₀, c2 over P₀D₀; M = (m1 w2 − m2 w1)/(w1 w2)
         let envelope = ConeFamilyEnvelope::new(c1, c2, Some(p))?;
+        // the construction is exact (the sum-of-two-squares decision needs it); the
+        // surface in the scalar F is the exact one with its coefficients converted
+        let surface = envelope.surface().map_scalar(F::from_rational);
         Ok(Hypercyclide {
             quadric,
             map,
             rulings,
             cover,
             envelope,
+            surface,
         })
     }
 
     /// The PN surface (parameters `(S, u)`).
     pub fn surface(&self) -> &PnSurface<F> {
-        self.envelope.surface()
+        &self.surface
     }
 
-    /// The cone-family envelope behind it.
-    pub fn envelope(&self) -> &ConeFamilyEnvelope<F> {
+    /// The cone-family envelope behind it (exact).
+    pub fn envelope(&self) -> &ConeFamilyEnvelope<Q> {
         &self.envelope
     }
 
