@@ -1013,7 +1013,7 @@ quadric = "ellipsoid"
 a = "25/3"
 b = 5
 c = 3
-domain = [40, 80, "-1/2", "1/2"]
+domain = [20, 70, -1, 1]
 distances = [1]
 "#,
     build: build_pn_quadric,
@@ -1073,7 +1073,7 @@ b = 3
 boost_axis = 1
 boost = "1/3"
 translation = [0, 0, 0, "1/2"]
-domain = [1, 3, "-1/2", "1/2"]
+domain = [4, 8, "-1/2", "1/2"]
 "#,
     build: build_hypercyclide,
 };
