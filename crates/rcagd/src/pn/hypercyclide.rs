@@ -290,7 +290,7 @@ impl RegularQuadric {
                 let direction = [
                     poly(&[Q::ONE]),
                     P::zero(),
-                    poly(&[g.clone()]),
+                    poly(std::slice::from_ref(&g)),
                     poly(&[Q::ZERO, -(Q::ONE / &g)]),
                     poly(&[&sg * a]),
                 ];
@@ -319,12 +319,13 @@ impl RegularQuadric {
 
 /// `Ω* = diag(0, 1, 1, 1, −1)`.
 pub fn absolute_dual() -> [[Q; 5]; 5] {
-    let mut o = zero5();
-    for i in 1..4 {
-        o[i][i] = Q::ONE;
-    }
-    o[4][4] = q(-1);
-    o
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| match (i == j, i) {
+            (true, 1..=3) => Q::ONE,
+            (true, 4) => q(-1),
+            _ => Q::ZERO,
+        })
+    })
 }
 
 impl RulingFamily {
