@@ -433,8 +433,10 @@ fn subst(p: &P, n: &P, d: &P, deg: usize) -> P {
 pub struct Cover {
     /// The branch polynomial `q` (two parabolic rulings).
     pub branch: P,
-    /// The rational point `(T₀, w₀)` of `w² = κ q(T)`, `κ = q(T₀)`.
-    pub t0: Q,
+    /// The rational point `(T₀, w₀)` of `w² = κ q(T)` the cover is drawn from
+    /// (`κ = q(T₀)`, `w₀ = κ`), or `None` for the point at infinity (`κ` = leading
+    /// coefficient of `q`).
+    pub t0: Option<Q>,
     /// Numerator of `T(S)`.
     pub num: P,
     /// Denominator of `T(S)`.
@@ -505,7 +507,7 @@ fn find_cover(n: &P, deg: usize) -> Result<Cover, PnError> {
         if let Ok(SumOfSquares::Rational { .. }) = sum_of_two_squares(&n2) {
             return Ok(Cover {
                 branch: poly(&[Q::ONE]),
-                t0: Q::ZERO,
+                t0: Some(Q::ZERO),
                 num: poly(&[Q::ZERO, Q::ONE]),
                 den: poly(&[Q::ONE]),
             });
@@ -542,7 +544,7 @@ fn find_cover(n: &P, deg: usize) -> Result<Cover, PnError> {
         if sos(&num, &den) {
             return Ok(Cover {
                 branch: qb.clone(),
-                t0: Q::ZERO,
+                t0: None,
                 num,
                 den,
             });
@@ -579,7 +581,7 @@ fn find_cover(n: &P, deg: usize) -> Result<Cover, PnError> {
             if sos(&num, &den) {
                 return Ok(Cover {
                     branch: qb.clone(),
-                    t0,
+                    t0: Some(t0),
                     num,
                     den,
                 });

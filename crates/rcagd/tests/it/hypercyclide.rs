@@ -217,6 +217,28 @@ fn hypercyclide_of_an_ellipsoid_in_a_tilted_hyperplane() {
     assert!(!phi[4][4].is_zero() || !phi[0][4].is_zero());
 }
 
+#[test]
+fn translation_along_r_is_the_offset() {
+    // φ translated by d along x₄: its cycles are (m; r + d), so η is the offset at d
+    let quad = RegularQuadric::EllipticParaboloid {
+        a: q(5, 1),
+        b: q(4, 1),
+    };
+    let d = q(3, 4);
+    let map = PeSimilarity::boost(0, q(0, 1), [q(0, 1), q(0, 1), q(0, 1), d.clone()])
+        .expect("translation");
+    let h = Hypercyclide::<Q>::new(quad.clone(), map, true).expect("rational");
+    assert_exact(&h.certify());
+    let base = Hypercyclide::<Q>::quadric(quad, true).expect("rational");
+    let off = base.surface().offset(d);
+    for (s, u) in [(q(2, 1), q(1, 3)), (q(-3, 2), q(5, 1))] {
+        assert_eq!(
+            h.surface().eval(&s, &u).expect("defined"),
+            off.surface().eval(&s, &u).expect("defined")
+        );
+    }
+}
+
 fn f64_agrees(h: &Hypercyclide<Q>, hf: &Hypercyclide<f64>) {
     for (s, u) in [(q(1, 3), q(1, 2)), (q(3, 2), q(-1, 1)), (q(-4, 5), q(2, 1))] {
         let (Ok(x), Ok(xf)) = (
