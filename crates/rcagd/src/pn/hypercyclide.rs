@@ -42,7 +42,7 @@
 //! (`Γᵀφ′*Γ ≡ 0`), its contact point `y = φ′*Γ` lies on `φ′`, and the surface point is the
 //! contact point `x = m + r n` of the plane with the cycle `η(y) = (m; r)`.
 
-use super::poly::{identity_cert, scalar_sqrt, zero_cert, RatFn};
+use super::poly::{dot3, identity_cert, scalar_sqrt, zero_cert, RatFn};
 use super::ruled::{ConeFamilyEnvelope, CycleFamily};
 use super::surface::PnSurface;
 use super::PnError;
@@ -968,6 +968,205 @@ impl<F: Scalar> Certified for Hypercyclide<F> {
         ));
         out.extend(self.envelope.certify());
         out.extend(self.image_certificates(self.surface()));
+        out
+    }
+}
+
+// -------------------------------------------------------------------------------------
+// Cyclographic images of surfaces of R⁴ (Peternell §3.9, Lemma 3.5)
+// -------------------------------------------------------------------------------------
+
+/// The square root of a polynomial with rational coefficients (any number of variables),
+/// `None` if it is not the square of a polynomial over `Q`: term by term in the
+/// lexicographic order (the leading term of `p − q²` is `2·LT(q)·t` for the next term `t`).
+pub fn mpoly_sqrt(p: &MPoly<Q>) -> Option<MPoly<Q>> {
+    if p.is_zero() {
+        return Some(MPoly::zero(p.nvars().max(2)));
+    }
+    let nv = p.nvars().max(2);
+    let pad = |e: &[u32]| -> Vec<u32> { (0..nv).map(|i| e.get(i).copied().unwrap_or(0)).collect() };
+    let lead = |x: &MPoly<Q>| -> Option<(Vec<u32>, Q)> {
+        x.terms()
+            .map(|(e, c)| (pad(e), c.clone()))
+            .max_by(|a, b| a.0.cmp(&b.0))
+    };
+    let (e0, c0) = lead(p)?;
+    if e0.iter().any(|k| k % 2 == 1) {
+        return None;
+    }
+    let r0 = scalar_sqrt(&c0)?;
+    let lt_e: Vec<u32> = e0.iter().map(|k| k / 2).collect();
+    let mut q = MPoly::monomial(nv, &lt_e, r0.clone());
+    let two_lt = r0 * q2();
+    let max_terms = p.num_terms() * 4 + 16;
+    for _ in 0..max_terms {
+        let rest = p - &(&q * &q);
+        let Some((e, c)) = lead(&rest) else {
+            return Some(q);
+        };
+        // t = LT(rest) / (2·LT(q)); its exponent must be ≥ 0 and below LT(q)
+        if e.iter().zip(&lt_e).any(|(a, b)| a < b) {
+            return None;
+        }
+        let te: Vec<u32> = e.iter().zip(&lt_e).map(|(a, b)| a - b).collect();
+        if te >= lt_e {
+            return None;
+        }
+        q = &q + &MPoly::monomial(nv, &te, &c / &two_lt);
+    }
+    None
+}
+
+fn q2() -> Q {
+    q(2)
+}
+
+/// The cyclographic image `η(φ)` of a rational 2-surface `φ: s(u, v) = (m; r)(u, v)` of
+/// `R⁴` (Peternell §3.9, Lemma 3.5): the envelope of its cycles. A tangent plane
+/// `(e₀, n)` of the envelope at the cycle `s` satisfies the contact condition and its
+/// derivatives, `n·m_u = −r_u`, `n·m_v = −r_v`, `|n| = 1`; with the numerators
+/// `a = S_u w − S w_u`, `b = S_v w − S w_v` of the partial derivatives (`s = S/w`), the Gram
+/// matrix `G` of `a, b` (first three coordinates) and
+/// `Δ = det G − (a₄²G₂₂ − 2a₄b₄G₁₂ + b₄²G₁₁)`,
+///
+/// `n = [(−a₄G₂₂ + b₄G₁₂) a + (−b₄G₁₁ + a₄G₁₂) b ± √Δ (a × b)] / det G`,
+/// `x = m + r n`
+///
+/// (docs/math/hypercyclides.md#surfaces). The image is rational by this construction iff
+/// `Δ` is a square in `Q[u, v]`: two sheets `η(φ)₁, η(φ)₂`, or one for a γ-surface
+/// (`Δ ≡ 0`: every tangent plane of `φ` is a γ-plane). Each sheet is a PN surface.
+#[derive(Debug, Clone)]
+pub struct CyclographicImage {
+    s: [MPoly<Q>; 4],
+    w: MPoly<Q>,
+    derivatives: [[MPoly<Q>; 4]; 2],
+    sheets: Vec<PnSurface<Q>>,
+}
+
+impl CyclographicImage {
+    /// The image of `s = (S₁, S₂, S₃, S₄)/w` (polynomials in `(u, v)`).
+    ///
+    /// # Errors
+    /// [`PnError::InvalidInput`] for `w ≡ 0` or centres that do not span a surface
+    /// (`m_u × m_v ≡ 0`); [`PnError::NoRationalPoint`] if `Δ` is not a square (the two
+    /// sheets are conjugate over `Q(u, v)(√Δ)`).
+    pub fn new(s: [MPoly<Q>; 4], w: MPoly<Q>) -> Result<Self, PnError> {
+        if w.is_zero() {
+            return Err(PnError::InvalidInput(
+                "the surface of R⁴ needs a non-zero denominator w(u, v)".into(),
+            ));
+        }
+        let der = |p: &MPoly<Q>, i: usize| &(&p.partial(i) * &w) - &(p * &w.partial(i));
+        let a: [MPoly<Q>; 4] = std::array::from_fn(|k| der(&s[k], 0));
+        let b: [MPoly<Q>; 4] = std::array::from_fn(|k| der(&s[k], 1));
+        let g11 = dot3(&a[..3], &a[..3]);
+        let g12 = dot3(&a[..3], &b[..3]);
+        let g22 = dot3(&b[..3], &b[..3]);
+        let det = &(&g11 * &g22) - &(&g12 * &g12);
+        if det.is_zero() {
+            return Err(PnError::InvalidInput(
+                "the centres m(u, v) of the cycles do not span a surface (m_u × m_v ≡ 0)".into(),
+            ));
+        }
+        let (a4, b4) = (&a[3], &b[3]);
+        let delta = &det
+            - &(&(&(&(a4 * a4) * &g22) - &(&(a4 * b4) * &g12).scale(&q(2))) + &(&(b4 * b4) * &g11));
+        let ca = &(&(-a4) * &g22) + &(b4 * &g12);
+        let cb = &(&(-b4) * &g11) + &(a4 * &g12);
+        let base: [MPoly<Q>; 3] = std::array::from_fn(|k| &(&ca * &a[k]) + &(&cb * &b[k]));
+        let cr = super::poly::cross3(
+            &[a[0].clone(), a[1].clone(), a[2].clone()],
+            &[b[0].clone(), b[1].clone(), b[2].clone()],
+        );
+        let roots: Vec<MPoly<Q>> = if delta.is_zero() {
+            vec![MPoly::zero(2)]
+        } else {
+            let r = mpoly_sqrt(&delta).ok_or_else(|| {
+                PnError::NoRationalPoint(format!(
+                    "Δ = det G − (a₄²G₂₂ − 2a₄b₄G₁₂ + b₄²G₁₁) is not the square of a polynomial over Q ({} terms): the two sheets of the cyclographic image are conjugate over Q(u, v)(√Δ)",
+                    delta.num_terms()
+                ))
+            })?;
+            vec![r.clone(), -r]
+        };
+        let mut sheets = Vec::new();
+        for (k, root) in roots.iter().enumerate() {
+            let n: [MPoly<Q>; 3] = std::array::from_fn(|i| &base[i] + &(root * &cr[i]));
+            let point = [
+                &w * &det,
+                &(&s[0] * &det) + &(&s[3] * &n[0]),
+                &(&s[1] * &det) + &(&s[3] * &n[1]),
+                &(&s[2] * &det) + &(&s[3] * &n[2]),
+            ];
+            let normal = [det.clone(), n[0].clone(), n[1].clone(), n[2].clone()];
+            let sheet = PnSurface::from_point_normal(point, normal)?
+                .named(format!("cyclographic image, sheet {}", k + 1));
+            sheets.push(sheet);
+        }
+        Ok(CyclographicImage {
+            s,
+            w,
+            derivatives: [a, b],
+            sheets,
+        })
+    }
+
+    /// The sheets (two, or one for a γ-surface).
+    pub fn sheets(&self) -> &[PnSurface<Q>] {
+        &self.sheets
+    }
+
+    /// `true` if `φ` is a γ-surface (`Δ ≡ 0`, one sheet).
+    pub fn is_gamma_surface(&self) -> bool {
+        self.sheets.len() == 1
+    }
+
+    /// For a sheet (or its offset at `d`, support `h − d`): every surface point is the
+    /// contact point of its tangent plane with its cycle, `x ≡ m + (r + d) n` (so on the
+    /// sphere of the cycle, and the plane touches it there), and the plane is in contact
+    /// with the neighbouring cycles: `n·m_u ≡ −r_u`, `n·m_v ≡ −r_v`.
+    pub fn image_certificates(&self, sheet: &PnSurface<Q>) -> Vec<Certificate> {
+        let d = sheet.distance().clone();
+        let x = sheet.point_polys();
+        let n = sheet.normal_polys();
+        let s = &self.s;
+        let w = &self.w;
+        let mut out = Vec::new();
+        for i in 0..3 {
+            let lhs = &(&x[i + 1] * &n[0]) * w;
+            let r = &s[3] + &w.scale(&d);
+            let rhs = &x[0] * &(&(&s[i] * &n[0]) + &(&r * &n[i + 1]));
+            out.push(identity_cert(
+                &format!("the point is the contact point m + r n of its plane with its cycle (component {i}; Peternell Lemma 3.5)"),
+                &lhs,
+                &rhs,
+            ));
+        }
+        for (j, a) in self.derivatives.iter().enumerate() {
+            let lhs = dot3(&n[1..], &a[..3]);
+            let rhs = -(&n[0] * &a[3]);
+            out.push(identity_cert(
+                &format!(
+                    "the tangent plane touches the neighbouring cycles: n·m_{} ≡ −r_{}",
+                    ["u", "v"][j],
+                    ["u", "v"][j]
+                ),
+                &lhs,
+                &rhs,
+            ));
+        }
+        out
+    }
+}
+
+impl Certified for CyclographicImage {
+    /// PN identities and the image certificates of every sheet.
+    fn certify(&self) -> Vec<Certificate> {
+        let mut out = Vec::new();
+        for s in &self.sheets {
+            out.extend(s.certify());
+            out.extend(self.image_certificates(s));
+        }
         out
     }
 }

@@ -303,3 +303,108 @@ proptest! {
         f64_agrees(&h, &hf);
     }
 }
+
+mod surfaces_of_r4 {
+    //! Cyclographic images of rational 2-surfaces of R⁴ (Peternell §3.9, Lemma 3.5).
+    use super::{assert_exact, q, Q};
+    use rcagd::pn::hypercyclide::{mpoly_sqrt, CyclographicImage};
+    use rcagd::pn::PnError;
+    use rcagd::Certified;
+    use rcagd_algebra::mpoly::MPoly;
+
+    fn u() -> MPoly<Q> {
+        MPoly::var(2, 0)
+    }
+    fn v() -> MPoly<Q> {
+        MPoly::var(2, 1)
+    }
+    fn k(c: i64) -> MPoly<Q> {
+        MPoly::constant(2, q(c, 1))
+    }
+
+    #[test]
+    fn square_roots_of_polynomials() {
+        let p = &(&(&u() * &u()).scale(&q(3, 2)) - &(&u() * &v())) + &k(7);
+        let sq = &p * &p;
+        let r = mpoly_sqrt(&sq).expect("a square");
+        assert!(r == p || r == -p.clone());
+        assert!(mpoly_sqrt(&(&sq + &k(1))).is_none());
+        assert!(mpoly_sqrt(&(&u() * &v())).is_none());
+        assert!(mpoly_sqrt(&k(2)).is_none());
+    }
+
+    #[test]
+    fn cycles_touching_a_plane_have_two_rational_sheets() {
+        // s = (u, v, −ρ; ρ), ρ = (u² + v²)/4 + 1: every cycle touches z = 0 at (u, v, 0)
+        // (one sheet); the other sheet is the second envelope of the spheres
+        let rho = &(&(&u() * &u()) + &(&v() * &v())).scale(&q(1, 4)) + &k(1);
+        let img = CyclographicImage::new([u(), v(), -rho.clone(), rho], k(1)).expect("rational");
+        assert_eq!(img.sheets().len(), 2);
+        assert!(!img.is_gamma_surface());
+        assert_exact(&img.certify());
+        let (s, t) = (q(1, 2), q(-3, 1));
+        let pts: Vec<[Q; 3]> = img
+            .sheets()
+            .iter()
+            .map(|sh| sh.eval(&s, &t).expect("defined"))
+            .collect();
+        assert!(pts.iter().any(|x| x == &[s.clone(), t.clone(), Q::from(0)]));
+        assert!(
+            pts.iter().any(|x| !x[2].is_zero()),
+            "a second, different sheet"
+        );
+        // offsets: the cycles (m; r + d)
+        for sh in img.sheets() {
+            let off = sh.offset(q(1, 3));
+            assert_exact(&img.image_certificates(off.surface()));
+        }
+    }
+
+    #[test]
+    fn a_pn_surface_in_r3_is_its_own_image() {
+        // the unit sphere (2u, 2v, u² + v² − 1)/(u² + v² + 1) with r ≡ 0: both orientations
+        let s2 = &(&u() * &u()) + &(&v() * &v());
+        let img = CyclographicImage::new(
+            [
+                u().scale(&q(2, 1)),
+                v().scale(&q(2, 1)),
+                &s2 - &k(1),
+                MPoly::zero(2),
+            ],
+            &s2 + &k(1),
+        )
+        .expect("rational");
+        assert_eq!(img.sheets().len(), 2);
+        assert_exact(&img.certify());
+        let x = img.sheets()[0].eval(&q(1, 3), &q(2, 1)).expect("defined");
+        let n2: Q = x.iter().fold(Q::from(0), |acc, c| &acc + &(c * c));
+        assert_eq!(n2, Q::from(1));
+    }
+
+    #[test]
+    fn a_gamma_plane_has_one_degenerate_sheet_and_errors_are_named() {
+        // s = (u, v, 0; v): tangent planes are γ-planes (the null direction (0, 1, 0, 1));
+        // every cycle touches the image along the line f = φ ∩ R³ (Peternell §3.9)
+        let img = CyclographicImage::new([u(), v(), MPoly::zero(2), v()], k(1)).expect("γ");
+        assert!(img.is_gamma_surface());
+        assert_exact(&img.image_certificates(&img.sheets()[0]));
+        let x = img.sheets()[0].eval(&q(2, 1), &q(5, 1)).expect("defined");
+        assert_eq!(x, [q(2, 1), q(0, 1), q(0, 1)]);
+        // a graph in R³ whose parametrization is not PN: Δ is no square
+        let e = CyclographicImage::new(
+            [
+                u(),
+                v(),
+                &(&u() * &u()) + &(&v() * &v()).scale(&q(2, 1)),
+                MPoly::zero(2),
+            ],
+            k(1),
+        );
+        assert!(matches!(e, Err(PnError::NoRationalPoint(_))), "{e:?}");
+        // centres on a curve
+        let e = CyclographicImage::new([u(), u(), u(), v()], k(1));
+        assert!(matches!(e, Err(PnError::InvalidInput(_))));
+        let e = CyclographicImage::new([u(), v(), u(), v()], MPoly::zero(2));
+        assert!(matches!(e, Err(PnError::InvalidInput(_))));
+    }
+}
