@@ -16,7 +16,7 @@ use crate::model::{Geometry, Object};
 use crate::value::{ParamKind, Value};
 use rcagd::laguerre::LaguerreMap;
 use rcagd::pn::developable::DevelopablePn;
-use rcagd::pn::hypercyclide::{Hypercyclide, PeSimilarity, RegularQuadric};
+use rcagd::pn::hypercyclide::{CyclographicImage, Hypercyclide, PeSimilarity, RegularQuadric};
 use rcagd::pn::modeling::{HermiteDatum, PnModel};
 use rcagd::pn::planar::{surface_of_revolution, PnCurve};
 use rcagd::pn::ruled::{CanalPn, ConeFamilyEnvelope, CycleFamily, EllipsoidPn, RuledPn};
@@ -43,6 +43,7 @@ pub const OPS: &[OpSpec] = &[
     PN_ELLIPSOID,
     PN_QUADRIC,
     HYPERCYCLIDE,
+    CYCLOGRAPHIC_SURFACE,
     PN_LAGUERRE,
     PN_ANTICAUSTIC,
     PN_PLANAR,
@@ -1090,6 +1091,78 @@ fn build_hypercyclide(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let h = Hypercyclide::<Q>::new(regular_quadric(args)?, map, first_family(args))
         .map_err(blame("a"))?;
     hypercyclide_objects(args, &h)
+}
+
+const CYCLOGRAPHIC_SURFACE: OpSpec = OpSpec {
+    name: "cyclographic_surface",
+    summary: "the cyclographic image of a rational 2-surface s(u, v) = (m; r) of R⁴ (Peternell §3.9, Lemma 3.5): one sheet of the envelope of its cycles, rational when Δ is a square (one sheet for a γ-surface), as a PN surface",
+    params: &[
+        ParamSpec::required("x", ParamKind::Grid, "power coefficients c[i][j] of u^i v^j of the numerator of m₁"),
+        ParamSpec::required("y", ParamKind::Grid, "numerator of m₂ (same layout)"),
+        ParamSpec::required("z", ParamKind::Grid, "numerator of m₃ (same layout)"),
+        ParamSpec::required("r", ParamKind::Grid, "numerator of the radius r (same layout)"),
+        DENOMINATOR,
+        ParamSpec::with_default(
+            "sheet",
+            ParamKind::Int,
+            "1",
+            "which sheet of the image: 1 or 2 (a γ-surface has only sheet 1)",
+        ),
+        DOMAIN,
+        OFFSET,
+        ORIENTATION,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "cyclographic_spheres_on_a_plane"
+op = "cyclographic_surface"
+# the spheres (u, v, −ρ; ρ), ρ = (u² + v²)/4 + 2, all touch z = 0; sheet 2 is their
+# other envelope
+x = [[0, 0], [1, 0]]
+y = [[0, 1]]
+z = [[-2, 0, "-1/4"], [0, 0, 0], ["-1/4", 0, 0]]
+r = [[2, 0, "1/4"], [0, 0, 0], ["1/4", 0, 0]]
+sheet = 2
+domain = [-1, 1, -1, 1]
+"#,
+    build: build_cyclographic_surface,
+};
+
+fn build_cyclographic_surface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let g = |p: &'static str| -> Result<MPoly<Q>, OpError> {
+        poly_from_grid(&args.opt_grid(p)?.unwrap_or_default())
+    };
+    let w = match args.opt_grid("denominator")? {
+        Some(d) => poly_from_grid(&d)?,
+        None => MPoly::constant(2, Q::from(1)),
+    };
+    let img = CyclographicImage::new([g("x")?, g("y")?, g("z")?, g("r")?], w)
+        .map_err(blame("r"))?;
+    let k = args.int("sheet")?;
+    let sheet = usize::try_from(k - 1)
+        .ok()
+        .and_then(|i| img.sheets().get(i))
+        .ok_or_else(|| {
+            OpError::param(
+                "sheet",
+                format!(
+                    "the image has {} sheet(s) (a γ-surface has one), got sheet {k}",
+                    img.sheets().len()
+                ),
+            )
+        })?;
+    let mut certs = img.image_certificates(sheet);
+    if let Some(d) = main_offset(args)? {
+        certs.extend(img.image_certificates(sheet.offset(d).surface()));
+    }
+    let mut objs = surface_objects(args, &oriented(args, sheet), &domain(args)?, certs, "domain")?;
+    for (i, d) in distances(args)?.into_iter().enumerate() {
+        if let Some(o) = objs.get_mut(i + 1) {
+            o.certificates
+                .extend(img.image_certificates(sheet.offset(d).surface()));
+        }
+    }
+    Ok(objs)
 }
 
 // ---------------------------------------------------------------------------------

@@ -335,9 +335,11 @@ mod surfaces_of_r4 {
 
     #[test]
     fn cycles_touching_a_plane_have_two_rational_sheets() {
-        // s = (u, v, −ρ; ρ), ρ = (u² + v²)/4 + 1: every cycle touches z = 0 at (u, v, 0)
-        // (one sheet); the other sheet is the second envelope of the spheres
-        let rho = &(&(&u() * &u()) + &(&v() * &v())).scale(&q(1, 4)) + &k(1);
+        // s = (u, v, −ρ; ρ), ρ = (u² + v²)/4 + 2: every cycle touches z = 0 at (u, v, 0)
+        // (one sheet); the other sheet is the second envelope of the spheres (with
+        // ρ = (u² + v²)/4 + 1 instead all spheres pass through (0, 0, −2), and the second
+        // sheet collapses to that point)
+        let rho = &(&(&u() * &u()) + &(&v() * &v())).scale(&q(1, 4)) + &k(2);
         let img = CyclographicImage::new([u(), v(), -rho.clone(), rho], k(1)).expect("rational");
         assert_eq!(img.sheets().len(), 2);
         assert!(!img.is_gamma_surface());
