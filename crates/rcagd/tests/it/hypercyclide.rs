@@ -409,4 +409,29 @@ mod surfaces_of_r4 {
         let e = CyclographicImage::new([u(), v(), u(), v()], MPoly::zero(2));
         assert!(matches!(e, Err(PnError::InvalidInput(_))));
     }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(8))]
+        /// Random quadratic radius functions ρ(u, v) of spheres (u, v, −ρ; ρ) touching the
+        /// plane z = 0: Δ is a square, both sheets certify exactly, one is the plane.
+        #[test]
+        fn random_sphere_families_on_a_plane(c in proptest::array::uniform6(-4i64..5)) {
+            let rho = &(&(&(&k(c[0]) + &u().scale(&q(c[1], 2))) + &v().scale(&q(c[2], 3)))
+                + &(&u() * &u()).scale(&q(c[3], 4)))
+                + &(&(&u() * &v()).scale(&q(c[4], 5)) + &(&v() * &v()).scale(&q(c[5], 3)));
+            let img = CyclographicImage::new([u(), v(), -rho.clone(), rho], k(1))
+                .expect("Δ is a square");
+            proptest::prop_assert_eq!(img.sheets().len(), 2);
+            for c in img.certify() {
+                proptest::prop_assert!(c.holds && c.exact, "{}", c);
+            }
+            let (s, t) = (q(2, 3), q(-1, 4));
+            let on_plane = img
+                .sheets()
+                .iter()
+                .filter_map(|sh| sh.eval(&s, &t).ok())
+                .any(|x| x == [s.clone(), t.clone(), Q::from(0)]);
+            proptest::prop_assert!(on_plane, "one sheet is the plane z = 0");
+        }
+    }
 }
