@@ -56,6 +56,10 @@ pub const RECIPES: &[(&str, &str)] = &[
         include_str!("../../../examples/recipes/pn_laguerre.toml"),
     ),
     (
+        "examples/recipes/hypercyclide.toml",
+        include_str!("../../../examples/recipes/hypercyclide.toml"),
+    ),
+    (
         "examples/recipes/sphere_family.toml",
         include_str!("../../../examples/recipes/sphere_family.toml"),
     ),

@@ -16,6 +16,7 @@ use crate::model::{Geometry, Object};
 use crate::value::{ParamKind, Value};
 use rcagd::laguerre::LaguerreMap;
 use rcagd::pn::developable::DevelopablePn;
+use rcagd::pn::hypercyclide::{CyclographicImage, Hypercyclide, PeSimilarity, RegularQuadric};
 use rcagd::pn::modeling::{HermiteDatum, PnModel};
 use rcagd::pn::planar::{surface_of_revolution, PnCurve};
 use rcagd::pn::ruled::{CanalPn, ConeFamilyEnvelope, CycleFamily, EllipsoidPn, RuledPn};
@@ -40,6 +41,9 @@ pub const OPS: &[OpSpec] = &[
     PN_DEVELOPABLE,
     PN_REVOLUTION,
     PN_ELLIPSOID,
+    PN_QUADRIC,
+    HYPERCYCLIDE,
+    CYCLOGRAPHIC_SURFACE,
     PN_LAGUERRE,
     PN_ANTICAUSTIC,
     PN_PLANAR,
@@ -910,6 +914,252 @@ fn build_ellipsoid(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             let off = surface.offset(d);
             o.certificates
                 .push(ell.dual_quadric_certificate(off.surface()));
+        }
+    }
+    Ok(objs)
+}
+
+// ---------------------------------------------------------------------------------
+// regular quadrics (Theorem 4.6) and hypercyclides (Prop. 4.3)
+// ---------------------------------------------------------------------------------
+
+const QUADRIC_KIND: ParamSpec = ParamSpec::required(
+    "quadric",
+    ParamKind::Choice(&["ellipsoid", "two_sheet_hyperboloid", "elliptic_paraboloid"]),
+    "ellipsoid x²/a² + y²/b² + z²/c² = 1 (a > b > c > 0), two_sheet_hyperboloid x²/a² − y²/b² − z²/c² = 1 (b > c > 0), elliptic_paraboloid x²/a² + y²/b² = 2z (a > b > 0; c unused)",
+);
+const QA: ParamSpec = ParamSpec::required("a", ParamKind::Number, "first axis parameter a");
+const QB: ParamSpec = ParamSpec::required("b", ParamKind::Number, "second axis parameter b");
+const QC: ParamSpec = ParamSpec::with_default(
+    "c",
+    ParamKind::Number,
+    "0",
+    "third axis parameter c (not used by the elliptic paraboloid)",
+);
+const FAMILY: ParamSpec = ParamSpec::with_default(
+    "family",
+    ParamKind::Choice(&["first", "second"]),
+    "\"first\"",
+    "which of the two ruling families of the ruled quadric ψ of the pencil gives the cones",
+);
+
+fn regular_quadric(args: &OpArgs) -> Result<RegularQuadric, OpError> {
+    let (a, b) = (args.number("a")?, args.number("b")?);
+    let c = args.opt_number("c")?.unwrap_or_default();
+    Ok(match args.get("quadric") {
+        Some(Value::Str(s)) if s == "two_sheet_hyperboloid" => {
+            RegularQuadric::TwoSheetHyperboloid { a, b, c }
+        }
+        Some(Value::Str(s)) if s == "elliptic_paraboloid" => {
+            RegularQuadric::EllipticParaboloid { a, b }
+        }
+        _ => RegularQuadric::Ellipsoid { a, b, c },
+    })
+}
+
+fn first_family(args: &OpArgs) -> bool {
+    !matches!(args.get("family"), Some(Value::Str(s)) if s == "second")
+}
+
+/// The objects of a hypercyclide (or quadric) with the certificates of the cyclographic
+/// image on the base surface and on every offset.
+fn hypercyclide_objects(args: &OpArgs, h: &Hypercyclide<Q>) -> Result<Vec<Object>, OpError> {
+    let mut certs = h.rulings().certify();
+    certs.extend(prefixed("cones: ", h.envelope().tangency_certificates()));
+    certs.extend(prefixed("cones: ", h.envelope().cone_certificates()));
+    certs.extend(h.image_certificates(h.surface()));
+    if let Some(d) = main_offset(args)? {
+        certs.extend(h.image_certificates(h.surface().offset(d).surface()));
+    }
+    let mut objs = surface_objects(
+        args,
+        &oriented(args, h.surface()),
+        &domain(args)?,
+        certs,
+        "domain",
+    )?;
+    for (k, d) in distances(args)?.into_iter().enumerate() {
+        if let Some(o) = objs.get_mut(k + 1) {
+            o.certificates
+                .extend(h.image_certificates(h.surface().offset(d).surface()));
+        }
+    }
+    Ok(objs)
+}
+
+const PN_QUADRIC: OpSpec = OpSpec {
+    name: "pn_quadric",
+    summary: "a regular quadric (ellipsoid, two-sheet hyperboloid, elliptic paraboloid) in its principal frame as a PN surface with exact rational offsets (Peternell Thm 4.6): envelope of the cones of revolution of the rulings of the ruled quadric ψ of the pencil φ* + μΩ*",
+    params: &[
+        QUADRIC_KIND,
+        QA,
+        QB,
+        QC,
+        FAMILY,
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[\"1/4\", \"3/4\", -1, 1]",
+            "parameter rectangle [s0, s1, u0, u1] (s: the double-cover parameter of the rulings, u: along the characteristic conics)",
+        ),
+        OFFSET,
+        ORIENTATION,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_quadric_ellipsoid"
+op = "pn_quadric"
+# the ellipsoid (25/3, 5, 3) of Peternell §4.7, here in its principal frame
+quadric = "ellipsoid"
+a = "25/3"
+b = 5
+c = 3
+domain = [20, 70, -1, 1]
+distances = [1]
+"#,
+    build: build_pn_quadric,
+};
+
+fn build_pn_quadric(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let h = Hypercyclide::<Q>::quadric(regular_quadric(args)?, first_family(args))
+        .map_err(blame("a"))?;
+    hypercyclide_objects(args, &h)
+}
+
+const HYPERCYCLIDE: OpSpec = OpSpec {
+    name: "hypercyclide",
+    summary: "the hypercyclide η(L(φ)): cyclographic image of a regular quadric φ moved into a (tilted) Euclidean hyperplane of R⁴ by a rational pe similarity L (boost, translation, scale), as a PN surface (Peternell Prop. 4.3, §4.7), certified as the envelope of the cycles of L(φ)",
+    params: &[
+        QUADRIC_KIND,
+        QA,
+        QB,
+        QC,
+        FAMILY,
+        ParamSpec::with_default(
+            "boost_axis",
+            ParamKind::Int,
+            "0",
+            "axis 0, 1 or 2 of the Lorentz boost in the (x_axis, r) plane",
+        ),
+        ParamSpec::with_default(
+            "boost",
+            ParamKind::Number,
+            "0",
+            "boost parameter β (cosh = (1 + β²)/(1 − β²)), β² ≠ 1",
+        ),
+        ParamSpec::with_default(
+            "translation",
+            ParamKind::Numbers,
+            "[0, 0, 0, 0]",
+            "translation (x, y, z, r) of R⁴ (r: a dilatation, i.e. an offset)",
+        ),
+        ParamSpec::with_default("scale", ParamKind::Number, "1", "similarity factor s ≠ 0"),
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[\"1/4\", \"3/4\", -1, 1]",
+            "parameter rectangle [s0, s1, u0, u1]",
+        ),
+        OFFSET,
+        ORIENTATION,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "hypercyclide_boosted_paraboloid"
+op = "hypercyclide"
+# the paraboloid x²/25 + y²/9 = 2z in the hyperplane tilted by the boost β = 1/3
+quadric = "elliptic_paraboloid"
+a = 5
+b = 3
+boost_axis = 1
+boost = "1/3"
+translation = [0, 0, 0, "1/2"]
+domain = [4, 8, "-1/2", "1/2"]
+"#,
+    build: build_hypercyclide,
+};
+
+fn build_hypercyclide(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let axis = usize::try_from(args.int("boost_axis")?)
+        .map_err(|_| OpError::param("boost_axis", "the boost axis must be 0, 1 or 2"))?;
+    let t = args.opt_numbers("translation")?.unwrap_or_default();
+    let t: [Q; 4] = <[Q; 4]>::try_from(t).map_err(|_| {
+        OpError::param("translation", "the translation needs four numbers (x, y, z, r)")
+    })?;
+    let mut map = PeSimilarity::boost(axis, args.number("boost")?, t).map_err(blame("boost"))?;
+    map.s = args.number("scale")?;
+    let h = Hypercyclide::<Q>::new(regular_quadric(args)?, map, first_family(args))
+        .map_err(blame("a"))?;
+    hypercyclide_objects(args, &h)
+}
+
+const CYCLOGRAPHIC_SURFACE: OpSpec = OpSpec {
+    name: "cyclographic_surface",
+    summary: "the cyclographic image of a rational 2-surface s(u, v) = (m; r) of R⁴ (Peternell §3.9, Lemma 3.5): one sheet of the envelope of its cycles, rational when Δ is a square (one sheet for a γ-surface), as a PN surface",
+    params: &[
+        ParamSpec::required("x", ParamKind::Grid, "power coefficients c[i][j] of u^i v^j of the numerator of m₁"),
+        ParamSpec::required("y", ParamKind::Grid, "numerator of m₂ (same layout)"),
+        ParamSpec::required("z", ParamKind::Grid, "numerator of m₃ (same layout)"),
+        ParamSpec::required("r", ParamKind::Grid, "numerator of the radius r (same layout)"),
+        DENOMINATOR,
+        ParamSpec::with_default(
+            "sheet",
+            ParamKind::Int,
+            "1",
+            "which sheet of the image: 1 or 2 (a γ-surface has only sheet 1)",
+        ),
+        DOMAIN,
+        OFFSET,
+        ORIENTATION,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "cyclographic_spheres_on_a_plane"
+op = "cyclographic_surface"
+# the spheres (u, v, −ρ; ρ), ρ = (u² + v²)/4 + 2, all touch z = 0; sheet 2 is their
+# other envelope
+x = [[0, 0], [1, 0]]
+y = [[0, 1]]
+z = [[-2, 0, "-1/4"], [0, 0, 0], ["-1/4", 0, 0]]
+r = [[2, 0, "1/4"], [0, 0, 0], ["1/4", 0, 0]]
+sheet = 2
+domain = [-1, 1, -1, 1]
+"#,
+    build: build_cyclographic_surface,
+};
+
+fn build_cyclographic_surface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let g = |p: &'static str| -> Result<MPoly<Q>, OpError> {
+        poly_from_grid(&args.opt_grid(p)?.unwrap_or_default())
+    };
+    let w = match args.opt_grid("denominator")? {
+        Some(d) => poly_from_grid(&d)?,
+        None => MPoly::constant(2, Q::from(1)),
+    };
+    let img = CyclographicImage::new([g("x")?, g("y")?, g("z")?, g("r")?], w)
+        .map_err(blame("r"))?;
+    let k = args.int("sheet")?;
+    let sheet = usize::try_from(k - 1)
+        .ok()
+        .and_then(|i| img.sheets().get(i))
+        .ok_or_else(|| {
+            OpError::param(
+                "sheet",
+                format!(
+                    "the image has {} sheet(s) (a γ-surface has one), got sheet {k}",
+                    img.sheets().len()
+                ),
+            )
+        })?;
+    let mut certs = img.image_certificates(sheet);
+    if let Some(d) = main_offset(args)? {
+        certs.extend(img.image_certificates(sheet.offset(d).surface()));
+    }
+    let mut objs = surface_objects(args, &oriented(args, sheet), &domain(args)?, certs, "domain")?;
+    for (i, d) in distances(args)?.into_iter().enumerate() {
+        if let Some(o) = objs.get_mut(i + 1) {
+            o.certificates
+                .extend(img.image_certificates(sheet.offset(d).surface()));
         }
     }
     Ok(objs)

@@ -37,6 +37,7 @@
 //! `x_d − x ≡ d n`; exact polynomial identities over `Rational`.
 
 pub mod developable;
+pub mod hypercyclide;
 pub mod isotropic;
 pub mod modeling;
 pub mod offset;

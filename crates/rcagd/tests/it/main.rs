@@ -5,6 +5,7 @@ mod canal_cyclographic;
 mod canal_props;
 mod cyclide;
 mod hermite_enclosure;
+mod hypercyclide;
 mod laguerre_props;
 mod laguerre_query;
 mod lines_props;

@@ -1,0 +1,437 @@
+//! Regular quadrics as PN surfaces (Peternell, "Rational Parametrizations for Envelopes of
+//! Quadric Families", Theorem 4.6) in the principal frame, through the ruled member ψ of
+//! the pencil φ* + μΩ*, and hypercyclides (Prop. 4.3, §4.7): the cyclographic images of
+//! quadrics of tilted Euclidean hyperplanes of R⁴.
+
+use proptest::prelude::*;
+use rcagd::pn::hypercyclide::{Hypercyclide, PeSimilarity, RegularQuadric};
+use rcagd::pn::PnError;
+use rcagd::Certified;
+use rcagd_algebra::{Certificate, Rational, Scalar};
+
+type Q = Rational;
+
+fn q(p: i64, d: i64) -> Q {
+    Q::from_ratio(p, d)
+}
+
+fn assert_exact(certs: &[Certificate]) {
+    assert!(!certs.is_empty(), "no certificates");
+    for c in certs {
+        assert!(c.holds && c.exact, "certificate failed: {c}");
+    }
+}
+
+fn ellipsoid(a: Q, b: Q, c: Q) -> RegularQuadric {
+    RegularQuadric::Ellipsoid { a, b, c }
+}
+
+/// The point lies on the quadric x²/a² + y²/b² + z²/c² = 1 (value of the left side − 1).
+fn ellipsoid_residual(x: &[Q; 3], a: &Q, b: &Q, c: &Q) -> Q {
+    &(&(&(&x[0] * &x[0]) / &(a * a)) + &(&(&x[1] * &x[1]) / &(b * b)))
+        + &(&(&(&x[2] * &x[2]) / &(c * c)) - &Q::ONE)
+}
+
+#[test]
+fn seed_ellipsoid_in_the_principal_frame_and_its_offsets() {
+    // Peternell §4.7 example (a, b, c) = (25/3, 5, 3), here without the rotation to the
+    // umbilic frame: the surface points lie on x²/a² + y²/b² + z²/c² = 1 itself.
+    let (a, b, c) = (q(25, 3), q(5, 1), q(3, 1));
+    let h = Hypercyclide::<Q>::quadric(ellipsoid(a.clone(), b.clone(), c.clone()), true)
+        .expect("rational");
+    assert_exact(&h.certify());
+    for (s, u) in [(q(1, 3), q(1, 2)), (q(-2, 1), q(3, 1)), (q(5, 7), q(0, 1))] {
+        let x = h.surface().eval(&s, &u).expect("defined");
+        assert!(
+            ellipsoid_residual(&x, &a, &b, &c).is_zero(),
+            "on the ellipsoid"
+        );
+        // the offset at d: x + d n, certified as the image of φ translated along x₄
+        let d = q(1, 2);
+        let off = h.surface().offset(d.clone());
+        let xd = off.surface().eval(&s, &u).expect("defined");
+        let n = h.surface().normal_at(&s, &u).expect("normal");
+        for i in 0..3 {
+            assert_eq!(xd[i], &x[i] + &(&d * &n[i]));
+        }
+    }
+    let off = h.surface().offset(q(-1, 1));
+    assert_exact(&h.image_certificates(off.surface()));
+    // the other ruling family works too
+    let h2 = Hypercyclide::<Q>::quadric(ellipsoid(a, b, c), false).expect("rational");
+    assert_exact(&h2.certify());
+}
+
+#[test]
+fn the_ruled_quadrics_of_the_pencils_are_the_printed_ones() {
+    // ellipsoid: x1²/(a²−b²) − x3²/(b²−c²) + x4²/b² = 1, x2 = 0
+    let (a, b, c) = (q(25, 3), q(5, 1), q(3, 1));
+    let r = ellipsoid(a.clone(), b.clone(), c.clone())
+        .rulings(true)
+        .expect("rulings");
+    assert_exact(&r.certify());
+    assert_eq!(r.hyperplane, 2);
+    assert_eq!(r.mu0, -(&b * &b));
+    let p = &r.psi_point;
+    assert_eq!(p[0][0], q(-1, 1));
+    assert_eq!(p[1][1], &Q::ONE / &(&(&a * &a) - &(&b * &b)));
+    assert_eq!(p[3][3], -(&Q::ONE / &(&(&b * &b) - &(&c * &c))));
+    assert_eq!(p[4][4], &Q::ONE / &(&b * &b));
+    // two-sheet hyperboloid: x1²/(a²+b²) + x3²/(b²−c²) − x4²/b² = 1, x2 = 0
+    let (a, b, c) = (q(12, 1), q(5, 1), q(3, 1));
+    let r = RegularQuadric::TwoSheetHyperboloid {
+        a: a.clone(),
+        b: b.clone(),
+        c: c.clone(),
+    }
+    .rulings(false)
+    .expect("rulings");
+    assert_exact(&r.certify());
+    assert_eq!(r.mu0, &b * &b);
+    let p = &r.psi_point;
+    assert_eq!(p[1][1], &Q::ONE / &(&(&a * &a) + &(&b * &b)));
+    assert_eq!(p[3][3], &Q::ONE / &(&(&b * &b) - &(&c * &c)));
+    assert_eq!(p[4][4], -(&Q::ONE / &(&b * &b)));
+    // elliptic paraboloid: −x2²/(a²−b²) + x4²/a² = 2x3 − a², x1 = 0. Peternell prints
+    // "2x3 − a"; the pencil member (inverse of ψ* restricted to x1 = 0) has a² — the
+    // constant term of the point form is a², not a (a = 5: 25, not 5).
+    let (a, b) = (q(5, 1), q(4, 1));
+    let r = RegularQuadric::EllipticParaboloid {
+        a: a.clone(),
+        b: b.clone(),
+    }
+    .rulings(true)
+    .expect("rulings");
+    assert_exact(&r.certify());
+    assert_eq!(r.hyperplane, 1);
+    let p = &r.psi_point;
+    assert_eq!(p[2][2], -(&Q::ONE / &(&(&a * &a) - &(&b * &b))));
+    assert_eq!(p[4][4], &Q::ONE / &(&a * &a));
+    assert_eq!(p[0][3], q(-1, 1));
+    assert_eq!(p[0][0], &a * &a);
+    assert_ne!(p[0][0], a);
+}
+
+#[test]
+fn elliptic_paraboloid_and_its_offsets() {
+    for (a, b, fam) in [(5, 4, true), (5, 3, false), (13, 5, true)] {
+        let quad = RegularQuadric::EllipticParaboloid {
+            a: q(a, 1),
+            b: q(b, 1),
+        };
+        let h = Hypercyclide::<Q>::quadric(quad, fam).expect("rational");
+        assert_exact(&h.certify());
+        let off = h.surface().offset(q(2, 1));
+        assert_exact(&h.image_certificates(off.surface()));
+        // points on x²/a² + y²/b² = 2z
+        let x = h.surface().eval(&q(2, 1), &q(1, 3)).expect("defined");
+        let lhs = &(&(&x[0] * &x[0]) / &q(a * a, 1)) + &(&(&x[1] * &x[1]) / &q(b * b, 1));
+        assert_eq!(lhs, &q(2, 1) * &x[2]);
+    }
+}
+
+#[test]
+fn two_sheet_hyperboloid_with_rational_parabolic_rulings() {
+    // (9, 13, 3): (a² + b²)(b² − c²) = 250·160 = 200², and the four parabolic rulings are
+    // rational; but a cover branched at two neighbouring ones leaves the quartic
+    // (T − r₃)(T − r₄) whose pull-back is a sum of two squares only if the cross ratio
+    // (r₁, r₂; r₃, r₄) is a square (here 10/9): a named error, not a wrong surface
+    let e = Hypercyclide::<Q>::quadric(
+        RegularQuadric::TwoSheetHyperboloid {
+            a: q(9, 1),
+            b: q(13, 1),
+            c: q(3, 1),
+        },
+        true,
+    );
+    assert!(
+        matches!(e, Err(PnError::NoRationalPoint(ref s)) if s.contains("double covers")),
+        "{e:?}"
+    );
+}
+
+#[test]
+fn two_sheet_hyperboloid_whose_parabolic_rulings_interleave() {
+    // (12, 5, 3): the rulings of ψ are rational ((a² + b²)(b² − c²) = 52²), but the two
+    // rational pairs of parabolic rulings interleave on the focal ellipse, so N(T) changes
+    // sign inside and outside each pair: no rational double cover, a named error
+    let e = Hypercyclide::<Q>::quadric(
+        RegularQuadric::TwoSheetHyperboloid {
+            a: q(12, 1),
+            b: q(5, 1),
+            c: q(3, 1),
+        },
+        true,
+    );
+    assert!(
+        matches!(e, Err(PnError::NoRationalPoint(ref s)) if s.contains("double covers")),
+        "{e:?}"
+    );
+}
+
+#[test]
+fn named_errors() {
+    // equal axes: a quadric of revolution (a canal surface)
+    let e = Hypercyclide::<Q>::quadric(ellipsoid(q(5, 1), q(5, 1), q(3, 1)), true);
+    assert!(matches!(e, Err(PnError::InvalidInput(ref s)) if s.contains("revolution")));
+    let e = Hypercyclide::<Q>::quadric(
+        RegularQuadric::EllipticParaboloid {
+            a: q(1, 1),
+            b: q(2, 1),
+        },
+        true,
+    );
+    assert!(matches!(e, Err(PnError::InvalidInput(_))));
+    // (a² − b²)(b² − c²) = 9·7 is no square: the rulings of ψ are irrational
+    let e = Hypercyclide::<Q>::quadric(ellipsoid(q(5, 1), q(4, 1), q(3, 1)), true);
+    assert!(
+        matches!(e, Err(PnError::NoRationalPoint(ref s)) if s.contains("√")),
+        "{e:?}"
+    );
+    let e = Hypercyclide::<Q>::quadric(
+        RegularQuadric::EllipticParaboloid {
+            a: q(3, 1),
+            b: q(1, 1),
+        },
+        true,
+    );
+    assert!(matches!(e, Err(PnError::NoRationalPoint(_))));
+    // not a pe similarity
+    let mut m = PeSimilarity::identity();
+    m.a[0][3] = q(1, 1);
+    let e = Hypercyclide::<Q>::new(ellipsoid(q(25, 3), q(5, 1), q(3, 1)), m, true);
+    assert!(matches!(e, Err(PnError::InvalidInput(ref s)) if s.contains("pe similarity")));
+    assert!(PeSimilarity::boost(0, q(1, 1), [q(0, 1), q(0, 1), q(0, 1), q(0, 1)]).is_err());
+}
+
+#[test]
+fn hypercyclide_of_an_ellipsoid_in_a_tilted_hyperplane() {
+    // the boost in the (x, r) plane with b = 1/2 (cosh 5/3, sinh 4/3) tilts {x₄ = 0}
+    let m = PeSimilarity::boost(0, q(1, 2), [q(1, 1), q(0, 1), q(-1, 2), q(1, 3)]).expect("boost");
+    let h =
+        Hypercyclide::<Q>::new(ellipsoid(q(25, 3), q(5, 1), q(3, 1)), m, true).expect("rational");
+    assert_exact(&h.certify());
+    // the hyperplane of φ′ is not parallel to R³: the cycles of its points have varying
+    // radii, so the hypercyclide is no offset of a quadric
+    let phi = h.phi_dual();
+    assert!(!phi[4][4].is_zero() || !phi[0][4].is_zero());
+}
+
+#[test]
+fn translation_along_r_is_the_offset() {
+    // φ translated by d along x₄: its cycles are (m; r + d), so η is the offset at d
+    let quad = RegularQuadric::EllipticParaboloid {
+        a: q(5, 1),
+        b: q(4, 1),
+    };
+    let d = q(3, 4);
+    let map = PeSimilarity::boost(0, q(0, 1), [q(0, 1), q(0, 1), q(0, 1), d.clone()])
+        .expect("translation");
+    let h = Hypercyclide::<Q>::new(quad.clone(), map, true).expect("rational");
+    assert_exact(&h.certify());
+    let base = Hypercyclide::<Q>::quadric(quad, true).expect("rational");
+    let off = base.surface().offset(d);
+    for (s, u) in [(q(2, 1), q(1, 3)), (q(-3, 2), q(5, 1))] {
+        assert_eq!(
+            h.surface().eval(&s, &u).expect("defined"),
+            off.surface().eval(&s, &u).expect("defined")
+        );
+    }
+}
+
+fn f64_agrees(h: &Hypercyclide<Q>, hf: &Hypercyclide<f64>) {
+    let mut compared = 0;
+    for (s, u) in [(q(1, 3), q(1, 2)), (q(3, 2), q(-1, 1)), (q(-4, 5), q(2, 1))] {
+        let (Ok(x), Ok(xf)) = (
+            h.surface().eval(&s, &u),
+            hf.surface().eval(&Scalar::to_f64(&s), &Scalar::to_f64(&u)),
+        ) else {
+            continue;
+        };
+        for i in 0..3 {
+            let e = Scalar::to_f64(&x[i]);
+            assert!(
+                (e - xf[i]).abs() <= 1e-6 * (1.0 + e.abs()),
+                "f64 {} vs exact {e}",
+                xf[i]
+            );
+        }
+        compared += 1;
+    }
+    assert!(compared > 0, "no sample point was defined");
+}
+
+#[test]
+fn f64_agrees_with_exact() {
+    let quad = RegularQuadric::EllipticParaboloid {
+        a: q(5, 1),
+        b: q(3, 1),
+    };
+    let m = PeSimilarity::boost(1, q(1, 3), [q(0, 1), q(1, 1), q(0, 1), q(0, 1)]).expect("boost");
+    let h = Hypercyclide::<Q>::new(quad.clone(), m.clone(), true).expect("exact");
+    let hf = Hypercyclide::<f64>::new(quad, m, true).expect("f64");
+    f64_agrees(&h, &hf);
+    let quad = ellipsoid(q(25, 3), q(5, 1), q(3, 1));
+    let h = Hypercyclide::<Q>::quadric(quad.clone(), true).expect("exact");
+    let hf = Hypercyclide::<f64>::quadric(quad, true).expect("f64");
+    f64_agrees(&h, &hf);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(8))]
+    /// Random elliptic paraboloids with a² − b² a square (a = m² + n², b = 2mn or m² − n²,
+    /// scaled), under random rational boosts and translations: exact certificates and f64
+    /// agreement.
+    #[test]
+    fn random_paraboloid_hypercyclides(
+        m in 2i64..6, n in 1i64..4, leg in any::<bool>(), scale in 1i64..4,
+        axis in 0usize..3, bn in -3i64..4, t in proptest::array::uniform4(-3i64..4),
+        fam in any::<bool>(),
+    ) {
+        prop_assume!(m > n);
+        let a = q((m * m + n * n) * scale, 3);
+        let b = if leg { q(2 * m * n * scale, 3) } else { q((m * m - n * n) * scale, 3) };
+        let (a, b) = if a > b { (a, b) } else { (b, a) };
+        prop_assume!(a != b);
+        let quad = RegularQuadric::EllipticParaboloid { a, b };
+        let map = PeSimilarity::boost(axis, q(bn, 5), t.map(|x| q(x, 2))).expect("boost");
+        let h = Hypercyclide::<Q>::new(quad.clone(), map.clone(), fam).expect("rational");
+        for c in h.certify() {
+            prop_assert!(c.holds && c.exact, "{}", c);
+        }
+        let hf = Hypercyclide::<f64>::new(quad, map, fam).expect("f64");
+        f64_agrees(&h, &hf);
+    }
+}
+
+mod surfaces_of_r4 {
+    //! Cyclographic images of rational 2-surfaces of R⁴ (Peternell §3.9, Lemma 3.5).
+    use super::{assert_exact, q, Q};
+    use rcagd::pn::hypercyclide::{mpoly_sqrt, CyclographicImage};
+    use rcagd::pn::PnError;
+    use rcagd::Certified;
+    use rcagd_algebra::mpoly::MPoly;
+
+    fn u() -> MPoly<Q> {
+        MPoly::var(2, 0)
+    }
+    fn v() -> MPoly<Q> {
+        MPoly::var(2, 1)
+    }
+    fn k(c: i64) -> MPoly<Q> {
+        MPoly::constant(2, q(c, 1))
+    }
+
+    #[test]
+    fn square_roots_of_polynomials() {
+        let p = &(&(&u() * &u()).scale(&q(3, 2)) - &(&u() * &v())) + &k(7);
+        let sq = &p * &p;
+        let r = mpoly_sqrt(&sq).expect("a square");
+        assert!(r == p || r == -p.clone());
+        assert!(mpoly_sqrt(&(&sq + &k(1))).is_none());
+        assert!(mpoly_sqrt(&(&u() * &v())).is_none());
+        assert!(mpoly_sqrt(&k(2)).is_none());
+    }
+
+    #[test]
+    fn cycles_touching_a_plane_have_two_rational_sheets() {
+        // s = (u, v, −ρ; ρ), ρ = (u² + v²)/4 + 2: every cycle touches z = 0 at (u, v, 0)
+        // (one sheet); the other sheet is the second envelope of the spheres (with
+        // ρ = (u² + v²)/4 + 1 instead all spheres pass through (0, 0, −2), and the second
+        // sheet collapses to that point)
+        let rho = &(&(&u() * &u()) + &(&v() * &v())).scale(&q(1, 4)) + &k(2);
+        let img = CyclographicImage::new([u(), v(), -rho.clone(), rho], k(1)).expect("rational");
+        assert_eq!(img.sheets().len(), 2);
+        assert!(!img.is_gamma_surface());
+        assert_exact(&img.certify());
+        let (s, t) = (q(1, 2), q(-3, 1));
+        let pts: Vec<[Q; 3]> = img
+            .sheets()
+            .iter()
+            .map(|sh| sh.eval(&s, &t).expect("defined"))
+            .collect();
+        assert!(pts.iter().any(|x| x == &[s.clone(), t.clone(), Q::from(0)]));
+        assert!(
+            pts.iter().any(|x| !x[2].is_zero()),
+            "a second, different sheet"
+        );
+        // offsets: the cycles (m; r + d)
+        for sh in img.sheets() {
+            let off = sh.offset(q(1, 3));
+            assert_exact(&img.image_certificates(off.surface()));
+        }
+    }
+
+    #[test]
+    fn a_pn_surface_in_r3_is_its_own_image() {
+        // the unit sphere (2u, 2v, u² + v² − 1)/(u² + v² + 1) with r ≡ 0: both orientations
+        let s2 = &(&u() * &u()) + &(&v() * &v());
+        let img = CyclographicImage::new(
+            [
+                u().scale(&q(2, 1)),
+                v().scale(&q(2, 1)),
+                &s2 - &k(1),
+                MPoly::zero(2),
+            ],
+            &s2 + &k(1),
+        )
+        .expect("rational");
+        assert_eq!(img.sheets().len(), 2);
+        assert_exact(&img.certify());
+        let x = img.sheets()[0].eval(&q(1, 3), &q(2, 1)).expect("defined");
+        let n2: Q = x.iter().fold(Q::from(0), |acc, c| &acc + &(c * c));
+        assert_eq!(n2, Q::from(1));
+    }
+
+    #[test]
+    fn a_gamma_plane_has_one_degenerate_sheet_and_errors_are_named() {
+        // s = (u, v, 0; v): tangent planes are γ-planes (the null direction (0, 1, 0, 1));
+        // every cycle touches the image along the line f = φ ∩ R³ (Peternell §3.9)
+        let img = CyclographicImage::new([u(), v(), MPoly::zero(2), v()], k(1)).expect("γ");
+        assert!(img.is_gamma_surface());
+        assert_exact(&img.image_certificates(&img.sheets()[0]));
+        let x = img.sheets()[0].eval(&q(2, 1), &q(5, 1)).expect("defined");
+        assert_eq!(x, [q(2, 1), q(0, 1), q(0, 1)]);
+        // a graph in R³ whose parametrization is not PN: Δ is no square
+        let e = CyclographicImage::new(
+            [
+                u(),
+                v(),
+                &(&u() * &u()) + &(&v() * &v()).scale(&q(2, 1)),
+                MPoly::zero(2),
+            ],
+            k(1),
+        );
+        assert!(matches!(e, Err(PnError::NoRationalPoint(_))), "{e:?}");
+        // centres on a curve
+        let e = CyclographicImage::new([u(), u(), u(), v()], k(1));
+        assert!(matches!(e, Err(PnError::InvalidInput(_))));
+        let e = CyclographicImage::new([u(), v(), u(), v()], MPoly::zero(2));
+        assert!(matches!(e, Err(PnError::InvalidInput(_))));
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(8))]
+        /// Random quadratic radius functions ρ(u, v) of spheres (u, v, −ρ; ρ) touching the
+        /// plane z = 0: Δ is a square, both sheets certify exactly, one is the plane.
+        #[test]
+        fn random_sphere_families_on_a_plane(c in proptest::array::uniform6(-4i64..5)) {
+            let rho = &(&(&(&k(c[0]) + &u().scale(&q(c[1], 2))) + &v().scale(&q(c[2], 3)))
+                + &(&u() * &u()).scale(&q(c[3], 4)))
+                + &(&(&u() * &v()).scale(&q(c[4], 5)) + &(&v() * &v()).scale(&q(c[5], 3)));
+            let img = CyclographicImage::new([u(), v(), -rho.clone(), rho], k(1))
+                .expect("Δ is a square");
+            proptest::prop_assert_eq!(img.sheets().len(), 2);
+            for c in img.certify() {
+                proptest::prop_assert!(c.holds && c.exact, "{}", c);
+            }
+            let (s, t) = (q(2, 3), q(-1, 4));
+            let on_plane = img
+                .sheets()
+                .iter()
+                .filter_map(|sh| sh.eval(&s, &t).ok())
+                .any(|x| x == [s.clone(), t.clone(), Q::from(0)]);
+            proptest::prop_assert!(on_plane, "one sheet is the plane z = 0");
+        }
+    }
+}
