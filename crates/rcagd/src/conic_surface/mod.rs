@@ -30,6 +30,7 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod cones;
+pub mod quadric_family;
 pub mod stereographic;
 
 use crate::pn::poly::patch_of;

@@ -14,6 +14,7 @@ mod ph_props;
 mod pn_laguerre;
 mod pn_props;
 mod primitives;
+mod quadric_family;
 mod quadric_props;
 mod quadric_query;
 mod seed000_examples;
