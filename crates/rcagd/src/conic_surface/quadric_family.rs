@@ -36,12 +36,17 @@
 //! plane section does not prove that the quadric has no point: the error
 //! ([`QuadricFamilyError::NoPointFound`]) names every plane tried and its obstruction.
 
-use super::{ConicSurfaceError, P, Q};
+use super::{point_patch, positive_pieces, ConicSurfaceError, P, Q};
 use crate::Certified;
-use rcagd_algebra::conic_point::{conic_point, ConicPoint, ConicPointError};
+use rcagd_algebra::bernstein::to_bernstein;
+use rcagd_algebra::conic_point::{
+    conic_point, rational_conic_point, sqrt_mod_irreducible, ConicPoint, ConicPointError,
+    Obstruction, TernaryOutcome,
+};
 use rcagd_algebra::linalg::Matrix;
 use rcagd_algebra::mpoly::MPoly;
 use rcagd_algebra::{format_poly, Certificate, Poly};
+use rcagd_geom::{BezierCurve, BezierPatch};
 use thiserror::Error;
 
 /// Errors of the quadric-family constructions.
@@ -81,6 +86,10 @@ pub enum QuadricFamilyError {
     /// A step degenerates identically (named).
     #[error("degenerate: {0}")]
     Degenerate(String),
+    /// The picture cannot be built on the given parameters (a point at infinity, an
+    /// empty rectangle).
+    #[error("picture: {0}")]
+    Patch(String),
 }
 
 impl From<QuadricFamilyError> for ConicSurfaceError {
@@ -633,4 +642,279 @@ pub fn diagonal_family(beta: &[P]) -> Vec<Vec<P>> {
                 .collect()
         })
         .collect()
+}
+
+/// A picture of a quadric family in the affine chart `x_w = 1` of a coordinate whose
+/// hyperplane misses the real quadric where there is one (the principal minor of `Q`
+/// without `w` definite; else `w = 0`), the other coordinates in order: for `n = 2` the
+/// surface swept by the conics stacked over `t`, `(t, x_i/x_w, x_j/x_w)` on
+/// `[t₀, t₁] × [u₀, u₁]`; for `n ≥ 3` the quadric `Q(t₀)`, `g(t₀, u₁, u₂)` on
+/// `[u₁₀, u₁₁] × [u₂₀, u₂₁]` (for `n ≥ 4` the slice `u₃ = … = 0`, projected to the first
+/// three other coordinates). Positive weights, split where needed.
+#[derive(Debug, Clone)]
+pub struct QuadricFamilyPicture {
+    /// The parametrization.
+    pub param: QuadricFamilyParam,
+    /// The patches.
+    pub patches: Vec<BezierPatch<Q>>,
+    /// The certificates of the parametrization and of the weights.
+    pub certificates: Vec<Certificate>,
+}
+
+impl QuadricFamilyParam {
+    /// The picture (see [`QuadricFamilyPicture`]); `t0` is used for `n ≥ 3`, `a`, `b` are
+    /// the two parameter intervals.
+    ///
+    /// # Errors
+    /// [`QuadricFamilyError::Patch`] where the weight `x₀` vanishes on the rectangle (a
+    /// point at infinity) or the rectangle is empty.
+    pub fn picture(
+        &self,
+        t0: &Q,
+        a: (Q, Q),
+        b: (Q, Q),
+    ) -> Result<(Vec<BezierPatch<Q>>, Certificate), QuadricFamilyError> {
+        let n = self.g.len() - 1;
+        let pe = |e: ConicSurfaceError| QuadricFamilyError::Patch(e.to_string());
+        // the weight: a coordinate x_w whose hyperplane x_w = 0 misses the real quadric
+        // (the principal minor without w is definite), so x_w ≠ 0 on every real point
+        let ts = if n == 2 {
+            (&a.0 + &a.1) / Q::from(2)
+        } else {
+            t0.clone()
+        };
+        let qt = self.family.at(&ts);
+        let w = (0..=n)
+            .find(|&w| {
+                let idx: Vec<usize> = (0..=n).filter(|&i| i != w).collect();
+                let m = Matrix::from_fn(n, n, |i, j| {
+                    qt.get(idx[i], idx[j]).cloned().unwrap_or(Q::ZERO)
+                });
+                definiteness(&m, n) != 0
+            })
+            .unwrap_or(0);
+        let order: Vec<usize> = core::iter::once(w)
+            .chain((0..=n).filter(|&i| i != w))
+            .collect();
+        let coords: [MPoly<Q>; 4] = if n == 2 {
+            // (x_w, t·x_w, x_i, x_j) in the variables (t, u)
+            let t = MPoly::var(2, 0);
+            let gw = &self.g[order[0]];
+            [
+                gw.clone(),
+                &t * gw,
+                self.g[order[1]].clone(),
+                self.g[order[2]].clone(),
+            ]
+        } else {
+            let at = self.at(t0);
+            let nv = at[0].nvars();
+            // keep u₁, u₂; set u₃ … = 0
+            let cut = |p: &MPoly<Q>| {
+                let mut s = p.clone();
+                for v in 2..nv {
+                    s = s.specialize(v, &Q::ZERO);
+                }
+                MPoly::from_terms(
+                    2,
+                    s.terms()
+                        .map(|(e, c)| (e[..2].to_vec(), c.clone()))
+                        .collect(),
+                )
+                .unwrap_or_else(|_| MPoly::zero(2))
+            };
+            core::array::from_fn(|i| cut(&at[order[i]]))
+        };
+        let patch = point_patch(&coords, a, b, &format!("x{w}")).map_err(pe)?;
+        positive_pieces(patch).map_err(pe)
+    }
+}
+
+/// §5.1 as one call: the family `Q(t)`, its parametrization (Prop. 5.1) and its picture
+/// ([`QuadricFamilyParam::picture`]) with every certificate.
+///
+/// # Errors
+/// As [`QuadricFamily::new`], [`QuadricFamily::parametrize`] and
+/// [`QuadricFamilyParam::picture`].
+pub fn quadric_family_picture(
+    q: Vec<Vec<P>>,
+    t0: &Q,
+    a: (Q, Q),
+    b: (Q, Q),
+) -> Result<QuadricFamilyPicture, QuadricFamilyError> {
+    let fam = QuadricFamily::new(q)?;
+    let param = fam.parametrize()?;
+    let (patches, weights) = param.picture(t0, a, b)?;
+    let mut certificates = param.certify();
+    certificates.push(weights);
+    Ok(QuadricFamilyPicture {
+        param,
+        patches,
+        certificates,
+    })
+}
+
+/// The engine's answer for a conic family `X²L + Y²M + Z²N = 0` with a picture: where a
+/// point exists, the conics stacked over `t` (the `n = 2` picture of
+/// [`QuadricFamilyParam::picture`] on `[t₀, t₁] × [u₀, u₁]`); otherwise the graphs
+/// `(t, L(t))`, `(t, M(t))`, `(t, N(t))` on `[t₀, t₁]` whose roots and signs the decision
+/// is about.
+#[derive(Debug, Clone)]
+pub struct ConicPointReport {
+    /// The decision (module [`rcagd_algebra::conic_point`]).
+    pub decision: ConicPoint,
+    /// The stacked conics (a point exists over `Q`).
+    pub patches: Vec<BezierPatch<Q>>,
+    /// The coefficient graphs (no point over `Q`).
+    pub graphs: Vec<BezierCurve<Q>>,
+    /// The certificates (the point, the parametrization, the weights).
+    pub certificates: Vec<Certificate>,
+}
+
+/// The graph `(t, p(t))` of a polynomial on `[t₀, t₁]` as a polynomial Bézier curve.
+///
+/// # Errors
+/// [`QuadricFamilyError::Patch`] for an empty interval.
+pub fn graph_curve(p: &P, t: &(Q, Q)) -> Result<BezierCurve<Q>, QuadricFamilyError> {
+    if t.0 >= t.1 {
+        return Err(QuadricFamilyError::Patch(format!(
+            "the interval [{}, {}] is empty",
+            t.0, t.1
+        )));
+    }
+    let lin = Poly::new(vec![t.0.clone(), &t.1 - &t.0]);
+    let d = p.degree().unwrap_or(0).max(1);
+    let err = |e: rcagd_algebra::AlgebraError| QuadricFamilyError::Patch(e.to_string());
+    let xs = to_bernstein(&lin, d).map_err(err)?;
+    let ys = to_bernstein(&p.compose(&lin), d).map_err(err)?;
+    let pts = xs
+        .into_iter()
+        .zip(ys)
+        .map(|(x, y)| vec![Q::ONE, x, y])
+        .collect();
+    BezierCurve::from_homogeneous(pts).map_err(|e| QuadricFamilyError::Patch(e.to_string()))
+}
+
+/// The conic-point engine on `(L, M, N)` with its certificates and picture
+/// ([`ConicPointReport`]).
+///
+/// # Errors
+/// [`QuadricFamilyError::Engine`] (undecided), [`QuadricFamilyError::Patch`] (picture).
+pub fn conic_point_report(
+    coeffs: [P; 3],
+    t: (Q, Q),
+    u: (Q, Q),
+) -> Result<ConicPointReport, QuadricFamilyError> {
+    let decision = conic_point(&coeffs[0], &coeffs[1], &coeffs[2])?;
+    let mut certificates = Vec::new();
+    let mut patches = Vec::new();
+    let mut graphs = Vec::new();
+    match &decision {
+        ConicPoint::Rational(pt) => {
+            certificates.push(rcagd_algebra::conic_point::certify_conic_point(&coeffs, pt));
+            if coeffs.iter().all(|c| !c.is_zero()) {
+                let fam = QuadricFamily::new(diagonal_family(&coeffs))?;
+                let fp = FamilyPoint {
+                    point: pt.to_vec(),
+                    plane: [0, 1, 2].map(|i| {
+                        (0..3)
+                            .map(|j| Poly::constant(if i == j { Q::ONE } else { Q::ZERO }))
+                            .collect()
+                    }),
+                    conic: coeffs.clone(),
+                    conic_point: pt.clone(),
+                };
+                let param = fam.parametrize_from(fp)?;
+                let (p, w) = param.picture(&Q::ZERO, t, u)?;
+                certificates.extend(param.certify());
+                certificates.push(w);
+                patches = p;
+            } else {
+                for c in &coeffs {
+                    graphs.push(graph_curve(c, &t)?);
+                }
+            }
+        }
+        ConicPoint::QuadraticField {
+            radicand,
+            point,
+            obstruction,
+        } => {
+            let mut c = rcagd_algebra::conic_point::certify_conic_point_ext(&coeffs, point);
+            c.property = format!("{} (d = {radicand})", c.property);
+            certificates.push(c);
+            if let Obstruction::AtInfinity { .. } = obstruction {
+                certificates.push(obstruction_certificate(obstruction, &coeffs)?);
+            }
+            for c in &coeffs {
+                graphs.push(graph_curve(c, &t)?);
+            }
+        }
+        ConicPoint::NoPoint {
+            obstruction,
+            reduced,
+        } => {
+            certificates.push(obstruction_certificate(obstruction, reduced)?);
+            for c in &coeffs {
+                graphs.push(graph_curve(c, &t)?);
+            }
+        }
+    }
+    Ok(ConicPointReport {
+        decision,
+        patches,
+        graphs,
+        certificates,
+    })
+}
+
+/// The obstruction re-checked: for a residue, `p` divides its coefficient of the reduced
+/// family exactly and the residue has no square root in `Q[t]/(p)`; at infinity, the
+/// leading conic has no rational point (Legendre's conditions, named place).
+///
+/// # Errors
+/// [`QuadricFamilyError::Engine`] if a factorization is undecided.
+pub fn obstruction_certificate(
+    obstruction: &Obstruction,
+    reduced: &[P; 3],
+) -> Result<Certificate, QuadricFamilyError> {
+    Ok(match obstruction {
+        Obstruction::Residue {
+            factor,
+            divides,
+            value,
+        } => {
+            use rcagd_algebra::conic_point::Coefficient;
+            let c = match divides {
+                Coefficient::L => &reduced[0],
+                Coefficient::M => &reduced[1],
+                Coefficient::N => &reduced[2],
+            };
+            let divides_ok = c.div_rem(factor).map(|(_, r)| r.is_zero()).unwrap_or(false);
+            let no_root = sqrt_mod_irreducible(value, factor)?.is_none();
+            Certificate::decide(
+                format!(
+                    "p(t) = {} divides its coefficient and {} is not a square in Q[t]/(p) (no point over Q)",
+                    format_poly(factor, "t"),
+                    format_poly(value, "t")
+                ),
+                divides_ok && no_root,
+                true,
+                || format!("divides: {divides_ok}, non-square: {no_root}"),
+            )
+        }
+        Obstruction::AtInfinity { conic, place } => {
+            let out = rational_conic_point(&conic[0], &conic[1], &conic[2])?;
+            let ok = matches!(&out, TernaryOutcome::NoPoint(p) if p == place);
+            Certificate::decide(
+                format!(
+                    "the leading conic {}·X² + {}·Y² + {}·Z² = 0 has no point over {place} (no point over Q at t = ∞)",
+                    conic[0], conic[1], conic[2]
+                ),
+                ok,
+                true,
+                || format!("{out:?}"),
+            )
+        }
+    })
 }
