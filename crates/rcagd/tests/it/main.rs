@@ -24,3 +24,4 @@ mod seed003_sphere_families;
 mod seed004_conic_examples;
 mod seed004_laguerre_examples;
 mod seed004_pn_examples;
+mod thomsen;
