@@ -2,6 +2,7 @@
 //! see docs/ARCHITECTURE.md, "Tests").
 
 mod canal_cyclographic;
+mod canal_hypersurface;
 mod canal_props;
 mod cyclide;
 mod laguerre_props;
