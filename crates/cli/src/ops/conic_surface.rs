@@ -10,7 +10,9 @@ use rcagd::conic_surface::cones::{canal_via_cones_patches, cone_envelope_patches
 use rcagd::conic_surface::quadric_family::{
     conic_point_report, quadric_family_picture, QuadricFamilyError,
 };
+use rcagd::conic_surface::mobius::{mobius_spheres, CanalHypersurface};
 use rcagd::conic_surface::{conic_surface_patch, moved_conic, FamilyInput};
+use rcagd::Certified;
 use rcagd_algebra::conic_point::ConicPoint;
 use rcagd_algebra::{Poly, Rational};
 use rcagd_io::ndim::NdimMap;
@@ -25,6 +27,7 @@ pub const OPS: &[OpSpec] = &[
     CANAL_VIA_CONES,
     QUADRIC_FAMILY,
     CONIC_POINT,
+    CANAL_HYPERSURFACE,
 ];
 
 const CONIC_SURFACE: OpSpec = OpSpec {
@@ -446,4 +449,69 @@ fn build_conic_point(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpError
         Geometry::Patches(rep.patches)
     };
     Ok(vec![args.object(geometry, rep.certificates).with_values(values)])
+}
+
+const CANAL_HYPERSURFACE: OpSpec = OpSpec {
+    name: "canal_hypersurface",
+    summary: "the canal hypersurface of Rⁿ enveloped by the spheres |y − m(t)|² = ρ(t) (only ρ = r² rational; Peternell Thm 2.3 and the remark after it), or by the spheres of a curve c(t) of the Möbius model P^(n+1) ((2.12), (2.13)): the characteristic spheres parametrized by §5.1, certified on every sphere and characteristic hyperplane; values: the map; picture: the surface (n = 3) or the slice u₂ = … = 0 projected to (y₀ : y₁ : y₂ : y₃)",
+    params: &[
+        ParamSpec::optional("spine", ParamKind::Grid, "m(t): n rows (n ≥ 3) of power coefficients in t"),
+        ParamSpec::optional("radius_squared", ParamKind::Numbers, "with `spine`: power coefficients of ρ(t) = r(t)²"),
+        ParamSpec::optional(
+            "mobius_curve",
+            ParamKind::Grid,
+            "instead of `spine`: c(t) in the Möbius model, n + 2 rows of power coefficients (c₀, …, c_(n+1)); centre cᵢ/(c₀ − c_(n+1)), r² = (c₁² + … + c_(n+1)² − c₀²)/(c₀ − c_(n+1))²",
+        ),
+        ParamSpec::with_default("domain", ParamKind::Numbers, "[-1, 1, -1, 1]", "[t0, t1, u0, u1] (u = u₁ of the characteristic spheres)"),
+    ],
+    example: r#"[[object]]
+name = "canal_mobius_hyperboloid"
+op = "canal_hypersurface"
+# c(t) = (t²/4, t, 0, 0, t²/4 − 1) in P⁴: spheres centred at (t, 0, 0) with r² = 1 + t²/2
+mobius_curve = [[0, 0, "1/4"], [0, 1, 0], [0, 0, 0], [0, 0, 0], [-1, 0, "1/4"]]
+domain = [-1, 1, "-1/2", "1/2"]
+"#,
+    build: build_canal_hypersurface,
+};
+
+fn build_canal_hypersurface(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpError> {
+    let rows = |p: &'static str| -> Result<Option<Vec<Poly<Q>>>, OpError> {
+        Ok(args.opt_grid(p)?.map(|g| g.iter().map(|r| Poly::new(r.clone())).collect()))
+    };
+    let (m, rho, w, param) = match (rows("spine")?, rows("mobius_curve")?) {
+        (Some(m), None) => {
+            let rho = Poly::new(
+                args.opt_numbers("radius_squared")?
+                    .ok_or_else(|| OpError::param("radius_squared", "missing (needed with `spine`)"))?,
+            );
+            (m, rho, Poly::constant(Q::ONE), "spine")
+        }
+        (None, Some(c)) => {
+            let (m, r, w) = mobius_spheres(&c).map_err(|e| OpError::param("mobius_curve", e.to_string()))?;
+            (m, r, w, "mobius_curve")
+        }
+        _ => return Err(OpError::new("give either `spine` with `radius_squared`, or `mobius_curve`")),
+    };
+    let canal = CanalHypersurface::new(m, rho, w).map_err(|e| OpError::param(param, e.to_string()))?;
+    let d = domain4(args)?;
+    let (patches, weights) = canal
+        .picture((d[0].clone(), d[1].clone()), (d[2].clone(), d[3].clone()))
+        .map_err(|e| OpError::param("domain", e.to_string()))?;
+    let mut certs = canal.certify();
+    certs.push(weights);
+    let n = canal.dim();
+    let mut names = vec!["t".to_string()];
+    names.extend((1..n - 1).map(|i| format!("u{i}")));
+    let map = NdimMap::new(names, canal.point().to_vec()).map_err(|e| OpError::new(e.to_string()))?;
+    let (dt, du) = canal.degree();
+    let values = vec![
+        NamedQuantity::new(
+            "homogeneous_map",
+            "y(t, u): exact homogeneous coordinates (y₀, y₁, …, yₙ), each a list of terms [c, e_t, e_u1, …]",
+            map.quantity(),
+        ),
+        NamedQuantity::new("degree", "(degree in t, total degree in u)", Quantity::Vector(vec![Quantity::Integer(i64::from(dt)), Quantity::Integer(i64::from(du))])),
+        NamedQuantity::new("dimension", "n: the hypersurface lies in Rⁿ", Quantity::Integer(n as i64)),
+    ];
+    Ok(vec![args.object(Geometry::Patches(patches), certs).with_values(values)])
 }

@@ -77,3 +77,24 @@ fn quadric_family_values() {
     );
     assert!(e.contains("not symmetric"), "{e}");
 }
+
+/// The Möbius curve (t²/4, t, 0, 0, t²/4 − 1) of P⁴: spheres (t, 0, 0), r² = 1 + t²/2; the
+/// canal surface has degree 2 in u. A curve with c₀ ≡ c₄ is refused with the parameter named.
+#[test]
+fn canal_hypersurface_from_the_mobius_model() {
+    let v = build_json(
+        "ch_m",
+        "[[object]]\nname = \"h\"\nop = \"canal_hypersurface\"\nmobius_curve = [[0, 0, \"1/4\"], [0, 1, 0], [0, 0, 0], [0, 0, 0], [-1, 0, \"1/4\"]]\ndomain = [-1, 1, \"-1/2\", \"1/2\"]\n",
+        "h",
+    );
+    assert_eq!(exact(&v, "dimension"), "3");
+    assert!(exact(&v, "degree").ends_with(", 2)"));
+    let e = build_refused(
+        &temp_dir("ch_bad"),
+        "[[object]]\nname = \"h\"\nop = \"canal_hypersurface\"\nmobius_curve = [[1, 1], [0, 1], [0, 0], [0, 0], [1, 1]]\n",
+    );
+    assert!(
+        e.contains("mobius_curve") && e.contains("hyperplane"),
+        "{e}"
+    );
+}

@@ -258,3 +258,35 @@ pub fn canal_from_mobius_curve(c: &[P]) -> Result<CanalHypersurface, QuadricFami
     let (m, r, w) = mobius_spheres(c)?;
     CanalHypersurface::new(m, r, w)
 }
+
+impl CanalHypersurface {
+    /// A picture: for `n = 3` the surface itself on `[t₀, t₁] × [u₀, u₁]`; for `n ≥ 4` the
+    /// slice `u₂ = … = 0` projected to `(y₀ : y₁ : y₂ : y₃)`. Positive weights.
+    ///
+    /// # Errors
+    /// [`QuadricFamilyError::Patch`] where the weight `y₀` vanishes on the rectangle.
+    pub fn picture(
+        &self,
+        t: (Q, Q),
+        u: (Q, Q),
+    ) -> Result<(Vec<rcagd_geom::BezierPatch<Q>>, Certificate), QuadricFamilyError> {
+        let pe = |e: super::ConicSurfaceError| QuadricFamilyError::Patch(e.to_string());
+        let nv = self.point[0].nvars();
+        let cut = |p: &MPoly<Q>| {
+            let mut s = p.clone();
+            for v in 2..nv {
+                s = s.specialize(v, &Q::ZERO);
+            }
+            MPoly::from_terms(
+                2,
+                s.terms()
+                    .map(|(e, c)| (e[..2].to_vec(), c.clone()))
+                    .collect(),
+            )
+            .unwrap_or_else(|_| MPoly::zero(2))
+        };
+        let coords: [MPoly<Q>; 4] = core::array::from_fn(|i| cut(&self.point[i]));
+        let patch = super::point_patch(&coords, t, u, "y₀").map_err(pe)?;
+        super::positive_pieces(patch).map_err(pe)
+    }
+}
