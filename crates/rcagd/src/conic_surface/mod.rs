@@ -425,6 +425,37 @@ impl ConicFamily {
         }
     }
 
+    /// `(a₂, a₃, a₄)` with `det(C + sĊ) = a₂s² + a₃s³ + a₄s⁴` (interpolated at
+    /// `s = 0, …, 4`; `a₀ ≡ a₁ ≡ 0` by (1.6)).
+    pub fn pencil_quadratic(&self) -> (P, P, P) {
+        let c = &self.c;
+        let dc = deriv(c);
+        let xs: Vec<Q> = (0..5).map(Q::from).collect();
+        let dets: Vec<P> = (0..5i64)
+            .map(|k| {
+                let sk = Q::from(k);
+                let m: Mat4 = core::array::from_fn(|i| {
+                    core::array::from_fn(|j| &c[i][j] + &dc[i][j].scale(&sk))
+                });
+                let adj = adjugate(&m);
+                (0..4).fold(pz(), |acc, j| &acc + &(&m[0][j] * &adj[j][0]))
+            })
+            .collect();
+        let coeff = |d: usize| {
+            let mut a = pz();
+            for (k, det) in dets.iter().enumerate() {
+                let mut e = vec![Q::ZERO; 5];
+                e[k] = Q::ONE;
+                let w = interpolate(&xs, &e).coeff(d);
+                if !w.is_zero() {
+                    a = &a + &det.scale(&w);
+                }
+            }
+            a
+        };
+        (coeff(2), coeff(3), coeff(4))
+    }
+
     /// Lemma 1.1 at a rational parameter, decided by two independent tests: parabolic by
     /// the pencil of planes through the pole ([`Self::conic_type_at`]), asymptotic by the
     /// order ≥ 3 of the zero of `det(C + sĊ)` at `s = 0` ([`Self::thomsen_at`]: cases D,

@@ -105,3 +105,49 @@ fn lemma_1_1_identity_on_random_parameters() {
         }
     }
 }
+
+/// Circles x² + y² = ρ(t), z = t (a surface of revolution): the tangent developable along
+/// each circle is a cone of revolution, so the family is of type C at every parameter and
+/// the surface is the envelope of those cones (Peternell §2.2). ρ = 1 + t² (a hyperboloid
+/// of one sheet; the circles have the rational points (1, t)): the vertex lies on the axis,
+/// and every envelope point lies on its circle. A type-A family is refused.
+#[test]
+fn type_c_surface_of_revolution_as_envelope_of_cones() {
+    use rcagd::conic_surface::cones::TypeCEnvelope;
+    // C = u·uᵀ − ρ·diag(0, 1, 1, 0), u = (1, 0, 0, t): planes tangent to the circle
+    let u = [p(&[1]), p(&[0]), p(&[0]), p(&[0, 1])];
+    let rho = p(&[1, 0, 1]);
+    let c: Mat4 = core::array::from_fn(|i| {
+        core::array::from_fn(|j| {
+            let uu = &u[i] * &u[j];
+            if i == j && (i == 1 || i == 2) {
+                &uu - &rho
+            } else {
+                uu
+            }
+        })
+    });
+    let fam = ConicFamily::new(c).expect("family");
+    for k in [-2i64, 1, 3] {
+        assert_eq!(
+            fam.thomsen_at(&Q::from(k)).expect("type"),
+            Thomsen::C,
+            "t = {k}"
+        );
+    }
+    let env = TypeCEnvelope::new(&fam).expect("type C");
+    let certs = env.certify();
+    assert!(certs.iter().all(|c| c.holds), "{certs:?}");
+    // the vertex lies on the axis x = y = 0
+    let v = env.vertex();
+    assert!(v[1].is_zero() && v[2].is_zero(), "{v:?}");
+    // the Thomsen-A family of the gallery is refused with the reason
+    let (_, b, e) = cases()[0];
+    let a = ConicFamily::new(thomsen_family(b, e)).expect("family");
+    let err = TypeCEnvelope::new(&a).expect_err("type A");
+    assert!(err.to_string().contains("type C"), "{err}");
+}
+
+fn p(c: &[i64]) -> P {
+    Poly::from_ints(c)
+}
