@@ -6,7 +6,9 @@
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::Geometry;
 use crate::value::ParamKind;
-use rcagd::conic_surface::cones::{canal_via_cones_patches, cone_envelope_patches};
+use rcagd::conic_surface::cones::{
+    canal_via_cones_patches, cone_envelope_patches, type_c_envelope_patches,
+};
 use rcagd::conic_surface::quadric_family::{
     conic_point_report, quadric_family_picture, QuadricFamilyError,
 };
@@ -28,6 +30,7 @@ pub const OPS: &[OpSpec] = &[
     QUADRIC_FAMILY,
     CONIC_POINT,
     CANAL_HYPERSURFACE,
+    TYPE_C_ENVELOPE,
 ];
 
 const CONIC_SURFACE: OpSpec = OpSpec {
@@ -514,4 +517,48 @@ fn build_canal_hypersurface(args: &OpArgs) -> Result<Vec<crate::model::Object>, 
         NamedQuantity::new("dimension", "n: the hypersurface lies in Rⁿ", Quantity::Integer(n as i64)),
     ];
     Ok(vec![args.object(Geometry::Patches(patches), certs).with_values(values)])
+}
+
+const TYPE_C_ENVELOPE: OpSpec = OpSpec {
+    name: "type_c_envelope",
+    summary: "a conic surface of Thomsen type C (X·C(t)·Xᵀ = 0 of type C at every t) as the envelope of the quadratic cones that touch it along its conics (Peternell §2.2): the rank-2 member of the pencil λC + μĊ gives the vertex, the cone over c(t) from it, the envelope by Thm 2.1; certified on every cone, on ċone and on every conic",
+    params: &[
+        ParamSpec::required(
+            "matrix",
+            ParamKind::Net,
+            "C(t): 4 rows of 4 entries, each the power coefficients of C_jk(t); symmetric, rank 3, type C at every t",
+        ),
+        ParamSpec::with_default("domain", ParamKind::Numbers, "[-1, 1, -1, 1]", "[t0, t1, u0, u1]"),
+    ],
+    example: r#"[[object]]
+name = "revolution_as_cone_envelope"
+op = "type_c_envelope"
+# circles x² + y² = 1 + t², z = t: planes (X₀ + t·X₃)² − (1 + t²)(X₁² + X₂²) = 0
+matrix = [
+  [[1, 0, 0], [0, 0, 0], [0, 0, 0], [0, 1, 0]],
+  [[0, 0, 0], [-1, 0, -1], [0, 0, 0], [0, 0, 0]],
+  [[0, 0, 0], [0, 0, 0], [-1, 0, -1], [0, 0, 0]],
+  [[0, 1, 0], [0, 0, 0], [0, 0, 0], [0, 0, 1]],
+]
+domain = [-1, 1, "-1/2", "1/2"]
+"#,
+    build: build_type_c_envelope,
+};
+
+fn build_type_c_envelope(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpError> {
+    let c = poly_matrix(args, "matrix")?;
+    let d = domain4(args)?;
+    let (patches, certs) = type_c_envelope_patches(
+        c,
+        (d[0].clone(), d[1].clone()),
+        (d[2].clone(), d[3].clone()),
+    )
+    .map_err(|e| {
+        let p = match e {
+            rcagd::conic_surface::ConicSurfaceError::Patch(_) => "domain",
+            _ => "matrix",
+        };
+        OpError::param(p, e.to_string())
+    })?;
+    Ok(vec![args.object(Geometry::Patches(patches), certs)])
 }

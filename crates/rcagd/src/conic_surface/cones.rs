@@ -558,3 +558,22 @@ impl Certified for TypeCEnvelope {
         out
     }
 }
+
+/// A type-C conic surface as the envelope of its cones ([`TypeCEnvelope`]) as
+/// positive-weight patches over `[t₀, t₁] × [u₀, u₁]`, with every certificate.
+///
+/// # Errors
+/// As [`ConicFamily::new`], [`TypeCEnvelope::new`] and [`ConeEnvelope::patch`].
+pub fn type_c_envelope_patches(
+    c: Mat4,
+    t: (Q, Q),
+    u: (Q, Q),
+) -> Result<(Vec<BezierPatch<Q>>, Vec<Certificate>), ConicSurfaceError> {
+    let fam = ConicFamily::new(c)?;
+    let env = TypeCEnvelope::new(&fam)?;
+    let (patches, weights) = super::positive_pieces(env.envelope().patch(t, u)?)?;
+    let mut certs = fam.identities();
+    certs.extend(env.certify());
+    certs.push(weights);
+    Ok((patches, certs))
+}
