@@ -31,9 +31,10 @@
 //!
 //! **No point.** If `Q(t₀)` is definite at a rational `t₀`, no real point exists there and
 //! no polynomial point can exist ([`QuadricFamilyError::NoRealPoints`], a proof: a
-//! primitive point does not vanish at `t₀`). For a conic family (`n = 2`) the engine's
-//! obstruction is a proof ([`QuadricFamilyError::NoRationalPoint`]). For `n ≥ 3` a failing
-//! plane section does not prove that the quadric has no point: the error
+//! primitive point does not vanish at `t₀`). For a family of rank 3 (a conic family,
+//! `n = 2`, or cones over one) the engine's obstruction is a proof: every regular point
+//! projects onto the section conic ([`QuadricFamilyError::NoRationalPoint`]). For rank ≥ 4
+//! a failing plane section does not prove that the quadric has no point: the error
 //! ([`QuadricFamilyError::NoPointFound`]) names every plane tried and its obstruction.
 
 use super::{point_patch, positive_pieces, ConicSurfaceError, P, Q};
@@ -73,7 +74,8 @@ pub enum QuadricFamilyError {
         /// `"positive"` or `"negative"`.
         sign: &'static str,
     },
-    /// A conic family (`n = 2`) without a polynomial point over `Q`: the engine's proof.
+    /// A family of rank 3 (a conic family, `n = 2`, or cones over a conic family) without a
+    /// regular polynomial point over `Q`: the engine's proof.
     #[error("no rational point on the conic family: {0}")]
     NoRationalPoint(String),
     /// `n ≥ 3`: no plane section tried has a point over `Q` (not a proof for the
@@ -415,7 +417,10 @@ impl QuadricFamily {
                 )),
             }
         }
-        if self.dim() == 2 && nz.len() == 3 {
+        // rank 3 (n = 2, or a cone over the section conic with vertex space spanned by the
+        // rows with β = 0): every regular point projects onto the section, so the
+        // engine's obstruction is a proof
+        if nz.len() == 3 {
             Err(QuadricFamilyError::NoRationalPoint(tried.join("; ")))
         } else {
             Err(QuadricFamilyError::NoPointFound(tried))

@@ -62,6 +62,19 @@ fn no_point_over_q_is_proven_for_conics() {
         }
         other => panic!("expected a proof of non-existence, got {other:?}"),
     }
+    // the cones over that conic family in P³ (rank 3): still a proof
+    let cone = QuadricFamily::new(diagonal_family(&[
+        p(&[1]),
+        p(&[1]),
+        p(&[-2, 0, -1]),
+        p(&[0]),
+    ]))
+    .expect("family");
+    assert_eq!(cone.rank(), 3);
+    assert!(matches!(
+        cone.parametrize(),
+        Err(QuadricFamilyError::NoRationalPoint(_))
+    ));
 }
 
 /// A family with no real points at t = 0 is refused with the parameter named; rank 2
