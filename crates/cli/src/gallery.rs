@@ -68,6 +68,10 @@ pub const RECIPES: &[(&str, &str)] = &[
         include_str!("../../../examples/recipes/conic_surface.toml"),
     ),
     (
+        "examples/recipes/thomsen.toml",
+        include_str!("../../../examples/recipes/thomsen.toml"),
+    ),
+    (
         "examples/recipes/analysis.toml",
         include_str!("../../../examples/recipes/analysis.toml"),
     ),

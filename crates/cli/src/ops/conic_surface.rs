@@ -6,14 +6,32 @@
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::Geometry;
 use crate::value::ParamKind;
-use rcagd::conic_surface::cones::{canal_via_cones_patches, cone_envelope_patches};
+use rcagd::conic_surface::cones::{
+    canal_via_cones_patches, cone_envelope_patches, type_c_envelope_patches,
+};
+use rcagd::conic_surface::quadric_family::{
+    conic_point_report, quadric_family_picture, QuadricFamilyError,
+};
+use rcagd::conic_surface::mobius::{mobius_spheres, CanalHypersurface};
 use rcagd::conic_surface::{conic_surface_patch, moved_conic, FamilyInput};
+use rcagd::Certified;
+use rcagd_algebra::conic_point::ConicPoint;
 use rcagd_algebra::{Poly, Rational};
+use rcagd_io::ndim::NdimMap;
+use rcagd_io::quantity::{NamedQuantity, Quantity};
 
 type Q = Rational;
 
 /// The ops of this topic.
-pub const OPS: &[OpSpec] = &[CONIC_SURFACE, CONE_ENVELOPE, CANAL_VIA_CONES];
+pub const OPS: &[OpSpec] = &[
+    CONIC_SURFACE,
+    CONE_ENVELOPE,
+    CANAL_VIA_CONES,
+    QUADRIC_FAMILY,
+    CONIC_POINT,
+    CANAL_HYPERSURFACE,
+    TYPE_C_ENVELOPE,
+];
 
 const CONIC_SURFACE: OpSpec = OpSpec {
     name: "conic_surface",
@@ -263,4 +281,284 @@ fn domain4(args: &OpArgs) -> Result<Vec<Q>, OpError> {
         return Err(OpError::param("domain", "needs [t0, t1, u0, u1]"));
     }
     Ok(d)
+}
+
+const QUADRIC_FAMILY: OpSpec = OpSpec {
+    name: "quadric_family",
+    summary: "a rational one-parameter family of quadrics xᵀ·Q(t)·x = 0 in Pⁿ (Peternell §5.1, Cor. 5.1, Prop. 5.1): a polynomial point f(t) on every quadric (a plane section solved by the exact conic-point engine, or the named obstruction), and the stereographic parametrization g(t, u) from it, certified gᵀQg ≡ 0; values: f, the section conic, g; picture: for n = 2 the conics stacked over t, for n = 3 the quadric Q(t₀), for n ≥ 4 its slice u₃ = … = 0",
+    params: &[
+        ParamSpec::required(
+            "matrix",
+            ParamKind::Net,
+            "Q(t): n + 1 rows of n + 1 entries, each the power coefficients of Q_jk(t) (all padded to one length); symmetric, n ≥ 2, rank ≥ 3",
+        ),
+        ParamSpec::with_default("t", ParamKind::Number, "0", "n ≥ 3: the parameter t₀ of the quadric drawn"),
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[-1, 1, -1, 1]",
+            "n = 2: [t0, t1, u0, u1]; n ≥ 3: [u1_0, u1_1, u2_0, u2_1] (the weight x₀ must not vanish there)",
+        ),
+    ],
+    example: r#"[[object]]
+name = "moving_ellipsoids"
+op = "quadric_family"
+# x₀²·(−1 − t²) + x₁² + (1 + t²)·x₂² + 2·x₃² = 0: ellipsoids in P³ whose axes change with t
+matrix = [
+  [[-1, 0, -1], [0, 0, 0], [0, 0, 0], [0, 0, 0]],
+  [[0, 0, 0], [1, 0, 0], [0, 0, 0], [0, 0, 0]],
+  [[0, 0, 0], [0, 0, 0], [1, 0, 1], [0, 0, 0]],
+  [[0, 0, 0], [0, 0, 0], [0, 0, 0], [2, 0, 0]],
+]
+t = "1/2"
+domain = ["-1/2", "1/2", "-1/2", "1/2"]
+"#,
+    build: build_quadric_family,
+};
+
+fn poly_square(args: &OpArgs, param: &'static str) -> Result<Vec<Vec<Poly<Q>>>, OpError> {
+    let net = args.net(param)?;
+    let n = net.len();
+    if net.iter().any(|r| r.len() != n) {
+        return Err(OpError::param(param, format!("needs {n} rows of {n} entries (a square matrix)")));
+    }
+    Ok(net
+        .iter()
+        .map(|r| r.iter().map(|c| Poly::new(c.clone())).collect())
+        .collect())
+}
+
+fn polys_value(name: &str, doc: &str, v: &[Poly<Q>]) -> NamedQuantity {
+    NamedQuantity::new(
+        name,
+        doc,
+        Quantity::Vector(v.iter().cloned().map(Quantity::poly_t).collect()),
+    )
+}
+
+fn build_quadric_family(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpError> {
+    let q = poly_square(args, "matrix")?;
+    let t0 = args.opt_number("t")?.unwrap_or(Q::ZERO);
+    let d = domain4(args)?;
+    let pic = quadric_family_picture(
+        q,
+        &t0,
+        (d[0].clone(), d[1].clone()),
+        (d[2].clone(), d[3].clone()),
+    )
+    .map_err(|e| {
+        let p = if matches!(e, QuadricFamilyError::Patch(_)) { "domain" } else { "matrix" };
+        OpError::param(p, e.to_string())
+    })?;
+    let g = pic.param.map().to_vec();
+    let n = g.len() - 1;
+    let mut names = vec!["t".to_string()];
+    names.extend((1..n).map(|i| format!("u{i}")));
+    let map = NdimMap::new(names, g).map_err(|e| OpError::new(e.to_string()))?;
+    let fp = pic.param.point();
+    let (dt, du) = pic.param.degree();
+    let values = vec![
+        polys_value("point", "f(t): a polynomial point on every quadric Q(t) (Cor. 5.1)", &fp.point),
+        polys_value("section_conic", "(L, M, N): the plane section X²L + Y²M + Z²N = 0 it was found on (5.2)", &fp.conic),
+        polys_value("section_point", "(X, Y, Z): the conic-point engine's point on the section", &fp.conic_point),
+        NamedQuantity::new(
+            "homogeneous_map",
+            "g(t, u): exact homogeneous coordinates (x₀, …, xₙ), each a list of terms [c, e_t, e_u1, …] of c·t^e_t·∏ uᵢ^eᵢ (Prop. 5.1)",
+            map.quantity(),
+        ),
+        NamedQuantity::new("degree", "(degree in t, total degree in u)", Quantity::Vector(vec![Quantity::Integer(i64::from(dt)), Quantity::Integer(i64::from(du))])),
+        NamedQuantity::new("chart", "k: the coordinate hyperplane x_k = 0 whose affine chart is the parameter space of the projection", Quantity::Integer(pic.param.chart() as i64)),
+    ];
+    Ok(vec![args
+        .object(Geometry::Patches(pic.patches), pic.certificates)
+        .with_values(values)])
+}
+
+const CONIC_POINT: OpSpec = OpSpec {
+    name: "conic_point",
+    summary: "the exact decision for a polynomial point on the conic family X²L(t) + Y²M(t) + Z²N(t) = 0 (Peternell Thm 1.1, Cor. 1.1): the certified point, or the proof that none exists over Q (a residue that is not a square at a factor, or the leading conic without a point over R or Q_p) and the real quadratic field Q(√d) where one exists; picture: the conics stacked over t when a point exists, else the graphs of L, M, N",
+    params: &[
+        ParamSpec::required("L", ParamKind::Numbers, "power coefficients of L(t)"),
+        ParamSpec::required("M", ParamKind::Numbers, "power coefficients of M(t)"),
+        ParamSpec::required("N", ParamKind::Numbers, "power coefficients of N(t)"),
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[-1, 1, -1, 1]",
+            "[t0, t1, u0, u1]: the picture's rectangle (u: the stereographic parameter of each conic)",
+        ),
+    ],
+    example: r#"[[object]]
+name = "t2_plus_9"
+op = "conic_point"
+# X² + Y² − (t² + 9)·Z² = 0: the engine finds (t, 3, 1)-like points exactly
+L = [1]
+M = [1]
+N = [-9, 0, -1]
+domain = [-1, 1, -1, 1]
+"#,
+    build: build_conic_point,
+};
+
+fn build_conic_point(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpError> {
+    let coeff = |p: &'static str| -> Result<Poly<Q>, OpError> {
+        Ok(Poly::new(args.opt_numbers(p)?.ok_or_else(|| OpError::param(p, "missing"))?))
+    };
+    let coeffs = [coeff("L")?, coeff("M")?, coeff("N")?];
+    let d = domain4(args)?;
+    let rep = conic_point_report(
+        coeffs,
+        (d[0].clone(), d[1].clone()),
+        (d[2].clone(), d[3].clone()),
+    )
+    .map_err(|e| {
+        let p = if matches!(e, QuadricFamilyError::Patch(_)) { "domain" } else { "N" };
+        OpError::param(p, e.to_string())
+    })?;
+    let text = |s: &str| Quantity::Text(s.to_string());
+    let mut values = Vec::new();
+    match &rep.decision {
+        ConicPoint::Rational(pt) => {
+            values.push(NamedQuantity::new("decision", "rational: a polynomial point over Q", text("rational")));
+            values.push(polys_value("point", "(X, Y, Z)(t), primitive, X²L + Y²M + Z²N ≡ 0", pt));
+        }
+        ConicPoint::QuadraticField { radicand, point, obstruction } => {
+            values.push(NamedQuantity::new("decision", "quadratic_field: no point over Q, one over Q(√d)", text("quadratic_field")));
+            values.push(NamedQuantity::new("obstruction", "why there is no point over Q", Quantity::Text(obstruction.to_string())));
+            values.push(NamedQuantity::new("radicand", "d: the point has coefficients in Q(√d)", Quantity::Rational(radicand.clone())));
+            let part = |x: &Poly<rcagd_algebra::QuadExt>, b: bool| {
+                Poly::new(x.coeffs().iter().map(|c| if b { c.b().clone() } else { c.a().clone() }).collect())
+            };
+            values.push(NamedQuantity::new(
+                "point",
+                "(X, Y, Z)(t) over Q(√d): each coordinate as [a(t), b(t)] with a + b·√d",
+                Quantity::Vector(
+                    point
+                        .iter()
+                        .map(|x| Quantity::Vector(vec![Quantity::poly_t(part(x, false)), Quantity::poly_t(part(x, true))]))
+                        .collect(),
+                ),
+            ));
+        }
+        ConicPoint::NoPoint { obstruction, reduced } => {
+            values.push(NamedQuantity::new("decision", "no_point: none over Q (nor over a real quadratic field this engine constructs)", text("no_point")));
+            values.push(NamedQuantity::new("obstruction", "the proof that no point exists over Q", Quantity::Text(obstruction.to_string())));
+            values.push(polys_value("reduced", "the reduced family (L, M, N) the obstruction refers to", reduced));
+        }
+    }
+    let geometry = if rep.patches.is_empty() {
+        Geometry::Curves(rep.graphs)
+    } else {
+        Geometry::Patches(rep.patches)
+    };
+    Ok(vec![args.object(geometry, rep.certificates).with_values(values)])
+}
+
+const CANAL_HYPERSURFACE: OpSpec = OpSpec {
+    name: "canal_hypersurface",
+    summary: "the canal hypersurface of Rⁿ enveloped by the spheres |y − m(t)|² = ρ(t) (only ρ = r² rational; Peternell Thm 2.3 and the remark after it), or by the spheres of a curve c(t) of the Möbius model P^(n+1) ((2.12), (2.13)): the characteristic spheres parametrized by §5.1, certified on every sphere and characteristic hyperplane; values: the map; picture: the surface (n = 3) or the slice u₂ = … = 0 projected to (y₀ : y₁ : y₂ : y₃)",
+    params: &[
+        ParamSpec::optional("spine", ParamKind::Grid, "m(t): n rows (n ≥ 3) of power coefficients in t"),
+        ParamSpec::optional("radius_squared", ParamKind::Numbers, "with `spine`: power coefficients of ρ(t) = r(t)²"),
+        ParamSpec::optional(
+            "mobius_curve",
+            ParamKind::Grid,
+            "instead of `spine`: c(t) in the Möbius model, n + 2 rows of power coefficients (c₀, …, c_(n+1)); centre cᵢ/(c₀ − c_(n+1)), r² = (c₁² + … + c_(n+1)² − c₀²)/(c₀ − c_(n+1))²",
+        ),
+        ParamSpec::with_default("domain", ParamKind::Numbers, "[-1, 1, -1, 1]", "[t0, t1, u0, u1] (u = u₁ of the characteristic spheres)"),
+    ],
+    example: r#"[[object]]
+name = "canal_mobius_hyperboloid"
+op = "canal_hypersurface"
+# c(t) = (t²/4, t, 0, 0, t²/4 − 1) in P⁴: spheres centred at (t, 0, 0) with r² = 1 + t²/2
+mobius_curve = [[0, 0, "1/4"], [0, 1, 0], [0, 0, 0], [0, 0, 0], [-1, 0, "1/4"]]
+domain = [-1, 1, "-1/2", "1/2"]
+"#,
+    build: build_canal_hypersurface,
+};
+
+fn build_canal_hypersurface(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpError> {
+    let rows = |p: &'static str| -> Result<Option<Vec<Poly<Q>>>, OpError> {
+        Ok(args.opt_grid(p)?.map(|g| g.iter().map(|r| Poly::new(r.clone())).collect()))
+    };
+    let (m, rho, w, param) = match (rows("spine")?, rows("mobius_curve")?) {
+        (Some(m), None) => {
+            let rho = Poly::new(
+                args.opt_numbers("radius_squared")?
+                    .ok_or_else(|| OpError::param("radius_squared", "missing (needed with `spine`)"))?,
+            );
+            (m, rho, Poly::constant(Q::ONE), "spine")
+        }
+        (None, Some(c)) => {
+            let (m, r, w) = mobius_spheres(&c).map_err(|e| OpError::param("mobius_curve", e.to_string()))?;
+            (m, r, w, "mobius_curve")
+        }
+        _ => return Err(OpError::new("give either `spine` with `radius_squared`, or `mobius_curve`")),
+    };
+    let canal = CanalHypersurface::new(m, rho, w).map_err(|e| OpError::param(param, e.to_string()))?;
+    let d = domain4(args)?;
+    let (patches, weights) = canal
+        .picture((d[0].clone(), d[1].clone()), (d[2].clone(), d[3].clone()))
+        .map_err(|e| OpError::param("domain", e.to_string()))?;
+    let mut certs = canal.certify();
+    certs.push(weights);
+    let n = canal.dim();
+    let mut names = vec!["t".to_string()];
+    names.extend((1..n - 1).map(|i| format!("u{i}")));
+    let map = NdimMap::new(names, canal.point().to_vec()).map_err(|e| OpError::new(e.to_string()))?;
+    let (dt, du) = canal.degree();
+    let values = vec![
+        NamedQuantity::new(
+            "homogeneous_map",
+            "y(t, u): exact homogeneous coordinates (y₀, y₁, …, yₙ), each a list of terms [c, e_t, e_u1, …]",
+            map.quantity(),
+        ),
+        NamedQuantity::new("degree", "(degree in t, total degree in u)", Quantity::Vector(vec![Quantity::Integer(i64::from(dt)), Quantity::Integer(i64::from(du))])),
+        NamedQuantity::new("dimension", "n: the hypersurface lies in Rⁿ", Quantity::Integer(n as i64)),
+    ];
+    Ok(vec![args.object(Geometry::Patches(patches), certs).with_values(values)])
+}
+
+const TYPE_C_ENVELOPE: OpSpec = OpSpec {
+    name: "type_c_envelope",
+    summary: "a conic surface of Thomsen type C (X·C(t)·Xᵀ = 0 of type C at every t) as the envelope of the quadratic cones that touch it along its conics (Peternell §2.2): the rank-2 member of the pencil λC + μĊ gives the vertex, the cone over c(t) from it, the envelope by Thm 2.1; certified on every cone, on ċone and on every conic",
+    params: &[
+        ParamSpec::required(
+            "matrix",
+            ParamKind::Net,
+            "C(t): 4 rows of 4 entries, each the power coefficients of C_jk(t); symmetric, rank 3, type C at every t",
+        ),
+        ParamSpec::with_default("domain", ParamKind::Numbers, "[-1, 1, -1, 1]", "[t0, t1, u0, u1]"),
+    ],
+    example: r#"[[object]]
+name = "revolution_as_cone_envelope"
+op = "type_c_envelope"
+# circles x² + y² = 1 + t², z = t: planes (X₀ + t·X₃)² − (1 + t²)(X₁² + X₂²) = 0
+matrix = [
+  [[1, 0, 0], [0, 0, 0], [0, 0, 0], [0, 1, 0]],
+  [[0, 0, 0], [-1, 0, -1], [0, 0, 0], [0, 0, 0]],
+  [[0, 0, 0], [0, 0, 0], [-1, 0, -1], [0, 0, 0]],
+  [[0, 1, 0], [0, 0, 0], [0, 0, 0], [0, 0, 1]],
+]
+domain = [-1, 1, "-1/2", "1/2"]
+"#,
+    build: build_type_c_envelope,
+};
+
+fn build_type_c_envelope(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpError> {
+    let c = poly_matrix(args, "matrix")?;
+    let d = domain4(args)?;
+    let (patches, certs) = type_c_envelope_patches(
+        c,
+        (d[0].clone(), d[1].clone()),
+        (d[2].clone(), d[3].clone()),
+    )
+    .map_err(|e| {
+        let p = match e {
+            rcagd::conic_surface::ConicSurfaceError::Patch(_) => "domain",
+            _ => "matrix",
+        };
+        OpError::param(p, e.to_string())
+    })?;
+    Ok(vec![args.object(Geometry::Patches(patches), certs)])
 }

@@ -5,6 +5,7 @@ mod analysis_ops;
 mod canal_cyclographic_op;
 mod cli;
 mod common;
+mod conic_ops;
 mod docs;
 mod exchange_weights;
 mod fuzz;

@@ -382,3 +382,198 @@ pub fn canal_via_cones_patches(
     certs.push(weights);
     Ok((patches, certs))
 }
+
+/// A conic surface of Thomsen type C as the envelope of quadratic cones (Peternell §2.2,
+/// the remark on type-C conic surfaces; derivation in `docs/math/conic-surfaces.md`,
+/// "Type-C conic surfaces as envelopes of cones").
+///
+/// For a family of type C at every parameter, `φ(s) = det(C + sĊ) = s²(a₂ + a₃s + a₄s²)`
+/// has a double zero `s* = −a₃/(2a₄)` where the member `B = 2a₄C − a₃Ċ` of the pencil
+/// has rank 2: `B = v·pᵀ + p·vᵀ` (a pair of bundles of planes), `p = Ċγ` the pole of
+/// `g = γ ∩ γ̇` (`p` lies in `γ`) and `v` the vertex of the cone `D(t)` over `c(t)` that
+/// touches the surface along `c(t)`. With `pᵢ ≢ 0`, `v = 2pᵢ·B·eᵢ − Bᵢᵢ·p` (then
+/// `2pᵢ²·B = v·pᵀ + p·vᵀ`, certified). The cone is `D = Tᵀ·A·T`, `A = adj(C + γγᵀ)` (the
+/// point form of `c`), `T = (γ·v)·I − v·γᵀ` (the projection from `v` onto `γ`); its
+/// envelope ([`ConeFamily::envelope`]) is the conic surface: every point lies on its conic.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TypeCEnvelope {
+    family: ConicFamily,
+    vertex: [P; 4],
+    cones: Mat4,
+    scaled_b: (P, Mat4),
+    envelope: ConeEnvelope,
+}
+
+impl TypeCEnvelope {
+    /// The cones of a type-C conic family (struct docs).
+    ///
+    /// # Errors
+    /// [`ConicSurfaceError::Degenerate`] if the family is not of type C at every parameter
+    /// (the named condition fails), or the vertex lies in the carrier plane; as
+    /// [`ConeFamily::envelope`].
+    pub fn new(family: &ConicFamily) -> Result<Self, ConicSurfaceError> {
+        let c = family.matrix();
+        let dc: Mat4 = core::array::from_fn(|i| core::array::from_fn(|j| c[i][j].derivative()));
+        let (a2, a3, a4) = family.pencil_quadratic();
+        if a4.is_zero() || !(&(&a3 * &a3) - &(&a2 * &a4).scale(&Q::from(4))).is_zero() {
+            return Err(ConicSurfaceError::Degenerate(
+                "not of Thomsen type C at every parameter: det(C + sĊ)/s² has no double zero identically (a₃² − 4a₂a₄ ≢ 0 or a₄ ≡ 0)".into(),
+            ));
+        }
+        let b: Mat4 = core::array::from_fn(|i| {
+            core::array::from_fn(|j| &(&c[i][j].scale(&Q::from(2)) * &a4) - &(&dc[i][j] * &a3))
+        });
+        if super::adjugate(&b).iter().flatten().any(|x| !x.is_zero()) {
+            return Err(ConicSurfaceError::Degenerate(
+                "type B, not C: the double member 2a₄C − a₃Ċ of the pencil has rank 3".into(),
+            ));
+        }
+        let p = family.pole();
+        let Some(i) = (0..4).find(|&i| !p[i].is_zero()) else {
+            return Err(ConicSurfaceError::Degenerate(
+                "the pole p = Ċγ vanishes".into(),
+            ));
+        };
+        let v: [P; 4] =
+            core::array::from_fn(|k| &(&b[k][i] * &p[i]).scale(&Q::from(2)) - &(&b[i][i] * &p[k]));
+        let scale = (&p[i] * &p[i]).scale(&Q::from(2));
+        let g = family.carrier_plane();
+        let gv = (0..4).fold(Poly::zero(), |acc, k| &acc + &(&g[k] * &v[k]));
+        if gv.is_zero() {
+            return Err(ConicSurfaceError::Degenerate(
+                "the vertex of the double member lies in the carrier plane (no cone over c(t))"
+                    .into(),
+            ));
+        }
+        let cg: Mat4 =
+            core::array::from_fn(|r| core::array::from_fn(|s| &c[r][s] + &(&g[r] * &g[s])));
+        let a = super::adjugate(&cg);
+        // T = (γ·v)I − vγᵀ; D = Tᵀ A T
+        let t: Mat4 = core::array::from_fn(|r| {
+            core::array::from_fn(|s| {
+                let d = if r == s { gv.clone() } else { Poly::zero() };
+                &d - &(&v[r] * &g[s])
+            })
+        });
+        let mut d: Mat4 = core::array::from_fn(|r| {
+            core::array::from_fn(|s| {
+                let mut acc = Poly::zero();
+                for x in 0..4 {
+                    for y in 0..4 {
+                        if !a[x][y].is_zero() {
+                            acc = &acc + &(&(&t[x][r] * &a[x][y]) * &t[y][s]);
+                        }
+                    }
+                }
+                acc
+            })
+        });
+        let content = d
+            .iter()
+            .flatten()
+            .filter(|x| !x.is_zero())
+            .fold(Poly::zero(), |acc, x| {
+                if acc.is_zero() {
+                    x.clone()
+                } else {
+                    acc.gcd(x)
+                }
+            });
+        if content.degree().is_some_and(|k| k > 0) {
+            let m = content.monic();
+            d = d.map(|r| r.map(|x| x.div_exact(&m).unwrap_or(x)));
+        }
+        let envelope = ConeFamily::new(d.clone())?.envelope()?;
+        Ok(TypeCEnvelope {
+            family: family.clone(),
+            vertex: v,
+            cones: d,
+            scaled_b: (scale, b),
+            envelope,
+        })
+    }
+
+    /// The vertex curve `v(t)` of the cones.
+    pub fn vertex(&self) -> &[P; 4] {
+        &self.vertex
+    }
+
+    /// The cones `D(t)` (point quadrics, rank 3, kernel `v`).
+    pub fn cones(&self) -> &Mat4 {
+        &self.cones
+    }
+
+    /// The envelope of the cones.
+    pub fn envelope(&self) -> &ConeEnvelope {
+        &self.envelope
+    }
+}
+
+impl Certified for TypeCEnvelope {
+    /// `2pᵢ²·B ≡ v·pᵀ + p·vᵀ` (the double member is the pair of bundles `v`, `p`: type C),
+    /// `D·v ≡ 0` (`v` is the vertex), the envelope's certificates (`zDzᵀ ≡ zḊzᵀ ≡ 0`), and
+    /// every point on its conic: `γ·z ≡ 0`, `zᵀ·adj(C + γγᵀ)·z ≡ 0`.
+    fn certify(&self) -> Vec<Certificate> {
+        let p = self.family.pole();
+        let v = &self.vertex;
+        let (scale, b) = &self.scaled_b;
+        let pair = (0..4).all(|i| {
+            (0..4).all(|j| (&(&(&v[i] * &p[j]) + &(&p[i] * &v[j])) - &(scale * &b[i][j])).is_zero())
+        });
+        let dv = (0..4).all(|i| {
+            (0..4)
+                .fold(Poly::zero(), |acc, j| &acc + &(&self.cones[i][j] * &v[j]))
+                .is_zero()
+        });
+        let z = &self.envelope.point;
+        let g = self.family.carrier_plane();
+        let on_plane = (0..4).fold(MPoly::zero(2), |acc, i| {
+            &acc + &(&MPoly::from_poly(&g[i], 2, 0) * &z[i])
+        });
+        let c = self.family.matrix();
+        let cg: Mat4 =
+            core::array::from_fn(|r| core::array::from_fn(|s| &c[r][s] + &(&g[r] * &g[s])));
+        let on_conic = super::form4(&super::adjugate(&cg), z, z);
+        let mut out = vec![
+            Certificate::decide(
+                "2pᵢ²·(2a₄C − a₃Ċ) ≡ v·pᵀ + p·vᵀ (the double member of the pencil is the pair of bundles v, p: Thomsen type C)",
+                pair,
+                true,
+                || "non-zero".into(),
+            ),
+            Certificate::decide(
+                "D(t)·v(t) ≡ 0 (v is the vertex of the cone over c(t))",
+                dv,
+                true,
+                || "non-zero".into(),
+            ),
+        ];
+        out.extend(self.envelope.certify());
+        out.push(Certificate::decide(
+            "γ(t)·z(t, u) ≡ 0 and zᵀ·adj(C + γγᵀ)·z ≡ 0 (the envelope of the cones is the conic surface)",
+            on_plane.is_zero() && on_conic.is_zero(),
+            true,
+            || format!("{} + {} terms", on_plane.num_terms(), on_conic.num_terms()),
+        ));
+        out
+    }
+}
+
+/// A type-C conic surface as the envelope of its cones ([`TypeCEnvelope`]) as
+/// positive-weight patches over `[t₀, t₁] × [u₀, u₁]`, with every certificate.
+///
+/// # Errors
+/// As [`ConicFamily::new`], [`TypeCEnvelope::new`] and [`ConeEnvelope::patch`].
+pub fn type_c_envelope_patches(
+    c: Mat4,
+    t: (Q, Q),
+    u: (Q, Q),
+) -> Result<(Vec<BezierPatch<Q>>, Vec<Certificate>), ConicSurfaceError> {
+    let fam = ConicFamily::new(c)?;
+    let env = TypeCEnvelope::new(&fam)?;
+    let (patches, weights) = super::positive_pieces(env.envelope().patch(t, u)?)?;
+    let mut certs = fam.identities();
+    certs.extend(env.certify());
+    certs.push(weights);
+    Ok((patches, certs))
+}

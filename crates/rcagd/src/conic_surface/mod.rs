@@ -30,6 +30,8 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod cones;
+pub mod mobius;
+pub mod quadric_family;
 pub mod stereographic;
 
 use crate::pn::poly::patch_of;
@@ -381,6 +383,92 @@ impl ConicFamily {
         })
     }
 
+    /// Lemma 1.1 as an exact identity over `Q[t]` (derivation: `docs/math/conic-surfaces.md`,
+    /// "Lemma 1.1"): with `φ(s) = det(C + sĊ) = a₂s² + a₃s³ + a₄s⁴` (`a₀ ≡ a₁ ≡ 0` because
+    /// `γᵀĊγ ≡ 0`), the tangent line `C ∨ Ċ` is an asymptotic line of `M: det = 0` where
+    /// `a₂(t) = 0`, and the conic is parabolic where the pole `p = Ċγ` lies on it,
+    /// `π(t) = pᵀ·adj(C + γγᵀ)·p = 0`. The two are the same polynomial up to a square:
+    /// `π ≡ −(γᵀγ)²·a₂` (in a frame with `γ = e₃`, `C + sĊ` has the block form
+    /// `[[D + sE, s·w], [s·wᵀ, 0]]`, `w` = the pole, so `φ = −s²·wᵀadj(D + sE)w` and
+    /// `a₂ = −wᵀadj(D)w`). [`Lemma11`] carries the three polynomials and certifies the
+    /// identity.
+    pub fn lemma_1_1(&self) -> Lemma11 {
+        let c = &self.c;
+        let dc = deriv(c);
+        // a₂ = [s²] det(C + sĊ), interpolated at s = 0, …, 4
+        let xs: Vec<Q> = (0..5).map(Q::from).collect();
+        let mut a2 = pz();
+        for k in 0..5usize {
+            let mut e = vec![Q::ZERO; 5];
+            e[k] = Q::ONE;
+            let w = interpolate(&xs, &e).coeff(2);
+            if w.is_zero() {
+                continue;
+            }
+            let sk = Q::from(k as i64);
+            let m: Mat4 =
+                core::array::from_fn(|i| core::array::from_fn(|j| &c[i][j] + &dc[i][j].scale(&sk)));
+            let adj = adjugate(&m);
+            let det = (0..4).fold(pz(), |acc, j| &acc + &(&m[0][j] * &adj[j][0]));
+            a2 = &a2 + &det.scale(&w);
+        }
+        let g = &self.gamma;
+        let cg: Mat4 =
+            core::array::from_fn(|i| core::array::from_fn(|j| &c[i][j] + &(&g[i] * &g[j])));
+        let p = self.pole();
+        let pi = dot4(&p, &mat_vec(&adjugate(&cg), &p));
+        let gg = dot4(g, g);
+        Lemma11 {
+            asymptotic: a2,
+            parabolic: pi,
+            scale: &gg * &gg,
+        }
+    }
+
+    /// `(a₂, a₃, a₄)` with `det(C + sĊ) = a₂s² + a₃s³ + a₄s⁴` (interpolated at
+    /// `s = 0, …, 4`; `a₀ ≡ a₁ ≡ 0` by (1.6)).
+    pub fn pencil_quadratic(&self) -> (P, P, P) {
+        let c = &self.c;
+        let dc = deriv(c);
+        let xs: Vec<Q> = (0..5).map(Q::from).collect();
+        let dets: Vec<P> = (0..5i64)
+            .map(|k| {
+                let sk = Q::from(k);
+                let m: Mat4 = core::array::from_fn(|i| {
+                    core::array::from_fn(|j| &c[i][j] + &dc[i][j].scale(&sk))
+                });
+                let adj = adjugate(&m);
+                (0..4).fold(pz(), |acc, j| &acc + &(&m[0][j] * &adj[j][0]))
+            })
+            .collect();
+        let coeff = |d: usize| {
+            let mut a = pz();
+            for (k, det) in dets.iter().enumerate() {
+                let mut e = vec![Q::ZERO; 5];
+                e[k] = Q::ONE;
+                let w = interpolate(&xs, &e).coeff(d);
+                if !w.is_zero() {
+                    a = &a + &det.scale(&w);
+                }
+            }
+            a
+        };
+        (coeff(2), coeff(3), coeff(4))
+    }
+
+    /// Lemma 1.1 at a rational parameter, decided by two independent tests: parabolic by
+    /// the pencil of planes through the pole ([`Self::conic_type_at`]), asymptotic by the
+    /// order ≥ 3 of the zero of `det(C + sĊ)` at `s = 0` ([`Self::thomsen_at`]: cases D,
+    /// E, F). Returns `(parabolic, asymptotic)`; the lemma says they agree.
+    ///
+    /// # Errors
+    /// As [`Self::conic_type_at`] and [`Self::thomsen_at`].
+    pub fn lemma_1_1_at(&self, t0: &Q) -> Result<(bool, bool), ConicSurfaceError> {
+        let parabolic = self.conic_type_at(t0)? == ConicType::Parabolic;
+        let asymptotic = matches!(self.thomsen_at(t0)?, Thomsen::D | Thomsen::E | Thomsen::F);
+        Ok((parabolic, asymptotic))
+    }
+
     /// The index `k` of the projection centre `e_k` (the first with `γ_k ≢ 0`) and the line
     /// conic `D(t)` (`C` without row and column `k`; module docs).
     pub fn projected(&self) -> (usize, [[P; 3]; 3]) {
@@ -573,6 +661,32 @@ impl ConicFamily {
             point,
             planes,
         })
+    }
+}
+
+/// Lemma 1.1 of Peternell (§1.1) as polynomials in `t` ([`ConicFamily::lemma_1_1`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Lemma11 {
+    /// `a₂(t) = [s²] det(C + sĊ)`: the tangent line of `C(t)` is an asymptotic line of
+    /// `det = 0` exactly where it vanishes.
+    pub asymptotic: P,
+    /// `π(t) = pᵀ·adj(C + γγᵀ)·p`: the conic is parabolic (`p ∈ c`) exactly where it
+    /// vanishes.
+    pub parabolic: P,
+    /// `(γᵀγ)²`, positive for real `t`.
+    pub scale: P,
+}
+
+impl Certified for Lemma11 {
+    /// `π ≡ −(γᵀγ)²·a₂`: parabolic ⇔ asymptotic at every real `t` (Lemma 1.1).
+    fn certify(&self) -> Vec<Certificate> {
+        let r = &self.parabolic + &(&self.scale * &self.asymptotic);
+        vec![Certificate::decide(
+            "pᵀ·adj(C + γγᵀ)·p ≡ −(γᵀγ)²·[s²]det(C + sĊ) (parabolic ⇔ the tangent line is asymptotic, Peternell Lemma 1.1)",
+            r.is_zero(),
+            true,
+            || format!("residual of degree {:?}", r.degree()),
+        )]
     }
 }
 

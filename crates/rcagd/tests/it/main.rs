@@ -2,6 +2,7 @@
 //! see docs/ARCHITECTURE.md, "Tests").
 
 mod canal_cyclographic;
+mod canal_hypersurface;
 mod canal_props;
 mod cyclide;
 mod hermite_enclosure;
@@ -16,6 +17,7 @@ mod ph_props;
 mod pn_laguerre;
 mod pn_props;
 mod primitives;
+mod quadric_family;
 mod quadric_props;
 mod quadric_query;
 mod seed000_examples;
@@ -25,3 +27,4 @@ mod seed003_sphere_families;
 mod seed004_conic_examples;
 mod seed004_laguerre_examples;
 mod seed004_pn_examples;
+mod thomsen;

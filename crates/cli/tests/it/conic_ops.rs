@@ -1,0 +1,100 @@
+//! The conic-family ops: `conic_point` (the engine's decision as values, with the proof
+//! re-checked as a certificate) and `quadric_family` (Peternell §5.1): values compared
+//! with hand derivations, and bad input refused with the parameter named.
+
+use crate::common::{build_json_in, build_refused, read_json, temp_dir};
+use serde_json::Value;
+
+fn build_json(tag: &str, recipe: &str, name: &str) -> Value {
+    let dir = temp_dir(tag);
+    let v = read_json(&build_json_in(&dir, recipe), name);
+    assert_eq!(v["all_certificates_hold"], true, "{v}");
+    v
+}
+
+fn exact(obj: &Value, name: &str) -> String {
+    let v = obj["values"]
+        .as_array()
+        .expect("values")
+        .iter()
+        .find(|v| v["name"] == name)
+        .unwrap_or_else(|| panic!("no value {name}"));
+    match &v["exact"] {
+        Value::String(s) => s.clone(),
+        other => other.to_string(),
+    }
+}
+
+/// X² + Y² − (t² + 9)Z² = 0: (t, ±3, 1) by hand; the engine returns a primitive point.
+/// X² + Y² − (t² + 2)Z² = 0: −1 is not a square modulo t² + 2 (Q(√−2) has no √−1).
+/// X² − 3Y² + t²Z² = 0: the leading conic X² − 3Y² + Z² has no point over Q₃, and
+/// (√3·t, t, 0) is a point over Q(√3).
+#[test]
+fn conic_point_decisions() {
+    let v = build_json(
+        "cp_9",
+        "[[object]]\nname = \"a\"\nop = \"conic_point\"\nL = [1]\nM = [1]\nN = [-9, 0, -1]\n",
+        "a",
+    );
+    assert_eq!(exact(&v, "decision"), "rational");
+    assert!(["(t, -3, 1)", "(t, 3, 1)"].contains(&exact(&v, "point").as_str()));
+    let v = build_json(
+        "cp_2",
+        "[[object]]\nname = \"b\"\nop = \"conic_point\"\nL = [1]\nM = [1]\nN = [-2, 0, -1]\n",
+        "b",
+    );
+    assert_eq!(exact(&v, "decision"), "no_point");
+    let o = exact(&v, "obstruction");
+    assert!(o.contains("t^2 + 2") && o.contains("not a square"), "{o}");
+    let v = build_json(
+        "cp_3",
+        "[[object]]\nname = \"c\"\nop = \"conic_point\"\nL = [1]\nM = [-3]\nN = [0, 0, 1]\n",
+        "c",
+    );
+    assert_eq!(exact(&v, "decision"), "quadratic_field");
+    assert_eq!(exact(&v, "radicand"), "3");
+    assert!(exact(&v, "obstruction").contains("Q_3"));
+}
+
+/// x₁² + (1 + t²)x₂² + 2x₃² = (1 + t²)x₀²: the section (x₀, x₁, x₂) has the point
+/// (1, 0, ±1); the map has degree 2 in t (from Q(t)) and 2 in (u₁, u₂).
+#[test]
+fn quadric_family_values() {
+    let recipe = "[[object]]\nname = \"e\"\nop = \"quadric_family\"\nmatrix = [[[-1, 0, -1], [0, 0, 0], [0, 0, 0], [0, 0, 0]], [[0, 0, 0], [1, 0, 0], [0, 0, 0], [0, 0, 0]], [[0, 0, 0], [0, 0, 0], [1, 0, 1], [0, 0, 0]], [[0, 0, 0], [0, 0, 0], [0, 0, 0], [2, 0, 0]]]\nt = \"1/2\"\n";
+    let v = build_json("qf_e", recipe, "e");
+    let p = exact(&v, "point");
+    assert!(p == "(1, 0, -1, 0)" || p == "(1, 0, 1, 0)", "{p}");
+    assert_eq!(exact(&v, "degree"), "(2, 2)");
+    // a definite family: no real point at t = 0
+    let e = build_refused(
+        &temp_dir("qf_def"),
+        "[[object]]\nname = \"d\"\nop = \"quadric_family\"\nmatrix = [[[1], [0], [0]], [[0], [1], [0]], [[0], [0], [1]]]\n",
+    );
+    assert!(e.contains("matrix") && e.contains("definite"), "{e}");
+    let e = build_refused(
+        &temp_dir("qf_ns"),
+        "[[object]]\nname = \"d\"\nop = \"quadric_family\"\nmatrix = [[[1], [1], [0]], [[0], [1], [0]], [[0], [0], [-1]]]\n",
+    );
+    assert!(e.contains("not symmetric"), "{e}");
+}
+
+/// The Möbius curve (t²/4, t, 0, 0, t²/4 − 1) of P⁴: spheres (t, 0, 0), r² = 1 + t²/2; the
+/// canal surface has degree 2 in u. A curve with c₀ ≡ c₄ is refused with the parameter named.
+#[test]
+fn canal_hypersurface_from_the_mobius_model() {
+    let v = build_json(
+        "ch_m",
+        "[[object]]\nname = \"h\"\nop = \"canal_hypersurface\"\nmobius_curve = [[0, 0, \"1/4\"], [0, 1, 0], [0, 0, 0], [0, 0, 0], [-1, 0, \"1/4\"]]\ndomain = [-1, 1, \"-1/2\", \"1/2\"]\n",
+        "h",
+    );
+    assert_eq!(exact(&v, "dimension"), "3");
+    assert!(exact(&v, "degree").ends_with(", 2)"));
+    let e = build_refused(
+        &temp_dir("ch_bad"),
+        "[[object]]\nname = \"h\"\nop = \"canal_hypersurface\"\nmobius_curve = [[1, 1], [0, 1], [0, 0], [0, 0], [1, 1]]\n",
+    );
+    assert!(
+        e.contains("mobius_curve") && e.contains("hyperplane"),
+        "{e}"
+    );
+}
