@@ -38,12 +38,14 @@
 
 pub mod complex;
 pub mod congruence;
+pub mod generation;
 pub mod net;
 pub mod plucker;
 pub mod regulus;
 
 pub use complex::LinearComplex;
 pub use congruence::{net_line, CongruenceKind, FocalLines, LinearCongruence};
+pub use generation::{regulus_meeting, GeneratedNet, Generation, GenerationError, LineFamily};
 pub use net::{AxisPosition, ComplexPointRow, LineNet, NetError, NetKind, PointRow};
 pub use plucker::{reciprocal_product, Line, LineOrigin};
 pub use regulus::{common_transversals, CommonTransversals, Regulus};
