@@ -40,6 +40,7 @@ pub mod complex;
 pub mod congruence;
 pub mod generation;
 pub mod net;
+pub mod order_one;
 pub mod plucker;
 pub mod regulus;
 
@@ -47,6 +48,7 @@ pub use complex::LinearComplex;
 pub use congruence::{net_line, CongruenceKind, FocalLines, LinearCongruence};
 pub use generation::{regulus_meeting, GeneratedNet, Generation, GenerationError, LineFamily};
 pub use net::{AxisPosition, ComplexPointRow, LineNet, NetError, NetKind, PointRow};
+pub use order_one::{focal_coefficients, CubicChordCongruence, OneNCongruence, OrderOneError};
 pub use plucker::{reciprocal_product, Line, LineOrigin};
 pub use regulus::{common_transversals, CommonTransversals, Regulus};
 
