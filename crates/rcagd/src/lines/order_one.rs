@@ -365,18 +365,17 @@ impl<F: Scalar> OneNCongruence<F> {
             (0..4).fold(Poly::zero(), |acc, j| &acc + &k[j].scale(&e[j]))
         };
         let (f1, f2) = (sect(&e1), sect(&e2));
-        if n == 0 || (f1.is_zero() && f2.is_zero()) {
+        if n == 0 {
             return Err(OrderOneError::CurveInPlane);
         }
         // exact gcd over Q (f64 inputs are exact binary rationals)
         let (q1, q2) = (to_q(&f1), to_q(&f2));
-        let gq = if q1.is_zero() {
-            q2.monic()
-        } else if q2.is_zero() {
-            q1.monic()
-        } else {
-            q1.gcd(&q2)
-        };
+        // dependent sections: some plane through g contains the whole curve
+        let cross = &q1.scale(&q2.leading()) - &q2.scale(&q1.leading());
+        if q1.is_zero() || q2.is_zero() || cross.is_zero() {
+            return Err(OrderOneError::CurveInPlane);
+        }
+        let gq = q1.gcd(&q2);
         let meets = gq.degree().unwrap_or(0);
         // the residual factor must be linear for every plane through g
         let lin = |f: &Poly<Rational>| f.is_zero() || f.degree().unwrap_or(0) <= meets + 1;

@@ -6,6 +6,7 @@ mod canal_props;
 mod cyclide;
 mod laguerre_props;
 mod laguerre_query;
+mod line_generation;
 mod lines_props;
 mod ndim;
 mod ph_planar;
