@@ -38,6 +38,7 @@
 
 pub mod complex;
 pub mod congruence;
+pub mod drawing;
 pub mod generation;
 pub mod net;
 pub mod order_one;
@@ -46,6 +47,7 @@ pub mod regulus;
 
 pub use complex::LinearComplex;
 pub use congruence::{net_line, CongruenceKind, FocalLines, LinearCongruence};
+pub use drawing::{congruence_strips, CongruenceDrawing, CongruenceSpec, DrawError};
 pub use generation::{regulus_meeting, GeneratedNet, Generation, GenerationError, LineFamily};
 pub use net::{AxisPosition, ComplexPointRow, LineNet, NetError, NetKind, PointRow};
 pub use order_one::{focal_coefficients, CubicChordCongruence, OneNCongruence, OrderOneError};
