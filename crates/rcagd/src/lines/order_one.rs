@@ -547,7 +547,7 @@ mod tests {
     }
 
     #[test]
-    fn seed_one_four_congruence() {
+    fn gruber_one_four_congruence() {
         // Gruber §1.1.8: β(t) = (3t + t⁴, t²(4 − t²), t(4 − t²)) and the x-axis
         let k = [
             Poly::from_ints(&[1]),
