@@ -18,5 +18,5 @@ pub mod sphere_family;
 
 pub use recognition::{Recognition, RecognitionError, SphereFamily};
 pub use sphere_family::{
-    DirectEnvelope, SphereFamilyEnvelope, SphereFamilyError, Subcase, Support,
+    CyclographicEnvelope, DirectEnvelope, SphereFamilyEnvelope, SphereFamilyError, Subcase, Support,
 };

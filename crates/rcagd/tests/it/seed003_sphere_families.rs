@@ -675,6 +675,44 @@ fn direct_cross_check(env: &SphereFamilyEnvelope<Rational>, name: &str) {
             .direct_envelope(&p, &qq)
             .unwrap_or_else(|e| panic!("{name}: {e}"));
         let xe: [QuadExt; 3] = core::array::from_fn(|k| QuadExt::rational(x[k].clone()));
+        // the cyclographic construction of §3.1.2 (isotropic lines through Φ in the normal
+        // plane) gives the same two points as the direct intersection of §3.1.1
+        let cyc = env
+            .cyclographic_envelope(&p, &qq)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let [c0, c1] = &cyc.points;
+        assert!(
+            (*c0 == direct.plus && *c1 == direct.minus)
+                || (*c0 == direct.minus && *c1 == direct.plus),
+            "{name}: cyclographic and direct envelope points differ at ({s}, {t})"
+        );
+        for h in &cyc.isotropic {
+            let w = h[0].clone() * h[0].clone()
+                + h[1].clone() * h[1].clone()
+                + h[2].clone() * h[2].clone()
+                - h[3].clone() * h[3].clone();
+            assert!(w == QuadExt::rational(q(0)), "{name}: H is not on Ω");
+        }
+        assert!(
+            c0 == &xe || c1 == &xe,
+            "{name}: Ψ is not a cyclographic point"
+        );
+        let cert = env.cyclographic_certificate(&s, &t);
+        assert!(cert.holds, "{name}: {cert:?}");
+        if name == "3.3.1" {
+            // f64 agrees
+            let ef = env.map_scalar(|x| Scalar::to_f64(x)).expect("f64");
+            let cf = ef
+                .cyclographic_envelope(&Scalar::to_f64(&p), &Scalar::to_f64(&qq))
+                .expect("f64 cyclographic");
+            let xf: [f64; 3] = core::array::from_fn(|k| Scalar::to_f64(&x[k]));
+            let near =
+                |a: &[f64; 3]| (0..3).all(|k| (a[k] - xf[k]).abs() < 1e-9 * (1.0 + xf[k].abs()));
+            assert!(
+                near(&cf.points[0]) || near(&cf.points[1]),
+                "{name}: f64 cyclographic point"
+            );
+        }
         let (on_plus, on_minus) = (direct.plus == xe, direct.minus == xe);
         assert!(
             on_plus || on_minus,
@@ -701,6 +739,8 @@ fn direct_cross_check(env: &SphereFamilyEnvelope<Rational>, name: &str) {
     assert!(checked >= 2, "{name}: too few regular sample points");
 }
 
+/// The direct envelope (§3.1.1) and the cyclographic construction (§3.1.2) agree with Ψ on
+/// both sheets.
 #[test]
 fn direct_envelope_agrees_on_both_sheets() {
     for c in cases() {
