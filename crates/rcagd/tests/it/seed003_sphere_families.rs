@@ -701,7 +701,7 @@ fn direct_cross_check(env: &SphereFamilyEnvelope<Rational>, name: &str) {
         assert!(cert.holds, "{name}: {cert:?}");
         if name == "3.3.1" {
             // f64 agrees
-            let ef = env.map_scalar(|x| Scalar::to_f64(x)).expect("f64");
+            let ef = env.map_scalar(Scalar::to_f64).expect("f64");
             let cf = ef
                 .cyclographic_envelope(&Scalar::to_f64(&p), &Scalar::to_f64(&qq))
                 .expect("f64 cyclographic");
