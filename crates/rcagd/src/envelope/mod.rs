@@ -13,9 +13,11 @@
 //!
 //! Derivations and corrections of the printed formulas: `docs/math/sphere-families.md`.
 
+pub mod quadratic_class;
 pub mod recognition;
 pub mod sphere_family;
 
+pub use quadratic_class::peters_reif_class;
 pub use recognition::{Recognition, RecognitionError, SphereFamily};
 pub use sphere_family::{
     CyclographicEnvelope, DirectEnvelope, SphereFamilyEnvelope, SphereFamilyError, Subcase, Support,
