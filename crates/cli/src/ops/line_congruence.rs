@@ -5,7 +5,7 @@
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
-use rcagd::lines::{congruence_strips, CongruenceSpec, NetKind};
+use rcagd::lines::{congruence_strips, CongruenceSpec, NetKind, PointRow};
 use rcagd_algebra::Rational;
 
 /// The ops of this topic.
@@ -13,17 +13,17 @@ pub const OPS: &[OpSpec] = &[LINE_CONGRUENCE_STRIPS];
 
 const LINE_CONGRUENCE_STRIPS: OpSpec = OpSpec {
     name: "line_congruence_strips",
-    summary: "a line net or congruence of order one (net by its axes, chords of a twisted cubic, joins of a plane collineation, (1, n)-congruence of a line and a curve) drawn as ruled strips: the lines p(u, v) ∨ q(u, v) along v = v_k + twist·u, cut to the segments (1 − λ)p + λq; the congruence is certified (Klein quadric, complexes, fibration, order, class, focal sheets)",
+    summary: "a line net or congruence of order one (net by its axes, pencil of planes with a projectivity, chords of a twisted cubic, joins of a plane collineation, (1, n)-congruence of a line and a curve) drawn as ruled strips: the lines p(u, v) ∨ q(u, v) along v = v_k + twist·u, cut to the segments (1 − λ)p + λq; the congruence is certified (Klein quadric, complexes, fibration, order, class, focal sheets)",
     params: &[
         ParamSpec::required(
             "congruence",
-            ParamKind::Choice(&["hyperbolic", "elliptic", "parabolic", "cubic_chords", "collineation", "one_n"]),
+            ParamKind::Choice(&["hyperbolic", "elliptic", "parabolic", "pencil", "cubic_chords", "collineation", "one_n"]),
             "the congruence type",
         ),
         ParamSpec::required(
             "points",
             ParamKind::Points,
-            "homogeneous points [x0, x1, x2, x3] (weight first): nets c0, c1, d0, d1 (axes c0 + u c1, d0 + v d1; parabolic: lines through c(u) to d0 + u d1 + v c1) or Re c0, Im c0, Re c1, Im c1 (elliptic); cubic_chords a0, a1, a2, a3 of k(t) = a0 + t a1 + t² a2 + t³ a3 (chord k(u) ∨ k(v)); collineation a0, a1, a2, b0, b1, b2 (κ(x0 a0 + x1 a1 + x2 a2) = x0 b0 + x1 b1 + x2 b2, lines x(u, v) ∨ κ(x(u, v)) with x = a0 + u a1 + v a2); one_n g0, g1 of the focal line (lines k(u) ∨ (g0 + v g1))",
+            "homogeneous points [x0, x1, x2, x3] (weight first): nets c0, c1, d0, d1 (axes c0 + u c1, d0 + v d1; parabolic: lines through c(u) to d0 + u d1 + v c1) or Re c0, Im c0, Re c1, Im c1 (elliptic); pencil c0, c1, e0, e1 (the point c0 + u c1 of the axis is mapped to the plane e0 + u e1 through it; lines through c(u) in that plane: a parabolic net); cubic_chords a0, a1, a2, a3 of k(t) = a0 + t a1 + t² a2 + t³ a3 (chord k(u) ∨ k(v)); collineation a0, a1, a2, b0, b1, b2 (κ(x0 a0 + x1 a1 + x2 a2) = x0 b0 + x1 b1 + x2 b2, lines x(u, v) ∨ κ(x(u, v)) with x = a0 + u a1 + v a2); one_n g0, g1 of the focal line (lines k(u) ∨ (g0 + v g1))",
         ),
         ParamSpec::optional(
             "curve",
@@ -79,6 +79,12 @@ fn build_strips(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         "hyperbolic" => CongruenceSpec::Net(NetKind::Hyperbolic, pts),
         "elliptic" => CongruenceSpec::Net(NetKind::Elliptic, pts),
         "parabolic" => CongruenceSpec::Net(NetKind::Parabolic, pts),
+        "pencil" => {
+            need(4)?;
+            let c = PointRow::new(pts[0].clone(), pts[1].clone())
+                .map_err(|e| OpError::param("points", e.to_string()))?;
+            CongruenceSpec::PencilProjectivity(c, pts[2].clone(), pts[3].clone())
+        }
         "cubic_chords" => {
             need(4)?;
             CongruenceSpec::CubicChords([pts[0].clone(), pts[1].clone(), pts[2].clone(), pts[3].clone()])

@@ -67,6 +67,9 @@ pub enum CongruenceSpec<F> {
     /// The joins `x ∨ κ(x)` of a collineation `a₀, a₁, a₂ ↦ b₀, b₁, b₂`
     /// ([`GeneratedNet::from_plane_collineation`]).
     Collineation([[F; 4]; 3], [[F; 4]; 3]),
+    /// The parabolic net of the pencil projectivity `c₀ + u c₁ ↦ ε₀ + u ε₁`
+    /// ([`GeneratedNet::from_pencil_projectivity`]): the point row `c` and the two planes.
+    PencilProjectivity(PointRow<F>, [F; 4], [F; 4]),
     /// The (1, n)-congruence of the line `g₀ ∨ g₁` and the curve `Σ tᵐ kₘ`: lines
     /// `k(u) ∨ (g₀ + v g₁)`.
     OneN([F; 4], [F; 4], Vec<[F; 4]>),
@@ -161,6 +164,14 @@ pub fn congruence_strips<F: Scalar>(
                 })
             };
             (pt(a), pt(b), g.certify())
+        }
+        CongruenceSpec::PencilProjectivity(c, e0, e1) => {
+            let g = GeneratedNet::from_pencil_projectivity(c.clone(), e0, e1)?;
+            let net = g
+                .line_net()
+                .ok_or(DrawError::Net(NetError::DegenerateProjectivity))?;
+            let (p, q) = net.line_points();
+            (p, q, g.certify())
         }
         CongruenceSpec::OneN(g0, g1, curve) => {
             let k: [Poly<F>; 4] =

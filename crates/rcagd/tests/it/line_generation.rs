@@ -194,3 +194,28 @@ fn one_n_congruence_errors() {
         Err(OrderOneError::NotATwistedCubic)
     ));
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    /// Cyclographic images of random 2-planes of R^{3,1} (Gruber §1.2.2): the planes touch
+    /// every cycle of the 2-plane exactly (over Q(√d)); f64 gives the same type and the
+    /// same number of planes.
+    #[test]
+    fn plane_images(a in proptest::array::uniform4(small()), g in proptest::array::uniform4(small()),
+                    h in proptest::array::uniform4(small())) {
+        use rcagd::cyclographic::{plane_image, CyclographicError};
+        let (a, g, h) = (a.map(q), g.map(q), h.map(q));
+        match plane_image(&a, &g, &h) {
+            Ok(img) => {
+                prop_assert!(img.all_hold(), "{:?}", img.certify());
+                let f = plane_image(&to_f64(&a), &to_f64(&g), &to_f64(&h)).expect("f64");
+                prop_assert!(f.all_hold(), "{:?}", f.certify());
+                prop_assert_eq!(f.kind, img.kind);
+                prop_assert_eq!(f.planes.len(), img.planes.len());
+            }
+            Err(CyclographicError::ZeroVector(_)) => {}
+            Err(e) => prop_assert!(false, "unexpected {e}"),
+        }
+    }
+}
