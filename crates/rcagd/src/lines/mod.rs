@@ -50,7 +50,9 @@ pub use congruence::{net_line, CongruenceKind, FocalLines, LinearCongruence};
 pub use drawing::{congruence_strips, CongruenceDrawing, CongruenceSpec, DrawError};
 pub use generation::{regulus_meeting, GeneratedNet, Generation, GenerationError, LineFamily};
 pub use net::{AxisPosition, ComplexPointRow, LineNet, NetError, NetKind, PointRow};
-pub use order_one::{focal_coefficients, CubicChordCongruence, OneNCongruence, OrderOneError};
+pub use order_one::{
+    focal_coefficients, focal_points, CubicChordCongruence, OneNCongruence, OrderOneError,
+};
 pub use plucker::{reciprocal_product, Line, LineOrigin};
 pub use regulus::{common_transversals, CommonTransversals, Regulus};
 

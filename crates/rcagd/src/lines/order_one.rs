@@ -74,6 +74,57 @@ pub fn focal_coefficients<F: Scalar>(p: &[MPoly<F>; 4], q: &[MPoly<F>; 4]) -> [M
     ]
 }
 
+/// The focal points of the line `p(u₀, v₀) ∨ q(u₀, v₀)` of the congruence `p ∨ q`: the
+/// roots `λ` of `A₀ + λA₁ + λ²A₂` ([`focal_coefficients`]) as points `p + λq` (`λ = ∞`: `q`),
+/// over the square-root extension; an empty list if the two focal points are conjugate
+/// complex (an elliptic line of the congruence), one point for a double root.
+///
+/// # Errors
+/// [`OrderOneError::SingularPoint`] if `A₀ = A₁ = A₂ = 0` at the parameters (every point of
+/// the line is focal: a torsal line or a singular parameter).
+pub fn focal_points<F: super::SqrtScalar>(
+    p: &[MPoly<F>; 4],
+    q: &[MPoly<F>; 4],
+    u: &F,
+    v: &F,
+) -> Result<Vec<[F::Ext; 4]>, OrderOneError> {
+    let x = [u.clone(), v.clone()];
+    let ev = |m: &MPoly<F>| m.eval(&x).unwrap_or_else(|_| F::zero());
+    let [a0, a1, a2] = focal_coefficients(p, q).map(|c| ev(&c));
+    let (pp, qq): ([F; 4], [F; 4]) = (p.clone().map(|c| ev(&c)), q.clone().map(|c| ev(&c)));
+    let emb = |w: &[F; 4]| -> [F::Ext; 4] { core::array::from_fn(|k| w[k].embed()) };
+    let at = |l: &F::Ext| -> [F::Ext; 4] {
+        core::array::from_fn(|k| pp[k].embed() + l.clone() * qq[k].embed())
+    };
+    if a2.is_zero() {
+        if a1.is_zero() {
+            if a0.is_zero() {
+                return Err(OrderOneError::SingularPoint(format!(
+                    "every point of the line at ({}, {}) is focal",
+                    crate::error::format_scalar(u),
+                    crate::error::format_scalar(v)
+                )));
+            }
+            // a double root at λ = ∞
+            return Ok(vec![emb(&qq)]);
+        }
+        let l = (-a0 / a1).embed();
+        return Ok(vec![at(&l), emb(&qq)]);
+    }
+    let four = F::from_i64(4);
+    let disc = a1.clone() * a1.clone() - four * a0 * a2.clone();
+    let two_a2 = (a2.clone() + a2).embed();
+    if disc.is_zero() {
+        return Ok(vec![at(&(-a1.embed() / two_a2))]);
+    }
+    let Some(r) = disc.sqrt_ext() else {
+        return Ok(Vec::new());
+    };
+    let l1 = (-a1.embed() + r.clone()) / two_a2.clone();
+    let l2 = (-a1.embed() - r) / two_a2;
+    Ok(vec![at(&l1), at(&l2)])
+}
+
 fn mag<F: Scalar>(p: &MPoly<F>) -> f64 {
     p.terms().map(|(_, c)| c.to_f64().abs()).fold(1.0, f64::max)
 }
@@ -528,6 +579,60 @@ mod tests {
 
     fn q(n: i64) -> Rational {
         Rational::from(n)
+    }
+
+    #[test]
+    fn focal_points_of_a_quadratic_congruence() {
+        use rcagd_algebra::QuadExt;
+        // p = (1, u, v, uv), q = (0, 1, u + v, u²): a congruence with irrational focal points
+        let (u, v) = (MPoly::<Rational>::var(2, 0), MPoly::var(2, 1));
+        let one = MPoly::constant(2, q(1));
+        let p = [one.clone(), u.clone(), v.clone(), &u * &v];
+        let qq = [MPoly::zero(2), one, &u + &v, &u * &u];
+        let pts = focal_points(&p, &qq, &q(3), &q(-1)).expect("focal");
+        // −2uλ² + (u² − u − v)λ − (u + 1)v: discriminant 145 at (3, −1), two points in Q(√145)
+        assert_eq!(pts.len(), 2);
+        // conjugate complex focal points at (1, 2) (discriminant −28)
+        assert!(focal_points(&p, &qq, &q(1), &q(2))
+            .expect("complex")
+            .is_empty());
+        // each focal point x = p + λq: det(p, q, x_u, x_v) = 0 exactly over the extension,
+        // i.e. the neighbouring lines meet the line there
+        let e =
+            |m: &MPoly<Rational>, x: &[Rational; 2]| QuadExt::rational(m.eval(x).expect("eval"));
+        let xy = [q(3), q(-1)];
+        let pv: [QuadExt; 4] = core::array::from_fn(|k| e(&p[k], &xy));
+        let qv: [QuadExt; 4] = core::array::from_fn(|k| e(&qq[k], &xy));
+        let d = |m: &[MPoly<Rational>; 4], i: usize| -> [QuadExt; 4] {
+            core::array::from_fn(|k| e(&m[k].partial(i), &xy))
+        };
+        let (pu, pvv, qu, qvv) = (d(&p, 0), d(&p, 1), d(&qq, 0), d(&qq, 1));
+        for x in &pts {
+            // λ from x = p + λq (q₀ = 0, p₀ = 1 ⇒ x₀ = 1; λ = x₁ − p₁)
+            let l = x[1].clone() - pv[1].clone();
+            let xu: [QuadExt; 4] =
+                core::array::from_fn(|k| pu[k].clone() + l.clone() * qu[k].clone());
+            let xv: [QuadExt; 4] =
+                core::array::from_fn(|k| pvv[k].clone() + l.clone() * qvv[k].clone());
+            assert_eq!(det4v(&pv, &qv, &xu, &xv), QuadExt::rational(q(0)));
+        }
+        // a hyperbolic net c(u) ∨ d(v): the focal points are the points on the axes
+        let c = [
+            MPoly::constant(2, q(1)),
+            u.clone(),
+            MPoly::zero(2),
+            MPoly::zero(2),
+        ];
+        let dd = [
+            MPoly::zero(2),
+            MPoly::constant(2, q(2)),
+            v.clone(),
+            MPoly::constant(2, q(1)),
+        ];
+        let pts = focal_points(&c, &dd, &q(3), &q(5)).expect("net");
+        assert_eq!(pts.len(), 2);
+        assert_eq!(pts[0], [1, 3, 0, 0].map(|k| QuadExt::rational(q(k))));
+        assert_eq!(pts[1], [0, 2, 5, 1].map(|k| QuadExt::rational(q(k))));
     }
 
     #[test]
