@@ -54,6 +54,10 @@ pub enum OrderOneError {
     /// A point on a focal curve or line (infinitely many lines pass through it).
     #[error("singular point of the congruence: {0}")]
     SingularPoint(String),
+    /// The elimination of [`order_and_class`] failed (degrees beyond the dense resultant
+    /// limit) or the congruence is degenerate.
+    #[error("order and class by elimination: {0}")]
+    Elimination(String),
     /// A line-geometry failure underneath.
     #[error(transparent)]
     Line(#[from] LineError),
@@ -123,6 +127,160 @@ pub fn focal_points<F: super::SqrtScalar>(
     let l1 = (-a1.embed() + r.clone()) / two_a2.clone();
     let l2 = (-a1.embed() - r) / two_a2;
     Ok(vec![at(&l1), at(&l2)])
+}
+
+/// Order, class and parametrization degree `(m, n, μ)` of the congruence `p(u, v) ∨ q(u, v)`
+/// (exact, Schubert conditions;
+/// docs/math/lines-and-canal.md, "Congruences of order one"): a line passes through a point
+/// `P` iff it meets three non-coplanar lines through `P`, and lies in a plane iff it meets
+/// three non-concurrent lines of the plane. Each condition `Ω(gᵢ, l(u, v)) = 0` is a
+/// polynomial in `(u, v)`; after a shear of the parameters the common zeros of three of
+/// them are the roots of `gcd(Res_v(f₁, f₂), Res_v(f₁, f₃))`, from which the base points (the
+/// zeros shared by every choice of `P` resp. the plane: `p ∧ q = 0`) are removed. The counts
+/// are divided by the degree `μ` of the parametrization (parameter points per line, counted
+/// with the lines through two points of a generic congruence line). Fixed pseudo-random
+/// choices of points, lines and shear make the result exact for generic data; a
+/// non-generic coincidence can only lower a count.
+///
+/// # Errors
+/// [`OrderOneError::Elimination`] if a resultant fails (degrees beyond the dense limit,
+/// more than two parameters) or the congruence is degenerate (`μ = 0`).
+pub fn order_and_class(
+    p: &[MPoly<Rational>; 4],
+    q: &[MPoly<Rational>; 4],
+) -> Result<(usize, usize, usize), OrderOneError> {
+    order_and_class_inner(p, q).map_err(OrderOneError::Elimination)
+}
+
+fn order_and_class_inner(
+    p: &[MPoly<Rational>; 4],
+    q: &[MPoly<Rational>; 4],
+) -> Result<(usize, usize, usize), String> {
+    use rcagd_algebra::mpoly::resultant_in;
+    let r = |a: i64, b: i64| Rational::from_ratio(a, b);
+    // shear (u, v) ↦ (u + 2v/5, v) against coincident u-coordinates
+    let shear = |m: &MPoly<Rational>| -> MPoly<Rational> {
+        let s = &MPoly::var(2, 0) + &MPoly::var(2, 1).scale(&r(2, 5));
+        let t = MPoly::var(2, 1);
+        m.terms().fold(MPoly::zero(2), |acc, (e, c)| {
+            &acc + &(&s.pow(e.first().copied().unwrap_or(0))
+                * &t.pow(e.get(1).copied().unwrap_or(0)))
+                .scale(c)
+        })
+    };
+    let l: [MPoly<Rational>; 6] =
+        wedge(&p.clone().map(|c| shear(&c)), &q.clone().map(|c| shear(&c)));
+    // a common factor of the Plücker coordinates (a curve of parameters where p ∧ q = 0, e.g.
+    // the diagonal of the chord parametrization) is divided out
+    let common = l.iter().fold(MPoly::zero(2), |acc: MPoly<Rational>, x| {
+        if acc.is_zero() {
+            x.clone()
+        } else if x.is_zero() {
+            acc
+        } else {
+            crate::pn::poly::gcd2(&acc, x)
+        }
+    });
+    let l: [MPoly<Rational>; 6] = if common.total_degree().unwrap_or(0) > 0 {
+        l.map(|x| crate::pn::poly::div_exact(&x, &common).unwrap_or(x))
+    } else {
+        l
+    };
+    let cond = |g: &[Rational; 6]| -> MPoly<Rational> {
+        let gp: [MPoly<Rational>; 6] = core::array::from_fn(|k| MPoly::constant(2, g[k].clone()));
+        reciprocal_product(&gp, &l)
+    };
+    let line = |a: [i64; 4], b: [i64; 4]| wedge(&a.map(Rational::from), &b.map(Rational::from));
+    let gcd_count = |fs: [MPoly<Rational>; 3]| -> Result<Poly<Rational>, String> {
+        let r12 = resultant_in(&fs[0], &fs[1], 1).map_err(|e| e.to_string())?;
+        let r13 = resultant_in(&fs[0], &fs[2], 1).map_err(|e| e.to_string())?;
+        Ok(r12.gcd(&r13))
+    };
+    // three lines through a point P (directions d₁, d₂, d₃)
+    let through = |pt: [i64; 4]| -> Result<Poly<Rational>, String> {
+        let ds = [[0, 1, 2, -1], [0, -3, 1, 2], [0, 2, -1, 5]];
+        gcd_count(ds.map(|d| cond(&line(pt, d))))
+    };
+    // three lines of the plane through three points
+    let inplane = |a: [i64; 4], b: [i64; 4], c: [i64; 4]| -> Result<Poly<Rational>, String> {
+        gcd_count([cond(&line(a, b)), cond(&line(b, c)), cond(&line(c, a))])
+    };
+    let pts = [
+        through([3, 1, -2, 5])?,
+        through([2, -5, 3, 1])?,
+        through([5, 2, 7, -3])?,
+    ];
+    let pls = [
+        inplane([1, 2, -1, 3], [2, -1, 4, 1], [3, 5, 2, -2])?,
+        inplane([2, 3, 1, -4], [1, -2, -3, 5], [4, 1, 6, 2])?,
+        inplane([3, -4, 2, 1], [5, 3, -1, 2], [1, 6, 5, -3])?,
+    ];
+    // base points: common to every choice
+    let strip = |x: &Poly<Rational>, base: &Poly<Rational>| -> usize {
+        let mut y = x.clone();
+        loop {
+            let c = y.gcd(base);
+            if c.degree().unwrap_or(0) == 0 || y.degree().unwrap_or(0) == 0 {
+                break;
+            }
+            match y.div_exact(&c) {
+                Ok(z) => y = z,
+                Err(_) => break,
+            }
+        }
+        y.degree().unwrap_or(0)
+    };
+    let all = pts
+        .iter()
+        .chain(&pls)
+        .fold(Poly::zero(), |acc: Poly<Rational>, x| {
+            if acc.is_zero() {
+                x.clone()
+            } else {
+                acc.gcd(x)
+            }
+        });
+    let base = if all.degree().unwrap_or(0) == 0 {
+        Poly::constant(r(1, 1))
+    } else {
+        all
+    };
+    let count_pt = strip(&pts[0], &base);
+    let count_pl = strip(&pls[0], &base);
+    // μ: parameter points of a generic congruence line l(u₀, v₀): lines through two of its
+    // points
+    let (u0, v0) = (r(3, 7), r(-5, 4));
+    let pv: [Rational; 4] = p.clone().map(|c| {
+        c.eval(&[u0.clone(), v0.clone()])
+            .unwrap_or_else(|_| r(0, 1))
+    });
+    let qv: [Rational; 4] = q.clone().map(|c| {
+        c.eval(&[u0.clone(), v0.clone()])
+            .unwrap_or_else(|_| r(0, 1))
+    });
+    let on = |k: i64| -> [Rational; 4] {
+        core::array::from_fn(|i| pv[i].clone() + Rational::from(k) * qv[i].clone())
+    };
+    let ds: [[i64; 4]; 3] = [[0, 1, 2, -1], [0, -3, 1, 2], [0, 2, -1, 5]];
+    let dq = |d: [i64; 4]| -> [Rational; 4] { d.map(Rational::from) };
+    let (a, b) = (on(1), on(-2));
+    let fs: Vec<MPoly<Rational>> = [&a, &b]
+        .iter()
+        .flat_map(|pt| {
+            ds.iter()
+                .map(|d| cond(&wedge(pt, &dq(*d))))
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    let mut g = resultant_in(&fs[0], &fs[1], 1).map_err(|e| e.to_string())?;
+    for f in &fs[2..] {
+        g = g.gcd(&resultant_in(&fs[0], f, 1).map_err(|e| e.to_string())?);
+    }
+    let mu = strip(&g, &base);
+    if mu == 0 {
+        return Err("degenerate congruence: no parameter point on a generic line (μ = 0)".into());
+    }
+    Ok((count_pt / mu, count_pl / mu, mu))
 }
 
 fn mag<F: Scalar>(p: &MPoly<F>) -> f64 {
@@ -633,6 +791,36 @@ mod tests {
         assert_eq!(pts.len(), 2);
         assert_eq!(pts[0], [1, 3, 0, 0].map(|k| QuadExt::rational(q(k))));
         assert_eq!(pts[1], [0, 2, 5, 1].map(|k| QuadExt::rational(q(k))));
+    }
+
+    #[test]
+    fn order_and_class_by_elimination() {
+        let (u, v) = (MPoly::<Rational>::var(2, 0), MPoly::var(2, 1));
+        let one = MPoly::constant(2, q(1));
+        let zero = MPoly::zero(2);
+        let pw = |x: &MPoly<Rational>, k: u32| x.pow(k);
+        // a hyperbolic net c(u) ∨ d(v): (1, 1), μ = 1
+        let c = [one.clone(), u.clone(), zero.clone(), zero.clone()];
+        let d = [
+            zero.clone(),
+            MPoly::constant(2, q(2)),
+            v.clone(),
+            one.clone(),
+        ];
+        assert_eq!(order_and_class(&c, &d).expect("net"), (1, 1, 1));
+        // chords k(u) ∨ k(v) of the normal cubic: (1, 3), covered twice (u ↔ v)
+        let ku = [one.clone(), u.clone(), pw(&u, 2), pw(&u, 3)];
+        let kv = [one.clone(), v.clone(), pw(&v, 2), pw(&v, 3)];
+        assert_eq!(order_and_class(&ku, &kv).expect("chords"), (1, 3, 2));
+        // the (1, 4)-congruence of Gruber §1.1.8: β(u) ∨ (v, 0, 0)
+        let b = [
+            one.clone(),
+            &u.scale(&q(3)) + &pw(&u, 4),
+            &pw(&u, 2).scale(&q(4)) - &pw(&u, 4),
+            &u.scale(&q(4)) - &pw(&u, 3),
+        ];
+        let g = [one.clone(), v.clone(), zero.clone(), zero];
+        assert_eq!(order_and_class(&b, &g).expect("(1,4)"), (1, 4, 1));
     }
 
     #[test]
