@@ -140,7 +140,9 @@ pub fn focal_points<F: super::SqrtScalar>(
 /// are divided by the degree `μ` of the parametrization (parameter points per line, counted
 /// with the lines through two points of a generic congruence line). Fixed pseudo-random
 /// choices of points, lines and shear make the result exact for generic data; a
-/// non-generic coincidence can only lower a count.
+/// non-generic coincidence can only lower a count (the conic `(1 + 2t², t, −2t², −5t)` with
+/// the x-axis, a (1, 2)-congruence, counts order 0), so the count is a measurement, not a
+/// certificate.
 ///
 /// # Errors
 /// [`OrderOneError::Elimination`] if a resultant fails (degrees beyond the dense limit,
@@ -230,23 +232,31 @@ fn order_and_class_inner(
         }
         y.degree().unwrap_or(0)
     };
-    let all = pts
-        .iter()
-        .chain(&pls)
-        .fold(Poly::zero(), |acc: Poly<Rational>, x| {
+    // a zero polynomial (the three conditions share a factor: a non-generic choice) is
+    // skipped in favour of the next point or plane
+    let all = pts.iter().chain(&pls).filter(|x| !x.is_zero()).fold(
+        Poly::zero(),
+        |acc: Poly<Rational>, x| {
             if acc.is_zero() {
                 x.clone()
             } else {
                 acc.gcd(x)
             }
-        });
+        },
+    );
     let base = if all.degree().unwrap_or(0) == 0 {
         Poly::constant(r(1, 1))
     } else {
         all
     };
-    let count_pt = strip(&pts[0], &base);
-    let count_pl = strip(&pls[0], &base);
+    let first = |xs: &[Poly<Rational>; 3], what: &str| -> Result<Poly<Rational>, String> {
+        xs.iter()
+            .find(|x| !x.is_zero())
+            .cloned()
+            .ok_or_else(|| format!("no generic {what} among the three tried"))
+    };
+    let count_pt = strip(&first(&pts, "point")?, &base);
+    let count_pl = strip(&first(&pls, "plane")?, &base);
     // μ: parameter points of a generic congruence line l(u₀, v₀): lines through two of its
     // points
     let (u0, v0) = (r(3, 7), r(-5, 4));
@@ -821,6 +831,14 @@ mod tests {
         ];
         let g = [one.clone(), v.clone(), zero.clone(), zero];
         assert_eq!(order_and_class(&b, &g).expect("(1,4)"), (1, 4, 1));
+        // a conic meeting the x-axis once: (1, 2)
+        let k2 = [
+            &one + &pw(&u, 2).scale(&q(2)),
+            u.clone(),
+            pw(&u, 2).scale(&q(-2)),
+            u.scale(&q(5)),
+        ];
+        assert_eq!(order_and_class(&k2, &g).expect("(1,2)"), (1, 2, 1));
     }
 
     #[test]
