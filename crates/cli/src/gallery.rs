@@ -64,6 +64,10 @@ pub const RECIPES: &[(&str, &str)] = &[
         include_str!("../../../examples/recipes/sphere_family.toml"),
     ),
     (
+        "examples/recipes/line_congruence.toml",
+        include_str!("../../../examples/recipes/line_congruence.toml"),
+    ),
+    (
         "examples/recipes/conic_surface.toml",
         include_str!("../../../examples/recipes/conic_surface.toml"),
     ),

@@ -462,6 +462,176 @@ pub fn line_image<F: Scalar>(p: &[F; 4], d: &[F; 4]) -> Result<LineImage<F>, Cyc
     }
 }
 
+/// The type of a 2-plane `ε: a + u g + v h` of `R^{3,1}` and of its cyclographic image
+/// (Gruber 2008 §1.2.2), decided by the Gram matrix `G` of `g, h` in the Lorentz product:
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PlaneImageKind {
+    /// `g₄ = h₄ = 0`: the cycles have the constant radius `a₄`; the image is the pair of
+    /// planes parallel to `π(ε)` at distance `|a₄|`.
+    Horizontal,
+    /// `G` positive definite (every direction spacelike): two planes through the line
+    /// `ε ∩ {x₄ = 0}`.
+    Spacelike,
+    /// `det G = 0` (one isotropic direction): one plane, touched by all cycles at the points
+    /// of `ε ∩ {x₄ = 0}`.
+    Lightlike,
+    /// `det G < 0` (two isotropic directions): two conjugate complex planes, no real image.
+    Timelike,
+}
+
+/// The cyclographic image of the 2-plane `ε = a + u g + v h` of `R^{3,1}`: the oriented
+/// planes `e₀ + n·x = 0`, `|n| = 1`, touching every cycle of `ε` (Gruber 2008 §1.2.2).
+///
+/// A plane touches the cycle `(m, r)` iff `e₀ + n·m + r = 0` (module docs), so for all of
+/// `ε`: `e₀ + n·a' + a₄ = 0`, `n·g' = −g₄`, `n·h' = −h₄` (`x'` = the first three
+/// coordinates). With `k = g' × h'` and `n₀ ∈ span(g', h')` solving the two linear
+/// conditions, `n = n₀ + λk` and `|n|² = 1` gives `λ² = (1 − |n₀|²)/|k|²`: two real planes
+/// for `|n₀|² < 1` (spacelike), one for `|n₀|² = 1` (lightlike), none for `|n₀|² > 1`
+/// (timelike) — `1 − |n₀|²` has the sign of `det G`. The square root lives in
+/// [`crate::lines::SqrtScalar::Ext`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlaneImage<F: crate::lines::SqrtScalar> {
+    /// The point `a`.
+    pub point: [F; 4],
+    /// The directions `g, h`.
+    pub directions: [[F; 4]; 2],
+    /// The type.
+    pub kind: PlaneImageKind,
+    /// The enveloping oriented planes (two, one or none).
+    pub planes: Vec<OrientedPlane<F::Ext>>,
+}
+
+fn cross3<F: Scalar>(a: &[F; 3], b: &[F; 3]) -> [F; 3] {
+    [
+        a[1].clone() * b[2].clone() - a[2].clone() * b[1].clone(),
+        a[2].clone() * b[0].clone() - a[0].clone() * b[2].clone(),
+        a[0].clone() * b[1].clone() - a[1].clone() * b[0].clone(),
+    ]
+}
+
+/// The cyclographic image of the 2-plane `a + u g + v h` ([`PlaneImage`]).
+///
+/// # Errors
+/// [`CyclographicError::ZeroVector`] if `g' × h' = 0` (the plane is no 2-plane, or contains
+/// the radius direction `(0, 0, 0, 1)`: then the cycles fill space and have no envelope).
+pub fn plane_image<F: crate::lines::SqrtScalar>(
+    a: &[F; 4],
+    g: &[F; 4],
+    h: &[F; 4],
+) -> Result<PlaneImage<F>, CyclographicError> {
+    let p3 = |x: &[F; 4]| -> [F; 3] { [x[0].clone(), x[1].clone(), x[2].clone()] };
+    let (gp, hp) = (p3(g), p3(h));
+    let k = cross3(&gp, &hp);
+    if k.iter().all(|x| is_small(x, scale_of(g) * scale_of(h))) {
+        return Err(CyclographicError::ZeroVector(format!(
+            "g' × h' for the plane spanned by {} and {} (vertical or degenerate plane)",
+            fmt_vec(g),
+            fmt_vec(h)
+        )));
+    }
+    let dot = |x: &[F; 3], y: &[F; 3]| crate::lines::dot(x, y);
+    // n₀ = α g' + β h' with [gg gh; gh hh](α, β) = (−g₄, −h₄)
+    let (gg, gh, hh) = (dot(&gp, &gp), dot(&gp, &hp), dot(&hp, &hp));
+    let det = gg.clone() * hh.clone() - gh.clone() * gh.clone();
+    let (rg, rh) = (-g[3].clone(), -h[3].clone());
+    let al = (rg.clone() * hh.clone() - gh.clone() * rh.clone()) / det.clone();
+    let be = (gg.clone() * rh - gh.clone() * rg) / det;
+    let n0: [F; 3] =
+        core::array::from_fn(|i| al.clone() * gp[i].clone() + be.clone() * hp[i].clone());
+    let kk = dot(&k, &k);
+    let rest = F::one() - dot(&n0, &n0);
+    let horizontal = g[3].is_zero() && h[3].is_zero();
+    let kind = if horizontal {
+        PlaneImageKind::Horizontal
+    } else if is_small(&rest, 1.0) {
+        PlaneImageKind::Lightlike
+    } else if rest > F::zero() {
+        PlaneImageKind::Spacelike
+    } else {
+        PlaneImageKind::Timelike
+    };
+    let lambdas: Vec<F::Ext> = match kind {
+        PlaneImageKind::Timelike => Vec::new(),
+        PlaneImageKind::Lightlike => vec![<F::Ext as num_traits::Zero>::zero()],
+        _ => {
+            let l2 = rest / kk;
+            let l = l2
+                .sqrt_ext()
+                .ok_or_else(|| CyclographicError::NotIsotropic(fmt_vec(g), format_scalar(&l2)))?;
+            vec![l.clone(), -l]
+        }
+    };
+    let a3 = p3(a);
+    let planes = lambdas
+        .into_iter()
+        .map(|l| {
+            let n: [F::Ext; 3] = core::array::from_fn(|i| n0[i].embed() + l.clone() * k[i].embed());
+            let am: [F::Ext; 3] = core::array::from_fn(|i| a3[i].embed());
+            let e0 = -(crate::lines::dot(&n, &am) + a[3].embed());
+            OrientedPlane {
+                normal: n,
+                offset: e0,
+            }
+        })
+        .collect();
+    Ok(PlaneImage {
+        point: a.clone(),
+        directions: [g.clone(), h.clone()],
+        kind,
+        planes,
+    })
+}
+
+impl<F: crate::lines::SqrtScalar> Certified for PlaneImage<F> {
+    /// Every image plane has a unit normal and touches the cycles of `a`, `a + g`, `a + h`
+    /// (hence, the contact condition being affine in the cycle, every cycle of `ε`): exact
+    /// over the extension field; the number of planes matches the type.
+    fn certify(&self) -> Vec<Certificate> {
+        let mut out = Vec::new();
+        let want = match self.kind {
+            PlaneImageKind::Horizontal | PlaneImageKind::Spacelike => 2,
+            PlaneImageKind::Lightlike => 1,
+            PlaneImageKind::Timelike => 0,
+        };
+        out.push(Certificate::decide(
+            format!("{:?} plane: {want} image planes (Gruber §1.2.2)", self.kind),
+            self.planes.len() == want,
+            F::EXACT,
+            || format!("{} planes", self.planes.len()),
+        ));
+        let [g, h] = &self.directions;
+        let cycles: [[F; 4]; 3] = [
+            self.point.clone(),
+            core::array::from_fn(|i| self.point[i].clone() + g[i].clone()),
+            core::array::from_fn(|i| self.point[i].clone() + h[i].clone()),
+        ];
+        for (j, pl) in self.planes.iter().enumerate() {
+            let nn = crate::lines::dot(&pl.normal, &pl.normal);
+            let one = <F::Ext as num_traits::One>::one();
+            out.push(Certificate::decide(
+                format!("image plane {j} has a unit normal"),
+                is_small(&(nn.clone() - one), 1.0),
+                F::EXACT,
+                || format_scalar(&nn),
+            ));
+            for c in &cycles {
+                let m: [F::Ext; 3] = core::array::from_fn(|i| c[i].embed());
+                let r = pl.offset.clone() + crate::lines::dot(&pl.normal, &m) + c[3].embed();
+                out.push(Certificate::decide(
+                    format!(
+                        "image plane {j} touches the cycle {}: e₀ + n·m + r = 0",
+                        fmt_vec(c)
+                    ),
+                    is_small(&r, 1.0 + scale_of(c)),
+                    F::EXACT,
+                    || format_scalar(&r),
+                ));
+            }
+        }
+        out
+    }
+}
+
 // ---------------------------------------------------------------------------------------
 // Möbius model (Peternell §2.4)
 // ---------------------------------------------------------------------------------------
@@ -699,5 +869,44 @@ mod tests {
             mobius_image(&img).expect("img"),
             MobiusImage::Point([r(1, 2), q(0), q(0)])
         );
+    }
+
+    #[test]
+    fn cyclographic_images_of_planes() {
+        use rcagd_algebra::{QuadExt, Rational};
+        let q = |a: [i64; 4]| a.map(Rational::from);
+        let r = |n, d| Rational::from_ratio(n, d);
+        // Gruber §1.2.2, the four cases
+        let hz = plane_image(&q([0, 0, 0, 2]), &q([1, 0, 0, 0]), &q([0, 1, 0, 0])).expect("h");
+        assert_eq!(hz.kind, PlaneImageKind::Horizontal);
+        assert!(hz.all_hold(), "{:?}", hz.certify());
+        // the planes z = ±2 (oriented: n = (0, 0, ∓1), e₀ = −2)
+        for pl in &hz.planes {
+            assert_eq!(pl.offset, QuadExt::rational(Rational::from(-2)));
+        }
+        let a = q([1, 2, 3, 0]);
+        let sp =
+            plane_image(&a, &[r(1, 1), r(0, 1), r(0, 1), r(1, 2)], &q([0, 1, 0, 0])).expect("s");
+        assert_eq!(sp.kind, PlaneImageKind::Spacelike);
+        assert!(sp.all_hold(), "{:?}", sp.certify());
+        let ll = plane_image(&a, &q([1, 0, 0, 1]), &q([0, 1, 0, 0])).expect("l");
+        assert_eq!(ll.kind, PlaneImageKind::Lightlike);
+        assert!(ll.all_hold(), "{:?}", ll.certify());
+        let tl = plane_image(&a, &q([1, 0, 0, 2]), &q([0, 1, 0, 0])).expect("t");
+        assert_eq!(tl.kind, PlaneImageKind::Timelike);
+        assert!(tl.planes.is_empty() && tl.all_hold());
+        assert!(matches!(
+            plane_image(&a, &q([1, 0, 0, 0]), &q([0, 0, 0, 1])),
+            Err(CyclographicError::ZeroVector(_))
+        ));
+        // f64 agrees
+        let f = plane_image(
+            &[1.0, 2.0, 3.0, 0.0],
+            &[1.0, 0.0, 0.0, 0.5],
+            &[0.0, 1.0, 0.0, 0.0],
+        )
+        .expect("f64");
+        assert!(f.all_hold());
+        assert_eq!(f.kind, PlaneImageKind::Spacelike);
     }
 }

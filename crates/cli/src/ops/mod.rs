@@ -33,6 +33,7 @@ topics!(
     cyclide,
     pn,
     sphere_family,
+    line_congruence,
     conic_surface,
     analysis,
     quadric_query,

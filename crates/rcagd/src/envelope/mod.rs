@@ -13,10 +13,12 @@
 //!
 //! Derivations and corrections of the printed formulas: `docs/math/sphere-families.md`.
 
+pub mod quadratic_class;
 pub mod recognition;
 pub mod sphere_family;
 
+pub use quadratic_class::peters_reif_class;
 pub use recognition::{Recognition, RecognitionError, SphereFamily};
 pub use sphere_family::{
-    DirectEnvelope, SphereFamilyEnvelope, SphereFamilyError, Subcase, Support,
+    CyclographicEnvelope, DirectEnvelope, SphereFamilyEnvelope, SphereFamilyError, Subcase, Support,
 };

@@ -861,21 +861,128 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
     }
 }
 
+/// `(Φ, Φ_u, Φ_v)` at one parameter.
+type Jet<F> = ([F; 4], [F; 4], [F; 4]);
+
+/// The two envelope points of the cyclographic construction (Gruber §3.1.2) with the
+/// isotropic directions that project them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CyclographicEnvelope<E> {
+    /// The intersections `H₁, H₂` of the ideal line `h` of the normal plane with `Ω`.
+    pub isotropic: [[E; 4]; 2],
+    /// The envelope points `fₖ = π(Φ) − Φ₄ (Hₖ₁, Hₖ₂, Hₖ₃)/Hₖ₄`.
+    pub points: [[E; 3]; 2],
+}
+
 impl<F: SqrtScalar> SphereFamilyEnvelope<F> {
-    /// The direct envelope `S ∩ S_u ∩ S_v` at the net parameters `(p, q)` (Gruber §3.1.1,
-    /// with the sign of (3.3) corrected): with `m, r` the sphere and `y = x − m`,
-    /// `⟨y, m_u⟩ = −r r_u`, `⟨y, m_v⟩ = −r r_v`, `|y|² = r²`. The first two fix
-    /// `y₀ ∈ span(m_u, m_v)`; then `y = y₀ ± λ n`, `n = m_u × m_v`,
-    /// `λ² = (r² − |y₀|²)/|n|²` — a square root in [`SqrtScalar::Ext`].
+    /// The cyclographic construction of the envelope at the net parameters `(p, q)`
+    /// (Gruber §3.1.2, after Peternell and Odehnal): the tangent plane `τ` of `Φ` at
+    /// `F = Φ(p, q)` has the ideal line `g = Φ_u ∧ Φ_v` (points of `ω`), the normal plane the
+    /// polar line `h = E g` (Gruber (1.19)); `h` meets `Ω` in `H₁, H₂` (a quadratic
+    /// equation: `H = a + μb` for two points `a, b` of `h`,
+    /// `⟨a, a⟩ + 2μ⟨a, b⟩ + μ²⟨b, b⟩ = 0` in the Lorentz form), and the isotropic lines
+    /// `F ∨ Hₖ` meet `x₄ = 0` in the envelope points `fₖ = π(F) − F₄ (Hₖ₁, Hₖ₂, Hₖ₃)/Hₖ₄`.
+    /// Independent of the net: the construction sees `Φ` only; the net's fibration is what
+    /// makes `Hₖ` rational in the parameters of `Ω` (§3.2).
     ///
     /// # Errors
-    /// [`SphereFamilyError::Undefined`] where `Φ` has a pole or `m_u × m_v = 0` (a singular
-    /// point of the centre surface), [`SphereFamilyError::NoRealEnvelope`] where `λ² < 0`.
-    pub fn direct_envelope(
+    /// [`SphereFamilyError::Undefined`] where `Φ` has a pole or `Φ_u ∧ Φ_v = 0`,
+    /// [`SphereFamilyError::NoRealEnvelope`] where the tangent plane is timelike (`h` misses
+    /// `Ω`).
+    pub fn cyclographic_envelope(
         &self,
         p: &F,
         q: &F,
-    ) -> Result<DirectEnvelope<F::Ext>, SphereFamilyError> {
+    ) -> Result<CyclographicEnvelope<F::Ext>, SphereFamilyError> {
+        let (val, fu, fv) = self.phi_jet(p, q)?;
+        let g = crate::lines::plucker::wedge(&fu, &fv);
+        if g.iter().all(|x| x.is_zero()) {
+            return Err(SphereFamilyError::Undefined(
+                "Φ_u ∧ Φ_v = 0: Φ is singular here".into(),
+            ));
+        }
+        let h = crate::lines::Line::from_coords_unchecked(g).polar_omega();
+        let (a, b) = h.points();
+        let (aa, ab, bb) = (omega_form(&a, &a), omega_form(&a, &b), omega_form(&b, &b));
+        let disc = ab.clone() * ab.clone() - aa.clone() * bb.clone();
+        let Some(root) = disc.sqrt_ext() else {
+            return Err(SphereFamilyError::NoRealEnvelope(format!(
+                "the tangent plane of Φ at ({}, {}) is timelike: its normal line h misses Ω",
+                format_scalar(p),
+                format_scalar(q)
+            )));
+        };
+        let (ae, be): ([F::Ext; 4], [F::Ext; 4]) = (
+            core::array::from_fn(|k| a[k].embed()),
+            core::array::from_fn(|k| b[k].embed()),
+        );
+        // H = (⟨a,b⟩ ∓ √disc)·b − ⟨b,b⟩·a is a root of the quadratic in projective form
+        // (μ = (−⟨a,b⟩ ± √disc)/⟨b,b⟩, scaled by −⟨b,b⟩); if ⟨b,b⟩ = 0, b itself and
+        // ⟨a,a⟩b − 2⟨a,b⟩a are the two points
+        let hs: [[F::Ext; 4]; 2] = if bb.is_zero() {
+            [
+                be.clone(),
+                core::array::from_fn(|k| {
+                    aa.embed() * be[k].clone() - (ab.clone() + ab.clone()).embed() * ae[k].clone()
+                }),
+            ]
+        } else {
+            let mk = |sgn: bool| -> [F::Ext; 4] {
+                let c = if sgn {
+                    ab.embed() - root.clone()
+                } else {
+                    ab.embed() + root.clone()
+                };
+                core::array::from_fn(|k| c.clone() * be[k].clone() - bb.embed() * ae[k].clone())
+            };
+            [mk(true), mk(false)]
+        };
+        let mut points: Vec<[F::Ext; 3]> = Vec::with_capacity(2);
+        for hk in &hs {
+            if num_traits::Zero::is_zero(&hk[3]) {
+                return Err(SphereFamilyError::Undefined(
+                    "an isotropic direction with H₄ = 0".into(),
+                ));
+            }
+            let f4 = val[3].embed() / hk[3].clone();
+            points.push(core::array::from_fn(|i| {
+                val[i].embed() - f4.clone() * hk[i].clone()
+            }));
+        }
+        let [p0, p1] = <[[F::Ext; 3]; 2]>::try_from(points)
+            .map_err(|_| SphereFamilyError::Undefined("two points".into()))?;
+        Ok(CyclographicEnvelope {
+            isotropic: hs,
+            points: [p0, p1],
+        })
+    }
+
+    /// Certificate: at the parameter `(s, t)` of `Ω`, `Ψ(s, t)` is one of the two points of
+    /// the cyclographic construction ([`Self::cyclographic_envelope`]) at the net parameters
+    /// of `(s, t)` — exact over the square-root extension.
+    pub fn cyclographic_certificate(&self, s: &F, t: &F) -> Certificate {
+        let prop = format!(
+            "Ψ({}, {}) is a point of the cyclographic construction at its sphere (Gruber §3.1.2)",
+            format_scalar(s),
+            format_scalar(t)
+        );
+        let run = || -> Result<bool, SphereFamilyError> {
+            let x = self.eval(s, t)?;
+            let (p, q) = self.parameters_at(s, t)?;
+            let c = self.cyclographic_envelope(&p, &q)?;
+            let sc = 1.0 + x.iter().map(|v| v.to_f64().abs()).fold(0.0, f64::max);
+            Ok(c.points.iter().any(|pt| {
+                (0..3).all(|k| crate::lines::is_small(&(pt[k].clone() - x[k].embed()), sc))
+            }))
+        };
+        match run() {
+            Ok(ok) => Certificate::decide(prop, ok, F::EXACT, || "Ψ is neither point".into()),
+            Err(e) => Certificate::fails(prop, e.to_string(), F::EXACT),
+        }
+    }
+
+    /// `Φ(p, q)` and its partial derivatives (affine, the denominator divided out).
+    fn phi_jet(&self, p: &F, q: &F) -> Result<Jet<F>, SphereFamilyError> {
         let x = [p.clone(), q.clone()];
         let ev = |m: &MPoly<F>| m.eval(&x).unwrap_or_else(|_| F::zero());
         let d = ev(&self.phi_den);
@@ -890,6 +997,24 @@ impl<F: SqrtScalar> SphereFamilyEnvelope<F> {
             })
         };
         let (fu, fv) = (der(0, &d_u), der(1, &d_v));
+        Ok((val, fu, fv))
+    }
+
+    /// The direct envelope `S ∩ S_u ∩ S_v` at the net parameters `(p, q)` (Gruber §3.1.1,
+    /// with the sign of (3.3) corrected): with `m, r` the sphere and `y = x − m`,
+    /// `⟨y, m_u⟩ = −r r_u`, `⟨y, m_v⟩ = −r r_v`, `|y|² = r²`. The first two fix
+    /// `y₀ ∈ span(m_u, m_v)`; then `y = y₀ ± λ n`, `n = m_u × m_v`,
+    /// `λ² = (r² − |y₀|²)/|n|²` — a square root in [`SqrtScalar::Ext`].
+    ///
+    /// # Errors
+    /// [`SphereFamilyError::Undefined`] where `Φ` has a pole or `m_u × m_v = 0` (a singular
+    /// point of the centre surface), [`SphereFamilyError::NoRealEnvelope`] where `λ² < 0`.
+    pub fn direct_envelope(
+        &self,
+        p: &F,
+        q: &F,
+    ) -> Result<DirectEnvelope<F::Ext>, SphereFamilyError> {
+        let (val, fu, fv) = self.phi_jet(p, q)?;
         let dot3 = |a: &[F; 4], b: &[F; 4]| {
             a[0].clone() * b[0].clone() + a[1].clone() * b[1].clone() + a[2].clone() * b[2].clone()
         };

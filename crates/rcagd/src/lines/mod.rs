@@ -38,13 +38,21 @@
 
 pub mod complex;
 pub mod congruence;
+pub mod drawing;
+pub mod generation;
 pub mod net;
+pub mod order_one;
 pub mod plucker;
 pub mod regulus;
 
 pub use complex::LinearComplex;
 pub use congruence::{net_line, CongruenceKind, FocalLines, LinearCongruence};
+pub use drawing::{congruence_strips, CongruenceDrawing, CongruenceSpec, DrawError};
+pub use generation::{regulus_meeting, GeneratedNet, Generation, GenerationError, LineFamily};
 pub use net::{AxisPosition, ComplexPointRow, LineNet, NetError, NetKind, PointRow};
+pub use order_one::{
+    focal_coefficients, focal_points, CubicChordCongruence, OneNCongruence, OrderOneError,
+};
 pub use plucker::{reciprocal_product, Line, LineOrigin};
 pub use regulus::{common_transversals, CommonTransversals, Regulus};
 

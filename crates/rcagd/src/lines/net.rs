@@ -460,6 +460,20 @@ impl<F: Scalar> LineNet<F> {
         }
     }
 
+    /// Two real points spanning the net line `h(p, q)`, polynomial in the net parameters:
+    /// `(c(u), d)` (hyperbolic, parabolic) or `(a, b)` with `c(u) = a + i b` (elliptic).
+    pub fn line_points(&self) -> ([MPoly<F>; 4], [MPoly<F>; 4]) {
+        let c = self.axis_c();
+        let a: [MPoly<F>; 4] = core::array::from_fn(|k| c[k].re.clone());
+        match self {
+            LineNet::Elliptic { .. } => (a, core::array::from_fn(|k| c[k].im.clone())),
+            _ => {
+                let d = self.axis_d();
+                (a, core::array::from_fn(|k| d[k].re.clone()))
+            }
+        }
+    }
+
     /// The real net line `h(p, q)` as Plücker coordinates polynomial in the net parameters
     /// (`c(u) ∧ d`, or `a ∧ b` with `c(u) = a + i b` for elliptic nets).
     pub fn line_polynomials(&self) -> [MPoly<F>; 6] {

@@ -9,6 +9,7 @@ mod hermite_enclosure;
 mod hypercyclide;
 mod laguerre_props;
 mod laguerre_query;
+mod line_generation;
 mod lines_props;
 mod ndim;
 mod ph_planar;

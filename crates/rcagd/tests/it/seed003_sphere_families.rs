@@ -675,6 +675,44 @@ fn direct_cross_check(env: &SphereFamilyEnvelope<Rational>, name: &str) {
             .direct_envelope(&p, &qq)
             .unwrap_or_else(|e| panic!("{name}: {e}"));
         let xe: [QuadExt; 3] = core::array::from_fn(|k| QuadExt::rational(x[k].clone()));
+        // the cyclographic construction of §3.1.2 (isotropic lines through Φ in the normal
+        // plane) gives the same two points as the direct intersection of §3.1.1
+        let cyc = env
+            .cyclographic_envelope(&p, &qq)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let [c0, c1] = &cyc.points;
+        assert!(
+            (*c0 == direct.plus && *c1 == direct.minus)
+                || (*c0 == direct.minus && *c1 == direct.plus),
+            "{name}: cyclographic and direct envelope points differ at ({s}, {t})"
+        );
+        for h in &cyc.isotropic {
+            let w = h[0].clone() * h[0].clone()
+                + h[1].clone() * h[1].clone()
+                + h[2].clone() * h[2].clone()
+                - h[3].clone() * h[3].clone();
+            assert!(w == QuadExt::rational(q(0)), "{name}: H is not on Ω");
+        }
+        assert!(
+            c0 == &xe || c1 == &xe,
+            "{name}: Ψ is not a cyclographic point"
+        );
+        let cert = env.cyclographic_certificate(&s, &t);
+        assert!(cert.holds, "{name}: {cert:?}");
+        if name == "3.3.1" {
+            // f64 agrees
+            let ef = env.map_scalar(Scalar::to_f64).expect("f64");
+            let cf = ef
+                .cyclographic_envelope(&Scalar::to_f64(&p), &Scalar::to_f64(&qq))
+                .expect("f64 cyclographic");
+            let xf: [f64; 3] = core::array::from_fn(|k| Scalar::to_f64(&x[k]));
+            let near =
+                |a: &[f64; 3]| (0..3).all(|k| (a[k] - xf[k]).abs() < 1e-9 * (1.0 + xf[k].abs()));
+            assert!(
+                near(&cf.points[0]) || near(&cf.points[1]),
+                "{name}: f64 cyclographic point"
+            );
+        }
         let (on_plus, on_minus) = (direct.plus == xe, direct.minus == xe);
         assert!(
             on_plus || on_minus,
@@ -701,6 +739,8 @@ fn direct_cross_check(env: &SphereFamilyEnvelope<Rational>, name: &str) {
     assert!(checked >= 2, "{name}: too few regular sample points");
 }
 
+/// The direct envelope (§3.1.1) and the cyclographic construction (§3.1.2) agree with Ψ on
+/// both sheets.
 #[test]
 fn direct_envelope_agrees_on_both_sheets() {
     for c in cases() {
@@ -1167,5 +1207,149 @@ proptest! {
                 prop_assert!((v - xf[k]).abs() <= 1e-6 * (1.0 + v.abs()), "{} vs {}", v, xf[k]);
             }
         }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// The summary table of chapter 3, regenerated from the code.
+
+/// The summary table of Gruber chapter 3 ("Zusammenfassung": net type, axis positions,
+/// Peters–Reif classes of Φ, of the centre surface π(Φ) and of the radius function Φ₄, the
+/// degree of the envelope) recomputed from the construction, next to the thesis's values.
+/// The table in docs/math/sphere-families.md ("Summary table") must equal the generated
+/// one; run with `RCAGD_WRITE_SUMMARY_TABLE=1` to rewrite it.
+#[test]
+fn summary_table_regenerated() {
+    use rcagd::envelope::peters_reif_class;
+    // the thesis's table rows (net, axes, Φ, centre, radius, degree) in the order of cases()
+    let thesis = [
+        ("hyp", "P/P", "4-2-1", "3-1-3", "1-1-3a", 18),
+        ("hyp", "S/S", "4-2-1", "3-2-1c", "1-0", 18),
+        ("hyp", "T/T", "4-2-1", "3-1-1", "1-1-2", 26),
+        ("hyp", "S/P", "4-2-1", "3-1-3", "1-1-3a", 18),
+        ("hyp", "S/P p", "4-2-1", "3-2-1b", "1-0", 6),
+        ("hyp", "S/T", "4-2-1", "3-2-1c", "1-0", 18),
+        ("hyp", "P/T", "4-2-1", "3-1-3", "1-1-2", 15),
+        ("ell", "S/S", "4-2-3", "3-1-2", "1-1-2", 18),
+        ("ell", "T/T", "4-2-3", "3-2-3", "1-0", 12),
+        ("par", "P", "4-2-2", "3-2-2c", "1-0", 14),
+        ("par", "S", "4-2-2", "3-2-2a", "1-0", 14),
+        ("par", "T", "4-2-2", "3-2-2b", "1-0", 12),
+        ("par", "T b", "4-2-2", "3-2-2c", "1-1-3a", 12),
+    ];
+    let mut rows: Vec<(String, LineNet<Rational>, SphereFamilyEnvelope<Rational>)> = cases()
+        .iter()
+        .enumerate()
+        .map(|(i, c)| {
+            let label = if i == 7 {
+                "3.4.1 (printed)".to_string()
+            } else {
+                c.section.to_string()
+            };
+            (label, c.net.clone(), build(c))
+        })
+        .collect();
+    let sec = secant_elliptic();
+    let env = SphereFamilyEnvelope::new(&sec, sq(1, 0), sq(1, 1)).expect("secant envelope");
+    rows.push(("3.4.1 (secant, ours)".into(), sec, env));
+    let pos = |p: &AxisPosition| match p {
+        AxisPosition::Passant => "P",
+        AxisPosition::Secant => "S",
+        AxisPosition::Tangent => "T",
+    };
+    let mut table = String::from(
+        "| § | net | axes (thesis → ours) | Φ (thesis → ours) | centre π(Φ) (thesis → ours) | radius Φ₄ (thesis → ours) | degree (thesis → ours) | bidegree of Ψ |\n|---|---|---|---|---|---|---|---|\n",
+    );
+    let arrow = |t: &str, o: &str| {
+        if t == o {
+            o.to_string()
+        } else if t.is_empty() {
+            format!("— → {o}")
+        } else {
+            format!("{t} → **{o}**")
+        }
+    };
+    for (i, (label, net, env)) in rows.iter().enumerate() {
+        let (phi, den) = env.phi();
+        assert_eq!(den.total_degree(), Some(0), "{label}: Φ is polynomial");
+        let inv = Rational::from(1) / den.coeff(&[0, 0]);
+        let phi: Vec<MPoly<Rational>> = phi.iter().map(|p| p.scale(&inv)).collect();
+        let cl = |ps: &[MPoly<Rational>]| {
+            peters_reif_class(ps).unwrap_or_else(|e| panic!("{label}: {e}"))
+        };
+        let (c_phi, c_centre, c_radius) = (cl(&phi), cl(&phi[..3]), cl(&phi[3..]));
+        let kind = match net.kind() {
+            rcagd::lines::NetKind::Hyperbolic => "hyp",
+            rcagd::lines::NetKind::Elliptic => "ell",
+            rcagd::lines::NetKind::Parabolic => "par",
+        };
+        let mut axes: Vec<&str> = net.axis_positions().iter().map(pos).collect();
+        if kind == "ell" {
+            axes.truncate(1);
+            axes.push(axes[0]);
+        }
+        let mut axes = axes.join("/");
+        match env.subcase() {
+            Subcase::HyperbolicPolar => axes.push_str(" p"),
+            Subcase::ParabolicTangentB => axes.push_str(" b"),
+            _ => {}
+        }
+        let (deg, mu) = implicit_degree(env);
+        let deg = if mu > 1 {
+            format!("{deg} (covered {mu}×)")
+        } else {
+            deg.to_string()
+        };
+        let (bu, bv) = env.bidegree();
+        let t = thesis.get(i).copied().unwrap_or(("", "", "", "", "", 0));
+        if !t.0.is_empty() {
+            assert_eq!(t.0, kind, "{label}");
+        }
+        let tdeg = if t.5 == 0 {
+            String::new()
+        } else {
+            t.5.to_string()
+        };
+        let deg_cell = if tdeg.is_empty() {
+            format!("— → {deg}")
+        } else if deg.starts_with(&tdeg) {
+            deg.clone()
+        } else {
+            format!("{tdeg} → **{deg}**")
+        };
+        // the thesis names the two axes of a hyperbolic net in no particular order
+        let unordered = |x: &str| {
+            let mut v: Vec<char> = x.chars().collect();
+            v.sort_unstable();
+            v
+        };
+        let axes_cell = if !t.1.is_empty() && unordered(t.1) == unordered(&axes) {
+            t.1.to_string()
+        } else {
+            arrow(t.1, &axes)
+        };
+        table.push_str(&format!(
+            "| {label} | {kind} | {axes_cell} | {} | {} | {} | {deg_cell} | ({bu}, {bv}) |\n",
+            arrow(t.2, &c_phi),
+            arrow(t.3, &c_centre),
+            arrow(t.4, &c_radius),
+        ));
+    }
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/math/sphere-families.md");
+    let doc = std::fs::read_to_string(&path).expect("read docs/math/sphere-families.md");
+    let (begin, end) = (
+        "<!-- summary-table:begin -->\n",
+        "<!-- summary-table:end -->",
+    );
+    let (Some(b), Some(e)) = (doc.find(begin), doc.find(end)) else {
+        panic!("docs/math/sphere-families.md has no summary-table markers; the table:\n{table}");
+    };
+    let current = &doc[b + begin.len()..e];
+    if std::env::var_os("RCAGD_WRITE_SUMMARY_TABLE").is_some() {
+        let new = format!("{}{table}{}", &doc[..b + begin.len()], &doc[e..]);
+        std::fs::write(&path, new).expect("write the table");
+    } else {
+        assert_eq!(current, table, "the summary table in docs/math/sphere-families.md is stale; regenerate with RCAGD_WRITE_SUMMARY_TABLE=1:\n{table}");
     }
 }

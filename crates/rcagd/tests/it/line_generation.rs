@@ -1,0 +1,221 @@
+//! Alternative generations of line nets and congruences of order one (Gruber 2008
+//! §1.1.6–1.1.8): random exact inputs, every certificate exact, `f64` agreement, named
+//! errors for degenerate input.
+
+use proptest::prelude::*;
+use rcagd::lines::{
+    regulus_meeting, CongruenceKind, CubicChordCongruence, GeneratedNet, GenerationError, Line,
+    LinearComplex, LinearCongruence, OneNCongruence, OrderOneError,
+};
+use rcagd::Certified;
+use rcagd_algebra::{Poly, Rational};
+
+fn q(n: i64) -> Rational {
+    Rational::from(n)
+}
+
+fn v4(a: [i64; 4]) -> [Rational; 4] {
+    a.map(q)
+}
+
+fn to_f64<const N: usize>(a: &[Rational; N]) -> [f64; N] {
+    core::array::from_fn(|k| a[k].to_f64().value())
+}
+
+fn small() -> impl Strategy<Value = i64> {
+    -5i64..6
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// α: x₃ = 0 and β: x₂ = 0 with κ(s) ⊂ s (b₀, b₁ have x₃ = 0): a net whenever the data
+    /// are non-degenerate; the f64 construction agrees.
+    #[test]
+    fn collineation_nets(b in proptest::array::uniform8(small()), w in 1i64..4) {
+        let a = [v4([1, 0, 0, 0]), v4([0, 1, 0, 0]), v4([0, 0, 1, 0])];
+        let bb = [
+            v4([w, b[0], 0, 0]),
+            v4([b[1], b[2], 0, 0]),
+            v4([b[3], b[4], 0, b[5]]),
+        ];
+        match GeneratedNet::from_plane_collineation(&a, &bb) {
+            Ok(g) => {
+                prop_assert!(g.all_hold(), "{:?}", g.certify());
+                let af = a.clone().map(|p| to_f64(&p));
+                let bf = bb.clone().map(|p| to_f64(&p));
+                let gf = GeneratedNet::from_plane_collineation(&af, &bf).expect("f64");
+                prop_assert!(gf.all_hold(), "{:?}", gf.certify());
+                prop_assert_eq!(gf.congruence().kind(), g.congruence().kind());
+            }
+            Err(GenerationError::NotAPlane(_)) | Err(GenerationError::SamePlane)
+            | Err(GenerationError::NotANet { .. }) => {}
+            Err(e) => prop_assert!(false, "unexpected {e}"),
+        }
+    }
+
+    /// Two reguli of a random net (the net lines meeting two random lines) give the net back.
+    #[test]
+    fn reguli_span_their_net(c in proptest::array::uniform6(small()), d in proptest::array::uniform6(small()),
+                             p in proptest::array::uniform6(small())) {
+        let (Ok(k1), Ok(k2)) = (LinearComplex::new(c.map(q)), LinearComplex::new(d.map(q))) else {
+            return Ok(());
+        };
+        let Ok(net) = LinearCongruence::new(k1, k2) else { return Ok(()) };
+        if net.kind() == CongruenceKind::Degenerate {
+            return Ok(());
+        }
+        let l = |a: [i64; 3], b: [i64; 3]| Line::from_affine_points(&a.map(q), &b.map(q));
+        let (Ok(g1), Ok(g2)) = (l([p[0], p[1], 1], [p[2], 0, p[3]]), l([0, p[4], p[5]], [1, 2, 3])) else {
+            return Ok(());
+        };
+        let (Ok(r1), Ok(r2)) = (regulus_meeting(&net, &g1), regulus_meeting(&net, &g2)) else {
+            return Ok(());
+        };
+        match GeneratedNet::from_reguli(&r1, &r2) {
+            Ok(g) => {
+                prop_assert!(g.all_hold(), "{:?}", g.certify());
+                prop_assert_eq!(g.congruence().kind(), net.kind());
+                for x in g.congruence().sample_lines() {
+                    prop_assert!(net.contains(&x));
+                }
+            }
+            // the two reguli coincide (g₁, g₂ in a common complex with the net)
+            Err(GenerationError::NotANet { complexes, .. }) => prop_assert!(complexes > 2),
+            Err(e) => prop_assert!(false, "unexpected {e}"),
+        }
+    }
+
+    /// Tangents of the ruled surface X(u, v) = p(u) + v q(u) with random quadratic p, q.
+    #[test]
+    fn ruled_surface_tangent_nets(c in proptest::array::uniform12(small()), u0 in -3i64..4) {
+        let p = [Poly::from_ints(&[1]), Poly::from_ints(&[c[0], c[1]]), Poly::from_ints(&[c[2], 0, c[3]]), Poly::from_ints(&[0, c[4]])];
+        let qq = [Poly::from_ints(&[0, c[5]]), Poly::from_ints(&[c[6]]), Poly::from_ints(&[c[7], c[8]]), Poly::from_ints(&[c[9], c[10], c[11]])];
+        match GeneratedNet::from_ruled_surface_tangents(&p, &qq, &q(u0)) {
+            Ok(g) => {
+                prop_assert!(g.all_hold(), "{:?}", g.certify());
+                let pf = p.clone().map(|x| x.map(|c| c.to_f64().value()));
+                let qf = qq.clone().map(|x| x.map(|c| c.to_f64().value()));
+                let gf = GeneratedNet::from_ruled_surface_tangents(&pf, &qf, &(u0 as f64)).expect("f64");
+                prop_assert!(gf.all_hold(), "{:?}", gf.certify());
+            }
+            Err(GenerationError::TorsalGenerator(_)) | Err(GenerationError::Net(_)) => {}
+            Err(e) => prop_assert!(false, "unexpected {e}"),
+        }
+    }
+
+    /// Chord congruences of random twisted cubics: certificates, and the chord through a
+    /// random point contains it (f64 agrees).
+    #[test]
+    fn cubic_chords(a in proptest::array::uniform16(small()), p in proptest::array::uniform4(small())) {
+        let m: [[Rational; 4]; 4] = core::array::from_fn(|i| core::array::from_fn(|k| q(a[4 * i + k])));
+        match CubicChordCongruence::new(m.clone()) {
+            Ok(c) => {
+                prop_assert!(c.all_hold(), "{:?}", c.certify());
+                let pt = p.map(q);
+                match c.chord_through(&pt) {
+                    Ok(e) => {
+                        let l = c.chord(&e).expect("chord");
+                        prop_assert!(l.contains_point(&pt));
+                        let cf = CubicChordCongruence::new(m.map(|r| to_f64(&r))).expect("f64");
+                        let ef = cf.chord_through(&to_f64(&pt)).expect("f64 chord");
+                        let lf = cf.chord(&ef).expect("f64 line");
+                        prop_assert!(lf.contains_point(&to_f64(&pt)));
+                    }
+                    Err(OrderOneError::SingularPoint(_)) => {}
+                    Err(e) => prop_assert!(false, "unexpected {e}"),
+                }
+            }
+            Err(OrderOneError::NotATwistedCubic) => {}
+            Err(e) => prop_assert!(false, "unexpected {e}"),
+        }
+    }
+
+    /// (1, 2)-congruences: a conic meeting the x-axis once, k(t) = (1 + a t², t, b t², c t)
+    /// ⇒ k meets {x₂ = x₃ = 0} at t = 0.
+    #[test]
+    fn one_two_congruences(a in small(), b in small(), c in small(), p in proptest::array::uniform4(small())) {
+        let k = [Poly::from_ints(&[1, 0, a]), Poly::from_ints(&[0, 1]), Poly::from_ints(&[0, 0, b]), Poly::from_ints(&[0, c])];
+        match OneNCongruence::new(v4([1, 0, 0, 0]), v4([0, 1, 0, 0]), k) {
+            Ok(cg) => {
+                prop_assert_eq!(cg.order_class(), (1, 2));
+                prop_assert!(cg.all_hold(), "{:?}", cg.certify());
+                if let Ok(l) = cg.line_through(&p.map(q)) {
+                    prop_assert!(l.contains_point(&p.map(q)));
+                    let g = Line::from_points(&v4([1, 0, 0, 0]), &v4([0, 1, 0, 0])).expect("g");
+                    prop_assert!(l.meets(&g));
+                }
+            }
+            Err(OrderOneError::NotOrderOne { .. }) | Err(OrderOneError::CurveInPlane) => {}
+            Err(e) => prop_assert!(false, "unexpected {e}"),
+        }
+    }
+}
+
+#[test]
+fn one_n_congruence_errors() {
+    // a twisted cubic meeting the line x₁ = x₃ = 0 once is no (1, 3)-congruence (needs 2
+    // points; its tangent x₂ = x₃ = 0 would do: it meets the cubic twice at t = 0)
+    let k = [
+        Poly::from_ints(&[1]),
+        Poly::from_ints(&[0, 1]),
+        Poly::from_ints(&[0, 0, 1]),
+        Poly::from_ints(&[0, 0, 0, 1]),
+    ];
+    assert!(matches!(
+        OneNCongruence::new(v4([1, 0, 0, 0]), v4([0, 0, 1, 0]), k.clone()),
+        Err(OrderOneError::NotOrderOne {
+            order: 3,
+            meets: 1,
+            needed: 2
+        })
+    ));
+    let tangent = OneNCongruence::new(v4([1, 0, 0, 0]), v4([0, 1, 0, 0]), k).expect("tangent");
+    assert!(tangent.all_hold(), "{:?}", tangent.certify());
+    // a conic in a plane through the line
+    let k = [
+        Poly::from_ints(&[1, 0, 1]),
+        Poly::from_ints(&[0, 1]),
+        Poly::from_ints(&[0]),
+        Poly::from_ints(&[0, 1]),
+    ];
+    assert!(matches!(
+        OneNCongruence::new(v4([1, 0, 0, 0]), v4([0, 1, 0, 0]), k),
+        Err(OrderOneError::CurveInPlane)
+    ));
+    // a planar cubic is no twisted cubic
+    assert!(matches!(
+        CubicChordCongruence::new([
+            v4([1, 0, 0, 0]),
+            v4([0, 1, 0, 0]),
+            v4([0, 0, 1, 0]),
+            v4([0, 1, 1, 0])
+        ]),
+        Err(OrderOneError::NotATwistedCubic)
+    ));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    /// Cyclographic images of random 2-planes of R^{3,1} (Gruber §1.2.2): the planes touch
+    /// every cycle of the 2-plane exactly (over Q(√d)); f64 gives the same type and the
+    /// same number of planes.
+    #[test]
+    fn plane_images(a in proptest::array::uniform4(small()), g in proptest::array::uniform4(small()),
+                    h in proptest::array::uniform4(small())) {
+        use rcagd::cyclographic::{plane_image, CyclographicError};
+        let (a, g, h) = (a.map(q), g.map(q), h.map(q));
+        match plane_image(&a, &g, &h) {
+            Ok(img) => {
+                prop_assert!(img.all_hold(), "{:?}", img.certify());
+                let f = plane_image(&to_f64(&a), &to_f64(&g), &to_f64(&h)).expect("f64");
+                prop_assert!(f.all_hold(), "{:?}", f.certify());
+                prop_assert_eq!(f.kind, img.kind);
+                prop_assert_eq!(f.planes.len(), img.planes.len());
+            }
+            Err(CyclographicError::ZeroVector(_)) => {}
+            Err(e) => prop_assert!(false, "unexpected {e}"),
+        }
+    }
+}
