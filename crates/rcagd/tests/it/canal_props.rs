@@ -35,6 +35,8 @@ fn check_refusal(spine: &CanalSpine<Rational>, e: &CanalError) -> Result<(), Tes
             prop_assert!(d.eval(&t) < q(0), "D({t}) must be negative");
         }
         CanalError::DegenerateSpine(_) | CanalError::NeedsLargerExtension(_) => {}
+        // a radius vanishing identically is refused (the envelope would be the spine)
+        CanalError::ZeroRadius => prop_assert!(spine.radius_poly().is_zero()),
         other => prop_assert!(false, "unexpected error {other}"),
     }
     Ok(())
@@ -62,6 +64,7 @@ proptest! {
                 let (dt, du) = b.degree();
                 prop_assert!(du <= 2 && dt <= 3 * 2);
             }
+            Err(CanalError::ZeroRadius) => prop_assert!(spine.radius_poly().is_zero()),
             Err(e) => {
                 prop_assert!(m1.derivative().is_zero() && m2.derivative().is_zero(), "{e}");
             }
