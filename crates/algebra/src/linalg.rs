@@ -493,6 +493,25 @@ impl<S: Scalar> Matrix<S> {
 
 /// Bareiss elimination on row vectors over a field: brings `m` to a fraction-free row
 /// echelon form in place and returns `(rank, number of row swaps)`.
+/// The pivot row for column `c` among rows `r..`: the first non-zero entry for exact
+/// fields, the largest by [`Field::pivot_size`] for floating point (partial pivoting).
+fn pivot_row<F: Field>(m: &[Vec<F>], r: usize, c: usize) -> Option<usize> {
+    let first = (r..m.len()).find(|&i| !m[i][c].is_zero())?;
+    let Some(mut best) = m[first][c].pivot_size() else {
+        return Some(first);
+    };
+    let mut p = first;
+    for (i, row) in m.iter().enumerate().skip(first + 1) {
+        if let Some(sz) = row[c].pivot_size() {
+            if sz > best {
+                best = sz;
+                p = i;
+            }
+        }
+    }
+    Some(p)
+}
+
 fn bareiss_echelon<F: Field>(m: &mut [Vec<F>], cols: usize) -> (usize, usize) {
     let rows = m.len();
     let mut prev = F::one();
@@ -502,7 +521,7 @@ fn bareiss_echelon<F: Field>(m: &mut [Vec<F>], cols: usize) -> (usize, usize) {
         if r >= rows {
             break;
         }
-        let Some(p) = (r..rows).find(|&i| !m[i][c].is_zero()) else {
+        let Some(p) = pivot_row(m, r, c) else {
             continue;
         };
         if p != r {
@@ -538,7 +557,7 @@ fn gauss_jordan<F: Field>(m: &mut [Vec<F>], cols: usize) -> Vec<usize> {
         if r >= rows {
             break;
         }
-        let Some(p) = (r..rows).find(|&i| !m[i][c].is_zero()) else {
+        let Some(p) = pivot_row(m, r, c) else {
             continue;
         };
         m.swap(p, r);
@@ -981,6 +1000,25 @@ pub fn null_space_f64(a: &Matrix<f64>, tol: f64) -> Result<Vec<Vec<f64>>, Linalg
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Partial pivoting in f64: without it the rounding residue 3 − 5·0.6000000000000001
+    /// (≈ −4·10⁻¹⁶) became the second pivot and the solution was off by 25 %. The
+    /// exact solution of this system is (3/5, 1, 1, −1).
+    #[test]
+    fn f64_solve_pivots_by_size() {
+        let a = Matrix::from_rows(vec![
+            vec![-5.0, 3.0, 0.0, 0.0],
+            vec![-5.0, 3.0, 1.0, 1.0],
+            vec![0.0, 0.0, 0.0, -1.0],
+            vec![0.0, 1.0, 0.0, 1.0],
+        ])
+        .expect("matrix");
+        let x = a.solve_unique(&[0.0, 0.0, 1.0, 0.0]).expect("solution");
+        for (xi, e) in x.iter().zip([0.6, 1.0, 1.0, -1.0]) {
+            assert!((xi - e).abs() < 1e-14, "{x:?}");
+        }
+        assert!((a.determinant().expect("det") - 5.0).abs() < 1e-13);
+    }
     use dashu_int::IBig;
 
     fn q(p: i64, d: i64) -> Rational {

@@ -53,6 +53,14 @@ pub fn ring_pow<R: Ring>(x: &R, k: usize) -> R {
 
 /// A commutative field.
 pub trait Field: Ring + Div<Output = Self> + DivAssign {
+    /// The size of the element as a pivot of Gaussian elimination: `None` for exact fields
+    /// (any non-zero pivot is exact), `|x|` for floating point, where elimination picks the
+    /// largest pivot of the column (partial pivoting; without it a rounding residue such as
+    /// `3 − 5·0.6000000000000001 ≈ −4·10⁻¹⁶` would be taken as a pivot).
+    fn pivot_size(&self) -> Option<f64> {
+        None
+    }
+
     /// The multiplicative inverse, `None` for zero.
     fn inv(&self) -> Option<Self> {
         if self.is_zero() {
@@ -93,7 +101,11 @@ impl Ring for f64 {
         n as f64
     }
 }
-impl Field for f64 {}
+impl Field for f64 {
+    fn pivot_size(&self) -> Option<f64> {
+        Some(self.abs())
+    }
+}
 impl Scalar for f64 {
     const EXACT: bool = false;
     fn from_rational(q: &Rational) -> Self {

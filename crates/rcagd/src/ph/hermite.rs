@@ -50,7 +50,7 @@ use super::util::*;
 use super::PhError;
 use rcagd_algebra::quadratic::{sqrt_in_extension, QuadExt};
 use rcagd_algebra::quaternion::Quaternion;
-use rcagd_algebra::{Certificate, Poly, Rational, Scalar};
+use rcagd_algebra::{Certificate, Poly, Rational, Ring, Scalar};
 
 /// Hermite data: end points and end derivatives.
 #[derive(Debug, Clone, PartialEq)]
@@ -220,16 +220,18 @@ fn check_data<K: Scalar>(d: &HermiteData<K>) -> Result<(), PhError> {
     Ok(())
 }
 
-/// The control points of the helical quintic from `d_s, d_f, X, c_0, c_2` (Besednjak (9.4)).
-pub(crate) fn control_points_from<K: Scalar>(
+/// The control points of the helical quintic from `d_s, d_f, X, c_0, c_2` (Besednjak (9.4)),
+/// in any ring that can represent the fractions `f(p, q) = p/q` (exact scalars, `f64`,
+/// intervals).
+pub(crate) fn control_points_from<K: Ring>(
     p_s: &[K; 3],
     d_s: &[K; 3],
     d_f: &[K; 3],
     x: &[K; 3],
     c0: &K,
     c2: &K,
+    f: &dyn Fn(i64, i64) -> K,
 ) -> Vec<[K; 3]> {
-    let f = |p: i64, q: i64| K::from_i64(p) / K::from_i64(q);
     let inc = [
         scale3(d_s, &f(1, 5)),
         scale3(
@@ -443,7 +445,8 @@ fn exact_points<K: Scalar>(
     let c0 = k0 - three_q.clone();
     let c2 = k2 - three_q;
     let x = scale3(&add3(y0, &scale3(y1, s)), &(K::one() / r3));
-    let pts = control_points_from(&data.p_s, &data.d_s, &data.d_f, &x, &c0, &c2);
+    let frac = |p: i64, q: i64| K::from_i64(p) / K::from_i64(q);
+    let pts = control_points_from(&data.p_s, &data.d_s, &data.d_f, &x, &c0, &c2, &frac);
     pts.iter()
         .map(|p| {
             Some([

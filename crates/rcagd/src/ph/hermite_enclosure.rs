@@ -27,7 +27,10 @@
 //! Derivation and the error model: docs/math/ph-curves.md, "Guaranteed-accuracy Hermite
 //! interpolants".
 
-use super::hermite::{refine_once, square_free, HermiteInterpolant, HermiteSolution};
+use super::hermite::{
+    control_points_from, refine_once, square_free, HermiteInterpolant, HermiteSolution,
+};
+use super::util::{add3, scale3};
 use super::PhError;
 use rcagd_algebra::bernstein::from_bernstein;
 use rcagd_algebra::interval::{pow2, Interval};
@@ -74,70 +77,8 @@ fn iv3(v: &[Rational; 3]) -> [Interval; 3] {
     [iv(&v[0]), iv(&v[1]), iv(&v[2])]
 }
 
-fn add3(a: &[Interval; 3], b: &[Interval; 3]) -> [Interval; 3] {
-    [
-        a[0].clone() + b[0].clone(),
-        a[1].clone() + b[1].clone(),
-        a[2].clone() + b[2].clone(),
-    ]
-}
-
-fn scale3(a: &[Interval; 3], c: &Interval) -> [Interval; 3] {
-    [
-        a[0].clone() * c.clone(),
-        a[1].clone() * c.clone(),
-        a[2].clone() * c.clone(),
-    ]
-}
-
 fn frac(p: i64, q: i64) -> Interval {
     iv(&(Rational::from(p) / Rational::from(q)))
-}
-
-/// Control points (Besednjak (9.4)) in interval arithmetic.
-fn control_points(
-    p_s: &[Interval; 3],
-    d_s: &[Interval; 3],
-    d_f: &[Interval; 3],
-    x: &[Interval; 3],
-    c0: &Interval,
-    c2: &Interval,
-) -> Vec<[Interval; 3]> {
-    let two = Interval::from_i64(2);
-    let inc = [
-        scale3(d_s, &frac(1, 5)),
-        scale3(
-            &add3(&scale3(d_s, &(two.clone() * c0.clone())), &scale3(x, c2)),
-            &frac(1, 10),
-        ),
-        scale3(
-            &add3(
-                x,
-                &scale3(
-                    &add3(
-                        &add3(
-                            &scale3(d_s, &(c0.clone() * c0.clone())),
-                            &scale3(x, &(c0.clone() * c2.clone())),
-                        ),
-                        &scale3(d_f, &(c2.clone() * c2.clone())),
-                    ),
-                    &Interval::from_i64(4),
-                ),
-            ),
-            &frac(1, 30),
-        ),
-        scale3(
-            &add3(&scale3(x, c0), &scale3(d_f, &(two * c2.clone()))),
-            &frac(1, 10),
-        ),
-        scale3(d_f, &frac(1, 5)),
-    ];
-    let mut pts = vec![p_s.clone()];
-    for d in inc.iter() {
-        let next = add3(&pts[pts.len() - 1], d);
-        pts.push(next);
-    }
-    pts
 }
 
 use rcagd_algebra::Ring;
@@ -290,7 +231,15 @@ impl HermiteSolution<QuadExt> {
         let c0 = k0 - three_q.clone();
         let c2 = k2 - three_q;
         let x = scale3(&add3(y0, &scale3(y1, s)), &inv_r3);
-        Ok(Some(control_points(&iv3(p_s), d_s, d_f, &x, &c0, &c2)))
+        Ok(Some(control_points_from(
+            &iv3(p_s),
+            d_s,
+            d_f,
+            &x,
+            &c0,
+            &c2,
+            &frac,
+        )))
     }
 }
 

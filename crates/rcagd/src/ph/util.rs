@@ -10,7 +10,7 @@ use num_traits::{One, Zero};
 use rcagd_algebra::complex::Complex;
 use rcagd_algebra::quaternion::Quaternion;
 pub(crate) use rcagd_algebra::{format_poly, format_scalar as fmt_scalar};
-use rcagd_algebra::{Certificate, Poly, Scalar};
+use rcagd_algebra::{Certificate, Poly, Ring, Scalar};
 
 /// A 3-vector of scalars.
 pub(crate) type V3<F> = [F; 3];
@@ -111,7 +111,7 @@ pub(crate) fn v3_cert<F: Scalar>(
 pub(crate) fn zero3<F: Scalar>() -> V3<F> {
     [F::zero(), F::zero(), F::zero()]
 }
-pub(crate) fn add3<F: Scalar>(a: &V3<F>, b: &V3<F>) -> V3<F> {
+pub(crate) fn add3<F: Ring>(a: &V3<F>, b: &V3<F>) -> V3<F> {
     [
         a[0].clone() + b[0].clone(),
         a[1].clone() + b[1].clone(),
@@ -125,7 +125,7 @@ pub(crate) fn sub3<F: Scalar>(a: &V3<F>, b: &V3<F>) -> V3<F> {
         a[2].clone() - b[2].clone(),
     ]
 }
-pub(crate) fn scale3<F: Scalar>(a: &V3<F>, c: &F) -> V3<F> {
+pub(crate) fn scale3<F: Ring>(a: &V3<F>, c: &F) -> V3<F> {
     [
         a[0].clone() * c.clone(),
         a[1].clone() * c.clone(),
