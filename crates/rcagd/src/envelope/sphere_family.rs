@@ -59,9 +59,7 @@ use crate::error::format_scalar;
 use crate::lines::net::{
     cst2, fibration_certificate, omega_form, omega_parametrization, CPoly, NetParameters,
 };
-use crate::lines::{
-    AxisPosition, ComplexPointRow, LineNet, NetError, NetKind, PointRow, SqrtScalar,
-};
+use crate::lines::{AxisPosition, LineNet, NetError, NetKind, SqrtScalar};
 use crate::pn::poly::{
     cancel_common, cancel_gcd, det4, gcd2, identity_cert, mag, normalize_content, patch_of,
     sign_on_domain, zero_cert, Domain, Sign,
@@ -522,21 +520,8 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
                 rows4.len()
             )));
         }
-        let r = |k: usize| rows4[k].clone();
-        let net = match kind {
-            NetKind::Hyperbolic => {
-                LineNet::hyperbolic(PointRow::new(r(0), r(1))?, PointRow::new(r(2), r(3))?)?
-            }
-            NetKind::Parabolic => {
-                LineNet::parabolic(PointRow::new(r(0), r(1))?, PointRow::new(r(2), r(3))?)?
-            }
-            NetKind::Elliptic => LineNet::elliptic(ComplexPointRow {
-                origin_re: r(0),
-                origin_im: r(1),
-                direction_re: r(2),
-                direction_im: r(3),
-            })?,
-        };
+        let four: [[F; 4]; 4] = core::array::from_fn(|k| rows4[k].clone());
+        let net = LineNet::from_points(kind, &four)?;
         let a = Support {
             re: grid_poly(a),
             im: a_im.map(grid_poly).unwrap_or_else(|| MPoly::zero(2)),

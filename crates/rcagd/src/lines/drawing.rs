@@ -16,7 +16,6 @@ use super::generation::{GeneratedNet, GenerationError};
 use super::net::{LineNet, NetError, NetKind, PointRow};
 use super::order_one::{CubicChordCongruence, OneNCongruence, OrderOneError};
 use super::plucker::wedge;
-use super::ComplexPointRow;
 use crate::error::format_scalar;
 use crate::pn::poly::{patch_of, sign_on_domain, Domain, Sign};
 use crate::Certified;
@@ -121,21 +120,8 @@ pub fn congruence_strips<F: Scalar>(
                     pts.len()
                 )));
             }
-            let r = |k: usize| pts[k].clone();
-            let net = match kind {
-                NetKind::Hyperbolic => {
-                    LineNet::hyperbolic(PointRow::new(r(0), r(1))?, PointRow::new(r(2), r(3))?)?
-                }
-                NetKind::Parabolic => {
-                    LineNet::parabolic(PointRow::new(r(0), r(1))?, PointRow::new(r(2), r(3))?)?
-                }
-                NetKind::Elliptic => LineNet::elliptic(ComplexPointRow {
-                    origin_re: r(0),
-                    origin_im: r(1),
-                    direction_re: r(2),
-                    direction_im: r(3),
-                })?,
-            };
+            let four: [[F; 4]; 4] = core::array::from_fn(|k| pts[k].clone());
+            let net = LineNet::from_points(*kind, &four)?;
             let (p, q) = net.line_points();
             (p, q, net.certify())
         }

@@ -353,6 +353,30 @@ fn cplane3<F: Scalar>(p: &[CPoly<F>; 4], q: &[CPoly<F>; 4], r: &[CPoly<F>; 4]) -
 }
 
 impl<F: Scalar> LineNet<F> {
+    /// The net of the given kind from four points: the axes `c₀ + u c₁`, `d₀ + v d₁`
+    /// (hyperbolic, parabolic) or the complex axis `(Re c₀ + i Im c₀) + u (Re c₁ + i Im c₁)`
+    /// (elliptic), as the recipes write them.
+    ///
+    /// # Errors
+    /// As [`PointRow::new`], [`Self::hyperbolic`], [`Self::parabolic`], [`Self::elliptic`].
+    pub fn from_points(kind: NetKind, p: &[[F; 4]; 4]) -> Result<Self, NetError> {
+        let r = |k: usize| p[k].clone();
+        match kind {
+            NetKind::Hyperbolic => {
+                LineNet::hyperbolic(PointRow::new(r(0), r(1))?, PointRow::new(r(2), r(3))?)
+            }
+            NetKind::Parabolic => {
+                LineNet::parabolic(PointRow::new(r(0), r(1))?, PointRow::new(r(2), r(3))?)
+            }
+            NetKind::Elliptic => LineNet::elliptic(ComplexPointRow {
+                origin_re: r(0),
+                origin_im: r(1),
+                direction_re: r(2),
+                direction_im: r(3),
+            }),
+        }
+    }
+
     /// The hyperbolic net of the lines meeting the skew axes `c(u)`, `d(v)`.
     ///
     /// # Errors
