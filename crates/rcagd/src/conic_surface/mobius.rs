@@ -271,21 +271,8 @@ impl CanalHypersurface {
         u: (Q, Q),
     ) -> Result<(Vec<rcagd_geom::BezierPatch<Q>>, Certificate), QuadricFamilyError> {
         let pe = |e: super::ConicSurfaceError| QuadricFamilyError::Patch(e.to_string());
-        let nv = self.point[0].nvars();
-        let cut = |p: &MPoly<Q>| {
-            let mut s = p.clone();
-            for v in 2..nv {
-                s = s.specialize(v, &Q::ZERO);
-            }
-            MPoly::from_terms(
-                2,
-                s.terms()
-                    .map(|(e, c)| (e[..2].to_vec(), c.clone()))
-                    .collect(),
-            )
-            .unwrap_or_else(|_| MPoly::zero(2))
-        };
-        let coords: [MPoly<Q>; 4] = core::array::from_fn(|i| cut(&self.point[i]));
+        let coords: [MPoly<Q>; 4] =
+            core::array::from_fn(|i| super::restrict_to_first_two(&self.point[i]));
         let patch = super::point_patch(&coords, t, u, "y₀").map_err(pe)?;
         super::positive_pieces(patch).map_err(pe)
     }

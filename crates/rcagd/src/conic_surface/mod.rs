@@ -155,7 +155,13 @@ fn dot4(a: &[P; 4], b: &[P; 4]) -> P {
 }
 
 /// Divides a polynomial vector by the gcd of its entries (monic gcd; content kept).
-fn primitive<const N: usize>(v: [P; N]) -> [P; N] {
+fn primitive<const N: usize>(mut v: [P; N]) -> [P; N] {
+    make_primitive(&mut v);
+    v
+}
+
+/// [`primitive`] in place, for vectors of any length.
+pub(crate) fn make_primitive(v: &mut [P]) {
     let g = v.iter().filter(|x| !x.is_zero()).fold(pz(), |acc, x| {
         if acc.is_zero() {
             x.clone()
@@ -164,10 +170,30 @@ fn primitive<const N: usize>(v: [P; N]) -> [P; N] {
         }
     });
     if g.degree().is_none_or(|d| d == 0) {
-        return v;
+        return;
     }
     let g = g.monic();
-    v.map(|x| x.div_exact(&g).unwrap_or(x))
+    for x in v.iter_mut() {
+        if let Ok(q) = x.div_exact(&g) {
+            *x = q;
+        }
+    }
+}
+
+/// The polynomial in the first two variables obtained by setting every further variable
+/// to 0 (a chart `u₃ = … = 0` of a map in `(t, u₁, u₂, …)`).
+pub(crate) fn restrict_to_first_two(p: &MPoly<Q>) -> MPoly<Q> {
+    let mut s = p.clone();
+    for v in 2..p.nvars() {
+        s = s.specialize(v, &Q::ZERO);
+    }
+    MPoly::from_terms(
+        2,
+        s.terms()
+            .map(|(e, c)| (e[..2].to_vec(), c.clone()))
+            .collect(),
+    )
+    .unwrap_or_else(|_| MPoly::zero(2))
 }
 
 fn eval_mat(m: &Mat4, t: &Q) -> Matrix<Q> {

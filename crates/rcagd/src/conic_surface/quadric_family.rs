@@ -113,21 +113,9 @@ fn pz() -> P {
 }
 
 /// Divides a polynomial vector by the monic gcd of its entries.
-fn primitive(v: Vec<P>) -> Vec<P> {
-    let g = v.iter().filter(|x| !x.is_zero()).fold(pz(), |acc, x| {
-        if acc.is_zero() {
-            x.clone()
-        } else {
-            acc.gcd(x)
-        }
-    });
-    if g.degree().is_none_or(|d| d == 0) {
-        return v;
-    }
-    let g = g.monic();
-    v.into_iter()
-        .map(|x| x.div_exact(&g).unwrap_or(x))
-        .collect()
+fn primitive(mut v: Vec<P>) -> Vec<P> {
+    super::make_primitive(&mut v);
+    v
 }
 
 fn form(m: &Mat, a: &[P], b: &[P]) -> P {
@@ -713,22 +701,8 @@ impl QuadricFamilyParam {
             ]
         } else {
             let at = self.at(t0);
-            let nv = at[0].nvars();
             // keep u₁, u₂; set u₃ … = 0
-            let cut = |p: &MPoly<Q>| {
-                let mut s = p.clone();
-                for v in 2..nv {
-                    s = s.specialize(v, &Q::ZERO);
-                }
-                MPoly::from_terms(
-                    2,
-                    s.terms()
-                        .map(|(e, c)| (e[..2].to_vec(), c.clone()))
-                        .collect(),
-                )
-                .unwrap_or_else(|_| MPoly::zero(2))
-            };
-            core::array::from_fn(|i| cut(&at[order[i]]))
+            core::array::from_fn(|i| super::restrict_to_first_two(&at[order[i]]))
         };
         let patch = point_patch(&coords, a, b, &format!("x{w}")).map_err(pe)?;
         positive_pieces(patch).map_err(pe)
