@@ -92,6 +92,30 @@ pub fn build_refused(dir: &Path, recipe: &str) -> String {
     stderr(&o)
 }
 
+/// Builds `recipe` in a fresh directory and returns the JSON of object `name`, asserting
+/// that all its certificates hold.
+pub fn build_json_certified(tag: &str, recipe: &str, name: &str) -> serde_json::Value {
+    let dir = temp_dir(tag);
+    let v = read_json(&build_json_in(&dir, recipe), name);
+    assert_eq!(v["all_certificates_hold"], true, "{v}");
+    v
+}
+
+/// The exact text of the named value of an object's JSON (a JSON string as is, anything
+/// else in its JSON form).
+pub fn value_exact(obj: &serde_json::Value, name: &str) -> String {
+    let v = obj["values"]
+        .as_array()
+        .expect("values")
+        .iter()
+        .find(|v| v["name"] == name)
+        .unwrap_or_else(|| panic!("no value {name}"));
+    match &v["exact"] {
+        serde_json::Value::String(s) => s.clone(),
+        other => other.to_string(),
+    }
+}
+
 /// The JSON document `out/<name>.json` written by a build.
 pub fn read_json(out: &Path, name: &str) -> serde_json::Value {
     let text = std::fs::read_to_string(out.join(format!("{name}.json"))).expect("json");

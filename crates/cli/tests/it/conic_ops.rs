@@ -2,28 +2,9 @@
 //! re-checked as a certificate) and `quadric_family` (Peternell §5.1): values compared
 //! with hand derivations, and bad input refused with the parameter named.
 
-use crate::common::{build_json_in, build_refused, read_json, temp_dir};
-use serde_json::Value;
-
-fn build_json(tag: &str, recipe: &str, name: &str) -> Value {
-    let dir = temp_dir(tag);
-    let v = read_json(&build_json_in(&dir, recipe), name);
-    assert_eq!(v["all_certificates_hold"], true, "{v}");
-    v
-}
-
-fn exact(obj: &Value, name: &str) -> String {
-    let v = obj["values"]
-        .as_array()
-        .expect("values")
-        .iter()
-        .find(|v| v["name"] == name)
-        .unwrap_or_else(|| panic!("no value {name}"));
-    match &v["exact"] {
-        Value::String(s) => s.clone(),
-        other => other.to_string(),
-    }
-}
+use crate::common::{
+    build_json_certified as build_json, build_refused, temp_dir, value_exact as exact,
+};
 
 /// X² + Y² − (t² + 9)Z² = 0: (t, ±3, 1) by hand; the engine returns a primitive point.
 /// X² + Y² − (t² + 2)Z² = 0: −1 is not a square modulo t² + 2 (Q(√−2) has no √−1).

@@ -1,28 +1,9 @@
 //! The query ops of the quadric and Laguerre topics: values compared with hand
 //! derivations (in the comments), and bad input refused with the parameter named.
 
-use crate::common::{build_json_in, build_refused, read_json, temp_dir};
-use serde_json::Value;
-
-fn build_json(tag: &str, recipe: &str, name: &str) -> Value {
-    let dir = temp_dir(tag);
-    let v = read_json(&build_json_in(&dir, recipe), name);
-    assert_eq!(v["all_certificates_hold"], true, "{v}");
-    v
-}
-
-fn exact(obj: &Value, name: &str) -> String {
-    let v = obj["values"]
-        .as_array()
-        .expect("values")
-        .iter()
-        .find(|v| v["name"] == name)
-        .unwrap_or_else(|| panic!("no value {name}"));
-    match &v["exact"] {
-        Value::String(s) => s.clone(),
-        other => other.to_string(),
-    }
-}
+use crate::common::{
+    build_json_certified as build_json, build_refused, temp_dir, value_exact as exact,
+};
 
 fn refused(tag: &str, recipe: &str, words: &[&str]) {
     let e = build_refused(&temp_dir(tag), recipe);
