@@ -16,29 +16,9 @@ set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/.." && pwd)"
-venv="${RCAGD_OCC_VENV:-${XDG_CACHE_HOME:-$HOME/.cache}/rcagd/occ-venv}"
-python="${PYTHON:-python3}"
-
 # Exit status 3 (not 1) when the environment cannot be made: no python3/venv, or
 # PyPI unreachable. .ci/run skips the check then, and fails on 1.
-unavailable() {
-    echo "occ_check: cannot set up OpenCascade: $*" >&2
-    exit 3
-}
-if [[ ! -x "$venv/bin/python" ]]; then
-    command -v "$python" >/dev/null 2>&1 || unavailable "no $python"
-    echo "creating $venv with cadquery-ocp (OpenCascade) from PyPI ..." >&2
-    mkdir -p "$(dirname "$venv")"
-    "$python" -m venv "$venv" || { rm -rf "$venv"; unavailable "$python -m venv failed (python3-venv missing?)"; }
-    "$venv/bin/pip" install --quiet --timeout 30 --retries 1 --upgrade pip >&2 || true
-fi
-"$venv/bin/python" -c "import OCP" 2>/dev/null || {
-    echo "installing cadquery-ocp into $venv ..." >&2
-    "$venv/bin/pip" install --quiet --timeout 30 --retries 2 cadquery-ocp >&2 ||
-        unavailable "pip install cadquery-ocp failed (is PyPI reachable?)"
-    "$venv/bin/python" -c "import OCP" 2>/dev/null ||
-        unavailable "cadquery-ocp installed but 'import OCP' fails"
-}
+py="$("$here/occ_venv.sh")" || exit 3
 
 if [[ $# -ge 1 && "$1" != -* ]]; then
     dir="$1"
@@ -49,4 +29,4 @@ else
     (cd "$root" && RCAGD_EXCHANGE_OUT="$dir" cargo test --quiet -p rcagd-io --test it exchange::write_gallery_files >&2)
 fi
 
-exec "$venv/bin/python" "$here/occ_check.py" "$dir" "$@"
+exec "$py" "$here/occ_check.py" "$dir" "$@"
