@@ -363,6 +363,72 @@ proptest! {
         }
     }
 
+    /// Random cyclide blends: two points `P₁, P₂` of a random exact pe circle (rational
+    /// angles) with the circle's tangents `d₁, d₂` there as the cones' lines. The pe circle
+    /// tangent to both lines at `P₁, P₂` is the given one, so `blend_cones` must succeed,
+    /// every certificate must hold, the blend's points must lie on the given circle's
+    /// cyclide (its implicit equation), and the `f64` blend must agree with the exact one.
+    #[test]
+    fn random_blends_of_points_on_a_pe_circle(
+        b in prop::array::uniform3(boost()),
+        rot in small(),
+        c in prop::array::uniform4(small()),
+        rho in (1i64..=5, 1i64..=3),
+        a1 in small(),
+        a2 in small(),
+    ) {
+        use rcagd::cyclide::blend_cones;
+        prop_assume!(a1 != a2);
+        let l = lorentz(b, rot);
+        let u = l(&[qi(1), qi(0), qi(0), qi(0)]);
+        let v = l(&[qi(0), qi(1), qi(0), qi(0)]);
+        let rho = q(rho.0, rho.1);
+        let cy = match DupinCyclide::from_pe_circle(c.clone(), u.clone(), v.clone(), rho.clone()) {
+            Ok(cy) => cy,
+            Err(CyclideError::Degenerate(_)) => return Ok(()),
+            Err(e) => panic!("{e}"),
+        };
+        // the point of angle θ with cos θ = (1 − a²)/(1 + a²), sin θ = 2a/(1 + a²), and the
+        // tangent there (a pe unit vector: ⟨d, d⟩ = 1 > 0, a real cone of revolution)
+        let at = |a: &Q| -> ([Q; 4], [Q; 4]) {
+            let den = qi(1) + a.clone() * a.clone();
+            let (co, si) = ((qi(1) - a.clone() * a.clone()) / den.clone(), qi(2) * a.clone() / den);
+            let p = core::array::from_fn(|i| {
+                c[i].clone() + rho.clone() * (co.clone() * u[i].clone() + si.clone() * v[i].clone())
+            });
+            let d = core::array::from_fn(|i| co.clone() * v[i].clone() - si.clone() * u[i].clone());
+            (p, d)
+        };
+        let ((p1, d1), (p2, d2)) = (at(&a1), at(&a2));
+        // a contact sphere of radius 0 is a cone's vertex, not a contact circle
+        prop_assume!(p1[3] != qi(0) && p2[3] != qi(0));
+        let blend = match blend_cones(p1.clone(), d1.clone(), p2.clone(), d2.clone()) {
+            Ok(bl) => bl,
+            Err(e) => return Err(TestCaseError::fail(format!("blend refused: {e}"))),
+        };
+        for cert in blend.certify() {
+            prop_assert!(cert.holds, "{}", cert);
+        }
+        let patches = blend.patches().expect("patches");
+        prop_assert!(!patches.is_empty());
+        let f = |x: &[Q; 4]| -> [f64; 4] { core::array::from_fn(|i| Scalar::to_f64(&x[i])) };
+        let bf = blend_cones(f(&p1), f(&d1), f(&p2), f(&d2)).expect("f64 blend");
+        let pf = bf.patches().expect("f64 patches");
+        prop_assert_eq!(pf.len(), patches.len());
+        for (pe, pff) in patches.iter().zip(&pf) {
+            for (s, t) in [(q(1, 3), q(1, 2)), (qi(0), qi(1)), (q(3, 4), q(1, 5))] {
+                let x = pe.eval(&s, &t).expect("finite");
+                let x3: [Q; 3] = core::array::from_fn(|i| x[i].clone());
+                prop_assert_eq!(cy.implicit_value(&x3), qi(0), "blend point off the cyclide");
+                let xf = pff.eval(&Scalar::to_f64(&s), &Scalar::to_f64(&t)).expect("finite");
+                let scale = x.iter().map(|y| Scalar::to_f64(y).abs()).fold(1.0, f64::max);
+                for i in 0..3 {
+                    prop_assert!((Scalar::to_f64(&x[i]) - xf[i]).abs() <= 1e-8 * scale, "{:?} {:?}", x, xf);
+                }
+            }
+        }
+    }
+
     /// Random pe parabolas: the parabolic cyclide and its pencil are certified.
     #[test]
     fn random_pe_parabolas(
