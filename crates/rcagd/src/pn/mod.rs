@@ -43,6 +43,7 @@ pub mod modeling;
 pub mod offset;
 pub mod planar;
 pub(crate) mod poly;
+pub mod reducing_frame;
 pub mod ruled;
 pub mod support;
 pub mod surface;

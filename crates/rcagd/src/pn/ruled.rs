@@ -376,6 +376,43 @@ impl<F: Scalar> ConeFamilyEnvelope<F> {
         })
     }
 
+    /// The envelope built in the coordinates `x′ = H x` of an orthogonal, symmetric `H`
+    /// (a reflection), mapped back: the surface `x = H x′`, `n = H n′`, and the given cycle
+    /// families `c₁, c₂` (in the original coordinates, of which `self`'s are the images).
+    /// The isotropic surface and `(p₁, p₂)` stay those of the frame.
+    pub(crate) fn transformed(
+        &self,
+        h: &[[F; 3]; 3],
+        c1: CycleFamily<F>,
+        c2: CycleFamily<F>,
+    ) -> Result<Self, PnError> {
+        let x = self.surface.point_polys();
+        let n = self.surface.normal_polys();
+        let map = |v: &[MPoly<F>; 4]| -> [MPoly<F>; 4] {
+            let mut out = v.clone();
+            for (i, row) in h.iter().enumerate() {
+                out[i + 1] = (0..3).fold(MPoly::zero(2), |acc, j| &acc + &v[j + 1].scale(&row[j]));
+            }
+            out
+        };
+        let surface = PnSurface::from_point_normal(map(x), map(n))?.named(self.surface.name());
+        let (w1, w2) = (&c1.den, &c2.den);
+        let m: [MPoly<F>; 3] =
+            std::array::from_fn(|i| &(&c1.center[i] * w2) - &(&c2.center[i] * w1));
+        let r = &(&c1.radius * w2) - &(&c2.radius * w1);
+        let md = w1 * w2;
+        Ok(ConeFamilyEnvelope {
+            c1,
+            c2,
+            m,
+            r,
+            md,
+            p: self.p.clone(),
+            isotropic: self.isotropic.clone(),
+            surface,
+        })
+    }
+
     /// The envelope as a PN surface in `(t, u)`.
     pub fn surface(&self) -> &PnSurface<F> {
         &self.surface

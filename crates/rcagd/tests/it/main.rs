@@ -21,6 +21,7 @@ mod primitives;
 mod quadric_family;
 mod quadric_props;
 mod quadric_query;
+mod reducing_frame;
 mod seed000_examples;
 mod seed001_examples;
 mod seed003_examples;
