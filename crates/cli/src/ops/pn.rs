@@ -19,13 +19,15 @@ use rcagd::pn::developable::DevelopablePn;
 use rcagd::pn::hypercyclide::{CyclographicImage, Hypercyclide, PeSimilarity, RegularQuadric};
 use rcagd::pn::modeling::{HermiteDatum, PnModel};
 use rcagd::pn::planar::{surface_of_revolution, PnCurve};
-use rcagd::pn::ruled::{CanalPn, ConeFamilyEnvelope, CycleFamily, EllipsoidPn, RuledPn};
+use rcagd::pn::reducing_frame::ReducedConeEnvelope;
+use rcagd::pn::ruled::{CanalPn, CycleFamily, EllipsoidPn, RuledPn};
 use rcagd::pn::support::{anticaustic, anticaustic_certificates, from_support_function};
 use rcagd::pn::{Domain, IsotropicSurface, PnError, PnSurface, RatFn};
 use rcagd::Certified;
 use rcagd_algebra::mpoly::MPoly;
 use rcagd_algebra::rational::format_rational;
 use rcagd_algebra::{Certificate, Rational};
+use rcagd_io::quantity::{NamedQuantity, Quantity};
 
 type Q = Rational;
 
@@ -666,7 +668,7 @@ fn build_canal(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 
 const PN_CONE_ENVELOPE: OpSpec = OpSpec {
     name: "pn_cone_envelope",
-    summary: "the envelope of the cones of revolution spanned by two rational cycle curves (m₁; r₁)(t), (m₂; r₂)(t) (Peternell Thm 4.5) as a PN surface in (t, u), with exact offsets (r_i ↦ r_i + d); needs |m₁ − m₂|² − (r₁ − r₂)² to be a sum of two squares over Q(t)",
+    summary: "the envelope of the cones of revolution spanned by two rational cycle curves (m₁; r₁)(t), (m₂; r₂)(t) (Peternell Thm 4.5) as a PN surface in (t, u), with exact offsets (r_i ↦ r_i + d), built in the degree-reducing frame of §4.5.1 when one is rational (Prop. 4.1: unit normal of degree 2k − 2 in t); needs |m₁ − m₂|² − (r₁ − r₂)² to be a sum of two squares over Q(t)",
     params: &[
         ParamSpec::required(
             "center1",
@@ -738,11 +740,32 @@ fn cycle_family(
 fn build_cone_envelope(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let c1 = cycle_family(args, "center1", "radius1", "denominator1")?;
     let c2 = cycle_family(args, "center2", "radius2", "denominator2")?;
-    let env = ConeFamilyEnvelope::new(c1, c2, None).map_err(blame("center2"))?;
+    let reduced = ReducedConeEnvelope::new(c1, c2).map_err(blame("center2"))?;
+    let env = reduced.envelope();
     let mut certs = prefixed("cone family: ", env.tangency_certificates());
     certs.extend(prefixed("cone family: ", env.cone_certificates()));
+    certs.extend(prefixed("degree-reducing frame: ", reduced.frame_certificates()));
     let mut objs =
         surface_objects(args, &oriented(args, env.surface()), &domain(args)?, certs, "domain")?;
+    let axis = match reduced.frame() {
+        Some(f) => Quantity::rationals(&f.zeta),
+        None => Quantity::Text("none".into()),
+    };
+    let values = vec![
+        NamedQuantity::new(
+            "frame_axis",
+            "the x₃-axis ζ of the degree-reducing frame (Peternell §4.5.1) in which the envelope was built, or none",
+            axis,
+        ),
+        NamedQuantity::new(
+            "normal_degree_t",
+            "the degree in t of the unit normal's numerators (Prop. 4.1: 2k − 2 in the reducing frame)",
+            Quantity::Integer(env.surface().normal_degree().0 as i64),
+        ),
+    ];
+    if let Some(first) = objs.first_mut() {
+        first.values = values;
+    }
     // each offset object: the offset touches the offset cycle families (m_i; r_i ± d)
     let sign = if negative_orientation(args) { -Q::from(1) } else { Q::from(1) };
     for (k, d) in distances(args)?.into_iter().enumerate() {

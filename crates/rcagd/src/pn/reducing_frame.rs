@@ -437,29 +437,42 @@ fn rotate_family<F: Scalar>(c: &CycleFamily<F>, h: &[[F; 3]; 3]) -> CycleFamily<
     CycleFamily::new(centre.clone(), r.clone(), w.clone()).unwrap_or_else(|_| c.clone())
 }
 
+impl<F: Scalar> ReducedConeEnvelope<F> {
+    /// The frame's certificates (orthonormal, `d | β`, `d | α`) and Proposition 4.1's
+    /// degree `deg_t n ≤ 2k − 2`; empty when no frame was used.
+    pub fn frame_certificates(&self) -> Vec<Certificate> {
+        let Some(f) = &self.frame else {
+            return Vec::new();
+        };
+        let (c1, c2) = self.envelope.families();
+        let (m, r) = difference(c1, c2);
+        let mut out = f.certify(&m, &r);
+        let deg = normal_degree_t(&self.envelope);
+        let bound = (2 * self.k).saturating_sub(2);
+        let given = if self.unreduced.0 == usize::MAX {
+            "no envelope".to_string()
+        } else {
+            self.unreduced.0.to_string()
+        };
+        out.push(Certificate {
+            property: format!(
+                "deg_t n = {deg} ≤ 2k − 2 = {bound} for data of degree k = {} (Peternell, Prop. 4.1; in the given coordinates: {given})",
+                self.k
+            ),
+            holds: deg <= bound,
+            exact: true,
+            residual: (deg > bound).then(|| format!("degree {deg}")),
+        });
+        out
+    }
+}
+
 impl<F: Scalar> Certified for ReducedConeEnvelope<F> {
     /// The envelope's certificates (PN, tangency to both cycle families, contact with every
-    /// cone), the frame's (orthonormal, `d | β`, `d | α`), and Proposition 4.1's degree:
-    /// `deg_t n ≤ 2k − 2` when a frame was found.
+    /// cone) and [`Self::frame_certificates`].
     fn certify(&self) -> Vec<Certificate> {
         let mut out = self.envelope.certify();
-        if let Some(f) = &self.frame {
-            let (c1, c2) = self.envelope.families();
-            let (m, r) = difference(c1, c2);
-            out.extend(f.certify(&m, &r));
-            let deg = normal_degree_t(&self.envelope);
-            let bound = (2 * self.k).saturating_sub(2);
-            out.push(Certificate {
-                property: format!(
-                    "deg_t n = {deg} ≤ 2k − 2 = {bound} for data of degree k = {} (Peternell, Prop. 4.1; {} in the given coordinates)",
-                    self.k,
-                    if self.unreduced.0 == usize::MAX { "no envelope".to_string() } else { self.unreduced.0.to_string() }
-                ),
-                holds: deg <= bound,
-                exact: true,
-                residual: (deg > bound).then(|| format!("degree {deg}")),
-            });
-        }
+        out.extend(self.frame_certificates());
         out
     }
 }
