@@ -222,13 +222,22 @@ fn f64_agrees_with_exact_on_the_theorem_4_5_example() {
 }
 
 /// Known defect (found by the property test above): for `m₁ = 0, r₁ = t, M = (0, −t, ·)`,
-/// `p = (1 − 3t, 0)` the `f64` envelope differs from the exact one at `(t, u) = (1/3, 1/2)`
-/// although the data are integers (exact in `f64`) and the isotropic surfaces agree: the
-/// `f64` common-factor cancellation in `PnSurface::assemble` (tolerance-based division and
-/// gcd of `pn/poly.rs`) removes a factor that is not common. Run with `--ignored`.
+/// `p = (1 − 3t, 0)` the exact envelope has point bidegree (8, 4) and the `f64` one (9, 6):
+/// the exact path cancels a common factor vanishing at `t = 1/3` by a polynomial gcd, the
+/// `f64` path has no gcd (`pn/poly.rs`, `gcd2` returns 1 for `f64`), so the `f64` surface
+/// keeps a base point there and evaluates to 0/0 rounding noise at `(1/3, 1/2)`. Away from
+/// the base point both parametrize the same surface (checked by
+/// `f64_envelope_agrees_away_from_its_base_point`). Run with `--ignored`.
 #[test]
 #[ignore = "known defect of the f64 path: docs/plans/pn-laguerre.md"]
 fn f64_envelope_of_random_integer_families() {
+    let (env, envf) = base_point_example();
+    assert_eq!(envf.surface().degree(), env.surface().degree());
+    assert_points_agree(&env, &envf, &q(1, 3), &q(1, 2));
+}
+
+/// The example of the known defect above, exact and in `f64`.
+fn base_point_example() -> (ConeFamilyEnvelope<Q>, ConeFamilyEnvelope<f64>) {
     let z = || q(0, 1);
     let (c1, c2, p) = families(
         &[z(), z(), z(), z(), z(), z()],
@@ -245,7 +254,15 @@ fn f64_envelope_of_random_integer_families() {
     ];
     let envf =
         ConeFamilyEnvelope::new(family_f64(&c1), family_f64(&c2), Some(pf)).expect("f64 envelope");
-    for (a, b) in [(q(1, 3), q(1, 2)), (q(2, 3), q(-1, 2)), (q(1, 1), q(0, 1))] {
+    (env, envf)
+}
+
+/// The `f64` envelope of the base-point example agrees with the exact one at parameters
+/// away from its uncancelled base point `t = 1/3` (relative 1e-9).
+#[test]
+fn f64_envelope_agrees_away_from_its_base_point() {
+    let (env, envf) = base_point_example();
+    for (a, b) in [(q(2, 3), q(-1, 2)), (q(1, 1), q(0, 1)), (q(1, 5), q(3, 2))] {
         assert_points_agree(&env, &envf, &a, &b);
     }
 }
