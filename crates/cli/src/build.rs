@@ -253,30 +253,59 @@ pub fn build_recipe(
     }
 }
 
-/// Reads a recipe file (`-`: standard input).
+/// Reads a recipe file (`-`: standard input), refusing a recipe larger than
+/// [`Limits::recipe_bytes`](crate::limits::Limits) (reading stops there, so `/dev/zero` is an
+/// error, not an exhausted memory) or with more than
+/// [`Limits::objects`](crate::limits::Limits) objects.
 ///
 /// # Errors
-/// The diagnostics of an unreadable or invalid recipe.
+/// The diagnostics of an unreadable, too large or invalid recipe.
 pub fn load(path: &Path) -> Result<Recipe, Vec<Diagnostic>> {
+    let limits = crate::limits::Limits::current();
     let display = path.display().to_string();
-    let bytes = if display == "-" {
-        let mut buf = Vec::new();
-        std::io::stdin().read_to_end(&mut buf).map_err(|e| {
-            vec![Diagnostic::whole_file(
-                "<stdin>",
-                format!("cannot read standard input: {e}"),
-            )]
-        })?;
-        return Recipe::from_bytes("<stdin>", &buf, None);
+    let name = if display == "-" {
+        "<stdin>".to_string()
     } else {
-        std::fs::read(path).map_err(|e| {
-            vec![Diagnostic::whole_file(
-                &display,
-                format!("cannot read the recipe: {e}"),
-            )]
-        })?
+        display.clone()
     };
-    Recipe::from_bytes(&display, &bytes, None)
+    let mut buf = Vec::new();
+    let read = if display == "-" {
+        std::io::stdin()
+            .take(limits.recipe_bytes.saturating_add(1))
+            .read_to_end(&mut buf)
+            .map_err(|e| format!("cannot read standard input: {e}"))
+    } else {
+        std::fs::File::open(path)
+            .and_then(|f| {
+                f.take(limits.recipe_bytes.saturating_add(1))
+                    .read_to_end(&mut buf)
+            })
+            .map_err(|e| format!("cannot read the recipe: {e}"))
+    };
+    if let Err(message) = read {
+        return Err(vec![Diagnostic::whole_file(&name, message)]);
+    }
+    if buf.len() as u64 > limits.recipe_bytes {
+        return Err(vec![Diagnostic::whole_file(
+            &name,
+            format!(
+                "the recipe is larger than the limit of {} bytes (`rcagd build --max-recipe-bytes N` raises it)",
+                limits.recipe_bytes
+            ),
+        )]);
+    }
+    let recipe = Recipe::from_bytes(&name, &buf, None)?;
+    if recipe.objects.len() > limits.objects {
+        return Err(vec![Diagnostic::whole_file(
+            &name,
+            format!(
+                "the recipe has {} objects, more than the limit of {} (`rcagd build --max-objects N` raises it)",
+                recipe.objects.len(),
+                limits.objects
+            ),
+        )]);
+    }
+    Ok(recipe)
 }
 
 fn print_diagnostics(diags: &[Diagnostic]) {

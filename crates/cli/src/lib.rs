@@ -55,6 +55,7 @@ macro_rules! errln {
 
 pub mod build;
 pub mod gallery;
+pub mod limits;
 pub mod model;
 pub mod ops;
 pub mod output;

@@ -64,6 +64,15 @@ enum Command {
             value_name = "FORMAT"
         )]
         formats: Vec<OutFormat>,
+        /// Largest recipe accepted, in bytes.
+        #[arg(long, value_name = "N", default_value_t = rcagd_cli::limits::DEFAULT_RECIPE_BYTES)]
+        max_recipe_bytes: u64,
+        /// Largest number of objects in the recipe.
+        #[arg(long, value_name = "N", default_value_t = rcagd_cli::limits::DEFAULT_OBJECTS)]
+        max_objects: usize,
+        /// Largest number of digits of one input number.
+        #[arg(long, value_name = "N", default_value_t = rcagd_cli::limits::DEFAULT_DIGITS)]
+        max_digits: usize,
     },
     /// List the recipe ops and their parameters, or describe one op.
     Ops {
@@ -89,7 +98,18 @@ fn main() -> ExitCode {
             recipe,
             out,
             formats,
-        } => build::run(&recipe, out.as_deref(), &formats),
+            max_recipe_bytes,
+            max_objects,
+            max_digits,
+        } => {
+            rcagd_cli::limits::Limits {
+                recipe_bytes: max_recipe_bytes,
+                objects: max_objects,
+                digits: max_digits,
+            }
+            .install();
+            build::run(&recipe, out.as_deref(), &formats)
+        }
         Command::Ops { name, markdown } => ops::describe::run(name.as_deref(), markdown),
     };
     // output that did not arrive is a failure (a full disk, `> /dev/full`); a reader

@@ -178,6 +178,22 @@ fn check_exponent(text: &str, span: Span) -> Result<(), ValueError> {
     Ok(())
 }
 
+/// Rejects numbers with more digits than [`crate::limits::Limits::digits`] (the work of
+/// exact arithmetic grows with the digits; `--max-digits` raises the limit).
+fn check_digits(text: &str, span: Span) -> Result<(), ValueError> {
+    let max = crate::limits::Limits::current().digits;
+    let n = crate::limits::digit_count(text);
+    if n > max {
+        return Err(err(
+            span,
+            format!(
+                "number too long: {n} digits (the limit is {max} digits per number; `rcagd build --max-digits N` raises it)"
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// The message for `text` that [`parse_rational`] refused: the reason it gives (a zero
 /// denominator said as such, the text shown once and [`clip`](crate::source::clip)ped)
 /// and how to write a number.
@@ -204,6 +220,11 @@ pub fn number(v: &RecipeValue) -> Result<Rational, ValueError> {
         ValueKind::Number(n) if n.radix == 10 => check_exponent(&n.raw, v.span)?,
         ValueKind::String(s) => check_exponent(s, v.span)?,
         _ => {}
+    }
+    if let ValueKind::Number(crate::recipe::tree::NumberText { raw: text, .. })
+    | ValueKind::String(text) = &v.kind
+    {
+        check_digits(text, v.span)?;
     }
     match &v.kind {
         ValueKind::Number(n) if n.radix == 10 => {

@@ -540,6 +540,82 @@ fn build_from_stdin() {
     assert!(stdout(&o).contains("\"quarter\""));
 }
 
+/// Bounded work: a recipe larger than `--max-recipe-bytes` (including an endless input,
+/// which is read only up to the limit), with more objects than `--max-objects`, or with a
+/// number longer than `--max-digits` digits is an input error (exit 2) that names the
+/// limit and the option; the options raise the limits.
+#[test]
+fn recipe_limits_are_named_and_can_be_raised() {
+    let dir = temp_dir("cli-limits");
+    let long = write(
+        &dir,
+        "long.toml",
+        &format!(
+            "[[object]]\nname = \"c\"\nop = \"circle\"\ncenter = [0, 0]\nradius = \"{}/{}\"\n",
+            "7".repeat(6000),
+            "3".repeat(6000)
+        ),
+    );
+    let o = build(&long);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("12000 digits") && stderr(&o).contains("--max-digits"),
+        "{}",
+        stderr(&o)
+    );
+    let o = bin()
+        .arg("build")
+        .arg(&long)
+        .args(["--max-digits", "20000"])
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let many: String = (0..12)
+        .map(|i| {
+            format!("[[object]]\nname = \"c{i}\"\nop = \"circle\"\ncenter = [0, 0]\nradius = 1\n")
+        })
+        .collect();
+    let many = write(&dir, "many.toml", &many);
+    let o = bin()
+        .arg("build")
+        .arg(&many)
+        .args(["--max-objects", "10"])
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("12 objects") && stderr(&o).contains("--max-objects"),
+        "{}",
+        stderr(&o)
+    );
+    assert_eq!(build(&many).status.code(), Some(0));
+    let o = bin()
+        .arg("build")
+        .arg(&many)
+        .args(["--max-recipe-bytes", "100"])
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("limit of 100 bytes") && stderr(&o).contains("--max-recipe-bytes"),
+        "{}",
+        stderr(&o)
+    );
+    // an endless input stops at the limit
+    if Path::new("/dev/zero").exists() {
+        let o = bin()
+            .args(["build", "/dev/zero", "--max-recipe-bytes", "1000"])
+            .output()
+            .expect("run");
+        assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+        assert!(
+            stderr(&o).contains("larger than the limit"),
+            "{}",
+            stderr(&o)
+        );
+    }
+}
+
 /// Weights whose weight function vanishes on [0, 1] (a pole) are an input error (exit
 /// 2, located at `weights`, nothing on standard output), not a failing certificate: the
 /// same rule for every op that takes weights (`rcagd_geom::weight_sign::curve_pole_free`).
