@@ -537,16 +537,30 @@ pub(crate) fn from_f64<F: Scalar>(x: f64) -> Option<F> {
 /// The principal square root `x + iy` (`x ≥ 0`, and `y ≥ 0` when `x = 0`) of `z = a + ib`:
 /// `x = √((|z| + a)/2)`, `y = b/(2x)` (or `x = 0`, `y = √(−a)` when `|z| + a = 0`).
 /// `None` in exact arithmetic when a square root is irrational.
+///
+/// In floating point, for `a < 0` the sum `|z| + a` cancels (relative error up to
+/// `|z|/(|z| + a)` ulps), so there the root is computed from the other half:
+/// `y = sgn(b)·√((|z| − a)/2)`, `x = b/(2y)` (the standard stable form; same root).
 pub fn complex_sqrt<F: Scalar>(z: &C<F>) -> Option<C<F>> {
     let norm = sqrt_in(&z.norm_sq())?;
-    let half = (norm.clone() + z.re.clone()) / F::from_i64(2);
+    let two = F::from_i64(2);
+    if !F::EXACT && z.re < F::zero() {
+        let y = sqrt_in(&((norm - z.re.clone()) / two.clone()))?;
+        if y.is_zero() {
+            return Some(C::new(F::zero(), F::zero()));
+        }
+        let y = if z.im < F::zero() { -y } else { y };
+        let x = z.im.clone() / (y.clone() * two);
+        return Some(C::new(x, y));
+    }
+    let half = (norm.clone() + z.re.clone()) / two.clone();
     let tiny = !F::EXACT && half.to_f64() <= 1e-300_f64.max(1e-15 * norm.to_f64());
     if half.is_zero() || tiny {
-        let y = sqrt_in(&((norm - z.re.clone()).abs() / F::from_i64(2)))?;
+        let y = sqrt_in(&((norm - z.re.clone()).abs() / two))?;
         return Some(C::new(F::zero(), y));
     }
     let x = sqrt_in(&half)?;
-    let y = z.im.clone() / (x.clone() * F::from_i64(2));
+    let y = z.im.clone() / (x.clone() * two);
     Some(C::new(x, y))
 }
 
