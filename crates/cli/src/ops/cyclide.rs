@@ -8,7 +8,7 @@ use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
 use rcagd::cyclide::spheres::certify_three_spheres;
-use rcagd::cyclide::{blend_cones, from_three_spheres, DualPencil, DupinCyclide};
+use rcagd::cyclide::{blend_cones, fitting_contact_sphere, from_three_spheres, DualPencil, DupinCyclide};
 use rcagd::cyclographic::OrientedSphere;
 use rcagd::Certified;
 use rcagd_algebra::{Certificate, Rational};
@@ -162,8 +162,10 @@ const CYCLIDE_BLEND: OpSpec = OpSpec {
     params: &[
         ParamSpec::required("sphere1", ParamKind::Point, "P₁ = (m₁, r₁): the sphere inscribed in cone 1 along the contact circle"),
         ParamSpec::required("direction1", ParamKind::Point, "d₁ = (a₁, δ₁): axis direction a₁ and radius change δ₁ of cone 1 (δ₁ = 0: cylinder), |a₁|² > δ₁²; the blend leaves P₁ along +d₁"),
-        ParamSpec::required("sphere2", ParamKind::Point, "P₂ = (m₂, r₂), with equal pe tangent lengths to the common cycle of both lines"),
+        ParamSpec::optional("sphere2", ParamKind::Point, "P₂ = (m₂, r₂), with equal pe tangent lengths to the common cycle of both lines; or give `point2` instead"),
         ParamSpec::required("direction2", ParamKind::Point, "d₂ = (a₂, δ₂) of cone 2"),
+        ParamSpec::optional("point2", ParamKind::Point, "instead of `sphere2`: any sphere (m, r) of cone 2 (a point of its line); P₂ is then computed to fit P₁ (equal tangent lengths; for parallel axes the sphere level with P₁)"),
+        ParamSpec::with_default("side2", ParamKind::Number, "1", "with `point2` and meeting axes: +1 or −1, which of the two fitting spheres of cone 2 (on either side of the axes' intersection)"),
     ],
     example: r#"[[object]]
 name = "elbow_blend"
@@ -178,8 +180,29 @@ direction2 = [0, 1, 0, 0]
 
 fn build_blend(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let (p1, d1) = (vec4(args, "sphere1")?, vec4(args, "direction1")?);
-    let (p2, d2) = (vec4(args, "sphere2")?, vec4(args, "direction2")?);
-    let blend = blend_cones(p1, d1, p2, d2).map_err(|e| OpError::param("sphere2", e.to_string()))?;
+    let d2 = vec4(args, "direction2")?;
+    let (p2, blame) = match (args.opt_point("sphere2")?, args.opt_point("point2")?) {
+        (Some(_), Some(_)) => {
+            return Err(OpError::param("point2", "give either `sphere2` or `point2`, not both"))
+        }
+        (Some(_), None) => (vec4(args, "sphere2")?, "sphere2"),
+        (None, Some(_)) => {
+            let side = match args.opt_number("side2")? {
+                Some(x) if x == Rational::from(-1) => -1,
+                Some(x) if x == Rational::from(1) => 1,
+                None => 1,
+                Some(_) => return Err(OpError::param("side2", "`side2` must be 1 or -1")),
+            };
+            let q2 = vec4(args, "point2")?;
+            let p2 = fitting_contact_sphere(&p1, &d1, &q2, &d2, side)
+                .map_err(|e| OpError::param("point2", e.to_string()))?;
+            (p2, "point2")
+        }
+        (None, None) => {
+            return Err(OpError::param("sphere2", "give `sphere2` (the contact sphere of cone 2) or `point2` (any sphere of cone 2)"))
+        }
+    };
+    let blend = blend_cones(p1, d1, p2, d2).map_err(|e| OpError::param(blame, e.to_string()))?;
     let patches = blend.patches().map_err(|e| OpError::new(e.to_string()))?;
     let mut certs = blend.certify();
     let (patches, wcert) = super::canal::positive_pieces(patches)?;

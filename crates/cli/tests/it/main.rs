@@ -6,6 +6,7 @@ mod canal_cyclographic_op;
 mod cli;
 mod common;
 mod conic_ops;
+mod cyclide_ops;
 mod docs;
 mod exchange_weights;
 mod fuzz;

@@ -171,6 +171,87 @@ pub fn blend_cones<F: Scalar>(
     })
 }
 
+/// The contact sphere `P₂` on the line `q₂ + λd₂` of cone 2 that fits the contact sphere
+/// `P₁` of cone 1 (equal pe tangent lengths from the common cycle `S` of the two lines, so
+/// that one pe circle touches both lines at `P₁` and `P₂`):
+///
+/// * axes meeting (lines meeting at `S`): `P₂ = S + side·λ₂d₂` with
+///   `λ₂² ⟨d₂, d₂⟩ = ⟨P₁ − S, P₁ − S⟩` (`side = ±1` chooses one of the two blends);
+/// * parallel axes: `P₂` is the foot of the pe perpendicular from `P₁` to line 2,
+///   `P₂ = q₂ + (⟨P₁ − q₂, d⟩/⟨d, d⟩) d` (`side` is ignored).
+///
+/// # Errors
+/// [`CyclideError::IsotropicTangents`] for `⟨dᵢ, dᵢ⟩ ≤ 0`; [`CyclideError::SkewAxes`] if
+/// the lines are not coplanar; [`CyclideError::NoBlend`] if they coincide, span a
+/// non-Euclidean plane or `P₁` is the common cycle; [`CyclideError::NotRational`] if `λ₂` is
+/// irrational (`⟨P₁ − S, P₁ − S⟩/⟨d₂, d₂⟩` not a rational square: choose `P₁` elsewhere on
+/// its line).
+pub fn fitting_contact_sphere<F: Scalar>(
+    p1: &[F; 4],
+    d1: &[F; 4],
+    q2: &[F; 4],
+    d2: &[F; 4],
+    side: i8,
+) -> Result<[F; 4], CyclideError> {
+    let sc = size(p1).max(size(q2)).max(size(d1)).max(size(d2)).max(1.0);
+    for (i, d) in [(1, d1), (2, d2)] {
+        if pe(d, d) <= F::zero() || negligible(&pe(d, d), sc * sc) {
+            return Err(CyclideError::IsotropicTangents(format!(
+                "⟨d{i}, d{i}⟩ = {} ≤ 0: |axis|² must exceed (radius change)²",
+                format_scalar(&pe(d, d))
+            )));
+        }
+    }
+    let e = sub(q2, p1);
+    if !minors_vanish(&[e.clone(), d1.clone(), d2.clone()], sc.powi(3)) {
+        return Err(CyclideError::SkewAxes(
+            "the lines of the two cones in R^{3,1} are not coplanar: no cyclide blend exists"
+                .into(),
+        ));
+    }
+    let (g11, g12, g22) = (pe(d1, d1), pe(d1, d2), pe(d2, d2));
+    let det = g11.clone() * g22.clone() - g12.clone() * g12.clone();
+    if negligible(&det, sc.powi(4)) {
+        // parallel lines: the foot of the pe perpendicular from P₁
+        let mu = pe(&sub(p1, q2), d2) / g22;
+        let p2: [F; 4] = core::array::from_fn(|i| q2[i].clone() + mu.clone() * d2[i].clone());
+        let w = sub(&p2, p1);
+        if pe(&w, &w) <= F::zero() || negligible(&pe(&w, &w), sc * sc) {
+            return Err(CyclideError::NoBlend(
+                "the two lines coincide or span a non-Euclidean plane".into(),
+            ));
+        }
+        return Ok(p2);
+    }
+    if det < F::zero() {
+        return Err(CyclideError::NoBlend(format!(
+            "the plane of the two lines is not Euclidean (Gram determinant {}): no pe circle touches both",
+            format_scalar(&det)
+        )));
+    }
+    // S = P₁ + λ₁d₁ = q₂ + λd₂
+    let (ed1, ed2) = (pe(&e, d1), pe(&e, d2));
+    let l1 = (ed1.clone() * g22.clone() - ed2.clone() * g12.clone()) / det.clone();
+    let s_pt: [F; 4] = core::array::from_fn(|i| p1[i].clone() + l1.clone() * d1[i].clone());
+    let t = sub(p1, &s_pt);
+    let tt = pe(&t, &t);
+    if negligible(&tt, sc * sc) {
+        return Err(CyclideError::NoBlend(
+            "P₁ is the common cycle of both lines (the vertex of the corner)".into(),
+        ));
+    }
+    let lam = sqrt_in_field(&(tt.clone() / g22.clone())).ok_or_else(|| {
+        CyclideError::NotRational(format!(
+            "the fitting contact sphere needs √({}) (⟨P₁ − S, P₁ − S⟩/⟨d₂, d₂⟩ is not a rational square): choose P₁ elsewhere on its line",
+            format_scalar(&(tt / g22))
+        ))
+    })?;
+    let lam = if side < 0 { -lam } else { lam };
+    Ok(core::array::from_fn(|i| {
+        s_pt[i].clone() + lam.clone() * d2[i].clone()
+    }))
+}
+
 impl<F: Scalar> CyclideBlend<F> {
     /// The patches of the band between the contact circles (split at `t = ±1`; `t = 1/τ`
     /// beyond), four pieces in `s` each.

@@ -24,7 +24,7 @@ pub mod pencil;
 pub mod spheres;
 pub mod surface;
 
-pub use blend::{blend_cones, CyclideBlend};
+pub use blend::{blend_cones, fitting_contact_sphere, CyclideBlend};
 pub use conic::{CycleCurve, PeConic};
 pub use pencil::{DualPencil, PencilMember};
 pub use spheres::from_three_spheres;

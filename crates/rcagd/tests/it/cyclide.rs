@@ -402,6 +402,14 @@ proptest! {
         let ((p1, d1), (p2, d2)) = (at(&a1), at(&a2));
         // a contact sphere of radius 0 is a cone's vertex, not a contact circle
         prop_assume!(p1[3] != qi(0) && p2[3] != qi(0));
+        // the fitting contact sphere on line 2 (given by another of its points) is P₂
+        // for one of the two sides
+        let q2: [Q; 4] = core::array::from_fn(|i| p2[i].clone() + qi(3) * d2[i].clone());
+        let fits: Vec<[Q; 4]> = [1i8, -1]
+            .iter()
+            .filter_map(|&side| rcagd::cyclide::fitting_contact_sphere(&p1, &d1, &q2, &d2, side).ok())
+            .collect();
+        prop_assert!(fits.contains(&p2), "fitting spheres {:?}, want {:?}", fits, p2);
         let blend = match blend_cones(p1.clone(), d1.clone(), p2.clone(), d2.clone()) {
             Ok(bl) => bl,
             Err(e) => return Err(TestCaseError::fail(format!("blend refused: {e}"))),
@@ -413,18 +421,29 @@ proptest! {
         prop_assert!(!patches.is_empty());
         let f = |x: &[Q; 4]| -> [f64; 4] { core::array::from_fn(|i| Scalar::to_f64(&x[i])) };
         let bf = blend_cones(f(&p1), f(&d1), f(&p2), f(&d2)).expect("f64 blend");
-        let pf = bf.patches().expect("f64 patches");
-        prop_assert_eq!(pf.len(), patches.len());
-        for (pe, pff) in patches.iter().zip(&pf) {
+        // the same arc (the patch split differs when |t₂| = 1 exactly) and the same surface
+        match (&blend.t2, &bf.t2) {
+            (None, None) => {}
+            (Some(te), Some(tf)) => prop_assert!((Scalar::to_f64(te) - tf).abs() <= 1e-9 * (1.0 + tf.abs())),
+            (te, tf) => prop_assert!(false, "t₂: {:?} vs {:?}", te, tf),
+        }
+        for pe in &patches {
             for (s, t) in [(q(1, 3), q(1, 2)), (qi(0), qi(1)), (q(3, 4), q(1, 5))] {
                 let x = pe.eval(&s, &t).expect("finite");
                 let x3: [Q; 3] = core::array::from_fn(|i| x[i].clone());
                 prop_assert_eq!(cy.implicit_value(&x3), qi(0), "blend point off the cyclide");
-                let xf = pff.eval(&Scalar::to_f64(&s), &Scalar::to_f64(&t)).expect("finite");
-                let scale = x.iter().map(|y| Scalar::to_f64(y).abs()).fold(1.0, f64::max);
-                for i in 0..3 {
-                    prop_assert!((Scalar::to_f64(&x[i]) - xf[i]).abs() <= 1e-8 * scale, "{:?} {:?}", x, xf);
-                }
+            }
+        }
+        for (t, s) in [(q(1, 3), q(2, 1)), (q(-2, 1), q(1, 5)), (qi(0), qi(-1))] {
+            let (Some(xe), Some(xf)) = (
+                blend.cyclide.eval(&t, &s),
+                bf.cyclide.eval(&Scalar::to_f64(&t), &Scalar::to_f64(&s)),
+            ) else {
+                continue;
+            };
+            let scale = xe.iter().map(|y| Scalar::to_f64(y).abs()).fold(1.0, f64::max);
+            for i in 0..3 {
+                prop_assert!((Scalar::to_f64(&xe[i]) - xf[i]).abs() <= 1e-8 * scale, "{:?} {:?}", xe, xf);
             }
         }
     }
@@ -462,6 +481,51 @@ fn conic_accessors() {
     )
     .expect("cyclide");
     assert!(matches!(cy.conic(), PeConic::Circle { .. }));
+}
+
+/// The fitting contact sphere: for the elbow (axes x and y through the origin, radius 1)
+/// and P₁ = (2, 0, 0; 1), line 2 given by any of its points gives P₂ = (0, ±2, 0; 1); for
+/// parallel cylinders the foot of the perpendicular; errors are named.
+#[test]
+fn fitting_contact_spheres() {
+    use rcagd::cyclide::fitting_contact_sphere;
+    let p1 = v4([(2, 1), (0, 1), (0, 1), (1, 1)]);
+    let d1 = v4([(1, 1), (0, 1), (0, 1), (0, 1)]);
+    let q2 = v4([(0, 1), (5, 1), (0, 1), (1, 1)]);
+    let d2 = v4([(0, 1), (1, 1), (0, 1), (0, 1)]);
+    let p2 = fitting_contact_sphere(&p1, &d1, &q2, &d2, 1).expect("fits");
+    assert_eq!(p2, v4([(0, 1), (2, 1), (0, 1), (1, 1)]));
+    let p2m = fitting_contact_sphere(&p1, &d1, &q2, &d2, -1).expect("fits");
+    assert_eq!(p2m, v4([(0, 1), (-2, 1), (0, 1), (1, 1)]));
+    assert!(rcagd::cyclide::blend_cones(p1.clone(), d1.clone(), p2, d2.clone()).is_ok());
+    // parallel cylinders along z
+    let z = v4([(0, 1), (0, 1), (1, 1), (0, 1)]);
+    let pp = fitting_contact_sphere(
+        &v4([(0, 1), (0, 1), (0, 1), (1, 1)]),
+        &z,
+        &v4([(4, 1), (1, 1), (7, 1), (2, 1)]),
+        &z,
+        1,
+    )
+    .expect("parallel");
+    assert_eq!(pp, v4([(4, 1), (1, 1), (0, 1), (2, 1)]));
+    // skew axes; an irrational tangent length (P₁ = (1, 0, 0; 1) with d₂ = (0, 1, 0, 1/2))
+    let skew = fitting_contact_sphere(&p1, &d1, &v4([(0, 1), (0, 1), (3, 1), (1, 1)]), &d2, 1);
+    assert!(matches!(skew, Err(CyclideError::SkewAxes(_))), "{skew:?}");
+    let irr = fitting_contact_sphere(
+        &v4([(1, 1), (0, 1), (0, 1), (1, 1)]),
+        &d1,
+        &q2,
+        &v4([(0, 1), (1, 1), (0, 1), (1, 2)]),
+        1,
+    );
+    assert!(
+        matches!(
+            irr,
+            Err(CyclideError::NotRational(_) | CyclideError::SkewAxes(_))
+        ),
+        "{irr:?}"
+    );
 }
 
 /// Cyclide blends: two cylinders of radius 1 with axes x and y meeting at the origin

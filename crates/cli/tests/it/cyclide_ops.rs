@@ -1,0 +1,46 @@
+//! The `cyclide_blend` op with `point2` (the fitting contact sphere computed by the library)
+//! and the `pn_cone_envelope` op in the degree-reducing frame.
+
+use crate::common::{build_json_certified, value_exact};
+
+/// The elbow from any sphere of cylinder 2: the same quarter torus as with `sphere2`; the
+/// other side gives the mirrored elbow.
+#[test]
+fn cyclide_blend_from_any_sphere_of_cone_two() {
+    let with = |extra: &str| {
+        format!(
+            "[[object]]\nname = \"elbow\"\nop = \"cyclide_blend\"\nsphere1 = [2, 0, 0, 1]\ndirection1 = [1, 0, 0, 0]\ndirection2 = [0, 1, 0, 0]\n{extra}\n"
+        )
+    };
+    let given = build_json_certified("cyc-given", &with("sphere2 = [0, 2, 0, 1]"), "elbow");
+    let fitted = build_json_certified("cyc-fitted", &with("point2 = [0, 7, 0, 1]"), "elbow");
+    assert_eq!(given["control_points"], fitted["control_points"]);
+    let other = build_json_certified(
+        "cyc-other",
+        &with("point2 = [0, 7, 0, 1]\nside2 = -1"),
+        "elbow",
+    );
+    assert_ne!(given["control_points"], other["control_points"]);
+    assert_eq!(value_exact(&other, "kind"), "ring");
+}
+
+/// The gallery's cone envelope is built in the frame ζ = (0, 1, 0) with a unit normal of
+/// degree 2k − 2 = 2 in t.
+#[test]
+fn cone_envelope_reports_its_reducing_frame() {
+    let recipe = "[[object]]\nname = \"env\"\nop = \"pn_cone_envelope\"\ncenter1 = [[0, 2, 0], [0, 0, 1], [2, 0, 0]]\nradius1 = [3]\ncenter2 = [[0], [1], [0]]\nradius2 = [1]\ndomain = [1, 2, \"1/4\", 1]\n";
+    let v = build_json_certified("cone-env-frame", recipe, "env");
+    assert_eq!(value_exact(&v, "normal_degree_t"), "2");
+    assert!(
+        value_exact(&v, "frame_axis").contains('1'),
+        "{}",
+        value_exact(&v, "frame_axis")
+    );
+    let props: Vec<String> = v["certificates"]
+        .as_array()
+        .expect("certificates")
+        .iter()
+        .map(|c| c["property"].as_str().unwrap_or("").to_string())
+        .collect();
+    assert!(props.iter().any(|p| p.contains("Prop. 4.1")), "{props:#?}");
+}
