@@ -770,6 +770,129 @@ pub fn mobius_reflection<F: Scalar>(z: &[F; 5], x: &[F; 5]) -> Result<[F; 5], Cy
     }))
 }
 
+/// The cyclographic image of a 2-dimensional pe sphere `q = π ∩ Γ(a)` of `R^{3,1}`: the
+/// points of the hyperplane `π: ⟨x, ν⟩_pe = c` on the γ-cone of the point `a`
+/// (Peternell 1997, §3.9.1).
+#[derive(Debug, Clone, PartialEq)]
+pub enum PeSphereImage<F> {
+    /// `π` is not a γ-hyperplane (`⟨ν, ν⟩_pe ≠ 0`): `q` also lies on the γ-cone of the
+    /// pe mirror image `σ(a) = a − 2((⟨a, ν⟩ − c)/⟨ν, ν⟩) ν` of `a` in `π`, and the image is
+    /// the two cycles `η(a)`, `η(σ(a))` (every cycle of `q` touches both).
+    TwoCycles(OrientedSphere<F>, OrientedSphere<F>),
+    /// `π` is a γ-hyperplane: the image is the cycle `η(a)` and the oriented plane
+    /// `π ∩ R³`, `e₀ + n·x = 0` with `n = −ν₁₂₃/ν₄`, `e₀ = c/ν₄` (the cycles of `π` touch it).
+    CycleAndPlane(OrientedSphere<F>, OrientedPlane<F>),
+}
+
+/// The cyclographic image of the pe sphere `π ∩ Γ(a)`, `π: ⟨x, ν⟩_pe = c` (Peternell 1997,
+/// §3.9.1).
+///
+/// # Errors
+/// [`CyclographicError::ZeroVector`] for `ν = 0`; [`CyclographicError::IdenticalCycles`]
+/// when `a` lies in `π` (then `q` is a cone, not a sphere).
+pub fn pe_sphere_image<F: Scalar>(
+    a: &[F; 4],
+    nu: &[F; 4],
+    c: &F,
+) -> Result<PeSphereImage<F>, CyclographicError> {
+    if nu.iter().all(|x| x.is_zero()) {
+        return Err(CyclographicError::ZeroVector(
+            "the normal ν of the hyperplane ⟨x, ν⟩ = c".into(),
+        ));
+    }
+    let dist = lorentz(a, nu) - c.clone();
+    if dist.is_zero() {
+        return Err(CyclographicError::IdenticalCycles(format!(
+            "{} (the vertex a lies in the hyperplane: π ∩ Γ(a) is a cone)",
+            crate::error::format_point(a)
+        )));
+    }
+    let nn = lorentz(nu, nu);
+    if nn.is_zero() {
+        // ν₄ ≠ 0 since ν ≠ 0 is isotropic
+        let n: [F; 3] = core::array::from_fn(|i| -nu[i].clone() / nu[3].clone());
+        let plane = OrientedPlane::new(n, c.clone() / nu[3].clone())?;
+        return Ok(PeSphereImage::CycleAndPlane(
+            OrientedSphere::from_point(a),
+            plane,
+        ));
+    }
+    let t = F::from_i64(2) * dist / nn;
+    let b: [F; 4] = core::array::from_fn(|i| a[i].clone() - t.clone() * nu[i].clone());
+    Ok(PeSphereImage::TwoCycles(
+        OrientedSphere::from_point(a),
+        OrientedSphere::from_point(&b),
+    ))
+}
+
+/// Certificates of [`pe_sphere_image`]: for two cycles `a, b`, `b − a ∥ ν` (all 2×2 minors
+/// vanish), the midpoint lies in `π`, so that for every `y ∈ π`
+/// `⟨y − b, y − b⟩ − ⟨y − a, y − a⟩ = 0` (the difference is affine in `y` and vanishes on
+/// `π`); for a cycle and a plane, `ν₄e₀ = c`, `ν₄n = −ν₁₂₃` and `|n|² = 1`, so every cycle
+/// `y ∈ π` touches the plane (`e₀ + n·m_y + r_y = 0`).
+pub fn certify_pe_sphere_image<F: Scalar>(
+    a: &[F; 4],
+    nu: &[F; 4],
+    c: &F,
+    image: &PeSphereImage<F>,
+) -> Vec<Certificate> {
+    let ex = F::EXACT;
+    let zero = |x: &F| {
+        if ex {
+            x.is_zero()
+        } else {
+            x.to_f64().abs() <= 1e-9
+        }
+    };
+    match image {
+        PeSphereImage::TwoCycles(k1, k2) => {
+            let (p, q) = (k1.to_point(), k2.to_point());
+            let d: [F; 4] = core::array::from_fn(|i| q[i].clone() - p[i].clone());
+            let parallel = (0..4).all(|i| {
+                (0..4).all(|j| zero(&(d[i].clone() * nu[j].clone() - d[j].clone() * nu[i].clone())))
+            });
+            let two = F::from_i64(2);
+            let mid: [F; 4] = core::array::from_fn(|i| (p[i].clone() + q[i].clone()) / two.clone());
+            let on = lorentz(&mid, nu) - c.clone();
+            let same_a = (0..4).all(|i| zero(&(p[i].clone() - a[i].clone())));
+            vec![
+                Certificate::decide("η(a) is the cycle a", same_a, ex, || "a differs".into()),
+                Certificate::decide(
+                    "σ(a) − a ∥ ν (the second cycle is a pe mirror image of a in π)",
+                    parallel,
+                    ex,
+                    || "a 2×2 minor of (σ(a) − a, ν) is not zero".into(),
+                ),
+                Certificate::decide(
+                    "⟨(a + σ(a))/2, ν⟩ = c (π is the mirror: every y ∈ π has ⟨y − a, y − a⟩ = ⟨y − σ(a), y − σ(a)⟩)",
+                    zero(&on),
+                    ex,
+                    || format!("{}", crate::error::format_scalar(&on)),
+                ),
+            ]
+        }
+        PeSphereImage::CycleAndPlane(k, plane) => {
+            let e0 = nu[3].clone() * plane.offset.clone() - c.clone();
+            let nn =
+                (0..3).all(|i| zero(&(nu[3].clone() * plane.normal[i].clone() + nu[i].clone())));
+            let unit = crate::lines::dot(&plane.normal, &plane.normal) - F::one();
+            let same_a = (0..4).all(|i| zero(&(k.to_point()[i].clone() - a[i].clone())));
+            vec![
+                Certificate::decide("η(a) is the cycle a", same_a, ex, || "a differs".into()),
+                Certificate::decide(
+                    "ν₄e₀ = c and ν₄n = −ν₁₂₃: every cycle (m; r) of π satisfies e₀ + n·m + r = 0 (touches the plane)",
+                    zero(&e0) && nn,
+                    ex,
+                    || "the plane does not match π".into(),
+                ),
+                Certificate::decide("|n|² = 1", zero(&unit), ex, || {
+                    crate::error::format_scalar(&unit)
+                }),
+            ]
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -869,6 +992,55 @@ mod tests {
             mobius_image(&img).expect("img"),
             MobiusImage::Point([r(1, 2), q(0), q(0)])
         );
+    }
+
+    #[test]
+    fn pe_sphere_images() {
+        let q = |p: i64, d: i64| Rational::from_ratio(p, d);
+        // π: x₄ = 1 (ν = (0, 0, 0, 1), ⟨x, ν⟩ = −x₄ = −1), a = (0, 0, 0, 3): the cycles of
+        // radius 1 on the γ-cone of a are spheres of radius 1 centred on |m| = 2, touching
+        // η(a) (radius 3) and η(σ(a)) = (0, 0, 0; −1)
+        let a = [q(0, 1), q(0, 1), q(0, 1), q(3, 1)];
+        let nu = [q(0, 1), q(0, 1), q(0, 1), q(1, 1)];
+        let img = pe_sphere_image(&a, &nu, &q(-1, 1)).expect("image");
+        match &img {
+            PeSphereImage::TwoCycles(k1, k2) => {
+                assert_eq!(k1.radius, q(3, 1));
+                assert_eq!(k2.radius, q(-1, 1));
+                // a cycle of q: m = (2, 0, 0), r = 1 touches both
+                let y = OrientedSphere::new([q(2, 1), q(0, 1), q(0, 1)], q(1, 1));
+                assert!(y.in_oriented_contact(k1) && y.in_oriented_contact(k2));
+            }
+            other => panic!("{other:?}"),
+        }
+        assert!(certify_pe_sphere_image(&a, &nu, &q(-1, 1), &img)
+            .iter()
+            .all(|c| c.holds));
+        // a γ-hyperplane: ν = (1, 0, 0, 1), c = 2: the cycles with m₁ − r = 2 touch the plane
+        // x = 2 … oriented: e₀ = 2, n = (−1, 0, 0)
+        let nu = [q(1, 1), q(0, 1), q(0, 1), q(1, 1)];
+        let img = pe_sphere_image(&a, &nu, &q(2, 1)).expect("image");
+        match &img {
+            PeSphereImage::CycleAndPlane(_, plane) => {
+                assert_eq!(plane.offset, q(2, 1));
+                assert_eq!(plane.normal, [q(-1, 1), q(0, 1), q(0, 1)]);
+                let y = OrientedSphere::new([q(5, 1), q(1, 1), q(0, 1)], q(3, 1));
+                assert!(y.touches_plane(plane));
+            }
+            other => panic!("{other:?}"),
+        }
+        assert!(certify_pe_sphere_image(&a, &nu, &q(2, 1), &img)
+            .iter()
+            .all(|c| c.holds));
+        // errors: ν = 0; a in π
+        assert!(matches!(
+            pe_sphere_image(&a, &[q(0, 1), q(0, 1), q(0, 1), q(0, 1)], &q(0, 1)),
+            Err(CyclographicError::ZeroVector(_))
+        ));
+        assert!(matches!(
+            pe_sphere_image(&a, &[q(0, 1), q(0, 1), q(0, 1), q(1, 1)], &q(-3, 1)),
+            Err(CyclographicError::IdenticalCycles(_))
+        ));
     }
 
     #[test]
