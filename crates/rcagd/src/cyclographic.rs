@@ -867,7 +867,7 @@ pub fn certify_pe_sphere_image<F: Scalar>(
                     "⟨(a + σ(a))/2, ν⟩ = c (π is the mirror: every y ∈ π has ⟨y − a, y − a⟩ = ⟨y − σ(a), y − σ(a)⟩)",
                     zero(&on),
                     ex,
-                    || format!("{}", crate::error::format_scalar(&on)),
+                    || crate::error::format_scalar(&on),
                 ),
             ]
         }
