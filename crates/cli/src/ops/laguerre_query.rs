@@ -4,7 +4,8 @@
 //! * `laguerre_models`: a cycle or an oriented plane, given in any model, in every model;
 //! * `laguerre_isotropic_quadric`: the isotropic-model function `y₃ = F(y₁, y₂)` of a
 //!   quadric given implicitly (rational for paraboloids, else the quadratic it solves);
-//! * `laguerre_cycles`: the images of cycles under a Laguerre map and its fixed cycles.
+//! * `laguerre_cycles`: the images of cycles under a Laguerre map and its fixed cycles;
+//! * `laguerre_pe_sphere`: the cyclographic image of a pe sphere `π ∩ Γ(a)` of `R^{3,1}`.
 
 use super::quadric::{exportable_patch, target, COEFFICIENTS, MATRIX, QUADRIC, RATIONAL_POINT};
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
@@ -25,7 +26,7 @@ use rcagd_geom::BezierPatch;
 use rcagd_io::quantity::{NamedQuantity, Quantity};
 
 /// The ops of this topic.
-pub const OPS: &[OpSpec] = &[LAGUERRE_MODELS, LAGUERRE_ISOTROPIC_QUADRIC, LAGUERRE_CYCLES];
+pub const OPS: &[OpSpec] = &[LAGUERRE_MODELS, LAGUERRE_ISOTROPIC_QUADRIC, LAGUERRE_CYCLES, LAGUERRE_PE_SPHERE];
 
 type Q = Rational;
 
@@ -388,5 +389,78 @@ fn build_cycles(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             _ => {}
         }
     }
+    Ok(vec![args.object(Geometry::Patches(patches), certs).with_values(values)])
+}
+
+const LAGUERRE_PE_SPHERE: OpSpec = OpSpec {
+    name: "laguerre_pe_sphere",
+    summary: "the cyclographic image of the 2-dimensional pe sphere q = π ∩ Γ(a) of R^{3,1} (the cycles of the hyperplane π: ⟨x, ν⟩ = c in oriented contact with the cycle a; Peternell, Rational Parametrizations for Envelopes of Quadric Families, §3.9.1): the two cycles η(a) and η(σ(a)), σ the pe reflection in π, or for a γ-hyperplane π the cycle η(a) and the oriented plane π ∩ R³; certified; the object shows both (spheres as 16 patches, the plane as a square)",
+    params: &[
+        ParamSpec::required("vertex", ParamKind::Point, "a = [m1, m2, m3, r]: the vertex of the γ-cone Γ(a), a cycle"),
+        ParamSpec::required("normal", ParamKind::Point, "ν = [ν1, ν2, ν3, ν4] ≠ 0 of the hyperplane π: ν1x1 + ν2x2 + ν3x3 − ν4x4 = c (the Lorentz product ⟨x, ν⟩)"),
+        ParamSpec::required("offset", ParamKind::Number, "c of the hyperplane π; a must not lie in π"),
+    ],
+    example: r#"[[object]]
+name = "pe_sphere"
+op = "laguerre_pe_sphere"
+# the cycles of radius 1 touching the sphere of radius 3 about the origin
+vertex = [0, 0, 0, 3]
+normal = [0, 0, 0, 1]
+offset = -1
+"#,
+    build: build_pe_sphere,
+};
+
+fn build_pe_sphere(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    use rcagd::cyclographic::{certify_pe_sphere_image, pe_sphere_image, PeSphereImage};
+    let four = |param: &'static str| -> Result<[Q; 4], OpError> {
+        <[Q; 4]>::try_from(args.point(param)?)
+            .map_err(|_| OpError::param(param, format!("`{param}` must be a vector [x1, x2, x3, x4]")))
+    };
+    let (a, nu, c) = (four("vertex")?, four("normal")?, args.number("offset")?);
+    let image = pe_sphere_image(&a, &nu, &c).map_err(|e| OpError::param("normal", e.to_string()))?;
+    let certs = certify_pe_sphere_image(&a, &nu, &c, &image);
+    let cycle = |k: &rcagd::cyclographic::OrientedSphere<Q>| Cycle {
+        center: k.center.clone(),
+        radius: k.radius.clone(),
+    };
+    let mut patches = Vec::new();
+    let mut push = |g: Geometry| match g {
+        Geometry::Patches(p) => patches.extend(p),
+        Geometry::Patch(p) => patches.push(p),
+        _ => {}
+    };
+    let values = match &image {
+        PeSphereImage::TwoCycles(k1, k2) => {
+            let (c1, c2) = (cycle(k1), cycle(k2));
+            push(cycle_geometry(&c1)?);
+            push(cycle_geometry(&c2)?);
+            vec![value(
+                "cycles",
+                "the two image cycles η(a), η(σ(a)) as (m1, m2, m3, r)",
+                Quantity::Vector(vec![cycle_quantity(&c1), cycle_quantity(&c2)]),
+            )]
+        }
+        PeSphereImage::CycleAndPlane(k, plane) => {
+            let c1 = cycle(k);
+            push(cycle_geometry(&c1)?);
+            let e = OrientedPlane::new(plane.offset.clone(), plane.normal.clone())
+                .map_err(|e| OpError::new(e.to_string()))?;
+            push(Geometry::Patch(plane_square(&e)?));
+            vec![
+                value("cycles", "the image cycle η(a) as (m1, m2, m3, r)", Quantity::Vector(vec![cycle_quantity(&c1)])),
+                value(
+                    "plane",
+                    "the oriented plane π ∩ R³ as (e0, n1, n2, n3): e0 + n·x = 0",
+                    Quantity::rationals(&[
+                        plane.offset.clone(),
+                        plane.normal[0].clone(),
+                        plane.normal[1].clone(),
+                        plane.normal[2].clone(),
+                    ]),
+                ),
+            ]
+        }
+    };
     Ok(vec![args.object(Geometry::Patches(patches), certs).with_values(values)])
 }
