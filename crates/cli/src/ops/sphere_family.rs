@@ -10,6 +10,7 @@
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::Geometry;
 use crate::model::Object;
+use rcagd_geom::BezierPatch;
 use crate::value::ParamKind;
 use rcagd::envelope::{SphereFamily, SphereFamilyEnvelope};
 use rcagd_algebra::mpoly::MPoly;
@@ -51,6 +52,9 @@ const SPHERE_FAMILY_ENVELOPE: OpSpec = OpSpec {
         ),
         DOMAIN,
         CENTRES,
+        SPHERES,
+        OTHER_SHEET,
+        COMBINE,
     ],
     example: r#"[[object]]
 name = "sphere_family_polar_axes"
@@ -111,17 +115,68 @@ fn envelope_object(
         .export_patches((s0.clone(), s1.clone()), (t0.clone(), t1.clone()))
         .map_err(|e| OpError::param("domain", e.to_string()))?;
     certs.push(weight_cert);
-    let mut out = vec![args.object(Geometry::Patches(patches), certs)];
+    let main = (patches, certs);
+    let mut extra: Vec<Extra> = Vec::new();
+    let mut out = Vec::new();
     if args.bool("centres")? {
         let (pieces, cert) = env
-            .centre_patches((s0, s1), (t0, t1))
+            .centre_patches((s0.clone(), s1.clone()), (t0.clone(), t1.clone()))
             .map_err(|e| OpError::param("centres", e.to_string()))?;
         let mut o = args.object(Geometry::Patches(pieces), vec![cert]);
         o.name = format!("{}_centres", args.name());
         out.push(o);
     }
+    if args.bool("other_sheet")? {
+        let (patches, certs) = env
+            .other_sheet_patches((s0.clone(), s1.clone()), (t0.clone(), t1.clone()))
+            .map_err(|e| OpError::param("other_sheet", format!("the other sheet: {e}")))?;
+        extra.push(("other_sheet", patches, certs));
+    }
+    let n = args.int("spheres")?;
+    if n > 0 {
+        if n > MAX_SPHERES {
+            return Err(OpError::param(
+                "spheres",
+                format!("at most {MAX_SPHERES} enveloped spheres, got {n}"),
+            ));
+        }
+        let spheres = env
+            .enveloped_spheres((s0, s1), (t0, t1), n as usize)
+            .map_err(|e| OpError::param("spheres", e.to_string()))?;
+        let mut patches = Vec::new();
+        let mut certs = Vec::new();
+        for sp in &spheres {
+            certs.extend(env.enveloped_sphere_certificates(sp));
+            patches.extend(sp.cover.patches().iter().cloned());
+        }
+        extra.push(("spheres", patches, certs));
+    } else if n < 0 {
+        return Err(OpError::param(
+            "spheres",
+            format!("the number of enveloped spheres is ≥ 0, got {n}"),
+        ));
+    }
+    let (mut patches, mut certs) = main;
+    if args.bool("combine")? {
+        for (_, p, c) in extra.drain(..) {
+            patches.extend(p);
+            certs.extend(c);
+        }
+    }
+    out.insert(0, args.object(Geometry::Patches(patches), certs));
+    for (suffix, p, c) in extra {
+        let mut o = args.object(Geometry::Patches(p), c);
+        o.name = format!("{}_{suffix}", args.name());
+        out.push(o);
+    }
     Ok(out)
 }
+
+/// An extra object of the envelope ops: name suffix, patches, certificates.
+type Extra = (&'static str, Vec<BezierPatch<Rational>>, Vec<Certificate>);
+
+/// The most enveloped spheres one object draws.
+const MAX_SPHERES: i64 = 16;
 
 /// The parameter rectangle of the sphere-family ops.
 const DOMAIN: ParamSpec = ParamSpec::with_default(
@@ -136,6 +191,27 @@ const CENTRES: ParamSpec = ParamSpec::with_default(
     ParamKind::Bool,
     "false",
     "also output the centre surface of the enveloped spheres over the same rectangle, as the object NAME_centres",
+);
+
+const SPHERES: ParamSpec = ParamSpec::with_default(
+    "spheres",
+    ParamKind::Int,
+    "0",
+    "also output N ≤ 16 enveloped spheres (exact sixteen-patch sphere covers) at N points of the rectangle's diagonal, as the object NAME_spheres; certified: each cover lies on its sphere and both contact points Ψ(s, t), Ψ(s', t') (first and other sheet) lie on it",
+);
+
+const COMBINE: ParamSpec = ParamSpec::with_default(
+    "combine",
+    ParamKind::Bool,
+    "false",
+    "put the other sheet and the enveloped spheres into the envelope's own object (one picture, one STEP body list) instead of NAME_other_sheet and NAME_spheres",
+);
+
+const OTHER_SHEET: ParamSpec = ParamSpec::with_default(
+    "other_sheet",
+    ParamKind::Bool,
+    "false",
+    "also output the other sheet over the same rectangle, as the object NAME_other_sheet: the second contact points Ψ₂(s, t) of the same spheres Φ(s, t) (the second intersection of the net line with Ω), certified like Ψ",
 );
 
 const SPHERE_FAMILY_RECOGNIZE: OpSpec = OpSpec {
@@ -160,6 +236,9 @@ const SPHERE_FAMILY_RECOGNIZE: OpSpec = OpSpec {
         ),
         DOMAIN,
         CENTRES,
+        SPHERES,
+        OTHER_SHEET,
+        COMBINE,
     ],
     example: r#"[[object]]
 name = "sphere_family_recognized_331"

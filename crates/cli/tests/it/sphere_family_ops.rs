@@ -132,3 +132,68 @@ fn the_centre_surface_is_a_second_object() {
         );
     }
 }
+
+/// The polar example of §3.3.4 with `spheres`, `other_sheet` and `combine`.
+fn polar(extra: &str) -> String {
+    format!(
+        "{HEAD}op = \"sphere_family_envelope\"\nnet = \"hyperbolic\"\npoints = [[1, 0, 0, 0], [0, 0, 0, -1], [0, 1, 0, 0], [0, 0, 1, 0]]\na = [[0], [0], [1]]\nb = [[0, 0, 1]]\ndomain = [\"1/4\", 1, \"1/4\", 1]\n{extra}"
+    )
+}
+
+fn patch_count(o: &Object) -> usize {
+    match &o.geometry {
+        Geometry::Patches(p) => p.len(),
+        _ => 0,
+    }
+}
+
+#[test]
+fn both_sheets_and_enveloped_spheres_are_certified_objects() {
+    // §3.3.1 (passant axes): the other sheet has bidegree (14, 14), the spheres 16 patches each
+    let text = format!(
+        "{HEAD}op = \"sphere_family_envelope\"\nnet = \"hyperbolic\"\npoints = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 2, 0, 1], [0, 0, 1, 0]]\na = [[0], [0], [1]]\nb = [[0, 0, 1]]\ndomain = [\"1/4\", 1, \"1/4\", 1]\nspheres = 2\nother_sheet = true\n"
+    );
+    let objs = build(&text);
+    let names: Vec<&str> = objs.iter().map(|o| o.name.as_str()).collect();
+    assert_eq!(names, ["f", "f_other_sheet", "f_spheres"]);
+    crate::common::assert_exact_patches_certifying(&objs[1], "|Ψ − π(Φ)|² ≡ Φ₄²");
+    crate::common::assert_exact_patches_certifying(&objs[2], "second contact point");
+    assert_eq!(patch_count(&objs[2]), 32, "two sixteen-patch sphere covers");
+    let certs = &objs[2].certificates;
+    assert!(
+        certs
+            .iter()
+            .filter(|c| c.property.contains("contact point"))
+            .count()
+            == 4,
+        "two contact points per sphere"
+    );
+    // combined: one object holding both sheets and the spheres, with all certificates
+    let one = build(&format!("{text}combine = true\n"));
+    assert_eq!(one.len(), 1);
+    assert_eq!(
+        patch_count(&one[0]),
+        patch_count(&objs[0]) + patch_count(&objs[1]) + 32
+    );
+    assert_eq!(
+        one[0].certificates.len(),
+        objs.iter().map(|o| o.certificates.len()).sum::<usize>()
+    );
+    assert!(one[0].certificates.iter().all(|c| c.holds));
+}
+
+#[test]
+fn enveloped_sphere_options_fail_at_their_parameter() {
+    for (extra, want) in [("spheres = -1\n", "≥ 0"), ("spheres = 17\n", "at most 16")] {
+        let (line, msg) = build_err(&polar(extra));
+        assert_eq!(line, 9, "{msg}");
+        assert!(msg.contains(want), "{msg}");
+    }
+    // §3.5.3 a: the sphere at (1/2, 1/2) has radius 0
+    let text = format!(
+        "{HEAD}op = \"sphere_family_envelope\"\nnet = \"parabolic\"\npoints = [[1, 0, 0, 1], [0, 0, 1, 0], [0, 1, 0, 0], [0, 0, 0, 1]]\na = [[0], [0], [1]]\nb = [[0, 0], [0, 2]]\ndomain = [\"1/4\", 1, \"1/4\", 1]\nspheres = 2\n"
+    );
+    let (line, msg) = build_err(&text);
+    assert_eq!(line, 9, "{msg}");
+    assert!(msg.contains("non-zero"), "{msg}");
+}
