@@ -197,3 +197,25 @@ fn enveloped_sphere_options_fail_at_their_parameter() {
     assert_eq!(line, 9, "{msg}");
     assert!(msg.contains("non-zero"), "{msg}");
 }
+
+const RULED: &str =
+    "[[object]]\nname = \"r\"\nop = \"line_congruence_strips\"\ncongruence = \"ruled_tangents\"\n";
+
+#[test]
+fn the_tangents_of_a_ruled_surface_along_a_generator_are_drawn_as_a_parabolic_net() {
+    // X(t, v) = (1, t, v, tv): the hyperbolic paraboloid z = xy
+    let objs = build(&format!(
+        "{RULED}points = [[1, 0, 0, 0], [0, 1, 0, 0]]\nruling = [[0, 0, 1, 0], [0, 0, 0, 1]]\nt0 = \"1/2\"\nu = [-1, 1]\nv = [-1, 0, 1]\ntwist = 0\nlambda = [\"-1/2\", \"1/2\"]\n"
+    ));
+    crate::common::assert_exact_patches_certifying(&objs[0], "lies in the tangent plane");
+    assert_eq!(patch_count(&objs[0]), 3);
+    // a cone (constant vertex p): every generator is torsal
+    let (line, msg) = build_err(&format!(
+        "{RULED}points = [[1, 0, 0, 0]]\nruling = [[0, 1, 0, 0], [0, 0, 1, 0]]\n"
+    ));
+    assert_eq!(line, 5, "{msg}");
+    assert!(msg.contains("torsal"), "{msg}");
+    // the ruling is required
+    let (line, msg) = build_err(&format!("{RULED}points = [[1, 0, 0, 0], [0, 1, 0, 0]]\n"));
+    assert!(msg.contains("ruling"), "{line}: {msg}");
+}

@@ -1508,7 +1508,21 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
         t: (F, F),
     ) -> Result<(Vec<BezierPatch<F>>, Vec<Certificate>), SphereFamilyError> {
         let psi2 = self.other_sheet_homogeneous();
-        let mut certs = envelope_certificates(&psi2, &self.phi_st, &self.phi_st_den);
+        let mut certs = self.other_sheet_certificates_of(&psi2);
+        let (pieces, weight) = export_pieces(&psi2, s, t)?;
+        certs.push(weight);
+        Ok((pieces, certs))
+    }
+
+    /// The certificates of the other sheet [`Self::other_sheet_homogeneous`]: the envelope
+    /// identities `|Ψ₂ − π(Φ)|² ≡ Φ₄²`, `⟨Ψ₂ − π(Φ), ∂π(Φ)⟩ + Φ₄ ∂Φ₄ ≡ 0` in `s` and `t`, and
+    /// `Ψ₂ ≢ Ψ` unless the net lines touch Ω.
+    pub fn other_sheet_certificates(&self) -> Vec<Certificate> {
+        self.other_sheet_certificates_of(&self.other_sheet_homogeneous())
+    }
+
+    fn other_sheet_certificates_of(&self, psi2: &[MPoly<F>; 4]) -> Vec<Certificate> {
+        let mut certs = envelope_certificates(psi2, &self.phi_st, &self.phi_st_den);
         let same = (0..4).all(|i| {
             (i + 1..4).all(|j| (&(&psi2[i] * &self.psi[j]) - &(&psi2[j] * &self.psi[i])).is_zero())
         });
@@ -1523,9 +1537,7 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
             F::EXACT,
             || "Ψ₂ ≡ Ψ up to a factor".into(),
         ));
-        let (pieces, weight) = export_pieces(&psi2, s, t)?;
-        certs.push(weight);
-        Ok((pieces, certs))
+        certs
     }
 }
 
