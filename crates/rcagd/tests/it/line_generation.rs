@@ -235,6 +235,9 @@ mod order_greater_one {
         })
     }
 
+    /// A surface with its expected `(order, class, μ)`.
+    type Case = (&'static str, [MPoly<Rational>; 4], (usize, usize, usize));
+
     fn w() -> MPoly<Rational> {
         p(&[(1, 0, 0), (1, 2, 0), (1, 0, 2)])
     }
@@ -246,7 +249,7 @@ mod order_greater_one {
     /// Analytic Geometry of Three Dimensions", 1882, §§ 199–200).
     #[test]
     fn normal_congruences_of_quadrics() {
-        let cases: Vec<(&str, [MPoly<Rational>; 4], (usize, usize, usize))> = vec![
+        let cases: Vec<Case> = vec![
             (
                 "sphere",
                 [
