@@ -19,37 +19,21 @@ use rcagd::Certified;
 use rcagd_algebra::{Certificate, Rational};
 
 /// The ops of this topic.
-pub const OPS: &[OpSpec] = &[SPHERE_FAMILY_ENVELOPE, SPHERE_FAMILY_RECOGNIZE];
+pub const OPS: &[OpSpec] = &[
+    SPHERE_FAMILY_ENVELOPE,
+    SPHERE_FAMILY_RECOGNIZE,
+    SPHERE_FAMILY_CYCLOGRAPHIC,
+];
 
 const SPHERE_FAMILY_ENVELOPE: OpSpec = OpSpec {
     name: "sphere_family_envelope",
     summary: "the rational envelope Ψ(s, t) of the two-parameter sphere family of a line net (hyperbolic, elliptic or parabolic) and two support functions (Gruber §3.2: linear system (3.7), reparametrization (3.16) by the net's fibration, isotropic projection)",
     params: &[
-        ParamSpec::required(
-            "net",
-            ParamKind::Choice(&["hyperbolic", "elliptic", "parabolic"]),
-            "the net type",
-        ),
-        ParamSpec::required(
-            "points",
-            ParamKind::Points,
-            "four points of the ideal space [y1, y2, y3, y4]: c0, c1, d0, d1 (axes c(u) = c0 + u c1, d(v) = d0 + v d1; parabolic: d(u, v) = d0 + u d1 + v c1) or, elliptic, Re c0, Im c0, Re c1, Im c1",
-        ),
-        ParamSpec::required(
-            "a",
-            ParamKind::Grid,
-            "support function a of the planes e = D c: power coefficients a[i][j] of u^i v^j (a depends on u only)",
-        ),
-        ParamSpec::optional(
-            "a_imaginary",
-            ParamKind::Grid,
-            "elliptic nets: the imaginary part of a (default 0)",
-        ),
-        ParamSpec::optional(
-            "b",
-            ParamKind::Grid,
-            "support function b of the planes f = D d: power coefficients b[i][j] of u^i v^j (hyperbolic: v only; parabolic: b_v = a_u; elliptic: default and required value ā(v))",
-        ),
+        NET,
+        POINTS,
+        A,
+        A_IMAGINARY,
+        B,
         DOMAIN,
         CENTRES,
         SPHERES,
@@ -70,7 +54,8 @@ domain = ["1/4", 1, "1/4", 1]
     build: build_envelope,
 };
 
-fn build_envelope(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// The envelope of the recipe's net and support functions.
+fn net_envelope(args: &OpArgs) -> Result<SphereFamilyEnvelope<Rational>, OpError> {
     let kind = match args.string("net")? {
         "elliptic" => NetKind::Elliptic,
         "parabolic" => NetKind::Parabolic,
@@ -82,14 +67,95 @@ fn build_envelope(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         .ok_or_else(|| OpError::param("a", "the support function a is required"))?;
     let a_im = args.opt_grid("a_imaginary")?;
     let b = args.opt_grid("b")?;
-    let env = SphereFamilyEnvelope::<Rational>::from_data(
-        kind,
-        &points,
-        &a,
-        a_im.as_deref(),
-        b.as_deref(),
-    )
-    .map_err(|e| OpError::param(e.input(), e.to_string()))?;
+    SphereFamilyEnvelope::<Rational>::from_data(kind, &points, &a, a_im.as_deref(), b.as_deref())
+        .map_err(|e| OpError::param(e.input(), e.to_string()))
+}
+
+const SPHERE_FAMILY_CYCLOGRAPHIC: OpSpec = OpSpec {
+    name: "sphere_family_cyclographic",
+    summary: "the cyclographic construction of the envelope (Gruber §3.1.2) at given spheres of a net's family: the ideal line of the tangent plane of Φ, its polar line h (the normal line), h ∩ Ω and the isotropic projections give the two contact points; drawn as the radii from the centre to both contact points",
+    params: &[
+        NET,
+        POINTS,
+        A,
+        A_IMAGINARY,
+        B,
+        ParamSpec::required(
+            "at",
+            ParamKind::Points,
+            "parameter points [s, t] of Ω(s, t) = (2s, 2t, 1 − s² − t², 1 + s² + t²): the spheres Φ(s, t) (rational contact points)",
+        ),
+    ],
+    example: r#"[[object]]
+name = "sphere_family_cyclographic_polar"
+op = "sphere_family_cyclographic"
+# Gruber §3.3.4 (polar axes): the radii to both contact points of three spheres
+net = "hyperbolic"
+points = [[1, 0, 0, 0], [0, 0, 0, -1], [0, 1, 0, 0], [0, 0, 1, 0]]
+a = [[0], [0], [1]]
+b = [[0, 0, 1]]
+at = [["1/2", "1/2"], ["3/4", "1/3"], ["1/3", "3/4"]]
+"#,
+    build: build_cyclographic,
+};
+
+fn build_cyclographic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let env = net_envelope(args)?;
+    let at = args.points("at")?;
+    let mut curves = Vec::new();
+    let mut certs = Vec::new();
+    let psi2 = env.other_sheet_homogeneous();
+    for st in &at {
+        let [s, t] = <[Rational; 2]>::try_from(st.clone()).map_err(|_| {
+            OpError::param("at", format!("a parameter point is [s, t], got {} numbers", st.len()))
+        })?;
+        let ((m, r), pts) = env
+            .cyclographic_contacts(&s, &t)
+            .map_err(|e| OpError::param("at", e.to_string()))?;
+        certs.push(env.cyclographic_certificate(&s, &t));
+        let x = [s.clone(), t.clone()];
+        let v: Vec<Rational> = psi2
+            .iter()
+            .map(|p| p.eval(&x).unwrap_or_else(|_| Rational::from(0)))
+            .collect();
+        for (k, pt) in pts.iter().enumerate() {
+            let d = (0..3).fold(Rational::from(0), |acc, i| {
+                let di = &pt[i] - &m[i];
+                acc + &di * &di
+            }) - &r * &r;
+            certs.push(Certificate::decide(
+                format!("contact point {} at ({s}, {t}) lies on its sphere: |f − m|² = r²", k + 1),
+                d == Rational::from(0),
+                true,
+                || format!("|f − m|² − r² = {d}"),
+            ));
+            let hom = |p: &[Rational; 3]| -> Vec<Rational> {
+                let mut h = vec![Rational::from(1)];
+                h.extend(p.iter().cloned());
+                h
+            };
+            curves.push(
+                rcagd_geom::BezierCurve::from_homogeneous(vec![hom(&m), hom(pt)])
+                    .map_err(|e| OpError::new(e.to_string()))?,
+            );
+        }
+        // the other contact point is the second sheet Ψ₂(s, t)
+        let other_is_psi2 = v[0] != Rational::from(0)
+            && pts
+                .iter()
+                .any(|pt| (0..3).all(|i| pt[i] == &v[i + 1] / &v[0]));
+        certs.push(Certificate::decide(
+            format!("a contact point at ({s}, {t}) is the other sheet's Ψ₂(s, t)"),
+            other_is_psi2,
+            true,
+            || "neither contact point is Ψ₂(s, t)".into(),
+        ));
+    }
+    Ok(vec![args.object(Geometry::Curves(curves), certs)])
+}
+
+fn build_envelope(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let env = net_envelope(args)?;
     let certs = env.certify();
     envelope_object(args, &env, certs)
 }
@@ -177,6 +243,36 @@ type Extra = (&'static str, Vec<BezierPatch<Rational>>, Vec<Certificate>);
 
 /// The most enveloped spheres one object draws.
 const MAX_SPHERES: i64 = 16;
+
+const NET: ParamSpec = ParamSpec::required(
+    "net",
+    ParamKind::Choice(&["hyperbolic", "elliptic", "parabolic"]),
+    "the net type",
+);
+
+const POINTS: ParamSpec = ParamSpec::required(
+    "points",
+    ParamKind::Points,
+    "four points of the ideal space [y1, y2, y3, y4]: c0, c1, d0, d1 (axes c(u) = c0 + u c1, d(v) = d0 + v d1; parabolic: d(u, v) = d0 + u d1 + v c1) or, elliptic, Re c0, Im c0, Re c1, Im c1",
+);
+
+const A: ParamSpec = ParamSpec::required(
+    "a",
+    ParamKind::Grid,
+    "support function a of the planes e = D c: power coefficients a[i][j] of u^i v^j (a depends on u only)",
+);
+
+const A_IMAGINARY: ParamSpec = ParamSpec::optional(
+    "a_imaginary",
+    ParamKind::Grid,
+    "elliptic nets: the imaginary part of a (default 0)",
+);
+
+const B: ParamSpec = ParamSpec::optional(
+    "b",
+    ParamKind::Grid,
+    "support function b of the planes f = D d: power coefficients b[i][j] of u^i v^j (hyperbolic: v only; parabolic: b_v = a_u; elliptic: default and required value ā(v))",
+);
 
 /// The parameter rectangle of the sphere-family ops.
 const DOMAIN: ParamSpec = ParamSpec::with_default(

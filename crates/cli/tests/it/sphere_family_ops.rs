@@ -219,3 +219,32 @@ fn the_tangents_of_a_ruled_surface_along_a_generator_are_drawn_as_a_parabolic_ne
     let (line, msg) = build_err(&format!("{RULED}points = [[1, 0, 0, 0], [0, 1, 0, 0]]\n"));
     assert!(msg.contains("ruling"), "{line}: {msg}");
 }
+
+#[test]
+fn the_cyclographic_construction_draws_both_contact_points() {
+    let text = format!(
+        "{HEAD}op = \"sphere_family_cyclographic\"\nnet = \"hyperbolic\"\npoints = [[1, 0, 0, 0], [0, 0, 0, -1], [0, 1, 0, 0], [0, 0, 1, 0]]\na = [[0], [0], [1]]\nb = [[0, 0, 1]]\nat = [[\"1/2\", \"1/2\"], [\"3/4\", \"1/3\"]]\n"
+    );
+    let objs = build(&text);
+    let o = &objs[0];
+    assert!(matches!(&o.geometry, Geometry::Curves(c) if c.len() == 4));
+    assert!(
+        o.certificates.iter().all(|c| c.holds && c.exact),
+        "{:#?}",
+        o.certificates
+    );
+    assert_eq!(
+        o.certificates
+            .iter()
+            .filter(|c| c.property.contains("other sheet"))
+            .count(),
+        2
+    );
+    // a parameter point on an axis (no unique net line) or of the wrong size: at `at`
+    let (line, msg) = build_err(&text.replace(
+        "at = [[\"1/2\", \"1/2\"], [\"3/4\", \"1/3\"]]",
+        "at = [[\"1/2\", \"1/2\", 1]]",
+    ));
+    assert_eq!(line, 8, "{msg}");
+    assert!(msg.contains("[s, t]"), "{msg}");
+}

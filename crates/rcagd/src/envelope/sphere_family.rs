@@ -964,6 +964,45 @@ impl<F: SqrtScalar> SphereFamilyEnvelope<F> {
         })
     }
 
+    /// The cyclographic construction ([`Self::cyclographic_envelope`]) at the sphere
+    /// `Φ(s, t)` of the rational parameter point `(s, t)` of Ω: the sphere `(centre,
+    /// radius)` and its two contact points. The net line through `w(s, t)` is the normal
+    /// line `h`, so both points of `h ∩ Ω` (`w(s, t)` and the other sheet's `w'`) are
+    /// rational and so are the contact points.
+    ///
+    /// # Errors
+    /// Those of [`Self::cyclographic_envelope`] and [`Self::parameters_at`];
+    /// [`SphereFamilyError::Undefined`] if a contact point is not in the base field (cannot
+    /// happen at a rational point of Ω; reported rather than rounded).
+    #[allow(clippy::type_complexity)]
+    pub fn cyclographic_contacts(
+        &self,
+        s: &F,
+        t: &F,
+    ) -> Result<(([F; 3], F), [[F; 3]; 2]), SphereFamilyError> {
+        let (p, q) = self.parameters_at(s, t)?;
+        let c = self.cyclographic_envelope(&p, &q)?;
+        let sphere = self.sphere_at_parameters(&p, &q)?;
+        let back = |x: &F::Ext| -> Result<F, SphereFamilyError> {
+            x.to_rational()
+                .map(|r| F::from_rational(&r))
+                .ok_or_else(|| {
+                    SphereFamilyError::Undefined(format!(
+                        "a contact point at ({}, {}) is irrational",
+                        format_scalar(s),
+                        format_scalar(t)
+                    ))
+                })
+        };
+        let mut pts: Vec<[F; 3]> = Vec::with_capacity(2);
+        for pt in &c.points {
+            pts.push([back(&pt[0])?, back(&pt[1])?, back(&pt[2])?]);
+        }
+        let [a, b] = <[[F; 3]; 2]>::try_from(pts)
+            .map_err(|_| SphereFamilyError::Undefined("two contact points".into()))?;
+        Ok((sphere, [a, b]))
+    }
+
     /// Certificate: at the parameter `(s, t)` of `Ω`, `Ψ(s, t)` is one of the two points of
     /// the cyclographic construction ([`Self::cyclographic_envelope`]) at the net parameters
     /// of `(s, t)` — exact over the square-root extension.
