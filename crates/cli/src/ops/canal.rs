@@ -36,6 +36,7 @@ pub const OPS: &[OpSpec] = &[
     COMMON_TRANSVERSALS,
     REGULUS,
     CANAL_SURFACE,
+    CANAL_NORMAL_FIELD,
     PIPE_PH,
     PIPE,
     CANAL_BLEND_SPHERES,
@@ -912,6 +913,107 @@ fn build_blend_sphere_plane(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     }
     let (patches, wcert) = positive_pieces(patches)?;
     let mut certs = blend.certify();
+    certs.push(wcert);
+    Ok(vec![args.object(Geometry::Patches(patches), certs)])
+}
+
+const CANAL_NORMAL_FIELD: OpSpec = OpSpec {
+    name: "canal_surface_normal_field",
+    summary: "the canal surface of a polynomial spine and radius from a rational unit normal field n₀(t) on its circles of normals (Gruber (2.10) with a given rational point on every circle instead of a split of |ṁ|² − ṙ²): n = n₀ − 2⟨n₀, v⟩ v/|v|², x = m + r n, v = e₁ + u e₂ ⊥ ṁ",
+    params: &[
+        ParamSpec::required(
+            "spine",
+            ParamKind::Points,
+            "power coefficients [x, y, z] of the spine m(t) = Σ spine[k] tᵏ",
+        ),
+        ParamSpec::required(
+            "radius",
+            ParamKind::Numbers,
+            "power coefficients of the radius r(t) = Σ radius[k] tᵏ",
+        ),
+        ParamSpec::required(
+            "normal",
+            ParamKind::Points,
+            "power coefficients [x, y, z] of the numerator N(t) of the normal field n₀ = N/d; needs |N|² ≡ d² and ⟨N, ṁ⟩ + d ṙ ≡ 0",
+        ),
+        ParamSpec::with_default(
+            "denominator",
+            ParamKind::Numbers,
+            "[1]",
+            "power coefficients of the denominator d(t) of the normal field",
+        ),
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[0, 1, -1, 1]",
+            "parameter rectangle [t0, t1, u0, u1] (t along the spine, u along the characteristic circles)",
+        ),
+    ],
+    example: r#"[[object]]
+name = "canal_normal_field_parabola"
+op = "canal_surface_normal_field"
+# m(t) = (t, t²/2, 0), r(t) = t: ṁ = (1, t, 0), ṙ = 1, and n₀ = (−1, 0, 0) is a unit normal
+# on every circle of normals (⟨n₀, ṁ⟩ + ṙ = 0); |ṁ|² − ṙ² = t² is a square, the field is
+# given directly instead
+spine = [[0, 0, 0], [1, 0, 0], [0, "1/2", 0]]
+radius = [0, 1]
+normal = [[-1, 0, 0]]
+domain = ["1/4", 1, -1, 1]
+"#,
+    build: build_canal_normal_field,
+};
+
+/// `Σ c[k] tᵏ` of one coordinate of a list of power-coefficient points.
+fn coordinate_poly(points: &[Vec<Rational>], k: usize) -> rcagd_algebra::Poly<Rational> {
+    rcagd_algebra::Poly::new(points.iter().map(|p| p[k].clone()).collect())
+}
+
+fn build_canal_normal_field(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let spine = args.points("spine")?;
+    let normal = args.points("normal")?;
+    for (name, pts) in [("spine", &spine), ("normal", &normal)] {
+        if pts.iter().any(|p| p.len() != 3) {
+            return Err(OpError::param(
+                name,
+                format!("`{name}` holds power coefficients [x, y, z]"),
+            ));
+        }
+    }
+    let radius = args.opt_numbers("radius")?.unwrap_or_default();
+    if radius.is_empty() {
+        return Err(OpError::param("radius", "give at least one radius coefficient"));
+    }
+    let den = args
+        .opt_numbers("denominator")?
+        .unwrap_or_else(|| vec![Rational::one()]);
+    let dom = args.opt_numbers("domain")?.unwrap_or_default();
+    let [t0, t1, u0, u1] = <[Rational; 4]>::try_from(dom.clone()).map_err(|_| {
+        OpError::param(
+            "domain",
+            format!("four numbers [t0, t1, u0, u1], got {}", dom.len()),
+        )
+    })?;
+    let family = CanalSpine::polynomial(
+        core::array::from_fn(|k| coordinate_poly(&spine, k)),
+        rcagd_algebra::Poly::new(radius),
+    );
+    let n: [rcagd_algebra::Poly<Rational>; 3] = core::array::from_fn(|k| coordinate_poly(&normal, k));
+    let d = rcagd_algebra::Poly::new(den);
+    let built = rcagd::canal::canal_surface_from_normal_field(&family, &n, &d).map_err(|e| {
+        let m = e.to_string();
+        if m.contains("denominator") {
+            OpError::param("denominator", m)
+        } else if m.contains("ṁ ≡ 0") {
+            OpError::param("spine", m)
+        } else {
+            OpError::param("normal", m)
+        }
+    })?;
+    let patch = built
+        .patch((t0, t1), (u0, u1))
+        .map_err(|e| OpError::param("domain", e.to_string()))?;
+    let (patches, wcert) = positive_pieces(vec![patch])?;
+    let mut certs = built.certify();
     certs.push(wcert);
     Ok(vec![args.object(Geometry::Patches(patches), certs)])
 }

@@ -17,18 +17,29 @@ const LINE_CONGRUENCE_STRIPS: OpSpec = OpSpec {
     params: &[
         ParamSpec::required(
             "congruence",
-            ParamKind::Choice(&["hyperbolic", "elliptic", "parabolic", "pencil", "cubic_chords", "collineation", "one_n"]),
+            ParamKind::Choice(&["hyperbolic", "elliptic", "parabolic", "pencil", "cubic_chords", "collineation", "one_n", "ruled_tangents"]),
             "the congruence type",
         ),
         ParamSpec::required(
             "points",
             ParamKind::Points,
-            "homogeneous points [x0, x1, x2, x3] (weight first): nets c0, c1, d0, d1 (axes c0 + u c1, d0 + v d1; parabolic: lines through c(u) to d0 + u d1 + v c1) or Re c0, Im c0, Re c1, Im c1 (elliptic); pencil c0, c1, e0, e1 (the point c0 + u c1 of the axis is mapped to the plane e0 + u e1 through it; lines through c(u) in that plane: a parabolic net); cubic_chords a0, a1, a2, a3 of k(t) = a0 + t a1 + t² a2 + t³ a3 (chord k(u) ∨ k(v)); collineation a0, a1, a2, b0, b1, b2 (κ(x0 a0 + x1 a1 + x2 a2) = x0 b0 + x1 b1 + x2 b2, lines x(u, v) ∨ κ(x(u, v)) with x = a0 + u a1 + v a2); one_n g0, g1 of the focal line (lines k(u) ∨ (g0 + v g1))",
+            "homogeneous points [x0, x1, x2, x3] (weight first): nets c0, c1, d0, d1 (axes c0 + u c1, d0 + v d1; parabolic: lines through c(u) to d0 + u d1 + v c1) or Re c0, Im c0, Re c1, Im c1 (elliptic); pencil c0, c1, e0, e1 (the point c0 + u c1 of the axis is mapped to the plane e0 + u e1 through it; lines through c(u) in that plane: a parabolic net); cubic_chords a0, a1, a2, a3 of k(t) = a0 + t a1 + t² a2 + t³ a3 (chord k(u) ∨ k(v)); collineation a0, a1, a2, b0, b1, b2 (κ(x0 a0 + x1 a1 + x2 a2) = x0 b0 + x1 b1 + x2 b2, lines x(u, v) ∨ κ(x(u, v)) with x = a0 + u a1 + v a2); one_n g0, g1 of the focal line (lines k(u) ∨ (g0 + v g1)); ruled_tangents: the power coefficients of p(t) (see `ruling`) of the ruled surface X(t, v) = p(t) + v q(t)",
         ),
         ParamSpec::optional(
             "curve",
             ParamKind::Points,
             "one_n only: the curve k(t) = Σ t^m curve[m], homogeneous coefficient points",
+        ),
+        ParamSpec::optional(
+            "ruling",
+            ParamKind::Points,
+            "ruled_tangents only: the power coefficients of q(t) (homogeneous points) of the ruled surface X(t, v) = p(t) + v q(t); the net is the tangents along the generator t = t0 (Gruber §1.1.6: a parabolic net with axis the generator)",
+        ),
+        ParamSpec::with_default(
+            "t0",
+            ParamKind::Number,
+            "0",
+            "ruled_tangents only: the (non-torsal) generator t = t0",
         ),
         ParamSpec::with_default("u", ParamKind::Numbers, "[0, 1]", "the interval [u0, u1] of every strip"),
         ParamSpec::with_default("v", ParamKind::Numbers, "[0]", "the values v_k, one strip each"),
@@ -95,6 +106,17 @@ fn build_strips(args: &OpArgs) -> Result<Vec<Object>, OpError> {
                 [pts[0].clone(), pts[1].clone(), pts[2].clone()],
                 [pts[3].clone(), pts[4].clone(), pts[5].clone()],
             )
+        }
+        "ruled_tangents" => {
+            let ruling: Vec<[Rational; 4]> = args
+                .get("ruling")
+                .map(|_| args.points("ruling"))
+                .transpose()?
+                .ok_or_else(|| OpError::param("ruling", "ruled_tangents needs the ruling directions q(t)"))?
+                .iter()
+                .map(|p| four("ruling", p))
+                .collect::<Result<_, _>>()?;
+            CongruenceSpec::RuledSurfaceTangents(pts, ruling, args.number("t0")?)
         }
         _ => {
             need(2)?;

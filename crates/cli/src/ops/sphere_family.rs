@@ -10,6 +10,7 @@
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::Geometry;
 use crate::model::Object;
+use rcagd_geom::BezierPatch;
 use crate::value::ParamKind;
 use rcagd::envelope::{SphereFamily, SphereFamilyEnvelope};
 use rcagd_algebra::mpoly::MPoly;
@@ -18,39 +19,26 @@ use rcagd::Certified;
 use rcagd_algebra::{Certificate, Rational};
 
 /// The ops of this topic.
-pub const OPS: &[OpSpec] = &[SPHERE_FAMILY_ENVELOPE, SPHERE_FAMILY_RECOGNIZE];
+pub const OPS: &[OpSpec] = &[
+    SPHERE_FAMILY_ENVELOPE,
+    SPHERE_FAMILY_RECOGNIZE,
+    SPHERE_FAMILY_CYCLOGRAPHIC,
+];
 
 const SPHERE_FAMILY_ENVELOPE: OpSpec = OpSpec {
     name: "sphere_family_envelope",
     summary: "the rational envelope Ψ(s, t) of the two-parameter sphere family of a line net (hyperbolic, elliptic or parabolic) and two support functions (Gruber §3.2: linear system (3.7), reparametrization (3.16) by the net's fibration, isotropic projection)",
     params: &[
-        ParamSpec::required(
-            "net",
-            ParamKind::Choice(&["hyperbolic", "elliptic", "parabolic"]),
-            "the net type",
-        ),
-        ParamSpec::required(
-            "points",
-            ParamKind::Points,
-            "four points of the ideal space [y1, y2, y3, y4]: c0, c1, d0, d1 (axes c(u) = c0 + u c1, d(v) = d0 + v d1; parabolic: d(u, v) = d0 + u d1 + v c1) or, elliptic, Re c0, Im c0, Re c1, Im c1",
-        ),
-        ParamSpec::required(
-            "a",
-            ParamKind::Grid,
-            "support function a of the planes e = D c: power coefficients a[i][j] of u^i v^j (a depends on u only)",
-        ),
-        ParamSpec::optional(
-            "a_imaginary",
-            ParamKind::Grid,
-            "elliptic nets: the imaginary part of a (default 0)",
-        ),
-        ParamSpec::optional(
-            "b",
-            ParamKind::Grid,
-            "support function b of the planes f = D d: power coefficients b[i][j] of u^i v^j (hyperbolic: v only; parabolic: b_v = a_u; elliptic: default and required value ā(v))",
-        ),
+        NET,
+        POINTS,
+        A,
+        A_IMAGINARY,
+        B,
         DOMAIN,
         CENTRES,
+        SPHERES,
+        OTHER_SHEET,
+        COMBINE,
     ],
     example: r#"[[object]]
 name = "sphere_family_polar_axes"
@@ -66,7 +54,8 @@ domain = ["1/4", 1, "1/4", 1]
     build: build_envelope,
 };
 
-fn build_envelope(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// The envelope of the recipe's net and support functions.
+fn net_envelope(args: &OpArgs) -> Result<SphereFamilyEnvelope<Rational>, OpError> {
     let kind = match args.string("net")? {
         "elliptic" => NetKind::Elliptic,
         "parabolic" => NetKind::Parabolic,
@@ -78,14 +67,95 @@ fn build_envelope(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         .ok_or_else(|| OpError::param("a", "the support function a is required"))?;
     let a_im = args.opt_grid("a_imaginary")?;
     let b = args.opt_grid("b")?;
-    let env = SphereFamilyEnvelope::<Rational>::from_data(
-        kind,
-        &points,
-        &a,
-        a_im.as_deref(),
-        b.as_deref(),
-    )
-    .map_err(|e| OpError::param(e.input(), e.to_string()))?;
+    SphereFamilyEnvelope::<Rational>::from_data(kind, &points, &a, a_im.as_deref(), b.as_deref())
+        .map_err(|e| OpError::param(e.input(), e.to_string()))
+}
+
+const SPHERE_FAMILY_CYCLOGRAPHIC: OpSpec = OpSpec {
+    name: "sphere_family_cyclographic",
+    summary: "the cyclographic construction of the envelope (Gruber §3.1.2) at given spheres of a net's family: the ideal line of the tangent plane of Φ, its polar line h (the normal line), h ∩ Ω and the isotropic projections give the two contact points; drawn as the radii from the centre to both contact points",
+    params: &[
+        NET,
+        POINTS,
+        A,
+        A_IMAGINARY,
+        B,
+        ParamSpec::required(
+            "at",
+            ParamKind::Points,
+            "parameter points [s, t] of Ω(s, t) = (2s, 2t, 1 − s² − t², 1 + s² + t²): the spheres Φ(s, t) (rational contact points)",
+        ),
+    ],
+    example: r#"[[object]]
+name = "sphere_family_cyclographic_polar"
+op = "sphere_family_cyclographic"
+# Gruber §3.3.4 (polar axes): the radii to both contact points of three spheres
+net = "hyperbolic"
+points = [[1, 0, 0, 0], [0, 0, 0, -1], [0, 1, 0, 0], [0, 0, 1, 0]]
+a = [[0], [0], [1]]
+b = [[0, 0, 1]]
+at = [["1/2", "1/2"], ["3/4", "1/3"], ["1/3", "3/4"]]
+"#,
+    build: build_cyclographic,
+};
+
+fn build_cyclographic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let env = net_envelope(args)?;
+    let at = args.points("at")?;
+    let mut curves = Vec::new();
+    let mut certs = Vec::new();
+    let psi2 = env.other_sheet_homogeneous();
+    for st in &at {
+        let [s, t] = <[Rational; 2]>::try_from(st.clone()).map_err(|_| {
+            OpError::param("at", format!("a parameter point is [s, t], got {} numbers", st.len()))
+        })?;
+        let ((m, r), pts) = env
+            .cyclographic_contacts(&s, &t)
+            .map_err(|e| OpError::param("at", e.to_string()))?;
+        certs.push(env.cyclographic_certificate(&s, &t));
+        let x = [s.clone(), t.clone()];
+        let v: Vec<Rational> = psi2
+            .iter()
+            .map(|p| p.eval(&x).unwrap_or_else(|_| Rational::from(0)))
+            .collect();
+        for (k, pt) in pts.iter().enumerate() {
+            let d = (0..3).fold(Rational::from(0), |acc, i| {
+                let di = &pt[i] - &m[i];
+                acc + &di * &di
+            }) - &r * &r;
+            certs.push(Certificate::decide(
+                format!("contact point {} at ({s}, {t}) lies on its sphere: |f − m|² = r²", k + 1),
+                d == Rational::from(0),
+                true,
+                || format!("|f − m|² − r² = {d}"),
+            ));
+            let hom = |p: &[Rational; 3]| -> Vec<Rational> {
+                let mut h = vec![Rational::from(1)];
+                h.extend(p.iter().cloned());
+                h
+            };
+            curves.push(
+                rcagd_geom::BezierCurve::from_homogeneous(vec![hom(&m), hom(pt)])
+                    .map_err(|e| OpError::new(e.to_string()))?,
+            );
+        }
+        // the other contact point is the second sheet Ψ₂(s, t)
+        let other_is_psi2 = v[0] != Rational::from(0)
+            && pts
+                .iter()
+                .any(|pt| (0..3).all(|i| pt[i] == &v[i + 1] / &v[0]));
+        certs.push(Certificate::decide(
+            format!("a contact point at ({s}, {t}) is the other sheet's Ψ₂(s, t)"),
+            other_is_psi2,
+            true,
+            || "neither contact point is Ψ₂(s, t)".into(),
+        ));
+    }
+    Ok(vec![args.object(Geometry::Curves(curves), certs)])
+}
+
+fn build_envelope(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let env = net_envelope(args)?;
     let certs = env.certify();
     envelope_object(args, &env, certs)
 }
@@ -111,17 +181,98 @@ fn envelope_object(
         .export_patches((s0.clone(), s1.clone()), (t0.clone(), t1.clone()))
         .map_err(|e| OpError::param("domain", e.to_string()))?;
     certs.push(weight_cert);
-    let mut out = vec![args.object(Geometry::Patches(patches), certs)];
+    let main = (patches, certs);
+    let mut extra: Vec<Extra> = Vec::new();
+    let mut out = Vec::new();
     if args.bool("centres")? {
         let (pieces, cert) = env
-            .centre_patches((s0, s1), (t0, t1))
+            .centre_patches((s0.clone(), s1.clone()), (t0.clone(), t1.clone()))
             .map_err(|e| OpError::param("centres", e.to_string()))?;
         let mut o = args.object(Geometry::Patches(pieces), vec![cert]);
         o.name = format!("{}_centres", args.name());
         out.push(o);
     }
+    if args.bool("other_sheet")? {
+        let (patches, certs) = env
+            .other_sheet_patches((s0.clone(), s1.clone()), (t0.clone(), t1.clone()))
+            .map_err(|e| OpError::param("other_sheet", format!("the other sheet: {e}")))?;
+        extra.push(("other_sheet", patches, certs));
+    }
+    let n = args.int("spheres")?;
+    if n > 0 {
+        if n > MAX_SPHERES {
+            return Err(OpError::param(
+                "spheres",
+                format!("at most {MAX_SPHERES} enveloped spheres, got {n}"),
+            ));
+        }
+        let spheres = env
+            .enveloped_spheres((s0, s1), (t0, t1), n as usize)
+            .map_err(|e| OpError::param("spheres", e.to_string()))?;
+        let mut patches = Vec::new();
+        let mut certs = Vec::new();
+        for sp in &spheres {
+            certs.extend(env.enveloped_sphere_certificates(sp));
+            patches.extend(sp.cover.patches().iter().cloned());
+        }
+        extra.push(("spheres", patches, certs));
+    } else if n < 0 {
+        return Err(OpError::param(
+            "spheres",
+            format!("the number of enveloped spheres is ≥ 0, got {n}"),
+        ));
+    }
+    let (mut patches, mut certs) = main;
+    if args.bool("combine")? {
+        for (_, p, c) in extra.drain(..) {
+            patches.extend(p);
+            certs.extend(c);
+        }
+    }
+    out.insert(0, args.object(Geometry::Patches(patches), certs));
+    for (suffix, p, c) in extra {
+        let mut o = args.object(Geometry::Patches(p), c);
+        o.name = format!("{}_{suffix}", args.name());
+        out.push(o);
+    }
     Ok(out)
 }
+
+/// An extra object of the envelope ops: name suffix, patches, certificates.
+type Extra = (&'static str, Vec<BezierPatch<Rational>>, Vec<Certificate>);
+
+/// The most enveloped spheres one object draws.
+const MAX_SPHERES: i64 = 16;
+
+const NET: ParamSpec = ParamSpec::required(
+    "net",
+    ParamKind::Choice(&["hyperbolic", "elliptic", "parabolic"]),
+    "the net type",
+);
+
+const POINTS: ParamSpec = ParamSpec::required(
+    "points",
+    ParamKind::Points,
+    "four points of the ideal space [y1, y2, y3, y4]: c0, c1, d0, d1 (axes c(u) = c0 + u c1, d(v) = d0 + v d1; parabolic: d(u, v) = d0 + u d1 + v c1) or, elliptic, Re c0, Im c0, Re c1, Im c1",
+);
+
+const A: ParamSpec = ParamSpec::required(
+    "a",
+    ParamKind::Grid,
+    "support function a of the planes e = D c: power coefficients a[i][j] of u^i v^j (a depends on u only)",
+);
+
+const A_IMAGINARY: ParamSpec = ParamSpec::optional(
+    "a_imaginary",
+    ParamKind::Grid,
+    "elliptic nets: the imaginary part of a (default 0)",
+);
+
+const B: ParamSpec = ParamSpec::optional(
+    "b",
+    ParamKind::Grid,
+    "support function b of the planes f = D d: power coefficients b[i][j] of u^i v^j (hyperbolic: v only; parabolic: b_v = a_u; elliptic: default and required value ā(v))",
+);
 
 /// The parameter rectangle of the sphere-family ops.
 const DOMAIN: ParamSpec = ParamSpec::with_default(
@@ -136,6 +287,27 @@ const CENTRES: ParamSpec = ParamSpec::with_default(
     ParamKind::Bool,
     "false",
     "also output the centre surface of the enveloped spheres over the same rectangle, as the object NAME_centres",
+);
+
+const SPHERES: ParamSpec = ParamSpec::with_default(
+    "spheres",
+    ParamKind::Int,
+    "0",
+    "also output N ≤ 16 enveloped spheres (exact sixteen-patch sphere covers) at N points of the rectangle's diagonal, as the object NAME_spheres; certified: each cover lies on its sphere and both contact points Ψ(s, t), Ψ(s', t') (first and other sheet) lie on it",
+);
+
+const COMBINE: ParamSpec = ParamSpec::with_default(
+    "combine",
+    ParamKind::Bool,
+    "false",
+    "put the other sheet and the enveloped spheres into the envelope's own object (one picture, one STEP body list) instead of NAME_other_sheet and NAME_spheres",
+);
+
+const OTHER_SHEET: ParamSpec = ParamSpec::with_default(
+    "other_sheet",
+    ParamKind::Bool,
+    "false",
+    "also output the other sheet over the same rectangle, as the object NAME_other_sheet: the second contact points Ψ₂(s, t) of the same spheres Φ(s, t) (the second intersection of the net line with Ω), certified like Ψ",
 );
 
 const SPHERE_FAMILY_RECOGNIZE: OpSpec = OpSpec {
@@ -160,6 +332,9 @@ const SPHERE_FAMILY_RECOGNIZE: OpSpec = OpSpec {
         ),
         DOMAIN,
         CENTRES,
+        SPHERES,
+        OTHER_SHEET,
+        COMBINE,
     ],
     example: r#"[[object]]
 name = "sphere_family_recognized_331"

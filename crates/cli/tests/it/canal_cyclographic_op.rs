@@ -33,3 +33,45 @@ fn without_a_rectangle_the_error_names_gamma_at_the_radius() {
     assert_eq!(d[0].line, 6, "{}", d[0].message);
     assert!(d[0].message.contains("pole"), "{}", d[0].message);
 }
+
+// ---------------------------------------------------------------------------------------
+// `canal_surface_normal_field`: (2.10) with a given rational unit normal field.
+
+const NF: &str = "[[object]]\nname = \"n\"\nop = \"canal_surface_normal_field\"\nspine = [[0, 0, 0], [1, 0, 0], [0, \"1/2\", 0]]\nradius = [0, 1]\n";
+
+#[test]
+fn a_rational_normal_field_gives_a_certified_canal_surface() {
+    // m = (t, t²/2, 0), r = t, n₀ = (−1, 0, 0): ⟨n₀, ṁ⟩ + ṙ = −1 + 1 = 0
+    let text = format!("{NF}normal = [[-1, 0, 0]]\ndomain = [\"1/4\", 1, -1, 1]\n");
+    let recipe = Recipe::parse("t.toml", &text, None).expect("recipe parses");
+    let objs = build_recipe(&recipe, |_| {}).expect("recipe builds");
+    crate::common::assert_exact_patches_certifying(&objs[0], "every Bernstein weight");
+    assert!(
+        objs[0].certificates.len() >= 5,
+        "{:#?}",
+        objs[0].certificates
+    );
+}
+
+#[test]
+fn a_wrong_normal_field_is_refused_at_its_parameter() {
+    for (normal, den, want, line) in [
+        // not a unit field
+        ("[[0, 2, 0]]", "[1]", "unit", 6),
+        // a unit field off the circles of normals: ⟨n₀, ṁ⟩ + ṙ = 2
+        ("[[1, 0, 0]]", "[1]", "circles of normals", 6),
+        // the zero denominator
+        ("[[-1, 0, 0]]", "[0]", "denominator", 7),
+    ] {
+        let text = format!("{NF}normal = {normal}\ndenominator = {den}\n");
+        let recipe = Recipe::parse("t.toml", &text, None).expect("recipe parses");
+        let d = build_recipe(&recipe, |_| {}).expect_err("must fail");
+        assert_eq!(d[0].line, line, "{}", d[0].message);
+        assert!(d[0].message.contains(want), "{}", d[0].message);
+    }
+    // spine coefficients of the wrong dimension
+    let text = "[[object]]\nname = \"n\"\nop = \"canal_surface_normal_field\"\nspine = [[0, 0, 0, 0], [1, 0, 0, 0]]\nradius = [0, 1]\nnormal = [[-1, 0, 0]]\n";
+    let recipe = Recipe::parse("t.toml", text, None).expect("recipe parses");
+    let d = build_recipe(&recipe, |_| {}).expect_err("must fail");
+    assert_eq!(d[0].line, 4, "{}", d[0].message);
+}

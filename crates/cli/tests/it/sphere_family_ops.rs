@@ -132,3 +132,119 @@ fn the_centre_surface_is_a_second_object() {
         );
     }
 }
+
+/// The polar example of §3.3.4 with `spheres`, `other_sheet` and `combine`.
+fn polar(extra: &str) -> String {
+    format!(
+        "{HEAD}op = \"sphere_family_envelope\"\nnet = \"hyperbolic\"\npoints = [[1, 0, 0, 0], [0, 0, 0, -1], [0, 1, 0, 0], [0, 0, 1, 0]]\na = [[0], [0], [1]]\nb = [[0, 0, 1]]\ndomain = [\"1/4\", 1, \"1/4\", 1]\n{extra}"
+    )
+}
+
+fn patch_count(o: &Object) -> usize {
+    match &o.geometry {
+        Geometry::Patches(p) => p.len(),
+        _ => 0,
+    }
+}
+
+#[test]
+fn both_sheets_and_enveloped_spheres_are_certified_objects() {
+    // §3.3.1 (passant axes): the other sheet has bidegree (14, 14), the spheres 16 patches each
+    let text = format!(
+        "{HEAD}op = \"sphere_family_envelope\"\nnet = \"hyperbolic\"\npoints = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 2, 0, 1], [0, 0, 1, 0]]\na = [[0], [0], [1]]\nb = [[0, 0, 1]]\ndomain = [\"1/4\", 1, \"1/4\", 1]\nspheres = 2\nother_sheet = true\n"
+    );
+    let objs = build(&text);
+    let names: Vec<&str> = objs.iter().map(|o| o.name.as_str()).collect();
+    assert_eq!(names, ["f", "f_other_sheet", "f_spheres"]);
+    crate::common::assert_exact_patches_certifying(&objs[1], "|Ψ − π(Φ)|² ≡ Φ₄²");
+    crate::common::assert_exact_patches_certifying(&objs[2], "second contact point");
+    assert_eq!(patch_count(&objs[2]), 32, "two sixteen-patch sphere covers");
+    let certs = &objs[2].certificates;
+    assert!(
+        certs
+            .iter()
+            .filter(|c| c.property.contains("contact point"))
+            .count()
+            == 4,
+        "two contact points per sphere"
+    );
+    // combined: one object holding both sheets and the spheres, with all certificates
+    let one = build(&format!("{text}combine = true\n"));
+    assert_eq!(one.len(), 1);
+    assert_eq!(
+        patch_count(&one[0]),
+        patch_count(&objs[0]) + patch_count(&objs[1]) + 32
+    );
+    assert_eq!(
+        one[0].certificates.len(),
+        objs.iter().map(|o| o.certificates.len()).sum::<usize>()
+    );
+    assert!(one[0].certificates.iter().all(|c| c.holds));
+}
+
+#[test]
+fn enveloped_sphere_options_fail_at_their_parameter() {
+    for (extra, want) in [("spheres = -1\n", "≥ 0"), ("spheres = 17\n", "at most 16")] {
+        let (line, msg) = build_err(&polar(extra));
+        assert_eq!(line, 9, "{msg}");
+        assert!(msg.contains(want), "{msg}");
+    }
+    // §3.5.3 a: the sphere at (1/2, 1/2) has radius 0
+    let text = format!(
+        "{HEAD}op = \"sphere_family_envelope\"\nnet = \"parabolic\"\npoints = [[1, 0, 0, 1], [0, 0, 1, 0], [0, 1, 0, 0], [0, 0, 0, 1]]\na = [[0], [0], [1]]\nb = [[0, 0], [0, 2]]\ndomain = [\"1/4\", 1, \"1/4\", 1]\nspheres = 2\n"
+    );
+    let (line, msg) = build_err(&text);
+    assert_eq!(line, 9, "{msg}");
+    assert!(msg.contains("non-zero"), "{msg}");
+}
+
+const RULED: &str =
+    "[[object]]\nname = \"r\"\nop = \"line_congruence_strips\"\ncongruence = \"ruled_tangents\"\n";
+
+#[test]
+fn the_tangents_of_a_ruled_surface_along_a_generator_are_drawn_as_a_parabolic_net() {
+    // X(t, v) = (1, t, v, tv): the hyperbolic paraboloid z = xy
+    let objs = build(&format!(
+        "{RULED}points = [[1, 0, 0, 0], [0, 1, 0, 0]]\nruling = [[0, 0, 1, 0], [0, 0, 0, 1]]\nt0 = \"1/2\"\nu = [-1, 1]\nv = [-1, 0, 1]\ntwist = 0\nlambda = [\"-1/2\", \"1/2\"]\n"
+    ));
+    crate::common::assert_exact_patches_certifying(&objs[0], "lies in the tangent plane");
+    assert_eq!(patch_count(&objs[0]), 3);
+    // a cone (constant vertex p): every generator is torsal
+    let (line, msg) = build_err(&format!(
+        "{RULED}points = [[1, 0, 0, 0]]\nruling = [[0, 1, 0, 0], [0, 0, 1, 0]]\n"
+    ));
+    assert_eq!(line, 5, "{msg}");
+    assert!(msg.contains("torsal"), "{msg}");
+    // the ruling is required
+    let (line, msg) = build_err(&format!("{RULED}points = [[1, 0, 0, 0], [0, 1, 0, 0]]\n"));
+    assert!(msg.contains("ruling"), "{line}: {msg}");
+}
+
+#[test]
+fn the_cyclographic_construction_draws_both_contact_points() {
+    let text = format!(
+        "{HEAD}op = \"sphere_family_cyclographic\"\nnet = \"hyperbolic\"\npoints = [[1, 0, 0, 0], [0, 0, 0, -1], [0, 1, 0, 0], [0, 0, 1, 0]]\na = [[0], [0], [1]]\nb = [[0, 0, 1]]\nat = [[\"1/2\", \"1/2\"], [\"3/4\", \"1/3\"]]\n"
+    );
+    let objs = build(&text);
+    let o = &objs[0];
+    assert!(matches!(&o.geometry, Geometry::Curves(c) if c.len() == 4));
+    assert!(
+        o.certificates.iter().all(|c| c.holds && c.exact),
+        "{:#?}",
+        o.certificates
+    );
+    assert_eq!(
+        o.certificates
+            .iter()
+            .filter(|c| c.property.contains("other sheet"))
+            .count(),
+        2
+    );
+    // a parameter point on an axis (no unique net line) or of the wrong size: at `at`
+    let (line, msg) = build_err(&text.replace(
+        "at = [[\"1/2\", \"1/2\"], [\"3/4\", \"1/3\"]]",
+        "at = [[\"1/2\", \"1/2\", 1]]",
+    ));
+    assert_eq!(line, 8, "{msg}");
+    assert!(msg.contains("[s, t]"), "{msg}");
+}

@@ -20,5 +20,6 @@ pub mod sphere_family;
 pub use quadratic_class::peters_reif_class;
 pub use recognition::{Recognition, RecognitionError, SphereFamily};
 pub use sphere_family::{
-    CyclographicEnvelope, DirectEnvelope, SphereFamilyEnvelope, SphereFamilyError, Subcase, Support,
+    CyclographicEnvelope, DirectEnvelope, EnvelopedSphere, SphereFamilyEnvelope, SphereFamilyError,
+    Subcase, Support,
 };

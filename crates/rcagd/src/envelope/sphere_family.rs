@@ -734,19 +734,7 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
     /// [`SphereFamilyError::PoleInDomain`] if the denominator `W` vanishes on it (decided by
     /// Bernstein coefficients and subdivision).
     pub fn patch(&self, s: (F, F), t: (F, F)) -> Result<BezierPatch<F>, SphereFamilyError> {
-        let d = Domain::new(s.0, s.1, t.0, t.1)
-            .map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))?;
-        match sign_on_domain(&self.psi[0], &d, 4096) {
-            Sign::Positive | Sign::Negative => {}
-            Sign::ZeroAt(p) | Sign::Changes(p, _) | Sign::Undecided(p) => {
-                return Err(SphereFamilyError::PoleInDomain(format!(
-                    "the weight W(s, t) vanishes near (s, t) = ({}, {})",
-                    format_scalar(&p[0]),
-                    format_scalar(&p[1])
-                )))
-            }
-        }
-        patch_of(&self.psi, &d).map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))
+        patch_of_homogeneous(&self.psi, s, t)
     }
 
     /// The centre surface `π(Φ(s, t))` of the enveloped spheres on `[s₀, s₁] × [t₀, t₁]`
@@ -805,27 +793,7 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
         s: (F, F),
         t: (F, F),
     ) -> Result<(Vec<BezierPatch<F>>, Certificate), SphereFamilyError> {
-        let mut p = self.patch(s, t)?;
-        let dim = p.dim() + 1;
-        // W has one sign on the rectangle (checked by `patch`): the corner weight W(s₀, t₀)
-        let neg = p.coords().first().is_some_and(|w| *w < F::zero());
-        if neg {
-            let (m, n) = p.degree();
-            let flat: Vec<F> = p.coords().iter().map(|x| -x.clone()).collect();
-            p = BezierPatch::from_flat(dim - 1, m, n, flat)
-                .map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))?;
-        }
-        let split = split_patches_adaptive(vec![p], SignRule::Positive, (6, 6))
-            .map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))?;
-        let (pieces, bad) = (split.pieces, split.failed);
-        let n = pieces.len();
-        let cert = Certificate::decide(
-            format!("every Bernstein weight of the {n} envelope patches is > 0 (no pole on the rectangle)"),
-            bad == 0,
-            F::EXACT,
-            || format!("{bad} pieces keep a weight ≤ 0 after 12 bisections"),
-        );
-        Ok((pieces, cert))
+        export_pieces(&self.psi, s, t)
     }
 
     /// The envelope converted to another scalar type (e.g. `f64`), rebuilt from the
@@ -844,6 +812,60 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
         };
         SphereFamilyEnvelope::new(&net, m(&self.a), m(&self.b))
     }
+}
+
+/// The rational Bézier patch of the homogeneous `psi` on `[s₀, s₁] × [t₀, t₁]`, refused
+/// where its weight `psi[0]` vanishes (Bernstein coefficients and subdivision).
+fn patch_of_homogeneous<F: Scalar>(
+    psi: &[MPoly<F>; 4],
+    s: (F, F),
+    t: (F, F),
+) -> Result<BezierPatch<F>, SphereFamilyError> {
+    let d = Domain::new(s.0, s.1, t.0, t.1)
+        .map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))?;
+    match sign_on_domain(&psi[0], &d, 4096) {
+        Sign::Positive | Sign::Negative => {}
+        Sign::ZeroAt(p) | Sign::Changes(p, _) | Sign::Undecided(p) => {
+            return Err(SphereFamilyError::PoleInDomain(format!(
+                "the weight W(s, t) vanishes near (s, t) = ({}, {})",
+                format_scalar(&p[0]),
+                format_scalar(&p[1])
+            )))
+        }
+    }
+    patch_of(psi, &d).map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))
+}
+
+/// The patch of `psi` negated if its weight is negative, bisected where a Bernstein weight
+/// is ≤ 0, with the certificate that every weight is positive.
+fn export_pieces<F: Scalar>(
+    psi: &[MPoly<F>; 4],
+    s: (F, F),
+    t: (F, F),
+) -> Result<(Vec<BezierPatch<F>>, Certificate), SphereFamilyError> {
+    let mut p = patch_of_homogeneous(psi, s, t)?;
+    let dim = p.dim() + 1;
+    // W has one sign on the rectangle (checked above): the corner weight W(s₀, t₀)
+    let neg = p.coords().first().is_some_and(|w| *w < F::zero());
+    if neg {
+        let (m, n) = p.degree();
+        let flat: Vec<F> = p.coords().iter().map(|x| -x.clone()).collect();
+        p = BezierPatch::from_flat(dim - 1, m, n, flat)
+            .map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))?;
+    }
+    let split = split_patches_adaptive(vec![p], SignRule::Positive, (6, 6))
+        .map_err(|e| SphereFamilyError::InvalidDomain(e.to_string()))?;
+    let (pieces, bad) = (split.pieces, split.failed);
+    let n = pieces.len();
+    let cert = Certificate::decide(
+        format!(
+            "every Bernstein weight of the {n} envelope patches is > 0 (no pole on the rectangle)"
+        ),
+        bad == 0,
+        F::EXACT,
+        || format!("{bad} pieces keep a weight ≤ 0 after 12 bisections"),
+    );
+    Ok((pieces, cert))
 }
 
 /// `(Φ, Φ_u, Φ_v)` at one parameter.
@@ -940,6 +962,45 @@ impl<F: SqrtScalar> SphereFamilyEnvelope<F> {
             isotropic: hs,
             points: [p0, p1],
         })
+    }
+
+    /// The cyclographic construction ([`Self::cyclographic_envelope`]) at the sphere
+    /// `Φ(s, t)` of the rational parameter point `(s, t)` of Ω: the sphere `(centre,
+    /// radius)` and its two contact points. The net line through `w(s, t)` is the normal
+    /// line `h`, so both points of `h ∩ Ω` (`w(s, t)` and the other sheet's `w'`) are
+    /// rational and so are the contact points.
+    ///
+    /// # Errors
+    /// Those of [`Self::cyclographic_envelope`] and [`Self::parameters_at`];
+    /// [`SphereFamilyError::Undefined`] if a contact point is not in the base field (cannot
+    /// happen at a rational point of Ω; reported rather than rounded).
+    #[allow(clippy::type_complexity)]
+    pub fn cyclographic_contacts(
+        &self,
+        s: &F,
+        t: &F,
+    ) -> Result<(([F; 3], F), [[F; 3]; 2]), SphereFamilyError> {
+        let (p, q) = self.parameters_at(s, t)?;
+        let c = self.cyclographic_envelope(&p, &q)?;
+        let sphere = self.sphere_at_parameters(&p, &q)?;
+        let back = |x: &F::Ext| -> Result<F, SphereFamilyError> {
+            x.to_rational()
+                .map(|r| F::from_rational(&r))
+                .ok_or_else(|| {
+                    SphereFamilyError::Undefined(format!(
+                        "a contact point at ({}, {}) is irrational",
+                        format_scalar(s),
+                        format_scalar(t)
+                    ))
+                })
+        };
+        let mut pts: Vec<[F; 3]> = Vec::with_capacity(2);
+        for pt in &c.points {
+            pts.push([back(&pt[0])?, back(&pt[1])?, back(&pt[2])?]);
+        }
+        let [a, b] = <[[F; 3]; 2]>::try_from(pts)
+            .map_err(|_| SphereFamilyError::Undefined("two contact points".into()))?;
+        Ok((sphere, [a, b]))
     }
 
     /// Certificate: at the parameter `(s, t)` of `Ω`, `Ψ(s, t)` is one of the two points of
@@ -1330,6 +1391,193 @@ pub(crate) fn envelope_certificates<F: Scalar>(
         ));
     }
     out
+}
+
+/// An enveloped sphere of [`SphereFamilyEnvelope::enveloped_spheres`]: the parameter point
+/// `(s, t)` of its contact point on the first sheet, the other sheet's parameter point, the
+/// sphere and its exact sixteen-patch cover.
+#[derive(Debug, Clone)]
+pub struct EnvelopedSphere<F> {
+    /// `(s, t)`: `Ψ(s, t)` is a contact point.
+    pub at: (F, F),
+    /// `(s', t')` = [`SphereFamilyEnvelope::other_sheet`]`(s, t)`: the second contact point.
+    pub other: (F, F),
+    /// Centre `π(Φ(s, t))` and radius `|Φ₄(s, t)|`.
+    pub sphere: ([F; 3], F),
+    /// The sphere as sixteen biquadratic patches (`quadric::sphere_cover`).
+    pub cover: crate::quadric::SphereCover<F>,
+}
+
+impl<F: Scalar> SphereFamilyEnvelope<F> {
+    /// `n` spheres of the family at the parameter points
+    /// `(s₀ + k/(n+1) (s₁ − s₀), t₀ + k/(n+1) (t₁ − t₀))`, `k = 1..n`, of the rectangle's
+    /// diagonal, each as an exact sphere cover (sixteen biquadratic patches, Farin's
+    /// stereographic construction in `quadric::sphere_cover`), with both contact points:
+    /// the sphere `Φ(s, t)` touches the envelope in `Ψ(s, t)` and in `Ψ(s', t')`,
+    /// `(s', t')` the other intersection of its normal line `h` with Ω (Gruber §3.1.2).
+    ///
+    /// # Errors
+    /// [`SphereFamilyError::InvalidDomain`] for an empty rectangle or `n = 0`,
+    /// [`SphereFamilyError::Undefined`] where `Φ` has a pole, the radius is zero or a contact
+    /// point is not defined.
+    pub fn enveloped_spheres(
+        &self,
+        s: (F, F),
+        t: (F, F),
+        n: usize,
+    ) -> Result<Vec<EnvelopedSphere<F>>, SphereFamilyError> {
+        if n == 0 || !(s.0 < s.1 && t.0 < t.1) {
+            return Err(SphereFamilyError::InvalidDomain(
+                "enveloped spheres need n ≥ 1 and a rectangle with s₀ < s₁, t₀ < t₁".into(),
+            ));
+        }
+        let m = F::from_i64(n as i64 + 1);
+        (1..=n)
+            .map(|k| {
+                let f = F::from_i64(k as i64) / m.clone();
+                let sk = s.0.clone() + f.clone() * (s.1.clone() - s.0.clone());
+                let tk = t.0.clone() + f * (t.1.clone() - t.0.clone());
+                let (c, r) = self.sphere_at(&sk, &tk)?;
+                let r = if r < F::zero() { -r } else { r };
+                let other = self.other_sheet(&sk, &tk)?;
+                let cover =
+                    crate::quadric::sphere_cover(c.clone(), [r.clone(), r.clone(), r.clone()])
+                        .map_err(|e| {
+                            SphereFamilyError::Undefined(format!(
+                                "the sphere at (s, t) = ({}, {}): {e}",
+                                format_scalar(&sk),
+                                format_scalar(&tk)
+                            ))
+                        })?;
+                Ok(EnvelopedSphere {
+                    at: (sk, tk),
+                    other,
+                    sphere: (c, r),
+                    cover,
+                })
+            })
+            .collect()
+    }
+
+    /// The certificates of an enveloped sphere: its cover's (every patch on the sphere,
+    /// watertight) and the contact: `|Ψ(s, t) − m|² = r²` and `|Ψ(s', t') − m|² = r²` (both
+    /// contact points on the sphere, exact evaluation), and the tangency
+    /// `⟨Ψ − m, ∂π(Φ)⟩ + Φ₄ ∂Φ₄ ≡ 0` holds identically by [`Certified::certify`].
+    pub fn enveloped_sphere_certificates(&self, e: &EnvelopedSphere<F>) -> Vec<Certificate> {
+        let mut out = e.cover.certify();
+        let (c, r) = &e.sphere;
+        for ((ps, pt), sheet) in [(&e.at, "first"), (&e.other, "second")] {
+            let property = format!(
+                "the {sheet} contact point Ψ({}, {}) lies on the sphere of centre ({}, {}, {}) and radius {}",
+                format_scalar(ps),
+                format_scalar(pt),
+                format_scalar(&c[0]),
+                format_scalar(&c[1]),
+                format_scalar(&c[2]),
+                format_scalar(r)
+            );
+            out.push(match self.eval(ps, pt) {
+                Ok(x) => {
+                    let d = (0..3).fold(F::zero(), |acc, k| {
+                        let dk = x[k].clone() - c[k].clone();
+                        acc + dk.clone() * dk
+                    }) - r.clone() * r.clone();
+                    let scale = 1.0 + r.to_f64() * r.to_f64();
+                    let ok = if F::EXACT {
+                        d.is_zero()
+                    } else {
+                        d.to_f64().abs() <= 1e-9 * scale
+                    };
+                    Certificate::decide(property, ok, F::EXACT, || {
+                        format!("|Ψ − m|² − r² = {}", format_scalar(&d))
+                    })
+                }
+                Err(err) => Certificate::fails(property, err.to_string(), F::EXACT),
+            });
+        }
+        out
+    }
+
+    /// The other sheet over the same parameters: `Ψ₂(s, t) = π(Φ(s, t)) − Φ₄(s, t) (w'₁, w'₂,
+    /// w'₃)/w'₄` with `w' = ⟨p, p⟩ w − 2⟨w, p⟩ p` the second intersection of the net line
+    /// `h(s, t)` through `w(s, t)` with Ω (`p = h ∩ {y₄ = 0}`, `⟨·,·⟩` the form of Ω;
+    /// Gruber §3.1.2: `h ∩ Ω` are the two isotropic directions of the contact points).
+    /// `Ψ₂(s, t)` is the second contact point of the same sphere `Φ(s, t)` that touches `Ψ`
+    /// in `Ψ(s, t)`: [`Self::other_sheet`] as a rational map. Homogeneous `(W, X, Y, Z)`.
+    pub fn other_sheet_homogeneous(&self) -> [MPoly<F>; 4] {
+        let w = omega_parametrization::<F>();
+        let (a, b) = self.net.line_points();
+        let subst = |x: &[MPoly<F>; 4]| -> [MPoly<F>; 4] {
+            let d = NetParameters::degree_bounds(x.iter());
+            let mut v: Vec<MPoly<F>> = x.iter().map(|p| self.params.substitute(p, d)).collect();
+            normalize_content(&mut v);
+            core::array::from_fn(|k| v[k].clone())
+        };
+        let (a, b) = (subst(&a), subst(&b));
+        // p = h ∩ {y₄ = 0} = a₄ b − b₄ a: never a real point of Ω (those have y₄ ≠ 0), so
+        // never w, and w'₄ = ⟨p, p⟩ w₄ with ⟨p, p⟩ = p₁² + p₂² + p₃² > 0 adds no pole
+        let p: [MPoly<F>; 4] = core::array::from_fn(|k| &(&a[3] * &b[k]) - &(&b[3] * &a[k]));
+        let pp = omega_form(&p, &p);
+        let wp = omega_form(&w, &p);
+        let two = MPoly::constant(2, F::from_i64(2));
+        let w2: [MPoly<F>; 4] = core::array::from_fn(|k| &(&pp * &w[k]) - &(&(&two * &wp) * &p[k]));
+        let mut psi = vec![&self.phi_st_den * &w2[3]];
+        for i in 0..3 {
+            psi.push(&(&self.phi_st[i] * &w2[3]) - &(&self.phi_st[3] * &w2[i]));
+        }
+        let mut candidates = factor_candidates(&self.params, &w);
+        candidates.push(w2[3].clone());
+        candidates.sort_by_key(|p| std::cmp::Reverse(p.total_degree().unwrap_or(0)));
+        cancel_common(&mut psi, &candidates);
+        normalize_content(&mut psi);
+        core::array::from_fn(|k| psi[k].clone())
+    }
+
+    /// The other sheet [`Self::other_sheet_homogeneous`] on `[s₀, s₁] × [t₀, t₁]` as
+    /// positive-weight rational Bézier patches, with its certificates: the envelope
+    /// identities `|Ψ₂ − π(Φ)|² ≡ Φ₄²`, `⟨Ψ₂ − π(Φ), ∂π(Φ)⟩ + Φ₄ ∂Φ₄ ≡ 0` in `s` and `t`
+    /// (exact polynomial identities), `Ψ₂ ≢ Ψ` unless the net lines touch Ω, and every weight
+    /// positive.
+    ///
+    /// # Errors
+    /// As [`Self::export_patches`] (a pole of `Ψ₂` on the rectangle).
+    pub fn other_sheet_patches(
+        &self,
+        s: (F, F),
+        t: (F, F),
+    ) -> Result<(Vec<BezierPatch<F>>, Vec<Certificate>), SphereFamilyError> {
+        let psi2 = self.other_sheet_homogeneous();
+        let mut certs = self.other_sheet_certificates_of(&psi2);
+        let (pieces, weight) = export_pieces(&psi2, s, t)?;
+        certs.push(weight);
+        Ok((pieces, certs))
+    }
+
+    /// The certificates of the other sheet [`Self::other_sheet_homogeneous`]: the envelope
+    /// identities `|Ψ₂ − π(Φ)|² ≡ Φ₄²`, `⟨Ψ₂ − π(Φ), ∂π(Φ)⟩ + Φ₄ ∂Φ₄ ≡ 0` in `s` and `t`, and
+    /// `Ψ₂ ≢ Ψ` unless the net lines touch Ω.
+    pub fn other_sheet_certificates(&self) -> Vec<Certificate> {
+        self.other_sheet_certificates_of(&self.other_sheet_homogeneous())
+    }
+
+    fn other_sheet_certificates_of(&self, psi2: &[MPoly<F>; 4]) -> Vec<Certificate> {
+        let mut certs = envelope_certificates(psi2, &self.phi_st, &self.phi_st_den);
+        let same = (0..4).all(|i| {
+            (i + 1..4).all(|j| (&(&psi2[i] * &self.psi[j]) - &(&psi2[j] * &self.psi[i])).is_zero())
+        });
+        let touching = self
+            .net
+            .axis_positions()
+            .iter()
+            .all(|p| matches!(p, AxisPosition::Tangent));
+        certs.push(Certificate::decide(
+            "the second sheet Ψ₂ is a different map than Ψ (the net lines are not tangents of Ω)",
+            !same || touching,
+            F::EXACT,
+            || "Ψ₂ ≡ Ψ up to a factor".into(),
+        ));
+        certs
+    }
 }
 
 #[cfg(test)]

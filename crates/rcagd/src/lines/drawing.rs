@@ -72,6 +72,10 @@ pub enum CongruenceSpec<F> {
     /// The (1, n)-congruence of the line `g₀ ∨ g₁` and the curve `Σ tᵐ kₘ`: lines
     /// `k(u) ∨ (g₀ + v g₁)`.
     OneN([F; 4], [F; 4], Vec<[F; 4]>),
+    /// The parabolic net of the tangents of the ruled surface `X(u, v) = p(u) + v q(u)`
+    /// along the generator `u = u₀` ([`GeneratedNet::from_ruled_surface_tangents`]): the
+    /// power coefficients of `p` and `q` (homogeneous points) and `u₀`.
+    RuledSurfaceTangents(Vec<[F; 4]>, Vec<[F; 4]>, F),
 }
 
 /// The drawn congruence: strips and the certificates of the congruence and of the weights.
@@ -168,6 +172,17 @@ pub fn congruence_strips<F: Scalar>(
                 &MPoly::constant(2, g0[j].clone()) + &MPoly::var(2, 1).scale(&g1[j])
             });
             (p, q, c.certify())
+        }
+        CongruenceSpec::RuledSurfaceTangents(pc, qc, u0) => {
+            let poly = |c: &[[F; 4]]| -> [Poly<F>; 4] {
+                core::array::from_fn(|j| Poly::new(c.iter().map(|x| x[j].clone()).collect()))
+            };
+            let g = GeneratedNet::from_ruled_surface_tangents(&poly(pc), &poly(qc), u0)?;
+            let net = g
+                .line_net()
+                .ok_or(DrawError::Net(NetError::DegenerateProjectivity))?;
+            let (p, q) = net.line_points();
+            (p, q, g.certify())
         }
     };
     // the drawn lines are the congruence lines p ∧ q (checked against the certified

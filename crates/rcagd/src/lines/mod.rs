@@ -42,6 +42,7 @@ pub mod drawing;
 pub mod generation;
 pub mod net;
 pub mod order_one;
+pub mod parametrized;
 pub mod plucker;
 pub mod regulus;
 
@@ -53,6 +54,7 @@ pub use net::{AxisPosition, ComplexPointRow, LineNet, NetError, NetKind, PointRo
 pub use order_one::{
     focal_coefficients, focal_points, CubicChordCongruence, OneNCongruence, OrderOneError,
 };
+pub use parametrized::ParametrizedCongruence;
 pub use plucker::{reciprocal_product, Line, LineOrigin};
 pub use regulus::{common_transversals, CommonTransversals, Regulus};
 

@@ -219,3 +219,177 @@ proptest! {
         }
     }
 }
+
+// ---------------------------------------------------------------------------------------
+// Congruences of order m > 1: parametrized line families, normal congruences.
+
+mod order_greater_one {
+    use rcagd::lines::ParametrizedCongruence;
+    use rcagd::Certified;
+    use rcagd_algebra::mpoly::MPoly;
+    use rcagd_algebra::{Certificate, Rational};
+
+    fn p(s: &[(i64, u32, u32)]) -> MPoly<Rational> {
+        s.iter().fold(MPoly::zero(2), |a, &(c, i, j)| {
+            &a + &MPoly::monomial(2, &[i, j], Rational::from(c))
+        })
+    }
+
+    /// A surface with its expected `(order, class, μ)`.
+    type Case = (&'static str, [MPoly<Rational>; 4], (usize, usize, usize));
+
+    fn w() -> MPoly<Rational> {
+        p(&[(1, 0, 0), (1, 2, 0), (1, 0, 2)])
+    }
+
+    /// The normal congruences of quadrics, against the classical counts: a sphere's normals
+    /// form the bundle through its centre (order 1, class 0, every line met twice: μ = 2);
+    /// the paraboloid of revolution (3, 2), the elliptic paraboloid (5, 2) and the triaxial
+    /// ellipsoid (6, 2) (normals through a generic point; G. Salmon, "A Treatise on the
+    /// Analytic Geometry of Three Dimensions", 1882, §§ 199–200).
+    #[test]
+    fn normal_congruences_of_quadrics() {
+        let cases: Vec<Case> = vec![
+            (
+                "sphere",
+                [
+                    w(),
+                    p(&[(2, 1, 0)]),
+                    p(&[(2, 0, 1)]),
+                    p(&[(1, 0, 0), (-1, 2, 0), (-1, 0, 2)]),
+                ],
+                (1, 0, 2),
+            ),
+            (
+                "paraboloid of revolution",
+                [
+                    p(&[(1, 0, 0)]),
+                    p(&[(1, 1, 0)]),
+                    p(&[(1, 0, 1)]),
+                    p(&[(1, 2, 0), (1, 0, 2)]),
+                ],
+                (3, 2, 1),
+            ),
+            (
+                "elliptic paraboloid",
+                [
+                    p(&[(1, 0, 0)]),
+                    p(&[(1, 1, 0)]),
+                    p(&[(1, 0, 1)]),
+                    p(&[(1, 2, 0), (2, 0, 2)]),
+                ],
+                (5, 2, 1),
+            ),
+            (
+                "ellipsoid with semi-axes 1, 2, 3",
+                [
+                    w(),
+                    p(&[(2, 1, 0)]),
+                    p(&[(4, 0, 1)]),
+                    p(&[(3, 0, 0), (-3, 2, 0), (-3, 0, 2)]),
+                ],
+                (6, 2, 1),
+            ),
+        ];
+        for (name, x, want) in cases {
+            let c = ParametrizedCongruence::normals(x).expect("normals");
+            let certs = c.certify();
+            assert!(Certificate::all_hold(&certs), "{name}: {certs:#?}");
+            assert!(certs
+                .iter()
+                .any(|c| c.property.contains("orthogonal to the surface")));
+            assert_eq!(c.order_and_class().expect("count"), want, "{name}");
+        }
+        // a family that is not built as normals carries no normality claim
+        let x = [
+            w(),
+            p(&[(2, 1, 0)]),
+            p(&[(2, 0, 1)]),
+            p(&[(1, 0, 0), (-1, 2, 0), (-1, 0, 2)]),
+        ];
+        let bad = ParametrizedCongruence::new(
+            x.clone(),
+            [MPoly::zero(2), x[1].clone(), x[2].clone(), x[1].clone()],
+        )
+        .expect("lines");
+        assert!(ParametrizedCongruence::normals(x).is_ok());
+        assert!(
+            !bad.certify()
+                .iter()
+                .any(|c| c.property.contains("orthogonal to the surface")),
+            "a general family has no normality certificate"
+        );
+        // a curve has no normal congruence: a named error
+        let curve = [
+            p(&[(1, 0, 0)]),
+            p(&[(1, 1, 0)]),
+            p(&[(1, 2, 0)]),
+            p(&[(1, 3, 0)]),
+        ];
+        assert!(ParametrizedCongruence::normals(curve).is_err());
+    }
+
+    /// The lines meeting a line g and a conic disjoint from it: order 2 (the plane P ∨ g meets
+    /// the conic twice), class 2 (a plane meets g once and the conic twice); the focal sheets
+    /// are the conic and the line themselves (`A₀ ≡ A₂ ≡ 0`). The secants of a twisted cubic:
+    /// (1, 3), every chord counted from both ends (μ = 2).
+    #[test]
+    fn a_two_two_congruence_and_the_cubic_secants() {
+        // conic (1 + u², 2u, 0, 1 − u²)… in the plane x₂ = 0; g: (1, 0, 0, 0) + v (0, 0, 1, 0)
+        // shifted off the conic: g(v) = (1, 5, v, 0)
+        let conic = [
+            p(&[(1, 0, 0), (1, 2, 0)]),
+            p(&[(2, 1, 0)]),
+            MPoly::zero(2),
+            p(&[(1, 0, 0), (-1, 2, 0)]),
+        ];
+        let g = [
+            p(&[(1, 0, 0)]),
+            p(&[(5, 0, 0)]),
+            p(&[(1, 0, 1)]),
+            MPoly::zero(2),
+        ];
+        let c = ParametrizedCongruence::new(conic.clone(), g.clone()).expect("(2, 2)");
+        assert_eq!(c.order_and_class().expect("count"), (2, 2, 1));
+        let sheets = c.rational_focal_sheets().expect("focal curves");
+        assert_eq!(sheets, [conic, g]);
+        let certs = c.certify();
+        assert!(Certificate::all_hold(&certs), "{certs:#?}");
+        assert_eq!(
+            certs
+                .iter()
+                .filter(|c| c.property.contains("focal sheet"))
+                .count(),
+            4
+        );
+        // the twisted cubic (1, t, t², t³): chords k(u) ∨ k(v)
+        let k = |var: u32| -> [MPoly<Rational>; 4] {
+            core::array::from_fn(|e| {
+                let ex = e as u32;
+                if var == 0 {
+                    p(&[(1, ex, 0)])
+                } else {
+                    p(&[(1, 0, ex)])
+                }
+            })
+        };
+        let chords = ParametrizedCongruence::new(k(0), k(1)).expect("chords");
+        assert_eq!(chords.order_and_class().expect("count"), (1, 3, 2));
+        // not two-parametric: a regulus as p(u) ∨ q(u) (no v) is refused
+        let ruled = ParametrizedCongruence::new(
+            [
+                p(&[(1, 0, 0)]),
+                p(&[(1, 1, 0)]),
+                MPoly::zero(2),
+                MPoly::zero(2),
+            ],
+            [
+                MPoly::zero(2),
+                MPoly::zero(2),
+                p(&[(1, 0, 0)]),
+                p(&[(1, 1, 0)]),
+            ],
+        );
+        assert!(ruled.is_err());
+    }
+}

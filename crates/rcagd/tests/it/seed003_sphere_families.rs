@@ -979,6 +979,108 @@ fn f64_envelopes_certify_and_agree() {
     }
 }
 
+/// `(W, X, Y, Z)` at `(s, t)` as an affine point.
+fn eval_hom<F: Scalar>(h: &[MPoly<F>; 4], s: &F, t: &F) -> [F; 3] {
+    let x = [s.clone(), t.clone()];
+    let v: Vec<F> = h.iter().map(|p| p.eval(&x).expect("eval")).collect();
+    core::array::from_fn(|k| v[k + 1].clone() / v[0].clone())
+}
+
+/// The other sheet `Ψ₂(s, t)` (second contact points of the spheres `Φ(s, t)`) for every
+/// subcase: its envelope identities hold exactly, and at a rational point it is `Ψ` at the
+/// pointwise involution `other_sheet(s, t)` (the second intersection of the net line with
+/// Ω); f64 agreement.
+#[test]
+fn the_other_sheet_is_certified_and_is_the_involution_of_psi() {
+    let mut all: Vec<(String, SphereFamilyEnvelope<Rational>)> = cases()
+        .iter()
+        .map(|c| (c.section.to_string(), build(c)))
+        .collect();
+    let sec = SphereFamilyEnvelope::new(&secant_elliptic(), sq(1, 0), sq(1, 1)).expect("env");
+    all.push(("3.4.1 secant".into(), sec));
+    let (s, t) = (Rational::from_ratio(3, 5), Rational::from_ratio(4, 7));
+    for (name, env) in &all {
+        let certs = env.other_sheet_certificates();
+        assert_eq!(certs.len(), 4, "{name}");
+        assert!(Certificate::all_hold(&certs), "{name}: {certs:#?}");
+        let psi2 = env.other_sheet_homogeneous();
+        let (s2, t2) = env.other_sheet(&s, &t).expect("involution");
+        assert_eq!(
+            eval_hom(&psi2, &s, &t),
+            env.eval(&s2, &t2).expect("Ψ"),
+            "{name}"
+        );
+        // the same sphere touches both sheets
+        let (m, r) = env.sphere_at(&s, &t).expect("sphere");
+        let p2 = eval_hom(&psi2, &s, &t);
+        let d2 = (0..3).fold(q(0), |a, k| a + (p2[k].clone() - m[k].clone()).pow(2));
+        assert_eq!(d2, r.clone() * r, "{name}");
+        let fenv = env.map_scalar(Scalar::to_f64).expect("f64");
+        let y = eval_hom(
+            &fenv.other_sheet_homogeneous(),
+            &Scalar::to_f64(&s),
+            &Scalar::to_f64(&t),
+        );
+        for k in 0..3 {
+            let xe = Scalar::to_f64(&p2[k]);
+            assert!(
+                (xe - y[k]).abs() <= 1e-9 * (1.0 + xe.abs()),
+                "{name}: {xe} vs {}",
+                y[k]
+            );
+        }
+    }
+    // a wrong sheet fails: Ψ itself in place of Ψ₂ is not the involution's image
+    let env = build(&cases()[0]);
+    assert_ne!(
+        eval_hom(env.homogeneous(), &s, &t),
+        eval_hom(&env.other_sheet_homogeneous(), &s, &t)
+    );
+}
+
+#[test]
+fn enveloped_spheres_touch_both_sheets() {
+    let env = build(&cases()[0]);
+    let (a, b) = (Rational::from_ratio(1, 4), q(1));
+    let spheres = env
+        .enveloped_spheres((a.clone(), b.clone()), (a.clone(), b.clone()), 3)
+        .expect("spheres");
+    assert_eq!(spheres.len(), 3);
+    for sp in &spheres {
+        let certs = env.enveloped_sphere_certificates(sp);
+        assert!(Certificate::all_hold(&certs), "{certs:#?}");
+        assert_eq!(
+            certs
+                .iter()
+                .filter(|c| c.property.contains("contact point"))
+                .count(),
+            2
+        );
+        assert_eq!(sp.cover.patches().len(), 16);
+    }
+    assert_eq!(
+        spheres[1].at,
+        (Rational::from_ratio(5, 8), Rational::from_ratio(5, 8))
+    );
+    // no spheres / an empty rectangle / a point sphere (§3.5.3 a at (1/2, 1/2)): named errors
+    assert!(matches!(
+        env.enveloped_spheres((a.clone(), b.clone()), (a.clone(), b.clone()), 0),
+        Err(SphereFamilyError::InvalidDomain(_))
+    ));
+    assert!(matches!(
+        env.enveloped_spheres((b.clone(), a.clone()), (a.clone(), b.clone()), 2),
+        Err(SphereFamilyError::InvalidDomain(_))
+    ));
+    let c353a = cases()
+        .into_iter()
+        .find(|c| c.section == "3.5.3a")
+        .expect("3.5.3a");
+    assert!(matches!(
+        build(&c353a).enveloped_spheres((a.clone(), b.clone()), (a, b), 2),
+        Err(SphereFamilyError::Undefined(_))
+    ));
+}
+
 // ---------------------------------------------------------------------------------------
 // Recognition: a given sphere family (centre, radius) → its line net, support functions and
 // envelope, or the named reason why not (docs/math/sphere-families.md#recognition).
