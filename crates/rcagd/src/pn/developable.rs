@@ -154,6 +154,27 @@ impl<F: Scalar> DevelopablePn<F> {
         })
     }
 
+    /// The developable PN surface of the normalized plane coordinates (4.20)
+    /// `(h, 2ac, 2bc, a² + b² − c²)/(a² + b² + c²)` (polynomials `a, b, c` in `t`, `h`
+    /// rational): by (4.4) the isotropic curve `y = (a/c, b/c, h (a² + b² + c²)/(2c²))`.
+    ///
+    /// # Errors
+    /// [`PnError::InvalidInput`] for `c ≡ 0`; as [`Self::from_isotropic_curve`].
+    pub fn from_support(
+        a: MPoly<F>,
+        b: MPoly<F>,
+        c: MPoly<F>,
+        h: &RatFn<F>,
+    ) -> Result<Self, PnError> {
+        let n0 = &(&(&a * &a) + &(&b * &b)) + &(&c * &c);
+        let y = [
+            RatFn::new(a, c.clone())?,
+            RatFn::new(b, c.clone())?,
+            RatFn::new(&h.num * &n0, (&(&c * &c) * &h.den).scale(&F::from_i64(2)))?,
+        ];
+        Self::from_isotropic_curve(&y)
+    }
+
     /// The foot-point form `x = f + v Q'/(Q·Q')`: `f` the point of the ruling `e ∩ ė` with
     /// `Q'·f = 0` (Cramer's rule, `det(P, Ṗ, Q') = Q·Q'`), `Q'` the primitive part of
     /// `Q = P × Ṗ`; homogeneous `(Q·Q', F + v Q')`.

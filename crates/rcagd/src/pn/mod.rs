@@ -40,6 +40,7 @@ pub mod developable;
 pub mod hypercyclide;
 pub mod isotropic;
 pub mod modeling;
+pub mod motion;
 pub mod offset;
 pub mod planar;
 pub(crate) mod poly;
