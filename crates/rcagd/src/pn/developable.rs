@@ -18,11 +18,14 @@ use super::poly::{
     cancel_gcd, cross3, det3, div_exact, dot3, gcd2, identity_cert, int, normalize_content,
     pad_eval, RatFn,
 };
-use super::surface::PnSurface;
+use super::poly::{compose, var, Domain};
+use super::surface::{check_nonzero, PnSurface};
 use super::PnError;
 use crate::Certified;
 use rcagd_algebra::mpoly::MPoly;
+use rcagd_algebra::Poly;
 use rcagd_algebra::{Certificate, Scalar};
+use rcagd_geom::BezierCurve;
 
 /// The developable PN surface enveloped by the planes `Λ⁻¹(y(t))` of a rational curve
 /// `y(t)` of the isotropic model (Theorem 4.3, developable case), in the parameters
@@ -406,6 +409,36 @@ impl<F: Scalar> EdgeOfRegression<F> {
         let inv = pad_eval(&self.point[0], &x)?.inv()?;
         let e = |p: &MPoly<F>| pad_eval(p, &x).map(|v| v * inv.clone());
         Some([e(&self.point[1])?, e(&self.point[2])?, e(&self.point[3])?])
+    }
+
+    /// The rational Bézier curve of `r` on `[a, b]`.
+    ///
+    /// # Errors
+    /// [`PnError::InvalidInput`] unless `a < b`; [`PnError::Singular`] if `D` vanishes on
+    /// `[a, b]` (a point of `r` at infinity: the normals' curve has a geodesic inflection
+    /// there), naming the parameter (as `(t, 0)`).
+    pub fn curve(&self, a: &F, b: &F) -> Result<BezierCurve<F>, PnError> {
+        if a >= b {
+            return Err(PnError::InvalidInput("the interval needs a < b".into()));
+        }
+        let dom = Domain::new(a.clone(), b.clone(), F::zero(), F::one())?;
+        check_nonzero(
+            &self.point[0],
+            &dom,
+            "D = det(P, Ṗ, P̈) = 0: the edge of regression is at infinity",
+        )?;
+        let map = &MPoly::constant(2, a.clone()) + &var::<F>(0).scale(&(b.clone() - a.clone()));
+        let polys: Vec<Poly<F>> = self
+            .point
+            .iter()
+            .map(|p| {
+                let q = compose(p, &[map.clone(), var(1)]);
+                let n = q.degree_in(0).unwrap_or(0) as usize;
+                Poly::new((0..=n).map(|k| q.coeff(&[k as u32, 0])).collect())
+            })
+            .collect();
+        let deg = polys.iter().filter_map(|p| p.degree()).max().unwrap_or(0);
+        Ok(BezierCurve::from_coordinate_polys(&polys, deg)?)
     }
 
     /// `κ = |ṅ|²/det(n, ṅ, n̈) = (|Ṗ|² − ṡ²) s/det(P, Ṗ, P̈)` of the offset rule

@@ -156,40 +156,59 @@ impl<F: Scalar> LaguerreFamily<F> {
         })
     }
 
-    /// The rational screw-like motions `x ↦ R(u) x + b(u)`: `R(u)` the rotation about the
-    /// `x₃`-axis by the angle `2 atan u` (Cayley: `cos = (1 − u²)/(1 + u²)`,
-    /// `sin = 2u/(1 + u²)`), `b` polynomials in `u`. An oriented plane `e₀ + n·x = 0` goes
-    /// to `n' = R n`, `e₀' = e₀ − n'·b`; in the form (4.21): `w = 1 + u²`,
-    /// `A = diag(C, w, w)` with `C = [[1 − u², 2u], [−2u, 1 − u²]]` acting on row vectors,
-    /// `a = −(C b₁₂, w b₃, 0)` (docs/math/laguerre-pn.md#laguerre-families).
+    /// The rational motions `x ↦ R(u) x + b(u)` with `R(u)` the rotation about the
+    /// `x₃`-axis by the angle `2 atan u` ([`Self::screw_about`] with axis 2).
     ///
     /// # Errors
     /// As [`Self::new`] (not expected).
     pub fn screw(b: [MPoly<F>; 3]) -> Result<Self, PnError> {
+        Self::screw_about(2, b)
+    }
+
+    /// The rational motions `x ↦ R(u) x + b(u)`: `R(u)` the rotation about the axis
+    /// `x_k` (`k = 0, 1, 2`) by the angle `2 atan u` (Cayley: `cos = (1 − u²)/(1 + u²)`,
+    /// `sin = 2u/(1 + u²)`, turning `x_i` towards `x_j`, `(i, j) = (k + 1, k + 2) mod 3`),
+    /// `b` polynomials in `u`. An oriented plane `e₀ + n·x = 0` goes to `n' = R n`,
+    /// `e₀' = e₀ − n'·b`; in the form (4.21): `w = 1 + u²`, `A = diag(C, w)` with `C` the
+    /// rotation (times `w`) acting on row vectors, `a = −(C b, 0)`
+    /// (docs/math/laguerre-pn.md#laguerre-families). A translation `b` along the axis
+    /// makes a screw motion (the §4.6 example).
+    ///
+    /// # Errors
+    /// [`PnError::InvalidInput`] for `k > 2`; as [`Self::new`].
+    pub fn screw_about(axis: usize, b: [MPoly<F>; 3]) -> Result<Self, PnError> {
+        if axis > 2 {
+            return Err(PnError::InvalidInput(format!(
+                "the rotation axis must be 0, 1 or 2 (got {axis})"
+            )));
+        }
         let u = var::<F>(0);
         let uu = &u * &u;
         let w = &uu + &int(1);
         let c = &int(1) - &uu;
         let s = u.scale(&F::from_i64(2));
         let z = MPoly::zero(2);
-        let rot = [
-            [c.clone(), s.clone(), z.clone()],
-            [-s.clone(), c.clone(), z.clone()],
-            [z.clone(), z.clone(), w.clone()],
-        ];
-        // the image of the plane (e₀, n): n' = n R (R orthogonal up to w), e₀' = w e₀ − n'·b
-        let shift: [MPoly<F>; 4] = [
-            -(&(&rot[0][0] * &b[0]) + &(&rot[0][1] * &b[1])),
-            -(&(&rot[1][0] * &b[0]) + &(&rot[1][1] * &b[1])),
-            -(&w * &b[2]),
-            z.clone(),
-        ];
-        let matrix = [
-            [rot[0][0].clone(), rot[0][1].clone(), z.clone(), z.clone()],
-            [rot[1][0].clone(), rot[1][1].clone(), z.clone(), z.clone()],
-            [z.clone(), z.clone(), w.clone(), z.clone()],
-            [z.clone(), z.clone(), z.clone(), w.clone()],
-        ];
+        let (i, j) = ((axis + 1) % 3, (axis + 2) % 3);
+        // rot[r][col]: n'_col = Σ_r n_r rot[r][col]
+        let mut rot: [[MPoly<F>; 3]; 3] =
+            std::array::from_fn(|_| std::array::from_fn(|_| z.clone()));
+        rot[axis][axis] = w.clone();
+        rot[i][i] = c.clone();
+        rot[j][j] = c;
+        rot[i][j] = s.clone();
+        rot[j][i] = -s;
+        // e₀' w = w e₀ − (n·rot)·b: a_r = −Σ_col rot[r][col] b_col
+        let sh: [MPoly<F>; 3] = std::array::from_fn(|r| {
+            -(0..3).fold(MPoly::zero(2), |acc, col| &acc + &(&rot[r][col] * &b[col]))
+        });
+        let shift = [sh[0].clone(), sh[1].clone(), sh[2].clone(), z.clone()];
+        let matrix: [[MPoly<F>; 4]; 4] = std::array::from_fn(|r| {
+            std::array::from_fn(|col| match (r, col) {
+                (3, 3) => w.clone(),
+                (3, _) | (_, 3) => z.clone(),
+                _ => rot[r][col].clone(),
+            })
+        });
         Self::new(w, shift, matrix)
     }
 
