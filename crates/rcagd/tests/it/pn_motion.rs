@@ -140,6 +140,13 @@ fn sec_4_6_example_by_the_prop_4_2_constructor() {
             expect,
             "translation sign {sigma}"
         );
+        // the printed point has bidegree (6, 4) in (t, u); ours keeps the factor 1 + t² of
+        // N₀ in W (W = N₀ K, so that every offset has the same denominator): (8, 4)
+        if expect {
+            assert_eq!(env.surface().degree(), (8, 4));
+            assert!(env.surface().cofactor().is_some());
+            assert_eq!(env.surface().normal_degree(), (2, 2));
+        }
         for d in [q(1, 2), q(-3, 1)] {
             let off = env.surface().offset(d);
             assert!(
@@ -359,6 +366,22 @@ proptest! {
         match dev.edge_of_regression() {
             Ok(edge) => {
                 prop_assert!(all_exact_hold(&edge.certify()), "{:?}", failing(&edge.certify()));
+                // f64 agreement of the edge of regression
+                let yf = y.clone().map(|f| RatFn::new(mapf(&f.num), mapf(&f.den)).expect("den"));
+                let devf = DevelopablePn::from_isotropic_curve(&yf).expect("f64 developable");
+                let edgef = devf.edge_of_regression().expect("f64 edge");
+                prop_assert!(edgef.certify().iter().all(|c| c.holds && !c.exact));
+                for t0 in [q(1, 3), q(-5, 4), q(2, 1)] {
+                    if let (Some(re), Some(rf)) = (edge.eval(&t0), edgef.eval(&Scalar::to_f64(&t0))) {
+                        let re = re.map(|c| Scalar::to_f64(&c));
+                        let scale = re.iter().fold(1.0f64, |m, c| m.max(c.abs()));
+                        if scale < 1e6 {
+                            for i in 0..3 {
+                                prop_assert!((re[i] - rf[i]).abs() <= 1e-6 * scale, "{re:?} vs {rf:?}");
+                            }
+                        }
+                    }
+                }
                 let off = dev.offset_edge(d.clone()).expect("the offset of a developable with an edge has one");
                 prop_assert!(all_exact_hold(&off.certify()), "{:?}", failing(&off.certify()));
             }
