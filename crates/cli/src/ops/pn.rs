@@ -18,7 +18,8 @@ use rcagd::laguerre::LaguerreMap;
 use rcagd::pn::developable::DevelopablePn;
 use rcagd::pn::hypercyclide::{CyclographicImage, Hypercyclide, PeSimilarity, RegularQuadric};
 use rcagd::pn::modeling::{HermiteDatum, PnModel};
-use rcagd::pn::motion::{DevelopableMotionEnvelope, LaguerreFamily};
+use rcagd::laguerre::Cycle;
+use rcagd::pn::motion::{moved_cone_envelope, DevelopableMotionEnvelope, LaguerreFamily};
 use rcagd::pn::planar::{surface_of_revolution, PnCurve};
 use rcagd::pn::ruled::{CanalPn, ConeFamilyEnvelope, CycleFamily, EllipsoidPn, RuledPn};
 use rcagd::pn::support::{anticaustic, anticaustic_certificates, from_support_function};
@@ -42,6 +43,7 @@ pub const OPS: &[OpSpec] = &[
     PN_DEVELOPABLE,
     PN_DEVELOPABLE_EDGE,
     PN_DEVELOPABLE_MOTION,
+    PN_CONE_MOTION,
     PN_REVOLUTION,
     PN_ELLIPSOID,
     PN_QUADRIC,
@@ -901,17 +903,8 @@ const PN_DEVELOPABLE_MOTION: OpSpec = OpSpec {
     params: &[
         CURVE_PARAM,
         CURVE_DENOMINATOR,
-        ParamSpec::with_default(
-            "axis",
-            ParamKind::Choice(&["x", "y", "z"]),
-            "\"z\"",
-            "rotation axis of the motions",
-        ),
-        ParamSpec::required(
-            "translation",
-            ParamKind::Grid,
-            "translation b(u) of the motions: three rows of power coefficients in u",
-        ),
+        AXIS,
+        TRANSLATION,
         ParamSpec::with_default(
             "domain",
             ParamKind::Numbers,
@@ -939,18 +932,98 @@ distances = ["1/2"]
 
 fn build_developable_motion(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let dev = developable_arg(args)?;
+    let fam = screw_family(args)?;
+    let env = DevelopableMotionEnvelope::new(&dev, &fam).map_err(blame("translation"))?;
+    let mut certs = prefixed("developable: ", dev.certify());
+    certs.extend(env.family().certificates());
+    certs.extend(env.contact_certificates());
+    surface_objects(args, &oriented(args, env.surface()), &domain(args)?, certs, "domain")
+}
+
+const AXIS: ParamSpec = ParamSpec::with_default(
+    "axis",
+    ParamKind::Choice(&["x", "y", "z"]),
+    "\"z\"",
+    "rotation axis of the motions",
+);
+const TRANSLATION: ParamSpec = ParamSpec::required(
+    "translation",
+    ParamKind::Grid,
+    "translation b(u) of the motions: three rows of power coefficients in the family parameter",
+);
+
+/// The screw family of the `axis` and `translation` parameters.
+fn screw_family(args: &OpArgs) -> Result<LaguerreFamily<Q>, OpError> {
     let axis = match args.get("axis") {
         Some(Value::Str(a)) if a == "x" => 0,
         Some(Value::Str(a)) if a == "y" => 1,
         _ => 2,
     };
     let b = three_polys(args, "translation")?;
-    let fam = LaguerreFamily::screw_about(axis, [b[0].num.clone(), b[1].num.clone(), b[2].num.clone()])
-        .map_err(blame("translation"))?;
-    let env = DevelopableMotionEnvelope::new(&dev, &fam).map_err(blame("translation"))?;
-    let mut certs = prefixed("developable: ", dev.certify());
-    certs.extend(env.family().certificates());
-    certs.extend(env.contact_certificates());
+    LaguerreFamily::screw_about(axis, [b[0].num.clone(), b[1].num.clone(), b[2].num.clone()])
+        .map_err(blame("translation"))
+}
+
+/// A cycle `[m₁, m₂, m₃, r]` parameter.
+fn cycle_arg(args: &OpArgs, param: &'static str) -> Result<Cycle<Q>, OpError> {
+    let p = args.opt_point(param)?.unwrap_or_default();
+    let [m1, m2, m3, r]: [Q; 4] = <[Q; 4]>::try_from(p)
+        .map_err(|_| OpError::param(param, "give a cycle [m1, m2, m3, r]"))?;
+    Cycle::new([m1, m2, m3], r).map_err(|e| OpError::param(param, e.to_string()))
+}
+
+const PN_CONE_MOTION: OpSpec = OpSpec {
+    name: "pn_cone_motion",
+    summary: "the envelope of a cone of revolution (spanned by two cycles) moved by the rational motions x ↦ R(t) x + b(t), R the rotation about a coordinate axis by 2 atan t (Peternell Cor. 4.4 via Thm 4.5): a PN surface with exact offsets, touching every moved cone along a curve",
+    params: &[
+        ParamSpec::required(
+            "cycle1",
+            ParamKind::Point,
+            "first cycle [m1, m2, m3, r] spanning the cone (r = 0: the vertex)",
+        ),
+        ParamSpec::required(
+            "cycle2",
+            ParamKind::Point,
+            "second cycle [m1, m2, m3, r] (|m₁ − m₂|² > (r₁ − r₂)²)",
+        ),
+        AXIS,
+        TRANSLATION,
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[-1, 1, -1, 1]",
+            "parameter rectangle [t0, t1, u0, u1]: t of the motion, u around the moved cone",
+        ),
+        OFFSET,
+        ORIENTATION,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_cone_motion_parabola"
+op = "pn_cone_motion"
+# the cone with vertex 0 and axis x (opening angle: sin = 3/5) turning about z while its
+# vertex runs along the parabola (t, t²/2, 0)
+cycle1 = [0, 0, 0, 0]
+cycle2 = [5, 0, 0, 3]
+axis = "z"
+translation = [[0, 1, 0], [0, 0, "1/2"], [0, 0, 0]]
+domain = ["1/4", "3/4", "1/4", "3/4"]
+distances = ["1/4"]
+"#,
+    build: build_cone_motion,
+};
+
+fn build_cone_motion(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c1 = cycle_arg(args, "cycle1")?;
+    let c2 = cycle_arg(args, "cycle2")?;
+    let fam = screw_family(args)?;
+    let env = moved_cone_envelope(&c1, &c2, &fam).map_err(blame("cycle2"))?;
+    let (f1, f2) = env.families();
+    let mut certs = fam.certificates();
+    certs.extend(fam.cycle_image_certificates(&c1, f1));
+    certs.extend(fam.cycle_image_certificates(&c2, f2));
+    certs.extend(prefixed("cone family: ", env.tangency_certificates()));
+    certs.extend(prefixed("cone family: ", env.cone_certificates()));
     surface_objects(args, &oriented(args, env.surface()), &domain(args)?, certs, "domain")
 }
 
@@ -1617,6 +1690,37 @@ mod tests {
         .expect("§4.6 example");
         assert_eq!(objs.len(), 2);
         assert!(objs.iter().all(|o| o.certificates.iter().all(|c| c.holds)));
+    }
+
+    /// `pn_cone_motion`: touching cycles span no cone (blamed on `cycle2`); translations
+    /// only give a developable envelope; a bad cycle is blamed on its parameter.
+    #[test]
+    fn cone_motion_op_errors() {
+        let pt = |xs: &[(i64, i64)]| Value::Point(xs.iter().map(|&(p, d)| q(p, d)).collect());
+        let base = |c2: &[(i64, i64)], axis: &str, tr: Value| {
+            vec![
+                ("cycle1", pt(&[(0, 1), (0, 1), (0, 1), (0, 1)])),
+                ("cycle2", pt(c2)),
+                ("axis", Value::Str(axis.into())),
+                ("translation", tr),
+                ("domain", nums(&[(1, 4), (3, 4), (1, 4), (3, 4)])),
+            ]
+        };
+        let par = || grid(&[&[0, 1, 0], &[0, 0, 1], &[0, 0, 0]]);
+        let ok = run(&PN_CONE_MOTION, base(&[(5, 1), (0, 1), (0, 1), (3, 1)], "z", par()))
+            .expect("Cor. 4.4");
+        assert!(ok[0].certificates.iter().all(|c| c.holds));
+        let e = run(&PN_CONE_MOTION, base(&[(5, 1), (0, 1), (0, 1), (5, 1)], "z", par()))
+            .expect_err("touching cycles");
+        assert_eq!(e.param, Some("cycle2"));
+        assert!(e.message.contains("isotropic"), "{}", e.message);
+        // the cone's axis is z, the rotation about z: every cone is a translate
+        let e = run(&PN_CONE_MOTION, base(&[(0, 1), (0, 1), (5, 1), (3, 1)], "z", par()))
+            .expect_err("developable");
+        assert!(e.message.contains("developable"), "{}", e.message);
+        let e = run(&PN_CONE_MOTION, base(&[(5, 1), (0, 1), (3, 1)], "z", par()))
+            .expect_err("three numbers");
+        assert_eq!(e.param, Some("cycle2"));
     }
 
     /// F = u² + v² is the isotropic sphere of the cycle ((0, 0, −1); −1): its offset at
