@@ -19,7 +19,9 @@ use rcagd::pn::developable::DevelopablePn;
 use rcagd::pn::hypercyclide::{CyclographicImage, Hypercyclide, PeSimilarity, RegularQuadric};
 use rcagd::pn::modeling::{HermiteDatum, PnModel};
 use rcagd::laguerre::Cycle;
-use rcagd::pn::motion::{moved_cone_envelope, DevelopableMotionEnvelope, LaguerreFamily};
+use rcagd::pn::motion::{
+    moved_cone_envelope, ruled_surface_image, DevelopableMotionEnvelope, LaguerreFamily,
+};
 use rcagd::pn::planar::{surface_of_revolution, PnCurve};
 use rcagd::pn::ruled::{CanalPn, ConeFamilyEnvelope, CycleFamily, EllipsoidPn, RuledPn};
 use rcagd::pn::support::{anticaustic, anticaustic_certificates, from_support_function};
@@ -44,6 +46,7 @@ pub const OPS: &[OpSpec] = &[
     PN_DEVELOPABLE_EDGE,
     PN_DEVELOPABLE_MOTION,
     PN_CONE_MOTION,
+    PN_RULED_CYCLOGRAPHIC,
     PN_REVOLUTION,
     PN_ELLIPSOID,
     PN_QUADRIC,
@@ -1027,6 +1030,66 @@ fn build_cone_motion(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     surface_objects(args, &oriented(args, env.surface()), &domain(args)?, certs, "domain")
 }
 
+/// Four polynomials in `t` from a grid of four rows of power coefficients.
+fn four_polys(args: &OpArgs, param: &'static str) -> Result<[RatFn<Q>; 4], OpError> {
+    let g = args.opt_grid(param)?.unwrap_or_default();
+    if g.len() != 4 {
+        return Err(OpError::param(
+            param,
+            format!(
+                "give four rows (m₁, m₂, m₃, r) of power coefficients in t, got {} rows",
+                g.len()
+            ),
+        ));
+    }
+    Ok([
+        RatFn::poly(poly_from_list(&g[0])?),
+        RatFn::poly(poly_from_list(&g[1])?),
+        RatFn::poly(poly_from_list(&g[2])?),
+        RatFn::poly(poly_from_list(&g[3])?),
+    ])
+}
+
+const PN_RULED_CYCLOGRAPHIC: OpSpec = OpSpec {
+    name: "pn_ruled_cyclographic",
+    summary: "the cyclographic image of a non-developable ruled surface l(t) + s g(t) of R⁴ (points (m, r) are cycles): the envelope of the cones of revolution of its rulings, a PN surface (Peternell Cor. 4.1 via Thm 4.5); needs ⟨g, g⟩ = |g₁₋₃|² − g₄² to be a sum of two squares over Q(t)",
+    params: &[
+        ParamSpec::required(
+            "directrix",
+            ParamKind::Grid,
+            "l(t) = (m₁, m₂, m₃, r): four rows of power coefficients in t",
+        ),
+        ParamSpec::required(
+            "ruling",
+            ParamKind::Grid,
+            "g(t): four rows of power coefficients in t (spacelike: |g₁₋₃|² > g₄²)",
+        ),
+        DOMAIN,
+        OFFSET,
+        ORIENTATION,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_ruled_cyclographic_r4"
+op = "pn_ruled_cyclographic"
+# l(t) = (t, 0, 0; t²/2), g(t) = (0, 5, t; 3): ⟨g, g⟩ = t² + 16
+directrix = [[0, 1, 0], [0, 0, 0], [0, 0, 0], [0, 0, "1/2"]]
+ruling = [[0, 0, 0], [5, 0, 0], [0, 1, 0], [3, 0, 0]]
+domain = ["1/4", "3/4", "1/4", "3/4"]
+distances = ["-1/10"]
+"#,
+    build: build_ruled_cyclographic,
+};
+
+fn build_ruled_cyclographic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let l = four_polys(args, "directrix")?;
+    let g = four_polys(args, "ruling")?;
+    let env = ruled_surface_image(l, g).map_err(blame("ruling"))?;
+    let mut certs = prefixed("cone family: ", env.tangency_certificates());
+    certs.extend(prefixed("cone family: ", env.cone_certificates()));
+    surface_objects(args, &oriented(args, env.surface()), &domain(args)?, certs, "domain")
+}
+
 const PN_REVOLUTION: OpSpec = OpSpec {
     name: "pn_revolution",
     summary: "the surface of revolution (about the z-axis) of a polynomial PH profile with preimage (u(t), v(t)) — a PN surface whose offsets are the surfaces of revolution of the profile's offsets",
@@ -1721,6 +1784,44 @@ mod tests {
         let e = run(&PN_CONE_MOTION, base(&[(5, 1), (0, 1), (3, 1)], "z", par()))
             .expect_err("three numbers");
         assert_eq!(e.param, Some("cycle2"));
+    }
+
+    /// `pn_ruled_cyclographic`: a developable ruled surface of R⁴ and timelike rulings are
+    /// named errors on `ruling`; three rows are an error too.
+    #[test]
+    fn ruled_cyclographic_op_errors() {
+        let l = || grid(&[&[0, 1], &[0, 0], &[0, 0], &[0, 0]]);
+        let ok = run(
+            &PN_RULED_CYCLOGRAPHIC,
+            vec![
+                ("directrix", grid(&[&[0, 1, 0], &[0, 0, 0], &[0, 0, 0], &[0, 0, 1]])),
+                ("ruling", grid(&[&[0, 0], &[5, 0], &[0, 1], &[3, 0]])),
+                ("domain", nums(&[(1, 4), (3, 4), (1, 4), (3, 4)])),
+            ],
+        )
+        .expect("Cor. 4.1");
+        assert!(ok[0].certificates.iter().all(|c| c.holds));
+        // g constant and l a line: developable
+        let e = run(
+            &PN_RULED_CYCLOGRAPHIC,
+            vec![("directrix", l()), ("ruling", grid(&[&[1], &[1], &[0], &[0]]))],
+        )
+        .expect_err("developable");
+        assert_eq!(e.param, Some("ruling"));
+        assert!(e.message.contains("developable"), "{}", e.message);
+        // timelike rulings ⟨g, g⟩ = 1 + t² − 4 < 0 near t = 0: no real image over Q(t)
+        let e = run(
+            &PN_RULED_CYCLOGRAPHIC,
+            vec![("directrix", l()), ("ruling", grid(&[&[0, 0], &[1, 0], &[0, 1], &[2, 0]]))],
+        )
+        .expect_err("timelike");
+        assert_eq!(e.param, Some("ruling"));
+        let e = run(
+            &PN_RULED_CYCLOGRAPHIC,
+            vec![("directrix", grid(&[&[0, 1], &[0, 0], &[0, 0]])), ("ruling", l())],
+        )
+        .expect_err("three rows");
+        assert_eq!(e.param, Some("directrix"));
     }
 
     /// F = u² + v² is the isotropic sphere of the cycle ((0, 0, −1); −1): its offset at
