@@ -18,7 +18,7 @@ use super::poly::{
     cancel_gcd, cross3, det3, div_exact, dot3, gcd2, identity_cert, int, normalize_content,
     pad_eval, RatFn,
 };
-use super::poly::{compose, var, Domain};
+use super::poly::{compose, mag, var, Domain};
 use super::surface::{check_nonzero, PnSurface};
 use super::PnError;
 use crate::Certified;
@@ -63,6 +63,26 @@ fn cramer3<F: Scalar>(planes: &[MPoly<F>; 4]) -> (MPoly<F>, [MPoly<F>; 3]) {
     let r =
         std::array::from_fn(|i| -(&(&(&planes[0] * &a[i]) + &(&p0d * &b[i])) + &(&p0dd * &c[i])));
     (d, r)
+}
+
+/// `p ≡ 0`, exactly for exact scalars; for `f64` relative to `scale` (the size of the
+/// products that formed `p`), so that rounding noise of a cylinder's `D` or a cone's
+/// `DṘ − ḊR` is recognised.
+fn negligible<F: Scalar>(p: &MPoly<F>, scale: f64) -> bool {
+    if F::EXACT {
+        p.is_zero()
+    } else {
+        p.terms().map(|(_, c)| c.to_f64().abs()).fold(0.0, f64::max) <= 1e-10 * scale
+    }
+}
+
+/// `mag(D)`-style size of the product `P, Ṗ, P̈` (the scale of `det(P, Ṗ, P̈)`).
+fn det_scale<F: Scalar>(planes: &[MPoly<F>; 4]) -> f64 {
+    let p = [planes[1].clone(), planes[2].clone(), planes[3].clone()];
+    let m = |q: &[MPoly<F>; 3]| q.iter().map(mag).fold(0.0, f64::max);
+    let pd: [MPoly<F>; 3] = std::array::from_fn(|i| p[i].partial(0));
+    let pdd: [MPoly<F>; 3] = std::array::from_fn(|i| pd[i].partial(0));
+    (m(&p) * m(&pd) * m(&pdd)).max(f64::MIN_POSITIVE)
 }
 
 /// The primitive part in `t` of a vector of polynomials (exact scalars; unchanged for
@@ -138,7 +158,7 @@ impl<F: Scalar> DevelopablePn<F> {
         let qp = primitive3(&q);
         let (dd, r) = cramer3(&planes);
         let v = MPoly::var(2, 1);
-        let point = if dd.is_zero() {
+        let point = if negligible(&dd, det_scale(&planes)) {
             Self::foot_point_form(&planes, &qp)
         } else {
             [
@@ -334,7 +354,8 @@ impl<F: Scalar> EdgeOfRegression<F> {
         let mut pl = planes.clone();
         pl[0] = &pl[0] - &norm.scale(&d);
         let (dd, r) = cramer3(&pl);
-        if dd.is_zero() {
+        let scale = det_scale(&pl);
+        if negligible(&dd, scale) {
             return Err(PnError::NoEdgeOfRegression(
                 "a cylinder: det(P, Ṗ, P̈) ≡ 0 (the normals lie on a great circle, all rulings are parallel to one plane; the edge of regression is at infinity)".into(),
             ));
@@ -643,6 +664,21 @@ mod tests {
         assert!(cone.all_hold(), "{:?}", cone.certify());
         assert!(matches!(
             cone.edge_of_regression(),
+            Err(PnError::NoEdgeOfRegression(m)) if m.contains("cone")
+        ));
+        // the same in f64 (rounding noise of D and of DṘ − ḊR is recognised)
+        let f = |y: [MPoly<Q>; 3]| y.map(|p| RatFn::poly(p.map(Scalar::to_f64)));
+        let cyl_f = DevelopablePn::from_isotropic_curve(&f([t.clone(), MPoly::zero(2), &t * &t]))
+            .expect("f64 cylinder");
+        assert!(cyl_f.all_hold(), "{:?}", cyl_f.certify());
+        assert!(matches!(
+            cyl_f.edge_of_regression(),
+            Err(PnError::NoEdgeOfRegression(m)) if m.contains("cylinder")
+        ));
+        let cone_f = DevelopablePn::from_isotropic_curve(&f([t.clone(), &t * &t, &t * &t]))
+            .expect("f64 cone");
+        assert!(matches!(
+            cone_f.edge_of_regression(),
             Err(PnError::NoEdgeOfRegression(m)) if m.contains("cone")
         ));
         // the cone's offsets are not cones: their edge lies on the sphere |x − v| = |d|
