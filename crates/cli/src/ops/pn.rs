@@ -18,6 +18,10 @@ use rcagd::laguerre::LaguerreMap;
 use rcagd::pn::developable::DevelopablePn;
 use rcagd::pn::hypercyclide::{CyclographicImage, Hypercyclide, PeSimilarity, RegularQuadric};
 use rcagd::pn::modeling::{HermiteDatum, PnModel};
+use rcagd::laguerre::Cycle;
+use rcagd::pn::motion::{
+    moved_cone_envelope, ruled_surface_image, DevelopableMotionEnvelope, LaguerreFamily,
+};
 use rcagd::pn::planar::{surface_of_revolution, PnCurve};
 use rcagd::pn::reducing_frame::ReducedConeEnvelope;
 use rcagd::pn::ruled::{CanalPn, CycleFamily, EllipsoidPn, RuledPn};
@@ -41,6 +45,10 @@ pub const OPS: &[OpSpec] = &[
     PN_CANAL,
     PN_CONE_ENVELOPE,
     PN_DEVELOPABLE,
+    PN_DEVELOPABLE_EDGE,
+    PN_DEVELOPABLE_MOTION,
+    PN_CONE_MOTION,
+    PN_RULED_CYCLOGRAPHIC,
     PN_REVOLUTION,
     PN_ELLIPSOID,
     PN_QUADRIC,
@@ -800,6 +808,12 @@ const PN_DEVELOPABLE: OpSpec = OpSpec {
             "[-1, 1, -1, 1]",
             "parameter rectangle [t0, t1, v0, v1]: curve parameter t, ruling parameter v (away from the edge of regression)",
         ),
+        ParamSpec::with_default(
+            "form",
+            ParamKind::Choice(&["edge", "foot"]),
+            "\"edge\"",
+            "point form: \"edge\" x = r(t) + v Q(t)/D(t) from the edge of regression r (lower degree; v = 0 is the edge, D = 0 where r is at infinity), \"foot\" x = f(t) + v Q/(Q·Q′) from the foot point f of each ruling (defined for every t); cylinders always use the foot form",
+        ),
         OFFSET,
         ORIENTATION,
         DISTANCES,
@@ -809,7 +823,7 @@ name = "pn_developable_cubic"
 op = "pn_developable"
 # the twisted cubic y = (t, t², t³/3) of the isotropic model
 curve = [[0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, "1/3"]]
-domain = ["1/2", 1, "1/4", 2]
+domain = [1, 2, -60, -4]
 distances = ["1/4"]
 "#,
     build: build_developable,
@@ -827,7 +841,276 @@ fn build_developable(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     ];
     let dev = DevelopablePn::from_isotropic_curve(&y).map_err(blame("curve"))?;
     let certs = prefixed("developable: ", dev.ruling_certificates());
+    if matches!(args.get("form"), Some(Value::Str(f)) if f == "foot") {
+        let foot = dev.foot_point_surface().map_err(blame("curve"))?;
+        return surface_objects(args, &oriented(args, &foot), &domain(args)?, certs, "domain");
+    }
     surface_objects(args, &oriented(args, dev.surface()), &domain(args)?, certs, "domain")
+}
+
+/// The developable of the `curve`/`denominator` parameters (shared by the developable ops).
+fn developable_arg(args: &OpArgs) -> Result<DevelopablePn<Q>, OpError> {
+    let c = three_polys(args, "curve")?;
+    let den = poly_from_list(&args.opt_numbers("denominator")?.unwrap_or_else(|| vec![Q::from(1)]))?;
+    let y = [0, 1, 2].map(|i| RatFn::new(c[i].num.clone(), den.clone()));
+    let [y1, y2, y3] = y;
+    let y = [
+        y1.map_err(blame("denominator"))?,
+        y2.map_err(blame("denominator"))?,
+        y3.map_err(blame("denominator"))?,
+    ];
+    DevelopablePn::from_isotropic_curve(&y).map_err(blame("curve"))
+}
+
+const CURVE_PARAM: ParamSpec = ParamSpec::required(
+    "curve",
+    ParamKind::Grid,
+    "numerators of the isotropic curve y(t) = (y₁, y₂, y₃) (its planes Λ⁻¹(y(t)) are the tangent planes of the developable): three rows of power coefficients in t",
+);
+const CURVE_DENOMINATOR: ParamSpec = ParamSpec::with_default(
+    "denominator",
+    ParamKind::Numbers,
+    "[1]",
+    "power coefficients of the common denominator of y(t)",
+);
+
+const PN_DEVELOPABLE_EDGE: OpSpec = OpSpec {
+    name: "pn_developable_edge",
+    summary: "the edge of regression r = e ∩ ė ∩ ë of the developable PN surface of a rational isotropic curve y(t) (Peternell Thm 4.3, developable case; §4.5 remark before Cor. 4.3) as a rational curve, with the edges of regression of its offsets r + d n + d κ (n × ṅ), κ = |ṅ|²/det(n, ṅ, n̈); cylinders and cones are named errors",
+    params: &[
+        CURVE_PARAM,
+        CURVE_DENOMINATOR,
+        ParamSpec::with_default(
+            "interval",
+            ParamKind::Numbers,
+            "[0, 1]",
+            "parameter interval [t0, t1] (the edge must be finite there: D = det(P, Ṗ, P̈) ≠ 0)",
+        ),
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_developable_cubic_edge"
+op = "pn_developable_edge"
+# the edge of regression of the developable of y = (t, t², t³/3) and of its offset at 1/4
+curve = [[0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, "1/3"]]
+interval = [1, "3/2"]
+distances = ["1/4"]
+"#,
+    build: build_developable_edge,
+};
+
+fn build_developable_edge(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let dev = developable_arg(args)?;
+    let iv = args.opt_numbers("interval")?.unwrap_or_else(|| vec![Q::from(0), Q::from(1)]);
+    let [t0, t1]: [Q; 2] = <[Q; 2]>::try_from(iv)
+        .map_err(|_| OpError::param("interval", "give two numbers [t0, t1]"))?;
+    let edge = dev.edge_of_regression().map_err(blame("curve"))?;
+    let mut certs = prefixed("developable: ", dev.certify());
+    certs.extend(edge.certify());
+    let bez = edge.curve(&t0, &t1).map_err(blame("interval"))?;
+    let mut out = vec![args.object(Geometry::Curve(bez), certs)];
+    for (k, d) in distances(args)?.into_iter().enumerate() {
+        let off = dev.offset_edge(d.clone()).map_err(blame("distances"))?;
+        let c = off.certify();
+        let bez = off.curve(&t0, &t1).map_err(|e| {
+            OpError::param(
+                "distances",
+                format!("distance {} (entry {k}): {e}", format_rational(&d)),
+            )
+        })?;
+        out.push(offset_object(args, k, &d, Geometry::Curve(bez), c));
+    }
+    Ok(out)
+}
+
+const PN_DEVELOPABLE_MOTION: OpSpec = OpSpec {
+    name: "pn_developable_motion",
+    summary: "the envelope of a developable PN surface (planes Λ⁻¹(y(t)) of a rational isotropic curve) moved by the rational motions x ↦ R(u) x + b(u), R the rotation about a coordinate axis by 2 atan u (Peternell Prop. 4.2, (4.21)): a PN surface with exact offsets; certified AᵀEA ≡ κE, contact with every moved developable",
+    params: &[
+        CURVE_PARAM,
+        CURVE_DENOMINATOR,
+        AXIS,
+        TRANSLATION,
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[-1, 1, -1, 1]",
+            "parameter rectangle [t0, t1, u0, u1]: t of the developable's planes, u of the motion",
+        ),
+        OFFSET,
+        ORIENTATION,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_developable_motion_screw"
+op = "pn_developable_motion"
+# Peternell §4.6: the parabolic cylinder y = (2t/(1+t²), (t²−1)/(1+t²), −(1+t²)/t)
+# moved by screw motions about the x-axis (rotation 2 atan u, translation −u/4)
+curve = [[0, 0, 2, 0, 0], [0, -1, 0, 1, 0], [-1, 0, -2, 0, -1]]
+denominator = [0, 1, 0, 1]
+axis = "x"
+translation = [[0, "-1/4"], [0, 0], [0, 0]]
+domain = ["3/2", 4, "-6/5", "6/5"]
+distances = ["1/2"]
+"#,
+    build: build_developable_motion,
+};
+
+fn build_developable_motion(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let dev = developable_arg(args)?;
+    let fam = screw_family(args)?;
+    let env = DevelopableMotionEnvelope::new(&dev, &fam).map_err(blame("translation"))?;
+    let mut certs = prefixed("developable: ", dev.certify());
+    certs.extend(env.family().certificates());
+    certs.extend(env.contact_certificates());
+    surface_objects(args, &oriented(args, env.surface()), &domain(args)?, certs, "domain")
+}
+
+const AXIS: ParamSpec = ParamSpec::with_default(
+    "axis",
+    ParamKind::Choice(&["x", "y", "z"]),
+    "\"z\"",
+    "rotation axis of the motions",
+);
+const TRANSLATION: ParamSpec = ParamSpec::required(
+    "translation",
+    ParamKind::Grid,
+    "translation b(u) of the motions: three rows of power coefficients in the family parameter",
+);
+
+/// The screw family of the `axis` and `translation` parameters.
+fn screw_family(args: &OpArgs) -> Result<LaguerreFamily<Q>, OpError> {
+    let axis = match args.get("axis") {
+        Some(Value::Str(a)) if a == "x" => 0,
+        Some(Value::Str(a)) if a == "y" => 1,
+        _ => 2,
+    };
+    let b = three_polys(args, "translation")?;
+    LaguerreFamily::screw_about(axis, [b[0].num.clone(), b[1].num.clone(), b[2].num.clone()])
+        .map_err(blame("translation"))
+}
+
+/// A cycle `[m₁, m₂, m₃, r]` parameter.
+fn cycle_arg(args: &OpArgs, param: &'static str) -> Result<Cycle<Q>, OpError> {
+    let p = args.opt_point(param)?.unwrap_or_default();
+    let [m1, m2, m3, r]: [Q; 4] = <[Q; 4]>::try_from(p)
+        .map_err(|_| OpError::param(param, "give a cycle [m1, m2, m3, r]"))?;
+    Cycle::new([m1, m2, m3], r).map_err(|e| OpError::param(param, e.to_string()))
+}
+
+const PN_CONE_MOTION: OpSpec = OpSpec {
+    name: "pn_cone_motion",
+    summary: "the envelope of a cone of revolution (spanned by two cycles) moved by the rational motions x ↦ R(t) x + b(t), R the rotation about a coordinate axis by 2 atan t (Peternell Cor. 4.4 via Thm 4.5): a PN surface with exact offsets, touching every moved cone along a curve",
+    params: &[
+        ParamSpec::required(
+            "cycle1",
+            ParamKind::Point,
+            "first cycle [m1, m2, m3, r] spanning the cone (r = 0: the vertex)",
+        ),
+        ParamSpec::required(
+            "cycle2",
+            ParamKind::Point,
+            "second cycle [m1, m2, m3, r] (|m₁ − m₂|² > (r₁ − r₂)²)",
+        ),
+        AXIS,
+        TRANSLATION,
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[-1, 1, -1, 1]",
+            "parameter rectangle [t0, t1, u0, u1]: t of the motion, u around the moved cone",
+        ),
+        OFFSET,
+        ORIENTATION,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_cone_motion_parabola"
+op = "pn_cone_motion"
+# the cone with vertex 0 and axis x (opening angle: sin = 3/5) turning about z while its
+# vertex runs along the parabola (t, t²/2, 0)
+cycle1 = [0, 0, 0, 0]
+cycle2 = [5, 0, 0, 3]
+axis = "z"
+translation = [[0, 1, 0], [0, 0, "1/2"], [0, 0, 0]]
+domain = ["1/4", "3/4", "1/4", "3/4"]
+distances = ["1/4"]
+"#,
+    build: build_cone_motion,
+};
+
+fn build_cone_motion(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c1 = cycle_arg(args, "cycle1")?;
+    let c2 = cycle_arg(args, "cycle2")?;
+    let fam = screw_family(args)?;
+    let env = moved_cone_envelope(&c1, &c2, &fam).map_err(blame("cycle2"))?;
+    let (f1, f2) = env.families();
+    let mut certs = fam.certificates();
+    certs.extend(fam.cycle_image_certificates(&c1, f1));
+    certs.extend(fam.cycle_image_certificates(&c2, f2));
+    certs.extend(prefixed("cone family: ", env.tangency_certificates()));
+    certs.extend(prefixed("cone family: ", env.cone_certificates()));
+    surface_objects(args, &oriented(args, env.surface()), &domain(args)?, certs, "domain")
+}
+
+/// Four polynomials in `t` from a grid of four rows of power coefficients.
+fn four_polys(args: &OpArgs, param: &'static str) -> Result<[RatFn<Q>; 4], OpError> {
+    let g = args.opt_grid(param)?.unwrap_or_default();
+    if g.len() != 4 {
+        return Err(OpError::param(
+            param,
+            format!(
+                "give four rows (m₁, m₂, m₃, r) of power coefficients in t, got {} rows",
+                g.len()
+            ),
+        ));
+    }
+    Ok([
+        RatFn::poly(poly_from_list(&g[0])?),
+        RatFn::poly(poly_from_list(&g[1])?),
+        RatFn::poly(poly_from_list(&g[2])?),
+        RatFn::poly(poly_from_list(&g[3])?),
+    ])
+}
+
+const PN_RULED_CYCLOGRAPHIC: OpSpec = OpSpec {
+    name: "pn_ruled_cyclographic",
+    summary: "the cyclographic image of a non-developable ruled surface l(t) + s g(t) of R⁴ (points (m, r) are cycles): the envelope of the cones of revolution of its rulings, a PN surface (Peternell Cor. 4.1 via Thm 4.5); needs ⟨g, g⟩ = |g₁₋₃|² − g₄² to be a sum of two squares over Q(t)",
+    params: &[
+        ParamSpec::required(
+            "directrix",
+            ParamKind::Grid,
+            "l(t) = (m₁, m₂, m₃, r): four rows of power coefficients in t",
+        ),
+        ParamSpec::required(
+            "ruling",
+            ParamKind::Grid,
+            "g(t): four rows of power coefficients in t (spacelike: |g₁₋₃|² > g₄²)",
+        ),
+        DOMAIN,
+        OFFSET,
+        ORIENTATION,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_ruled_cyclographic_r4"
+op = "pn_ruled_cyclographic"
+# l(t) = (t, 0, 0; t²/2), g(t) = (0, 5, t; 3): ⟨g, g⟩ = t² + 16
+directrix = [[0, 1, 0], [0, 0, 0], [0, 0, 0], [0, 0, "1/2"]]
+ruling = [[0, 0, 0], [5, 0, 0], [0, 1, 0], [3, 0, 0]]
+domain = ["1/4", "3/4", "1/4", "3/4"]
+distances = ["-1/10"]
+"#,
+    build: build_ruled_cyclographic,
+};
+
+fn build_ruled_cyclographic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let l = four_polys(args, "directrix")?;
+    let g = four_polys(args, "ruling")?;
+    let env = ruled_surface_image(l, g).map_err(blame("ruling"))?;
+    let mut certs = prefixed("cone family: ", env.tangency_certificates());
+    certs.extend(prefixed("cone family: ", env.cone_certificates()));
+    surface_objects(args, &oriented(args, env.surface()), &domain(args)?, certs, "domain")
 }
 
 const PN_REVOLUTION: OpSpec = OpSpec {
@@ -1415,6 +1698,153 @@ mod tests {
     }
     fn run(op: &'static OpSpec, values: Vec<(&'static str, Value)>) -> Result<Vec<Object>, OpError> {
         (op.build)(&OpArgs::new("t", op, values))
+    }
+
+    /// The developable ops: the cubic's edge with an offset edge; a cylinder has no edge
+    /// of regression and an interval through D = 0 is blamed on `interval`; a motion
+    /// whose moved planes stay a one-parameter family is blamed on `translation`.
+    #[test]
+    fn developable_edge_and_motion_ops() {
+        let cubic = || {
+            Value::Grid(vec![
+                vec![q(0, 1), q(1, 1), q(0, 1), q(0, 1)],
+                vec![q(0, 1), q(0, 1), q(1, 1), q(0, 1)],
+                vec![q(0, 1), q(0, 1), q(0, 1), q(1, 3)],
+            ])
+        };
+        let objs = run(
+            &PN_DEVELOPABLE_EDGE,
+            vec![
+                ("curve", cubic()),
+                ("interval", nums(&[(1, 1), (3, 2)])),
+                ("distances", nums(&[(1, 4)])),
+            ],
+        )
+        .expect("edge");
+        assert_eq!(objs.len(), 2);
+        assert!(objs.iter().all(|o| o.certificates.iter().all(|c| c.holds)));
+        let e = run(
+            &PN_DEVELOPABLE_EDGE,
+            vec![("curve", cubic()), ("interval", nums(&[(1, 2), (1, 1)]))],
+        )
+        .expect_err("D = 3t⁴ − 1 vanishes in [1/2, 1]");
+        assert_eq!(e.param, Some("interval"));
+        let cylinder = grid(&[&[0, 1], &[0, 0], &[0, 0, 1]]);
+        let e = run(&PN_DEVELOPABLE_EDGE, vec![("curve", cylinder)]).expect_err("cylinder");
+        assert_eq!(e.param, Some("curve"));
+        assert!(e.message.contains("cylinder"), "{}", e.message);
+        // the foot-point form of pn_developable has the higher degree and is certified too
+        let foot = run(
+            &PN_DEVELOPABLE,
+            vec![
+                ("curve", cubic()),
+                ("domain", nums(&[(1, 2), (1, 1), (1, 4), (2, 1)])),
+                ("form", Value::Str("foot".into())),
+            ],
+        )
+        .expect("foot form");
+        assert!(foot[0].certificates.iter().all(|c| c.holds));
+        // a parabolic cylinder (rulings ∥ z) turned about z: the moved planes are all
+        // vertical, a one-parameter family
+        let par = Value::Grid(vec![
+            vec![q(0, 1), q(0, 1), q(2, 1), q(0, 1), q(0, 1)],
+            vec![q(0, 1), q(-1, 1), q(0, 1), q(1, 1), q(0, 1)],
+            vec![q(-1, 1), q(0, 1), q(-2, 1), q(0, 1), q(-1, 1)],
+        ]);
+        let e = run(
+            &PN_DEVELOPABLE_MOTION,
+            vec![
+                ("curve", par.clone()),
+                ("denominator", nums(&[(0, 1), (1, 1), (0, 1), (1, 1)])),
+                ("axis", Value::Str("z".into())),
+                ("translation", grid(&[&[0], &[0], &[0]])),
+            ],
+        )
+        .expect_err("developable envelope");
+        assert_eq!(e.param, Some("translation"));
+        let objs = run(
+            &PN_DEVELOPABLE_MOTION,
+            vec![
+                ("curve", par),
+                ("denominator", nums(&[(0, 1), (1, 1), (0, 1), (1, 1)])),
+                ("axis", Value::Str("x".into())),
+                ("translation", Value::Grid(vec![vec![q(0, 1), q(-1, 4)], vec![q(0, 1)], vec![q(0, 1)]])),
+                ("domain", nums(&[(3, 2), (4, 1), (-6, 5), (6, 5)])),
+                ("distances", nums(&[(1, 2)])),
+            ],
+        )
+        .expect("§4.6 example");
+        assert_eq!(objs.len(), 2);
+        assert!(objs.iter().all(|o| o.certificates.iter().all(|c| c.holds)));
+    }
+
+    /// `pn_cone_motion`: touching cycles span no cone (blamed on `cycle2`); translations
+    /// only give a developable envelope; a bad cycle is blamed on its parameter.
+    #[test]
+    fn cone_motion_op_errors() {
+        let pt = |xs: &[(i64, i64)]| Value::Point(xs.iter().map(|&(p, d)| q(p, d)).collect());
+        let base = |c2: &[(i64, i64)], axis: &str, tr: Value| {
+            vec![
+                ("cycle1", pt(&[(0, 1), (0, 1), (0, 1), (0, 1)])),
+                ("cycle2", pt(c2)),
+                ("axis", Value::Str(axis.into())),
+                ("translation", tr),
+                ("domain", nums(&[(1, 4), (3, 4), (1, 4), (3, 4)])),
+            ]
+        };
+        let par = || grid(&[&[0, 1, 0], &[0, 0, 1], &[0, 0, 0]]);
+        let ok = run(&PN_CONE_MOTION, base(&[(5, 1), (0, 1), (0, 1), (3, 1)], "z", par()))
+            .expect("Cor. 4.4");
+        assert!(ok[0].certificates.iter().all(|c| c.holds));
+        let e = run(&PN_CONE_MOTION, base(&[(5, 1), (0, 1), (0, 1), (5, 1)], "z", par()))
+            .expect_err("touching cycles");
+        assert_eq!(e.param, Some("cycle2"));
+        assert!(e.message.contains("isotropic"), "{}", e.message);
+        // the cone's axis is z, the rotation about z: every cone is a translate
+        let e = run(&PN_CONE_MOTION, base(&[(0, 1), (0, 1), (5, 1), (3, 1)], "z", par()))
+            .expect_err("developable");
+        assert!(e.message.contains("developable"), "{}", e.message);
+        let e = run(&PN_CONE_MOTION, base(&[(5, 1), (0, 1), (3, 1)], "z", par()))
+            .expect_err("three numbers");
+        assert_eq!(e.param, Some("cycle2"));
+    }
+
+    /// `pn_ruled_cyclographic`: a developable ruled surface of R⁴ and timelike rulings are
+    /// named errors on `ruling`; three rows are an error too.
+    #[test]
+    fn ruled_cyclographic_op_errors() {
+        let l = || grid(&[&[0, 1], &[0, 0], &[0, 0], &[0, 0]]);
+        let ok = run(
+            &PN_RULED_CYCLOGRAPHIC,
+            vec![
+                ("directrix", grid(&[&[0, 1, 0], &[0, 0, 0], &[0, 0, 0], &[0, 0, 1]])),
+                ("ruling", grid(&[&[0, 0], &[5, 0], &[0, 1], &[3, 0]])),
+                ("domain", nums(&[(1, 4), (3, 4), (1, 4), (3, 4)])),
+            ],
+        )
+        .expect("Cor. 4.1");
+        assert!(ok[0].certificates.iter().all(|c| c.holds));
+        // g constant and l a line: developable
+        let e = run(
+            &PN_RULED_CYCLOGRAPHIC,
+            vec![("directrix", l()), ("ruling", grid(&[&[1], &[1], &[0], &[0]]))],
+        )
+        .expect_err("developable");
+        assert_eq!(e.param, Some("ruling"));
+        assert!(e.message.contains("developable"), "{}", e.message);
+        // timelike rulings ⟨g, g⟩ = 1 + t² − 4 < 0 near t = 0: no real image over Q(t)
+        let e = run(
+            &PN_RULED_CYCLOGRAPHIC,
+            vec![("directrix", l()), ("ruling", grid(&[&[0, 0], &[1, 0], &[0, 1], &[2, 0]]))],
+        )
+        .expect_err("timelike");
+        assert_eq!(e.param, Some("ruling"));
+        let e = run(
+            &PN_RULED_CYCLOGRAPHIC,
+            vec![("directrix", grid(&[&[0, 1], &[0, 0], &[0, 0]])), ("ruling", l())],
+        )
+        .expect_err("three rows");
+        assert_eq!(e.param, Some("directrix"));
     }
 
     /// F = u² + v² is the isotropic sphere of the cycle ((0, 0, −1); −1): its offset at

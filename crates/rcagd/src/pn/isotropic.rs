@@ -217,8 +217,12 @@ impl<F: Scalar> IsotropicSurface<F> {
 
     /// The PN surface `Λ⁻¹(y)` by the closed formula (module docs).
     ///
+    /// A curve `y(t)` of `I³` (all of `A, B, C, G, D` in the variable 0 only) gives its
+    /// developable PN surface in `(t, v)` instead ([`super::developable::DevelopablePn`]).
+    ///
     /// # Errors
-    /// [`PnError::Developable`] if `J ≡ 0` (degenerate spherical image).
+    /// [`PnError::Developable`] if `J ≡ 0` (degenerate spherical image) and `y` is not a
+    /// curve in `t` with a proper one-parameter family of planes.
     pub fn to_pn_surface(&self) -> Result<PnSurface<F>, PnError> {
         self.to_pn_surface_with(&[])
     }
@@ -238,6 +242,19 @@ impl<F: Scalar> IsotropicSurface<F> {
             &[av.clone(), bv.clone(), cv.clone()],
         ]);
         if jac.is_zero() {
+            let only_t = |p: &MPoly<F>| p.terms().all(|(e, _)| e.iter().skip(1).all(|&k| k == 0));
+            if [a, b, c, g, d].into_iter().all(only_t) {
+                // a curve y(t) of I³: the developable PN surface (Theorem 4.3, developable
+                // case), parametrized by t and the ruling parameter v
+                let y = [
+                    RatFn::new(a.clone(), c.clone())?,
+                    RatFn::new(b.clone(), c.clone())?,
+                    RatFn::new(g.clone(), d.clone())?,
+                ];
+                return Ok(super::developable::DevelopablePn::from_isotropic_curve(&y)?
+                    .surface()
+                    .clone());
+            }
             return Err(PnError::Developable(format!(
                 "{}: the spherical image (A/C, B/C) has Jacobian J = det(P, P_u, P_v) ≡ 0",
                 self.name
@@ -344,6 +361,15 @@ mod tests {
         let iso =
             IsotropicSurface::new(u.clone(), u.clone(), int(1), var(1), int(1)).expect("valid");
         assert!(matches!(iso.to_pn_surface(), Err(PnError::Developable(_))));
+        // a curve y(u) = (u, u², u³) of I³: the developable PN surface
+        let curve = IsotropicSurface::new(u.clone(), &u * &u, int(1), &(&u * &u) * &u, int(1))
+            .expect("valid");
+        let dev = curve.to_pn_surface().expect("developable PN surface");
+        assert!(dev.all_hold(), "{:?}", dev.certify());
+        assert!(dev.normal_polys().iter().all(|n| n.partial(1).is_zero()));
+        // a constant spherical image stays an error
+        let flat = IsotropicSurface::new(int(1), int(0), int(1), u.clone(), int(1)).expect("valid");
+        assert!(matches!(flat.to_pn_surface(), Err(PnError::Developable(_))));
         assert!(IsotropicSurface::new(u.clone(), u, MPoly::zero(2), int(1), int(1)).is_err());
     }
 }

@@ -40,6 +40,7 @@ pub mod developable;
 pub mod hypercyclide;
 pub mod isotropic;
 pub mod modeling;
+pub mod motion;
 pub mod offset;
 pub mod planar;
 pub(crate) mod poly;
@@ -72,6 +73,10 @@ pub enum PnError {
     /// one-parameter family (a developable surface); `e ∩ e_u ∩ e_v` is not a point.
     #[error("the tangent planes are developable (degenerate Gauss map): {0}")]
     Developable(String),
+    /// A developable surface without an edge of regression `e ∩ ė ∩ ë`: a cylinder
+    /// (`det(P, Ṗ, P̈) ≡ 0`, the edge is at infinity) or a cone (the edge is the vertex).
+    #[error("no edge of regression: {0}")]
+    NoEdgeOfRegression(String),
     /// The parametrization is singular or undefined at a parameter point of the domain.
     #[error("{what} at (u, v) = {at}")]
     Singular {

@@ -16,6 +16,7 @@ mod ph_planar;
 mod ph_preimage;
 mod ph_props;
 mod pn_laguerre;
+mod pn_motion;
 mod pn_props;
 mod primitives;
 mod quadric_family;
