@@ -882,7 +882,9 @@ pub fn conic_point(
                 "the constructed point does not satisfy X²L + Y²M + Z²N ≡ 0".into(),
             ));
         }
-        Ok(ConicPoint::Rational(minimise(&original, &c, &mult, &conds, pt)?))
+        Ok(ConicPoint::Rational(minimise(
+            &original, &c, &mult, &conds, pt,
+        )?))
     };
     let combine = |w: &[Rational]| -> Vec<Rational> {
         (0..cols)
@@ -1020,9 +1022,9 @@ fn kernel_at(
     let mut rows: Vec<Vec<Rational>> = Vec::new();
     // the residues t^j mod p placed in the columns of unknown v, times the factor f
     let place = |block: &mut Vec<Vec<Rational>>,
-                     v: usize,
-                     f: &Poly<Rational>,
-                     p: &Poly<Rational>|
+                 v: usize,
+                 f: &Poly<Rational>,
+                 p: &Poly<Rational>|
      -> Result<(), ConicPointError> {
         let mut cur = rem(f, p)?;
         for j in 0..size(v) {
@@ -1054,7 +1056,13 @@ fn kernel_at(
         let id = (0..cols)
             .map(|k| {
                 (0..cols)
-                    .map(|j| if j == k { Rational::ONE } else { Rational::ZERO })
+                    .map(|j| {
+                        if j == k {
+                            Rational::ONE
+                        } else {
+                            Rational::ZERO
+                        }
+                    })
                     .collect()
             })
             .collect();
@@ -1074,7 +1082,13 @@ fn isotropic(mut g: Vec<Vec<Rational>>) -> Result<Option<Vec<Rational>>, ConicPo
     let mut b: Vec<Vec<Rational>> = (0..k)
         .map(|i| {
             (0..k)
-                .map(|j| if i == j { Rational::ONE } else { Rational::ZERO })
+                .map(|j| {
+                    if i == j {
+                        Rational::ONE
+                    } else {
+                        Rational::ZERO
+                    }
+                })
                 .collect()
         })
         .collect();
