@@ -995,6 +995,9 @@ pub fn conic_point(
 /// `(a, b, σ, p)`.
 type Cond = (usize, usize, Poly<Rational>, Poly<Rational>);
 
+/// A kernel basis and the degree bounds of the three unknowns.
+type Kernel = (Vec<Vec<Rational>>, [Option<usize>; 3]);
+
 /// Sign patterns tried by [`minimise`] at most (`2^6`; beyond, only the first pattern).
 const MAX_SIGN_CONDITIONS: usize = 6;
 
@@ -1011,7 +1014,7 @@ fn kernel_at(
     conds: &[Cond],
     flip: &[bool],
     divs: &[(usize, Poly<Rational>)],
-) -> Result<(Vec<Vec<Rational>>, [Option<usize>; 3]), ConicPointError> {
+) -> Result<Kernel, ConicPointError> {
     let bounds: [Option<usize>; 3] = core::array::from_fn(|i| h.checked_sub(d[i]).map(|e| e / 2));
     let size = |i: usize| bounds[i].map_or(0, |b| b + 1);
     let offs = [0, size(0), size(0) + size(1)];
