@@ -44,6 +44,11 @@
 //!    `r² − A = B·T`, `|T| < |B|`, a point of `x² = Ay² + Tz²` gives one of the original
 //!    by multiplying norms from `Q(√A)`.
 //!
+//! 5. **Least degree**: among the points the linear method reaches (every sign pattern of
+//!    the congruences, every weighted degree up to `deg LMN`, divisibility conditions that
+//!    let the lift to the original family lose a factor), one of least maximal degree is
+//!    returned (docs/math/conic-surfaces.md, "The point of least degree").
+//!
 //! Every point returned is checked: `X²L + Y²M + Z²N` is expanded and must vanish
 //! exactly ([`certify_conic_point`]); an unverified point is never returned. Integer
 //! factorization (square-free parts, Legendre symbols) is done by [`crate::integer`];
