@@ -887,9 +887,8 @@ pub fn conic_point(
                 "the constructed point does not satisfy X²L + Y²M + Z²N ≡ 0".into(),
             ));
         }
-        Ok(ConicPoint::Rational(minimise(
-            &original, &c, &mult, &conds, pt,
-        )?))
+        let best = minimise(&original, &c, &mult, &conds, Some(pt.clone()))?;
+        Ok(ConicPoint::Rational(best.unwrap_or(pt)))
     };
     let combine = |w: &[Rational]| -> Vec<Rational> {
         (0..cols)
@@ -929,7 +928,18 @@ pub fn conic_point(
     let tinv = tm
         .inverse()
         .map_err(|e| ConicPointError::Internal(e.to_string()))?;
-    match rational_conic_point(&lcs[0], &lcs[1], &lcs[2])? {
+    let leading = match rational_conic_point(&lcs[0], &lcs[1], &lcs[2]) {
+        // the leading conic is undecided (an integer resists factorization): a point of
+        // lower weighted degree needs no leading conic — search for one before giving up
+        Err(e @ ConicPointError::Integer(_)) => {
+            return match minimise(&original, &c, &mult, &conds, None)? {
+                Some(pt) => Ok(ConicPoint::Rational(pt)),
+                None => Err(e),
+            }
+        }
+        other => other?,
+    };
+    match leading {
         TernaryOutcome::Point(pq) => {
             let w = tinv
                 .mul_vec(&pq)
@@ -1186,8 +1196,11 @@ fn point_at(
                 .collect()
         })
         .collect();
-    let Some(w) = isotropic(gram)? else {
-        return Ok(None);
+    // an undecided leading conic only means no candidate here (the search is optional)
+    let w = match isotropic(gram) {
+        Ok(Some(w)) => w,
+        Ok(None) | Err(ConicPointError::Integer(_)) => return Ok(None),
+        Err(e) => return Err(e),
     };
     let cols = basis[0].len();
     let v: Vec<Rational> = (0..cols)
@@ -1221,16 +1234,20 @@ fn valuation(p: &Poly<Rational>, f: &Poly<Rational>) -> usize {
 /// (docs/math/conic-surfaces.md, "The point of least degree"): for every sign pattern of
 /// the congruences (up to the sign changes of `X`, `Y`, `Z`) and every choice of
 /// divisibility conditions that make the lifted point `m ⊙ x` lose a factor of the
-/// reduction multipliers, the least weighted degree `h ≤ D` with a point (binary search
-/// per parity: a point at `h` gives one at `h + 2`, times `t`); the original point of
-/// least maximal degree among these candidates and `current` is returned, certified.
+/// reduction multipliers, the least weighted degree `h ≤ D` with a point (per parity,
+/// galloping from below, then bisection: a point at `h` gives one at `h + 2`, times `t`);
+/// the original point of least maximal degree among these candidates and `current` is
+/// returned, certified
+/// (`None`: no candidate and no `current`). Without `current` (the leading conic is
+/// undecided) only weighted degrees below `D` are searched, where no conic over `Q` has to
+/// be solved.
 fn minimise(
     original: &Triple,
     c: &Triple,
     mult: &Triple,
     conds: &[Cond],
-    current: Triple,
-) -> Result<Triple, ConicPointError> {
+    current: Option<Triple>,
+) -> Result<Option<Triple>, ConicPointError> {
     let d = [deg(&c[0]), deg(&c[1]), deg(&c[2])];
     let total = d[0] + d[1] + d[2];
     // sign patterns modulo X → −X, Y → −Y, Z → −Z (each toggles the conditions it is in)
@@ -1295,8 +1312,9 @@ fn minimise(
         o.push(factor_conds.concat());
         o
     };
+    let below_only = current.is_none();
+    let mut best_deg = current.as_ref().map_or(usize::MAX, max_degree);
     let mut best = current;
-    let mut best_deg = max_degree(&best);
     let lo = *d.iter().min().unwrap_or(&0);
     for divs in &options {
         for flip in &patterns {
@@ -1305,7 +1323,22 @@ fn minimise(
                 let hs: Vec<usize> = (lo..total).filter(|h| h % 2 == parity).collect();
                 let (mut a, mut b) = (0usize, hs.len());
                 let mut found: Option<Triple> = None;
-                // least index with a point (monotone below D)
+                // least index with a point (monotone below D): galloping from the low end
+                // (small systems first), then bisection in the bracket
+                let mut step = 1usize;
+                let mut probe = 0usize;
+                while probe < hs.len() {
+                    match point_at(hs[probe], c, conds, flip, divs)? {
+                        Some(p) => {
+                            found = Some(p);
+                            b = probe;
+                            break;
+                        }
+                        None => a = probe + 1,
+                    }
+                    probe += step;
+                    step *= 2;
+                }
                 while a < b {
                     let mid = (a + b) / 2;
                     match point_at(hs[mid], c, conds, flip, divs)? {
@@ -1316,7 +1349,7 @@ fn minimise(
                         None => a = mid + 1,
                     }
                 }
-                if found.is_none() && total % 2 == parity {
+                if found.is_none() && total % 2 == parity && !below_only {
                     found = point_at(total, c, conds, flip, divs)?;
                 }
                 let Some(x) = found else { continue };
@@ -1332,7 +1365,7 @@ fn minimise(
                 }
                 let dg = max_degree(&pt);
                 if dg < best_deg {
-                    best = pt;
+                    best = Some(pt);
                     best_deg = dg;
                 }
             }
