@@ -59,7 +59,9 @@
 
 use crate::certificate::Certificate;
 use crate::factor::factor_rational;
-use crate::integer::{legendre, sqrt_mod_squarefree, square_free_part, IntegerError};
+use crate::integer::{
+    legendre, sqrt_mod_squarefree, square_free_part, with_quick_factoring, IntegerError,
+};
 use crate::linalg::Matrix;
 use crate::quadratic::{split_square, QuadExt};
 use crate::rational::{format_rational, rational_sqrt};
@@ -1196,8 +1198,9 @@ fn point_at(
                 .collect()
         })
         .collect();
-    // an undecided leading conic only means no candidate here (the search is optional)
-    let w = match isotropic(gram) {
+    // an undecided leading conic only means no candidate here (the search is optional, so
+    // its integers get the quick factorization limit)
+    let w = match with_quick_factoring(|| isotropic(gram)) {
         Ok(Some(w)) => w,
         Ok(None) | Err(ConicPointError::Integer(_)) => return Ok(None),
         Err(e) => return Err(e),

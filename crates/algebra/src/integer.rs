@@ -23,6 +23,29 @@ use thiserror::Error;
 /// The number of Pollard–Brent steps spent on one split before giving up.
 pub const RHO_ITERATIONS: usize = 1 << 20;
 
+std::thread_local! {
+    /// The quick mode of [`with_quick_factoring`] on this thread.
+    static QUICK: core::cell::Cell<bool> = const { core::cell::Cell::new(false) };
+}
+
+/// Pollard–Brent steps per split in the quick mode.
+pub const QUICK_RHO_ITERATIONS: usize = 1 << 14;
+
+/// Runs `f` with a small factorization work limit on this thread: [`QUICK_RHO_ITERATIONS`]
+/// ρ steps and no elliptic curves. For optional work (the conic-point engine's search for
+/// a point of lower degree), where giving up ([`IntegerError::TooHard`]) is cheap and a
+/// full attempt is not worth minutes.
+pub fn with_quick_factoring<T>(f: impl FnOnce() -> T) -> T {
+    let old = QUICK.with(|q| q.replace(true));
+    let out = f();
+    QUICK.with(|q| q.set(old));
+    out
+}
+
+fn quick() -> bool {
+    QUICK.with(core::cell::Cell::get)
+}
+
 /// A failure of the integer arithmetic (never a wrong result).
 #[derive(Debug, Clone, PartialEq, Eq, Error)]
 pub enum IntegerError {
@@ -222,7 +245,13 @@ fn rho_split(n: &UBig) -> Option<UBig> {
             }
             r *= 2;
             steps += r;
-            if steps > RHO_ITERATIONS {
+            if steps
+                > if quick() {
+                    QUICK_RHO_ITERATIONS
+                } else {
+                    RHO_ITERATIONS
+                }
+            {
                 break;
             }
         }
@@ -506,7 +535,13 @@ pub fn factor(n: &UBig) -> Result<Vec<(UBig, u32)>, IntegerError> {
             continue;
         }
         let d = rho_split(&m)
-            .or_else(|| ecm_split(&m, &ECM_SCHEDULE))
+            .or_else(|| {
+                if quick() {
+                    None
+                } else {
+                    ecm_split(&m, &ECM_SCHEDULE)
+                }
+            })
             .ok_or_else(|| IntegerError::TooHard(m.to_string()))?;
         let q = &m / &d;
         stack.push(d);
@@ -719,6 +754,13 @@ mod tests {
     /// `TooHard` only for a composite it could not split.
     #[test]
     fn ecm_never_wrong() {
+        // the quick mode gives up on a 61-bit factor (no elliptic curves), and is restored
+        let m = mersenne(61) * mersenne(89);
+        assert!(matches!(
+            with_quick_factoring(|| factor(&m)),
+            Err(IntegerError::TooHard(_))
+        ));
+        assert!(!quick());
         let n = mersenne(89) * mersenne(107);
         for limit in [[(50u64, 1usize)], [(200, 2)]] {
             if let Some(g) = ecm_split(&n, &limit) {

@@ -58,7 +58,8 @@ impl ConicFamily {
     /// # Errors
     /// As [`Self::tangent_developable`] and [`Self::rational_curve`];
     /// [`ConicSurfaceError::Degenerate`] if the planes `F(t)` are one fixed plane (a plane
-    /// touching the surface along a curve, as for the §1.5 example) or form a pencil.
+    /// touching the surface along a curve, as for the §1.5 example) or form a pencil (the
+    /// curve `k(t)` is a line of a ruled surface).
     pub fn tangent_developable_surface(&self) -> Result<TangentDevelopable, ConicSurfaceError> {
         let planes = self.tangent_developable()?;
         let contact = self.rational_curve()?;
@@ -66,6 +67,17 @@ impl ConicFamily {
         if parallel(&planes, &dplanes) {
             return Err(ConicSurfaceError::Degenerate(
                 "the tangent planes F(t) are one fixed plane (it touches the surface along the curve k(t)): the developable degenerates to that plane".into(),
+            ));
+        }
+        // F, Ḟ, F̈ dependent: the planes lie in a pencil (all rulings one line, e.g. the
+        // tangent planes along a line of a ruled surface)
+        let ddplanes: [P; 4] = core::array::from_fn(|i| dplanes[i].derivative());
+        if meet3(&planes, &dplanes, &ddplanes)
+            .iter()
+            .all(|x| x.is_zero())
+        {
+            return Err(ConicSurfaceError::Degenerate(
+                "the tangent planes F(t) form a pencil (they touch the surface along one line): every ruling F ∩ Ḟ is that line".into(),
             ));
         }
         let ruling = (0..4)
