@@ -496,7 +496,8 @@ fn push(out: &mut Vec<(UBig, u32)>, p: UBig, e: u32) {
 /// The prime factorization `n = ∏ pᵢ^{eᵢ}` of `n ≥ 1`, primes ascending (module docs).
 ///
 /// # Errors
-/// [`IntegerError::TooHard`] when a composite cofactor resists Pollard's ρ.
+/// [`IntegerError::TooHard`] when a composite cofactor resists Pollard's ρ and the elliptic
+/// curve method within their work limits.
 pub fn factor(n: &UBig) -> Result<Vec<(UBig, u32)>, IntegerError> {
     let mut out: Vec<(UBig, u32)> = Vec::new();
     if n.is_zero() {
