@@ -80,6 +80,14 @@ pub enum ConicPointError {
     /// The exact polynomial factorization over `Q` gave up.
     #[error("undecided: factorization over Q: {0}")]
     Factorization(String),
+    /// The family exceeds the engine's degree bound ([`MAX_FAMILY_DEGREE`]).
+    #[error("the family has degree deg L + deg M + deg N = {degree}, above the engine's bound {limit} (its linear systems have that many rows over number fields; split or reparametrize the family)")]
+    TooLarge {
+        /// `deg L + deg M + deg N`.
+        degree: usize,
+        /// [`MAX_FAMILY_DEGREE`].
+        limit: usize,
+    },
     /// A step that the theory guarantees did not succeed (a defect: please report it with
     /// the input).
     #[error("internal defect of the conic-point engine: {0}")]
@@ -767,19 +775,31 @@ fn primitive_triple(p: [Poly<Rational>; 3]) -> Result<[Poly<Rational>; 3], Conic
     Ok([q[0].scale(&f), q[1].scale(&f), q[2].scale(&f)])
 }
 
+/// The largest `deg L + deg M + deg N` [`conic_point`] accepts (the benchmark's largest
+/// family, degree 62 with 64-bit coefficients, takes minutes; docs/BENCHMARKS.md).
+pub const MAX_FAMILY_DEGREE: usize = 200;
+
 /// A polynomial point on the conic family `X²L + Y²M + Z²N = 0`, or a proof that none
 /// exists over `Q` (module docs). A zero coefficient gives the obvious point (`N ≡ 0`:
 /// `(0, 0, 1)`).
 ///
 /// # Errors
 /// [`ConicPointError::Integer`] / [`ConicPointError::Factorization`] when an exact
-/// factorization gives up (undecided); [`ConicPointError::Internal`] on a defect.
+/// factorization gives up (undecided); [`ConicPointError::TooLarge`] above
+/// [`MAX_FAMILY_DEGREE`]; [`ConicPointError::Internal`] on a defect.
 pub fn conic_point(
     l: &Poly<Rational>,
     m: &Poly<Rational>,
     n: &Poly<Rational>,
 ) -> Result<ConicPoint, ConicPointError> {
     let original = [l.clone(), m.clone(), n.clone()];
+    let degree: usize = original.iter().map(deg).sum();
+    if degree > MAX_FAMILY_DEGREE {
+        return Err(ConicPointError::TooLarge {
+            degree,
+            limit: MAX_FAMILY_DEGREE,
+        });
+    }
     if let Some(i) = original.iter().position(|c| c.is_zero()) {
         let mut pt = [Poly::zero(), Poly::zero(), Poly::zero()];
         pt[i] = Poly::constant(Rational::ONE);

@@ -5,7 +5,7 @@
 use proptest::prelude::*;
 use rcagd_algebra::conic_point::{
     certify_conic_point, certify_conic_point_ext, conic_point, rational_conic_point, ConicPoint,
-    Obstruction, Place, TernaryOutcome,
+    ConicPointError, Obstruction, Place, TernaryOutcome, MAX_FAMILY_DEGREE,
 };
 use rcagd_algebra::sum_of_squares::{sum_of_two_squares, SumOfSquares, SumOfSquaresError};
 use rcagd_algebra::{Poly, Rational};
@@ -178,6 +178,30 @@ proptest! {
         prop_assert!(!matches!(sos, Err(SumOfSquaresError::Negative(_))));
         prop_assert_eq!(rational_sos, conic.rational().is_some(), "D = {:?}", d);
     }
+}
+
+/// Input above the degree bound is refused with a named error, not attempted.
+#[test]
+fn degree_bound_is_a_named_error() {
+    let big = Poly::new(
+        (0..=(MAX_FAMILY_DEGREE as i64))
+            .map(|k| Rational::from(k % 5 + 1))
+            .collect(),
+    );
+    match conic_point(&big, &p(&[1]), &p(&[0, -1])) {
+        Err(ConicPointError::TooLarge { degree, limit }) => {
+            assert_eq!((degree, limit), (MAX_FAMILY_DEGREE + 1, MAX_FAMILY_DEGREE));
+        }
+        other => panic!("{other:?}"),
+    }
+    // at the bound it is attempted (X² − Y² = 0 has the point (1, 1, 0); N = t^198)
+    let mut c = vec![Rational::ZERO; MAX_FAMILY_DEGREE - 1];
+    c.push(Rational::ONE);
+    let at = Poly::new(c);
+    assert!(matches!(
+        conic_point(&p(&[1]), &p(&[-1]), &at),
+        Ok(ConicPoint::Rational(_))
+    ));
 }
 
 #[test]
