@@ -47,7 +47,9 @@
 //! 5. **Least degree**: among the points the linear method reaches (every sign pattern of
 //!    the congruences, every weighted degree up to `deg LMN`, divisibility conditions that
 //!    let the lift to the original family lose a factor), one of least maximal degree is
-//!    returned (docs/math/conic-surfaces.md, "The point of least degree").
+//!    returned (docs/math/conic-surfaces.md, "The point of least degree"). This search
+//!    runs before the leading conic of step 3 is decided (with a small factorization
+//!    limit): when it finds a point, no integer of the leading conic has to be factored.
 //!
 //! Every point returned is checked: `X²L + Y²M + Z²N` is expanded and must vanish
 //! exactly ([`certify_conic_point`]); an unverified point is never returned. Integer
@@ -950,17 +952,12 @@ pub fn conic_point(
     let tinv = tm
         .inverse()
         .map_err(|e| ConicPointError::Internal(e.to_string()))?;
-    let leading = match rational_conic_point(&lcs[0], &lcs[1], &lcs[2]) {
-        // the leading conic is undecided (an integer resists factorization): a point of
-        // lower weighted degree needs no leading conic — search for one before giving up
-        Err(e @ ConicPointError::Integer(_)) => {
-            return match minimise(&original, &c, &mult, &conds, None)? {
-                Some(pt) => Ok(ConicPoint::Rational(pt)),
-                None => Err(e),
-            }
-        }
-        other => other?,
-    };
+    // the least-degree search (with the quick factorization limit) first: a point found
+    // there needs no decision of the leading conic, whose integers may resist factoring
+    if let Some(pt) = minimise(&original, &c, &mult, &conds, None)? {
+        return Ok(ConicPoint::Rational(pt));
+    }
+    let leading = rational_conic_point(&lcs[0], &lcs[1], &lcs[2])?;
     match leading {
         TernaryOutcome::Point(pq) => {
             let w = tinv
@@ -1260,10 +1257,9 @@ fn valuation(p: &Poly<Rational>, f: &Poly<Rational>) -> usize {
 /// reduction multipliers, the least weighted degree `h ≤ D` with a point (per parity,
 /// galloping from below, then bisection: a point at `h` gives one at `h + 2`, times `t`);
 /// the original point of least maximal degree among these candidates and `current` is
-/// returned, certified
-/// (`None`: no candidate and no `current`). Without `current` (the leading conic is
-/// undecided) only weighted degrees below `D` are searched, where no conic over `Q` has to
-/// be solved.
+/// returned, certified (`None`: no candidate and no `current`). Conics over `Q` met in
+/// the search are solved with the quick factorization limit (an undecided one is no
+/// candidate), so the search is cheap to run before the leading conic is decided.
 fn minimise(
     original: &Triple,
     c: &Triple,
@@ -1335,7 +1331,6 @@ fn minimise(
         o.push(factor_conds.concat());
         o
     };
-    let below_only = current.is_none();
     let mut best_deg = current.as_ref().map_or(usize::MAX, max_degree);
     let mut best = current;
     let lo = *d.iter().min().unwrap_or(&0);
@@ -1372,7 +1367,7 @@ fn minimise(
                         None => a = mid + 1,
                     }
                 }
-                if found.is_none() && total % 2 == parity && !below_only {
+                if found.is_none() && total % 2 == parity {
                     found = point_at(total, c, conds, flip, divs)?;
                 }
                 let Some(x) = found else { continue };
