@@ -44,6 +44,13 @@
 //!    `r² − A = B·T`, `|T| < |B|`, a point of `x² = Ay² + Tz²` gives one of the original
 //!    by multiplying norms from `Q(√A)`.
 //!
+//! 5. **Least degree**: among the points the linear method reaches (every sign pattern of
+//!    the congruences, every weighted degree up to `deg LMN`, divisibility conditions that
+//!    let the lift to the original family lose a factor), one of least maximal degree is
+//!    returned (docs/math/conic-surfaces.md, "The point of least degree"). This search
+//!    runs before the leading conic of step 3 is decided (with a small factorization
+//!    limit): when it finds a point, no integer of the leading conic has to be factored.
+//!
 //! Every point returned is checked: `X²L + Y²M + Z²N` is expanded and must vanish
 //! exactly ([`certify_conic_point`]); an unverified point is never returned. Integer
 //! factorization (square-free parts, Legendre symbols) is done by [`crate::integer`];
@@ -54,7 +61,9 @@
 
 use crate::certificate::Certificate;
 use crate::factor::factor_rational;
-use crate::integer::{legendre, sqrt_mod_squarefree, square_free_part, IntegerError};
+use crate::integer::{
+    legendre, sqrt_mod_squarefree, square_free_part, with_quick_factoring, IntegerError,
+};
 use crate::linalg::Matrix;
 use crate::quadratic::{split_square, QuadExt};
 use crate::rational::{format_rational, rational_sqrt};
@@ -73,6 +82,14 @@ pub enum ConicPointError {
     /// The exact polynomial factorization over `Q` gave up.
     #[error("undecided: factorization over Q: {0}")]
     Factorization(String),
+    /// The family exceeds the engine's degree bound ([`MAX_FAMILY_DEGREE`]).
+    #[error("the family has degree deg L + deg M + deg N = {degree}, above the engine's bound {limit} (its linear systems have that many rows over number fields; split or reparametrize the family)")]
+    TooLarge {
+        /// `deg L + deg M + deg N`.
+        degree: usize,
+        /// [`MAX_FAMILY_DEGREE`].
+        limit: usize,
+    },
     /// A step that the theory guarantees did not succeed (a defect: please report it with
     /// the input).
     #[error("internal defect of the conic-point engine: {0}")]
@@ -760,19 +777,31 @@ fn primitive_triple(p: [Poly<Rational>; 3]) -> Result<[Poly<Rational>; 3], Conic
     Ok([q[0].scale(&f), q[1].scale(&f), q[2].scale(&f)])
 }
 
+/// The largest `deg L + deg M + deg N` [`conic_point`] accepts (the benchmark's largest
+/// family, degree 62 with 64-bit coefficients, takes minutes; docs/BENCHMARKS.md).
+pub const MAX_FAMILY_DEGREE: usize = 200;
+
 /// A polynomial point on the conic family `X²L + Y²M + Z²N = 0`, or a proof that none
 /// exists over `Q` (module docs). A zero coefficient gives the obvious point (`N ≡ 0`:
 /// `(0, 0, 1)`).
 ///
 /// # Errors
 /// [`ConicPointError::Integer`] / [`ConicPointError::Factorization`] when an exact
-/// factorization gives up (undecided); [`ConicPointError::Internal`] on a defect.
+/// factorization gives up (undecided); [`ConicPointError::TooLarge`] above
+/// [`MAX_FAMILY_DEGREE`]; [`ConicPointError::Internal`] on a defect.
 pub fn conic_point(
     l: &Poly<Rational>,
     m: &Poly<Rational>,
     n: &Poly<Rational>,
 ) -> Result<ConicPoint, ConicPointError> {
     let original = [l.clone(), m.clone(), n.clone()];
+    let degree: usize = original.iter().map(deg).sum();
+    if degree > MAX_FAMILY_DEGREE {
+        return Err(ConicPointError::TooLarge {
+            degree,
+            limit: MAX_FAMILY_DEGREE,
+        });
+    }
     if let Some(i) = original.iter().position(|c| c.is_zero()) {
         let mut pt = [Poly::zero(), Poly::zero(), Poly::zero()];
         pt[i] = Poly::constant(Rational::ONE);
@@ -882,7 +911,8 @@ pub fn conic_point(
                 "the constructed point does not satisfy X²L + Y²M + Z²N ≡ 0".into(),
             ));
         }
-        Ok(ConicPoint::Rational(pt))
+        let best = minimise(&original, &c, &mult, &conds, Some(pt.clone()))?;
+        Ok(ConicPoint::Rational(best.unwrap_or(pt)))
     };
     let combine = |w: &[Rational]| -> Vec<Rational> {
         (0..cols)
@@ -922,7 +952,13 @@ pub fn conic_point(
     let tinv = tm
         .inverse()
         .map_err(|e| ConicPointError::Internal(e.to_string()))?;
-    match rational_conic_point(&lcs[0], &lcs[1], &lcs[2])? {
+    // the least-degree search (with the quick factorization limit) first: a point found
+    // there needs no decision of the leading conic, whose integers may resist factoring
+    if let Some(pt) = minimise(&original, &c, &mult, &conds, None)? {
+        return Ok(ConicPoint::Rational(pt));
+    }
+    let leading = rational_conic_point(&lcs[0], &lcs[1], &lcs[2])?;
+    match leading {
         TernaryOutcome::Point(pq) => {
             let w = tinv
                 .mul_vec(&pq)
@@ -983,6 +1019,377 @@ pub fn conic_point(
             })
         }
     }
+}
+
+// ----------------------------------------------------------------------------------------
+// the point of least degree
+// ----------------------------------------------------------------------------------------
+
+/// A congruence `x_a − σ·x_b ≡ 0 (mod p)` of a primitive point of the reduced family:
+/// `(a, b, σ, p)`.
+type Cond = (usize, usize, Poly<Rational>, Poly<Rational>);
+
+/// A kernel basis and the degree bounds of the three unknowns.
+type Kernel = (Vec<Vec<Rational>>, [Option<usize>; 3]);
+
+/// Sign patterns tried by [`minimise`] at most (`2^6`; beyond, only the first pattern).
+const MAX_SIGN_CONDITIONS: usize = 6;
+
+fn max_degree(p: &Triple) -> usize {
+    p.iter().filter_map(Poly::degree).max().unwrap_or(0)
+}
+
+/// The kernel of the congruences (with the signs `flip`) and the divisibility conditions
+/// `x_i ≡ 0 (mod g)` for unknowns of weighted degree `h`: `deg x_i ≤ ⌊(h − d_i)/2⌋`
+/// (`None`: `x_i = 0`). Returns the basis and the bounds.
+fn kernel_at(
+    h: usize,
+    d: [usize; 3],
+    conds: &[Cond],
+    flip: &[bool],
+    divs: &[(usize, Poly<Rational>)],
+) -> Result<Kernel, ConicPointError> {
+    let bounds: [Option<usize>; 3] = core::array::from_fn(|i| h.checked_sub(d[i]).map(|e| e / 2));
+    let size = |i: usize| bounds[i].map_or(0, |b| b + 1);
+    let offs = [0, size(0), size(0) + size(1)];
+    let cols = offs[2] + size(2);
+    if cols == 0 {
+        return Ok((Vec::new(), bounds));
+    }
+    let mut rows: Vec<Vec<Rational>> = Vec::new();
+    // the residues t^j mod p placed in the columns of unknown v, times the factor f
+    let place = |block: &mut Vec<Vec<Rational>>,
+                 v: usize,
+                 f: &Poly<Rational>,
+                 p: &Poly<Rational>|
+     -> Result<(), ConicPointError> {
+        let mut cur = rem(f, p)?;
+        for j in 0..size(v) {
+            for (k, row) in block.iter_mut().enumerate() {
+                row[offs[v] + j] += cur.coeff(k);
+            }
+            cur = mulmod(&cur, &Poly::x(), p)?;
+        }
+        Ok(())
+    };
+    let one = Poly::constant(Rational::ONE);
+    for (idx, (va, vb, sigma, p)) in conds.iter().enumerate() {
+        let mut block = vec![vec![Rational::ZERO; cols]; deg(p)];
+        place(&mut block, *va, &one, p)?;
+        let s = if flip.get(idx).copied().unwrap_or(false) {
+            sigma.clone()
+        } else {
+            -sigma
+        };
+        place(&mut block, *vb, &s, p)?;
+        rows.extend(block);
+    }
+    for (i, g) in divs {
+        let mut block = vec![vec![Rational::ZERO; cols]; deg(g)];
+        place(&mut block, *i, &one, g)?;
+        rows.extend(block);
+    }
+    if rows.is_empty() {
+        let id = (0..cols)
+            .map(|k| {
+                (0..cols)
+                    .map(|j| {
+                        if j == k {
+                            Rational::ONE
+                        } else {
+                            Rational::ZERO
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
+        return Ok((id, bounds));
+    }
+    let basis = Matrix::from_rows(rows)
+        .map_err(|e| ConicPointError::Internal(e.to_string()))?
+        .null_space();
+    Ok((basis, bounds))
+}
+
+/// A non-zero isotropic vector of the quadratic form with the symmetric Gram matrix `g`
+/// (`wᵀgw = 0`), or `None` if it has none over `Q`: a congruence diagonalization, then a
+/// zero diagonal entry, `−a₁/a₀` a square (binary), or Legendre (ternary).
+fn isotropic(mut g: Vec<Vec<Rational>>) -> Result<Option<Vec<Rational>>, ConicPointError> {
+    let k = g.len();
+    let mut b: Vec<Vec<Rational>> = (0..k)
+        .map(|i| {
+            (0..k)
+                .map(|j| {
+                    if i == j {
+                        Rational::ONE
+                    } else {
+                        Rational::ZERO
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    for p in 0..k {
+        if let Some(j) = (p..k).find(|&j| g[j][j].is_zero()) {
+            return Ok(Some(b[j].clone()));
+        }
+        for j in p + 1..k {
+            let f = &g[p][j] / &g[p][p];
+            if f.is_zero() {
+                continue;
+            }
+            for c in 0..k {
+                let v = &g[p][c] * &f;
+                g[j][c] -= v;
+            }
+            for r in 0..k {
+                let v = &g[r][p] * &f;
+                g[r][j] -= v;
+            }
+            for c in 0..k {
+                let v = &b[p][c] * &f;
+                b[j][c] -= v;
+            }
+        }
+    }
+    let comb = |w: &[Rational]| -> Vec<Rational> {
+        (0..k)
+            .map(|c| {
+                w.iter()
+                    .zip(&b)
+                    .fold(Rational::ZERO, |acc, (wi, bi)| acc + wi * &bi[c])
+            })
+            .collect()
+    };
+    match k {
+        0 | 1 => Ok(None),
+        2 => Ok(rational_sqrt(&-(&g[1][1] / &g[0][0])).map(|r| comb(&[r, Rational::ONE]))),
+        _ => match rational_conic_point(&g[0][0], &g[1][1], &g[2][2])? {
+            TernaryOutcome::Point(w) => Ok(Some(comb(&w))),
+            TernaryOutcome::NoPoint(_) => Ok(None),
+        },
+    }
+}
+
+/// A reduced point of weighted degree `h` (`max(2·deg x_i + d_i) ≤ h`) with the given
+/// signs and divisibility conditions, if the kernel holds one. Below `D = d₀ + d₁ + d₂`
+/// every kernel vector is a point (the sum is divisible by `L·M·N` and of degree `< D`);
+/// at `D` the sum is `λ·L·M·N` with `λ` the leading quadratic form, which must vanish.
+fn point_at(
+    h: usize,
+    c: &Triple,
+    conds: &[Cond],
+    flip: &[bool],
+    divs: &[(usize, Poly<Rational>)],
+) -> Result<Option<Triple>, ConicPointError> {
+    let d = [deg(&c[0]), deg(&c[1]), deg(&c[2])];
+    let total = d[0] + d[1] + d[2];
+    let (basis, bounds) = kernel_at(h, d, conds, flip, divs)?;
+    let size = |i: usize| bounds[i].map_or(0, |b| b + 1);
+    let offs = [0, size(0), size(0) + size(1)];
+    let to_triple = |v: &[Rational]| -> Triple {
+        core::array::from_fn(|i| Poly::new(v[offs[i]..offs[i] + size(i)].to_vec()))
+    };
+    if h < total {
+        return Ok(basis.first().map(|v| to_triple(v)));
+    }
+    if basis.is_empty() {
+        return Ok(None);
+    }
+    // the leading form on the kernel: components reaching degree D
+    let tops: Vec<(usize, Rational)> = (0..3)
+        .filter_map(|i| {
+            let e = bounds[i]?;
+            (2 * e + d[i] == total).then(|| (offs[i] + e, c[i].leading()))
+        })
+        .collect();
+    let k = basis.len();
+    let gram: Vec<Vec<Rational>> = (0..k)
+        .map(|a| {
+            (0..k)
+                .map(|bb| {
+                    tops.iter().fold(Rational::ZERO, |acc, (idx, lc)| {
+                        acc + &(&basis[a][*idx] * &basis[bb][*idx]) * lc
+                    })
+                })
+                .collect()
+        })
+        .collect();
+    // an undecided leading conic only means no candidate here (the search is optional, so
+    // its integers get the quick factorization limit)
+    let w = match with_quick_factoring(|| isotropic(gram)) {
+        Ok(Some(w)) => w,
+        Ok(None) | Err(ConicPointError::Integer(_)) => return Ok(None),
+        Err(e) => return Err(e),
+    };
+    let cols = basis[0].len();
+    let v: Vec<Rational> = (0..cols)
+        .map(|j| {
+            basis
+                .iter()
+                .zip(&w)
+                .fold(Rational::ZERO, |acc, (bv, wi)| acc + &bv[j] * wi)
+        })
+        .collect();
+    Ok(Some(to_triple(&v)))
+}
+
+/// The multiplicity of `f` in `p` (`p ≠ 0`).
+fn valuation(p: &Poly<Rational>, f: &Poly<Rational>) -> usize {
+    let mut p = p.clone();
+    let mut k = 0;
+    while deg(&p) >= deg(f) {
+        match p.div_rem(f) {
+            Ok((q, r)) if r.is_zero() => {
+                p = q;
+                k += 1;
+            }
+            _ => break,
+        }
+    }
+    k
+}
+
+/// A point of least degree among those the linear method reaches
+/// (docs/math/conic-surfaces.md, "The point of least degree"): for every sign pattern of
+/// the congruences (up to the sign changes of `X`, `Y`, `Z`) and every choice of
+/// divisibility conditions that make the lifted point `m ⊙ x` lose a factor of the
+/// reduction multipliers, the least weighted degree `h ≤ D` with a point (per parity,
+/// galloping from below, then bisection: a point at `h` gives one at `h + 2`, times `t`);
+/// the original point of least maximal degree among these candidates and `current` is
+/// returned, certified (`None`: no candidate and no `current`). Conics over `Q` met in
+/// the search are solved with the quick factorization limit (an undecided one is no
+/// candidate), so the search is cheap to run before the leading conic is decided.
+fn minimise(
+    original: &Triple,
+    c: &Triple,
+    mult: &Triple,
+    conds: &[Cond],
+    current: Option<Triple>,
+) -> Result<Option<Triple>, ConicPointError> {
+    let d = [deg(&c[0]), deg(&c[1]), deg(&c[2])];
+    let total = d[0] + d[1] + d[2];
+    // sign patterns modulo X → −X, Y → −Y, Z → −Z (each toggles the conditions it is in)
+    let r = conds.len();
+    let patterns: Vec<Vec<bool>> = if r > MAX_SIGN_CONDITIONS {
+        vec![vec![false; r]]
+    } else {
+        let mut seen = std::collections::BTreeSet::new();
+        let mut out = Vec::new();
+        for bits in 0u32..(1 << r) {
+            let pat: Vec<bool> = (0..r).map(|i| bits >> i & 1 == 1).collect();
+            let canon = (0..4usize)
+                .map(|v| {
+                    pat.iter()
+                        .zip(conds)
+                        .map(|(s, (a, b, _, _))| *s ^ (v < 3 && (*a == v || *b == v)))
+                        .collect::<Vec<bool>>()
+                })
+                .min()
+                .unwrap_or_default();
+            if seen.insert(canon) {
+                out.push(pat);
+            }
+        }
+        out
+    };
+    // divisibility options: for an irreducible factor f of lcm(m), x_i ≡ 0 mod f^(a − v_f(m_i))
+    let lcm = mult.iter().fold(Poly::constant(Rational::ONE), |acc, m| {
+        let g = acc.gcd(m);
+        match (&acc * m).div_exact(&g) {
+            Ok(q) => q,
+            Err(_) => acc,
+        }
+    });
+    let mut factor_conds: Vec<Vec<(usize, Poly<Rational>)>> = Vec::new();
+    if deg(&lcm) > 0 {
+        let (_, facs) =
+            factor_rational(&lcm).map_err(|e| ConicPointError::Factorization(e.to_string()))?;
+        for (f, a) in facs {
+            let fc: Vec<(usize, Poly<Rational>)> = (0..3)
+                .filter_map(|i| {
+                    let v = valuation(&mult[i], &f);
+                    (a > v).then(|| (i, f.pow((a - v) as u32)))
+                })
+                .collect();
+            factor_conds.push(fc);
+        }
+    }
+    let nf = factor_conds.len();
+    let options: Vec<Vec<(usize, Poly<Rational>)>> = if nf <= 3 {
+        (0u32..(1 << nf))
+            .map(|bits| {
+                (0..nf)
+                    .filter(|i| bits >> i & 1 == 1)
+                    .flat_map(|i| factor_conds[i].clone())
+                    .collect()
+            })
+            .collect()
+    } else {
+        let mut o = vec![Vec::new()];
+        o.extend(factor_conds.iter().cloned());
+        o.push(factor_conds.concat());
+        o
+    };
+    let mut best_deg = current.as_ref().map_or(usize::MAX, max_degree);
+    let mut best = current;
+    let lo = *d.iter().min().unwrap_or(&0);
+    for divs in &options {
+        for flip in &patterns {
+            for parity in 0..2usize {
+                // the h < D of this parity, increasing
+                let hs: Vec<usize> = (lo..total).filter(|h| h % 2 == parity).collect();
+                let (mut a, mut b) = (0usize, hs.len());
+                let mut found: Option<Triple> = None;
+                // least index with a point (monotone below D): galloping from the low end
+                // (small systems first), then bisection in the bracket
+                let mut step = 1usize;
+                let mut probe = 0usize;
+                while probe < hs.len() {
+                    match point_at(hs[probe], c, conds, flip, divs)? {
+                        Some(p) => {
+                            found = Some(p);
+                            b = probe;
+                            break;
+                        }
+                        None => a = probe + 1,
+                    }
+                    probe += step;
+                    step *= 2;
+                }
+                while a < b {
+                    let mid = (a + b) / 2;
+                    match point_at(hs[mid], c, conds, flip, divs)? {
+                        Some(p) => {
+                            found = Some(p);
+                            b = mid;
+                        }
+                        None => a = mid + 1,
+                    }
+                }
+                if found.is_none() && total % 2 == parity {
+                    found = point_at(total, c, conds, flip, divs)?;
+                }
+                let Some(x) = found else { continue };
+                let pt: Triple = core::array::from_fn(|i| &x[i] * &mult[i]);
+                if pt.iter().all(Poly::is_zero) {
+                    continue;
+                }
+                let pt = primitive_triple(pt)?;
+                if !certify_conic_point(original, &pt).holds {
+                    return Err(ConicPointError::Internal(
+                        "a point of lower degree does not satisfy X²L + Y²M + Z²N ≡ 0".into(),
+                    ));
+                }
+                let dg = max_degree(&pt);
+                if dg < best_deg {
+                    best = Some(pt);
+                    best_deg = dg;
+                }
+            }
+        }
+    }
+    Ok(best)
 }
 
 #[cfg(test)]

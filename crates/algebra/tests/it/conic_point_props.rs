@@ -5,7 +5,7 @@
 use proptest::prelude::*;
 use rcagd_algebra::conic_point::{
     certify_conic_point, certify_conic_point_ext, conic_point, rational_conic_point, ConicPoint,
-    Obstruction, Place, TernaryOutcome,
+    ConicPointError, Obstruction, Place, TernaryOutcome, MAX_FAMILY_DEGREE,
 };
 use rcagd_algebra::sum_of_squares::{sum_of_two_squares, SumOfSquares, SumOfSquaresError};
 use rcagd_algebra::{Poly, Rational};
@@ -89,6 +89,35 @@ proptest! {
         }
     }
 
+    /// The point is of least degree among those the method reaches: a family built from a
+    /// random point `(X, Y, Z)` of degree `k` gets a certified point of degree `≤ k`
+    /// (`L`, `M` random, `N = −(X²L + Y²M)/Z²` made polynomial by scaling `L`, `M` by `Z²`).
+    #[test]
+    fn families_from_a_point_of_degree_k_get_degree_at_most_k(
+        x in prop::collection::vec(-6i64..=6, 1..4),
+        y in prop::collection::vec(-6i64..=6, 1..4),
+        z in prop::collection::vec(-3i64..=3, 1..3),
+        l in prop::collection::vec(-9i64..=9, 1..5),
+        m in prop::collection::vec(-9i64..=9, 1..5),
+    ) {
+        let (x, y, z, l, m) = (p(&x), p(&y), p(&z), p(&l), p(&m));
+        prop_assume!(!z.is_zero() && !l.is_zero() && !m.is_zero());
+        let pt0 = [x.clone(), y.clone(), z.clone()];
+        let k = pt0.iter().filter_map(|q| q.degree()).max().unwrap_or(0);
+        let n = -&(&(&(&x * &x) * &l) + &(&(&y * &y) * &m));
+        prop_assume!(!n.is_zero());
+        let z2 = &z * &z;
+        let coeffs = [&l * &z2, &m * &z2, n];
+        prop_assert!(certify_conic_point(&coeffs, &pt0).holds);
+        let out = conic_point(&coeffs[0], &coeffs[1], &coeffs[2]).expect("decided");
+        let ConicPoint::Rational(pt) = out else {
+            return Err(TestCaseError::fail(format!("missed a point: {out:?}")));
+        };
+        prop_assert!(certify_conic_point(&coeffs, &pt).holds);
+        let dg = pt.iter().filter_map(|q| q.degree()).max().unwrap_or(0);
+        prop_assert!(dg <= k, "degree {dg} > {k}: {pt:?} for {coeffs:?} (built from {pt0:?})");
+    }
+
     /// Random families: a point found by exhaustive search (degree ≤ 1, coefficients in
     /// −2..2) must be found by the engine; a point of the engine is certified; an
     /// obstruction at infinity over R means one sign of the leading coefficients.
@@ -149,6 +178,30 @@ proptest! {
         prop_assert!(!matches!(sos, Err(SumOfSquaresError::Negative(_))));
         prop_assert_eq!(rational_sos, conic.rational().is_some(), "D = {:?}", d);
     }
+}
+
+/// Input above the degree bound is refused with a named error, not attempted.
+#[test]
+fn degree_bound_is_a_named_error() {
+    let big = Poly::new(
+        (0..=(MAX_FAMILY_DEGREE as i64))
+            .map(|k| Rational::from(k % 5 + 1))
+            .collect(),
+    );
+    match conic_point(&big, &p(&[1]), &p(&[0, -1])) {
+        Err(ConicPointError::TooLarge { degree, limit }) => {
+            assert_eq!((degree, limit), (MAX_FAMILY_DEGREE + 1, MAX_FAMILY_DEGREE));
+        }
+        other => panic!("{other:?}"),
+    }
+    // at the bound it is attempted (X² − Y² = 0 has the point (1, 1, 0); N = t^198)
+    let mut c = vec![Rational::ZERO; MAX_FAMILY_DEGREE - 1];
+    c.push(Rational::ONE);
+    let at = Poly::new(c);
+    assert!(matches!(
+        conic_point(&p(&[1]), &p(&[-1]), &at),
+        Ok(ConicPoint::Rational(_))
+    ));
 }
 
 #[test]

@@ -3,5 +3,6 @@
 
 mod big_integers;
 mod conic_point_props;
+mod conic_point_rows;
 mod fields_linalg;
 mod roots_resultants;

@@ -12,6 +12,7 @@ use rcagd::conic_surface::cones::{
 use rcagd::conic_surface::quadric_family::{
     conic_point_report, quadric_family_picture, QuadricFamilyError,
 };
+use rcagd::conic_surface::developable::tangent_developable_patches;
 use rcagd::conic_surface::mobius::{mobius_spheres, CanalHypersurface};
 use rcagd::conic_surface::{conic_surface_patch, moved_conic, FamilyInput};
 use rcagd::Certified;
@@ -57,6 +58,11 @@ const CONIC_SURFACE: OpSpec = OpSpec {
             ParamKind::Numbers,
             "[\"-1/2\", \"1/2\", -1, 1]",
             "[t0, t1, u0, u1]: the parameter rectangle (u is the stereographic parameter of each conic)",
+        ),
+        ParamSpec::optional(
+            "developable",
+            ParamKind::Numbers,
+            "[v0, v1]: also build the developable of the tangent planes F(t) of Thm 1.3 (the dual construction, as points k(t) + v·w(t) on the rulings F ∩ Ḟ; it touches the surface along the curve k(t) of Thm 1.2) over [t0, t1] × [v0, v1], as the object NAME_developable",
         ),
     ],
     example: r#"[[object]]
@@ -130,10 +136,26 @@ fn build_conic_surface(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpErr
         };
         OpError::param(p, e.to_string())
     })?;
-    Ok(vec![args.object(
-        Geometry::Patches(built.patches),
-        built.certificates,
-    )])
+    let mut out = Vec::new();
+    if let Some(v) = args.opt_numbers("developable")? {
+        if v.len() != 2 {
+            return Err(OpError::param("developable", "needs [v0, v1]"));
+        }
+        let dev = tangent_developable_patches(
+            built.surface.family(),
+            (d[0].clone(), d[1].clone()),
+            (v[0].clone(), v[1].clone()),
+        )
+        .map_err(|e| OpError::param("developable", e.to_string()))?;
+        let mut o = args.object(Geometry::Patches(dev.patches), dev.certificates);
+        o.name = format!("{}_developable", args.name());
+        out.push(o);
+    }
+    out.insert(
+        0,
+        args.object(Geometry::Patches(built.patches), built.certificates),
+    );
+    Ok(out)
 }
 
 const CONE_ENVELOPE: OpSpec = OpSpec {

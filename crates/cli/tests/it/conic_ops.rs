@@ -18,7 +18,9 @@ fn conic_point_decisions() {
         "a",
     );
     assert_eq!(exact(&v, "decision"), "rational");
-    assert!(["(t, -3, 1)", "(t, 3, 1)"].contains(&exact(&v, "point").as_str()));
+    // (t, ±3, ±1): the signs of Y and Z are free
+    assert!(["(t, -3, 1)", "(t, 3, 1)", "(t, -3, -1)", "(t, 3, -1)"]
+        .contains(&exact(&v, "point").as_str()));
     let v = build_json(
         "cp_2",
         "[[object]]\nname = \"b\"\nop = \"conic_point\"\nL = [1]\nM = [1]\nN = [-2, 0, -1]\n",
@@ -78,4 +80,28 @@ fn canal_hypersurface_from_the_mobius_model() {
         e.contains("mobius_curve") && e.contains("hyperplane"),
         "{e}"
     );
+}
+
+/// The dual construction exported: with `developable = [v0, v1]` the `conic_surface` op
+/// also builds the developable of the tangent planes F(t) of Thm 1.3 as a point surface
+/// `NAME_developable`, certified (on the rulings F ∩ Ḟ, every plane tangent to the
+/// surface, touching it along k(t)); a malformed range is refused with the parameter named.
+#[test]
+fn conic_surface_with_its_developable() {
+    // a surface of revolution: circles x² + y² = (1 + t²)², z = t
+    let recipe = "[[object]]\nname = \"s\"\nop = \"conic_surface\"\nmatrix = [[[1,0,0,0,0],[0,0,0,0,0],[0,0,0,0,0],[0,1,0,0,0]], [[0,0,0,0,0],[-1,0,-2,0,-1],[0,0,0,0,0],[0,0,0,0,0]], [[0,0,0,0,0],[0,0,0,0,0],[-1,0,-2,0,-1],[0,0,0,0,0]], [[0,1,0,0,0],[0,0,0,0,0],[0,0,0,0,0],[0,0,1,0,0]]]\ndomain = [\"-1/2\", \"1/2\", -1, 1]\ndevelopable = [\"-1/10\", \"1/10\"]\n";
+    // the hyperboloid x² + y² − z² = 1 (circles x² + y² = 1 + t²): the engine's curve is
+    // a line of the ruled surface, the tangent planes along it a pencil — refused, named
+    let hyp = recipe.replace("[-1,0,-2,0,-1]", "[-1,0,-1,0,0]");
+    let err = build_refused(&temp_dir("cs_dev_hyp"), &hyp);
+    assert!(err.contains("pencil"), "{err}");
+    let d = build_json("cs_dev", recipe, "s_developable");
+    let text = d.to_string();
+    assert!(text.contains("ruling F ∩ Ḟ"), "{text}");
+    assert!(text.contains("touches the surface along k(t)"), "{text}");
+    let s = build_json("cs_dev_s", recipe, "s");
+    assert!(s.to_string().contains("F(t, u) touches ċ(t)"));
+    let bad = recipe.replace("developable = [\"-1/10\", \"1/10\"]", "developable = [1]");
+    let err = build_refused(&temp_dir("cs_dev_bad"), &bad);
+    assert!(err.contains("developable"), "{err}");
 }

@@ -30,6 +30,7 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod cones;
+pub mod developable;
 pub mod mobius;
 pub mod quadric_family;
 pub mod stereographic;

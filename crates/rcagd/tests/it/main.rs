@@ -28,6 +28,7 @@ mod seed001_examples;
 mod seed003_examples;
 mod seed003_sphere_families;
 mod seed004_conic_examples;
+mod seed004_degree_table;
 mod seed004_laguerre_examples;
 mod seed004_pn_examples;
 mod thomsen;

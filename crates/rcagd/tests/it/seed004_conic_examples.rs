@@ -38,12 +38,11 @@ fn ch1_conic_1_35_point() {
     let out = conic_point(&l, &p(&[1]), &n).expect("decided");
     let pt = out.rational().expect("a rational point");
     assert!(certify_conic_point(&coeffs, pt).holds);
-    // degree bound of the engine (docs/math/conic-surfaces.md): the reduced family is
-    // (−1, 1, N) with deg N = 8, so deg ≤ 8/2 = 4 there, and the square factor
-    // (1+t²)(t⁴+12t²+3) of L (degree 6) multiplies Y and Z: at most 10 (the printed
-    // solution has degree 4; the engine does not minimise the degree)
+    // the engine returns a point of least degree among those its linear method reaches
+    // (docs/math/conic-surfaces.md, "The point of least degree"): degree 4, as printed
+    // (before the minimisation it returned a point of degree 6)
     let dmax = pt.iter().filter_map(|x| x.degree()).max().unwrap_or(0);
-    assert!(dmax <= 10, "degree {dmax}");
+    assert_eq!(dmax, 4, "degree {dmax}: {pt:?}");
 }
 
 /// The sum-of-two-squares callers use one engine: `t² + 9` (which the earlier search of
