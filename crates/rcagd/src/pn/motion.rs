@@ -352,7 +352,8 @@ impl<F: Scalar> DevelopableMotionEnvelope<F> {
     /// # Errors
     /// [`PnError::Developable`] if the moved planes `G(t, u)` form only a one-parameter
     /// family (e.g. a constant family, or motions that map `Δ` into itself): then the
-    /// envelope is developable and Prop. 4.2 does not apply.
+    /// envelope is developable and Prop. 4.2 does not apply; also if the planes envelope
+    /// only a curve or a point (`det(x_t, x_u, n) ≡ 0`).
     pub fn new(dev: &DevelopablePn<F>, family: &LaguerreFamily<F>) -> Result<Self, PnError> {
         let pl = dev.planes();
         let e = [
@@ -374,6 +375,11 @@ impl<F: Scalar> DevelopableMotionEnvelope<F> {
                 other => other,
             })?
             .named("envelope of a developable PN surface under a Laguerre family (Prop. 4.2)");
+        if surface.point_map_degenerate() {
+            return Err(PnError::Developable(
+                "the envelope of the moved developables is a curve or a point (det(x_t, x_u, n) ≡ 0), not a surface (e.g. a translation that slides the developable along one of its own rulings' directions through a fixed point)".into(),
+            ));
+        }
         Ok(DevelopableMotionEnvelope {
             family: family.clone(),
             moved: g,
