@@ -134,23 +134,32 @@ fn ratfn(args: &OpArgs, num: &'static str, den: &'static str) -> Result<RatFn<Q>
     RatFn::new(n, d).map_err(|e| OpError::param(den, e.to_string()))
 }
 
-/// Three polynomials in `t` from a grid of three rows of power coefficients.
-fn three_polys(args: &OpArgs, param: &'static str) -> Result<[RatFn<Q>; 3], OpError> {
+/// `N` polynomials in `t` from a grid of `N` rows of power coefficients (`rows` names them
+/// in the error message).
+fn n_polys<const N: usize>(
+    args: &OpArgs,
+    param: &'static str,
+    rows: &str,
+) -> Result<[RatFn<Q>; N], OpError> {
     let g = args.opt_grid(param)?.unwrap_or_default();
-    if g.len() != 3 {
+    if g.len() != N {
         return Err(OpError::param(
             param,
-            format!(
-                "give three rows (x, y, z) of power coefficients in t, got {} rows",
-                g.len()
-            ),
+            format!("give {N} rows ({rows}) of power coefficients in t, got {} rows", g.len()),
         ));
     }
-    Ok([
-        RatFn::poly(poly_from_list(&g[0])?),
-        RatFn::poly(poly_from_list(&g[1])?),
-        RatFn::poly(poly_from_list(&g[2])?),
-    ])
+    let polys = g
+        .iter()
+        .map(|row| poly_from_list(row).map(RatFn::poly))
+        .collect::<Result<Vec<_>, _>>()?;
+    polys
+        .try_into()
+        .map_err(|_| OpError::param(param, format!("give {N} rows ({rows})")))
+}
+
+/// Three polynomials in `t` from a grid of three rows of power coefficients.
+fn three_polys(args: &OpArgs, param: &'static str) -> Result<[RatFn<Q>; 3], OpError> {
+    n_polys(args, param, "x, y, z")
 }
 
 fn domain(args: &OpArgs) -> Result<Domain<Q>, OpError> {
@@ -1055,22 +1064,7 @@ fn build_cone_motion(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 
 /// Four polynomials in `t` from a grid of four rows of power coefficients.
 fn four_polys(args: &OpArgs, param: &'static str) -> Result<[RatFn<Q>; 4], OpError> {
-    let g = args.opt_grid(param)?.unwrap_or_default();
-    if g.len() != 4 {
-        return Err(OpError::param(
-            param,
-            format!(
-                "give four rows (m₁, m₂, m₃, r) of power coefficients in t, got {} rows",
-                g.len()
-            ),
-        ));
-    }
-    Ok([
-        RatFn::poly(poly_from_list(&g[0])?),
-        RatFn::poly(poly_from_list(&g[1])?),
-        RatFn::poly(poly_from_list(&g[2])?),
-        RatFn::poly(poly_from_list(&g[3])?),
-    ])
+    n_polys(args, param, "m₁, m₂, m₃, r")
 }
 
 const PN_RULED_CYCLOGRAPHIC: OpSpec = OpSpec {
