@@ -7,7 +7,7 @@
 //! the Lorentz ("pseudo-euclidean") product `⟨a, b⟩_pe = a₁b₁ + a₂b₂ + a₃b₃ − a₄b₄`
 //! (1.15). Two cycles are in **oriented contact** iff their difference is isotropic:
 //! `⟨k₁ − k₂, k₁ − k₂⟩_pe = 0` (1.13) — the printed (1.16) `⟨k₁, k₂⟩_pe = 0` is wrong
-//! (erratum 003-E2). Oriented circles in the plane are the points of `R^{2,1}` in the same way.
+//! (docs/math/lines-and-canal.md, G2). Oriented circles in the plane are the points of `R^{2,1}` in the same way.
 //! Orientation convention (docs/math/laguerre-pn.md#conventions): the oriented plane `e₀ + n·x = 0` (`|n| = 1`)
 //! touches the cycle `(m; r)` iff `e₀ + n·m + r = 0`, the contact point is `m + r n`; two
 //! touching cycles share the contact point `x = m₁ + r₁ν = m₂ + r₂ν` with the common unit

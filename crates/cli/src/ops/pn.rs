@@ -1498,7 +1498,7 @@ const PN_LAGUERRE: OpSpec = OpSpec {
             "dilatation",
             ParamKind::Number,
             "0",
-            "dilatation r ↦ r + d (the offset at distance d, E6 sign)",
+            "dilatation r ↦ r + d (the offset at distance d, sign of docs/math/laguerre-pn.md#conventions)",
         ),
         DOMAIN,
         OFFSET,

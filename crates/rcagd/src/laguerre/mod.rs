@@ -7,7 +7,7 @@
 //! * [`models`]: [`OrientedPlane`], [`Cycle`], [`IsotropicSphere`], the Lorentz product
 //!   of the cyclographic model, and every model map with its inverse;
 //! * [`transform`]: [`LaguerreMap`] — a pe similarity `x ↦ a + λ A x` of the cyclographic
-//!   model `R⁴` (`AᵀEA = E`, `E = diag(1,1,1,−1)`, seed (3.8)/(3.9)) acting on cycles,
+//!   model `R⁴` (`AᵀEA = E`, `E = diag(1,1,1,−1)`, Peternell (3.8)/(3.9)) acting on cycles,
 //!   oriented planes and points of the isotropic model; dilatations (offsets),
 //!   translations, rotations, similarities and Lorentz boosts;
 //! * [`query`]: questions answered exactly — a cycle or an oriented plane in every model
@@ -18,7 +18,7 @@
 //! point set `e0 + n·x = 0`; a cycle `(m; r)` has signed radius `r`. Oriented contact is
 //! `e0 + n·m + r = 0` (3.3) with contact point `m + r n`. The offset `x ↦ x + d n` is
 //! `e0 ↦ e0 − d`, i.e. `r ↦ r + d`; the seed's `e0 ↦ e0 + d` ((3.15), (4.2), (5.4)) is
-//! the offset by `−d` (erratum E6).
+//! the offset by `−d` (docs/math/laguerre-pn.md#conventions).
 //!
 //! PN surfaces, which are the images of surfaces of the isotropic model, live in
 //! [`crate::pn`]; the Laguerre image of a PN surface is
@@ -48,7 +48,7 @@ pub enum LaguerreError {
         residual: String,
     },
     /// An oriented plane with normal `(0, 0, 1)` has no image in the isotropic model
-    /// (seed §3.4: it belongs to the isotropic conformal closure; rotate the frame).
+    /// (Peternell §3.4: it belongs to the isotropic conformal closure; rotate the frame).
     #[error("the oriented plane {0} has normal (0, 0, 1): it has no image in the isotropic model (rotate the frame)")]
     NoIsotropicImage(String),
     /// A hyperplane of the cyclographic model that must be a γ-hyperplane is not, or a

@@ -13,7 +13,7 @@
 //! `I³` (isotropic conformal closure). The dual isotropic model (3.16) is
 //! `Λ*(e) = (e0, e1, e2, e3 − 1)` (the bisector plane of `e` and `x₃ = 0`); its inverse
 //! (3.17) must carry the factor `ρ = −2Y₃/(Y₁²+Y₂²+Y₃²)` to give the *oriented* plane
-//! (erratum E7).
+//! (docs/math/laguerre-pn.md).
 //!
 //! The pe (Lorentz) scalar product of the cyclographic model is
 //! `⟨a, b⟩ = a₁b₁ + a₂b₂ + a₃b₃ − a₄b₄` ([`lorentz_product`]); for two cycles on a
@@ -41,13 +41,13 @@ fn check_finite<F: Scalar>(name: &str, xs: &[F]) -> Result<(), LaguerreError> {
 }
 
 /// The pe (Lorentz) scalar product of the cyclographic model,
-/// `⟨a, b⟩ = a₁b₁ + a₂b₂ + a₃b₃ − a₄b₄` (seed §3.2, `E_pe = diag(1,1,1,−1)`).
+/// `⟨a, b⟩ = a₁b₁ + a₂b₂ + a₃b₃ − a₄b₄` (Peternell §3.2, `E_pe = diag(1,1,1,−1)`).
 pub fn lorentz_product<F: Scalar>(a: &[F; 4], b: &[F; 4]) -> F {
     a[0].clone() * b[0].clone() + a[1].clone() * b[1].clone() + a[2].clone() * b[2].clone()
         - a[3].clone() * b[3].clone()
 }
 
-/// An oriented plane `e0 + n·x = 0` with unit normal `n` (seed (3.1); docs/math/laguerre-pn.md#conventions).
+/// An oriented plane `e0 + n·x = 0` with unit normal `n` (Peternell (3.1); docs/math/laguerre-pn.md#conventions).
 #[derive(Debug, Clone, PartialEq)]
 pub struct OrientedPlane<F> {
     /// The coefficient `e0` (minus the signed distance of the origin along `n`).
@@ -105,8 +105,8 @@ impl<F: Scalar> OrientedPlane<F> {
     }
 
     /// The one-sided offset at oriented distance `d`, `x ↦ x + d n`: `e0 ↦ e0 − d`
-    /// (docs/math/laguerre-pn.md#conventions; the seed's `e0 ↦ e0 + d` in (3.15)/(4.2) is the offset by `−d`,
-    /// erratum E6).
+    /// (docs/math/laguerre-pn.md#conventions; Peternell's printed `e0 ↦ e0 + d` in (3.15)/(4.2) is
+    /// the offset by `−d`).
     pub fn offset(&self, d: &F) -> Self {
         OrientedPlane {
             e0: self.e0.clone() - d.clone(),
@@ -114,7 +114,7 @@ impl<F: Scalar> OrientedPlane<F> {
         }
     }
 
-    /// The γ-hyperplane of the cyclographic model, seed (3.5): the coefficients
+    /// The γ-hyperplane of the cyclographic model, Peternell (3.5): the coefficients
     /// `(e0, e1, e2, e3, 1)` of `ε₀ + ε₁x₁ + … + ε₄x₄ = 0` in `R⁴`. A cycle `(m; r)` touches
     /// the plane iff its point `(m, r)` lies on it.
     pub fn to_gamma_hyperplane(&self) -> [F; 5] {
@@ -128,7 +128,7 @@ impl<F: Scalar> OrientedPlane<F> {
     }
 
     /// The oriented plane of a γ-hyperplane `(ε₀, …, ε₄)` (any non-zero multiple): divide
-    /// by `ε₄` and read `(e0, n)` (seed (3.20), `η*`).
+    /// by `ε₄` and read `(e0, n)` (Peternell (3.20), `η*`).
     ///
     /// # Errors
     /// [`LaguerreError::Degenerate`] if `ε₄ = 0`; [`LaguerreError::NotLightlike`] unless
@@ -156,7 +156,7 @@ impl<F: Scalar> OrientedPlane<F> {
         })
     }
 
-    /// The point of the Blaschke cylinder, seed (3.10), homogeneous `(x₀, …, x₄) =
+    /// The point of the Blaschke cylinder, Peternell (3.10), homogeneous `(x₀, …, x₄) =
     /// (1, e1, e2, e3, e0)`; it lies on `x₁² + x₂² + x₃² = x₀²`. Parallel planes lie on one
     /// generator line (fixed `x₁, x₂, x₃`).
     pub fn to_blaschke(&self) -> [F; 5] {
@@ -197,7 +197,7 @@ impl<F: Scalar> OrientedPlane<F> {
         })
     }
 
-    /// The point of the isotropic model, seed (3.11): `Λ(e) = (e1, e2, e0)/(1 − e3)` (the
+    /// The point of the isotropic model, Peternell (3.11): `Λ(e) = (e1, e2, e0)/(1 − e3)` (the
     /// stereographic projection of the Blaschke cylinder from `W = (0,0,1,0)`).
     ///
     /// # Errors
@@ -214,7 +214,7 @@ impl<F: Scalar> OrientedPlane<F> {
         ])
     }
 
-    /// The oriented plane of a point of the isotropic model, seed (3.13):
+    /// The oriented plane of a point of the isotropic model, Peternell (3.13):
     /// `Λ⁻¹(y) = (2y₃, 2y₁, 2y₂, S − 1)/(S + 1)`, `S = y₁² + y₂²` (always a unit normal).
     pub fn from_isotropic(y: &[F; 3]) -> Self {
         let s = y[0].clone() * y[0].clone() + y[1].clone() * y[1].clone();
@@ -230,7 +230,7 @@ impl<F: Scalar> OrientedPlane<F> {
         }
     }
 
-    /// The (non-oriented) bisector plane of the dual isotropic model, seed (3.16):
+    /// The (non-oriented) bisector plane of the dual isotropic model, Peternell (3.16):
     /// `Λ*(e) = (e0, e1, e2, e3 − 1)`, homogeneous coefficients `(Y₀, …, Y₃)` of
     /// `Y₀ + Y₁x₁ + Y₂x₂ + Y₃x₃ = 0`: the points at equal signed distance from `e` and from
     /// the fixed plane `x₃ = 0`.
@@ -244,7 +244,7 @@ impl<F: Scalar> OrientedPlane<F> {
     }
 
     /// The inverse of the dual isotropic map for any non-zero multiple `Y` of a plane,
-    /// seed (3.17) **corrected** (erratum E7): the oriented plane is
+    /// Peternell (3.17) **corrected** (docs/math/laguerre-pn.md): the oriented plane is
     /// `ρ·(Y₀, Y₁, Y₂, (Y₃² − Y₁² − Y₂²)/(2Y₃))` with `ρ = −2Y₃/(Y₁² + Y₂² + Y₃²)`; the
     /// printed form omits `ρ`, which is negative for `Y₃ > 0` and so reverses the
     /// orientation there.
@@ -282,7 +282,7 @@ impl<F: Scalar> OrientedPlane<F> {
 }
 
 /// A cycle `(m; r)`: an oriented sphere with centre `m` and signed radius `r`, a point for
-/// `r = 0` (seed §3.1). As a set of oriented planes it is every plane with
+/// `r = 0` (Peternell §3.1). As a set of oriented planes it is every plane with
 /// `e0 + n·m + r = 0` (3.2).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Cycle<F> {
@@ -370,7 +370,7 @@ impl<F: Scalar> Cycle<F> {
     }
 
     /// The hyperplane of the Blaschke model whose section with the cylinder is the cycle
-    /// (seed §3.3): homogeneous coefficients `(r, m₁, m₂, m₃, 1)` of
+    /// (Peternell §3.3): homogeneous coefficients `(r, m₁, m₂, m₃, 1)` of
     /// `r x₀ + m·(x₁, x₂, x₃) + x₄ = 0`; the Blaschke point of a plane lies on it iff the
     /// plane touches the cycle.
     pub fn blaschke_hyperplane(&self) -> [F; 5] {
@@ -395,7 +395,7 @@ impl<F: Scalar> Cycle<F> {
     }
 
     /// The squared tangential distance `⟨a − b, a − b⟩ = |m_a − m_b|² − (r_a − r_b)²` of the
-    /// cyclographic model (seed §3.2): the squared distance of the contact points on a
+    /// cyclographic model (Peternell §3.2): the squared distance of the contact points on a
     /// common oriented tangent plane when positive, zero iff the cycles touch (oriented),
     /// negative iff they have no common oriented tangent plane.
     pub fn tangential_distance_squared(&self, other: &Cycle<F>) -> F {

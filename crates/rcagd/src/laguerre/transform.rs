@@ -12,9 +12,9 @@
 //! rotations and central similarities (`A = diag(R, 1)`); Lorentz boosts (rational
 //! `cosh = (1+s²)/(1−s²)`, `sinh = 2s/(1−s²)`).
 //!
-//! In the isotropic model the dilatation is `y₃ ↦ y₃ − (d/2)(S + 1)` (seed (3.15)
+//! In the isotropic model the dilatation is `y₃ ↦ y₃ − (d/2)(S + 1)` (Peternell (3.15)
 //! **corrected**: the printed `+` is the offset by `−d`), and the translation of points
-//! by `t` is `y₃ ↦ y₃ − t₁y₁ − t₂y₂ − (t₃/2)(S − 1)` (seed (3.14) with `a = −t`).
+//! by `t` is `y₃ ↦ y₃ − t₁y₁ − t₂y₂ − (t₃/2)(S − 1)` (Peternell (3.14) with `a = −t`).
 
 use super::models::{Cycle, OrientedPlane};
 use super::LaguerreError;
@@ -66,7 +66,7 @@ fn pe_residual<F: Scalar>(a: &M4<F>) -> M4<F> {
 }
 
 /// A Laguerre transformation as the pe similarity `x ↦ a + λ A x` of the cyclographic
-/// model (seed (3.8)); `A` is pe-orthogonal (3.9).
+/// model (Peternell (3.8)); `A` is pe-orthogonal (3.9).
 #[derive(Debug, Clone, PartialEq)]
 pub struct LaguerreMap<F> {
     shift: [F; 4],
@@ -126,7 +126,7 @@ impl<F: Scalar> LaguerreMap<F> {
 
     /// The dilatation `(m; r) ↦ (m; r + d)` (3.4): on every surface (as a set of oriented
     /// tangent planes) the one-sided offset `x + d n`; on planes `e0 ↦ e0 − d`
-    /// (docs/math/laguerre-pn.md#conventions, erratum E6).
+    /// (docs/math/laguerre-pn.md#conventions).
     pub fn dilatation(d: F) -> Self {
         LaguerreMap {
             shift: [F::zero(), F::zero(), F::zero(), d],
@@ -309,7 +309,7 @@ impl<F: Scalar> LaguerreMap<F> {
     }
 
     /// The image of a point of the isotropic model: `Λ ∘ α ∘ Λ⁻¹` (an isotropic Möbius
-    /// transformation, seed §3.4).
+    /// transformation, Peternell §3.4).
     ///
     /// # Errors
     /// [`LaguerreError::NoIsotropicImage`] if the image plane has normal `(0, 0, 1)`.
@@ -330,7 +330,7 @@ impl<F: Scalar> Certified for LaguerreMap<F> {
             .cloned();
         vec![
             Certificate::decide(
-                "AᵀEA − E = 0 (pe-orthogonal, seed (3.9))",
+                "AᵀEA − E = 0 (pe-orthogonal, Peternell (3.9))",
                 bad.is_none(),
                 F::EXACT,
                 || match &bad {
@@ -346,7 +346,7 @@ impl<F: Scalar> Certified for LaguerreMap<F> {
 }
 
 /// The dilatation in the isotropic model: `x ↦ x + d n` is
-/// `y₃ ↦ y₃ − (d/2)(y₁² + y₂² + 1)` (seed (3.15) **corrected**, erratum E6: the printed
+/// `y₃ ↦ y₃ − (d/2)(y₁² + y₂² + 1)` (Peternell (3.15) **corrected**, docs/math/laguerre-pn.md#conventions: the printed
 /// `+ (d/2)(S+1)` is the offset by `−d`).
 pub fn isotropic_dilatation<F: Scalar>(y: &[F; 3], d: &F) -> [F; 3] {
     let s = y[0].clone() * y[0].clone() + y[1].clone() * y[1].clone();
@@ -358,7 +358,7 @@ pub fn isotropic_dilatation<F: Scalar>(y: &[F; 3], d: &F) -> [F; 3] {
 }
 
 /// The translation of points by `t` in the isotropic model:
-/// `y₃ ↦ y₃ − t₁y₁ − t₂y₂ − (t₃/2)(y₁² + y₂² − 1)` (seed (3.14) with its `a = −t`: the
+/// `y₃ ↦ y₃ − t₁y₁ − t₂y₂ − (t₃/2)(y₁² + y₂² − 1)` (Peternell (3.14) with its `a = −t`: the
 /// seed's map `e0 ↦ e0 + a·n` moves points by `−a`).
 pub fn isotropic_translation<F: Scalar>(y: &[F; 3], t: &[F; 3]) -> [F; 3] {
     let s = y[0].clone() * y[0].clone() + y[1].clone() * y[1].clone();

@@ -28,8 +28,8 @@
 //! `J ≡ 0` means the spherical image `(A/C, B/C)` is a curve: the planes envelope a
 //! developable surface and have no point representation of this kind.
 //!
-//! The offset at distance `d` is `y₃ ↦ y₃ − (d/2)(S + 1)` (seed (3.15) corrected, erratum
-//! E6) — for a graph `F ↦ F − (d/2)(u² + v² + 1)` ([`IsotropicSurface::offset`]).
+//! The offset at distance `d` is `y₃ ↦ y₃ − (d/2)(S + 1)` (Peternell (3.15) corrected,
+//! docs/math/laguerre-pn.md#conventions) — for a graph `F ↦ F − (d/2)(u² + v² + 1)` ([`IsotropicSurface::offset`]).
 
 use super::poly::{cancel_common, det3, int, normalize_content, var, RatFn};
 use super::surface::PnSurface;
@@ -147,9 +147,9 @@ impl<F: Scalar> IsotropicSurface<F> {
         g
     }
 
-    /// The parabolic Dupin cyclide `F = αu² + βv²` (seed §4.4; `α ≠ β`; for `α = β` it is an
+    /// The parabolic Dupin cyclide `F = αu² + βv²` (Peternell §4.4; `α ≠ β`; for `α = β` it is an
     /// isotropic sphere, i.e. a sphere). Its dual form is
-    /// `(2(αu² + βv²), 2u, 2v, S − 1)/(S + 1)` (erratum E11: the seed drops the factor 2).
+    /// `(2(αu² + βv²), 2u, 2v, S − 1)/(S + 1)` (the factor 2 is missing in print; docs/math/laguerre-pn.md).
     pub fn parabolic_dupin_cyclide(alpha: F, beta: F) -> Self {
         let (u, v) = (var::<F>(0), var::<F>(1));
         let f = &(&u * &u).scale(&alpha) + &(&v * &v).scale(&beta);
@@ -192,8 +192,8 @@ impl<F: Scalar> IsotropicSurface<F> {
         Some([e(&self.a)? * ci.clone(), e(&self.b)? * ci, e(&self.g)? * di])
     }
 
-    /// The offset in the isotropic model: `y₃ ↦ y₃ − (d/2)(S + 1)` (seed (3.15) corrected,
-    /// erratum E6), i.e. `G/D ↦ (2C²G − d·D·N₀)/(2C²D)`; for a graph
+    /// The offset in the isotropic model: `y₃ ↦ y₃ − (d/2)(S + 1)` (Peternell (3.15) corrected,
+    /// docs/math/laguerre-pn.md#conventions), i.e. `G/D ↦ (2C²G − d·D·N₀)/(2C²D)`; for a graph
     /// `F ↦ F − (d/2)(u² + v² + 1)`.
     pub fn offset(&self, dist: &F) -> Self {
         let n0 = &(&(&self.a * &self.a) + &(&self.b * &self.b)) + &(&self.c * &self.c);

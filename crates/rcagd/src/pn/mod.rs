@@ -7,7 +7,7 @@
 //! `N₁² + N₂² + N₃² ≡ N₀²`, the support function `h` of the oriented tangent plane
 //! `h + n·x = 0`, and a cofactor `K` with `W = N₀ K`. The offset at distance `d` is
 //! `x + d n = (X + d K N)/W` — the same denominator, so the same degree
-//! ([`PnSurface::offset`]); its support function is `h − d` (docs/math/laguerre-pn.md#conventions, erratum E6).
+//! ([`PnSurface::offset`]); its support function is `h − d` (docs/math/laguerre-pn.md#conventions).
 //!
 //! * [`isotropic`]: the isotropic model `I³` (Theorem 4.3): any rational surface
 //!   `y(u,v) = (A/C, B/C, G/D)` of `I³` gives a PN surface by the closed formula (A4.2,

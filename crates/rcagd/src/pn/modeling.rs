@@ -474,7 +474,7 @@ impl<F: Scalar> PnModel<F> {
     }
 
     /// Checks that every piece is a regular surface over its micro-triangle (the scheme
-    /// does not guarantee it, seed §4.4).
+    /// does not guarantee it, Peternell §4.4).
     ///
     /// # Errors
     /// [`PnError::Singular`] naming the piece and a parameter point where `x_u × x_v = 0`.

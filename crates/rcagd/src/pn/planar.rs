@@ -1,7 +1,7 @@
 //! The planar case: rational PH curves (PN curves of the plane) from the isotropic model of
 //! the Laguerre plane, their exact offsets, polynomial PH curves from a PH preimage, and
 //! surfaces of revolution with a PH profile (Peternell §3.4 for `n = 2`, §4.1–§4.3 in
-//! dimension 2; seed §4.5 Cor. 4.3 for the surfaces of revolution).
+//! dimension 2; Peternell §4.5 Cor. 4.3 for the surfaces of revolution).
 //!
 //! In the plane an oriented line is `e0 + n·x = 0`, `|n| = 1`; the isotropic model `I²`
 //! is `Λ(e) = (n₁, e0)/(1 − n₂)` with inverse `Λ⁻¹(y) = (2y₂, 2y₁, y₁² − 1)/(y₁² + 1)`

@@ -38,7 +38,7 @@ fn only_t<F: Scalar>(p: &MPoly<F>) -> bool {
     p.terms().all(|(e, _)| e.iter().skip(1).all(|&k| k == 0))
 }
 
-/// A rational one-parameter family of cycles `(m(t); r(t)) = (M(t); R(t))/w(t)` (seed §4.5:
+/// A rational one-parameter family of cycles `(m(t); r(t)) = (M(t); R(t))/w(t)` (Peternell §4.5:
 /// centre and radius rational in the same parameter `t`, the variable `x₀`).
 #[derive(Debug, Clone)]
 pub struct CycleFamily<F> {
@@ -562,7 +562,7 @@ impl<F: Scalar> RuledPn<F> {
     ///
     /// # Errors
     /// As [`ConeFamilyEnvelope::new`]; [`PnError::Developable`] for a developable ruled
-    /// surface (its offsets are pipe surfaces around the edge of regression, seed §4.5).
+    /// surface (its offsets are pipe surfaces around the edge of regression, Peternell §4.5).
     pub fn new(
         l: [RatFn<F>; 3],
         g: [RatFn<F>; 3],
@@ -871,7 +871,7 @@ pub enum NormalHint<F> {
 /// `(g, p_t, P, w)` polynomial vectors of a ruled manifold (see `RuledManifold::polys`).
 type RuledPolys<F> = (Vec<MPoly<F>>, Vec<MPoly<F>>, Vec<MPoly<F>>, MPoly<F>);
 
-/// A rational ruled 2-manifold `p(t, u) = l(t) + u g(t)` in `Rⁿ` (seed (5.13), `k = 1`).
+/// A rational ruled 2-manifold `p(t, u) = l(t) + u g(t)` in `Rⁿ` (Peternell (5.13), `k = 1`).
 #[derive(Debug, Clone)]
 pub struct RuledManifold<F> {
     l: Vec<RatFn<F>>,

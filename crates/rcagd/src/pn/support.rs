@@ -113,7 +113,7 @@ pub fn from_plane_field<F: Scalar>(
 }
 
 /// The anticaustic by reflection of a rational mirror surface for light rays parallel to
-/// `x₃` (seed §3.6, Theorem 4.1; (3.18) **corrected**, erratum E8):
+/// `x₃` (Peternell §3.6, Theorem 4.1; (3.18) **corrected**, docs/math/laguerre-pn.md):
 /// `q = (p₁, p₂, c) + 2(p₃ − c) m₃ m/|m|²`, `m` a normal of the mirror (here
 /// `m = (π₁, π₂, π₃)` of the tangent plane `π` through `P̂, P̂_u, P̂_v`). It is a PN surface
 /// whose unit normal is the reflected ray direction `r = e₃ − 2m₃m/|m|²`; varying `c`

@@ -22,7 +22,7 @@ use rcagd_geom::BezierPatch;
 /// parameters `(u, v)`.
 ///
 /// The offset at oriented distance `d` is `x_d = x + d n = (X + d K N)/W` with support
-/// function `h − d` ([`Self::offset`]; docs/math/laguerre-pn.md#conventions, erratum E6).
+/// function `h − d` ([`Self::offset`]; docs/math/laguerre-pn.md#conventions).
 #[derive(Debug, Clone)]
 pub struct PnSurface<F> {
     point: [MPoly<F>; 4],
@@ -280,7 +280,7 @@ impl<F: Scalar> PnSurface<F> {
     }
 
     /// The offset at oriented distance `d`: `x + d n = (X + d K N)/W`, support `h − d`
-    /// (docs/math/laguerre-pn.md#conventions; seed (4.2) with `h ↦ h − d`, erratum E6). The result has the same
+    /// (docs/math/laguerre-pn.md#conventions; Peternell (4.2) with `h ↦ h − d`). The result has the same
     /// weight `W`, normal and bidegree (up to the degree of `K N`).
     pub fn offset(&self, d: F) -> PnOffset<F> {
         PnOffset::new(self, d)
