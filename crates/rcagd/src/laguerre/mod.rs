@@ -17,7 +17,7 @@
 //! **Conventions (docs/math/laguerre-pn.md#conventions).** An oriented plane is `e = (e0, n)`, `|n| = 1`, with
 //! point set `e0 + n·x = 0`; a cycle `(m; r)` has signed radius `r`. Oriented contact is
 //! `e0 + n·m + r = 0` (3.3) with contact point `m + r n`. The offset `x ↦ x + d n` is
-//! `e0 ↦ e0 − d`, i.e. `r ↦ r + d`; the seed's `e0 ↦ e0 + d` ((3.15), (4.2), (5.4)) is
+//! `e0 ↦ e0 − d`, i.e. `r ↦ r + d`; Peternell's printed `e0 ↦ e0 + d` ((3.15), (4.2), (5.4)) is
 //! the offset by `−d` (docs/math/laguerre-pn.md#conventions).
 //!
 //! PN surfaces, which are the images of surfaces of the isotropic model, live in

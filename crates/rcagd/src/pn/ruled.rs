@@ -1,5 +1,5 @@
 //! Envelopes of rational families of cones of revolution (Peternell §4.5, Theorem 4.5,
-//! (4.5)–(4.19); docs/math/laguerre-pn.md) and what the seed derives from them: non-developable
+//! (4.5)–(4.19); docs/math/laguerre-pn.md) and what Peternell derives from them: non-developable
 //! rational ruled surfaces and their offsets (Cor. 4.2), canal surfaces with rational spine
 //! and radius (Cor. 4.3), the ellipsoid and its offsets (Theorem 4.6, §4.7; docs/math/laguerre-pn.md), surfaces of revolution with a PH profile; and the offsets of ruled 2-manifolds
 //! in `Rⁿ` (Theorem 5.2, [`RuledManifold`]).
@@ -854,7 +854,7 @@ impl<F: Scalar> Certified for EllipsoidPn<F> {
 // -------------------------------------------------------------------------------------
 
 /// How to obtain the rational unit normal of a ruled manifold (Theorem 5.2, Steps 1–2;
-/// the seed finds it with Prop. 5.1, a rational point on a conic family, which needs
+/// Peternell finds it with Prop. 5.1, a rational point on a conic family, which needs
 /// roots of polynomials in general — docs/math/laguerre-pn.md#conventions).
 #[derive(Debug, Clone)]
 pub enum NormalHint<F> {
@@ -1000,7 +1000,7 @@ impl<F: Scalar> RuledManifold<F> {
     /// # Errors
     /// [`PnError::NoRationalPoint`] if no rational unit normal is found or given (in
     /// particular for `n = 3` and a normal space constant along the rulings — developables
-    /// and cylinders, the seed's excluded cases — unless the normal has rational length);
+    /// and cylinders, Peternell's excluded cases — unless the normal has rational length);
     /// [`PnError::InvalidInput`] for an invalid hint; [`PnError::Developable`] if the
     /// manifold has no tangent planes.
     pub fn offset(&self, d: F, hint: NormalHint<F>) -> Result<RuledOffset<F>, PnError> {
