@@ -1090,20 +1090,7 @@ fn kernel_at(
         rows.extend(block);
     }
     if rows.is_empty() {
-        let id = (0..cols)
-            .map(|k| {
-                (0..cols)
-                    .map(|j| {
-                        if j == k {
-                            Rational::ONE
-                        } else {
-                            Rational::ZERO
-                        }
-                    })
-                    .collect()
-            })
-            .collect();
-        return Ok((id, bounds));
+        return Ok((identity(cols), bounds));
     }
     let basis = Matrix::from_rows(rows)
         .map_err(|e| ConicPointError::Internal(e.to_string()))?
@@ -1111,14 +1098,11 @@ fn kernel_at(
     Ok((basis, bounds))
 }
 
-/// A non-zero isotropic vector of the quadratic form with the symmetric Gram matrix `g`
-/// (`wᵀgw = 0`), or `None` if it has none over `Q`: a congruence diagonalization, then a
-/// zero diagonal entry, `−a₁/a₀` a square (binary), or Legendre (ternary).
-fn isotropic(mut g: Vec<Vec<Rational>>) -> Result<Option<Vec<Rational>>, ConicPointError> {
-    let k = g.len();
-    let mut b: Vec<Vec<Rational>> = (0..k)
+/// The rows of the `n × n` identity matrix.
+fn identity(n: usize) -> Vec<Vec<Rational>> {
+    (0..n)
         .map(|i| {
-            (0..k)
+            (0..n)
                 .map(|j| {
                     if i == j {
                         Rational::ONE
@@ -1128,7 +1112,15 @@ fn isotropic(mut g: Vec<Vec<Rational>>) -> Result<Option<Vec<Rational>>, ConicPo
                 })
                 .collect()
         })
-        .collect();
+        .collect()
+}
+
+/// A non-zero isotropic vector of the quadratic form with the symmetric Gram matrix `g`
+/// (`wᵀgw = 0`), or `None` if it has none over `Q`: a congruence diagonalization, then a
+/// zero diagonal entry, `−a₁/a₀` a square (binary), or Legendre (ternary).
+fn isotropic(mut g: Vec<Vec<Rational>>) -> Result<Option<Vec<Rational>>, ConicPointError> {
+    let k = g.len();
+    let mut b = identity(k);
     for p in 0..k {
         if let Some(j) = (p..k).find(|&j| g[j][j].is_zero()) {
             return Ok(Some(b[j].clone()));

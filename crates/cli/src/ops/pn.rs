@@ -839,16 +839,7 @@ distances = ["1/4"]
 };
 
 fn build_developable(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let c = three_polys(args, "curve")?;
-    let den = poly_from_list(&args.opt_numbers("denominator")?.unwrap_or_else(|| vec![Q::from(1)]))?;
-    let y = [0, 1, 2].map(|i| RatFn::new(c[i].num.clone(), den.clone()));
-    let [y1, y2, y3] = y;
-    let y = [
-        y1.map_err(blame("denominator"))?,
-        y2.map_err(blame("denominator"))?,
-        y3.map_err(blame("denominator"))?,
-    ];
-    let dev = DevelopablePn::from_isotropic_curve(&y).map_err(blame("curve"))?;
+    let dev = developable_arg(args)?;
     let certs = prefixed("developable: ", dev.ruling_certificates());
     if matches!(args.get("form"), Some(Value::Str(f)) if f == "foot") {
         let foot = dev.foot_point_surface().map_err(blame("curve"))?;
@@ -861,14 +852,8 @@ fn build_developable(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 fn developable_arg(args: &OpArgs) -> Result<DevelopablePn<Q>, OpError> {
     let c = three_polys(args, "curve")?;
     let den = poly_from_list(&args.opt_numbers("denominator")?.unwrap_or_else(|| vec![Q::from(1)]))?;
-    let y = [0, 1, 2].map(|i| RatFn::new(c[i].num.clone(), den.clone()));
-    let [y1, y2, y3] = y;
-    let y = [
-        y1.map_err(blame("denominator"))?,
-        y2.map_err(blame("denominator"))?,
-        y3.map_err(blame("denominator"))?,
-    ];
-    DevelopablePn::from_isotropic_curve(&y).map_err(blame("curve"))
+    let [y1, y2, y3] = c.map(|ci| RatFn::new(ci.num, den.clone()).map_err(blame("denominator")));
+    DevelopablePn::from_isotropic_curve(&[y1?, y2?, y3?]).map_err(blame("curve"))
 }
 
 const CURVE_PARAM: ParamSpec = ParamSpec::required(

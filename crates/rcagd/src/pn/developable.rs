@@ -189,11 +189,13 @@ impl<F: Scalar> DevelopablePn<F> {
         c: MPoly<F>,
         h: &RatFn<F>,
     ) -> Result<Self, PnError> {
-        let n0 = &(&(&a * &a) + &(&b * &b)) + &(&c * &c);
+        // the same isotropic image as a surface's support function: y = (A/C, B/C, G/D)
+        let iso = super::IsotropicSurface::from_support(a, b, c, h)?;
+        let [a, b, c, g, d] = iso.parts();
         let y = [
-            RatFn::new(a, c.clone())?,
-            RatFn::new(b, c.clone())?,
-            RatFn::new(&h.num * &n0, (&(&c * &c) * &h.den).scale(&F::from_i64(2)))?,
+            RatFn::new(a.clone(), c.clone())?,
+            RatFn::new(b.clone(), c.clone())?,
+            RatFn::new(g.clone(), d.clone())?,
         ];
         Self::from_isotropic_curve(&y)
     }

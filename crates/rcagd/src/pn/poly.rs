@@ -12,7 +12,7 @@ use super::PnError;
 use crate::error::format_scalar;
 use rcagd_algebra::bernstein;
 use rcagd_algebra::mpoly::MPoly;
-use rcagd_algebra::{Certificate, Scalar};
+use rcagd_algebra::{Certificate, Rational, Scalar};
 use rcagd_geom::certify;
 use rcagd_geom::BezierPatch;
 
@@ -645,6 +645,33 @@ impl<F: Scalar> PartialEq for RatFn<F> {
 }
 
 pub(crate) use rcagd_algebra::sqrt_in_field as scalar_sqrt;
+
+/// A polynomial in `t` only (variable 0 of the two-variable ring) as a polynomial over
+/// `Q` (for `f64`, the exact binary values of its coefficients); `None` if it involves the
+/// second variable or a coefficient is not finite.
+pub(crate) fn univariate_to_q<F: Scalar>(p: &MPoly<F>) -> Option<Poly<Rational>> {
+    if p.terms().any(|(e, _)| e.get(1).is_some_and(|&k| k > 0)) {
+        return None;
+    }
+    let n = p.degree_in(0).unwrap_or(0) as usize;
+    (0..=n)
+        .map(|i| p.coeff(&[i as u32, 0]).to_rational())
+        .collect::<Option<Vec<_>>>()
+        .map(Poly::new)
+}
+
+/// A polynomial over `Q` as a polynomial in `t` (variable 0 of the two-variable ring).
+pub(crate) fn univariate_from_q<F: Scalar>(p: &Poly<Rational>) -> MPoly<F> {
+    MPoly::from_terms(
+        2,
+        p.coeffs()
+            .iter()
+            .enumerate()
+            .map(|(i, c)| (vec![i as u32, 0], F::from_rational(c)))
+            .collect(),
+    )
+    .unwrap_or_else(|_| MPoly::zero(2))
+}
 
 /// The square root of a polynomial in the single variable `x₀` (`None` if it is not the
 /// square of a polynomial with coefficients in the scalar field, or involves `x₁`).

@@ -277,26 +277,25 @@ impl<F: Scalar> ReducingFrame<F> {
     }
 }
 
-/// The remainder of `p(t)` (a polynomial in `t` only) modulo the monic `d(t)`.
+/// The remainder of `p(t)` (a polynomial in `t` only) modulo `d(t)` (`Poly::div_rem`), as a
+/// polynomial of the two-variable ring.
 fn remainder_t<F: Scalar>(p: &MPoly<F>, d: &MPoly<F>) -> MPoly<F> {
-    let deg_d = d.degree_in(0).unwrap_or(0);
-    let lead = d.coeff(&[deg_d, 0]);
-    let mut r = p.clone();
-    while let Some(n) = r.degree_in(0).filter(|&n| n >= deg_d && !r.is_zero()) {
-        let c = r.coeff(&[n, 0]) / lead.clone();
-        let shift =
-            MPoly::from_terms(2, vec![(vec![n - deg_d, 0], c)]).unwrap_or_else(|_| MPoly::zero(2));
-        let next = &r - &(&shift * d);
-        if next.degree_in(0) == Some(n) && !next.is_zero() {
-            // f64: the leading term did not cancel exactly; drop it
-            let drop = MPoly::from_terms(2, vec![(vec![n, 0], next.coeff(&[n, 0]))])
-                .unwrap_or_else(|_| MPoly::zero(2));
-            r = &next - &drop;
-        } else {
-            r = next;
-        }
+    let univariate = |m: &MPoly<F>| {
+        let n = m.degree_in(0).unwrap_or(0);
+        Poly::new((0..=n).map(|i| m.coeff(&[i, 0])).collect())
+    };
+    match univariate(p).div_rem(&univariate(d)) {
+        Ok((_, r)) => MPoly::from_terms(
+            2,
+            r.coeffs()
+                .iter()
+                .enumerate()
+                .map(|(i, c)| (vec![i as u32, 0], c.clone()))
+                .collect(),
+        )
+        .unwrap_or_else(|_| p.clone()),
+        Err(_) => p.clone(),
     }
-    r
 }
 
 /// The envelope of Theorem 4.5 built in the best frame of §4.5.1 (Proposition 4.1), and

@@ -23,7 +23,7 @@
 use super::isotropic::IsotropicSurface;
 use super::poly::{
     cancel_common, cross3, dot3, identity_cert, int, mag, normalize_content, pad_eval,
-    univariate_sqrt, var, zero_cert, RatFn,
+    univariate_from_q, univariate_sqrt, univariate_to_q, var, zero_cert, RatFn,
 };
 use super::surface::PnSurface;
 use super::PnError;
@@ -171,39 +171,19 @@ pub fn find_two_squares<F: Scalar>(p: &MPoly<F>) -> Option<[RatFn<F>; 2]> {
 /// [`find_two_squares`] with the reason of a failure (for the error message).
 fn two_squares_or_reason<F: Scalar>(p: &MPoly<F>) -> Result<[RatFn<F>; 2], String> {
     use rcagd_algebra::sum_of_squares::{sum_of_two_squares, SumOfSquares};
-    use rcagd_algebra::{Poly, Rational};
     if let Some(s) = univariate_sqrt(p) {
         return Ok([RatFn::poly(s), RatFn::poly(MPoly::zero(2))]);
     }
     if !only_t(p) {
         return Err("it involves a second variable".into());
     }
-    let n = p.degree_in(0).unwrap_or(0) as usize;
-    let d: Poly<Rational> = Poly::new(
-        (0..=n)
-            .map(|i| {
-                p.coeff(&[i as u32, 0])
-                    .to_rational()
-                    .ok_or_else(|| "a coefficient is not finite".to_string())
-            })
-            .collect::<Result<Vec<_>, _>>()?,
-    );
-    let back = |g: &Poly<Rational>| -> Result<MPoly<F>, String> {
-        MPoly::from_terms(
-            2,
-            g.coeffs()
-                .iter()
-                .enumerate()
-                .map(|(i, c)| (vec![i as u32, 0], F::from_rational(c)))
-                .collect(),
-        )
-        .map_err(|e| e.to_string())
-    };
+    let d = univariate_to_q(p).ok_or_else(|| "a coefficient is not finite".to_string())?;
     let shown = format_poly(&d, "t");
     match sum_of_two_squares(&d) {
-        Ok(SumOfSquares::Rational { g1, g2 }) => {
-            Ok([RatFn::poly(back(&g1)?), RatFn::poly(back(&g2)?)])
-        }
+        Ok(SumOfSquares::Rational { g1, g2 }) => Ok([
+            RatFn::poly(univariate_from_q(&g1)),
+            RatFn::poly(univariate_from_q(&g2)),
+        ]),
         Ok(SumOfSquares::Extension { radicand, .. }) => Err(format!(
             "its numerator {shown} is a sum of two squares only over Q(√{})",
             format_scalar(&radicand)

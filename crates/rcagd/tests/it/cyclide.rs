@@ -317,6 +317,23 @@ fn boost() -> impl Strategy<Value = Q> {
     (-3i64..=3, 4i64..=6).prop_map(|(p, d)| q(p, d))
 }
 
+/// `(U, V, ρ, cyclide)` of [`random_cyclide`].
+type RandomCyclide = ([Q; 4], [Q; 4], Q, DupinCyclide<Q>);
+
+/// The pe circle `c + ρ(cos θ U + sin θ V)` with `(U, V)` the image of `(e₁, e₂)` under a
+/// rational Lorentz transformation, and its cyclide; `None` for a degenerate cyclide.
+fn random_cyclide(b: [Q; 3], rot: Q, c: &[Q; 4], rho: (i64, i64)) -> Option<RandomCyclide> {
+    let l = lorentz(b, rot);
+    let u = l(&[qi(1), qi(0), qi(0), qi(0)]);
+    let v = l(&[qi(0), qi(1), qi(0), qi(0)]);
+    let rho = q(rho.0, rho.1);
+    match DupinCyclide::from_pe_circle(c.clone(), u.clone(), v.clone(), rho.clone()) {
+        Ok(cy) => Some((u, v, rho, cy)),
+        Err(CyclideError::Degenerate(_)) => None,
+        Err(e) => panic!("{e}"),
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(16))]
 
@@ -330,14 +347,8 @@ proptest! {
         rho in (1i64..=5, 1i64..=3),
         d in small(),
     ) {
-        let l = lorentz(b, rot);
-        let u = l(&[qi(1), qi(0), qi(0), qi(0)]);
-        let v = l(&[qi(0), qi(1), qi(0), qi(0)]);
-        let rho = q(rho.0, rho.1);
-        let cy = match DupinCyclide::from_pe_circle(c.clone(), u.clone(), v.clone(), rho.clone()) {
-            Ok(cy) => cy,
-            Err(CyclideError::Degenerate(_)) => return Ok(()),
-            Err(e) => panic!("{e}"),
+        let Some((u, v, rho, cy)) = random_cyclide(b, rot, &c, rho) else {
+            return Ok(());
         };
         for cert in cy.certify() {
             prop_assert!(cert.holds, "{}", cert);
@@ -379,14 +390,8 @@ proptest! {
     ) {
         use rcagd::cyclide::blend_cones;
         prop_assume!(a1 != a2);
-        let l = lorentz(b, rot);
-        let u = l(&[qi(1), qi(0), qi(0), qi(0)]);
-        let v = l(&[qi(0), qi(1), qi(0), qi(0)]);
-        let rho = q(rho.0, rho.1);
-        let cy = match DupinCyclide::from_pe_circle(c.clone(), u.clone(), v.clone(), rho.clone()) {
-            Ok(cy) => cy,
-            Err(CyclideError::Degenerate(_)) => return Ok(()),
-            Err(e) => panic!("{e}"),
+        let Some((u, v, rho, cy)) = random_cyclide(b, rot, &c, rho) else {
+            return Ok(());
         };
         // the point of angle θ with cos θ = (1 − a²)/(1 + a²), sin θ = 2a/(1 + a²), and the
         // tangent there (a pe unit vector: ⟨d, d⟩ = 1 > 0, a real cone of revolution)
