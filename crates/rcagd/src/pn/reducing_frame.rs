@@ -361,10 +361,12 @@ impl<F: Scalar> ReducedConeEnvelope<F> {
             )
         };
         for frame in reducing_frames(&m, &r) {
-            let (a, b) = (
+            let (Some(a), Some(b)) = (
                 rotate_family(&c1, &frame.matrix),
                 rotate_family(&c2, &frame.matrix),
-            );
+            ) else {
+                continue;
+            };
             let Ok(first) = ConeFamilyEnvelope::new(a.clone(), b.clone(), None) else {
                 continue;
             };
@@ -428,12 +430,13 @@ fn difference<F: Scalar>(c1: &CycleFamily<F>, c2: &CycleFamily<F>) -> ([MPoly<F>
     )
 }
 
-/// The cycle family in the coordinates `x′ = H x`.
-fn rotate_family<F: Scalar>(c: &CycleFamily<F>, h: &[[F; 3]; 3]) -> CycleFamily<F> {
+/// The cycle family in the coordinates `x′ = H x` (`None` if it cannot be formed: the frame
+/// is then skipped, never used with the unrotated family).
+fn rotate_family<F: Scalar>(c: &CycleFamily<F>, h: &[[F; 3]; 3]) -> Option<CycleFamily<F>> {
     let (m, r, w) = c.parts();
     let centre: [MPoly<F>; 3] =
         std::array::from_fn(|i| (0..3).fold(MPoly::zero(2), |acc, j| &acc + &m[j].scale(&h[i][j])));
-    CycleFamily::new(centre.clone(), r.clone(), w.clone()).unwrap_or_else(|_| c.clone())
+    CycleFamily::new(centre, r.clone(), w.clone()).ok()
 }
 
 impl<F: Scalar> ReducedConeEnvelope<F> {
