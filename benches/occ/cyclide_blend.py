@@ -110,7 +110,10 @@ def distance_to_envelope(points, spheres, lo, hi):
                     a, x1, f1 = x1, x2, f2
                     x2 = a + g * (b - a)
                     f2 = f(x2)
-            worst = max(worst, abs(min(f1, f2, f(lo), f(hi)) if kk in (0, len(theta) - 1) else abs(min(f1, f2))))
+            best = min(f1, f2)
+            if kk in (0, len(theta) - 1):  # the minimum may sit at an end of [lo, hi]
+                best = min(best, f(lo), f(hi))
+            worst = max(worst, abs(best))
     return worst
 
 
