@@ -15,12 +15,13 @@ use num_traits::{One, Zero};
 use rcagd::canal::bipoly::{patch_of, BiPoly};
 use rcagd::canal::blend::PlaneEnd;
 use rcagd::canal::{
-    blend_sphere_plane, blend_spheres, canal_surface_rational, pipe_along_chain,
-    pipe_around_ph_exportable, pipe_exportable, BlendEnd, BlendSpine, CanalBuild, CanalError, CanalOptions, CanalSpine,
+    pipe_along_spine, ApproximationPolicy,
+    blend_sphere_plane, blend_spheres, canal_surface_rational,
+    pipe_around_ph_exportable, BlendEnd, BlendSpine, CanalBuild, CanalError, CanalOptions, CanalSpine,
     CanalSurface, Method, Orientation, RationalCanal,
 };
 use rcagd::lines::{common_transversals, CommonTransversals, Line, Regulus};
-use rcagd::ph::PhCurve;
+use rcagd::ph::{PhCurve, PhError};
 use rcagd::Certified;
 use rcagd_algebra::quaternion::Quaternion;
 use rcagd_algebra::rational::format_rational;
@@ -710,6 +711,8 @@ const PIPE: OpSpec = OpSpec {
         ParamSpec::optional("spine_file", ParamKind::String, "a STEP (.step, .stp), IGES (.igs, .iges) or rcagd JSON (.json) file whose curves form the spine (a relative path is taken relative to the recipe's directory; instead of points)"),
         ParamSpec::required("radius", ParamKind::Number, "pipe radius, ≠ 0, below the spine's least radius of curvature"),
         ORIENTATION,
+        ParamSpec::with_default("approximate", ParamKind::String, "auto", "auto: exact around the spine where |m'|² is a sum of two rational squares, else exact around a G¹ spline of PH quintics within a certified distance (tolerance) of the spine; never: exact around the spine or an error; always: around the PH spline"),
+        ParamSpec::optional("tolerance", ParamKind::Number, "the largest distance allowed between the PH spline and the spine (default 10⁻⁶ of the diagonal of the spine's control-point box); certified"),
     ],
     example: r#"[[object]]
 name = "pipe_quarter_circle"
@@ -721,10 +724,27 @@ radius = "1/5"
     build: build_pipe,
 };
 
+fn approximation_policy(args: &OpArgs) -> Result<ApproximationPolicy, OpError> {
+    match args.string("approximate")? {
+        "auto" => Ok(ApproximationPolicy::Auto),
+        "never" => Ok(ApproximationPolicy::Never),
+        "always" => Ok(ApproximationPolicy::Always),
+        other => Err(OpError::param(
+            "approximate",
+            format!("'{other}' is not one of auto, never, always"),
+        )),
+    }
+}
+
 fn build_pipe(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let radius = args.number("radius")?;
     let orient = orientation(args)?;
-    if let Some(file) = args.path("spine_file") {
+    let policy = approximation_policy(args)?;
+    let tolerance = match args.get("tolerance") {
+        Some(_) => Some(args.number("tolerance")?),
+        None => None,
+    };
+    let (spines, spine_param) = if let Some(file) = args.path("spine_file") {
         if args.get("points").is_some() {
             return Err(OpError::param(
                 "spine_file",
@@ -733,18 +753,21 @@ fn build_pipe(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         }
         let spines = rcagd_io::spine::read_spine(&file)
             .map_err(|e| OpError::param("spine_file", e.to_string()))?;
-        let chain = pipe_along_chain(&spines, &radius, orient)
-            .map_err(|e| pipe_err(e, "spine_file"))?;
-        return Ok(vec![args.object(Geometry::Patches(chain.patches()), chain.certify())]);
-    }
-    if args.get("points").is_none() {
-        return Err(OpError::new("give the spine as points or as spine_file"));
-    }
-    let spine = spine_curve(args)?;
-    let (zero, one) = (Rational::zero(), Rational::one());
-    let s = pipe_exportable(&spine, &radius, (&zero, &one), orient)
-        .map_err(|e| pipe_err(e, "points"))?;
-    Ok(vec![args.object(Geometry::Patches(s.patches()), s.certify())])
+        (spines, "spine_file")
+    } else {
+        if args.get("points").is_none() {
+            return Err(OpError::new("give the spine as points or as spine_file"));
+        }
+        (vec![spine_curve(args)?], "points")
+    };
+    let pipe = pipe_along_spine(&spines, &radius, orient, policy, tolerance.as_ref())
+        .map_err(|e| match e {
+            CanalError::SpineApproximation(PhError::ToleranceNotMet(_)) | CanalError::SpineApproximation(PhError::OutOfRange(_)) if tolerance.is_some() => {
+                OpError::param("tolerance", e.to_string())
+            }
+            e => pipe_err(e, spine_param),
+        })?;
+    Ok(vec![args.object(Geometry::Patches(pipe.patches()), pipe.certify())])
 }
 
 const BLEND_PARAMS_SPHERE0: [ParamSpec; 4] = [

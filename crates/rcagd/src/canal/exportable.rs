@@ -663,6 +663,21 @@ pub fn pipe_around_ph_exportable(
     domain: (&Rational, &Rational),
     orientation: Orientation,
 ) -> Result<ExportableCanal, CanalError> {
+    pipe_around_ph_with(curve, radius, domain, orientation, Method::Lowest)
+}
+
+/// [`pipe_around_ph_exportable`] with the candidate constructions restricted to `method`
+/// ([`Method::Lowest`]: all of them).
+///
+/// # Errors
+/// As [`pipe_around_ph_exportable`].
+pub fn pipe_around_ph_with(
+    curve: &PhCurve<Rational>,
+    radius: &Rational,
+    domain: (&Rational, &Rational),
+    orientation: Orientation,
+    method: Method,
+) -> Result<ExportableCanal, CanalError> {
     check_radius(radius)?;
     let position = curve.position();
     let s = CanalSpine::polynomial(position.clone(), Poly::constant(radius.clone()));
@@ -690,6 +705,7 @@ pub fn pipe_around_ph_exportable(
     let options = CanalOptions {
         orientation,
         domain: Some((domain.0.clone(), domain.1.clone())),
+        method,
         ..CanalOptions::default()
     };
     let mut out = canal_surface_exportable(&s, split.as_ref(), &options)?;

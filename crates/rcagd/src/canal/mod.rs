@@ -49,6 +49,7 @@
 //! over `Q(√d)` use Peternell–Pottmann only. docs/math/lines-and-canal.md, Errata G9: for polynomial data the bound
 //! can be *above* what the constructions reach.
 
+pub mod approximate_pipe;
 pub mod bipoly;
 pub mod blend;
 pub mod cyclographic_param;
@@ -62,6 +63,7 @@ pub mod pipe;
 pub mod regularity;
 pub mod sum_of_squares;
 
+pub use approximate_pipe::{pipe_along_spine, ApproximatePipe, ApproximationPolicy, SpinePipe};
 pub use bipoly::BiPoly;
 pub use blend::{
     blend_sphere_plane, blend_sphere_plane_f64, blend_spheres, blend_spheres_f64, BlendEnd,
@@ -75,7 +77,8 @@ pub use envelope::{
 };
 pub use exportable::{
     canal_surface_exportable, degree_certificate, pipe_along_chain, pipe_around_ph_exportable,
-    pipe_exportable, positive_weight_certificate, ExportPiece, ExportableCanal, Frame, PipeChain,
+    pipe_around_ph_with, pipe_exportable, positive_weight_certificate, ExportPiece,
+    ExportableCanal, Frame, PipeChain,
 };
 pub use frame::{
     canal_surface_pole_free, pipe_around_ph_pole_free, pole_free_direction, EXPORT_SPLITS,
@@ -198,6 +201,10 @@ pub enum CanalError {
         /// The parameter (exact, or a rounded root).
         at: String,
     },
+    /// The PH spline approximation of a spine failed (a tolerance that cannot be met, a
+    /// zero tangent, a weight ≤ 0).
+    #[error("approximating the spine by PH quintics: {0}")]
+    SpineApproximation(#[from] crate::ph::PhError),
     /// A failure of the geometry layer.
     #[error(transparent)]
     Geom(#[from] GeomError),

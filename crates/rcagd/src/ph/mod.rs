@@ -35,6 +35,7 @@
 //! property as a polynomial identity (exactly for exact scalars).
 
 pub mod analysis;
+pub mod approximation;
 pub mod dph;
 pub mod dph_criteria;
 pub mod dph_forms;
@@ -117,6 +118,9 @@ pub enum PhError {
     /// The system has no real solution.
     #[error("no real solution: {0}")]
     NoRealSolution(String),
+    /// An approximation cannot reach the tolerance asked for.
+    #[error("tolerance not met: {0}")]
+    ToleranceNotMet(String),
     /// An algebraic failure underneath.
     #[error(transparent)]
     Algebra(#[from] AlgebraError),
