@@ -603,6 +603,44 @@ struct Carry {
     point: [Rational; 3],
     /// `A₂` of the previous piece (`None` at the start).
     quaternion: Option<Quaternion<Rational>>,
+    /// `true` if the spine is `G¹` where the next piece starts (inside a spine curve, or at
+    /// a joint of two curves with the same tangent direction).
+    smooth: bool,
+}
+
+/// The affine point of a homogeneous control point (`None` for weight 0).
+fn affine(h: &[Rational]) -> Option<[Rational; 3]> {
+    let w = h.first()?;
+    if w.is_zero() {
+        return None;
+    }
+    Some(core::array::from_fn(|k| {
+        h.get(k + 1).cloned().unwrap_or(Rational::ZERO) / w.clone()
+    }))
+}
+
+/// `true` if `a` ends with the tangent direction `b` starts with (exact: the end tangent of a
+/// Bézier curve with positive weights is a positive multiple of `p_n − p_{n−1}`).
+fn same_tangent_direction(a: &BezierCurve<Rational>, b: &BezierCurve<Rational>) -> bool {
+    let n = a.degree();
+    let ends = (
+        affine(a.control_point(n)),
+        affine(a.control_point(n.saturating_sub(1))),
+        affine(b.control_point(0)),
+        affine(b.control_point(1.min(b.degree()))),
+    );
+    let (Some(pe), Some(pe1), Some(ps), Some(ps1)) = ends else {
+        return false;
+    };
+    let te: [Rational; 3] = core::array::from_fn(|i| &pe[i] - &pe1[i]);
+    let ts: [Rational; 3] = core::array::from_fn(|i| &ps1[i] - &ps[i]);
+    let cross = [
+        &te[1] * &ts[2] - &te[2] * &ts[1],
+        &te[2] * &ts[0] - &te[0] * &ts[2],
+        &te[0] * &ts[1] - &te[1] * &ts[0],
+    ];
+    let dot = (0..3).fold(Rational::ZERO, |acc, i| acc + &te[i] * &ts[i]);
+    cross.iter().all(Rational::is_zero) && dot > Rational::ZERO && pe == ps
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -637,17 +675,16 @@ fn fit_piece(
     let grid = ((512.0 * amax / tol).log2().ceil().max(8.0)) as u32;
     let grid = grid.min(200);
     // A₀: λA₂ of the previous piece where the spine turns smoothly, else new
-    let continued = carry.quaternion.as_ref().and_then(|prev| {
-        let pf = q_f64(prev);
-        let dprev = aib(&pf, &pf);
-        let dv = [dprev.x, dprev.y, dprev.z];
-        let cos = (dv[0] * d0_target[0] + dv[1] * d0_target[1] + dv[2] * d0_target[2])
-            / (norm3(&dv) * n0);
-        (cos > 1.0 - 1e-12).then(|| {
-            let lambda = small_rational((n0 / norm3(&dv)).sqrt());
+    let continued = carry
+        .quaternion
+        .as_ref()
+        .filter(|_| carry.smooth)
+        .map(|prev| {
+            let pf = q_f64(prev);
+            let dprev = aib(&pf, &pf);
+            let lambda = small_rational((n0 / norm3(&[dprev.x, dprev.y, dprev.z])).sqrt());
             prev.scale(&lambda)
-        })
-    });
+        });
     let fixed_a0 = continued.clone();
     let mut best: Option<(f64, [Quaternion<f64>; 3])> = None;
     let starts: Vec<Quaternion<f64>> = match &fixed_a0 {
@@ -766,10 +803,14 @@ pub fn approximate_by_ph_quintics(
     let mut carry = Carry {
         point: core::array::from_fn(|k| start.get(k).cloned().unwrap_or(Rational::ZERO)),
         quaternion: None,
+        smooth: false,
     };
     let mut pieces: Vec<ApproximationPiece> = Vec::new();
     let min_step = Rational::try_from(2f64.powi(-(MIN_STEP_LOG2 as i32))).unwrap_or(Rational::ZERO);
     for (index, c) in spine.iter().enumerate() {
+        if let Some(prev) = index.checked_sub(1).and_then(|i| spine.get(i)) {
+            carry.smooth = same_tangent_direction(prev, c);
+        }
         let cf = c.to_f64();
         let mut t0 = Rational::ZERO;
         let mut step = Rational::from_ratio(1, 4);
@@ -796,6 +837,7 @@ pub fn approximate_by_ph_quintics(
             carry = Carry {
                 point: fit.end_point,
                 quaternion: Some(fit.end_quaternion),
+                smooth: true,
             };
             pieces.push(fit.piece);
             if pieces.len() > options.max_pieces {

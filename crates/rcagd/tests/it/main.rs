@@ -12,6 +12,7 @@ mod laguerre_query;
 mod line_generation;
 mod lines_props;
 mod ndim;
+mod ph_approximation;
 mod ph_planar;
 mod ph_preimage;
 mod ph_props;
