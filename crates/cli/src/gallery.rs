@@ -109,6 +109,35 @@ pub struct GalleryBuild {
     pub errors: Vec<String>,
 }
 
+/// Input files the embedded recipes read (a spine read from a STEP file), compiled in as
+/// well, so that the gallery builds anywhere: a file parameter whose file does not exist is
+/// looked up here by its path relative to the repository root
+/// ([`embedded_input`]).
+pub const INPUTS: &[(&str, &str)] = &[(
+    "examples/spines/bspline_spine.step",
+    include_str!("../../../examples/spines/bspline_spine.step"),
+)];
+
+/// The embedded input file at `path` (`examples/recipes/../spines/x.step` and
+/// `examples/spines/x.step` are the same file), if the gallery has one.
+pub fn embedded_input(path: &Path) -> Option<&'static str> {
+    let mut parts: Vec<&str> = Vec::new();
+    for c in path.components() {
+        match c {
+            std::path::Component::Normal(s) => parts.push(s.to_str()?),
+            std::path::Component::ParentDir => {
+                parts.pop()?;
+            }
+            _ => {}
+        }
+    }
+    let norm = parts.join("/");
+    INPUTS
+        .iter()
+        .find(|(name, _)| norm == *name || norm.ends_with(&format!("/{name}")))
+        .map(|(_, text)| *text)
+}
+
 /// The short name of a gallery recipe: the file stem (`examples/recipes/pn.toml` → `pn`),
 /// as `rcagd gallery --only` takes it.
 pub fn recipe_name(file: &str) -> &str {

@@ -371,4 +371,36 @@ mod tests {
             Err(IoError::NoSpineCurves(_))
         ));
     }
+
+    /// A STEP file written by OpenCascade: its spine is a TRIMMED_CURVE of a cubic
+    /// B_SPLINE_CURVE_WITH_KNOTS (three spans); trimmed to the whole curve, and to a part of
+    /// it by PARAMETER_VALUEs.
+    #[test]
+    fn trimmed_bspline_of_opencascade() {
+        let text = include_str!("../../../examples/spines/bspline_spine.step");
+        let whole = spine_from_text(text, SpineFormat::Step, None).expect("whole");
+        assert_eq!(whole.len(), 3);
+        let first = whole[0].eval(&Rational::ZERO).expect("start");
+        assert_eq!(first, vec![Rational::ZERO, Rational::ZERO, Rational::ZERO]);
+        let part = text
+            .replace("PARAMETER_VALUE(0.)", "PARAMETER_VALUE(0.5)")
+            .replace("PARAMETER_VALUE(3.)", "PARAMETER_VALUE(2.5)");
+        let cut = spine_from_text(&part, SpineFormat::Step, None).expect("part");
+        assert_eq!(cut.len(), 3);
+        let half = Rational::from_parts(1.into(), 2u8.into());
+        let start = cut[0].eval(&Rational::ZERO).expect("start");
+        let end = cut[2].eval(&Rational::ONE).expect("end");
+        let (s_at, e_at) = (
+            whole[0].eval(&half).expect("s"),
+            whole[2].eval(&half).expect("e"),
+        );
+        // the chain may run either way
+        assert!(
+            (start == s_at && end == e_at) || (start == e_at && end == s_at),
+            "{start:?} {end:?}"
+        );
+        let bad = text.replace("PARAMETER_VALUE(3.)", "PARAMETER_VALUE(4.)");
+        let e = spine_from_text(&bad, SpineFormat::Step, None).expect_err("outside");
+        assert!(e.to_string().contains("outside the basis curve"), "{e}");
+    }
 }

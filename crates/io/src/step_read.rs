@@ -846,6 +846,123 @@ fn bspline_params<'i>(
     Ok((ps, w))
 }
 
+/// A `TRIMMED_CURVE` of a B-spline curve (trimmed by `PARAMETER_VALUE`s, or by the end
+/// points of the basis curve), or a B-spline curve entity.
+///
+/// ISO 10303-42: `TRIMMED_CURVE(name, basis_curve, trim_1, trim_2, sense_agreement,
+/// master_representation)`, each trim a set of `CARTESIAN_POINT` and/or `PARAMETER_VALUE`.
+/// The part of the basis curve between the two parameters is kept (the direction does not
+/// matter to the spine reader, which orients the chain itself).
+fn read_curve_or_trimmed(m: &Model, id: u64) -> Result<NurbsCurve<Rational>, IoError> {
+    let inst = m.get(id, (0, id))?;
+    let r = &inst.records[0];
+    if r.name != "TRIMMED_CURVE" {
+        return read_curve(m, id);
+    }
+    let basis = as_ref(get_param(r, 1, inst, id)?, inst, id, "basis curve")?;
+    let bi = m.get(basis, (inst.line, id))?;
+    if !bi
+        .records
+        .iter()
+        .any(|x| x.name.starts_with("B_SPLINE_CURVE"))
+    {
+        return Err(param_err(
+            bi,
+            basis,
+            format!(
+                "unsupported basis curve {} of TRIMMED_CURVE #{id}: rcagd reads B_SPLINE_CURVE_WITH_KNOTS",
+                bi.records[0].name
+            ),
+        ));
+    }
+    let curve = read_curve(m, basis)?;
+    let (d0, d1) = curve.domain();
+    let mut ends = Vec::with_capacity(2);
+    for (k, end) in [(2, &d0), (3, &d1)] {
+        let trims = as_list(get_param(r, k, inst, id)?, inst, id, "trim")?;
+        let value = trims.iter().find_map(|t| match t {
+            Param::Typed(name, v) if name == "PARAMETER_VALUE" && v.len() == 1 => Some(&v[0]),
+            _ => None,
+        });
+        ends.push(match value {
+            Some(v) => as_number(v, inst, id, "trim parameter")?,
+            // trimmed by points only: accepted where the point is the basis curve's own end
+            None => {
+                let at = curve.eval(end).map_err(|e| param_err(inst, id, e))?;
+                let point = trims
+                    .iter()
+                    .find_map(|t| match t {
+                        Param::Ref(p) => Some(*p),
+                        _ => None,
+                    })
+                    .ok_or_else(|| param_err(inst, id, "a trim without parameter or point"))?;
+                let pi = m.get(point, (inst.line, id))?;
+                let coords = as_list(get_param(&pi.records[0], 1, pi, point)?, pi, point, "coordinates")?
+                    .iter()
+                    .map(|x| as_number(x, pi, point, "coordinate"))
+                    .collect::<Result<Vec<_>, _>>()?;
+                let close = coords.len() == at.len()
+                    && coords.iter().zip(&at).all(|(a, b)| {
+                        let d = (a.clone() - b.clone()).to_f64().value().abs();
+                        d <= 1e-9 * (1.0 + b.to_f64().value().abs())
+                    });
+                if !close {
+                    return Err(param_err(
+                        inst,
+                        id,
+                        "TRIMMED_CURVE trimmed by a point inside the basis curve: rcagd reads trims given as PARAMETER_VALUE",
+                    ));
+                }
+                end.clone()
+            }
+        });
+    }
+    let (a, b) = match (ends.first(), ends.get(1)) {
+        (Some(x), Some(y)) if x <= y => (x.clone(), y.clone()),
+        (Some(x), Some(y)) => (y.clone(), x.clone()),
+        _ => return Err(param_err(inst, id, "internal: trim ends")),
+    };
+    if a < d0 || b > d1 || a == b {
+        return Err(param_err(
+            inst,
+            id,
+            format!(
+                "trim parameters [{a}, {b}] outside the basis curve's domain [{d0}, {d1}] (a periodic basis curve is not read)"
+            ),
+        ));
+    }
+    if a == d0 && b == d1 {
+        return Ok(curve);
+    }
+    let pieces = curve
+        .to_bezier_pieces()
+        .map_err(|e| param_err(inst, id, e))?;
+    let mut kept = Vec::new();
+    let mut breaks = vec![a.clone()];
+    for p in pieces {
+        let (s, t) = p.interval.clone();
+        if t <= a || s >= b {
+            continue;
+        }
+        let lo = if s < a { a.clone() } else { s.clone() };
+        let hi = if t > b { b.clone() } else { t.clone() };
+        let w = t.clone() - s.clone();
+        let piece = if lo == s && hi == t {
+            p.curve
+        } else {
+            p.curve
+                .restrict(
+                    &((lo.clone() - s.clone()) / w.clone()),
+                    &((hi.clone() - s) / w),
+                )
+                .map_err(|e| param_err(inst, id, e))?
+        };
+        kept.push(piece);
+        breaks.push(hi);
+    }
+    NurbsCurve::from_bezier_pieces_at(&kept, &breaks).map_err(|e| param_err(inst, id, e))
+}
+
 /// A B-spline curve entity (simple or complex).
 fn read_curve(m: &Model, id: u64) -> Result<NurbsCurve<Rational>, IoError> {
     let inst = m.get(id, (0, id))?;
@@ -1031,7 +1148,7 @@ impl Collector<'_, '_> {
                     if ci
                         .records
                         .iter()
-                        .any(|r| r.name.starts_with("B_SPLINE_CURVE"))
+                        .any(|r| r.name.starts_with("B_SPLINE_CURVE") || r.name == "TRIMMED_CURVE")
                     {
                         if !self.curves.contains(&c) {
                             self.curves.push(c);
@@ -1041,7 +1158,7 @@ impl Collector<'_, '_> {
                             ci,
                             c,
                             format!(
-                                "unsupported curve {}: rcagd reads B_SPLINE_CURVE_WITH_KNOTS",
+                                "unsupported curve {}: rcagd reads B_SPLINE_CURVE_WITH_KNOTS (also trimmed)",
                                 ci.records[0].name
                             ),
                         ));
@@ -1199,7 +1316,7 @@ pub fn read_step(text: &str) -> Result<Vec<ImportedObject>, IoError> {
         let curves = c
             .curves
             .iter()
-            .map(|&s| read_curve(&m, s))
+            .map(|&s| read_curve_or_trimmed(&m, s))
             .collect::<Result<Vec<_>, _>>()?;
         out.push(ImportedObject {
             name,

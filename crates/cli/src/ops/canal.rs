@@ -695,9 +695,10 @@ fn pipe_err(e: CanalError, spine_param: &'static str) -> OpError {
         | CanalError::TubePartsNotApart { .. } => {
             OpError::param("radius", e.to_string())
         }
-        CanalError::IrrationalSplit { .. } | CanalError::ZeroTangent { .. } => {
-            OpError::param(spine_param, e.to_string())
-        }
+        CanalError::IrrationalSplit { .. }
+        | CanalError::NeedsLargerExtension(_)
+        | CanalError::ZeroTangent { .. }
+        | CanalError::SpineApproximation(_) => OpError::param(spine_param, e.to_string()),
         other => canal_err(other, spine_param, "radius"),
     }
 }
@@ -711,7 +712,7 @@ const PIPE: OpSpec = OpSpec {
         ParamSpec::optional("spine_file", ParamKind::String, "a STEP (.step, .stp), IGES (.igs, .iges) or rcagd JSON (.json) file whose curves form the spine (a relative path is taken relative to the recipe's directory; instead of points)"),
         ParamSpec::required("radius", ParamKind::Number, "pipe radius, ≠ 0, below the spine's least radius of curvature"),
         ORIENTATION,
-        ParamSpec::with_default("approximate", ParamKind::String, "auto", "auto: exact around the spine where |m'|² is a sum of two rational squares, else exact around a G¹ spline of PH quintics within a certified distance (tolerance) of the spine; never: exact around the spine or an error; always: around the PH spline"),
+        ParamSpec::with_default("approximate", ParamKind::Choice(&["auto", "never", "always"]), "\"auto\"", "auto: exact around the spine where |m'|² is a sum of two rational squares, else exact around a G¹ spline of PH quintics within a certified distance (tolerance) of the spine; never: exact around the spine or an error; always: around the PH spline"),
         ParamSpec::optional("tolerance", ParamKind::Number, "the largest distance allowed between the PH spline and the spine (default 10⁻⁶ of the diagonal of the spine's control-point box); certified"),
     ],
     example: r#"[[object]]
@@ -728,11 +729,7 @@ fn approximation_policy(args: &OpArgs) -> Result<ApproximationPolicy, OpError> {
     match args.string("approximate")? {
         "auto" => Ok(ApproximationPolicy::Auto),
         "never" => Ok(ApproximationPolicy::Never),
-        "always" => Ok(ApproximationPolicy::Always),
-        other => Err(OpError::param(
-            "approximate",
-            format!("'{other}' is not one of auto, never, always"),
-        )),
+        _ => Ok(ApproximationPolicy::Always),
     }
 }
 
@@ -751,8 +748,17 @@ fn build_pipe(args: &OpArgs) -> Result<Vec<Object>, OpError> {
                 "give either points or spine_file, not both",
             ));
         }
-        let spines = rcagd_io::spine::read_spine(&file)
-            .map_err(|e| OpError::param("spine_file", e.to_string()))?;
+        let spines = match crate::gallery::embedded_input(&file).filter(|_| !file.exists()) {
+            // the gallery's own input, compiled in (the gallery builds anywhere)
+            Some(text) => rcagd_io::spine::SpineFormat::of_path(&file)
+                .ok_or_else(|| OpError::param("spine_file", "unknown spine file extension"))
+                .and_then(|format| {
+                    rcagd_io::spine::spine_from_text(text, format, None)
+                        .map_err(|e| OpError::param("spine_file", e.to_string()))
+                })?,
+            None => rcagd_io::spine::read_spine(&file)
+                .map_err(|e| OpError::param("spine_file", e.to_string()))?,
+        };
         (spines, "spine_file")
     } else {
         if args.get("points").is_none() {

@@ -399,3 +399,44 @@ fn pipe_around_a_spine_file() {
             .arg(&recipe),
     );
 }
+
+/// Issue 17, item 3: the cubic B-spline spine written by OpenCascade (a TRIMMED_CURVE of a
+/// B_SPLINE_CURVE_WITH_KNOTS with three spans) has no rational pipe; the `pipe` op builds the
+/// exact pipe around a certified PH spline within the tolerance, and says so in its
+/// certificates. `approximate = "never"` names the field instead; a bad tolerance is blamed
+/// on `tolerance`.
+#[test]
+fn pipe_around_an_imported_bspline() {
+    let spine =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/spines/bspline_spine.step");
+    let recipe = |extra: &str| {
+        format!(
+            "[[object]]\nname = \"p\"\nop = \"pipe\"\nspine_file = {:?}\nradius = \"1/5\"\n{extra}",
+            spine.display().to_string()
+        )
+    };
+    let o = build(&recipe("tolerance = \"1/100\"\n"));
+    let certs = &o[0].certificates;
+    assert!(
+        certs.iter().all(|c| c.holds && c.exact),
+        "{:?}",
+        certs.iter().filter(|c| !c.holds).collect::<Vec<_>>()
+    );
+    let dev = certs
+        .iter()
+        .find(|c| c.property.contains("spine deviation"))
+        .expect("the spine deviation is certified");
+    assert!(dev.property.contains("within ε"), "{}", dev.property);
+    assert!(certs.iter().any(|c| c.property.contains("(G¹")));
+    rcagd_io::step::write_step(&o).expect("STEP export");
+    rcagd_io::iges::write_iges(&o).expect("IGES export");
+    let (line, msg) = build_err(&recipe("approximate = \"never\"\n"));
+    assert_eq!(line, 4, "{msg}");
+    assert!(msg.contains("extension") || msg.contains("Q(√"), "{msg}");
+    let (line, msg) = build_err(&recipe("tolerance = \"-1/10\"\n"));
+    assert_eq!(line, 6, "{msg}");
+    assert!(msg.contains("tolerance must be positive"), "{msg}");
+    let (line, msg) = build_err(&recipe("tolerance = \"1/1000000000000000000000000000\"\n"));
+    assert_eq!(line, 6, "{msg}");
+    assert!(msg.contains("tolerance"), "{msg}");
+}
