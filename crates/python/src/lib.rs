@@ -56,7 +56,7 @@ fn out_format(name: &str) -> PyResult<OutFormat> {
 
 /// Native-endian `f64`s from bytes (a numpy `float64` array's `tobytes()`).
 fn f64s(bytes: &[u8], what: &str) -> PyResult<Vec<f64>> {
-    if bytes.len() % 8 != 0 {
+    if !bytes.chunks_exact(8).remainder().is_empty() {
         return Err(value_error(format!(
             "{what}: {} bytes is not a whole number of float64 values",
             bytes.len()
@@ -317,9 +317,12 @@ fn imported_json(objs: &[rcagd_io::step_read::ImportedObject]) -> PyResult<Strin
     serde_json::to_string(&v).map_err(value_error)
 }
 
+/// An op's parameter: `(name, type, requirement, doc)`.
+type ParamRow = (String, String, String, String);
+
 /// Every op: `(name, summary, [(parameter, type, requirement, doc)])`.
 #[pyfunction]
-fn ops() -> Vec<(String, String, Vec<(String, String, String, String)>)> {
+fn ops() -> Vec<(String, String, Vec<ParamRow>)> {
     rcagd_cli::ops::all()
         .map(|op| {
             let params = op
