@@ -129,9 +129,23 @@ def _ocp():
         raise ImportError(
             "to_ocp needs OpenCascade's Python bindings: pip install cadquery-ocp"
         ) from e
-    from OCP import Geom, TColgp, TColStd, gp
+    from OCP import Geom, gp
 
-    return Geom, TColgp, TColStd, gp
+    class _A:
+        """OCCT's arrays: ``OCP.collections`` (OCP 8) or ``TColgp``/``TColStd`` (OCP 7)."""
+
+    try:
+        from OCP import collections as c
+
+        _A.pnt1, _A.real1, _A.int1 = c.Array1_gp_Pnt, c.Array1_double, c.Array1_int
+        _A.pnt2, _A.real2 = c.Array2_gp_Pnt, c.Array2_double
+    except (ImportError, AttributeError):
+        from OCP import TColgp, TColStd
+
+        _A.pnt1, _A.real1 = TColgp.TColgp_Array1OfPnt, TColStd.TColStd_Array1OfReal
+        _A.int1 = TColStd.TColStd_Array1OfInteger
+        _A.pnt2, _A.real2 = TColgp.TColgp_Array2OfPnt, TColStd.TColStd_Array2OfReal
+    return Geom, _A, gp
 
 
 def _knots_mults(knots):
@@ -146,6 +160,15 @@ def _knots_mults(knots):
     return ks, ms
 
 
+def _knot_arrays(A, knot_vector):
+    ks, ms = _knots_mults(knot_vector)
+    knots, mults = A.real1(1, len(ks)), A.int1(1, len(ks))
+    for i, (k, m) in enumerate(zip(ks, ms), start=1):
+        knots.SetValue(i, float(k))
+        mults.SetValue(i, m)
+    return knots, mults
+
+
 class NurbsCurve:
     """An exact NURBS curve: ``degree``, ``knots`` (Fractions) and homogeneous
     ``control_points`` (weight first, Fractions), as in a STEP/IGES file."""
@@ -157,22 +180,17 @@ class NurbsCurve:
 
     def to_ocp(self):
         """This curve as an OCP ``Geom_BSplineCurve`` (rounded to float once)."""
-        Geom, TColgp, TColStd, gp = _ocp()
+        Geom, A, gp = _ocp()
         pts = self.control_points
         n = len(pts)
-        poles = TColgp.TColgp_Array1OfPnt(1, n)
-        weights = TColStd.TColStd_Array1OfReal(1, n)
+        poles = A.pnt1(1, n)
+        weights = A.real1(1, n)
         for i, h in enumerate(pts, start=1):
             w = h[0]
             xyz = [float(c / w) for c in h[1:4]] + [0.0] * (4 - len(h))
             poles.SetValue(i, gp.gp_Pnt(*xyz))
             weights.SetValue(i, float(w))
-        ks, ms = _knots_mults(self.knots)
-        knots = TColStd.TColStd_Array1OfReal(1, len(ks))
-        mults = TColStd.TColStd_Array1OfInteger(1, len(ks))
-        for i, (k, m) in enumerate(zip(ks, ms), start=1):
-            knots.SetValue(i, float(k))
-            mults.SetValue(i, m)
+        knots, mults = _knot_arrays(A, self.knots)
         return Geom.Geom_BSplineCurve(poles, weights, knots, mults, self.degree)
 
 
@@ -188,28 +206,18 @@ class NurbsSurface:
 
     def to_ocp(self):
         """This surface as an OCP ``Geom_BSplineSurface`` (rounded to float once)."""
-        Geom, TColgp, TColStd, gp = _ocp()
+        Geom, A, gp = _ocp()
         net = self.control_points
         nu, nv = len(net), len(net[0])
-        poles = TColgp.TColgp_Array2OfPnt(1, nu, 1, nv)
-        weights = TColStd.TColStd_Array2OfReal(1, nu, 1, nv)
+        poles = A.pnt2(1, nu, 1, nv)
+        weights = A.real2(1, nu, 1, nv)
         for i, row in enumerate(net, start=1):
             for j, h in enumerate(row, start=1):
                 w = h[0]
                 poles.SetValue(i, j, gp.gp_Pnt(*(float(c / w) for c in h[1:4])))
                 weights.SetValue(i, j, float(w))
-
-        def arrays(kv):
-            ks, ms = _knots_mults(kv)
-            knots = TColStd.TColStd_Array1OfReal(1, len(ks))
-            mults = TColStd.TColStd_Array1OfInteger(1, len(ks))
-            for i, (k, m) in enumerate(zip(ks, ms), start=1):
-                knots.SetValue(i, float(k))
-                mults.SetValue(i, m)
-            return knots, mults
-
-        ku, mu = arrays(self.knots_u)
-        kv, mv = arrays(self.knots_v)
+        ku, mu = _knot_arrays(A, self.knots_u)
+        kv, mv = _knot_arrays(A, self.knots_v)
         p, q = self.degree
         return Geom.Geom_BSplineSurface(poles, weights, ku, kv, mu, mv, p, q)
 
@@ -361,8 +369,9 @@ class Object:
     def evaluate(self, t, piece=0):
         """Points of curve ``piece`` at the parameters ``t`` (array-like): an array of
         shape ``t.shape + (dim,)``."""
-        t = _np.ascontiguousarray(t, dtype=_np.float64)
-        out = _np.frombuffer(self._raw.eval_curve(piece, t.tobytes()), dtype=_np.float64)
+        t = _np.asarray(t, dtype=_np.float64)
+        flat = _np.ascontiguousarray(t.ravel())
+        out = _np.frombuffer(self._raw.eval_curve(piece, flat.tobytes()), dtype=_np.float64)
         return out.reshape(t.shape + (self.dim,))
 
     def evaluate_grid(self, us, vs, piece=0):
