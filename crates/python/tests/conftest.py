@@ -14,7 +14,7 @@ ROOT = pathlib.Path(__file__).resolve().parents[3]
 def _cli():
     env = os.environ.get("RCAGD_CLI")
     if env:
-        return env
+        return env if os.path.isfile(env) else None
     for p in (ROOT / "target" / "debug" / "rcagd", ROOT / "target" / "release" / "rcagd"):
         if p.is_file():
             return str(p)
