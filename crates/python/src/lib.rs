@@ -16,17 +16,20 @@
 //! * [`read_step`] / [`read_iges`]: [`rcagd_io::step_read::read_step`],
 //!   [`rcagd_io::iges_read::read_iges`].
 //!
-//! Float arrays cross the boundary as native-endian `f64` bytes (`numpy.frombuffer` on
-//! the Python side, no Python loop); exact numbers as `"p/q"` strings
+//! Float arrays cross the boundary as native-endian `f64` bytes in a `bytearray`
+//! (`numpy.frombuffer` on the Python side: writable, no copy, no Python loop); exact numbers as `"p/q"` strings
 //! (`fractions.Fraction` on the Python side). Every error is a Python `ValueError`
 //! carrying the library's message.
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use pyo3::types::PyBytes;
+use pyo3::types::{PyByteArray, PyBytes};
 use rcagd_cli::output::OutFormat;
 use rcagd_geom::{BezierCurve, BezierPatch};
 use rcagd_io::model::Object as IoObject;
+
+/// The size of the blocks of grid rows evaluated at once by `Object::eval_grid`.
+const GRID_BLOCK_BYTES: usize = 1 << 20;
 
 /// A `ValueError` with `msg`.
 fn value_error(msg: impl std::fmt::Display) -> PyErr {
@@ -72,13 +75,15 @@ fn f64s(bytes: &[u8], what: &str) -> PyResult<Vec<f64>> {
         .collect())
 }
 
-/// `f64`s as native-endian bytes.
-fn f64_bytes<'py>(py: Python<'py>, xs: &[f64]) -> Bound<'py, PyBytes> {
-    let mut out = Vec::with_capacity(xs.len() * 8);
-    for x in xs {
-        out.extend_from_slice(&x.to_ne_bytes());
-    }
-    PyBytes::new(py, &out)
+/// `f64`s as native-endian bytes in a `bytearray`, written in place (one copy; numpy
+/// views it writable with `frombuffer`).
+fn f64_bytes<'py>(py: Python<'py>, xs: &[f64]) -> PyResult<Bound<'py, PyByteArray>> {
+    PyByteArray::new_with(py, xs.len() * 8, |buf| {
+        for (b, x) in buf.chunks_exact_mut(8).zip(xs) {
+            b.copy_from_slice(&x.to_ne_bytes());
+        }
+        Ok(())
+    })
 }
 
 /// One built, certified object: its name, op, exact geometry and certificates
@@ -172,7 +177,7 @@ impl Object {
         piece: usize,
         us: &[u8],
         vs: &[u8],
-    ) -> PyResult<Bound<'py, PyBytes>> {
+    ) -> PyResult<Bound<'py, PyByteArray>> {
         let p = self.patches_f64.get(piece).ok_or_else(|| {
             value_error(format!(
                 "object {:?} has {} patches; there is no patch {piece}",
@@ -181,10 +186,27 @@ impl Object {
             ))
         })?;
         let (us, vs) = (f64s(us, "us")?, f64s(vs, "vs")?);
-        let mut out = Vec::new();
-        py.detach(|| rcagd_geom::grid::eval_patch_grid_flat(p, &us, &vs, &mut out))
-            .map_err(value_error)?;
-        Ok(f64_bytes(py, &out))
+        let d = p.dim();
+        let len = us
+            .len()
+            .checked_mul(vs.len())
+            .and_then(|n| n.checked_mul(d * 8))
+            .ok_or_else(|| value_error("the grid is too large"))?;
+        // evaluated in blocks of rows straight into the result (a block stays in cache;
+        // no second full-size buffer)
+        let row = (vs.len() * d * 8).max(1);
+        let rows = (GRID_BLOCK_BYTES / row).max(1);
+        let mut block = Vec::new();
+        PyByteArray::new_with(py, len, |buf| {
+            for (dst, u) in buf.chunks_mut(rows * row).zip(us.chunks(rows)) {
+                rcagd_geom::grid::eval_patch_grid_flat(p, u, &vs, &mut block)
+                    .map_err(value_error)?;
+                for (b, x) in dst.chunks_exact_mut(8).zip(&block) {
+                    b.copy_from_slice(&x.to_ne_bytes());
+                }
+            }
+            Ok(())
+        })
     }
 
     /// The points of curve `piece` at the parameters `ts` (float64 bytes), as float64
@@ -194,7 +216,7 @@ impl Object {
         py: Python<'py>,
         piece: usize,
         ts: &[u8],
-    ) -> PyResult<Bound<'py, PyBytes>> {
+    ) -> PyResult<Bound<'py, PyByteArray>> {
         let c = self.curves_f64.get(piece).ok_or_else(|| {
             value_error(format!(
                 "object {:?} has {} curves; there is no curve {piece}",
@@ -211,7 +233,7 @@ impl Object {
                 .try_for_each(|(o, &t)| c.eval_into(t, o))
         })
         .map_err(value_error)?;
-        Ok(f64_bytes(py, &out))
+        f64_bytes(py, &out)
     }
 
     /// The triangle mesh of the patches (`rcagd_io::stl::object_mesh`, default options):
@@ -220,21 +242,24 @@ impl Object {
         &self,
         py: Python<'py>,
     ) -> PyResult<(
-        Bound<'py, PyBytes>,
-        Bound<'py, PyBytes>,
-        Bound<'py, PyBytes>,
+        Bound<'py, PyByteArray>,
+        Bound<'py, PyByteArray>,
+        Bound<'py, PyByteArray>,
     )> {
         let m = rcagd_io::stl::object_mesh(&self.inner, &rcagd_io::stl::MeshOptions::default())
             .map_err(value_error)?;
         let flat = |v: &[[f64; 3]]| v.iter().flatten().copied().collect::<Vec<f64>>();
-        let mut tri = Vec::with_capacity(m.triangles.len() * 12);
-        for t in m.triangles.iter().flatten() {
-            tri.extend_from_slice(&t.to_ne_bytes());
-        }
+        let tri: Vec<u32> = m.triangles.iter().flatten().copied().collect();
+        let tri = PyByteArray::new_with(py, tri.len() * 4, |buf| {
+            for (b, t) in buf.chunks_exact_mut(4).zip(&tri) {
+                b.copy_from_slice(&t.to_ne_bytes());
+            }
+            Ok(())
+        })?;
         Ok((
-            f64_bytes(py, &flat(&m.positions)),
-            f64_bytes(py, &flat(&m.normals)),
-            PyBytes::new(py, &tri),
+            f64_bytes(py, &flat(&m.positions))?,
+            f64_bytes(py, &flat(&m.normals))?,
+            tri,
         ))
     }
 
