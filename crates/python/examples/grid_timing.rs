@@ -1,5 +1,5 @@
 //! The Rust side of the Python overhead measurement (docs/plans/python.md,
-//! "Measurements"): the same 1000 × 1000 grid of the sphere cover's first patch that
+//! "Measurements"): the torus recipe, and the same 1000 × 1000 grid of the sphere cover's first patch that
 //! `rcagd.sphere_cover().evaluate_grid(t, t)` evaluates, by the library call itself.
 //!
 //! `cargo run --profile pywheel -p rcagd-python --example grid_timing`
@@ -20,6 +20,24 @@ fn main() -> Result<(), String> {
     let patches = obj.geometry.patches_f64().map_err(|e| e.to_string())?;
     let patch = patches.first().ok_or("no patch")?;
     let t: Vec<f64> = (0..1000).map(|i| f64::from(i) / 999.0).collect();
+    // a small construction: the torus recipe, parsed and built (what `rcagd.torus(2,
+    // Fraction(1, 2))` runs)
+    let torus =
+        "[[object]]\nname = \"torus\"\nop = \"torus\"\nmajor_radius = 2\nminor_radius = \"1/2\"\n";
+    let mut best = f64::INFINITY;
+    for _ in 0..50 {
+        let start = Instant::now();
+        let r = rcagd_cli::recipe::Recipe::parse("r.toml", torus, None)
+            .map_err(|d| rcagd_cli::source::render_all(&d))?;
+        let built = rcagd_cli::build::build_recipe(&r, |_| {})
+            .map_err(|d| rcagd_cli::source::render_all(&d))?;
+        std::hint::black_box(&built);
+        best = best.min(start.elapsed().as_secs_f64());
+    }
+    println!(
+        "rust torus recipe parse + build: best of 50 {:.3} ms",
+        best * 1e3
+    );
     // a fresh output per call (what one evaluation costs a caller) and a reused one
     for reuse in [false, true] {
         let mut out = Vec::new();
