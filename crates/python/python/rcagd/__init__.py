@@ -47,9 +47,14 @@ __all__ = [
     "ph_planar_hermite",
     "ph_spatial_hermite",
     "ph_hermite",
+    "ph_planar_spline",
+    "ph_helix",
+    "ph_dph_septic",
     "canal_surface",
     "pipe",
     "pipe_ph",
+    "canal_blend_spheres",
+    "cyclide_blend",
     "torus",
     "dupin_cyclide",
     "pn_graph",
@@ -625,6 +630,35 @@ def ph_spatial_hermite(p0, d0, p1, d1, tau0=None, tau2=None, name="ph_spatial_he
     return op("ph_spatial_hermite", name, p0=p0, d0=d0, p1=p1, d1=d1, tau0=tau0, tau2=tau2)
 
 
+def ph_planar_spline(points, ends="natural", d0=None, d1=None, name="ph_planar_spline"):
+    """A C² planar PH quintic spline through ``points`` (open with natural or given end
+    derivatives, or closed), exact PH segments and exact C² junctions (G. Albrecht, R. T.
+    Farouki, *Construction of C² Pythagorean-hodograph interpolating splines by the
+    homotopy method*, Adv. Comput. Math. 5 (1996); Farouki, Kuspa, Manni, Sestini,
+    *Efficient solution of the complex quadratic tridiagonal system for C² PH quintic
+    splines*, Numer. Algorithms 27 (2001))."""
+    return op("ph_planar_spline", name, points=points, ends=ends, d0=d0, d1=d1)
+
+
+def ph_helix(a0, a1, b0, b1, f=None, g=None, w=None, start=(0, 0, 0), name="ph_helix",
+             **options):
+    """A polynomial helix from the line/circle seed z = (a0(1−t) + a1 t)/(b0(1−t) + b1 t)
+    (complex numbers ``[re, im]``), reparametrized by f/g and/or multiplied by w
+    (S. Besednjak, *DPH-krivulje in polinomske vijačnice*, §6); the axis a·r' ≡ σ is
+    certified. ``options``: frame, samples, frame_length, comb, comb_scale, feed."""
+    return op("ph_helix", name, a0=a0, a1=a1, b0=b0, b1=b1, f=f, g=g, w=w, start=start,
+              **options)
+
+
+def ph_dph_septic(h, w, alpha0, alpha1, beta0, root=0, start=(0, 0, 0),
+                  name="ph_dph_septic", **options):
+    """A double-PH septic with αβ' − α'β = h w² from free α0, α1, β0 and a root of the
+    quadratic (5.12) (S. Besednjak, *DPH-krivulje in polinomske vijačnice*, §5.2).
+    ``options``: frame, samples, frame_length, comb, comb_scale, feed."""
+    return op("ph_dph_septic", name, h=h, w=w, alpha0=alpha0, alpha1=alpha1, beta0=beta0,
+              root=root, start=start, **options)
+
+
 def ph_hermite(p_s, d_s, p_f, d_f, name="ph_hermite"):
     """Every helical PH quintic with r(0) = p_s, r'(0) = d_s, r(1) = p_f, r'(1) = d_f
     (S. Besednjak, *DPH-krivulje in polinomske vijačnice*, ch. 9), least bending energy
@@ -660,6 +694,28 @@ def pipe_ph(coefficients, radius, start=(0, 0, 0), orientation="positive", name=
     curves*, Springer 2008; Gruber 2008, §2; docs/math/pipes.md)."""
     return op("pipe_ph", name, coefficients=coefficients, radius=radius, start=start,
               orientation=orientation)
+
+
+def canal_blend_spheres(center0, radius0, normal0, center1, radius1, normal1, offset0=0,
+                        offset1=0, lambda0=None, lambda1=None, name="canal_blend_spheres"):
+    """A canal-surface blend between two spheres, touching each along the circle cut by
+    the plane (y − cᵢ)·nᵢ = hᵢ (``offset``), from a cubic Hermite spine/radius in R^{3,1},
+    exact over Q (D. Gruber, *Rationale Parametrisierungen von Kugelhüllflächen*, ch. 2;
+    M. Peternell, *Rational Parametrizations for Envelopes of Quadric Families*,
+    §2.4–2.5)."""
+    return op("canal_blend_spheres", name, center0=center0, radius0=radius0,
+              normal0=normal0, offset0=offset0, center1=center1, radius1=radius1,
+              normal1=normal1, offset1=offset1, lambda0=lambda0, lambda1=lambda1)
+
+
+def cyclide_blend(sphere1, direction1, direction2, sphere2=None, point2=None, side2=1,
+                  name="cyclide_blend"):
+    """A Dupin cyclide blend between two cones or cylinders of revolution with
+    intersecting or parallel axes, tangent to both along the circles where the spheres
+    P₁ = ``sphere1``, P₂ touch them (M. Peternell, *Rational Parametrizations for
+    Envelopes of Quadric Families*, §3.8). Spheres and directions are ``[x, y, z, r]``."""
+    return op("cyclide_blend", name, sphere1=sphere1, direction1=direction1,
+              sphere2=sphere2, direction2=direction2, point2=point2, side2=side2)
 
 
 def torus(major_radius, minor_radius, center=(0, 0, 0), name="torus"):

@@ -127,6 +127,19 @@ def ph_spatial_hermite(
     p0: Point, d0: Point, p1: Point, d1: Point, tau0: Optional[Number] = ...,
     tau2: Optional[Number] = ..., name: str = ...,
 ) -> Object: ...
+def ph_planar_spline(
+    points: Points, ends: str = ..., d0: Optional[Point] = ..., d1: Optional[Point] = ...,
+    name: str = ...,
+) -> Object: ...
+def ph_helix(
+    a0: Point, a1: Point, b0: Point, b1: Point, f: Optional[Sequence[Number]] = ...,
+    g: Optional[Sequence[Number]] = ..., w: Optional[Points] = ..., start: Point = ...,
+    name: str = ..., **options: Any,
+) -> Object: ...
+def ph_dph_septic(
+    h: Sequence[Number], w: Points, alpha0: Point, alpha1: Point, beta0: Point, root: int = ...,
+    start: Point = ..., name: str = ..., **options: Any,
+) -> Object: ...
 def ph_hermite(p_s: Point, d_s: Point, p_f: Point, d_f: Point, name: str = ...) -> Object: ...
 def canal_surface(
     points: Points, radius: Sequence[Number], weights: Optional[Sequence[Number]] = ...,
@@ -141,6 +154,15 @@ def pipe(
 def pipe_ph(
     coefficients: Points, radius: Number, start: Point = ..., orientation: str = ...,
     name: str = ...,
+) -> Object: ...
+def canal_blend_spheres(
+    center0: Point, radius0: Number, normal0: Point, center1: Point, radius1: Number,
+    normal1: Point, offset0: Number = ..., offset1: Number = ...,
+    lambda0: Optional[Number] = ..., lambda1: Optional[Number] = ..., name: str = ...,
+) -> Object: ...
+def cyclide_blend(
+    sphere1: Point, direction1: Point, direction2: Point, sphere2: Optional[Point] = ...,
+    point2: Optional[Point] = ..., side2: Number = ..., name: str = ...,
 ) -> Object: ...
 def torus(major_radius: Number, minor_radius: Number, center: Point = ..., name: str = ...) -> Object: ...
 def dupin_cyclide(name: str = ..., **params: Any) -> Object: ...
