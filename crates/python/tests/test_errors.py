@@ -39,6 +39,12 @@ def test_unsupported_python_values():
         rcagd.torus(object(), 1)
     with pytest.raises(ValueError, match=r"a recipe is a TOML/JSON string"):
         rcagd.build(42)
+    with pytest.raises(ValueError, match=r"no recipe file 'missing.toml'"):
+        rcagd.build("missing.toml")
+    with pytest.raises(FileNotFoundError):
+        import pathlib
+
+        rcagd.build(pathlib.Path("missing.toml"))
 
 
 def test_syntax_errors_are_located():

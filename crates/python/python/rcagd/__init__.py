@@ -481,6 +481,10 @@ def build(recipe):
             text = f.read().decode("utf-8", errors="strict")
         raws = _rcagd.build(text, path)
     elif isinstance(recipe, str):
+        if "\n" not in recipe and recipe.strip().lower().endswith((".toml", ".json")):
+            raise ValueError(
+                f"no recipe file {recipe!r} (a recipe text has at least one line break)"
+            )
         raws = _rcagd.build(recipe, "<recipe>")
     else:
         raise ValueError(
