@@ -59,6 +59,11 @@ __all__ = [
     "dupin_cyclide",
     "pn_graph",
     "pn_support",
+    "pn_model",
+    "pn_ellipsoid",
+    "pn_revolution",
+    "pn_canal",
+    "quadric_patch_image",
 ]
 
 
@@ -756,3 +761,52 @@ def pn_support(support, support_denominator=None, a=None, b=None, c=None,
               a=a, b=b, c=c, domain=domain, offset=offset, orientation=orientation,
               distances=distances)
 
+
+def pn_model(points, normals, triangles, offset=None, distances=None, name="pn_model"):
+    """A G¹ PN surface of parabolic Dupin cyclide pieces interpolating ``points`` with
+    exact rational unit ``normals`` over a triangulation (M. Peternell, *Rational
+    Parametrizations for Envelopes of Quadric Families*, §4.4: Hermite data → gradient
+    data in I³ → C¹ Powell–Sabin quadratic spline → Λ⁻¹), with exact offsets."""
+    return op("pn_model", name, points=points, normals=normals, triangles=triangles,
+              offset=offset, distances=distances)
+
+
+def pn_ellipsoid(a, b, c, domain=None, offset=None, orientation="positive", distances=None,
+                 name="pn_ellipsoid"):
+    """The ellipsoid x²/a² + y²/b² + z²/c² = 1 as a PN surface in the umbilic frame
+    (Peternell, *Rational Parametrizations for Envelopes of Quadric Families*, §4.7),
+    with exact rational offsets; √(b²−c²)·√(a²−b²) and √(ac) must be rational."""
+    return op("pn_ellipsoid", name, a=a, b=b, c=c, domain=domain, offset=offset,
+              orientation=orientation, distances=distances)
+
+
+def pn_revolution(u, v, start=(1, 0), domain=None, offset=None, orientation="positive",
+                  distances=None, name="pn_revolution"):
+    """The surface of revolution (about z) of the polynomial PH profile with preimage
+    (u(t), v(t)) (Bernstein coefficients): a PN surface whose offsets are the surfaces of
+    revolution of the profile's offsets (Peternell, *Rational Parametrizations for
+    Envelopes of Quadric Families*, ch. 4; Farouki, *Pythagorean-hodograph curves*)."""
+    return op("pn_revolution", name, u=u, v=v, start=start, domain=domain, offset=offset,
+              orientation=orientation, distances=distances)
+
+
+def pn_canal(spine, radius, domain=None, offset=None, orientation="positive",
+             distances=None, name="pn_canal"):
+    """A canal surface with polynomial spine m(t) (three rows of power coefficients) and
+    radius r(t) (power coefficients) as a PN surface (Peternell, *Rational
+    Parametrizations for Envelopes of Quadric Families*, Cor. 4.3), with exact offsets
+    (radius r + d)."""
+    return op("pn_canal", name, spine=spine, radius=radius, domain=domain, offset=offset,
+              orientation=orientation, distances=distances)
+
+
+def quadric_patch_image(net, weights=None, homogeneous=False, quadric="unit_sphere",
+                        coefficients=None, matrix=None, rational_point=None,
+                        name="quadric_patch_image"):
+    """The image of a rational tensor-product patch of bidegree (m, n) under the
+    generalized stereographic projection: a patch of bidegree (2m, 2n) exactly on the
+    quadric (B. Jüttler, *Zur Konstruktion rationaler Kurven und Flächen auf
+    Quadriken*)."""
+    return op("quadric_patch_image", name, net=net, weights=weights, homogeneous=homogeneous,
+              quadric=quadric, coefficients=coefficients, matrix=matrix,
+              rational_point=rational_point)

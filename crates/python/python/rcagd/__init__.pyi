@@ -177,3 +177,28 @@ def pn_support(
     offset: Optional[Number] = ..., orientation: str = ...,
     distances: Optional[Sequence[Number]] = ..., name: str = ...,
 ) -> Object: ...
+def pn_model(
+    points: Points, normals: Points, triangles: Sequence[Sequence[int]],
+    offset: Optional[Number] = ..., distances: Optional[Sequence[Number]] = ...,
+    name: str = ...,
+) -> Object: ...
+def pn_ellipsoid(
+    a: Number, b: Number, c: Number, domain: Optional[Sequence[Number]] = ...,
+    offset: Optional[Number] = ..., orientation: str = ...,
+    distances: Optional[Sequence[Number]] = ..., name: str = ...,
+) -> Object: ...
+def pn_revolution(
+    u: Sequence[Number], v: Sequence[Number], start: Point = ...,
+    domain: Optional[Sequence[Number]] = ..., offset: Optional[Number] = ...,
+    orientation: str = ..., distances: Optional[Sequence[Number]] = ..., name: str = ...,
+) -> Object: ...
+def pn_canal(
+    spine: Grid, radius: Sequence[Number], domain: Optional[Sequence[Number]] = ...,
+    offset: Optional[Number] = ..., orientation: str = ...,
+    distances: Optional[Sequence[Number]] = ..., name: str = ...,
+) -> Object: ...
+def quadric_patch_image(
+    net: Net, weights: Optional[Grid] = ..., homogeneous: bool = ..., quadric: str = ...,
+    coefficients: Optional[Sequence[Number]] = ..., matrix: Optional[Grid] = ...,
+    rational_point: Optional[Point] = ..., name: str = ...,
+) -> Object: ...
