@@ -37,6 +37,7 @@ use super::frame::{
 use super::regularity::check_pipe_regularity;
 use super::{CanalError, CanalSpine};
 use crate::error::format_scalar;
+use crate::ph::approximation::{cross_dot, joint_tangents};
 use crate::ph::PhCurve;
 use crate::Certified;
 use rcagd_algebra::roots::count_real_roots_in;
@@ -765,30 +766,12 @@ impl Certified for PipeChain {
     }
 }
 
-/// The affine point of a homogeneous control point (`None` for weight 0).
-fn affine(h: &[Rational]) -> Option<[Rational; 3]> {
-    let w = h.first()?;
-    if w.is_zero() {
-        return None;
-    }
-    Some(core::array::from_fn(|k| {
-        h.get(k + 1).cloned().unwrap_or(Rational::ZERO) / w.clone()
-    }))
-}
-
 fn join_certificates(
     k: usize,
     a: &BezierCurve<Rational>,
     b: &BezierCurve<Rational>,
 ) -> Vec<Certificate> {
-    let n = a.degree();
-    let ends = (
-        affine(a.control_point(n)),
-        affine(a.control_point(n.saturating_sub(1))),
-        affine(b.control_point(0)),
-        affine(b.control_point(1.min(b.degree()))),
-    );
-    let (Some(pe), Some(pe1), Some(ps), Some(ps1)) = ends else {
+    let Some([pe, ps, te, ts]) = joint_tangents(a, b) else {
         return vec![Certificate::fails(
             format!("spine pieces {k} and {} meet (G⁰)", k + 1),
             "an end control point has weight 0",
@@ -814,14 +797,7 @@ fn join_certificates(
         },
     );
     // end tangent ∝ p_n − p_{n−1}, start tangent ∝ p_1 − p_0 (positive weights)
-    let te: Vec<Rational> = (0..3).map(|i| pe[i].clone() - pe1[i].clone()).collect();
-    let ts: Vec<Rational> = (0..3).map(|i| ps1[i].clone() - ps[i].clone()).collect();
-    let cross = [
-        te[1].clone() * ts[2].clone() - te[2].clone() * ts[1].clone(),
-        te[2].clone() * ts[0].clone() - te[0].clone() * ts[2].clone(),
-        te[0].clone() * ts[1].clone() - te[1].clone() * ts[0].clone(),
-    ];
-    let dot = (0..3).fold(Rational::ZERO, |acc, i| acc + te[i].clone() * ts[i].clone());
+    let (cross, dot) = cross_dot(&te, &ts);
     let g1 = Certificate::decide(
         format!("spine pieces {k} and {} have the same tangent direction at the joint (G¹: the pipes share the characteristic circle there)", k + 1),
         cross.iter().all(Rational::is_zero) && dot > Rational::ZERO,

@@ -34,6 +34,7 @@
 //! the two curves, hence their Hausdorff distance. All of it is exact rational arithmetic.
 
 use super::hodograph::{solve_qiq, PhCurve};
+use super::spatial_hermite::golden_min;
 use super::PhError;
 use rcagd_algebra::quaternion::Quaternion;
 use rcagd_algebra::rational::round_decimal;
@@ -275,12 +276,7 @@ fn joint_certificates(k: usize, a: &PhCurve<Rational>, b: &PhCurve<Rational>) ->
     let (Some(te), Some(ts)) = (ha.last(), hb.first()) else {
         return vec![g0];
     };
-    let cross = [
-        te[1].clone() * ts[2].clone() - te[2].clone() * ts[1].clone(),
-        te[2].clone() * ts[0].clone() - te[0].clone() * ts[2].clone(),
-        te[0].clone() * ts[1].clone() - te[1].clone() * ts[0].clone(),
-    ];
-    let dot = (0..3).fold(Rational::ZERO, |acc, i| acc + te[i].clone() * ts[i].clone());
+    let (cross, dot) = cross_dot(te, ts);
     let g1 = Certificate::decide(
         format!(
             "PH pieces {k} and {} have the same tangent direction at the joint (G¹: r_{k}′(1) × r_{}′(0) = 0, r_{k}′(1)·r_{}′(0) > 0)",
@@ -528,42 +524,15 @@ fn best_angles(dist: impl Fn(f64, f64) -> f64) -> (f64, f64, f64) {
             }
         }
     }
-    let g = (5f64.sqrt() - 1.0) / 2.0;
-    let golden = |f: &dyn Fn(f64) -> f64, lo: f64, hi: f64| -> (f64, f64) {
-        let (mut a, mut b) = (lo, hi);
-        let mut c = b - g * (b - a);
-        let mut d = a + g * (b - a);
-        let (mut fc, mut fd) = (f(c), f(d));
-        for _ in 0..14 {
-            if fc <= fd {
-                b = d;
-                d = c;
-                fd = fc;
-                c = b - g * (b - a);
-                fc = f(c);
-            } else {
-                a = c;
-                c = d;
-                fc = fd;
-                d = a + g * (b - a);
-                fd = f(d);
-            }
-        }
-        if fc <= fd {
-            (c, fc)
-        } else {
-            (d, fd)
-        }
-    };
     let mut half = PI / 6.0;
     for _ in 0..3 {
         let (a, b, _) = best;
-        let (na, da) = golden(&|x| dist(x, b), a - half, a + half);
+        let (na, da) = golden_min(|x| dist(x, b), a - half, a + half, 14);
         if da < best.2 {
             best = (na, b, da);
         }
         let (a, b, _) = best;
-        let (nb, db) = golden(&|x| dist(a, x), b - half, b + half);
+        let (nb, db) = golden_min(|x| dist(a, x), b - half, b + half, 14);
         if db < best.2 {
             best = (a, nb, db);
         }
@@ -619,27 +588,41 @@ fn affine(h: &[Rational]) -> Option<[Rational; 3]> {
     }))
 }
 
-/// `true` if `a` ends with the tangent direction `b` starts with (exact: the end tangent of a
-/// Bézier curve with positive weights is a positive multiple of `p_n − p_{n−1}`).
-fn same_tangent_direction(a: &BezierCurve<Rational>, b: &BezierCurve<Rational>) -> bool {
+/// Where Bézier curve `a` ends and `b` starts: `(end point of a, start point of b, end
+/// tangent of a, start tangent of b)`, the tangents as `p_n − p_{n−1}` and `p_1 − p_0` of the
+/// affine control points (positive multiples of the true tangents when the weights are
+/// positive); `None` if one of those control points has weight 0.
+pub(crate) fn joint_tangents(
+    a: &BezierCurve<Rational>,
+    b: &BezierCurve<Rational>,
+) -> Option<[[Rational; 3]; 4]> {
     let n = a.degree();
-    let ends = (
-        affine(a.control_point(n)),
-        affine(a.control_point(n.saturating_sub(1))),
-        affine(b.control_point(0)),
-        affine(b.control_point(1.min(b.degree()))),
-    );
-    let (Some(pe), Some(pe1), Some(ps), Some(ps1)) = ends else {
+    let pe = affine(a.control_point(n))?;
+    let pe1 = affine(a.control_point(n.saturating_sub(1)))?;
+    let ps = affine(b.control_point(0))?;
+    let ps1 = affine(b.control_point(1.min(b.degree())))?;
+    let te = core::array::from_fn(|i| &pe[i] - &pe1[i]);
+    let ts = core::array::from_fn(|i| &ps1[i] - &ps[i]);
+    Some([pe, ps, te, ts])
+}
+
+/// `(u × v, u·v)`.
+pub(crate) fn cross_dot(u: &[Rational; 3], v: &[Rational; 3]) -> ([Rational; 3], Rational) {
+    let cross = [
+        &u[1] * &v[2] - &u[2] * &v[1],
+        &u[2] * &v[0] - &u[0] * &v[2],
+        &u[0] * &v[1] - &u[1] * &v[0],
+    ];
+    let dot = (0..3).fold(Rational::ZERO, |acc, i| acc + &u[i] * &v[i]);
+    (cross, dot)
+}
+
+/// `true` if `a` ends where `b` starts, with the same tangent direction (exact).
+fn same_tangent_direction(a: &BezierCurve<Rational>, b: &BezierCurve<Rational>) -> bool {
+    let Some([pe, ps, te, ts]) = joint_tangents(a, b) else {
         return false;
     };
-    let te: [Rational; 3] = core::array::from_fn(|i| &pe[i] - &pe1[i]);
-    let ts: [Rational; 3] = core::array::from_fn(|i| &ps1[i] - &ps[i]);
-    let cross = [
-        &te[1] * &ts[2] - &te[2] * &ts[1],
-        &te[2] * &ts[0] - &te[0] * &ts[2],
-        &te[0] * &ts[1] - &te[1] * &ts[0],
-    ];
-    let dot = (0..3).fold(Rational::ZERO, |acc, i| acc + &te[i] * &ts[i]);
+    let (cross, dot) = cross_dot(&te, &ts);
     cross.iter().all(Rational::is_zero) && dot > Rational::ZERO && pe == ps
 }
 

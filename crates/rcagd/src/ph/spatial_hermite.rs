@@ -62,7 +62,7 @@ pub type SpatialHermiteResult =
 
 /// The minimizer of `f` on `[lo, hi]` by `n` golden-section steps and its value (the better
 /// of the final bracket's interior points; `f` may be `+∞` where undefined).
-fn golden_min(f: impl Fn(f64) -> f64, lo: f64, hi: f64, n: usize) -> (f64, f64) {
+pub(crate) fn golden_min(f: impl Fn(f64) -> f64, lo: f64, hi: f64, n: usize) -> (f64, f64) {
     let g = (5f64.sqrt() - 1.0) / 2.0;
     let (mut a, mut b) = (lo, hi);
     let mut c = b - g * (b - a);
