@@ -20,8 +20,8 @@ sweep) and for rcagd's STEP file read back by OpenCascade, through the same code
 
 Usage (through the OpenCascade venv: ``py="$(scripts/occ_venv.sh)"``):
     python benches/occ/bspline_pipe.py write-spine examples/spines/bspline_spine.step PIECE.step...
-    python benches/occ/bspline_pipe.py bench RADIUS RCAGD_STEP [RCAGD_SECONDS]
-(benches/occ/bspline_pipe.sh does all of it).
+    python benches/occ/bspline_pipe.py bench RADIUS SPINE_STEP RCAGD_STEP [RCAGD_SECONDS]
+(benches/occ/pipe_compare.sh does all of it, for this spine and for a PH quintic).
 """
 
 from __future__ import annotations
@@ -156,7 +156,9 @@ def read_step(path: str):
     return r.OneShape()
 
 
-def bench(radius: float, rcagd_step: str, rcagd_seconds: str | None) -> None:
+def bench(radius: float, spine: str, rcagd_step: str, rcagd_seconds: str | None) -> None:
+    global SPINE
+    SPINE = spine
     times = []
     for _ in range(7):
         t = time.perf_counter()
@@ -166,7 +168,7 @@ def bench(radius: float, rcagd_step: str, rcagd_seconds: str | None) -> None:
     rows = [
         ("OpenCascade BRepOffsetAPI_MakePipe", shape, f"{occ_time * 1e3:.2f} ms"),
         (
-            "rcagd exact pipe around the PH spline (STEP read back)",
+            "rcagd exact pipe (STEP read back)",
             read_step(rcagd_step),
             f"{float(rcagd_seconds) * 1e3:.0f} ms" if rcagd_seconds else "-",
         ),
@@ -181,8 +183,8 @@ def bench(radius: float, rcagd_step: str, rcagd_seconds: str | None) -> None:
 def main() -> None:
     if len(sys.argv) >= 4 and sys.argv[1] == "write-spine":
         write_spine(sys.argv[2], sys.argv[3:])
-    elif len(sys.argv) >= 4 and sys.argv[1] == "bench":
-        bench(float(sys.argv[2]), sys.argv[3], sys.argv[4] if len(sys.argv) > 4 else None)
+    elif len(sys.argv) >= 5 and sys.argv[1] == "bench":
+        bench(float(sys.argv[2]), sys.argv[3], sys.argv[4], sys.argv[5] if len(sys.argv) > 5 else None)
     else:
         raise SystemExit(__doc__)
 
