@@ -18,6 +18,7 @@ use crate::ph::approximation::{
     approximate_by_ph_quintics, PhApproximationOptions, PhSplineApproximation,
 };
 use crate::Certified;
+use rayon::prelude::*;
 use rcagd_algebra::{format_scalar, Certificate, Rational};
 use rcagd_geom::{BezierCurve, BezierPatch};
 
@@ -202,15 +203,23 @@ pub fn pipe_along_spine(
     };
     let spline = approximate_by_ph_quintics(spine, &options)?;
     let (zero, one) = (Rational::ZERO, Rational::ONE);
-    let mut pieces = Vec::with_capacity(spline.pieces().len());
-    for (k, p) in spline.pieces().iter().enumerate() {
-        let pipe = pipe_around_ph_exportable(&p.curve, radius, (&zero, &one), orientation)
-            .map_err(|e| CanalError::SpinePiece {
-                index: k,
-                source: Box::new(e),
-            })?;
-        pieces.push(pipe);
-    }
+    // the pipes around the pieces are independent: built in parallel, kept in order (the
+    // first failing piece's error is reported)
+    let pieces = spline
+        .pieces()
+        .par_iter()
+        .enumerate()
+        .map(|(k, p)| {
+            pipe_around_ph_exportable(&p.curve, radius, (&zero, &one), orientation).map_err(|e| {
+                CanalError::SpinePiece {
+                    index: k,
+                    source: Box::new(e),
+                }
+            })
+        })
+        .collect::<Vec<_>>()
+        .into_iter()
+        .collect::<Result<Vec<_>, _>>()?;
     Ok(SpinePipe::Approximate(ApproximatePipe {
         spline,
         pieces,
