@@ -248,3 +248,87 @@ fn the_cyclographic_construction_draws_both_contact_points() {
     assert_eq!(line, 8, "{msg}");
     assert!(msg.contains("[s, t]"), "{msg}");
 }
+
+const PARAMETRIZED: &str = "[[object]]\nname = \"n\"\nop = \"line_congruence_parametrized\"\n";
+
+/// `[W, X, Y, Z]` power coefficients of the paraboloid z = u² + v² (rows u⁰, u¹, u²).
+const PARABOLOID: &str = "surface = [[[1, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], [[0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]], [[0, 0, 0, 1], [0, 0, 0, 0], [0, 0, 0, 0]]]\n";
+
+fn value_int(o: &Object, name: &str) -> i64 {
+    match o.values.iter().find(|v| v.name == name).map(|v| &v.value) {
+        Some(rcagd_io::quantity::Quantity::Integer(k)) => *k,
+        other => panic!("{name}: {other:?}"),
+    }
+}
+
+#[test]
+fn a_normal_congruence_is_drawn_with_order_class_and_its_rational_focal_sheet() {
+    let objs = build(&format!(
+        "{PARAMETRIZED}{PARABOLOID}u = [\"1/4\", 1]\nv = [0, \"1/2\"]\nlambda = [0, \"1/2\"]\nfocal_sheets = true\ndomain = [\"1/4\", 1, 0, \"1/2\"]\n"
+    ));
+    // the strips and the evolute; the axis (a focal curve) is reported, not drawn
+    assert_eq!(
+        objs.len(),
+        2,
+        "{:?}",
+        objs.iter().map(|o| &o.name).collect::<Vec<_>>()
+    );
+    crate::common::assert_exact_patches_certifying(&objs[0], "order 3 and class 2");
+    crate::common::assert_exact_patches_certifying(&objs[0], "focal sheet 1: det(p, q, f_u, f_v)");
+    crate::common::assert_exact_patches_certifying(&objs[0], "orthogonal to the surface");
+    assert_eq!(
+        (
+            value_int(&objs[0], "order"),
+            value_int(&objs[0], "class"),
+            value_int(&objs[0], "mu")
+        ),
+        (3, 2, 1)
+    );
+    assert_eq!(objs[1].name, "n_focal_1");
+    crate::common::assert_exact_patches_certifying(&objs[1], "sheet patches is > 0");
+    // the elliptic paraboloid z = u² + 2v²: irrational focal sheets, a located error
+    let (line, msg) = build_err(&format!(
+        "{PARAMETRIZED}surface = [[[1, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 2]], [[0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]], [[0, 0, 0, 1], [0, 0, 0, 0], [0, 0, 0, 0]]]\nfocal_sheets = true\ndomain = [0, 1, 0, 1]\n"
+    ));
+    assert_eq!(line, 5, "{msg}");
+    assert!(msg.contains("irrational"), "{msg}");
+    // without focal sheets it builds, order 5 and class 2
+    let objs = build(&format!(
+        "{PARAMETRIZED}surface = [[[1, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 2]], [[0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]], [[0, 0, 0, 1], [0, 0, 0, 0], [0, 0, 0, 0]]]\n"
+    ));
+    assert_eq!(
+        (value_int(&objs[0], "order"), value_int(&objs[0], "class")),
+        (5, 2)
+    );
+}
+
+#[test]
+fn a_congruence_of_two_point_families_and_its_input_errors() {
+    // the lines meeting the conic (1 + u², 2u, 0, 1 − u²) and the line (1, 5, v, 0): (2, 2),
+    // both focal sheets curves
+    let pq = "p = [[[1, 0, 0, 1]], [[0, 2, 0, 0]], [[1, 0, 0, -1]]]\nq = [[[1, 5, 0, 0], [0, 0, 1, 0]]]\n";
+    let objs = build(&format!(
+        "{PARAMETRIZED}{pq}u = [0, 1]\nv = [0, 1]\ntwist = 1\n"
+    ));
+    crate::common::assert_exact_patches_certifying(&objs[0], "order 2 and class 2");
+    let (_, msg) = build_err(&format!(
+        "{PARAMETRIZED}{pq}focal_sheets = true\ndomain = [0, 1, 0, 1]\n"
+    ));
+    assert!(msg.contains("both focal sheets are curves"), "{msg}");
+    // both inputs, none, a malformed point, too many trials
+    let (_, msg) = build_err(&format!("{PARAMETRIZED}{PARABOLOID}{pq}"));
+    assert!(msg.contains("either"), "{msg}");
+    let (_, msg) = build_err(PARAMETRIZED);
+    assert!(msg.contains("either"), "{msg}");
+    let (_, msg) = build_err(&format!(
+        "{PARAMETRIZED}p = [[[1, 0, 0]]]\nq = [[[0, 1, 0]]]\n"
+    ));
+    assert!(msg.contains("four coordinates"), "{msg}");
+    let (_, msg) = build_err(&format!("{PARAMETRIZED}{PARABOLOID}trials = 9\n"));
+    assert!(msg.contains("between 2 and 6"), "{msg}");
+    // a curve has no normal congruence
+    let (_, msg) = build_err(&format!(
+        "{PARAMETRIZED}surface = [[[1, 0, 0, 0]], [[0, 1, 1, 0]], [[0, 0, 0, 1]]]\n"
+    ));
+    assert!(msg.contains("tangent plane"), "{msg}");
+}

@@ -15,6 +15,7 @@
 use super::generation::{GeneratedNet, GenerationError};
 use super::net::{LineNet, NetError, NetKind, PointRow};
 use super::order_one::{CubicChordCongruence, OneNCongruence, OrderOneError};
+use super::parametrized::ParametrizedCongruence;
 use super::plucker::wedge;
 use crate::error::format_scalar;
 use crate::pn::poly::{patch_of, sign_on_domain, Domain, Sign};
@@ -76,6 +77,10 @@ pub enum CongruenceSpec<F> {
     /// along the generator `u = u₀` ([`GeneratedNet::from_ruled_surface_tangents`]): the
     /// power coefficients of `p` and `q` (homogeneous points) and `u₀`.
     RuledSurfaceTangents(Vec<[F; 4]>, Vec<[F; 4]>, F),
+    /// Any two-parameter congruence `p(u, v) ∨ q(u, v)` ([`ParametrizedCongruence`], e.g.
+    /// the normal congruence of a surface); an ideal `q` is drawn as the segment
+    /// `p + λq` ([`ParametrizedCongruence::segment_points`]).
+    Parametrized(Box<ParametrizedCongruence<F>>),
 }
 
 /// The drawn congruence: strips and the certificates of the congruence and of the weights.
@@ -184,6 +189,10 @@ pub fn congruence_strips<F: Scalar>(
             let (p, q) = net.line_points();
             (p, q, g.certify())
         }
+        CongruenceSpec::Parametrized(c) => {
+            let (p, q) = c.segment_points();
+            (p, q, c.certify())
+        }
     };
     // the drawn lines are the congruence lines p ∧ q (checked against the certified
     // congruence by the certificates above, which are stated for the same p, q or p ∧ q)
@@ -246,6 +255,49 @@ pub fn congruence_strips<F: Scalar>(
         patches,
         certificates: certs,
     })
+}
+
+/// A rational point family `f(u, v)` (homogeneous, weight first; e.g. a focal sheet of a
+/// congruence) as positive-weight rational Bézier patches on the rectangle
+/// `[u₀, u₁] × [v₀, v₁]`, with the weight certificate.
+///
+/// # Errors
+/// [`DrawError::EmptyInterval`], [`DrawError::PointAtInfinity`] (the weight vanishes on
+/// the rectangle; `strip` is 0 and `lambda` holds the `v` of the zero), [`DrawError::Input`]
+/// if the Bernstein conversion fails.
+pub fn point_family_patches<F: Scalar>(
+    f: &[MPoly<F>; 4],
+    u: (F, F),
+    v: (F, F),
+) -> Result<(Vec<BezierPatch<F>>, Certificate), DrawError> {
+    empty("u", &u)?;
+    empty("v", &v)?;
+    let dom =
+        Domain::new(u.0, u.1, v.0, v.1).map_err(|e| DrawError::EmptyInterval(e.to_string()))?;
+    let sign = match sign_on_domain(&f[0], &dom, 4096) {
+        Sign::Positive => F::one(),
+        Sign::Negative => -F::one(),
+        Sign::ZeroAt(z) | Sign::Changes(z, _) | Sign::Undecided(z) => {
+            return Err(DrawError::PointAtInfinity {
+                strip: 0,
+                u: format_scalar(&z[0]),
+                lambda: format_scalar(&z[1]),
+            })
+        }
+    };
+    let coords: Vec<MPoly<F>> = f.iter().map(|c| c.scale(&sign)).collect();
+    let patch = patch_of(&coords, &dom).map_err(|e| DrawError::Input(e.to_string()))?;
+    let split = split_patches_adaptive(vec![patch], SignRule::Positive, (6, 6))
+        .map_err(|e| DrawError::Input(e.to_string()))?;
+    let n = split.pieces.len();
+    let bad = split.failed;
+    let cert = Certificate::decide(
+        format!("every Bernstein weight of the {n} sheet patches is > 0"),
+        bad == 0,
+        F::EXACT,
+        || format!("{bad} pieces keep a weight ≤ 0"),
+    );
+    Ok((split.pieces, cert))
 }
 
 #[cfg(test)]

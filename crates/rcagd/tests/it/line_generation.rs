@@ -227,7 +227,7 @@ mod order_greater_one {
     use rcagd::lines::ParametrizedCongruence;
     use rcagd::Certified;
     use rcagd_algebra::mpoly::MPoly;
-    use rcagd_algebra::{Certificate, Rational};
+    use rcagd_algebra::{Certificate, Rational, Scalar};
 
     fn p(s: &[(i64, u32, u32)]) -> MPoly<Rational> {
         s.iter().fold(MPoly::zero(2), |a, &(c, i, j)| {
@@ -299,6 +299,9 @@ mod order_greater_one {
                 .iter()
                 .any(|c| c.property.contains("orthogonal to the surface")));
             assert_eq!(c.order_and_class().expect("count"), want, "{name}");
+            let oc = c.order_class(3).expect("decided");
+            assert_eq!((oc.order, oc.class, oc.mu), want, "{name}: {oc:?}");
+            assert!(oc.certificate().holds, "{name}: {oc:?}");
         }
         // a family that is not built as normals carries no normality claim
         let x = [
@@ -391,5 +394,105 @@ mod order_greater_one {
             ],
         );
         assert!(ruled.is_err());
+    }
+
+    /// Order and class decided over independent choices: the maximum is reached by at least
+    /// two of them (a non-generic choice only lowers a count), certified.
+    #[test]
+    fn order_class_decided_over_choices() {
+        let par = [
+            p(&[(1, 0, 0)]),
+            p(&[(1, 1, 0)]),
+            p(&[(1, 0, 1)]),
+            p(&[(1, 2, 0), (1, 0, 2)]),
+        ];
+        let c = ParametrizedCongruence::normals(par).expect("normals");
+        let oc = c.order_class(3).expect("decided");
+        assert_eq!((oc.order, oc.class, oc.mu), (3, 2, 1));
+        assert!(oc.certificate().holds, "{oc:?}");
+        assert!(oc.agreeing() >= 2);
+        // the (2, 2)-congruence of a conic and a line
+        let conic = [
+            p(&[(1, 0, 0), (1, 2, 0)]),
+            p(&[(2, 1, 0)]),
+            MPoly::zero(2),
+            p(&[(1, 0, 0), (-1, 2, 0)]),
+        ];
+        let g = [
+            p(&[(1, 0, 0)]),
+            p(&[(5, 0, 0)]),
+            p(&[(1, 0, 1)]),
+            MPoly::zero(2),
+        ];
+        let c = ParametrizedCongruence::new(conic, g).expect("(2, 2)");
+        let oc = c.order_class(3).expect("decided");
+        assert_eq!((oc.order, oc.class, oc.mu), (2, 2, 1));
+        assert!(oc.certificate().holds);
+    }
+
+    /// The normal congruence of the paraboloid of revolution z = u² + v² has rational focal
+    /// sheets (its principal curvatures are rational in u, v: the discriminant of the focal
+    /// polynomial is a square): the axis (a curve) and the evolute surface, certified on the
+    /// lines and focal. The elliptic paraboloid's sheets are irrational (no square).
+    #[test]
+    fn focal_sheets_of_a_square_discriminant() {
+        let par = [
+            p(&[(1, 0, 0)]),
+            p(&[(1, 1, 0)]),
+            p(&[(1, 0, 1)]),
+            p(&[(1, 2, 0), (1, 0, 2)]),
+        ];
+        let c = ParametrizedCongruence::normals(par).expect("normals");
+        let sheets = c.rational_focal_sheets().expect("rational sheets");
+        let kinds: Vec<bool> = sheets
+            .iter()
+            .map(ParametrizedCongruence::is_surface)
+            .collect();
+        assert_eq!(kinds.iter().filter(|k| **k).count(), 1, "one surface");
+        // the curve sheet is the axis x = y = 0
+        let axis = sheets
+            .iter()
+            .find(|s| !ParametrizedCongruence::is_surface(s))
+            .expect("axis");
+        assert!(axis[1].is_zero() && axis[2].is_zero());
+        let certs = c.certify();
+        assert!(Certificate::all_hold(&certs), "{certs:#?}");
+        assert_eq!(
+            certs
+                .iter()
+                .filter(|c| c.property.contains("focal sheet"))
+                .count(),
+            4
+        );
+        // the evolute at (u, v) = (1, 0): the centre of curvature of the meridian parabola
+        // z = x² at x = 1 is (−4, 0, 7/2)
+        let ev = sheets
+            .iter()
+            .find(|s| ParametrizedCongruence::is_surface(s))
+            .expect("evolute");
+        let at: Vec<Rational> = ev
+            .iter()
+            .map(|x| {
+                x.eval(&[Rational::from(1), Rational::from(0)])
+                    .expect("eval")
+            })
+            .collect();
+        let aff: Vec<Rational> = at[1..].iter().map(|x| x.clone() / at[0].clone()).collect();
+        assert_eq!(
+            aff,
+            vec![
+                Rational::from(-4),
+                Rational::from(0),
+                Rational::from_ratio(7, 2)
+            ]
+        );
+        let ell = ParametrizedCongruence::normals([
+            p(&[(1, 0, 0)]),
+            p(&[(1, 1, 0)]),
+            p(&[(1, 0, 1)]),
+            p(&[(1, 2, 0), (2, 0, 2)]),
+        ])
+        .expect("normals");
+        assert!(ell.rational_focal_sheets().is_none());
     }
 }
