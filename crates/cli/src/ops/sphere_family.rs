@@ -335,6 +335,11 @@ const SPHERE_FAMILY_RECOGNIZE: OpSpec = OpSpec {
         SPHERES,
         OTHER_SHEET,
         COMBINE,
+        ParamSpec::optional(
+            "at",
+            ParamKind::Points,
+            "family parameter points [[u, v], …]: also run the cyclographic construction (Gruber §3.1.2) at the spheres Φ(u, v) of the given family (recognition then construction, `SphereFamily::cyclographic_at`) and output the object NAME_contacts: the radii from each centre to its two contact points, certified on S ∩ S_u ∩ S_v of the given family; the contact points must be rational there (the normal line meets Ω in rational points), else a located error names them over Q(√d)",
+        ),
     ],
     example: r#"[[object]]
 name = "sphere_family_recognized_331"
@@ -397,5 +402,51 @@ fn build_recognized(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         .recognize()
         .map_err(|e| OpError::param("centre", e.to_string()))?;
     let certs = rec.certify();
-    envelope_object(args, rec.envelope(), certs)
+    let mut out = envelope_object(args, rec.envelope(), certs)?;
+    if args.get("at").is_some() {
+        out.push(family_contacts(args, &rec)?);
+    }
+    Ok(out)
+}
+
+/// The object `NAME_contacts` of `sphere_family_recognize`: the cyclographic construction
+/// at the family's spheres `Φ(u, v)` for the parameter points `at`.
+fn family_contacts(args: &OpArgs, rec: &rcagd::envelope::Recognition<Rational>) -> Result<Object, OpError> {
+    let mut curves = Vec::new();
+    let mut certs = Vec::new();
+    for uv in &args.points("at")? {
+        let [u, v] = <[Rational; 2]>::try_from(uv.clone()).map_err(|_| {
+            OpError::param("at", format!("a parameter point is [u, v], got {} numbers", uv.len()))
+        })?;
+        let fc = rec.cyclographic_at(&u, &v).map_err(|e| OpError::param("at", e.to_string()))?;
+        let pts = fc.rational_points().ok_or_else(|| {
+            let show = |p: &[rcagd_algebra::QuadExt; 3]| {
+                format!("({}, {}, {})", p[0], p[1], p[2])
+            };
+            OpError::param(
+                "at",
+                format!(
+                    "the contact points of the sphere Φ({u}, {v}) are irrational: {} and {} (the normal line meets Ω over a quadratic field); choose a parameter point where they are rational",
+                    show(&fc.points[0]),
+                    show(&fc.points[1])
+                ),
+            )
+        })?;
+        certs.extend(fc.certify());
+        let (m, _) = &fc.sphere;
+        let hom = |p: &[Rational; 3]| -> Vec<Rational> {
+            let mut h = vec![Rational::from(1)];
+            h.extend(p.iter().cloned());
+            h
+        };
+        for pt in &pts {
+            curves.push(
+                rcagd_geom::BezierCurve::from_homogeneous(vec![hom(m), hom(pt)])
+                    .map_err(|e| OpError::param("at", e.to_string()))?,
+            );
+        }
+    }
+    let mut o = args.object(Geometry::Curves(curves), certs);
+    o.name = format!("{}_contacts", args.name());
+    Ok(o)
 }

@@ -332,3 +332,35 @@ fn a_congruence_of_two_point_families_and_its_input_errors() {
     ));
     assert!(msg.contains("tangent plane"), "{msg}");
 }
+
+#[test]
+fn the_cyclographic_construction_runs_at_spheres_of_a_given_family() {
+    // Gruber (3.15) as a plain family: centres (−u², 2u, 2v), radii 4u + v²
+    let fam = format!(
+        "{HEAD}op = \"sphere_family_recognize\"\ncentre = [[[0, 0, 0], [0, 0, 2]], [[0, 2, 0], [0, 0, 0]], [[-1, 0, 0], [0, 0, 0]]]\nradius = [[0, 0, 1], [4, 0, 0]]\ndomain = [\"1/4\", 1, \"1/4\", 1]\n"
+    );
+    let objs = build(&format!("{fam}at = [[2, \"1/3\"]]\n"));
+    assert_eq!(objs.len(), 2);
+    let o = &objs[1];
+    assert_eq!(o.name, "f_contacts");
+    assert!(matches!(&o.geometry, Geometry::Curves(c) if c.len() == 2));
+    assert!(
+        o.certificates.iter().all(|c| c.holds && c.exact),
+        "{:#?}",
+        o.certificates
+    );
+    assert_eq!(
+        o.certificates
+            .iter()
+            .filter(|c| c.property.contains("on S_u"))
+            .count(),
+        2
+    );
+    // a timelike tangent plane (|u| < √3): no real contact point, located at `at`
+    let (line, msg) = build_err(&format!("{fam}at = [[\"1/2\", \"1/3\"]]\n"));
+    assert_eq!(line, 7, "{msg}");
+    assert!(msg.contains("timelike"), "{msg}");
+    // irrational contact points are named, not rounded
+    let (_, msg) = build_err(&format!("{fam}at = [[3, \"1/2\"]]\n"));
+    assert!(msg.contains("irrational") && msg.contains('√'), "{msg}");
+}
