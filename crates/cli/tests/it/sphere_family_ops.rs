@@ -364,3 +364,28 @@ fn the_cyclographic_construction_runs_at_spheres_of_a_given_family() {
     let (_, msg) = build_err(&format!("{fam}at = [[3, \"1/2\"]]\n"));
     assert!(msg.contains("irrational") && msg.contains('√'), "{msg}");
 }
+
+#[test]
+fn the_reguli_generation_of_a_net_is_drawn_and_certified() {
+    let reguli =
+        "[[object]]\nname = \"r\"\nop = \"line_congruence_strips\"\ncongruence = \"reguli\"\n";
+    let pts = "points = [[1, 1, 0, 0], [1, 0, 1, 1], [1, 0, 0, 0], [1, 0, 0, 1], [1, -1, 0, 0], [1, 0, -1, 1], [1, 1, 0, 0], [1, 0, -1, 1], [1, 0, 0, 0], [1, 0, 0, 1], [1, -1, 0, 0], [1, 0, 1, 1]]\n";
+    let objs = build(&format!(
+        "{reguli}{pts}u = [0, 1]\nv = [\"1/10\", \"9/10\"]\n"
+    ));
+    crate::common::assert_exact_patches_certifying(&objs[0], "are its generators");
+    crate::common::assert_exact_patches_certifying(&objs[0], "exactly two independent complexes");
+    assert_eq!(patch_count(&objs[0]), 2);
+    // two transversal parameters are needed
+    let (_, msg) = build_err(&format!("{reguli}{pts}u = [0, 1]\nv = [0]\n"));
+    assert!(msg.contains("two transversal parameters"), "{msg}");
+    // a regulus needs pairwise skew lines: a and b meet at the origin
+    let bad = "points = [[1, 0, 0, 0], [1, 0, 1, 1], [1, 0, 0, 0], [1, 0, 0, 1], [1, -1, 0, 0], [1, 0, -1, 1], [1, 1, 0, 0], [1, 0, -1, 1], [1, 0, 0, 0], [1, 0, 0, 1], [1, -1, 0, 0], [1, 0, 1, 1]]\n";
+    let (_, msg) = build_err(&format!(
+        "{reguli}{bad}u = [0, 1]\nv = [\"1/10\", \"9/10\"]\n"
+    ));
+    assert!(msg.contains("skew"), "{msg}");
+    // eleven points
+    let (_, msg) = build_err(&format!("{reguli}points = [[1, 0, 0, 0]]\n"));
+    assert!(msg.contains("needs 12 points"), "{msg}");
+}
