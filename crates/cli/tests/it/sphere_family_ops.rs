@@ -389,3 +389,36 @@ fn the_reguli_generation_of_a_net_is_drawn_and_certified() {
     let (_, msg) = build_err(&format!("{reguli}points = [[1, 0, 0, 0]]\n"));
     assert!(msg.contains("needs 12 points"), "{msg}");
 }
+
+#[test]
+fn the_cyclographic_image_of_a_plane_is_typed_and_certified() {
+    let head = "[[object]]\nname = \"p\"\nop = \"cyclographic_plane_image\"\n";
+    // cycles (u, v, 0) with radius 1 + u/2: spacelike, two image planes over Q(√3)
+    let objs = build(&format!(
+        "{head}point = [0, 0, 0, 1]\ndirections = [[1, 0, 0, \"1/2\"], [0, 1, 0, 0]]\ncycles = [[0, 0], [2, 0]]\n"
+    ));
+    let o = &objs[0];
+    crate::common::assert_exact_patches_certifying(o, "image plane 1 touches the cycle");
+    assert_eq!(patch_count(o), 32);
+    let kind = o.values.iter().find(|v| v.name == "kind").expect("kind");
+    assert!(matches!(&kind.value, rcagd_io::quantity::Quantity::Text(t) if t == "spacelike"));
+    // radius growing faster than the centre moves: timelike, no image plane
+    let objs = build(&format!(
+        "{head}point = [0, 0, 0, 1]\ndirections = [[1, 0, 0, 2], [0, 1, 0, 0]]\ncycles = [[0, 0]]\n"
+    ));
+    let kind = objs[0]
+        .values
+        .iter()
+        .find(|v| v.name == "kind")
+        .expect("kind");
+    assert!(matches!(&kind.value, rcagd_io::quantity::Quantity::Text(t) if t == "timelike"));
+    // a point cycle cannot be drawn; the radius direction alone spans no envelope
+    let (_, msg) = build_err(&format!(
+        "{head}point = [0, 0, 0, 1]\ndirections = [[1, 0, 0, 1], [0, 1, 0, 0]]\ncycles = [[-1, 0]]\n"
+    ));
+    assert!(msg.contains("(-1, 0)"), "{msg}");
+    let (_, msg) = build_err(&format!(
+        "{head}point = [0, 0, 0, 1]\ndirections = [[0, 0, 0, 1], [0, 1, 0, 0]]\n"
+    ));
+    assert!(msg.contains("g' × h'"), "{msg}");
+}
