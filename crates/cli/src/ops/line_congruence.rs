@@ -18,17 +18,17 @@ pub const OPS: &[OpSpec] = &[LINE_CONGRUENCE_STRIPS, LINE_CONGRUENCE_PARAMETRIZE
 
 const LINE_CONGRUENCE_STRIPS: OpSpec = OpSpec {
     name: "line_congruence_strips",
-    summary: "a line net or congruence of order one (net by its axes, pencil of planes with a projectivity, two reguli sharing two lines, chords of a twisted cubic, joins of a plane collineation, (1, n)-congruence of a line and a curve) drawn as ruled strips: the lines p(u, v) ∨ q(u, v) along v = v_k + twist·u, cut to the segments (1 − λ)p + λq; the congruence is certified (Klein quadric, complexes, fibration, order, class, focal sheets)",
+    summary: "a line net or congruence of order one (net by its axes, pencil of planes with a projectivity, a pencil of planes cut with a bundle of planes, two reguli sharing two lines, chords of a twisted cubic, joins of a plane collineation, (1, n)-congruence of a line and a curve) drawn as ruled strips: the lines p(u, v) ∨ q(u, v) along v = v_k + twist·u, cut to the segments (1 − λ)p + λq; the congruence is certified (Klein quadric, complexes, fibration, order, class, focal sheets)",
     params: &[
         ParamSpec::required(
             "congruence",
-            ParamKind::Choice(&["hyperbolic", "elliptic", "parabolic", "pencil", "cubic_chords", "collineation", "one_n", "ruled_tangents", "reguli"]),
+            ParamKind::Choice(&["hyperbolic", "elliptic", "parabolic", "pencil", "cubic_chords", "collineation", "one_n", "ruled_tangents", "reguli", "pencil_bundle"]),
             "the congruence type",
         ),
         ParamSpec::required(
             "points",
             ParamKind::Points,
-            "homogeneous points [x0, x1, x2, x3] (weight first): nets c0, c1, d0, d1 (axes c0 + u c1, d0 + v d1; parabolic: lines through c(u) to d0 + u d1 + v c1) or Re c0, Im c0, Re c1, Im c1 (elliptic); pencil c0, c1, e0, e1 (the point c0 + u c1 of the axis is mapped to the plane e0 + u e1 through it; lines through c(u) in that plane: a parabolic net); cubic_chords a0, a1, a2, a3 of k(t) = a0 + t a1 + t² a2 + t³ a3 (chord k(u) ∨ k(v)); collineation a0, a1, a2, b0, b1, b2 (κ(x0 a0 + x1 a1 + x2 a2) = x0 b0 + x1 b1 + x2 b2, lines x(u, v) ∨ κ(x(u, v)) with x = a0 + u a1 + v a2); one_n g0, g1 of the focal line (lines k(u) ∨ (g0 + v g1)); ruled_tangents: the power coefficients of p(t) (see `ruling`) of the ruled surface X(t, v) = p(t) + v q(t); reguli (Gruber §1.1.6: the net of two reguli sharing two lines) a0, a1, b0, b1, c0, c1 of three pairwise skew lines a, b, c of the first regulus, then the same for the second: one strip per regulus, its generators x(1 − u, u) (x(1, 0) = b, x(0, 1) = c) between the transversals through the points (1 − v)a0 + v a1 of a for the two values of `v`",
+            "homogeneous points [x0, x1, x2, x3] (weight first): nets c0, c1, d0, d1 (axes c0 + u c1, d0 + v d1; parabolic: lines through c(u) to d0 + u d1 + v c1) or Re c0, Im c0, Re c1, Im c1 (elliptic); pencil c0, c1, e0, e1 (the point c0 + u c1 of the axis is mapped to the plane e0 + u e1 through it; lines through c(u) in that plane: a parabolic net); cubic_chords a0, a1, a2, a3 of k(t) = a0 + t a1 + t² a2 + t³ a3 (chord k(u) ∨ k(v)); collineation a0, a1, a2, b0, b1, b2 (κ(x0 a0 + x1 a1 + x2 a2) = x0 b0 + x1 b1 + x2 b2, lines x(u, v) ∨ κ(x(u, v)) with x = a0 + u a1 + v a2); one_n g0, g1 of the focal line (lines k(u) ∨ (g0 + v g1)); ruled_tangents: the power coefficients of p(t) (see `ruling`) of the ruled surface X(t, v) = p(t) + v q(t); reguli (Gruber §1.1.6: the net of two reguli sharing two lines) a0, a1, b0, b1, c0, c1 of three pairwise skew lines a, b, c of the first regulus, then the same for the second: one strip per regulus, its generators x(1 − u, u) (x(1, 0) = b, x(0, 1) = c) between the transversals through the points (1 − v)a0 + v a1 of a for the two values of `v`; pencil_bundle (Gruber §1.1.6) the plane coordinates [u0, u1, u2, u3] (plane u0 + u1 x + u2 y + u3 z = 0) of ε0, ε1, φ0, φ1, φ2: the lines ε(u) ∩ φ(u, v) of the pencil ε0 + u ε1 about the axis and the bundle φ0 + u φ1 + v φ2 through a point off the axis, φ2 containing the axis (a parabolic net, drawn by its pencils about the vertices)",
         ),
         ParamSpec::optional(
             "curve",
@@ -111,6 +111,10 @@ fn build_strips(args: &OpArgs) -> Result<Vec<Object>, OpError> {
                 [pts[0].clone(), pts[1].clone(), pts[2].clone()],
                 [pts[3].clone(), pts[4].clone(), pts[5].clone()],
             )
+        }
+        "pencil_bundle" => {
+            need(5)?;
+            CongruenceSpec::PencilBundle(core::array::from_fn(|k| pts[k].clone()))
         }
         "reguli" => {
             need(12)?;

@@ -422,3 +422,19 @@ fn the_cyclographic_image_of_a_plane_is_typed_and_certified() {
     ));
     assert!(msg.contains("g' × h'"), "{msg}");
 }
+
+#[test]
+fn the_pencil_and_bundle_generation_is_drawn_and_certified() {
+    let head = "[[object]]\nname = \"b\"\nop = \"line_congruence_strips\"\ncongruence = \"pencil_bundle\"\n";
+    let objs = build(&format!(
+        "{head}points = [[0, 1, 0, 0], [0, 0, 0, 1], [-1, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]\nu = [\"1/2\", 2]\nv = [0, 1]\ntwist = 0\nlambda = [\"-1/2\", \"1/2\"]\n"
+    ));
+    crate::common::assert_exact_patches_certifying(&objs[0], "passes through the vertex c(u)");
+    // φ₂ (x − 1 + z = 0) misses the axis: a bundle of lines, not a net
+    let (_, msg) = build_err(&format!(
+        "{head}points = [[0, 1, 0, 0], [0, 0, 0, 1], [-1, 1, 0, 0], [0, 0, 1, 0], [-1, 1, 0, 1]]\n"
+    ));
+    assert!(msg.contains("φ₂ must contain the axis"), "{msg}");
+    let (_, msg) = build_err(&format!("{head}points = [[0, 1, 0, 0]]\n"));
+    assert!(msg.contains("needs 5 points"), "{msg}");
+}

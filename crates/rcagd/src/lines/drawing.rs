@@ -77,6 +77,9 @@ pub enum CongruenceSpec<F> {
     /// along the generator `u = u₀` ([`GeneratedNet::from_ruled_surface_tangents`]): the
     /// power coefficients of `p` and `q` (homogeneous points) and `u₀`.
     RuledSurfaceTangents(Vec<[F; 4]>, Vec<[F; 4]>, F),
+    /// The parabolic net cut by the pencil of planes `ε₀ + u ε₁` from the bundle of planes
+    /// `φ₀ + u φ₁ + v φ₂` ([`GeneratedNet::from_pencil_and_bundle`]): `[ε₀, ε₁, φ₀, φ₁, φ₂]`.
+    PencilBundle([[F; 4]; 5]),
     /// Any two-parameter congruence `p(u, v) ∨ q(u, v)` ([`ParametrizedCongruence`], e.g.
     /// the normal congruence of a surface); an ideal `q` is drawn as the segment
     /// `p + λq` ([`ParametrizedCongruence::segment_points`]).
@@ -172,6 +175,15 @@ pub fn congruence_strips<F: Scalar>(
         }
         CongruenceSpec::PencilProjectivity(c, e0, e1) => {
             let g = GeneratedNet::from_pencil_projectivity(c.clone(), e0, e1)?;
+            let net = g
+                .line_net()
+                .ok_or(DrawError::Net(NetError::DegenerateProjectivity))?;
+            let (p, q) = net.line_points();
+            (p, q, g.certify())
+        }
+        CongruenceSpec::PencilBundle(e) => {
+            let f = [e[2].clone(), e[3].clone(), e[4].clone()];
+            let g = GeneratedNet::from_pencil_and_bundle(&e[0], &e[1], &f)?;
             let net = g
                 .line_net()
                 .ok_or(DrawError::Net(NetError::DegenerateProjectivity))?;
