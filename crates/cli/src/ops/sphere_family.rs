@@ -23,6 +23,7 @@ pub const OPS: &[OpSpec] = &[
     SPHERE_FAMILY_ENVELOPE,
     SPHERE_FAMILY_RECOGNIZE,
     SPHERE_FAMILY_CYCLOGRAPHIC,
+    CYCLOGRAPHIC_PLANE_IMAGE,
 ];
 
 const SPHERE_FAMILY_ENVELOPE: OpSpec = OpSpec {
@@ -335,6 +336,11 @@ const SPHERE_FAMILY_RECOGNIZE: OpSpec = OpSpec {
         SPHERES,
         OTHER_SHEET,
         COMBINE,
+        ParamSpec::optional(
+            "at",
+            ParamKind::Points,
+            "family parameter points [[u, v], …]: also run the cyclographic construction (Gruber §3.1.2) at the spheres Φ(u, v) of the given family (recognition then construction, `SphereFamily::cyclographic_at`) and output the object NAME_contacts: the radii from each centre to its two contact points, certified on S ∩ S_u ∩ S_v of the given family; the contact points must be rational there (the normal line meets Ω in rational points), else a located error names them over Q(√d)",
+        ),
     ],
     example: r#"[[object]]
 name = "sphere_family_recognized_331"
@@ -397,5 +403,124 @@ fn build_recognized(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         .recognize()
         .map_err(|e| OpError::param("centre", e.to_string()))?;
     let certs = rec.certify();
-    envelope_object(args, rec.envelope(), certs)
+    let mut out = envelope_object(args, rec.envelope(), certs)?;
+    if args.get("at").is_some() {
+        out.push(family_contacts(args, &rec)?);
+    }
+    Ok(out)
+}
+
+/// The object `NAME_contacts` of `sphere_family_recognize`: the cyclographic construction
+/// at the family's spheres `Φ(u, v)` for the parameter points `at`.
+fn family_contacts(args: &OpArgs, rec: &rcagd::envelope::Recognition<Rational>) -> Result<Object, OpError> {
+    let mut curves = Vec::new();
+    let mut certs = Vec::new();
+    for uv in &args.points("at")? {
+        let [u, v] = <[Rational; 2]>::try_from(uv.clone()).map_err(|_| {
+            OpError::param("at", format!("a parameter point is [u, v], got {} numbers", uv.len()))
+        })?;
+        let fc = rec.cyclographic_at(&u, &v).map_err(|e| OpError::param("at", e.to_string()))?;
+        let pts = fc.rational_points().ok_or_else(|| {
+            let show = |p: &[rcagd_algebra::QuadExt; 3]| {
+                format!("({}, {}, {})", p[0], p[1], p[2])
+            };
+            OpError::param(
+                "at",
+                format!(
+                    "the contact points of the sphere Φ({u}, {v}) are irrational: {} and {} (the normal line meets Ω over a quadratic field); choose a parameter point where they are rational",
+                    show(&fc.points[0]),
+                    show(&fc.points[1])
+                ),
+            )
+        })?;
+        certs.extend(fc.certify());
+        let (m, _) = &fc.sphere;
+        let hom = |p: &[Rational; 3]| -> Vec<Rational> {
+            let mut h = vec![Rational::from(1)];
+            h.extend(p.iter().cloned());
+            h
+        };
+        for pt in &pts {
+            curves.push(
+                rcagd_geom::BezierCurve::from_homogeneous(vec![hom(m), hom(pt)])
+                    .map_err(|e| OpError::param("at", e.to_string()))?,
+            );
+        }
+    }
+    let mut o = args.object(Geometry::Curves(curves), certs);
+    o.name = format!("{}_contacts", args.name());
+    Ok(o)
+}
+
+const CYCLOGRAPHIC_PLANE_IMAGE: OpSpec = OpSpec {
+    name: "cyclographic_plane_image",
+    summary: "the cyclographic image of a 2-plane a + u g + v h of R^{3,1} (Gruber §1.2.2): its type (horizontal, spacelike, lightlike, timelike) and the oriented planes touching all its cycles (two, one or none, over Q(√d)), certified exactly over the extension; drawn as the cycles (spheres) at the given parameter points, the image planes reported as values",
+    params: &[
+        ParamSpec::required("point", ParamKind::Point, "the point a = [x, y, z, r] of the 2-plane: the cycle with centre (x, y, z) and signed radius r"),
+        ParamSpec::required("directions", ParamKind::Points, "the two directions g, h = [[x, y, z, r], [x, y, z, r]] spanning the 2-plane"),
+        ParamSpec::with_default("cycles", ParamKind::Points, "[[0, 0], [1, 0], [0, 1]]", "parameter points [u, v] of the cycles a + u g + v h drawn as exact sphere covers (at most 8; a zero radius is an error)"),
+    ],
+    example: r#"[[object]]
+name = "cyclographic_plane_image_spacelike"
+op = "cyclographic_plane_image"
+# cycles (u, v, 0) with radius 1 + u/2: a spacelike 2-plane, two image planes over Q(√3)
+point = [0, 0, 0, 1]
+directions = [[1, 0, 0, "1/2"], [0, 1, 0, 0]]
+cycles = [[0, 0], [2, 0], [-1, 1]]
+"#,
+    build: build_plane_image,
+};
+
+fn build_plane_image(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    use rcagd_io::quantity::{NamedQuantity, Quantity};
+    let four = |param: &'static str, p: &[Rational]| -> Result<[Rational; 4], OpError> {
+        <[Rational; 4]>::try_from(p.to_vec()).map_err(|_| {
+            OpError::param(param, format!("a point of R^{{3,1}} has four coordinates [x, y, z, r], got {}", p.len()))
+        })
+    };
+    let a = four("point", &args.point("point")?)?;
+    let dirs = args.points("directions")?;
+    let [g, h] = <[Vec<Rational>; 2]>::try_from(dirs.clone())
+        .map_err(|_| OpError::param("directions", format!("a 2-plane has two directions g, h, got {}", dirs.len())))?;
+    let (g, h) = (four("directions", &g)?, four("directions", &h)?);
+    let img = rcagd::cyclographic::plane_image(&a, &g, &h).map_err(|e| OpError::param("directions", e.to_string()))?;
+    let mut certs = img.certify();
+    let cycles = args.points("cycles")?;
+    if cycles.len() > 8 {
+        return Err(OpError::param("cycles", format!("at most 8 cycles, got {}", cycles.len())));
+    }
+    let mut patches: Vec<BezierPatch<Rational>> = Vec::new();
+    for uv in &cycles {
+        let [u, v] = <[Rational; 2]>::try_from(uv.clone())
+            .map_err(|_| OpError::param("cycles", format!("a parameter point is [u, v], got {} numbers", uv.len())))?;
+        let c: [Rational; 4] = core::array::from_fn(|i| &a[i] + &(&u * &g[i]) + &(&v * &h[i]));
+        let r = if c[3] < Rational::from(0) { -c[3].clone() } else { c[3].clone() };
+        let cover = rcagd::quadric::sphere_cover([c[0].clone(), c[1].clone(), c[2].clone()], [r.clone(), r.clone(), r])
+            .map_err(|e| OpError::param("cycles", format!("the cycle at ({u}, {v}): {e}")))?;
+        certs.extend(cover.certify());
+        patches.extend(cover.into_patches());
+    }
+    let mut o = args.object(Geometry::Patches(patches), certs);
+    let kind = match img.kind {
+        rcagd::cyclographic::PlaneImageKind::Horizontal => "horizontal",
+        rcagd::cyclographic::PlaneImageKind::Spacelike => "spacelike",
+        rcagd::cyclographic::PlaneImageKind::Lightlike => "lightlike",
+        rcagd::cyclographic::PlaneImageKind::Timelike => "timelike",
+    };
+    o.values.push(NamedQuantity::new("kind", "the type of the 2-plane and of its image (Gruber §1.2.2)", Quantity::Text(kind.into())));
+    o.values.push(NamedQuantity::new(
+        "planes",
+        "the image planes [e0, n1, n2, n3]: e0 + n·x = 0, |n| = 1, touching every cycle (over Q(√d))",
+        Quantity::Vector(
+            img.planes
+                .iter()
+                .map(|p| {
+                    let mut v = vec![Quantity::Quadratic(p.offset.clone())];
+                    v.extend(p.normal.iter().cloned().map(Quantity::Quadratic));
+                    Quantity::Vector(v)
+                })
+                .collect(),
+        ),
+    ));
+    Ok(vec![o])
 }

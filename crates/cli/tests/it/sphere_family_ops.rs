@@ -248,3 +248,193 @@ fn the_cyclographic_construction_draws_both_contact_points() {
     assert_eq!(line, 8, "{msg}");
     assert!(msg.contains("[s, t]"), "{msg}");
 }
+
+const PARAMETRIZED: &str = "[[object]]\nname = \"n\"\nop = \"line_congruence_parametrized\"\n";
+
+/// `[W, X, Y, Z]` power coefficients of the paraboloid z = u² + v² (rows u⁰, u¹, u²).
+const PARABOLOID: &str = "surface = [[[1, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], [[0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]], [[0, 0, 0, 1], [0, 0, 0, 0], [0, 0, 0, 0]]]\n";
+
+fn value_int(o: &Object, name: &str) -> i64 {
+    match o.values.iter().find(|v| v.name == name).map(|v| &v.value) {
+        Some(rcagd_io::quantity::Quantity::Integer(k)) => *k,
+        other => panic!("{name}: {other:?}"),
+    }
+}
+
+#[test]
+fn a_normal_congruence_is_drawn_with_order_class_and_its_rational_focal_sheet() {
+    let objs = build(&format!(
+        "{PARAMETRIZED}{PARABOLOID}u = [\"1/4\", 1]\nv = [0, \"1/2\"]\nlambda = [0, \"1/2\"]\nfocal_sheets = true\ndomain = [\"1/4\", 1, 0, \"1/2\"]\n"
+    ));
+    // the strips and the evolute; the axis (a focal curve) is reported, not drawn
+    assert_eq!(
+        objs.len(),
+        2,
+        "{:?}",
+        objs.iter().map(|o| &o.name).collect::<Vec<_>>()
+    );
+    crate::common::assert_exact_patches_certifying(&objs[0], "order 3 and class 2");
+    crate::common::assert_exact_patches_certifying(&objs[0], "focal sheet 1: det(p, q, f_u, f_v)");
+    crate::common::assert_exact_patches_certifying(&objs[0], "orthogonal to the surface");
+    assert_eq!(
+        (
+            value_int(&objs[0], "order"),
+            value_int(&objs[0], "class"),
+            value_int(&objs[0], "mu")
+        ),
+        (3, 2, 1)
+    );
+    assert_eq!(objs[1].name, "n_focal_1");
+    crate::common::assert_exact_patches_certifying(&objs[1], "sheet patches is > 0");
+    // the elliptic paraboloid z = u² + 2v²: irrational focal sheets, a located error
+    let (line, msg) = build_err(&format!(
+        "{PARAMETRIZED}surface = [[[1, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 2]], [[0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]], [[0, 0, 0, 1], [0, 0, 0, 0], [0, 0, 0, 0]]]\nfocal_sheets = true\ndomain = [0, 1, 0, 1]\n"
+    ));
+    assert_eq!(line, 5, "{msg}");
+    assert!(msg.contains("irrational"), "{msg}");
+    // without focal sheets it builds, order 5 and class 2
+    let objs = build(&format!(
+        "{PARAMETRIZED}surface = [[[1, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 2]], [[0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]], [[0, 0, 0, 1], [0, 0, 0, 0], [0, 0, 0, 0]]]\n"
+    ));
+    assert_eq!(
+        (value_int(&objs[0], "order"), value_int(&objs[0], "class")),
+        (5, 2)
+    );
+}
+
+#[test]
+fn a_congruence_of_two_point_families_and_its_input_errors() {
+    // the lines meeting the conic (1 + u², 2u, 0, 1 − u²) and the line (1, 5, v, 0): (2, 2),
+    // both focal sheets curves
+    let pq = "p = [[[1, 0, 0, 1]], [[0, 2, 0, 0]], [[1, 0, 0, -1]]]\nq = [[[1, 5, 0, 0], [0, 0, 1, 0]]]\n";
+    let objs = build(&format!(
+        "{PARAMETRIZED}{pq}u = [0, 1]\nv = [0, 1]\ntwist = 1\n"
+    ));
+    crate::common::assert_exact_patches_certifying(&objs[0], "order 2 and class 2");
+    let (_, msg) = build_err(&format!(
+        "{PARAMETRIZED}{pq}focal_sheets = true\ndomain = [0, 1, 0, 1]\n"
+    ));
+    assert!(msg.contains("both focal sheets are curves"), "{msg}");
+    // both inputs, none, a malformed point, too many trials
+    let (_, msg) = build_err(&format!("{PARAMETRIZED}{PARABOLOID}{pq}"));
+    assert!(msg.contains("either"), "{msg}");
+    let (_, msg) = build_err(PARAMETRIZED);
+    assert!(msg.contains("either"), "{msg}");
+    let (_, msg) = build_err(&format!(
+        "{PARAMETRIZED}p = [[[1, 0, 0]]]\nq = [[[0, 1, 0]]]\n"
+    ));
+    assert!(msg.contains("four coordinates"), "{msg}");
+    let (_, msg) = build_err(&format!("{PARAMETRIZED}{PARABOLOID}trials = 9\n"));
+    assert!(msg.contains("between 2 and 6"), "{msg}");
+    // a curve has no normal congruence
+    let (_, msg) = build_err(&format!(
+        "{PARAMETRIZED}surface = [[[1, 0, 0, 0]], [[0, 1, 1, 0]], [[0, 0, 0, 1]]]\n"
+    ));
+    assert!(msg.contains("tangent plane"), "{msg}");
+}
+
+#[test]
+fn the_cyclographic_construction_runs_at_spheres_of_a_given_family() {
+    // Gruber (3.15) as a plain family: centres (−u², 2u, 2v), radii 4u + v²
+    let fam = format!(
+        "{HEAD}op = \"sphere_family_recognize\"\ncentre = [[[0, 0, 0], [0, 0, 2]], [[0, 2, 0], [0, 0, 0]], [[-1, 0, 0], [0, 0, 0]]]\nradius = [[0, 0, 1], [4, 0, 0]]\ndomain = [\"1/4\", 1, \"1/4\", 1]\n"
+    );
+    let objs = build(&format!("{fam}at = [[2, \"1/3\"]]\n"));
+    assert_eq!(objs.len(), 2);
+    let o = &objs[1];
+    assert_eq!(o.name, "f_contacts");
+    assert!(matches!(&o.geometry, Geometry::Curves(c) if c.len() == 2));
+    assert!(
+        o.certificates.iter().all(|c| c.holds && c.exact),
+        "{:#?}",
+        o.certificates
+    );
+    assert_eq!(
+        o.certificates
+            .iter()
+            .filter(|c| c.property.contains("on S_u"))
+            .count(),
+        2
+    );
+    // a timelike tangent plane (|u| < √3): no real contact point, located at `at`
+    let (line, msg) = build_err(&format!("{fam}at = [[\"1/2\", \"1/3\"]]\n"));
+    assert_eq!(line, 7, "{msg}");
+    assert!(msg.contains("timelike"), "{msg}");
+    // irrational contact points are named, not rounded
+    let (_, msg) = build_err(&format!("{fam}at = [[3, \"1/2\"]]\n"));
+    assert!(msg.contains("irrational") && msg.contains('√'), "{msg}");
+}
+
+#[test]
+fn the_reguli_generation_of_a_net_is_drawn_and_certified() {
+    let reguli =
+        "[[object]]\nname = \"r\"\nop = \"line_congruence_strips\"\ncongruence = \"reguli\"\n";
+    let pts = "points = [[1, 1, 0, 0], [1, 0, 1, 1], [1, 0, 0, 0], [1, 0, 0, 1], [1, -1, 0, 0], [1, 0, -1, 1], [1, 1, 0, 0], [1, 0, -1, 1], [1, 0, 0, 0], [1, 0, 0, 1], [1, -1, 0, 0], [1, 0, 1, 1]]\n";
+    let objs = build(&format!(
+        "{reguli}{pts}u = [0, 1]\nv = [\"1/10\", \"9/10\"]\n"
+    ));
+    crate::common::assert_exact_patches_certifying(&objs[0], "are its generators");
+    crate::common::assert_exact_patches_certifying(&objs[0], "exactly two independent complexes");
+    assert_eq!(patch_count(&objs[0]), 2);
+    // two transversal parameters are needed
+    let (_, msg) = build_err(&format!("{reguli}{pts}u = [0, 1]\nv = [0]\n"));
+    assert!(msg.contains("two transversal parameters"), "{msg}");
+    // a regulus needs pairwise skew lines: a and b meet at the origin
+    let bad = "points = [[1, 0, 0, 0], [1, 0, 1, 1], [1, 0, 0, 0], [1, 0, 0, 1], [1, -1, 0, 0], [1, 0, -1, 1], [1, 1, 0, 0], [1, 0, -1, 1], [1, 0, 0, 0], [1, 0, 0, 1], [1, -1, 0, 0], [1, 0, 1, 1]]\n";
+    let (_, msg) = build_err(&format!(
+        "{reguli}{bad}u = [0, 1]\nv = [\"1/10\", \"9/10\"]\n"
+    ));
+    assert!(msg.contains("skew"), "{msg}");
+    // eleven points
+    let (_, msg) = build_err(&format!("{reguli}points = [[1, 0, 0, 0]]\n"));
+    assert!(msg.contains("needs 12 points"), "{msg}");
+}
+
+#[test]
+fn the_cyclographic_image_of_a_plane_is_typed_and_certified() {
+    let head = "[[object]]\nname = \"p\"\nop = \"cyclographic_plane_image\"\n";
+    // cycles (u, v, 0) with radius 1 + u/2: spacelike, two image planes over Q(√3)
+    let objs = build(&format!(
+        "{head}point = [0, 0, 0, 1]\ndirections = [[1, 0, 0, \"1/2\"], [0, 1, 0, 0]]\ncycles = [[0, 0], [2, 0]]\n"
+    ));
+    let o = &objs[0];
+    crate::common::assert_exact_patches_certifying(o, "image plane 1 touches the cycle");
+    assert_eq!(patch_count(o), 32);
+    let kind = o.values.iter().find(|v| v.name == "kind").expect("kind");
+    assert!(matches!(&kind.value, rcagd_io::quantity::Quantity::Text(t) if t == "spacelike"));
+    // radius growing faster than the centre moves: timelike, no image plane
+    let objs = build(&format!(
+        "{head}point = [0, 0, 0, 1]\ndirections = [[1, 0, 0, 2], [0, 1, 0, 0]]\ncycles = [[0, 0]]\n"
+    ));
+    let kind = objs[0]
+        .values
+        .iter()
+        .find(|v| v.name == "kind")
+        .expect("kind");
+    assert!(matches!(&kind.value, rcagd_io::quantity::Quantity::Text(t) if t == "timelike"));
+    // a point cycle cannot be drawn; the radius direction alone spans no envelope
+    let (_, msg) = build_err(&format!(
+        "{head}point = [0, 0, 0, 1]\ndirections = [[1, 0, 0, 1], [0, 1, 0, 0]]\ncycles = [[-1, 0]]\n"
+    ));
+    assert!(msg.contains("(-1, 0)"), "{msg}");
+    let (_, msg) = build_err(&format!(
+        "{head}point = [0, 0, 0, 1]\ndirections = [[0, 0, 0, 1], [0, 1, 0, 0]]\n"
+    ));
+    assert!(msg.contains("g' × h'"), "{msg}");
+}
+
+#[test]
+fn the_pencil_and_bundle_generation_is_drawn_and_certified() {
+    let head = "[[object]]\nname = \"b\"\nop = \"line_congruence_strips\"\ncongruence = \"pencil_bundle\"\n";
+    let objs = build(&format!(
+        "{head}points = [[0, 1, 0, 0], [0, 0, 0, 1], [-1, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]\nu = [\"1/2\", 2]\nv = [0, 1]\ntwist = 0\nlambda = [\"-1/2\", \"1/2\"]\n"
+    ));
+    crate::common::assert_exact_patches_certifying(&objs[0], "passes through the vertex c(u)");
+    // φ₂ (x − 1 + z = 0) misses the axis: a bundle of lines, not a net
+    let (_, msg) = build_err(&format!(
+        "{head}points = [[0, 1, 0, 0], [0, 0, 0, 1], [-1, 1, 0, 0], [0, 0, 1, 0], [-1, 1, 0, 1]]\n"
+    ));
+    assert!(msg.contains("φ₂ must contain the axis"), "{msg}");
+    let (_, msg) = build_err(&format!("{head}points = [[0, 1, 0, 0]]\n"));
+    assert!(msg.contains("needs 5 points"), "{msg}");
+}

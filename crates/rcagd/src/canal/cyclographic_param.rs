@@ -18,13 +18,24 @@
 //!
 //! [`canal_surface_rational`] tries the spine-parameter constructions
 //! ([`canal_surface_pole_free`]) first and falls back to `Γ` when they need `Q(√d)`.
+//!
+//! **Non-constant weight.** A rational family `k(p) = (M, R)(p)/W(p)` of degree `n ≤ 2`
+//! whose weight is `W = c(p − ρ)ⁿ` (a single rational root of multiplicity `n`) becomes
+//! polynomial under the Möbius change `p = ρ + 1/p'`: every homogeneous coordinate
+//! `P(p)` becomes `P'(p') = p'ⁿ P((ρp' + 1)/p') = Σ_k P_k (ρp' + 1)^k p'^{n−k}`, and
+//! `W' = c` is constant ([`polynomial_form`]). The spheres are the same, so `Γ(s, t)` (which
+//! depends only on the family of spheres, not on its parameter) is built from the
+//! polynomial form; the identity `P'(p') W(ρp' + 1, p') ≡ W' P(ρp' + 1, p')` (homogeneous
+//! forms) is certified. Other weights (two distinct roots, an irreducible quadratic, a
+//! simple root with `n = 2`) make the contact condition quadratic in `p` and are refused
+//! (`IrrationalSplit`).
 
 use super::envelope::{CanalBuild, CanalOptions, CanalSurface, QuadraticCanal};
 use super::frame::{canal_surface_pole_free, EXPORT_SPLITS};
 use super::{CanalError, CanalSpine};
 use crate::error::format_scalar;
 use crate::Certified;
-use rcagd_algebra::{Certificate, Rational};
+use rcagd_algebra::{Certificate, Poly, Rational};
 use rcagd_geom::weight_sign::{split_patches_adaptive, SignRule};
 use rcagd_geom::BezierPatch;
 
@@ -44,6 +55,73 @@ pub struct CyclographicCanal {
     surface: QuadraticCanal<Rational>,
     radicand: Rational,
     patches: Vec<BezierPatch<Rational>>,
+    /// For a family with weight `c(p − ρ)ⁿ`: `ρ` and the identity residuals of the Möbius
+    /// change (module docs).
+    mobius: Option<(Rational, Vec<Poly<Rational>>)>,
+}
+
+/// `p'ⁿ P((ρp' + 1)/p')` for `P` of degree `≤ n`.
+fn mobius_poly(p: &Poly<Rational>, rho: &Rational, n: usize) -> Poly<Rational> {
+    let lin = Poly::new(vec![Rational::from(1), rho.clone()]);
+    let x = Poly::new(vec![Rational::from(0), Rational::from(1)]);
+    (0..=n).fold(Poly::zero(), |acc, k| {
+        let c = p.coeff(k);
+        if c == Rational::from(0) {
+            return acc;
+        }
+        &acc + &(&lin.pow(k as u32) * &x.pow((n - k) as u32)).scale(&c)
+    })
+}
+
+/// The polynomial form of a family of degree `n ≤ 2` with weight `c(p − ρ)ⁿ` under the
+/// Möbius change `p = ρ + 1/p'` (module docs): `Some((spine', ρ))`, `None` if the weight is
+/// constant already or has another shape.
+pub fn polynomial_form(spine: &CanalSpine<Rational>) -> Option<(CanalSpine<Rational>, Rational)> {
+    let w = spine.weight();
+    let dw = w.degree()?;
+    let n = spine.homogeneous().iter().filter_map(Poly::degree).max()?;
+    if dw == 0 || dw != n || n > 2 {
+        return None;
+    }
+    let lead = w.coeff(n);
+    let rho = -w.coeff(n - 1) / (Rational::from(n as i64) * lead.clone());
+    // W = lead·(p − ρ)ⁿ exactly
+    let root = Poly::new(vec![-rho.clone(), Rational::from(1)]);
+    if w != &root.pow(n as u32).scale(&lead) {
+        return None;
+    }
+    let m = spine.center_polys();
+    let spine2 = CanalSpine::new(
+        Poly::constant(lead),
+        [
+            mobius_poly(&m[0], &rho, n),
+            mobius_poly(&m[1], &rho, n),
+            mobius_poly(&m[2], &rho, n),
+        ],
+        mobius_poly(spine.radius_poly(), &rho, n),
+    )
+    .ok()?;
+    Some((spine2, rho))
+}
+
+/// The residuals `P'(p')·W(ρp' + 1, p') − W'·P(ρp' + 1, p')` of the Möbius change
+/// (homogeneous forms of degree `n`; all zero when the two families agree).
+fn mobius_residuals(
+    old: &CanalSpine<Rational>,
+    new: &CanalSpine<Rational>,
+    rho: &Rational,
+) -> Vec<Poly<Rational>> {
+    let n = old
+        .homogeneous()
+        .iter()
+        .filter_map(Poly::degree)
+        .max()
+        .unwrap_or(0);
+    let (ho, hn) = (old.homogeneous(), new.homogeneous());
+    let w_old = mobius_poly(&ho[0], rho, n);
+    (1..5)
+        .map(|k| &(&hn[k] * &w_old) - &(&mobius_poly(&ho[k], rho, n) * &hn[0]))
+        .collect()
 }
 
 impl CyclographicCanal {
@@ -68,6 +146,16 @@ impl Certified for CyclographicCanal {
     /// characteristic plane; `w ⊥ k̇`), and the positive weights of the pieces.
     fn certify(&self) -> Vec<Certificate> {
         let mut out = self.surface.certify();
+        if let Some((rho, res)) = &self.mobius {
+            out.push(Certificate::decide(
+                format!(
+                    "the family with weight c(p − ({rho}))ⁿ is the polynomial family of p' = 1/(p − ({rho})): P'(p')·W(ρp' + 1, p') ≡ W'·P(ρp' + 1, p') for the centre and the radius"
+                ),
+                res.iter().all(Poly::is_zero),
+                true,
+                || format!("{} non-zero residuals", res.iter().filter(|r| !r.is_zero()).count()),
+            ));
+        }
         let n = self.patches.len();
         let ok = self
             .patches
@@ -104,10 +192,17 @@ pub fn canal_surface_rational(
         CanalBuild::Rational(s) => return Ok(RationalCanal::Spine(Box::new(s))),
         CanalBuild::Extension { radicand, .. } => radicand,
     };
-    let Ok(surface) = QuadraticCanal::from_spine(spine) else {
-        return Err(CanalError::IrrationalSplit {
-            radicand: format_scalar(&radicand),
-        });
+    let (surface, mobius) = match QuadraticCanal::from_spine(spine) {
+        Ok(s) => (s, None),
+        Err(_) => {
+            let irr = || CanalError::IrrationalSplit {
+                radicand: format_scalar(&radicand),
+            };
+            let (poly, rho) = polynomial_form(spine).ok_or_else(irr)?;
+            let s = QuadraticCanal::from_spine(&poly).map_err(|_| irr())?;
+            let res = mobius_residuals(spine, &poly, &rho);
+            (s, Some((rho, res)))
+        }
     };
     let Some([s0, s1, t0, t1]) = cyclographic_domain else {
         return Err(CanalError::CyclographicDomainNeeded {
@@ -139,5 +234,6 @@ pub fn canal_surface_rational(
         surface,
         radicand,
         patches: split.pieces,
+        mobius,
     })))
 }

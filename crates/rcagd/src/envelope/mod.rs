@@ -18,7 +18,7 @@ pub mod recognition;
 pub mod sphere_family;
 
 pub use quadratic_class::peters_reif_class;
-pub use recognition::{Recognition, RecognitionError, SphereFamily};
+pub use recognition::{FamilyContacts, Recognition, RecognitionError, SphereFamily};
 pub use sphere_family::{
     CyclographicEnvelope, DirectEnvelope, EnvelopedSphere, SphereFamilyEnvelope, SphereFamilyError,
     Subcase, Support,

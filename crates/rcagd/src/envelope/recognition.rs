@@ -38,7 +38,7 @@ use crate::lines::net::{CPoly, NetParameters};
 use crate::lines::plucker::{
     coordinate_plane_points, klein_form, reciprocal_product, swap, wedge, POINT_PAIRS,
 };
-use crate::lines::{ComplexPointRow, LineNet, PointRow};
+use crate::lines::{ComplexPointRow, LineNet, PointRow, SqrtScalar};
 use crate::pn::poly::{cancel_gcd, div_exact, gcd2, identity_cert, mag, normalize_content};
 use crate::Certified;
 use rcagd_algebra::mpoly::MPoly;
@@ -225,6 +225,185 @@ impl<F: Scalar> Recognition<F> {
     /// The net parameters as rational functions of the family's parameters `(u, v)`.
     pub fn net_parameters(&self) -> &NetParameters<F> {
         &self.params
+    }
+}
+
+/// The cyclographic construction (Gruber 2008 §3.1.2) at one sphere `Φ(u, v)` of a directly
+/// given family ([`SphereFamily::cyclographic_at`]): the family parameters, the net
+/// parameters of the recognized net, the sphere and its two contact points with the
+/// envelope (over the square-root extension: rational exactly when the normal line meets
+/// Ω in rational points).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FamilyContacts<F: SqrtScalar> {
+    /// The family parameters `(u, v)`.
+    pub parameters: [F; 2],
+    /// The net parameters of the sphere (the recognized net's `(u, v)`).
+    pub net_parameters: [F; 2],
+    /// The sphere `(centre, signed radius)` of the given family.
+    pub sphere: ([F; 3], F),
+    /// The two contact points `S ∩ S_u ∩ S_v`.
+    pub points: [[F::Ext; 3]; 2],
+    /// The family's centre and radius derivatives `(m_u, r_u)`, `(m_v, r_v)` at `(u, v)`.
+    derivatives: [([F; 3], F); 2],
+}
+
+impl<F: SqrtScalar> FamilyContacts<F> {
+    /// The contact points as rationals of the base field, `None` if irrational.
+    pub fn rational_points(&self) -> Option<[[F; 3]; 2]> {
+        let back = |x: &F::Ext| x.to_rational().map(|r| F::from_rational(&r));
+        let pt = |p: &[F::Ext; 3]| -> Option<[F; 3]> {
+            Some([back(&p[0])?, back(&p[1])?, back(&p[2])?])
+        };
+        Some([pt(&self.points[0])?, pt(&self.points[1])?])
+    }
+}
+
+impl<F: SqrtScalar> Certified for FamilyContacts<F> {
+    /// For both points `x`, with the given family's own centre `m`, radius `r` and their
+    /// derivatives at `(u, v)` (independent of the recovered net): `|x − m|² = r²` (on the
+    /// sphere `S`), `⟨x − m, m_u⟩ + r r_u = 0` and `⟨x − m, m_v⟩ + r r_v = 0` (on `S_u` and
+    /// `S_v`: the characteristic points of the family, Gruber §3.1.1) — exact over the
+    /// extension field.
+    fn certify(&self) -> Vec<Certificate> {
+        let (m, r) = &self.sphere;
+        let e = |x: &F| x.embed();
+        let mut out = Vec::new();
+        let [u, v] = &self.parameters;
+        for (k, x) in self.points.iter().enumerate() {
+            let d: [F::Ext; 3] = core::array::from_fn(|i| x[i].clone() - e(&m[i]));
+            let dot = |a: &[F::Ext; 3], b: &[F::Ext; 3]| {
+                a.iter()
+                    .zip(b)
+                    .fold(<F::Ext as num_traits::Zero>::zero(), |acc, (p, q)| {
+                        acc + p.clone() * q.clone()
+                    })
+            };
+            let on = dot(&d, &d) - e(r) * e(r);
+            let mut checks = vec![("on the sphere S: |x − m|² − r² = 0", on)];
+            for ((mu, ru), name) in self.derivatives.iter().zip(["S_u", "S_v"]) {
+                let mu_e: [F::Ext; 3] = core::array::from_fn(|i| e(&mu[i]));
+                let val = dot(&d, &mu_e) + e(r) * e(ru);
+                checks.push((
+                    if name == "S_u" {
+                        "on S_u: ⟨x − m, m_u⟩ + r r_u = 0"
+                    } else {
+                        "on S_v: ⟨x − m, m_v⟩ + r r_v = 0"
+                    },
+                    val,
+                ));
+            }
+            for (what, val) in checks {
+                out.push(Certificate::decide(
+                    format!(
+                        "contact point {} of the sphere Φ({}, {}) (cyclographic construction, Gruber §3.1.2) {what}",
+                        k + 1,
+                        format_scalar(u),
+                        format_scalar(v)
+                    ),
+                    crate::lines::is_small(&val, 1.0),
+                    F::EXACT,
+                    || format_scalar(&val),
+                ));
+            }
+        }
+        out
+    }
+}
+
+impl<F: SqrtScalar> SphereFamily<F> {
+    /// The sphere `Φ(u, v)`, its centre and radius derivatives at `(u, v)` (quotient rule).
+    #[allow(clippy::type_complexity)]
+    fn jet(&self, u: &F, v: &F) -> Result<(([F; 3], F), [([F; 3], F); 2]), RecognitionError> {
+        let x = [u.clone(), v.clone()];
+        let ev = |p: &MPoly<F>| {
+            p.eval(&x)
+                .map_err(|e| RecognitionError::InvalidInput(e.to_string()))
+        };
+        let w = ev(&self.den)?;
+        if w.is_zero() {
+            return Err(RecognitionError::InvalidInput(format!(
+                "the family has a pole at ({}, {}): W = 0",
+                format_scalar(u),
+                format_scalar(v)
+            )));
+        }
+        let n: Vec<F> = self.num.iter().map(ev).collect::<Result<_, _>>()?;
+        let val: Vec<F> = n.iter().map(|c| c.clone() / w.clone()).collect();
+        let mut ders = Vec::with_capacity(2);
+        for i in 0..2 {
+            let wi = ev(&self.den.partial(i))?;
+            let d: Vec<F> = self
+                .num
+                .iter()
+                .zip(&n)
+                .map(|(p, nk)| {
+                    ev(&p.partial(i)).map(|ni| {
+                        (ni * w.clone() - nk.clone() * wi.clone()) / (w.clone() * w.clone())
+                    })
+                })
+                .collect::<Result<_, _>>()?;
+            ders.push(([d[0].clone(), d[1].clone(), d[2].clone()], d[3].clone()));
+        }
+        let [du, dv] = <[([F; 3], F); 2]>::try_from(ders)
+            .map_err(|_| RecognitionError::InvalidInput("two derivatives".into()))?;
+        Ok((
+            (
+                [val[0].clone(), val[1].clone(), val[2].clone()],
+                val[3].clone(),
+            ),
+            [du, dv],
+        ))
+    }
+
+    /// Recognition and the cyclographic construction in one call: the family is
+    /// recognized ([`Self::recognize`]), `(u, v)` mapped to the net parameters of the
+    /// recovered net, and the construction of Gruber §3.1.2
+    /// ([`SphereFamilyEnvelope::cyclographic_envelope`]) run at the sphere `Φ(u, v)`; the
+    /// result is certified against the family's own derivatives ([`FamilyContacts`]).
+    ///
+    /// # Errors
+    /// The recognition's errors; [`RecognitionError::InvalidInput`] for a pole of the family
+    /// or of the net parameters at `(u, v)`; [`RecognitionError::Envelope`] if the
+    /// construction fails there (a singular point of Φ, a timelike tangent plane: no real
+    /// contact point).
+    pub fn cyclographic_at(&self, u: &F, v: &F) -> Result<FamilyContacts<F>, RecognitionError> {
+        let rec = self.recognize()?;
+        rec.cyclographic_at(u, v)
+    }
+}
+
+impl<F: SqrtScalar> Recognition<F> {
+    /// The cyclographic construction at the sphere `Φ(u, v)` of the recognized family
+    /// ([`SphereFamily::cyclographic_at`]).
+    ///
+    /// # Errors
+    /// As [`SphereFamily::cyclographic_at`] without the recognition.
+    pub fn cyclographic_at(&self, u: &F, v: &F) -> Result<FamilyContacts<F>, RecognitionError> {
+        let x = [u.clone(), v.clone()];
+        let ev = |p: &MPoly<F>| p.eval(&x).unwrap_or_else(|_| F::zero());
+        let (a, b, c, d) = (
+            ev(&self.params.first),
+            ev(&self.params.first_den),
+            ev(&self.params.second),
+            ev(&self.params.second_den),
+        );
+        if b.is_zero() || d.is_zero() {
+            return Err(RecognitionError::InvalidInput(format!(
+                "the net parameters have a pole at ({}, {})",
+                format_scalar(u),
+                format_scalar(v)
+            )));
+        }
+        let (p, q) = (a / b, c / d);
+        let (sphere, derivatives) = self.family.jet(u, v)?;
+        let ce = self.envelope.cyclographic_envelope(&p, &q)?;
+        Ok(FamilyContacts {
+            parameters: [u.clone(), v.clone()],
+            net_parameters: [p, q],
+            sphere,
+            points: ce.points,
+            derivatives,
+        })
     }
 }
 

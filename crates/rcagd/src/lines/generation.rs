@@ -20,6 +20,12 @@
 //!   projectively to the planes `ε(u)` through `a`; the pencils of lines about `c(u)` in
 //!   `ε(u)` form a parabolic net with focal line `a`
 //!   ([`GeneratedNet::from_pencil_projectivity`]);
+//! * a **pencil of planes cut with a bundle of planes**: the planes `ε(u) = ε₀ + u ε₁` about
+//!   the axis `a` and the planes `φ(u, v) = φ₀ + u φ₁ + v φ₂` through a point `P ∉ a` with
+//!   `φ₂ ⊃ a` (the plane `[a, P]`); the lines `ε(u) ∩ φ(u, v)` form the parabolic net whose
+//!   pencil about the vertex `c(u) = ε₀ ∩ ε₁ ∩ (φ₀ + u φ₁)` lies in `ε(u)` (Gruber 2008 §1.1.6,
+//!   "Parabolisches Netz": the dual of the lines `c(u) ∨ d(u, v)` joining the points of the
+//!   axis with the points of a plane; [`GeneratedNet::from_pencil_and_bundle`]);
 //! * the **tangents of a ruled surface along a non-torsal generator** `g`: the tangent plane
 //!   `T(v) = [X, X_u, X_v]` at `X(u₀, v) = p(u₀) + v q(u₀)` is a projective image of the
 //!   point, the tangent lines form the parabolic net of that projectivity
@@ -65,6 +71,10 @@ pub enum GenerationError {
     /// The planes of a pencil projectivity coincide (a constant map, no projectivity).
     #[error("the planes ε₀ and ε₁ coincide: u ↦ ε₀ + u ε₁ is no projectivity")]
     DegeneratePencil,
+    /// The planes of a bundle are dependent (no carrier point) or the carrier point lies
+    /// on the axis of the pencil.
+    #[error("degenerate bundle of planes: {0}")]
+    DegenerateBundle(String),
     /// The generator of a ruled surface is torsal: the tangent plane is the same along it.
     #[error("the generator at u = {0} is torsal: det(p, q, p', q') = 0, all its points have one tangent plane (no parabolic net)")]
     TorsalGenerator(String),
@@ -87,6 +97,8 @@ pub enum Generation {
     PencilProjectivity,
     /// Tangents of a ruled surface along a non-torsal generator.
     RuledSurfaceTangents,
+    /// A pencil of planes cut with a bundle of planes.
+    PencilBundle,
 }
 
 /// A two-parameter family of lines with polynomial Plücker coordinates in `(u, v)`.
@@ -342,6 +354,83 @@ impl<F: Scalar> GeneratedNet<F> {
                 "every net line through c(u) lies in the plane ε(u) of the projectivity".into(),
                 inc,
             )],
+        )
+    }
+
+    /// The parabolic net cut by the pencil of planes `ε(u) = ε₀ + u ε₁` from the bundle of
+    /// planes `φ(u, v) = φ₀ + u φ₁ + v φ₂` (module docs; Gruber 2008 §1.1.6): the lines
+    /// `l(u, v) = ε(u) ∩ φ(u, v)` (axis coordinates `ε(u) ∧ φ(u, v)`, Gruber (1.1) for
+    /// planes). For fixed `u` they pass through the vertex `c(u) = ε₀ ∩ ε₁ ∩ (φ₀ + uφ₁)` (the
+    /// pencil of `φ(u, ·)` has its axis in `φ₂`, which meets `ε(u)` in `a`), so the net is the
+    /// pencil projectivity `c(u) ↦ ε(u)` ([`Self::from_pencil_projectivity`]). Certified:
+    /// Klein and both complexes for the generated lines and for the net's own lines, and
+    /// `c(u) ∈ l(u, v)` identically.
+    ///
+    /// # Errors
+    /// [`GenerationError::DegeneratePencil`] for `ε₀ ∥ ε₁`;
+    /// [`GenerationError::DegenerateBundle`] if `φ₀, φ₁, φ₂` have no single common point `P`
+    /// or `P` lies on the axis; [`GenerationError::NotANet`] if `φ₂` does not contain the axis
+    /// (then all vertices coincide: the lines form a bundle), or if `u ↦ c(u)` is constant.
+    pub fn from_pencil_and_bundle(
+        e0: &[F; 4],
+        e1: &[F; 4],
+        f: &[[F; 4]; 3],
+    ) -> Result<Self, GenerationError> {
+        if proportional(e0, e1) {
+            return Err(GenerationError::DegeneratePencil);
+        }
+        let p = plane3(&f[0], &f[1], &f[2]);
+        let sp = scale_of(&f[0]) * scale_of(&f[1]) * scale_of(&f[2]);
+        if p.iter().all(|x| is_small(x, sp)) {
+            return Err(GenerationError::DegenerateBundle(format!(
+                "the planes {}, {}, {} share a line (no single carrier point)",
+                fmt_vec(&f[0]),
+                fmt_vec(&f[1]),
+                fmt_vec(&f[2])
+            )));
+        }
+        let se = scale_of(&p) * scale_of(e0).max(scale_of(e1));
+        if is_small(&dot4(e0, &p), se) && is_small(&dot4(e1, &p), se) {
+            return Err(GenerationError::DegenerateBundle(format!(
+                "the carrier point {} lies on the axis of the pencil",
+                fmt_vec(&p)
+            )));
+        }
+        let hint = "the plane φ₂ must contain the axis of the pencil (φ₂ = [a, P]) and u ↦ φ₀ + uφ₁ must move the vertex along the axis";
+        let not_a_net = |complexes: usize| GenerationError::NotANet {
+            complexes,
+            hint: hint.into(),
+        };
+        // the vertex c(u) = ε₀ ∩ ε₁ ∩ (φ₀ + u φ₁), linear in u
+        let c0 = plane3(e0, e1, &f[0]);
+        let c1 = plane3(e0, e1, &f[1]);
+        let row = PointRow::new(c0.clone(), c1.clone()).map_err(|_| not_a_net(3))?;
+        let projective = Self::from_pencil_projectivity(row, e0, e1)?;
+        let net = projective.net.clone();
+        // the generated lines ε(u) ∩ φ(u, v): axis coordinates ε ∧ φ
+        let (u, v) = (MPoly::var(2, 0), MPoly::var(2, 1));
+        let eps: [MPoly<F>; 4] = core::array::from_fn(|k| &cst(&e0[k]) + &u.scale(&e1[k]));
+        let phi: [MPoly<F>; 4] =
+            core::array::from_fn(|k| &(&cst(&f[0][k]) + &u.scale(&f[1][k])) + &v.scale(&f[2][k]));
+        let lines = super::plucker::swap(&wedge(&eps, &phi));
+        let cu: [MPoly<F>; 4] = core::array::from_fn(|k| &cst(&c0[k]) + &u.scale(&c1[k]));
+        let m = super::plucker::incidence_matrix(&lines);
+        let through: Vec<MPoly<F>> = m.iter().map(|r| dot4(r, &cu)).collect();
+        let mut families = vec![LineFamily {
+            name: "lines ε(u) ∩ φ(u, v) of the pencil and the bundle".into(),
+            lines,
+        }];
+        families.extend(projective.families.iter().cloned());
+        let mut identities = vec![(
+            "every line ε(u) ∩ φ(u, v) passes through the vertex c(u) = ε₀ ∩ ε₁ ∩ (φ₀ + uφ₁) of the net's pencil".into(),
+            through,
+        )];
+        identities.extend(projective.identities.iter().cloned());
+        Self::build(Generation::PencilBundle, families, hint, net, identities).map_err(
+            |e| match e {
+                GenerationError::NotANet { complexes, .. } => not_a_net(complexes),
+                other => other,
+            },
         )
     }
 

@@ -48,11 +48,14 @@ pub mod regulus;
 
 pub use complex::LinearComplex;
 pub use congruence::{net_line, CongruenceKind, FocalLines, LinearCongruence};
-pub use drawing::{congruence_strips, CongruenceDrawing, CongruenceSpec, DrawError};
+pub use drawing::{
+    congruence_strips, point_family_patches, CongruenceDrawing, CongruenceSpec, DrawError,
+};
 pub use generation::{regulus_meeting, GeneratedNet, Generation, GenerationError, LineFamily};
 pub use net::{AxisPosition, ComplexPointRow, LineNet, NetError, NetKind, PointRow};
 pub use order_one::{
-    focal_coefficients, focal_points, CubicChordCongruence, OneNCongruence, OrderOneError,
+    focal_coefficients, focal_points, order_and_class_decided, CubicChordCongruence,
+    OneNCongruence, OrderClass, OrderOneError,
 };
 pub use parametrized::ParametrizedCongruence;
 pub use plucker::{reciprocal_product, Line, LineOrigin};

@@ -151,18 +151,189 @@ pub fn order_and_class(
     p: &[MPoly<Rational>; 4],
     q: &[MPoly<Rational>; 4],
 ) -> Result<(usize, usize, usize), OrderOneError> {
-    order_and_class_inner(p, q).map_err(OrderOneError::Elimination)
+    let c = raw_counts(p, q, &Choices::fixed()).map_err(OrderOneError::Elimination)?;
+    Ok((c.0 / c.2, c.1 / c.2, c.2))
 }
 
-fn order_and_class_inner(
+/// The result of [`order_and_class_decided`]: order, class and parametrization degree with
+/// the raw counts at every choice (`None`: the choice was rejected as non-generic, e.g. a
+/// zero resultant).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct OrderClass {
+    /// Lines through a generic point.
+    pub order: usize,
+    /// Lines in a generic plane.
+    pub class: usize,
+    /// Parameter points per generic line.
+    pub mu: usize,
+    /// The raw counts `(m·μ, n·μ, μ)` per independent choice.
+    pub counts: Vec<Option<(usize, usize, usize)>>,
+}
+
+impl OrderClass {
+    /// How many choices reached the stated `(m·μ, n·μ, μ)`.
+    pub fn agreeing(&self) -> usize {
+        let want = (self.order * self.mu, self.class * self.mu, self.mu);
+        self.counts.iter().filter(|c| **c == Some(want)).count()
+    }
+
+    /// The certificate: the stated counts are the componentwise maximum over the choices,
+    /// reached by at least two independent choices, and `μ` divides both (a count at a
+    /// non-generic choice can only drop, see [`order_and_class_decided`]).
+    pub fn certificate(&self) -> Certificate {
+        let k = self.agreeing();
+        let n = self.counts.len();
+        Certificate::decide(
+            format!(
+                "order {} and class {} (μ = {}): exact elimination counts at {n} independent choices of point and plane, the maximum reached by {k} ≥ 2 of them and divisible by μ",
+                self.order, self.class, self.mu
+            ),
+            k >= 2,
+            true,
+            || format!("counts per choice {:?}", self.counts),
+        )
+    }
+}
+
+/// Order, class and `μ` of the congruence `p ∨ q` decided over `trials` independent choices
+/// of points, lines and planes ([`order_and_class`] is the first of them): each count is
+/// exact for its choice and can only drop at a non-generic one (a solution moving to a base
+/// point or to parameter infinity, two solutions merging), so the componentwise maximum of
+/// the counts is taken, and [`OrderClass::certificate`] holds when at least two choices
+/// reach it with `μ` dividing both counts. Choices whose resultants vanish identically or
+/// whose counts are not divisible by their `μ` are rejected.
+///
+/// # Errors
+/// [`OrderOneError::Elimination`] if no choice succeeds (degrees beyond the dense
+/// resultant limit, a degenerate congruence).
+pub fn order_and_class_decided(
     p: &[MPoly<Rational>; 4],
     q: &[MPoly<Rational>; 4],
+    trials: usize,
+) -> Result<OrderClass, OrderOneError> {
+    let mut counts = Vec::with_capacity(trials.max(1));
+    let mut last_err = String::new();
+    for k in 0..trials.max(1) {
+        let ch = if k == 0 {
+            Choices::fixed()
+        } else {
+            Choices::seeded(k as u64)
+        };
+        match raw_counts(p, q, &ch) {
+            Ok(c) if c.2 > 0 && c.0 % c.2 == 0 && c.1 % c.2 == 0 => counts.push(Some(c)),
+            Ok(c) => {
+                last_err = format!("counts {c:?} not divisible by μ");
+                counts.push(None);
+            }
+            Err(e) => {
+                last_err = e;
+                counts.push(None);
+            }
+        }
+    }
+    let best = counts
+        .iter()
+        .flatten()
+        .fold(None, |acc: Option<(usize, usize, usize)>, c| {
+            Some(match acc {
+                None => *c,
+                Some(a) => (a.0.max(c.0), a.1.max(c.1), a.2.max(c.2)),
+            })
+        })
+        .ok_or(OrderOneError::Elimination(last_err))?;
+    if best.0 % best.2 != 0 || best.1 % best.2 != 0 {
+        return Err(OrderOneError::Elimination(format!(
+            "the largest counts {best:?} are not divisible by μ: no consistent generic choice"
+        )));
+    }
+    Ok(OrderClass {
+        order: best.0 / best.2,
+        class: best.1 / best.2,
+        mu: best.2,
+        counts,
+    })
+}
+
+/// The points, line directions, planes and parameter shear of one elimination.
+struct Choices {
+    shear: (i64, i64),
+    points: [[i64; 4]; 3],
+    dirs: [[i64; 4]; 3],
+    planes: [[[i64; 4]; 3]; 3],
+    line_param: ((i64, i64), (i64, i64)),
+}
+
+impl Choices {
+    /// The original fixed choices.
+    fn fixed() -> Self {
+        Choices {
+            shear: (2, 5),
+            points: [[3, 1, -2, 5], [2, -5, 3, 1], [5, 2, 7, -3]],
+            dirs: [[0, 1, 2, -1], [0, -3, 1, 2], [0, 2, -1, 5]],
+            planes: [
+                [[1, 2, -1, 3], [2, -1, 4, 1], [3, 5, 2, -2]],
+                [[2, 3, 1, -4], [1, -2, -3, 5], [4, 1, 6, 2]],
+                [[3, -4, 2, 1], [5, 3, -1, 2], [1, 6, 5, -3]],
+            ],
+            line_param: ((3, 7), (-5, 4)),
+        }
+    }
+
+    /// Pseudo-random small integers (a linear congruential generator seeded by `seed`).
+    fn seeded(seed: u64) -> Self {
+        let mut state = seed
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        let mut next = |lo: i64, hi: i64| -> i64 {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            let span = (hi - lo + 1) as u64;
+            lo + ((state >> 33) % span) as i64
+        };
+        let mut pt = |w0: bool| -> [i64; 4] {
+            let mut a = [0i64; 4];
+            for (i, x) in a.iter_mut().enumerate() {
+                *x = if i == 0 && w0 {
+                    0
+                } else if i == 0 {
+                    next(1, 9)
+                } else {
+                    next(-9, 9)
+                };
+            }
+            a
+        };
+        let points = [pt(false), pt(false), pt(false)];
+        let dirs = [pt(true), pt(true), pt(true)];
+        let planes = [
+            [pt(false), pt(false), pt(false)],
+            [pt(false), pt(false), pt(false)],
+            [pt(false), pt(false), pt(false)],
+        ];
+        let shear = (next(1, 9), next(3, 11));
+        let line_param = ((next(-9, 9), next(2, 11)), (next(-9, 9), next(2, 11)));
+        Choices {
+            shear,
+            points,
+            dirs,
+            planes,
+            line_param,
+        }
+    }
+}
+
+/// The raw counts `(m·μ, n·μ, μ)` at one choice.
+fn raw_counts(
+    p: &[MPoly<Rational>; 4],
+    q: &[MPoly<Rational>; 4],
+    ch: &Choices,
 ) -> Result<(usize, usize, usize), String> {
     use rcagd_algebra::mpoly::resultant_in;
     let r = |a: i64, b: i64| Rational::from_ratio(a, b);
     // shear (u, v) ↦ (u + 2v/5, v) against coincident u-coordinates
     let shear = |m: &MPoly<Rational>| -> MPoly<Rational> {
-        let s = &MPoly::var(2, 0) + &MPoly::var(2, 1).scale(&r(2, 5));
+        let s = &MPoly::var(2, 0) + &MPoly::var(2, 1).scale(&r(ch.shear.0, ch.shear.1));
         let t = MPoly::var(2, 1);
         m.terms().fold(MPoly::zero(2), |acc, (e, c)| {
             &acc + &(&s.pow(e.first().copied().unwrap_or(0))
@@ -200,22 +371,22 @@ fn order_and_class_inner(
     };
     // three lines through a point P (directions d₁, d₂, d₃)
     let through = |pt: [i64; 4]| -> Result<Poly<Rational>, String> {
-        let ds = [[0, 1, 2, -1], [0, -3, 1, 2], [0, 2, -1, 5]];
-        gcd_count(ds.map(|d| cond(&line(pt, d))))
+        gcd_count(ch.dirs.map(|d| cond(&line(pt, d))))
     };
     // three lines of the plane through three points
     let inplane = |a: [i64; 4], b: [i64; 4], c: [i64; 4]| -> Result<Poly<Rational>, String> {
         gcd_count([cond(&line(a, b)), cond(&line(b, c)), cond(&line(c, a))])
     };
     let pts = [
-        through([3, 1, -2, 5])?,
-        through([2, -5, 3, 1])?,
-        through([5, 2, 7, -3])?,
+        through(ch.points[0])?,
+        through(ch.points[1])?,
+        through(ch.points[2])?,
     ];
+    let [a0, a1, a2] = ch.planes;
     let pls = [
-        inplane([1, 2, -1, 3], [2, -1, 4, 1], [3, 5, 2, -2])?,
-        inplane([2, 3, 1, -4], [1, -2, -3, 5], [4, 1, 6, 2])?,
-        inplane([3, -4, 2, 1], [5, 3, -1, 2], [1, 6, 5, -3])?,
+        inplane(a0[0], a0[1], a0[2])?,
+        inplane(a1[0], a1[1], a1[2])?,
+        inplane(a2[0], a2[1], a2[2])?,
     ];
     // base points: common to every choice
     let strip = |x: &Poly<Rational>, base: &Poly<Rational>| -> usize {
@@ -259,7 +430,8 @@ fn order_and_class_inner(
     let count_pl = strip(&first(&pls, "plane")?, &base);
     // μ: parameter points of a generic congruence line l(u₀, v₀): lines through two of its
     // points
-    let (u0, v0) = (r(3, 7), r(-5, 4));
+    let ((un, ud), (vn, vd)) = ch.line_param;
+    let (u0, v0) = (r(un, ud), r(vn, vd));
     let pv: [Rational; 4] = p.clone().map(|c| {
         c.eval(&[u0.clone(), v0.clone()])
             .unwrap_or_else(|_| r(0, 1))
@@ -271,7 +443,7 @@ fn order_and_class_inner(
     let on = |k: i64| -> [Rational; 4] {
         core::array::from_fn(|i| pv[i].clone() + Rational::from(k) * qv[i].clone())
     };
-    let ds: [[i64; 4]; 3] = [[0, 1, 2, -1], [0, -3, 1, 2], [0, 2, -1, 5]];
+    let ds: [[i64; 4]; 3] = ch.dirs;
     let dq = |d: [i64; 4]| -> [Rational; 4] { d.map(Rational::from) };
     let (a, b) = (on(1), on(-2));
     let fs: Vec<MPoly<Rational>> = [&a, &b]
@@ -290,7 +462,7 @@ fn order_and_class_inner(
     if mu == 0 {
         return Err("degenerate congruence: no parameter point on a generic line (μ = 0)".into());
     }
-    Ok((count_pt / mu, count_pl / mu, mu))
+    Ok((count_pt, count_pl, mu))
 }
 
 fn mag<F: Scalar>(p: &MPoly<F>) -> f64 {

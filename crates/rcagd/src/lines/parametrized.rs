@@ -13,10 +13,14 @@
 //! **Order and class** (`order_and_class`): the number of congruence lines through a generic
 //! point and in a generic plane, by Schubert conditions and resultants over `Q` at fixed
 //! pseudo-random choices. The count is exact for generic choices and can only drop for a
-//! non-generic coincidence; it is a measurement, not part of `certify()`.
+//! non-generic coincidence; `order_class(trials)` repeats it at independent pseudo-random
+//! choices, takes the maximum and certifies that two choices reach it
+//! ([`OrderClass::certificate`]).
 
 use super::net::plane3;
-use super::order_one::{focal_coefficients, order_and_class, OrderOneError};
+use super::order_one::{
+    focal_coefficients, order_and_class, order_and_class_decided, OrderClass, OrderOneError,
+};
 use super::plucker::wedge;
 use crate::pn::poly::zero_cert;
 use crate::Certified;
@@ -111,6 +115,13 @@ impl<F: Scalar> ParametrizedCongruence<F> {
     /// focal curves or surfaces generating the congruence). `None` otherwise: the focal
     /// points are `p + λq` with `λ` a root of `A₀ + λA₁ + λ²A₂`, over `Q(√(A₁² − 4A₀A₂))` in
     /// general (pointwise: `focal_points`).
+    ///
+    /// Exact scalars also cover a square discriminant: if `A₁² − 4A₀A₂ = g²` for a
+    /// polynomial `g` over `Q`, the roots `λ = (−A₁ ± g)/(2A₂)` are rational functions and
+    /// the sheets are `2A₂ p + (−A₁ ± g) q` (common polynomial factors of the four
+    /// coordinates cancelled). This is the case of the normal congruence of a surface with
+    /// rational principal curvatures (e.g. the paraboloid of revolution: the axis and the
+    /// evolute surface).
     pub fn rational_focal_sheets(&self) -> Option<[[MPoly<F>; 4]; 2]> {
         let [a0, a1, a2] = self.focal();
         let comb = |a: &MPoly<F>, b: &MPoly<F>| -> [MPoly<F>; 4] {
@@ -120,8 +131,51 @@ impl<F: Scalar> ParametrizedCongruence<F> {
             (true, true) => Some([self.p.clone(), self.q.clone()]),
             (true, false) => Some([self.p.clone(), comb(&a2, &a1)]),
             (false, true) => Some([self.q.clone(), comb(&a1, &a0)]),
-            (false, false) => None,
+            (false, false) => {
+                if !F::EXACT {
+                    return None;
+                }
+                let disc = &(&a1 * &a1) - &(&a0 * &a2).scale(&F::from_i64(4));
+                let dq = disc.map(|c| c.to_rational().unwrap_or_else(|| Rational::from(0)));
+                let g = crate::pn::hypercyclide::mpoly_sqrt(&dq)?;
+                let g: MPoly<F> = g.map(F::from_rational);
+                let two_a2 = a2.scale(&F::from_i64(2));
+                let sheet = |sign: i64| -> [MPoly<F>; 4] {
+                    let b = &(-&a1) + &g.scale(&F::from_i64(sign));
+                    let mut f: [MPoly<F>; 4] =
+                        core::array::from_fn(|k| &(&two_a2 * &self.p[k]) + &(&b * &self.q[k]));
+                    crate::pn::poly::cancel_gcd(&mut f);
+                    f
+                };
+                Some([sheet(1), sheet(-1)])
+            }
         }
+    }
+
+    /// `true` if the point family `f(u, v)` is a surface (`[f, f_u, f_v] ≢ 0`), `false` for a
+    /// curve or a point (a focal sheet that degenerates, e.g. the axis of a surface of
+    /// revolution or the centre of a sphere).
+    pub fn is_surface(f: &[MPoly<F>; 4]) -> bool {
+        let fu: [MPoly<F>; 4] = core::array::from_fn(|k| f[k].partial(0));
+        let fv: [MPoly<F>; 4] = core::array::from_fn(|k| f[k].partial(1));
+        plane3(f, &fu, &fv).iter().any(|x| !x.is_zero())
+    }
+
+    /// Two points per line for drawing segments: `(p, q)`, or `(p, p + q)` when `q` is an
+    /// ideal point (`q₀ ≡ 0`, e.g. the normal direction of a normal congruence), so that the
+    /// segment `(1 − λ)p + λ(p + q) = p + λq` stays finite.
+    pub fn segment_points(&self) -> ([MPoly<F>; 4], [MPoly<F>; 4]) {
+        if self.q[0].is_zero() {
+            let pq: [MPoly<F>; 4] = core::array::from_fn(|k| &self.p[k] + &self.q[k]);
+            (self.p.clone(), pq)
+        } else {
+            (self.p.clone(), self.q.clone())
+        }
+    }
+
+    /// `true` for a normal congruence built by [`Self::normals`].
+    pub fn is_normal_congruence(&self) -> bool {
+        self.normal_of
     }
 }
 
@@ -133,6 +187,15 @@ impl ParametrizedCongruence<Rational> {
     /// [`OrderOneError::Elimination`] when the resultants exceed the dense limit.
     pub fn order_and_class(&self) -> Result<(usize, usize, usize), OrderOneError> {
         order_and_class(&self.p, &self.q)
+    }
+
+    /// Order, class and `μ` decided over `trials` independent choices (at least two must
+    /// reach the maximum; [`order_and_class_decided`], [`OrderClass::certificate`]).
+    ///
+    /// # Errors
+    /// [`OrderOneError::Elimination`] if no choice succeeds.
+    pub fn order_class(&self, trials: usize) -> Result<OrderClass, OrderOneError> {
+        order_and_class_decided(&self.p, &self.q, trials)
     }
 }
 

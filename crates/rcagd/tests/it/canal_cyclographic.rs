@@ -63,6 +63,60 @@ fn the_example_of_2_3_is_built_over_q_by_gamma() {
     assert!(!c.patches().is_empty());
 }
 
+/// The family of (2.19) in the parameter p = 1/u: weight p² (a rational double root), the
+/// same spheres. The Möbius change p = 0 + 1/p' makes it polynomial again, so Γ applies,
+/// certified (the Möbius identity included), and Γ(s, t) is the same map as for (2.19).
+#[test]
+fn a_family_with_a_square_weight_is_built_by_a_mobius_change() {
+    // m = (1/p, 0, 1/p²), r = 1/(4p²): W = p², M = (p, 0, 1), R = 1/4
+    let spine = CanalSpine::new(
+        Poly::from_ints(&[0, 0, 1]),
+        [
+            Poly::from_ints(&[0, 1]),
+            Poly::zero(),
+            Poly::from_ints(&[1]),
+        ],
+        Poly::new(vec![r(1, 4)]),
+    )
+    .expect("spine");
+    let (poly, rho) = rcagd::canal::cyclographic_param::polynomial_form(&spine).expect("form");
+    assert_eq!(rho, r(0, 1));
+    assert_eq!(poly.weight().degree(), Some(0));
+    let dom = [r(-1, 2), r(-1, 8), r(1, 8), r(1, 2)];
+    let built = canal_surface_rational(&spine, &opts(), Some(&dom)).expect("built");
+    let RationalCanal::Cyclographic(c) = built else {
+        panic!("expected the cyclographic fallback");
+    };
+    let certs = c.certify();
+    assert!(Certificate::all_hold(&certs), "{certs:#?}");
+    assert!(certs
+        .iter()
+        .any(|x| x.property.contains("Möbius") || x.property.contains("p' = 1/(p")));
+    let RationalCanal::Cyclographic(c0) =
+        canal_surface_rational(&example_2_3(), &opts(), Some(&dom)).expect("2.19")
+    else {
+        panic!("expected the cyclographic fallback");
+    };
+    for (s, t) in [(r(-1, 3), r(1, 4)), (r(-1, 5), r(1, 3))] {
+        assert_eq!(
+            c.surface().eval(&s, &t).expect("Γ"),
+            c0.surface().eval(&s, &t).expect("Γ of 2.19")
+        );
+    }
+    // a weight with two distinct roots is refused by name
+    let two_roots = CanalSpine::new(
+        Poly::from_ints(&[-1, 0, 1]),
+        [
+            Poly::from_ints(&[0, 1]),
+            Poly::zero(),
+            Poly::from_ints(&[1]),
+        ],
+        Poly::new(vec![r(1, 4)]),
+    )
+    .expect("spine");
+    assert!(rcagd::canal::cyclographic_param::polynomial_form(&two_roots).is_none());
+}
+
 #[test]
 fn fallback_errors_are_named() {
     let spine = example_2_3();

@@ -223,11 +223,103 @@ proptest! {
 // ---------------------------------------------------------------------------------------
 // Congruences of order m > 1: parametrized line families, normal congruences.
 
+/// `det`-type cross product: the plane through three points (or the point on three planes).
+fn cross4(a: &[Rational; 4], b: &[Rational; 4], c: &[Rational; 4]) -> [Rational; 4] {
+    let m3 = |i: usize, j: usize, k: usize| -> Rational {
+        a[i].clone() * (b[j].clone() * c[k].clone() - b[k].clone() * c[j].clone())
+            - a[j].clone() * (b[i].clone() * c[k].clone() - b[k].clone() * c[i].clone())
+            + a[k].clone() * (b[i].clone() * c[j].clone() - b[j].clone() * c[i].clone())
+    };
+    [m3(1, 2, 3), -m3(0, 2, 3), m3(0, 1, 3), -m3(0, 1, 2)]
+}
+
+/// The pencil ∩ bundle generation of the parabolic net (Gruber §1.1.6): the pencil
+/// x + u z = 0 about the y-axis and the bundle through P = (1, 0, 0) with φ₂ = [a, P]
+/// (z = 0) give the net of the vertices c(u) = (0, 1/u, 0) on the y-axis.
+#[test]
+fn pencil_and_bundle_generation() {
+    let e0 = v4([0, 1, 0, 0]);
+    let e1 = v4([0, 0, 0, 1]);
+    let f = [v4([-1, 1, 0, 0]), v4([0, 0, 1, 0]), v4([0, 0, 0, 1])];
+    let g = GeneratedNet::from_pencil_and_bundle(&e0, &e1, &f).expect("parabolic net");
+    assert!(g.all_hold(), "{:#?}", g.certify());
+    assert_eq!(g.congruence().kind(), CongruenceKind::Parabolic);
+    assert!(g.line_net().is_some());
+    assert!(g
+        .certify()
+        .iter()
+        .any(|c| c.property.contains("passes through the vertex c(u)")));
+    // f64 agrees: the same construction succeeds and certifies
+    let gf = GeneratedNet::from_pencil_and_bundle(
+        &to_f64(&e0),
+        &to_f64(&e1),
+        &f.clone().map(|x| to_f64(&x)),
+    )
+    .expect("f64");
+    assert!(gf.all_hold());
+    // φ₂ not through the axis: the lines through one point a ∩ φ₂ (a bundle), not a net
+    let bad = [v4([-1, 1, 0, 0]), v4([0, 0, 1, 0]), v4([-1, 1, 0, 1])];
+    assert!(matches!(
+        GeneratedNet::from_pencil_and_bundle(&e0, &e1, &bad),
+        Err(GenerationError::NotANet { .. })
+    ));
+    // the carrier point on the axis, dependent bundle planes, a degenerate pencil
+    assert!(matches!(
+        GeneratedNet::from_pencil_and_bundle(
+            &e0,
+            &e1,
+            &[v4([0, 1, 0, 0]), v4([-1, 0, 1, 0]), v4([0, 0, 0, 1])]
+        ),
+        Err(GenerationError::DegenerateBundle(_))
+    ));
+    assert!(matches!(
+        GeneratedNet::from_pencil_and_bundle(&e0, &e1, &[f[0].clone(), f[0].clone(), f[2].clone()]),
+        Err(GenerationError::DegenerateBundle(_))
+    ));
+    assert!(matches!(
+        GeneratedNet::from_pencil_and_bundle(&e0, &e0, &f),
+        Err(GenerationError::DegeneratePencil)
+    ));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// Random axis a = A ∨ B, carrier point P, pencil planes [A, B, Xᵢ], bundle planes
+    /// [P, Yᵢ, Zᵢ] and φ₂ = [A, B, P]: a certified parabolic net whenever the data are
+    /// non-degenerate.
+    #[test]
+    fn random_pencil_and_bundle(a in proptest::array::uniform4(small()), b in proptest::array::uniform4(small()),
+                                p in proptest::array::uniform4(small()), x in proptest::array::uniform8(small()),
+                                y in proptest::array::uniform16(small())) {
+        let (a, b, p) = (v4(a), v4(b), v4(p));
+        let pt = |s: &[i64], k: usize| v4([s[4 * k], s[4 * k + 1], s[4 * k + 2], s[4 * k + 3]]);
+        let e0 = cross4(&a, &b, &pt(&x, 0));
+        let e1 = cross4(&a, &b, &pt(&x, 1));
+        let f = [
+            cross4(&p, &pt(&y, 0), &pt(&y, 1)),
+            cross4(&p, &pt(&y, 2), &pt(&y, 3)),
+            cross4(&a, &b, &p),
+        ];
+        match GeneratedNet::from_pencil_and_bundle(&e0, &e1, &f) {
+            Ok(g) => {
+                prop_assert!(g.all_hold(), "{:?}", g.certify());
+                prop_assert_eq!(g.congruence().kind(), CongruenceKind::Parabolic);
+            }
+            Err(GenerationError::DegeneratePencil)
+            | Err(GenerationError::DegenerateBundle(_))
+            | Err(GenerationError::NotANet { .. })
+            | Err(GenerationError::Net(_)) => {}
+            Err(e) => prop_assert!(false, "unexpected {e}"),
+        }
+    }
+}
+
 mod order_greater_one {
     use rcagd::lines::ParametrizedCongruence;
     use rcagd::Certified;
     use rcagd_algebra::mpoly::MPoly;
-    use rcagd_algebra::{Certificate, Rational};
+    use rcagd_algebra::{Certificate, Rational, Scalar};
 
     fn p(s: &[(i64, u32, u32)]) -> MPoly<Rational> {
         s.iter().fold(MPoly::zero(2), |a, &(c, i, j)| {
@@ -299,6 +391,9 @@ mod order_greater_one {
                 .iter()
                 .any(|c| c.property.contains("orthogonal to the surface")));
             assert_eq!(c.order_and_class().expect("count"), want, "{name}");
+            let oc = c.order_class(3).expect("decided");
+            assert_eq!((oc.order, oc.class, oc.mu), want, "{name}: {oc:?}");
+            assert!(oc.certificate().holds, "{name}: {oc:?}");
         }
         // a family that is not built as normals carries no normality claim
         let x = [
@@ -391,5 +486,105 @@ mod order_greater_one {
             ],
         );
         assert!(ruled.is_err());
+    }
+
+    /// Order and class decided over independent choices: the maximum is reached by at least
+    /// two of them (a non-generic choice only lowers a count), certified.
+    #[test]
+    fn order_class_decided_over_choices() {
+        let par = [
+            p(&[(1, 0, 0)]),
+            p(&[(1, 1, 0)]),
+            p(&[(1, 0, 1)]),
+            p(&[(1, 2, 0), (1, 0, 2)]),
+        ];
+        let c = ParametrizedCongruence::normals(par).expect("normals");
+        let oc = c.order_class(3).expect("decided");
+        assert_eq!((oc.order, oc.class, oc.mu), (3, 2, 1));
+        assert!(oc.certificate().holds, "{oc:?}");
+        assert!(oc.agreeing() >= 2);
+        // the (2, 2)-congruence of a conic and a line
+        let conic = [
+            p(&[(1, 0, 0), (1, 2, 0)]),
+            p(&[(2, 1, 0)]),
+            MPoly::zero(2),
+            p(&[(1, 0, 0), (-1, 2, 0)]),
+        ];
+        let g = [
+            p(&[(1, 0, 0)]),
+            p(&[(5, 0, 0)]),
+            p(&[(1, 0, 1)]),
+            MPoly::zero(2),
+        ];
+        let c = ParametrizedCongruence::new(conic, g).expect("(2, 2)");
+        let oc = c.order_class(3).expect("decided");
+        assert_eq!((oc.order, oc.class, oc.mu), (2, 2, 1));
+        assert!(oc.certificate().holds);
+    }
+
+    /// The normal congruence of the paraboloid of revolution z = u² + v² has rational focal
+    /// sheets (its principal curvatures are rational in u, v: the discriminant of the focal
+    /// polynomial is a square): the axis (a curve) and the evolute surface, certified on the
+    /// lines and focal. The elliptic paraboloid's sheets are irrational (no square).
+    #[test]
+    fn focal_sheets_of_a_square_discriminant() {
+        let par = [
+            p(&[(1, 0, 0)]),
+            p(&[(1, 1, 0)]),
+            p(&[(1, 0, 1)]),
+            p(&[(1, 2, 0), (1, 0, 2)]),
+        ];
+        let c = ParametrizedCongruence::normals(par).expect("normals");
+        let sheets = c.rational_focal_sheets().expect("rational sheets");
+        let kinds: Vec<bool> = sheets
+            .iter()
+            .map(ParametrizedCongruence::is_surface)
+            .collect();
+        assert_eq!(kinds.iter().filter(|k| **k).count(), 1, "one surface");
+        // the curve sheet is the axis x = y = 0
+        let axis = sheets
+            .iter()
+            .find(|s| !ParametrizedCongruence::is_surface(s))
+            .expect("axis");
+        assert!(axis[1].is_zero() && axis[2].is_zero());
+        let certs = c.certify();
+        assert!(Certificate::all_hold(&certs), "{certs:#?}");
+        assert_eq!(
+            certs
+                .iter()
+                .filter(|c| c.property.contains("focal sheet"))
+                .count(),
+            4
+        );
+        // the evolute at (u, v) = (1, 0): the centre of curvature of the meridian parabola
+        // z = x² at x = 1 is (−4, 0, 7/2)
+        let ev = sheets
+            .iter()
+            .find(|s| ParametrizedCongruence::is_surface(s))
+            .expect("evolute");
+        let at: Vec<Rational> = ev
+            .iter()
+            .map(|x| {
+                x.eval(&[Rational::from(1), Rational::from(0)])
+                    .expect("eval")
+            })
+            .collect();
+        let aff: Vec<Rational> = at[1..].iter().map(|x| x.clone() / at[0].clone()).collect();
+        assert_eq!(
+            aff,
+            vec![
+                Rational::from(-4),
+                Rational::from(0),
+                Rational::from_ratio(7, 2)
+            ]
+        );
+        let ell = ParametrizedCongruence::normals([
+            p(&[(1, 0, 0)]),
+            p(&[(1, 1, 0)]),
+            p(&[(1, 0, 1)]),
+            p(&[(1, 2, 0), (2, 0, 2)]),
+        ])
+        .expect("normals");
+        assert!(ell.rational_focal_sheets().is_none());
     }
 }

@@ -1162,6 +1162,88 @@ fn every_printed_subcase_recognized_from_its_sphere_family() {
     }
 }
 
+/// §3.1.2 for a directly given family: recognition and the cyclographic construction in
+/// one call, at spheres of every printed family; both contact points are certified on
+/// `S ∩ S_u ∩ S_v` of the given family (exact over the square-root extension), and the f64
+/// family gives the same points.
+#[test]
+fn cyclographic_construction_for_a_given_family() {
+    let mut rational = 0;
+    let mut irrational = 0;
+    for c in cases() {
+        let fam = family_of(c.phi);
+        let ffam = SphereFamily::new(
+            [
+                uv(c.phi[0]).map(Scalar::to_f64),
+                uv(c.phi[1]).map(Scalar::to_f64),
+                uv(c.phi[2]).map(Scalar::to_f64),
+            ],
+            uv(c.phi[3]).map(Scalar::to_f64),
+            MPoly::constant(2, 1.0),
+        )
+        .expect("f64 family");
+        let mut done = 0;
+        for (a, b) in [
+            ((1, 2), (1, 3)),
+            ((2, 3), (3, 4)),
+            ((3, 5), (-1, 7)),
+            ((2, 1), (1, 3)),
+            ((3, 1), (1, 2)),
+            ((-5, 2), (1, 5)),
+            ((1, 3), (2, 1)),
+            ((1, 2), (3, 1)),
+        ] {
+            let (u, v) = (
+                Rational::from_ratio(a.0, a.1),
+                Rational::from_ratio(b.0, b.1),
+            );
+            let Ok(fc) = fam.cyclographic_at(&u, &v) else {
+                // a timelike tangent plane (no real contact point) there: the next point
+                continue;
+            };
+            done += 1;
+            let certs = fc.certify();
+            assert_eq!(certs.len(), 6, "{}", c.section);
+            assert!(Certificate::all_hold(&certs), "{}: {certs:#?}", c.section);
+            if fc.rational_points().is_some() {
+                rational += 1;
+            } else {
+                irrational += 1;
+            }
+            let ff = ffam
+                .cyclographic_at(&Scalar::to_f64(&u), &Scalar::to_f64(&v))
+                .expect("f64 construction");
+            assert!(Certificate::all_hold(&ff.certify()), "{} f64", c.section);
+            // the same two points (in some order)
+            let ex: Vec<[f64; 3]> = fc
+                .points
+                .iter()
+                .map(|p| core::array::from_fn(|i| Scalar::to_f64(&p[i])))
+                .collect();
+            let close = |x: &[f64; 3], y: &[f64; 3]| {
+                (0..3).all(|i| (x[i] - y[i]).abs() <= 1e-8 * (1.0 + x[i].abs()))
+            };
+            assert!(
+                ff.points.iter().all(|y| ex.iter().any(|x| close(x, y))),
+                "{}: {ex:?} vs {:?}",
+                c.section,
+                ff.points
+            );
+        }
+        assert!(
+            done > 0,
+            "{}: no sphere with real contact points",
+            c.section
+        );
+    }
+    // the contact points are irrational at a general sphere (the normal line meets Ω over
+    // Q(√d)), rational at special ones
+    assert!(
+        irrational > 0 && rational > 0,
+        "{rational} rational, {irrational} irrational"
+    );
+}
+
 #[test]
 fn recognition_through_a_change_of_the_family_parameters() {
     // 3.3.1 and 3.5.2 with (u, v) ↦ (2u + v − 1, v − u): the net parameters are found as
