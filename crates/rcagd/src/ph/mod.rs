@@ -48,9 +48,11 @@ pub mod hodograph;
 pub mod planar;
 pub mod planar_hermite;
 pub mod preimage;
+pub mod rrmf;
 pub mod spatial_hermite;
 pub mod speed;
 pub mod spline;
+pub mod sweep;
 mod util;
 
 pub use dph::{DphClass, DphData, DphTest, ProportionalityFactors, QuinticDphKind};
@@ -62,11 +64,13 @@ pub use planar::{complex_sqrt, PlanarOffset, PlanarPhCurve};
 pub use planar_hermite::{
     PlanarHermiteData, PlanarHermiteInterpolant, PlanarHermiteResult, PlanarHermiteSolution,
 };
+pub use rrmf::RationalRmf;
 pub use spatial_hermite::{
     rotation_from_half_tangent, SpatialHermiteData, SpatialHermiteQuintic, SpatialHermiteResult,
 };
 pub use speed::ArcLengthParameter;
 pub use spline::{PhQuinticSpline, SplineEnds};
+pub use sweep::RmfSweep;
 pub use util::ExactOrFloat;
 
 use rcagd_algebra::AlgebraError;
@@ -117,6 +121,10 @@ pub enum PhError {
     /// The system has no real solution.
     #[error("no real solution: {0}")]
     NoRealSolution(String),
+    /// A PH curve that must carry a rational rotation-minimizing frame does not
+    /// (docs/math/rrmf.md, "Deciding RRMF").
+    #[error("not an RRMF curve: {0}")]
+    NotRrmf(String),
     /// An algebraic failure underneath.
     #[error(transparent)]
     Algebra(#[from] AlgebraError),
