@@ -49,6 +49,7 @@ pub mod planar;
 pub mod planar_hermite;
 pub mod preimage;
 pub mod rrmf;
+pub mod rrmf_hermite;
 pub mod spatial_hermite;
 pub mod speed;
 pub mod spline;

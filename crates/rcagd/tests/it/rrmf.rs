@@ -180,3 +180,65 @@ proptest! {
         }
     }
 }
+
+/// Hermite data (end points, tangents, RMF vectors) read off an RRMF quintic are
+/// reproduced by the interpolant: an exact RRMF quintic whose exact RMF certifies, with the
+/// data matched to rounding.
+#[test]
+fn rrmf_hermite_reproduces_its_data() {
+    use rcagd::ph::rrmf_hermite::RrmfHermiteData;
+    let c = rrmf_quintic_class1(qt([2, 0, 1, 0]), qt([1, 2, 0, -1]), Q::from(0), origin()).unwrap();
+    let f = RationalRmf::new(&c).unwrap().to_f64();
+    let [t0, u0, _] = f.eval(&0.0).unwrap();
+    let [t1, u1, _] = f.eval(&1.0).unwrap();
+    let pts = f.curve.control_points();
+    let data = RrmfHermiteData {
+        p_i: pts[0],
+        t_i: t0,
+        u_i: u0,
+        p_f: pts[5],
+        t_f: t1,
+        u_f: u1,
+    };
+    let h = data.solve().unwrap();
+    assert!(
+        holds_exact(&h.rmf.certify()),
+        "{:?}",
+        failing(&h.rmf.certify())
+    );
+    assert!(is_rrmf_quintic_class1(&h.rmf.curve).unwrap());
+    assert!(h.point_residual < 1e-12, "{}", h.point_residual);
+    assert!(h.tangent_residual < 1e-12, "{}", h.tangent_residual);
+    assert!(h.frame_residual < 1e-9, "{}", h.frame_residual);
+    // the end frame turned by 30° about the end tangent: another RRMF quintic
+    let rot = |u: [f64; 3], t: [f64; 3]| {
+        let b = [
+            t[1] * u[2] - t[2] * u[1],
+            t[2] * u[0] - t[0] * u[2],
+            t[0] * u[1] - t[1] * u[0],
+        ];
+        let (c, s) = (30f64.to_radians().cos(), 30f64.to_radians().sin());
+        [
+            c * u[0] + s * b[0],
+            c * u[1] + s * b[1],
+            c * u[2] + s * b[2],
+        ]
+    };
+    let turned = RrmfHermiteData {
+        u_f: rot(u1, t1),
+        ..data.clone()
+    };
+    let h2 = turned.solve().unwrap();
+    assert!(holds_exact(&h2.rmf.certify()));
+    assert!(h2.frame_residual < 1e-9, "{}", h2.frame_residual);
+    assert!(h2.point_residual < 1e-12 && h2.tangent_residual < 1e-12);
+    assert_ne!(h2.rmf.curve, h.rmf.curve);
+    // refused data
+    let bad = RrmfHermiteData {
+        t_i: [0.0; 3],
+        ..data.clone()
+    };
+    assert!(matches!(bad.solve(), Err(PhError::ZeroTangent(_))));
+    let bad = RrmfHermiteData { u_i: t0, ..data };
+    assert!(matches!(bad.solve(), Err(PhError::Degenerate(_))));
+}
