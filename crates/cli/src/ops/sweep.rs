@@ -11,6 +11,8 @@ use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
 use rcagd::ph::rrmf::{is_rrmf_quintic_class1, rrmf_quintic_class1, RationalRmf};
+use rcagd::ph::rrmf_hermite::RrmfHermiteData;
+use rcagd_io::quantity::{NamedQuantity, Quantity};
 use rcagd::ph::sweep::sweep_profile;
 use rcagd::ph::PhCurve;
 use rcagd_algebra::quaternion::Quaternion;
@@ -56,6 +58,11 @@ const PH_RRMF: OpSpec = OpSpec {
         CURVE_PARAMS[2],
         CURVE_PARAMS[3],
         CURVE_PARAMS[4],
+        ParamSpec::optional(
+            "hermite",
+            ParamKind::Points,
+            "instead of a preimage: RRMF Hermite data [p_i, t_i, u_i, p_f, t_f, u_f] (end points, tangents, first frame vectors ⟂ tangents); the interpolating RRMF quintic is solved in f64 and made exact (residuals reported)",
+        ),
         ParamSpec::with_default(
             "samples",
             ParamKind::Int,
@@ -182,8 +189,93 @@ fn segment(a: &[Q; 3], b: &[Q; 3]) -> Result<BezierCurve<Q>, OpError> {
     Ok(BezierCurve::from_points(&[a.to_vec(), b.to_vec()])?)
 }
 
+/// A curve with its RMF, certificates and reported values.
+type Solved = (RationalRmf<Q>, Vec<Certificate>, Vec<NamedQuantity>);
+
+/// The interpolant of the `hermite` data, its certificates and values.
+fn hermite(
+    args: &OpArgs,
+) -> Result<Solved, OpError> {
+    if args.get("quaternions").is_some() || args.get("a0").is_some() || args.get("a1").is_some() {
+        return Err(OpError::param(
+            "hermite",
+            "give either `hermite` or a preimage (`quaternions`, `a0`/`a1`), not both",
+        ));
+    }
+    let pts = args.points("hermite")?;
+    let v: Vec<[f64; 3]> = pts
+        .iter()
+        .map(|p| match p.as_slice() {
+            [x, y, z] => Ok([x.to_f64().value(), y.to_f64().value(), z.to_f64().value()]),
+            _ => Err(OpError::param("hermite", "Hermite data are 3D points and vectors")),
+        })
+        .collect::<Result<_, _>>()?;
+    let [p_i, t_i, u_i, p_f, t_f, u_f] = <[[f64; 3]; 6]>::try_from(v).map_err(|v| {
+        OpError::param(
+            "hermite",
+            format!(
+                "`hermite` needs 6 entries [p_i, t_i, u_i, p_f, t_f, u_f], got {}",
+                v.len()
+            ),
+        )
+    })?;
+    let h = RrmfHermiteData { p_i, t_i, u_i, p_f, t_f, u_f }
+        .solve()
+        .map_err(|e| OpError::param("hermite", e.to_string()))?;
+    let mut certs = h.rmf.certify();
+    certs.push(Certificate::decide(
+        "A_0 i A_2* + A_2 i A_0* ≡ 2 A_1 i A_1* (the quintic RRMF condition, docs/math/rrmf.md)",
+        is_rrmf_quintic_class1(&h.rmf.curve)?,
+        true,
+        || "non-zero residual vector".into(),
+    ));
+    let values = vec![
+        NamedQuantity::new(
+            "point_residual",
+            "max |r(0) − p_i|, |r(1) − p_f| of the exact interpolant (f64)",
+            Quantity::Approx(h.point_residual),
+        ),
+        NamedQuantity::new(
+            "tangent_residual",
+            "max |r'/|r'| − t̂| at both ends (f64)",
+            Quantity::Approx(h.tangent_residual),
+        ),
+        NamedQuantity::new(
+            "frame_residual",
+            "max |cos γ f1 + sin γ f2 − û| at both ends (f64)",
+            Quantity::Approx(h.frame_residual),
+        ),
+        NamedQuantity::new(
+            "gamma",
+            "constant angle γ turning the exact RMF (f1, f2) into the frame through u_i (radians, f64)",
+            Quantity::Approx(h.gamma),
+        ),
+    ];
+    Ok((h.rmf, certs, values))
+}
+
 fn build_ph_rrmf(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let (rmf, certs) = rmf_and_certs(args)?;
+    let (rmf, certs, mut values) = if args.get("hermite").is_some() {
+        hermite(args)?
+    } else {
+        let (rmf, certs) = rmf_and_certs(args)?;
+        (rmf, certs, Vec::new())
+    };
+    values.push(NamedQuantity::new(
+        "rotation_re",
+        "a(t) of the rotation polynomial w = a + b i (Ã = A w; the RMF is the ERF turned by 2 arg w)",
+        Quantity::poly_t(rmf.rotation.0.clone()),
+    ));
+    values.push(NamedQuantity::new(
+        "rotation_im",
+        "b(t) of w = a + b i",
+        Quantity::poly_t(rmf.rotation.1.clone()),
+    ));
+    values.push(NamedQuantity::new(
+        "frame_denominator",
+        "the common denominator d(t) of f1 = F1/d, f2 = F2/d",
+        Quantity::poly_t(rmf.den.clone()),
+    ));
     let bez = rmf.curve.to_bezier()?;
     let samples = args.int("samples")?;
     if !(2..=200).contains(&samples) {
@@ -209,7 +301,9 @@ fn build_ph_rrmf(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     }
     let mut frame_obj = args.object(Geometry::Curves(segs), rmf.certify());
     frame_obj.name = format!("{}_frame", args.name());
-    Ok(vec![args.object(Geometry::Curve(bez), certs), frame_obj])
+    let mut main = args.object(Geometry::Curve(bez), certs);
+    main.values = values;
+    Ok(vec![main, frame_obj])
 }
 
 fn build_sweep_rrmf(args: &OpArgs) -> Result<Vec<Object>, OpError> {

@@ -72,3 +72,33 @@ fn sweep_rrmf_ellipse_exports_step_and_iges() {
     );
     assert!(err.contains("weight"), "{err}");
 }
+
+/// RRMF Hermite data through the op: an exact RRMF quintic whose certificates hold, the
+/// data matched to rounding (the residuals are reported as values).
+#[test]
+fn ph_rrmf_hermite_interpolates() {
+    let v = build_json_certified(
+        "rrmf_hermite",
+        "[[object]]\nname = \"h\"\nop = \"ph_rrmf\"\nhermite = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [3, 1, 1], [1, 1, 0], [0, 0, 1]]\n",
+        "h",
+    );
+    let val = |n: &str| {
+        v["values"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|x| x["name"] == n)
+            .unwrap()["f64"]
+            .as_f64()
+            .unwrap()
+    };
+    assert!(val("point_residual") < 1e-12);
+    assert!(val("tangent_residual") < 1e-12);
+    assert!(val("frame_residual") < 1e-9);
+    let dir = temp_dir("rrmf_hermite_bad");
+    let err = build_refused(
+        &dir,
+        "[[object]]\nname = \"h\"\nop = \"ph_rrmf\"\nhermite = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [3, 1, 1], [1, 1, 0], [0, 0, 1]]\n",
+    );
+    assert!(err.contains("not orthogonal"), "{err}");
+}

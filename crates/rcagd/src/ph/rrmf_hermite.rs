@@ -146,8 +146,8 @@ impl RrmfHermiteData {
         let s = curve.speed();
         let f = |t: f64| n.eval(&t) / s.eval(&t);
         let dtheta = -2.0
-            * (0..8)
-                .map(|k| gauss7(&f, k as f64 / 8.0, (k + 1) as f64 / 8.0))
+            * (0..16)
+                .map(|k| gauss7(&f, k as f64 / 16.0, (k + 1) as f64 / 16.0))
                 .sum::<f64>();
         let ang = erf_angle(&a[2], &self.u_f) - erf_angle(&a[0], &self.u_i) - dtheta;
         let scale = norm(&sub(&self.p_f, &self.p_i));
