@@ -230,9 +230,7 @@ impl RrmfHermiteData {
 
     /// Exact RRMF quintic from an `f64` solution: `A_0`, `A_1`, `x` as exact rationals.
     fn exact(&self, a: &[Quaternion<f64>; 3]) -> Result<RrmfHermite, PhError> {
-        let q = |v: f64| {
-            Rational::try_from(v).map_err(|_| PhError::OutOfRange("non-finite value".into()))
-        };
+        let q = |v: f64| short_rational(v, 1e-15);
         let qq = |z: &Quaternion<f64>| -> Result<Quaternion<Rational>, PhError> {
             Ok(Quaternion::new(q(z.w)?, q(z.x)?, q(z.y)?, q(z.z)?))
         };
@@ -273,6 +271,39 @@ impl RrmfHermiteData {
             frame_residual,
         })
     }
+}
+
+/// The continued-fraction convergent of `v` nearest in denominator with
+/// `|p/q − v| ≤ tol·max(1, |v|)` (denominators up to `2³¹`), else the exact binary value
+/// of `v`: short exact rationals for the made-exact coefficients.
+fn short_rational(v: f64, tol: f64) -> Result<Rational, PhError> {
+    if !v.is_finite() {
+        return Err(PhError::OutOfRange("non-finite value".into()));
+    }
+    let bound = tol * v.abs().max(1.0);
+    let (mut h0, mut h1, mut k0, mut k1) = (0i128, 1i128, 1i128, 0i128);
+    let mut x = v;
+    for _ in 0..40 {
+        let a = x.floor();
+        if a.abs() > 1e15 {
+            break;
+        }
+        let ai = a as i128;
+        let (h2, k2) = (ai * h1 + h0, ai * k1 + k0);
+        if k2 > 1 << 31 || h2.abs() > i64::MAX as i128 {
+            break;
+        }
+        (h0, h1, k0, k1) = (h1, h2, k1, k2);
+        if (h1 as f64 / k1 as f64 - v).abs() <= bound {
+            return Ok(Rational::from(h1 as i64) / Rational::from(k1 as i64));
+        }
+        let frac = x - a;
+        if frac == 0.0 {
+            break;
+        }
+        x = 1.0 / frac;
+    }
+    Rational::try_from(v).map_err(|_| PhError::OutOfRange("non-finite value".into()))
 }
 
 /// Solves the 4 × 4 system `J x = b` by Gaussian elimination with partial pivoting.

@@ -242,3 +242,45 @@ fn rrmf_hermite_reproduces_its_data() {
     let bad = RrmfHermiteData { u_i: t0, ..data };
     assert!(matches!(bad.solve(), Err(PhError::Degenerate(_))));
 }
+
+fn pos() -> impl Strategy<Value = Q> {
+    (1i64..=4, 1i64..=2).prop_map(|(p, d)| q(p, d))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// Random rational quadratic profiles (random exact control points, positive weights)
+    /// swept along random RRMF quintics: every certificate holds exactly, and the `f64`
+    /// sweep of the `f64` frame agrees with the exact surface.
+    #[test]
+    fn random_sweeps_certify(
+        a0 in quat(), a1 in quat(), x in small(),
+        pts in proptest::collection::vec((small(), small()), 3),
+        ws in proptest::collection::vec(pos(), 3),
+    ) {
+        prop_assume!(a0.norm_sq() != Q::from(0));
+        let c = rrmf_quintic_class1(a0, a1, x, origin()).unwrap();
+        let rmf = RationalRmf::new(&c).unwrap();
+        let profile: Vec<[Q; 2]> = pts.into_iter().map(|(a, b)| [a, b]).collect();
+        let s = match sweep_profile(&rmf, &profile, &ws) {
+            Ok(s) => s,
+            // a singular point of the curve on [0, 1] (σ(t) = 0): refused by name
+            Err(PhError::Degenerate(_)) => return Ok(()),
+            Err(e) => panic!("{e}"),
+        };
+        let certs = s.certify();
+        prop_assert!(holds_exact(&certs), "{:?}", failing(&certs));
+        let pf: Vec<[f64; 2]> = profile.iter().map(|p| [Scalar::to_f64(&p[0]), Scalar::to_f64(&p[1])]).collect();
+        let wf: Vec<f64> = ws.iter().map(Scalar::to_f64).collect();
+        let sf = sweep_profile(&rmf.to_f64(), &pf, &wf).unwrap();
+        for (u, t) in [(0.0, 0.0), (0.5, 0.25), (1.0, 0.7), (0.3, 1.0)] {
+            let e = s.patch.eval(&Q::try_from(u).unwrap(), &Q::try_from(t).unwrap()).unwrap();
+            let g = sf.patch.eval(&u, &t).unwrap();
+            let scale = e.iter().map(|v| Scalar::to_f64(v).abs()).fold(1.0, f64::max);
+            for (a, b) in e.iter().zip(&g) {
+                prop_assert!((Scalar::to_f64(a) - b).abs() < 1e-9 * scale);
+            }
+        }
+    }
+}
