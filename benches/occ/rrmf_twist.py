@@ -161,13 +161,20 @@ def main():
     rows.append(("rcagd sweep_rrmf (STEP read back)", rcagd, None))
     print(f"spine: {len(frames)} samples t = k/{len(frames) - 1}; profile: ellipse {A} × {B}")
     print(f"{'sweep':42} {'build ms':>9} {'ctrl pts':>8} {'max |twist| °':>14} {'twist at t=1 °':>15}")
+    profiles = []
     for name, shape, dt in rows:
         tw = [twist_at(shape, s) for s in frames]
+        profiles.append((name, tw))
         tw = [v for v in tw if v is not None]
         mx = max(abs(v) for v in tw) if tw else float("nan")
         end = tw[-1] if tw else float("nan")
         ms = f"{dt * 1e3:9.2f}" if dt is not None else f"{'—':>9}"
         print(f"{name:42} {ms} {control_points(shape):8d} {mx:14.3e} {end:15.3e}  ({len(tw)} sections)")
+    step = max(1, (len(frames) - 1) // 8)
+    print("twist (degrees) at t = " + ", ".join(f"{k}/{len(frames) - 1}" for k in range(0, len(frames), step)))
+    for name, tw in profiles:
+        vals = ", ".join("—" if v is None else f"{v:.3g}" for v in tw[::step])
+        print(f"  {name}: {vals}")
 
 
 if __name__ == "__main__":
