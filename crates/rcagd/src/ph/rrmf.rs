@@ -423,3 +423,68 @@ impl<F: Scalar> crate::Certified for RationalRmf<F> {
         RationalRmf::certify(self)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn qt(a: [i64; 4]) -> Quaternion<Rational> {
+        Quaternion::new(
+            Rational::from(a[0]),
+            Rational::from(a[1]),
+            Rational::from(a[2]),
+            Rational::from(a[3]),
+        )
+    }
+
+    fn curve() -> PhCurve<Rational> {
+        let z = Rational::from(0);
+        PhCurve::new(
+            vec![qt([1, 2, 0, -1]), qt([0, 1, 1, 3]), qt([2, -1, 1, 0])],
+            [z.clone(), z.clone(), z],
+        )
+        .unwrap()
+    }
+
+    /// The ERF turns about the tangent with `e_2'·e_3 = 2N/σ`: `E_2'·E_3 ≡ 2Nσ` for the
+    /// numerators `E_k = σ e_k` (docs/math/rrmf.md, "The twist of the Euler–Rodrigues frame").
+    #[test]
+    fn erf_twist_is_two_n_over_sigma() {
+        let c = curve();
+        let erf = c.euler_rodrigues_frame();
+        let lhs = pdot(&pderiv(&erf.numerators[1]), &erf.numerators[2]);
+        let rhs = (&erf_twist_numerator(&c) * &c.speed()).scale(&Rational::from(2));
+        assert_eq!(lhs, rhs);
+    }
+
+    /// `N(A w) = |w|² N(A) + σ (a b' − a' b)` for a sample `w` (docs/math/rrmf.md,
+    /// "Rotating the frame by a complex polynomial").
+    #[test]
+    fn twist_of_rotated_preimage() {
+        let c = curve();
+        let a = Poly::from_ints(&[1, -2, 3]);
+        let b = Poly::from_ints(&[2, 1]);
+        let rot = RationalRmf::from_rotation(&c, (a.clone(), b.clone()));
+        let wq: Poly<Quaternion<Rational>> = Poly::new(
+            (0..3)
+                .map(|k| {
+                    Quaternion::new(a.coeff(k), b.coeff(k), Rational::from(0), Rational::from(0))
+                })
+                .collect(),
+        );
+        let [u, v, p, q] = quaternion::component_polys(&(&c.preimage_poly() * &wq));
+        let lhs = twist_of(&u, &v, &p, &q);
+        let rhs = &(&(&(&a * &a) + &(&b * &b)) * &erf_twist_numerator(&c))
+            + &(&c.speed() * &(&(&a * &b.derivative()) - &(&a.derivative() * &b)));
+        assert_eq!(lhs, rhs);
+        // not rotation-minimizing: the RMF certificate fails, the others hold
+        let certs = rot.certify();
+        assert!(certs
+            .iter()
+            .any(|c| !c.holds && c.property.contains("rotation-minimizing")));
+        assert!(certs
+            .iter()
+            .filter(|c| !c.property.contains("rotation-minimizing"))
+            .all(|c| c.holds));
+    }
+}
