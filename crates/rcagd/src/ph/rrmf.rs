@@ -129,15 +129,20 @@ pub fn rrmf_quintic_class1<F: Scalar>(
 /// curve into a rotation-minimizing frame: `N(A w) ≡ 0` (docs/math/rrmf.md, "Deciding
 /// RRMF"). `w = 1` if the ERF is already rotation-minimizing (`N ≡ 0`).
 ///
-/// The decision is exact: the coefficients are read as exact rationals (an `f64` is its
-/// exact binary value, so rounded data are in general not RRMF), and the result is mapped
-/// back to `F`.
+/// For exact scalars the decision is exact. For `f64` the same conditions are tested
+/// numerically on the roots of `σ` (Durand–Kerner): `2N(z)/σ'(z)` must be within `1e-6`
+/// of `±i m` (integer `m`; `0` for a root that cancels against `N`), `w = Π (t − z)^m` over
+/// the roots with `m > 0`, and `N(A w)` must vanish to `1e-9` relative — so rounded RRMF
+/// data are accepted.
 ///
 /// # Errors
 /// [`PhError::NotRrmf`] naming the failed condition (repeated or real root of the reduced
 /// denominator `D`, a residue that is not `±i m/2` with integer `m`); [`PhError::OutOfRange`]
 /// for non-finite coefficients.
 pub fn rmf_rotation<F: Scalar>(curve: &PhCurve<F>) -> Result<(Poly<F>, Poly<F>), PhError> {
+    if !F::EXACT {
+        return rotation_f64(curve);
+    }
     let comps = curve.preimage();
     let mut qc: Vec<Poly<Rational>> = Vec::with_capacity(4);
     for c in &comps {
@@ -148,6 +153,149 @@ pub fn rmf_rotation<F: Scalar>(curve: &PhCurve<F>) -> Result<(Poly<F>, Poly<F>),
     let (a, b) = rotation_exact(&qc[0], &qc[1], &qc[2], &qc[3])?;
     let back = |p: &Poly<Rational>| p.map(F::from_rational);
     Ok((back(&a), back(&b)))
+}
+
+/// The `f64` decision (see [`rmf_rotation`]).
+fn rotation_f64<F: Scalar>(curve: &PhCurve<F>) -> Result<(Poly<F>, Poly<F>), PhError> {
+    type C = Complex<f64>;
+    let comps = curve.preimage().map(|p| poly_f64(&p));
+    let [u, v, p, q] = &comps;
+    let n = twist_of(u, v, p, q);
+    let sigma = &(&(u * u) + &(v * v)) + &(&(p * p) + &(q * q));
+    let scale = poly_scale(&sigma).max(f64::MIN_POSITIVE);
+    let back = |x: &Poly<f64>| -> Result<Poly<F>, PhError> {
+        let c = x
+            .coeffs()
+            .iter()
+            .map(|c| {
+                Rational::try_from(*c)
+                    .map(|r| F::from_rational(&r))
+                    .map_err(|_| PhError::OutOfRange("non-finite coefficient".into()))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(Poly::new(c))
+    };
+    if n.coeffs().iter().all(|c| c.abs() <= 1e-12 * scale) {
+        return back(&Poly::constant(1.0)).map(|a| (a, Poly::zero()));
+    }
+    let roots = complex_roots(&sigma)
+        .ok_or_else(|| not_rrmf("the roots of σ could not be found in f64".into()))?;
+    let ds = sigma.derivative();
+    let ev = |p: &Poly<f64>, z: &C| {
+        p.coeffs()
+            .iter()
+            .rev()
+            .fold(Complex::new(0.0, 0.0), |acc, c| {
+                acc * z.clone() + Complex::new(*c, 0.0)
+            })
+    };
+    let mut w: Poly<C> = Poly::constant(Complex::new(1.0, 0.0));
+    for z in &roots {
+        let d = ev(&ds, z);
+        if d.norm_sq() == 0.0 {
+            return Err(not_rrmf("σ has a repeated root (f64)".into()));
+        }
+        let rho = (ev(&n, z) * Complex::new(2.0, 0.0)) / d;
+        let m = rho.im.round();
+        if (rho.clone() - Complex::new(0.0, m)).norm_sq().sqrt() > 1e-6 * (1.0 + m.abs()) {
+            return Err(not_rrmf(format!(
+                "a residue 2N(z)/σ'(z) = {:.6} + {:.6}i of the ERF twist is not ±i m with integer m (f64)",
+                rho.re, rho.im
+            )));
+        }
+        if m > 0.0 {
+            let lin = Poly::new(vec![-z.clone(), Complex::new(1.0, 0.0)]);
+            w = &w * &lin.pow(m as u32);
+        }
+    }
+    let (a, b) = complex::re_im_polys(&w);
+    let check = &(&(&(&a * &a) + &(&b * &b)) * &n)
+        + &(&sigma * &(&(&a * &b.derivative()) - &(&a.derivative() * &b)));
+    let ww = poly_scale(&(&(&a * &a) + &(&b * &b))).max(1.0);
+    if check
+        .coeffs()
+        .iter()
+        .any(|c| c.abs() > 1e-9 * scale * ww * poly_scale(&n).max(1.0))
+    {
+        return Err(not_rrmf(
+            "the candidate rotation polynomial w does not annul the twist N(A w) (f64)".into(),
+        ));
+    }
+    Ok((back(&a)?, back(&b)?))
+}
+
+/// All complex roots of a real polynomial (Durand–Kerner, then Newton polishing); `None`
+/// if the iteration does not settle.
+fn complex_roots(p: &Poly<f64>) -> Option<Vec<Complex<f64>>> {
+    type C = Complex<f64>;
+    let n = p.degree()?;
+    if n == 0 {
+        return Some(Vec::new());
+    }
+    let lc = p.leading();
+    let c: Vec<C> = p
+        .coeffs()
+        .iter()
+        .map(|x| Complex::new(x / lc, 0.0))
+        .collect();
+    let ev = |z: &C| {
+        c.iter()
+            .rev()
+            .fold(Complex::new(0.0, 0.0), |acc, k| acc * z.clone() + k.clone())
+    };
+    let radius = 1.0
+        + c[..n]
+            .iter()
+            .map(|k| k.norm_sq().sqrt())
+            .fold(0.0, f64::max);
+    let seed = Complex::new(0.4, 0.9);
+    let mut z: Vec<C> = (0..n)
+        .map(|k| {
+            let mut s = Complex::new(1.0, 0.0);
+            for _ in 0..k {
+                s *= seed.clone();
+            }
+            s.scale(&(radius * 0.5))
+        })
+        .collect();
+    for _ in 0..500 {
+        let mut moved = 0.0f64;
+        for i in 0..n {
+            let mut den = Complex::new(1.0, 0.0);
+            for j in 0..n {
+                if i != j {
+                    den *= z[i].clone() - z[j].clone();
+                }
+            }
+            if den.norm_sq() == 0.0 {
+                return None;
+            }
+            let step = ev(&z[i]) / den;
+            moved = moved.max(step.norm_sq().sqrt());
+            z[i] = z[i].clone() - step;
+        }
+        if moved < 1e-15 * radius {
+            break;
+        }
+    }
+    let dc: Vec<C> = (1..=n).map(|k| c[k].scale(&(k as f64))).collect();
+    let evd = |w: &C| {
+        dc.iter()
+            .rev()
+            .fold(Complex::new(0.0, 0.0), |acc, k| acc * w.clone() + k.clone())
+    };
+    for zi in z.iter_mut() {
+        for _ in 0..3 {
+            let d = evd(zi);
+            if d.norm_sq() == 0.0 {
+                break;
+            }
+            *zi = zi.clone() - ev(zi) / d;
+        }
+    }
+    z.iter()
+        .all(|w| w.re.is_finite() && w.im.is_finite())
+        .then_some(z)
 }
 
 fn not_rrmf(msg: String) -> PhError {
@@ -374,20 +522,20 @@ impl<F: Scalar> RationalRmf<F> {
         let sigma = self.curve.speed();
         let d2 = &self.den * &self.den;
         let mut certs = self.curve.certify();
-        certs.push(identity_cert(
+        certs.push(zero_dot_cert(
             "f₁·r' ≡ 0 (RMF normal-plane vector, docs/math/rrmf.md)",
-            &pdot(&self.f1, &h),
-            &Poly::zero(),
+            &self.f1,
+            &h,
         ));
-        certs.push(identity_cert(
+        certs.push(zero_dot_cert(
             "f₂·r' ≡ 0 (RMF normal-plane vector, docs/math/rrmf.md)",
-            &pdot(&self.f2, &h),
-            &Poly::zero(),
+            &self.f2,
+            &h,
         ));
-        certs.push(identity_cert(
+        certs.push(zero_dot_cert(
             "f₁·f₂ ≡ 0 (RMF orthogonal, docs/math/rrmf.md)",
-            &pdot(&self.f1, &self.f2),
-            &Poly::zero(),
+            &self.f1,
+            &self.f2,
         ));
         certs.push(identity_cert(
             "|F₁|² ≡ d² (|f₁| = 1, docs/math/rrmf.md)",
@@ -400,22 +548,58 @@ impl<F: Scalar> RationalRmf<F> {
             &d2,
         ));
         let c = pcross(&self.f1, &self.f2);
+        let ps = |p: &PV3<F>| p.iter().map(poly_scale).fold(0.0, f64::max);
+        let len = |p: &Poly<F>| p.coeffs().len() as f64;
+        let n = len(&self.den).max(len(&self.f1[0])) + len(&sigma);
+        let cross_scale = n * n * ps(&self.f1) * ps(&self.f2) * poly_scale(&sigma);
         for k in 0..3 {
-            certs.push(identity_cert(
+            let lhs = &c[k] * &sigma;
+            let rhs = &h[k] * &d2;
+            let diff = &lhs - &rhs;
+            certs.push(Certificate::decide(
                 format!(
                     "σ·[F₁ × F₂]_{k} ≡ d²·[r']_{k} (right-handed (t, f₁, f₂), docs/math/rrmf.md)"
                 ),
-                &(&c[k] * &sigma),
-                &(&h[k] * &d2),
+                poly_negligible(
+                    &diff,
+                    cross_scale.max(poly_scale(&lhs)).max(poly_scale(&rhs)),
+                ),
+                F::EXACT,
+                || {
+                    format!(
+                        "residual polynomial {}",
+                        rcagd_algebra::format_poly(&diff, "t")
+                    )
+                },
             ));
         }
-        certs.push(identity_cert(
+        certs.push(zero_dot_cert(
             "F₁'·F₂ ≡ 0 (rotation-minimizing: no turn about the tangent, ω·t = f₁'·f₂ = 0; Farouki 2010, docs/math/rrmf.md)",
-            &pdot(&pderiv(&self.f1), &self.f2),
-            &Poly::zero(),
+            &pderiv(&self.f1),
+            &self.f2,
         ));
         certs
     }
+}
+
+/// A certificate for `a·b ≡ 0`; for `f64` relative to the size of the products
+/// (`Σ_k |a_k||b_k|` over the coefficients), not to the residual itself.
+fn zero_dot_cert<F: Scalar>(property: &str, a: &PV3<F>, b: &PV3<F>) -> Certificate {
+    let lhs = pdot(a, b);
+    let scale: f64 = a
+        .iter()
+        .zip(b)
+        .map(|(x, y)| {
+            let n = x.coeffs().len().max(y.coeffs().len()) as f64;
+            n * poly_scale(x) * poly_scale(y)
+        })
+        .sum();
+    Certificate::decide(property, poly_negligible(&lhs, scale), F::EXACT, || {
+        format!(
+            "residual polynomial {}",
+            rcagd_algebra::format_poly(&lhs, "t")
+        )
+    })
 }
 
 impl<F: Scalar> crate::Certified for RationalRmf<F> {
