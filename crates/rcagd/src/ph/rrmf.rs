@@ -8,7 +8,7 @@
 //! (`Ã i Ã* = |w|² A i A*`) and the frame `(Ã j Ã*, Ã k Ã*)/(σ|w|²)` turned by `2 arg w`;
 //! its twist numerator is `N(Ã) = |w|² N + σ (a b' − a' b)`. The frame is
 //! rotation-minimizing iff `N(Ã) ≡ 0`, i.e. `Im(w'/w) = −N/σ` (Han 2008, "Nonexistence of
-//! rational rotation-minimizing frames on cubic curves", and Farouki 2010, "Rational
+//! rational rotation-minimizing frames on cubic curves", and Farouki, Sakkalis 2010, "Rational
 //! rotation-minimizing frames on polynomial space curves of arbitrary degree", J. Symb.
 //! Comput. 45: the ERF twist must be the logarithmic-derivative form
 //! `(a b' − a' b)/(a² + b²)`).
@@ -574,7 +574,7 @@ impl<F: Scalar> RationalRmf<F> {
             ));
         }
         certs.push(zero_dot_cert(
-            "F₁'·F₂ ≡ 0 (rotation-minimizing: no turn about the tangent, ω·t = f₁'·f₂ = 0; Farouki 2010, docs/math/rrmf.md)",
+            "F₁'·F₂ ≡ 0 (rotation-minimizing: no turn about the tangent, ω·t = f₁'·f₂ = 0; Han 2008, docs/math/rrmf.md)",
             &pderiv(&self.f1),
             &self.f2,
         ));

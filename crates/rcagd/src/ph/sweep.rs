@@ -13,9 +13,10 @@
 //! are sums of products of Bernstein coefficients. Its weights `d_k ω_j` are positive
 //! where the Bernstein coefficients `d_k` of `d > 0` are; otherwise the patch is bisected
 //! in `t` (exact restrictions) until they are ([`rcagd_geom::weight_sign`]). The profile
-//! is not turned about the tangent anywhere (Wang, Jüttler, Zheng, Liu 2008, "Computation
-//! of rotation minimizing frames", ACM TOG 27, §1 on sweeps; Farouki 2010, J. Symb.
-//! Comput. 45, §1).
+//! is not turned about the tangent anywhere (sweeps by rotation-minimizing frames: Wang,
+//! Jüttler, Zheng, Liu 2008, "Computation of rotation minimizing frames", ACM Trans.
+//! Graph. 27; Farouki, Sakkalis 2010, "Rational rotation-minimizing frames on polynomial
+//! space curves of arbitrary degree", J. Symb. Comput. 45).
 
 use super::rrmf::RationalRmf;
 use super::util::*;
