@@ -29,6 +29,9 @@
 //!   exact, with its one-parameter family `A·e^{iφ}`;
 //! * [`hermite`]: Hermite interpolation by general helical PH quintics (Besednjak ch. 9,
 //!   docs/math/ph-curves.md, "Hermite interpolation by helical PH quintics") with every real solution and the least bending energy marked.
+//! * [`rrmf`], [`rrmf_hermite`], [`sweep`]: rational rotation-minimizing frames (exact
+//!   decision for any degree, the quintic condition, Hermite interpolation with end frames)
+//!   and exact twist-free sweeps of rational profiles (docs/math/rrmf.md).
 //!
 //! Every construction is generic over [`rcagd_algebra::Scalar`] (exact
 //! [`rcagd_algebra::Rational`] or `f64`) and has a `certify()` that decides its defining
