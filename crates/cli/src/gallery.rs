@@ -87,6 +87,10 @@ pub const RECIPES: &[(&str, &str)] = &[
         "examples/recipes/n_dimensional.toml",
         include_str!("../../../examples/recipes/n_dimensional.toml"),
     ),
+    (
+        "examples/recipes/sweep.toml",
+        include_str!("../../../examples/recipes/sweep.toml"),
+    ),
 ];
 
 /// The formats written per gallery object.

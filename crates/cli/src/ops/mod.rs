@@ -38,7 +38,8 @@ topics!(
     analysis,
     quadric_query,
     laguerre_query,
-    ndim
+    ndim,
+    sweep
 );
 
 pub mod describe;

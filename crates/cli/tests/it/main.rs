@@ -16,3 +16,4 @@ mod pipes;
 mod quadric_ops;
 mod queries;
 mod sphere_family_ops;
+mod sweep_ops;

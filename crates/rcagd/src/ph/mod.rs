@@ -29,6 +29,9 @@
 //!   exact, with its one-parameter family `A·e^{iφ}`;
 //! * [`hermite`]: Hermite interpolation by general helical PH quintics (Besednjak ch. 9,
 //!   docs/math/ph-curves.md, "Hermite interpolation by helical PH quintics") with every real solution and the least bending energy marked.
+//! * [`rrmf`], [`rrmf_hermite`], [`sweep`]: rational rotation-minimizing frames (exact
+//!   decision for any degree, the quintic condition, Hermite interpolation with end frames)
+//!   and exact twist-free sweeps of rational profiles (docs/math/rrmf.md).
 //!
 //! Every construction is generic over [`rcagd_algebra::Scalar`] (exact
 //! [`rcagd_algebra::Rational`] or `f64`) and has a `certify()` that decides its defining
@@ -49,9 +52,12 @@ pub mod hodograph;
 pub mod planar;
 pub mod planar_hermite;
 pub mod preimage;
+pub mod rrmf;
+pub mod rrmf_hermite;
 pub mod spatial_hermite;
 pub mod speed;
 pub mod spline;
+pub mod sweep;
 mod util;
 
 pub use dph::{DphClass, DphData, DphTest, ProportionalityFactors, QuinticDphKind};
@@ -63,11 +69,13 @@ pub use planar::{complex_sqrt, PlanarOffset, PlanarPhCurve};
 pub use planar_hermite::{
     PlanarHermiteData, PlanarHermiteInterpolant, PlanarHermiteResult, PlanarHermiteSolution,
 };
+pub use rrmf::RationalRmf;
 pub use spatial_hermite::{
     rotation_from_half_tangent, SpatialHermiteData, SpatialHermiteQuintic, SpatialHermiteResult,
 };
 pub use speed::ArcLengthParameter;
 pub use spline::{PhQuinticSpline, SplineEnds};
+pub use sweep::RmfSweep;
 pub use util::ExactOrFloat;
 
 use rcagd_algebra::AlgebraError;
@@ -121,6 +129,10 @@ pub enum PhError {
     /// An approximation cannot reach the tolerance asked for.
     #[error("tolerance not met: {0}")]
     ToleranceNotMet(String),
+    /// A PH curve that must carry a rational rotation-minimizing frame does not
+    /// (docs/math/rrmf.md, "Deciding RRMF").
+    #[error("not an RRMF curve: {0}")]
+    NotRrmf(String),
     /// An algebraic failure underneath.
     #[error(transparent)]
     Algebra(#[from] AlgebraError),

@@ -24,6 +24,7 @@ mod quadric_family;
 mod quadric_props;
 mod quadric_query;
 mod reducing_frame;
+mod rrmf;
 mod seed000_examples;
 mod seed001_examples;
 mod seed003_examples;
