@@ -365,8 +365,8 @@ fn distance_bound_squared(
     bernstein_ratio_bound(&nb, &wb, target, 5)
 }
 
-/// A rational `ε ≥ √b` with few digits.
-fn sqrt_upper(b: &Rational) -> Rational {
+/// A rational `ε ≥ √b` with few digits (3 significant decimals, checked `ε² ≥ b` exactly).
+pub(crate) fn sqrt_upper(b: &Rational) -> Rational {
     if *b <= Rational::ZERO {
         return Rational::ZERO;
     }

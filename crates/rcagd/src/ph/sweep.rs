@@ -39,6 +39,56 @@ pub struct RmfSweep<F> {
     pub patch: BezierPatch<F>,
     /// Pieces with all weights `> 0` (exact restrictions of `patch` to `t`-intervals).
     pub pieces: Vec<BezierPatch<F>>,
+    /// `ρ·κ < 1` on `[0, 1]` for a rational `ρ ≥ max_j |(x_j, y_j)|` (no local
+    /// self-intersection), decided exactly ([`check_sweep_regularity`]).
+    pub regularity: Certificate,
+}
+
+/// The sweep is locally regular where `1 − κ⟨p(u), n⟩ ≠ 0` (`p` the profile point, `n` the
+/// principal normal; `S_t = r′(1 − κ⟨p, n⟩)` up to a normal-plane term of the RMF, which
+/// turns no profile point about the tangent); `|p(u)| ≤ ρ = max_j |(x_j, y_j)|` by the convex
+/// hull of the profile (weights `> 0`), so `ρ·κ < 1` on `[0, 1]` suffices. That is the pipe
+/// condition of radius `ρ`, decided exactly by [`crate::canal::check_pipe_regularity`]
+/// (`F = |P|⁶ − ρ²W⁴|P × P′|² > 0`, docs/math/pipes.md, "Regularity"); `ρ` is a 3-digit
+/// rational upper bound of the square root. An `f64` curve is checked through the exact
+/// rationals its `f64` coefficients are.
+///
+/// # Errors
+/// [`PhError::Degenerate`] naming the interval where `ρ·κ ≥ 1` or the tangent vanishes;
+/// [`PhError::OutOfRange`] for a non-finite coefficient.
+pub fn check_sweep_regularity<F: Scalar>(
+    curve: &super::PhCurve<F>,
+    profile: &[[F; 2]],
+) -> Result<Certificate, PhError> {
+    use rcagd_algebra::Rational;
+    let bad = || PhError::OutOfRange("a non-finite curve or profile coefficient".into());
+    let mut rho2 = Rational::ZERO;
+    for p in profile {
+        let (x, y) = (
+            p[0].to_rational().ok_or_else(bad)?,
+            p[1].to_rational().ok_or_else(bad)?,
+        );
+        let n = &x * &x + &y * &y;
+        if n > rho2 {
+            rho2 = n;
+        }
+    }
+    let rho = super::approximation::sqrt_upper(&rho2);
+    let pos = curve.position();
+    let mut exact: Vec<Poly<Rational>> = Vec::with_capacity(3);
+    for p in &pos {
+        let c: Option<Vec<Rational>> = p.coeffs().iter().map(Scalar::to_rational).collect();
+        exact.push(Poly::new(c.ok_or_else(bad)?));
+    }
+    let [x, y, z] = <[Poly<Rational>; 3]>::try_from(exact).map_err(|_| bad())?;
+    let spine = crate::canal::CanalSpine::polynomial([x, y, z], Poly::constant(rho.clone()));
+    let (zero, one) = (Rational::ZERO, Rational::ONE);
+    crate::canal::check_pipe_regularity(&spine, (&zero, &one)).map_err(|e| {
+        PhError::Degenerate(format!(
+            "the profile reaches ρ = {} from the curve (the largest |(x_j, y_j)|, rounded up), so the sweep may intersect itself: {e}",
+            rcagd_algebra::format_scalar(&rho)
+        ))
+    })
 }
 
 /// Sweeps the rational profile (control points `(x_j, y_j)`, weights `ω_j`) along the
@@ -48,7 +98,8 @@ pub struct RmfSweep<F> {
 /// [`PhError::DegreeMismatch`] if there are fewer than 2 profile points or the weights do
 /// not match them; [`PhError::OutOfRange`] for a weight `≤ 0`; [`PhError::Degenerate`] if
 /// the frame's denominator `d` vanishes on `[0, 1]` (a singular point of the curve, where
-/// no split gives positive weights); [`PhError::Geom`] from the patch constructor.
+/// no split gives positive weights), or if the profile reaches the curve's radius of
+/// curvature ([`check_sweep_regularity`]); [`PhError::Geom`] from the patch constructor.
 pub fn sweep_profile<F: Scalar>(
     rmf: &RationalRmf<F>,
     profile: &[[F; 2]],
@@ -110,6 +161,7 @@ pub fn sweep_profile<F: Scalar>(
                 .collect()
         })
         .collect();
+    let regularity = check_sweep_regularity(&rmf.curve, profile)?;
     let patch = BezierPatch::from_homogeneous(net)?;
     let split = split_patches_adaptive(vec![patch.clone()], SignRule::Positive, (6, 0))?;
     if split.failed > 0 {
@@ -125,6 +177,7 @@ pub fn sweep_profile<F: Scalar>(
         weights: weights.to_vec(),
         patch,
         pieces: split.pieces,
+        regularity,
     })
 }
 
@@ -200,6 +253,7 @@ impl<F: Scalar> RmfSweep<F> {
             exact,
             || "a weight ≤ 0".to_string(),
         ));
+        certs.push(self.regularity.clone());
         certs
     }
 

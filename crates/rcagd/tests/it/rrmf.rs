@@ -126,18 +126,30 @@ fn generic_quintic_is_refused_with_named_error() {
 #[test]
 fn sweep_of_quarter_ellipse_certifies() {
     let rmf = RationalRmf::new(&sample_rrmf()).unwrap();
-    let profile = [[q(2, 1), q(0, 1)], [q(2, 1), q(1, 1)], [q(0, 1), q(1, 1)]];
+    // this curve's least radius of curvature is ≈ 0.0873 (at t = 1/2): the ellipse with
+    // semi-axes 2 and 1 is refused (the sweep would intersect itself), the one with
+    // semi-axes 1/20 and 1/40 is swept
+    let big = [[q(2, 1), q(0, 1)], [q(2, 1), q(1, 1)], [q(0, 1), q(1, 1)]];
     let weights = [Q::from(1), Q::from(1), Q::from(2)];
+    match sweep_profile(&rmf, &big, &weights) {
+        Err(PhError::Degenerate(m)) => assert!(m.contains("intersect itself"), "{m}"),
+        other => panic!("expected the regularity refusal, got {other:?}"),
+    }
+    let profile = [
+        [q(1, 20), q(0, 1)],
+        [q(1, 20), q(1, 40)],
+        [q(0, 1), q(1, 40)],
+    ];
     let s = sweep_profile(&rmf, &profile, &weights).unwrap();
     let certs = s.certify();
     assert!(holds_exact(&certs), "{:?}", failing(&certs));
-    // S(u = 0, t) = r(t) + 2 f₁(t)
+    // S(u = 0, t) = r(t) + f₁(t)/20
     let t = q(2, 5);
     let p = s.patch.eval(&Q::from(0), &t).unwrap();
     let r = rmf.curve.eval(&t);
     let [_, f1, _] = rmf.eval(&t).unwrap();
     for k in 0..3 {
-        assert_eq!(p[k], r[k].clone() + f1[k].clone() * Q::from(2));
+        assert_eq!(p[k], r[k].clone() + f1[k].clone() * q(1, 20));
     }
     assert!(matches!(
         sweep_profile(&rmf, &profile, &[Q::from(1), Q::from(-1), Q::from(2)]),
@@ -300,12 +312,22 @@ proptest! {
         prop_assume!(a0.norm_sq() != Q::from(0));
         let c = rrmf_quintic_class1(a0, a1, x, origin()).unwrap();
         let rmf = RationalRmf::new(&c).unwrap();
-        let profile: Vec<[Q; 2]> = pts.into_iter().map(|(a, b)| [a, b]).collect();
-        let s = match sweep_profile(&rmf, &profile, &ws) {
-            Ok(s) => s,
-            // a singular point of the curve on [0, 1] (σ(t) = 0): refused by name
-            Err(PhError::Degenerate(_)) => return Ok(()),
-            Err(e) => panic!("{e}"),
+        let mut profile: Vec<[Q; 2]> = pts.into_iter().map(|(a, b)| [a, b]).collect();
+        // a profile reaching the curve's radius of curvature is refused by name: shrink it
+        // (by 1/16 at a time) until it fits
+        let mut shrinks = 0;
+        let s = loop {
+            match sweep_profile(&rmf, &profile, &ws) {
+                Ok(s) => break s,
+                Err(PhError::Degenerate(m)) if m.contains("intersect itself") && shrinks < 6 => {
+                    shrinks += 1;
+                    let k = q(1, 16);
+                    profile = profile.iter().map(|p| [&p[0] * &k, &p[1] * &k]).collect();
+                }
+                // a singular point of the curve on [0, 1] (σ(t) = 0): refused by name
+                Err(PhError::Degenerate(m)) if !m.contains("intersect itself") => return Ok(()),
+                Err(e) => panic!("{e}"),
+            }
         };
         let certs = s.certify();
         prop_assert!(holds_exact(&certs), "{:?}", failing(&certs));
