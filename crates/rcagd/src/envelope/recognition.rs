@@ -379,22 +379,13 @@ impl<F: SqrtScalar> Recognition<F> {
     /// # Errors
     /// As [`SphereFamily::cyclographic_at`] without the recognition.
     pub fn cyclographic_at(&self, u: &F, v: &F) -> Result<FamilyContacts<F>, RecognitionError> {
-        let x = [u.clone(), v.clone()];
-        let ev = |p: &MPoly<F>| p.eval(&x).unwrap_or_else(|_| F::zero());
-        let (a, b, c, d) = (
-            ev(&self.params.first),
-            ev(&self.params.first_den),
-            ev(&self.params.second),
-            ev(&self.params.second_den),
-        );
-        if b.is_zero() || d.is_zero() {
-            return Err(RecognitionError::InvalidInput(format!(
+        let (p, q) = self.params.at(u, v).ok_or_else(|| {
+            RecognitionError::InvalidInput(format!(
                 "the net parameters have a pole at ({}, {})",
                 format_scalar(u),
                 format_scalar(v)
-            )));
-        }
-        let (p, q) = (a / b, c / d);
+            ))
+        })?;
         let (sphere, derivatives) = self.family.jet(u, v)?;
         let ce = self.envelope.cyclographic_envelope(&p, &q)?;
         Ok(FamilyContacts {

@@ -670,22 +670,13 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
     /// # Errors
     /// [`SphereFamilyError::Undefined`] where a denominator vanishes.
     pub fn parameters_at(&self, s: &F, t: &F) -> Result<(F, F), SphereFamilyError> {
-        let x = [s.clone(), t.clone()];
-        let ev = |p: &MPoly<F>| p.eval(&x).unwrap_or_else(|_| F::zero());
-        let (a, b, c, d) = (
-            ev(&self.params.first),
-            ev(&self.params.first_den),
-            ev(&self.params.second),
-            ev(&self.params.second_den),
-        );
-        if b.is_zero() || d.is_zero() {
-            return Err(SphereFamilyError::Undefined(format!(
+        self.params.at(s, t).ok_or_else(|| {
+            SphereFamilyError::Undefined(format!(
                 "the net line through w({}, {}) is not unique (a point of an axis)",
                 format_scalar(s),
                 format_scalar(t)
-            )));
-        }
-        Ok((a / b, c / d))
+            ))
+        })
     }
 
     /// The parameter point `(s', t')` of the other sheet: the second intersection point of

@@ -255,17 +255,7 @@ pub fn congruence_strips<F: Scalar>(
         bad += failed;
         patches.extend(pieces);
     }
-    let n = patches.len();
-    certs.push(Certificate::decide(
-        format!("every Bernstein weight of the {n} strip patches is > 0"),
-        bad == 0,
-        F::EXACT,
-        || format!("{bad} pieces keep a weight ≤ 0"),
-    ));
-    Ok(CongruenceDrawing {
-        patches,
-        certificates: certs,
-    })
+    Ok(finish_drawing(patches, certs, bad))
 }
 
 /// The positive-weight pieces of the strip `x(u, λ)` on `dom` and the number of pieces
@@ -430,17 +420,7 @@ fn reguli_strips<F: Scalar>(
         bad += failed;
         patches.extend(pieces);
     }
-    let n = patches.len();
-    certs.push(Certificate::decide(
-        format!("every Bernstein weight of the {n} strip patches is > 0"),
-        bad == 0,
-        F::EXACT,
-        || format!("{bad} pieces keep a weight ≤ 0"),
-    ));
-    Ok(CongruenceDrawing {
-        patches,
-        certificates: certs,
-    })
+    Ok(finish_drawing(patches, certs, bad))
 }
 
 /// A rational point family `f(u, v)` (homogeneous, weight first; e.g. a focal sheet of a
@@ -484,6 +464,26 @@ pub fn point_family_patches<F: Scalar>(
         || format!("{bad} pieces keep a weight ≤ 0"),
     );
     Ok((split.pieces, cert))
+}
+
+/// The drawing with the certificate that every exported weight is positive (`bad` pieces
+/// kept a weight `≤ 0`).
+fn finish_drawing<F: Scalar>(
+    patches: Vec<BezierPatch<F>>,
+    mut certs: Vec<Certificate>,
+    bad: usize,
+) -> CongruenceDrawing<F> {
+    let n = patches.len();
+    certs.push(Certificate::decide(
+        format!("every Bernstein weight of the {n} strip patches is > 0"),
+        bad == 0,
+        F::EXACT,
+        || format!("{bad} pieces keep a weight ≤ 0"),
+    ));
+    CongruenceDrawing {
+        patches,
+        certificates: certs,
+    }
 }
 
 #[cfg(test)]

@@ -295,6 +295,23 @@ pub struct NetParameters<F> {
 }
 
 impl<F: Scalar> NetParameters<F> {
+    /// The two parameters at the point `(s, t)`, or `None` where a denominator vanishes
+    /// (or the point cannot be evaluated).
+    pub fn at(&self, s: &F, t: &F) -> Option<(F, F)> {
+        let x = [s.clone(), t.clone()];
+        let ev = |p: &MPoly<F>| p.eval(&x).ok();
+        let (a, b, c, d) = (
+            ev(&self.first)?,
+            ev(&self.first_den)?,
+            ev(&self.second)?,
+            ev(&self.second_den)?,
+        );
+        if b.is_zero() || d.is_zero() {
+            return None;
+        }
+        Some((a / b, c / d))
+    }
+
     /// The largest degrees `(dx, dy)` in the first and the second variable of `ps`.
     pub(crate) fn degree_bounds<'a>(ps: impl Iterator<Item = &'a MPoly<F>> + Clone) -> (u32, u32)
     where
