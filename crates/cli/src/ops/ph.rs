@@ -351,7 +351,13 @@ fn curve_objects(
         }
     }
     let bez = curve.to_bezier()?;
-    let mut out = vec![args.object(Geometry::Curve(bez.clone()), certs)];
+    // the arc length the certificates speak of, as a value (exact: σ is a polynomial)
+    let values = vec![NamedQuantity::new(
+        "arc_length",
+        "∫₀¹ σ dt (σ = |A|², exact)",
+        Quantity::Rational(pc.arc_length()),
+    )];
+    let mut out = vec![args.object(Geometry::Curve(bez.clone()), certs).with_values(values)];
     let samples = args.int("samples")?;
     if !(2..=200).contains(&samples) {
         return Err(OpError::param(

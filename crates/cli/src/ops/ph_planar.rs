@@ -180,7 +180,14 @@ fn planar_curve(args: &OpArgs) -> Result<PlanarPhCurve<Rational>, OpError> {
 fn build_curve(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let c = planar_curve(args)?;
     let certs = c.certify();
-    Ok(vec![args.object(Geometry::Curve(c.to_bezier()?), certs)])
+    let values = vec![NamedQuantity::new(
+        "arc_length",
+        "∫₀¹ |w|² dt (exact)",
+        Quantity::Rational(c.arc_length()),
+    )];
+    Ok(vec![args
+        .object(Geometry::Curve(c.to_bezier()?), certs)
+        .with_values(values)])
 }
 
 fn build_offset(args: &OpArgs) -> Result<Vec<Object>, OpError> {
