@@ -156,3 +156,18 @@ def test_values_are_exact():
     # Farouki–Neff's example: every interpolant has arc length 4/5
     assert vals["arc_length_0"] == F(4, 5) and isinstance(vals["arc_length_0"], F)
     assert vals["solutions"] == 4
+
+
+def test_pipe_around_an_imported_bspline():
+    """A spine with no exact rational pipe (the OpenCascade B-spline of examples/spines):
+    the pipe is exact around a certified PH spline within the tolerance; ``approximate =
+    "never"`` refuses it with the field it needs."""
+    import pathlib
+
+    root = pathlib.Path(__file__).resolve().parents[3]
+    spine = root / "examples" / "spines" / "bspline_spine.step"
+    p = rcagd.pipe(F(1, 5), spine_file=spine, tolerance=F(1, 100))
+    assert p.all_certificates_hold
+    assert any("spine deviation" in c.property for c in p.certificates)
+    with pytest.raises(ValueError, match="extension|Q\\(√"):
+        rcagd.pipe(F(1, 5), spine_file=spine, approximate="never")

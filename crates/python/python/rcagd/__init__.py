@@ -687,14 +687,18 @@ def canal_surface(points, radius, weights=None, orientation="positive", method="
 
 
 def pipe(radius, points=None, weights=None, spine_file=None, orientation="positive",
-         name="pipe"):
+         approximate="auto", tolerance=None, name="pipe"):
     """The pipe surface of constant ``radius`` around a rational spine (control
     ``points`` or the curves of ``spine_file``), exact over Q when |m'|² is a sum of two
-    rational squares; r·κ < 1 certified (Gruber 2008, §2.1–2.4; docs/math/pipes.md)."""
+    rational squares; otherwise (``approximate="auto"``) exact around a G¹ spline of PH
+    quintics within a certified distance ``tolerance`` of the spine (default 1e-6 of its
+    size; Farouki 2008, §25.2; docs/math/pipes.md, "Pipes around any spine"); r·κ < 1
+    certified (Gruber 2008, §2.1–2.4; docs/math/pipes.md)."""
     if spine_file is not None:
         spine_file = _os.path.abspath(_os.fspath(spine_file))
     return op("pipe", name, radius=radius, points=points, weights=weights,
-              spine_file=spine_file, orientation=orientation)
+              spine_file=spine_file, orientation=orientation, approximate=approximate,
+              tolerance=tolerance)
 
 
 def pipe_ph(coefficients, radius, start=(0, 0, 0), orientation="positive", name="pipe_ph"):

@@ -149,7 +149,7 @@ def canal_surface(
 def pipe(
     radius: Number, points: Optional[Points] = ..., weights: Optional[Sequence[Number]] = ...,
     spine_file: Optional[Union[str, os.PathLike[str]]] = ..., orientation: str = ...,
-    name: str = ...,
+    approximate: str = ..., tolerance: Optional[Number] = ..., name: str = ...,
 ) -> Object: ...
 def pipe_ph(
     coefficients: Points, radius: Number, start: Point = ..., orientation: str = ...,
