@@ -40,6 +40,7 @@ use crate::error::format_scalar;
 use crate::ph::approximation::{cross_dot, joint_tangents};
 use crate::ph::PhCurve;
 use crate::Certified;
+use rayon::prelude::*;
 use rcagd_algebra::roots::count_real_roots_in;
 use rcagd_algebra::{Certificate, Poly, Rational, Scalar};
 use rcagd_geom::weight_sign::{split_patches_adaptive, SignRule};
@@ -822,20 +823,26 @@ pub fn pipe_along_chain(
         return Err(CanalError::InvalidArgument("no spine curve".into()));
     }
     let (zero, one) = (Rational::ZERO, Rational::ONE);
-    let mut pieces = Vec::with_capacity(spines.len());
-    for (k, s) in spines.iter().enumerate() {
-        let p = pipe_exportable(s, radius, (&zero, &one), orientation).map_err(|e| {
-            if spines.len() == 1 {
-                e
-            } else {
-                CanalError::SpinePiece {
-                    index: k,
-                    source: Box::new(e),
+    // the pieces are independent: built in parallel, kept in order (the first failing
+    // piece's error is reported)
+    let pieces = spines
+        .par_iter()
+        .enumerate()
+        .map(|(k, s)| {
+            pipe_exportable(s, radius, (&zero, &one), orientation).map_err(|e| {
+                if spines.len() == 1 {
+                    e
+                } else {
+                    CanalError::SpinePiece {
+                        index: k,
+                        source: Box::new(e),
+                    }
                 }
-            }
-        })?;
-        pieces.push(p);
-    }
+            })
+        })
+        .collect::<Vec<_>>()
+        .into_iter()
+        .collect::<Result<Vec<_>, _>>()?;
     let joins = spines
         .windows(2)
         .enumerate()
