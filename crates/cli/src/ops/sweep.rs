@@ -13,7 +13,7 @@ use crate::value::ParamKind;
 use rcagd::ph::rrmf::{is_rrmf_quintic_class1, rrmf_quintic_class1, RationalRmf};
 use rcagd::ph::rrmf_hermite::RrmfHermiteData;
 use rcagd_io::quantity::{NamedQuantity, Quantity};
-use rcagd::ph::sweep::sweep_profile;
+use rcagd::ph::sweep::{profile_joints, sweep_profile};
 use rcagd::ph::PhCurve;
 use rcagd_algebra::quaternion::Quaternion;
 use rcagd_algebra::{Certificate, Rational};
@@ -99,7 +99,7 @@ const SWEEP_RRMF: OpSpec = OpSpec {
         ParamSpec::required(
             "profile",
             ParamKind::Net,
-            "profile pieces, each a list of control points [x, y] of a rational Bézier curve in the normal plane (x along f1, y along f2)",
+            "profile pieces, each a list of control points [x, y] of a rational Bézier curve in the normal plane (x along f1, y along f2); consecutive pieces must meet (certified), and a profile whose last piece ends where the first starts is certified closed",
         ),
         ParamSpec::optional(
             "weights",
@@ -319,6 +319,7 @@ fn build_sweep_rrmf(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         }
     }
     let mut patches = Vec::new();
+    let mut pieces = Vec::with_capacity(net.len());
     for (k, piece) in net.iter().enumerate() {
         let pts = piece
             .iter()
@@ -341,6 +342,8 @@ fn build_sweep_rrmf(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             certs.push(c);
         }
         patches.extend(s.patches());
+        pieces.push((pts, ws));
     }
+    certs.extend(profile_joints(&pieces));
     Ok(vec![args.object(Geometry::Patches(patches), certs)])
 }

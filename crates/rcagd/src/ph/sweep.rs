@@ -263,8 +263,79 @@ impl<F: Scalar> RmfSweep<F> {
     }
 }
 
+/// Certificates that consecutive pieces of a profile given piece by piece (control points
+/// `(x_j, y_j)` and weights `ω_j > 0` per piece) meet: the end point of piece `k` is the
+/// start point of piece `k + 1` (`G⁰`, so the swept pieces meet along the same curve); and,
+/// when the last piece ends where the first starts, that the profile is closed.
+pub fn profile_joints<F: Scalar>(pieces: &[(Vec<[F; 2]>, Vec<F>)]) -> Vec<Certificate> {
+    // the control points are Euclidean (the weights are separate): a rational Bézier curve
+    // starts at its first control point and ends at its last
+    let end = |(pts, _): &(Vec<[F; 2]>, Vec<F>), last: bool| -> Option<[F; 2]> {
+        if last {
+            pts.last().cloned()
+        } else {
+            pts.first().cloned()
+        }
+    };
+    let mut out = Vec::new();
+    for (k, w) in pieces.windows(2).enumerate() {
+        let (a, b) = (end(&w[0], true), end(&w[1], false));
+        out.push(Certificate::decide(
+            format!("profile pieces {k} and {} meet (G⁰: the end point of one is the start point of the next)", k + 1),
+            a.is_some() && a == b,
+            F::EXACT,
+            || format!("the end point of piece {k} is not the start point of piece {}", k + 1),
+        ));
+    }
+    if pieces.len() > 1 {
+        if let (Some(first), Some(last)) = (pieces.first(), pieces.last()) {
+            let (a, b) = (end(last, true), end(first, false));
+            if a.is_some() && a == b {
+                out.push(Certificate::holds(
+                    "the profile is closed (the last piece ends where the first starts): the sweep is a closed tube",
+                    F::EXACT,
+                ));
+            }
+        }
+    }
+    out
+}
+
 impl<F: Scalar> crate::Certified for RmfSweep<F> {
     fn certify(&self) -> Vec<Certificate> {
         RmfSweep::certify(self)
+    }
+}
+
+#[cfg(test)]
+mod joint_tests {
+    use super::*;
+    use rcagd_algebra::Rational as Q;
+
+    fn piece(pts: &[[i64; 2]]) -> (Vec<[Q; 2]>, Vec<Q>) {
+        (
+            pts.iter().map(|p| [Q::from(p[0]), Q::from(p[1])]).collect(),
+            vec![Q::from(1); pts.len()],
+        )
+    }
+
+    #[test]
+    fn profile_pieces_meet_and_close() {
+        let closed = [
+            piece(&[[1, 0], [1, 1], [0, 1]]),
+            piece(&[[0, 1], [-1, 0], [1, 0]]),
+        ];
+        let c = profile_joints(&closed);
+        assert_eq!(c.len(), 2);
+        assert!(c.iter().all(|x| x.holds && x.exact));
+        assert!(c[1].property.contains("closed"));
+        let open = [piece(&[[1, 0], [1, 1], [0, 1]]), piece(&[[0, 1], [-1, 0]])];
+        let c = profile_joints(&open);
+        assert_eq!(c.len(), 1);
+        assert!(c[0].holds);
+        let gap = [piece(&[[1, 0], [1, 1]]), piece(&[[0, 1], [-1, 0]])];
+        let c = profile_joints(&gap);
+        assert!(!c[0].holds, "{c:?}");
+        assert!(profile_joints(&gap[..1]).is_empty());
     }
 }
