@@ -39,7 +39,7 @@ pub enum ApproximationPolicy {
 #[derive(Debug, Clone, PartialEq)]
 pub struct ApproximatePipe {
     spline: PhSplineApproximation,
-    pieces: Vec<ExportableCanal>,
+    pipe: PipeChain,
     radius: Rational,
 }
 
@@ -51,7 +51,7 @@ impl ApproximatePipe {
 
     /// The pipe around each PH piece.
     pub fn pieces(&self) -> &[ExportableCanal] {
-        &self.pieces
+        self.pipe.pieces()
     }
 
     /// The certified bound on the distance between the PH spline and the given spine.
@@ -61,18 +61,12 @@ impl ApproximatePipe {
 
     /// All patches (every Bernstein weight `> 0`), piece after piece.
     pub fn patches(&self) -> Vec<BezierPatch<Rational>> {
-        self.pieces
-            .iter()
-            .flat_map(ExportableCanal::patches)
-            .collect()
+        self.pipe.patches()
     }
 
     /// The total number of control points.
     pub fn control_points(&self) -> usize {
-        self.pieces
-            .iter()
-            .map(ExportableCanal::control_points)
-            .sum()
+        self.pipe.control_points()
     }
 }
 
@@ -82,15 +76,7 @@ impl Certified for ApproximatePipe {
     /// statement of the spine deviation.
     fn certify(&self) -> Vec<Certificate> {
         let mut out = self.spline.certify();
-        let many = self.pieces.len() > 1;
-        for (k, p) in self.pieces.iter().enumerate() {
-            out.extend(p.certify().into_iter().map(|mut c| {
-                if many {
-                    c.property = format!("pipe around PH piece {k}: {}", c.property);
-                }
-                c
-            }));
-        }
+        out.extend(self.pipe.certify());
         let eps = self.deviation();
         out.push(Certificate::decide(
             format!(
@@ -222,7 +208,7 @@ pub fn pipe_along_spine(
         .collect::<Result<Vec<_>, _>>()?;
     Ok(SpinePipe::Approximate(ApproximatePipe {
         spline,
-        pieces,
+        pipe: PipeChain::from_pieces(pieces, "pipe around PH piece"),
         radius: radius.clone(),
     }))
 }

@@ -722,9 +722,21 @@ pub fn pipe_around_ph_with(
 pub struct PipeChain {
     pieces: Vec<ExportableCanal>,
     joins: Vec<Certificate>,
+    /// What a piece is called in the certificates (`spine piece`).
+    label: &'static str,
 }
 
 impl PipeChain {
+    /// Pieces built elsewhere, without join certificates, called `label` in the
+    /// certificates (the pipes around the pieces of a PH spline).
+    pub(crate) fn from_pieces(pieces: Vec<ExportableCanal>, label: &'static str) -> Self {
+        PipeChain {
+            pieces,
+            joins: Vec::new(),
+            label,
+        }
+    }
+
     /// The pipe of each spine piece.
     pub fn pieces(&self) -> &[ExportableCanal] {
         &self.pieces
@@ -757,7 +769,7 @@ impl Certified for PipeChain {
         for (k, p) in self.pieces.iter().enumerate() {
             out.extend(p.certify().into_iter().map(|mut c| {
                 if many {
-                    c.property = format!("spine piece {k}: {}", c.property);
+                    c.property = format!("{} {k}: {}", self.label, c.property);
                 }
                 c
             }));
@@ -848,7 +860,11 @@ pub fn pipe_along_chain(
         .enumerate()
         .flat_map(|(k, w)| join_certificates(k, &w[0], &w[1]))
         .collect();
-    Ok(PipeChain { pieces, joins })
+    Ok(PipeChain {
+        pieces,
+        joins,
+        label: "spine piece",
+    })
 }
 
 #[cfg(test)]
