@@ -34,7 +34,8 @@
 //! the two curves, hence their Hausdorff distance. All of it is exact rational arithmetic.
 
 use super::hodograph::{solve_qiq, PhCurve};
-use super::spatial_hermite::golden_min;
+use super::spatial_hermite::{golden_min, middle_coefficient};
+use super::util::aib;
 use super::PhError;
 use rcagd_algebra::quaternion::Quaternion;
 use rcagd_algebra::rational::round_decimal;
@@ -388,10 +389,6 @@ fn dyadic(x: f64, k: u32) -> Option<Rational> {
     Some(n / den)
 }
 
-fn q_f64(q: &Quaternion<Rational>) -> Quaternion<f64> {
-    q.to_f64()
-}
-
 fn q_rational(q: &Quaternion<f64>, k: u32) -> Option<Quaternion<Rational>> {
     Some(Quaternion::new(
         dyadic(q.w, k)?,
@@ -416,11 +413,6 @@ fn spine_eval(c: &BezierCurve<f64>, t: f64) -> Option<([f64; 3], [f64; 3])> {
     ))
 }
 
-/// `A i B*` for `f64` quaternions.
-fn aib(a: &Quaternion<f64>, b: &Quaternion<f64>) -> Quaternion<f64> {
-    a.clone() * Quaternion::i() * b.conj()
-}
-
 /// The `f64` quintic with `A₀` fixed and free angles `φ₁`, `φ₂` (or `None` where the
 /// construction degenerates).
 fn hermite_f64(
@@ -430,79 +422,36 @@ fn hermite_f64(
     d1: &[f64; 3],
     phi1: f64,
     phi2: f64,
-) -> Option<[Quaternion<f64>; 3]> {
+) -> Option<PhCurve<f64>> {
     let a2 = solve_qiq(d1, Some((phi2.cos(), phi2.sin()))).ok()?;
-    let d0 = aib(a0, a0);
-    let x = aib(a0, &a2) + aib(&a2, a0);
-    let c = [
-        120.0 * (p1[0] - p0[0]) - 15.0 * (d0.x + d1[0]) + 5.0 * x.x,
-        120.0 * (p1[1] - p0[1]) - 15.0 * (d0.y + d1[1]) + 5.0 * x.y,
-        120.0 * (p1[2] - p0[2]) - 15.0 * (d0.z + d1[2]) + 5.0 * x.z,
-    ];
-    let b = solve_qiq(&c, Some((phi1.cos(), phi1.sin()))).ok()?;
-    let a1 = (b - (a0.clone() + a2.clone()).scale(&3.0)).scale(&0.25);
-    Some([a0.clone(), a1, a2])
-}
-
-/// Control points of the quintic with preimage `a` starting at `p0` (`f64`).
-fn quintic_points(p0: &[f64; 3], a: &[Quaternion<f64>; 3]) -> [[f64; 3]; 6] {
-    // hodograph Bernstein coefficients of degree 4: H_k = Σ_{i+j=k} C(2,i)C(2,j)/C(4,k) A_i i A_j*
-    let h = |i: usize, j: usize| aib(&a[i], &a[j]);
-    let hs = [
-        h(0, 0),
-        (h(0, 1) + h(1, 0)).scale(&0.5),
-        (h(0, 2) + h(2, 0) + h(1, 1).scale(&4.0)).scale(&(1.0 / 6.0)),
-        (h(1, 2) + h(2, 1)).scale(&0.5),
-        h(2, 2),
-    ];
-    let mut pts = [*p0; 6];
-    for k in 0..5 {
-        pts[k + 1] = [
-            pts[k][0] + hs[k].x / 5.0,
-            pts[k][1] + hs[k].y / 5.0,
-            pts[k][2] + hs[k].z / 5.0,
-        ];
-    }
-    pts
-}
-
-fn bezier_eval(pts: &[[f64; 3]; 6], s: f64) -> [f64; 3] {
-    let mut q = *pts;
-    for r in 1..6 {
-        for i in 0..6 - r {
-            let next = q[i + 1];
-            for (x, y) in q[i].iter_mut().zip(next) {
-                *x = (1.0 - s) * *x + s * y;
-            }
-        }
-    }
-    q[0]
+    let d = aib(a0, a0);
+    let d0 = [d.x, d.y, d.z];
+    let a1 =
+        middle_coefficient((p0, &d0), (p1, d1), a0, &a2, Some((phi1.cos(), phi1.sin()))).ok()?;
+    PhCurve::new(vec![a0.clone(), a1, a2], *p0).ok()
 }
 
 /// The sampled distance `max_s |r(s) − c(t₀ + hφ(s))|` (`f64`, 17 samples).
 fn sampled_distance(
-    pts: &[[f64; 3]; 6],
+    curve: &PhCurve<f64>,
     spine: &BezierCurve<f64>,
     t0: f64,
     h: f64,
     m0: f64,
 ) -> f64 {
+    let pts: Vec<f64> = curve.control_points().into_iter().flatten().collect();
     let mut worst: f64 = 0.0;
     for j in 0..=16 {
         let s = f64::from(j) / 16.0;
         // φ(s) = m₀ s(1−s)² + 2 s²(1−s) + s³ (Bernstein (0, m₀/3, 2/3, 1))
         let phi = m0 * s * (1.0 - s) * (1.0 - s) + 2.0 * s * s * (1.0 - s) + s * s * s;
-        let r = bezier_eval(pts, s);
+        let r = bernstein::eval_blocks(&pts, 3, &s);
         let Ok(c) = spine.eval(&(t0 + h * phi)) else {
             return f64::INFINITY;
         };
-        let d = [
-            r[0] - c.first().copied().unwrap_or(f64::NAN),
-            r[1] - c.get(1).copied().unwrap_or(f64::NAN),
-            r[2] - c.get(2).copied().unwrap_or(f64::NAN),
-        ];
-        let n = norm3(&d);
-        if !n.is_finite() {
+        let d: Vec<f64> = r.iter().zip(&c).map(|(a, b)| a - b).collect();
+        let n = d.iter().map(|x| x * x).sum::<f64>().sqrt();
+        if !n.is_finite() || d.len() != 3 {
             return f64::INFINITY;
         }
         worst = worst.max(n);
@@ -663,15 +612,15 @@ fn fit_piece(
         .as_ref()
         .filter(|_| carry.smooth)
         .map(|prev| {
-            let pf = q_f64(prev);
+            let pf = prev.to_f64();
             let dprev = aib(&pf, &pf);
             let lambda = small_rational((n0 / norm3(&[dprev.x, dprev.y, dprev.z])).sqrt());
             prev.scale(&lambda)
         });
     let fixed_a0 = continued.clone();
-    let mut best: Option<(f64, [Quaternion<f64>; 3])> = None;
+    let mut best: Option<(f64, PhCurve<f64>)> = None;
     let starts: Vec<Quaternion<f64>> = match &fixed_a0 {
-        Some(a0) => vec![q_f64(a0)],
+        Some(a0) => vec![a0.to_f64()],
         None => (0..12)
             .filter_map(|i| {
                 let phi = f64::from(i) * core::f64::consts::PI / 6.0;
@@ -683,9 +632,8 @@ fn fit_piece(
         let d0 = aib(a0, a0);
         let m0 = norm3(&[d0.x, d0.y, d0.z]) / n0;
         let dist = |a: f64, b: f64| {
-            hermite_f64(&p0, a0, &p1, &d1, a, b).map_or(f64::INFINITY, |q| {
-                sampled_distance(&quintic_points(&p0, &q), spine_f, t0f, h, m0)
-            })
+            hermite_f64(&p0, a0, &p1, &d1, a, b)
+                .map_or(f64::INFINITY, |q| sampled_distance(&q, spine_f, t0f, h, m0))
         };
         let (a, b, d) = best_angles(dist);
         if best.as_ref().is_none_or(|x| d < x.0) {
@@ -694,24 +642,32 @@ fn fit_piece(
             }
         }
     }
-    let Some((estimate, q)) = best else {
+    let Some((estimate, fitted)) = best else {
         return Ok(None);
     };
     if !estimate.is_finite() || estimate > tol {
         return Ok(None);
     }
+    let (Some(q0), Some(q1), Some(q2)) = (
+        fitted.coefficients().first(),
+        fitted.coefficients().get(1),
+        fitted.coefficients().get(2),
+    ) else {
+        return Ok(None);
+    };
     let a0 = match fixed_a0 {
         Some(a) => a,
-        None => q_rational(&q[0], grid)
+        None => q_rational(q0, grid)
             .ok_or_else(|| PhError::OutOfRange("a preimage coefficient is not finite".into()))?,
     };
-    let (Some(a1), Some(a2)) = (q_rational(&q[1], grid), q_rational(&q[2], grid)) else {
+    let (Some(a1), Some(a2)) = (q_rational(q1, grid), q_rational(q2, grid)) else {
         return Err(PhError::OutOfRange(
             "a preimage coefficient is not finite".into(),
         ));
     };
     let curve = PhCurve::new(vec![a0.clone(), a1, a2.clone()], carry.point.clone())?;
-    let d0 = aib(&q_f64(&a0), &q_f64(&a0));
+    let a0f = a0.to_f64();
+    let d0 = aib(&a0f, &a0f);
     let m0f = norm3(&[d0.x, d0.y, d0.z]) / n0;
     let m0 = dyadic(m0f, 30).unwrap_or(Rational::ONE);
     if m0 <= Rational::ZERO || m0 >= Rational::from(2) {

@@ -56,11 +56,6 @@ fn twist_of<F: Scalar>(u: &Poly<F>, v: &Poly<F>, p: &Poly<F>, q: &Poly<F>) -> Po
     &(&(u * &d(v)) - &(&d(u) * v)) - &(&(p * &d(q)) - &(&d(p) * q))
 }
 
-/// `a i b*`.
-fn aib<F: Scalar>(a: &Quaternion<F>, b: &Quaternion<F>) -> Quaternion<F> {
-    a.clone() * Quaternion::i() * b.conj()
-}
-
 /// The residual vector `A_0 i A_2* + A_2 i A_0* − 2 A_1 i A_1*` of a PH quintic
 /// (docs/math/rrmf.md, "RRMF quintics"); zero means an RRMF quintic with `|w|² ∝ σ`.
 ///

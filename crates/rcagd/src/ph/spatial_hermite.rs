@@ -25,6 +25,7 @@
 
 use super::hodograph::{solve_qiq, PhCurve};
 use super::planar::{gauss7, scalar_cert};
+use super::util::aib;
 use super::PhError;
 use rcagd_algebra::{Certificate, Poly, Quaternion, Rational, Scalar};
 
@@ -101,9 +102,42 @@ pub fn rotation_from_half_tangent<F: Scalar>(tau: &F) -> (F, F) {
     )
 }
 
-/// `a i b*`.
-fn aib<F: Scalar>(a: &Quaternion<F>, b: &Quaternion<F>) -> Quaternion<F> {
-    a.clone() * Quaternion::i() * b.conj()
+/// The middle coefficient `A_1 = (Q̂(c)e^{iφ_1} − 3(A_0 + A_2))/4` of the quintic
+/// interpolant with end coefficients `A_0`, `A_2`, where
+/// `c = 120(p_1 − p_0) − 15(d_0 + d_1) + 5(A_0 i A_2* + A_2 i A_0*)` (module doc);
+/// `rotation1 = None` is `φ_1 = 0`.
+///
+/// # Errors
+/// [`PhError::Degenerate`] if `c = 0` (for `f64`: negligible against the tangents), as
+/// [`solve_qiq`] otherwise.
+pub(crate) fn middle_coefficient<F: Scalar>(
+    (p0, d0): (&[F; 3], &[F; 3]),
+    (p1, d1): (&[F; 3], &[F; 3]),
+    a0: &Quaternion<F>,
+    a2: &Quaternion<F>,
+    rotation1: Option<(F, F)>,
+) -> Result<Quaternion<F>, PhError> {
+    let x = aib(a0, a2) + aib(a2, a0);
+    let f = |n: i64| F::from_i64(n);
+    let mut c = [F::zero(), F::zero(), F::zero()];
+    let xv = [x.x.clone(), x.y.clone(), x.z.clone()];
+    for k in 0..3 {
+        c[k] = (p1[k].clone() - p0[k].clone()) * f(120) - (d0[k].clone() + d1[k].clone()) * f(15)
+            + xv[k].clone() * f(5);
+    }
+    let cnorm = c.iter().map(|v| v.to_f64().abs()).fold(0.0, f64::max);
+    let scale = d0
+        .iter()
+        .chain(d1)
+        .map(|v| v.to_f64().abs())
+        .fold(0.0, f64::max);
+    if c.iter().all(|v| v.is_zero()) || (!F::EXACT && cnorm <= 1e-14 * scale) {
+        return Err(PhError::Degenerate(
+            "120Δp − 15(d0 + d1) + 5X = 0 for these angles: choose other φ0, φ2".into(),
+        ));
+    }
+    let b = solve_qiq(&c, rotation1)?;
+    Ok((b - (a0.clone() + a2.clone()).scale(&f(3))).scale(&(F::one() / f(4))))
 }
 
 impl<F: Scalar> SpatialHermiteData<F> {
@@ -143,30 +177,7 @@ impl<F: Scalar> SpatialHermiteData<F> {
         self.check()?;
         let a0 = solve_qiq(&self.d0, Some(rotation0.clone()))?;
         let a2 = solve_qiq(&self.d1, Some(rotation2.clone()))?;
-        let x = aib(&a0, &a2) + aib(&a2, &a0);
-        let f = |n: i64| F::from_i64(n);
-        let mut c = [F::zero(), F::zero(), F::zero()];
-        let xv = [x.x.clone(), x.y.clone(), x.z.clone()];
-        for k in 0..3 {
-            c[k] = (self.p1[k].clone() - self.p0[k].clone()) * f(120)
-                - (self.d0[k].clone() + self.d1[k].clone()) * f(15)
-                + xv[k].clone() * f(5);
-        }
-        let cnorm = c.iter().map(|v| v.to_f64().abs()).fold(0.0, f64::max);
-        let scale = self
-            .d0
-            .iter()
-            .chain(&self.d1)
-            .map(|v| v.to_f64().abs())
-            .fold(0.0, f64::max);
-        if c.iter().all(|v| v.is_zero()) || (!F::EXACT && cnorm <= 1e-14 * scale) {
-            return Err(PhError::Degenerate(
-                "120Δp − 15(d0 + d1) + 5X = 0 for these angles: choose other φ0, φ2".into(),
-            ));
-        }
-        let b = solve_qiq(&c, None)?;
-        let three = f(3);
-        let a1 = (b - (a0.clone() + a2.clone()).scale(&three)).scale(&(F::one() / f(4)));
+        let a1 = middle_coefficient((&self.p0, &self.d0), (&self.p1, &self.d1), &a0, &a2, None)?;
         let curve = PhCurve::new(vec![a0, a1, a2], self.p0.clone())?;
         let bending_energy = quick_energy(&curve);
         Ok(SpatialHermiteQuintic {

@@ -718,3 +718,11 @@ pub(crate) fn check_hermite_ends<F: Scalar>(
     }
     Ok(())
 }
+
+/// `a i b*` (the quaternion product of the PH hodograph `r′ = A i A*`).
+pub(crate) fn aib<F: Scalar>(
+    a: &rcagd_algebra::Quaternion<F>,
+    b: &rcagd_algebra::Quaternion<F>,
+) -> rcagd_algebra::Quaternion<F> {
+    a.clone() * rcagd_algebra::Quaternion::i() * b.conj()
+}
