@@ -237,7 +237,8 @@ fn bernstein_range(p: &P, c: &Rational, d: &Rational) -> Result<(Rational, Ratio
 }
 
 /// A rational `s ≥ √x` (within a relative 2⁻⁴⁰ or so), verified exactly.
-fn sqrt_upper(x: &Rational) -> Rational {
+/// A rational `s ≥ √x` (an `f64` guess made safe, checked exactly).
+pub(crate) fn sqrt_upper(x: &Rational) -> Rational {
     let guess = Scalar::to_f64(x).sqrt() * (1.0 + 1e-12) + f64::MIN_POSITIVE;
     let mut s = Scalar::to_rational(&guess).unwrap_or(Rational::ONE);
     while s.clone() * s.clone() < *x {

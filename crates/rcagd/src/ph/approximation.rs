@@ -366,18 +366,13 @@ fn distance_bound_squared(
     bernstein_ratio_bound(&nb, &wb, target, 5)
 }
 
-/// A rational `ε ≥ √b` with few digits (3 significant decimals, checked `ε² ≥ b` exactly).
-pub(crate) fn sqrt_upper(b: &Rational) -> Rational {
+/// A rational `ε ≥ √b` with few digits: the exact upper bound of
+/// [`crate::canal::regularity::sqrt_upper`] rounded up to 3 significant decimals.
+pub(crate) fn sqrt_upper_decimal(b: &Rational) -> Rational {
     if *b <= Rational::ZERO {
         return Rational::ZERO;
     }
-    let f = Scalar::to_f64(b).sqrt();
-    let mut e = Rational::try_from(f * (1.0 + 1e-9)).unwrap_or(Rational::ONE);
-    e = round_decimal(&e, 3, true);
-    while &e * &e < *b {
-        e = round_decimal(&(&e * Rational::from_ratio(101, 100)), 3, true);
-    }
-    e
+    round_decimal(&crate::canal::regularity::sqrt_upper(b), 3, true)
 }
 
 /// `x` rounded to the grid `2⁻ᵏ`.
@@ -676,7 +671,7 @@ fn fit_piece(
     let tol2 = tolerance * tolerance;
     let interval = (t0.clone(), t1.clone());
     let b = distance_bound_squared(&curve, spine, &interval, &m0, &tol2)?;
-    let eps = sqrt_upper(&b);
+    let eps = sqrt_upper_decimal(&b);
     if eps > *tolerance {
         return Ok(None);
     }

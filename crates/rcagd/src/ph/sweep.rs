@@ -73,7 +73,7 @@ pub fn check_sweep_regularity<F: Scalar>(
             rho2 = n;
         }
     }
-    let rho = super::approximation::sqrt_upper(&rho2);
+    let rho = super::approximation::sqrt_upper_decimal(&rho2);
     let pos = curve.position();
     let mut exact: Vec<Poly<Rational>> = Vec::with_capacity(3);
     for p in &pos {
