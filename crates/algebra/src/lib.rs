@@ -19,6 +19,7 @@ pub mod integer;
 pub mod interval;
 pub mod linalg;
 pub mod mpoly;
+pub mod plane_positivity;
 pub mod poly;
 pub mod quadratic;
 pub mod quaternion;

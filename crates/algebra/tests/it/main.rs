@@ -5,4 +5,5 @@ mod big_integers;
 mod conic_point_props;
 mod conic_point_rows;
 mod fields_linalg;
+mod plane_positivity;
 mod roots_resultants;

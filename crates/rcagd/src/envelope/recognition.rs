@@ -42,6 +42,8 @@ use crate::lines::{ComplexPointRow, LineNet, PointRow, SqrtScalar};
 use crate::pn::poly::{cancel_gcd, div_exact, gcd2, identity_cert, mag, normalize_content};
 use crate::Certified;
 use rcagd_algebra::mpoly::MPoly;
+use rcagd_algebra::plane_positivity::{plane_positivity, PlanePositivity};
+use rcagd_algebra::Rational;
 use rcagd_algebra::{sqrt_in_field, Certificate, Matrix, Scalar};
 use std::collections::BTreeMap;
 use thiserror::Error;
@@ -538,6 +540,39 @@ fn lorentz<F: Scalar>(a: &[MPoly<F>; 4], b: &[MPoly<F>; 4]) -> MPoly<F> {
     &(&(&(&a[0] * &b[0]) + &(&a[1] * &b[1])) + &(&a[2] * &b[2])) - &(&a[3] * &b[3])
 }
 
+/// `Some(proof)` if the Lorentz Gram determinant `gram` of the family's tangent planes is
+/// negative at every real `(u, v)` off the poles `den = 0`: first the sufficient test of
+/// [`certainly_positive`] on `−gram`, then the exact decision
+/// [`rcagd_algebra::plane_positivity::plane_positivity`] on `−gram / den^{2k}` (the largest
+/// even power of the denominator that divides it; the sign is kept). `None` when `gram ≥ 0`
+/// somewhere (a real envelope point, possibly a double one) or the decision stays open.
+fn timelike_everywhere<F: Scalar>(gram: &MPoly<F>, den: &MPoly<F>) -> Option<String> {
+    let neg = -gram;
+    if certainly_positive(&neg) {
+        return Some("every term of −Gram is an even monomial with a positive coefficient".into());
+    }
+    let to_q = |p: &MPoly<F>| -> Option<MPoly<Rational>> {
+        let terms = p
+            .terms()
+            .map(|(e, c)| Some((e.to_vec(), c.to_rational()?)))
+            .collect::<Option<Vec<_>>>()?;
+        MPoly::from_terms(p.nvars().max(2), terms).ok()
+    };
+    let mut g = to_q(&neg)?;
+    if let Some(dq) = to_q(den) {
+        if dq.total_degree().unwrap_or(0) > 0 {
+            let d2 = &dq * &dq;
+            while let Some(q) = div_exact(&g, &d2) {
+                g = q;
+            }
+        }
+    }
+    match plane_positivity(&g) {
+        Ok(PlanePositivity::Positive(proof)) => Some(format!("proved: {}", proof.summary)),
+        _ => None,
+    }
+}
+
 /// `p > 0` on all of R², decided by a sufficient condition: a positive constant term and
 /// every other term an even monomial `u^{2i} v^{2j}` with a positive coefficient.
 fn certainly_positive<F: Scalar>(p: &MPoly<F>) -> bool {
@@ -778,10 +813,10 @@ fn recognize<F: Scalar>(fam: &SphereFamily<F>) -> Result<Recognition<F>, Recogni
     // the tangent plane's Lorentz Gram determinant
     let gram =
         &(&lorentz(&pu, &pu) * &lorentz(&pv, &pv)) - &(&lorentz(&pu, &pv) * &lorentz(&pu, &pv));
-    if certainly_positive(&-&gram) {
-        return Err(RecognitionError::NoRealEnvelope(
-            "the Lorentz Gram determinant of the tangent plane, ⟨Φ_u,Φ_u⟩⟨Φ_v,Φ_v⟩ − ⟨Φ_u,Φ_v⟩², is negative for all (u, v): every tangent plane is timelike, its normal line misses Ω (Gruber §3.1.2), neighbouring spheres are nested".into(),
-        ));
+    if let Some(proof) = timelike_everywhere(&gram, d) {
+        return Err(RecognitionError::NoRealEnvelope(format!(
+            "the Lorentz Gram determinant of the tangent plane, ⟨Φ_u,Φ_u⟩⟨Φ_v,Φ_v⟩ − ⟨Φ_u,Φ_v⟩², is negative for all real (u, v) ({proof}): every tangent plane is timelike, its normal line misses Ω (Gruber §3.1.2), neighbouring spheres are nested"
+        )));
     }
     let h = polar_omega(&g);
     // coefficient vectors of h

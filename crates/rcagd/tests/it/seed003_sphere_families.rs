@@ -1296,6 +1296,21 @@ fn recognition_errors_are_named() {
         matches!(e, Err(RecognitionError::NoRealEnvelope(_))),
         "{e:?}"
     );
+    // nested spheres whose Gram determinant −2 − 12(v + 1)² has odd monomials: the
+    // sufficient even-monomial test cannot see it, the exact decision on the plane
+    // (rcagd_algebra::plane_positivity) proves it
+    let e = family_of(["u", "v", "v^2+2*v+1+u", "2*u"]).recognize();
+    match e {
+        Err(RecognitionError::NoRealEnvelope(m)) => assert!(m.contains("proved"), "{m}"),
+        other => panic!("{other:?}"),
+    }
+    // spheres nested only where v² < 3u² + 3: Gram = v² − 3u² − 3 has real points, so the
+    // family is not refused as nested (its normal lines span 5 dimensions)
+    let e = family_of(["u", "v", "u*v", "2*u"]).recognize();
+    assert!(
+        !matches!(e, Err(RecognitionError::NoRealEnvelope(_))),
+        "{e:?}"
+    );
     // centres in a plane: the normal lines pass through one point (a bundle, rank 3)
     let e = family_of(["u", "v", "0", "u^2+v^2"]).recognize();
     match e {
