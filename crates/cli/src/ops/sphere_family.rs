@@ -35,6 +35,8 @@ const SPHERE_FAMILY_ENVELOPE: OpSpec = OpSpec {
         A,
         A_IMAGINARY,
         B,
+        A_DENOMINATOR,
+        B_DENOMINATOR,
         DOMAIN,
         CENTRES,
         SPHERES,
@@ -68,8 +70,23 @@ fn net_envelope(args: &OpArgs) -> Result<SphereFamilyEnvelope<Rational>, OpError
         .ok_or_else(|| OpError::param("a", "the support function a is required"))?;
     let a_im = args.opt_grid("a_imaginary")?;
     let b = args.opt_grid("b")?;
-    SphereFamilyEnvelope::<Rational>::from_data(kind, &points, &a, a_im.as_deref(), b.as_deref())
-        .map_err(|e| OpError::param(e.input(), e.to_string()))
+    let a_den = args.opt_grid("a_denominator")?;
+    let b_den = args.opt_grid("b_denominator")?;
+    if b.is_none() && b_den.is_some() {
+        return Err(OpError::param(
+            "b_denominator",
+            "b_denominator without b: an elliptic net's default b = ā(v) takes a's denominator",
+        ));
+    }
+    SphereFamilyEnvelope::<Rational>::from_data(
+        kind,
+        &points,
+        &a,
+        a_im.as_deref(),
+        b.as_deref(),
+        [a_den.as_deref(), b_den.as_deref()],
+    )
+    .map_err(|e| OpError::param(e.input(), e.to_string()))
 }
 
 const SPHERE_FAMILY_CYCLOGRAPHIC: OpSpec = OpSpec {
@@ -81,6 +98,8 @@ const SPHERE_FAMILY_CYCLOGRAPHIC: OpSpec = OpSpec {
         A,
         A_IMAGINARY,
         B,
+        A_DENOMINATOR,
+        B_DENOMINATOR,
         ParamSpec::required(
             "at",
             ParamKind::Points,
@@ -267,6 +286,18 @@ const A_IMAGINARY: ParamSpec = ParamSpec::optional(
     "a_imaginary",
     ParamKind::Grid,
     "elliptic nets: the imaginary part of a (default 0)",
+);
+
+const A_DENOMINATOR: ParamSpec = ParamSpec::optional(
+    "a_denominator",
+    ParamKind::Grid,
+    "a rational support function a = (a + i·a_imaginary)/a_denominator: power coefficients of u^i v^j of the real denominator (default 1)",
+);
+
+const B_DENOMINATOR: ParamSpec = ParamSpec::optional(
+    "b_denominator",
+    ParamKind::Grid,
+    "a rational support function b = b/b_denominator: power coefficients of u^i v^j (default 1; elliptic nets with the default b = ā(v) use a's denominator)",
 );
 
 const B: ParamSpec = ParamSpec::optional(

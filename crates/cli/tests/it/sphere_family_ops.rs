@@ -438,3 +438,19 @@ fn the_pencil_and_bundle_generation_is_drawn_and_certified() {
     let (_, msg) = build_err(&format!("{head}points = [[0, 1, 0, 0]]\n"));
     assert!(msg.contains("needs 5 points"), "{msg}");
 }
+
+#[test]
+fn rational_support_functions_through_the_op() {
+    // §3.3.1's net with a = u²/(1 + u²) and b = v²/(v² + 3): a rational family Φ, the
+    // envelope certified; a zero denominator is an input error at the support function
+    let net = "op = \"sphere_family_envelope\"\nnet = \"hyperbolic\"\npoints = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 2, 0, 1], [0, 0, 1, 0]]\na = [[0], [0], [1]]\nb = [[0, 0, 1]]\ndomain = [1, 2, \"1/4\", 1]\n";
+    let objs = build(&format!(
+        "{HEAD}{net}a_denominator = [[1], [0], [1]]\nb_denominator = [[3, 0, 1]]\n"
+    ));
+    crate::common::assert_exact_patches_certifying(&objs[0], "Φ solves (3.7)");
+    let (_, m) = build_err(&format!("{HEAD}{net}a_denominator = [[0]]\n"));
+    assert!(m.contains("denominator 0"), "{m}");
+    // b's denominator must depend on v only, as b does
+    let (_, m) = build_err(&format!("{HEAD}{net}b_denominator = [[3], [1]]\n"));
+    assert!(m.contains("b_u"), "{m}");
+}

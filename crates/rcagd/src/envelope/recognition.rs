@@ -23,7 +23,9 @@
 //!    contains `g`). It is found as a univariate rational function by linear algebra;
 //!    a single pole `ρ` is moved to `u = ∞` by choosing the axis point `c(ρ)` as the row's
 //!    direction (a Möbius change of the axis parameter), after which the support function
-//!    of Gruber (3.6) is polynomial.
+//!    of Gruber (3.6) is polynomial; a denominator with several roots is kept as a
+//!    rational support function ([`Support::over`]; hyperbolic and elliptic nets — on a
+//!    parabolic net `a_u = b_v` ties `b` to `a′` and only a polynomial `a` is recovered).
 //! 3. The envelope is built from the recovered net and support functions
 //!    ([`SphereFamilyEnvelope`]), and the certificate `Φ_net(u(u, v), v(u, v)) ≡ Φ(u, v)`
 //!    proves that it is the envelope of the given family.
@@ -75,9 +77,9 @@ pub enum RecognitionError {
         /// What was found.
         detail: String,
     },
-    /// A support function is no polynomial in any parametrization of its axis (it has
-    /// more than one pole), so Gruber (3.6) does not apply.
-    #[error("the support function {which} is not polynomial in any parametrization of its axis: {detail}")]
+    /// A support function could not be recovered: no rational function of bounded degree
+    /// fits, or a parabolic net's support function has several poles.
+    #[error("the support function {which} is not supported: {detail}")]
     UnsupportedSupport {
         /// `"a"` or `"b"`.
         which: &'static str,
@@ -969,6 +971,9 @@ enum Recovered<F> {
     Polynomial(Vec<Cx<F>>),
     /// A single pole `ρ` (of some order).
     Pole(Cx<F>),
+    /// A rational function `num/den` (coefficients lowest first) whose denominator has
+    /// more than one root.
+    Rational(Vec<Cx<F>>, Vec<Cx<F>>),
 }
 
 fn cpoly_scale_real<F: Scalar>(p: &CPoly<F>, q: &MPoly<F>) -> CPoly<F> {
@@ -1106,14 +1111,9 @@ fn recover_univariate<F: Scalar>(
         }) {
             return Ok(Recovered::Pole(rho));
         }
-        let text: Vec<String> = den.iter().map(Cx::text).collect();
-        return Err(RecognitionError::UnsupportedSupport {
-            which,
-            detail: format!(
-                "its denominator (coefficients {}, lowest first) has more than one root, so no Möbius change of the axis parameter makes it a polynomial (Gruber (3.6))",
-                text.join(", ")
-            ),
-        });
+        // several poles: no Möbius change makes it a polynomial; a rational support
+        // function (Support::over) takes it as it is
+        return Ok(Recovered::Rational(num, den));
     }
     Err(RecognitionError::UnsupportedSupport {
         which,
@@ -1133,6 +1133,39 @@ fn polar_dot<F: Scalar>(row: &[CPoly<F>; 4], n: &[MPoly<F>; 4]) -> CPoly<F> {
 
 fn real_row<F: Scalar>(p0: &[F; 4], p1: &[F; 4], x: &MPoly<F>, y: &MPoly<F>) -> [CPoly<F>; 4] {
     core::array::from_fn(|k| CPoly::real(&y.scale(&p0[k]) + &x.scale(&p1[k])))
+}
+
+/// The support function `num/den` in variable `var` with a real denominator: for complex
+/// coefficients `num·d̄en / (den·d̄en)` (`den·d̄en = |den|²` on the real line has real
+/// coefficients).
+fn support_rational<F: Scalar>(num: &[Cx<F>], den: &[Cx<F>], var: usize) -> Support<F> {
+    let conj: Vec<Cx<F>> = den
+        .iter()
+        .map(|c| Cx {
+            re: c.re.clone(),
+            im: -c.im.clone(),
+        })
+        .collect();
+    let mul = |a: &[Cx<F>], b: &[Cx<F>]| -> Vec<Cx<F>> {
+        let mut out = vec![Cx::zero(); (a.len() + b.len()).saturating_sub(1)];
+        for (i, x) in a.iter().enumerate() {
+            for (j, y) in b.iter().enumerate() {
+                out[i + j] = out[i + j].add(&x.mul(y));
+            }
+        }
+        out
+    };
+    let n = support_poly(&mul(num, &conj), var);
+    let d = support_poly(&mul(den, &conj), var);
+    n.over(d.re)
+}
+
+fn support_of<F: Scalar>(r: Recovered<F>, var: usize) -> Option<Support<F>> {
+    match r {
+        Recovered::Polynomial(c) => Some(support_poly(&c, var)),
+        Recovered::Rational(n, d) => Some(support_rational(&n, &d, var)),
+        Recovered::Pole(_) => None,
+    }
 }
 
 fn support_poly<F: Scalar>(coeffs: &[Cx<F>], var: usize) -> Support<F> {
@@ -1174,9 +1207,10 @@ fn build<F: Scalar>(
                         axes.move_pole(false, &rho);
                         continue;
                     }
-                    (Recovered::Polynomial(a), Recovered::Polynomial(b)) => {
-                        (support_poly(&a, 0), support_poly(&b, 1))
-                    }
+                    (ra, rb) => match (support_of(ra, 0), support_of(rb, 1)) {
+                        (Some(a), Some(b)) => (a, b),
+                        _ => continue,
+                    },
                 }
             }
             Axes::Elliptic { c } => {
@@ -1203,8 +1237,10 @@ fn build<F: Scalar>(
                         axes.move_pole(true, &rho);
                         continue;
                     }
-                    Recovered::Polynomial(a) => {
-                        let a = support_poly(&a, 0);
+                    other => {
+                        let Some(a) = support_of(other, 0) else {
+                            continue;
+                        };
                         let b = a.conjugate_in_v();
                         (a, b)
                     }
@@ -1225,6 +1261,12 @@ fn build<F: Scalar>(
                         continue;
                     }
                     Recovered::Polynomial(a) => a,
+                    Recovered::Rational(..) => {
+                        return Err(RecognitionError::UnsupportedSupport {
+                            which: "a",
+                            detail: "a rational support function with several poles on a parabolic net (a_u = b_v ties b to a'; only polynomial a, or a single pole moved to ∞, is recovered)".into(),
+                        })
+                    }
                 };
                 let (cr, dr) = parabolic_rows(c, cplx)?;
                 // b = fᵀΦ, f = D(d₀ + u d₁ + v c₁); Q S f = D(Q S d₀ + P S d₁ + Q R c₁)
@@ -1264,6 +1306,12 @@ fn build<F: Scalar>(
                                 "b − v·a'(u) has a pole at u = {} although a is polynomial",
                                 rho.text()
                             ),
+                        })
+                    }
+                    Recovered::Rational(..) => {
+                        return Err(RecognitionError::UnsupportedSupport {
+                            which: "b",
+                            detail: "b − v·a'(u) has several poles although a is polynomial".into(),
                         })
                     }
                 };

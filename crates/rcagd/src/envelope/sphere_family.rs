@@ -135,14 +135,19 @@ impl SphereFamilyError {
     }
 }
 
-/// A support function `a(u, v)` (Gruber (3.6)): real part and, for elliptic nets, imaginary
-/// part (polynomials in the net parameters `u` = variable 0, `v` = variable 1).
+/// A support function `a(u, v) = (re + i·im)/den` (Gruber (3.6)): real part and, for
+/// elliptic nets, imaginary part of the numerator, and a real denominator (1 for a
+/// polynomial support function), polynomials in the net parameters `u` = variable 0,
+/// `v` = variable 1. A rational support function gives a rational family `Φ`: the
+/// equations of (3.7) are multiplied by their denominators (`a_u = (p_u q − p q_u)/q²`).
 #[derive(Debug, Clone)]
 pub struct Support<F> {
-    /// Real part.
+    /// Real part of the numerator.
     pub re: MPoly<F>,
-    /// Imaginary part (zero for hyperbolic and parabolic nets).
+    /// Imaginary part of the numerator (zero for hyperbolic and parabolic nets).
     pub im: MPoly<F>,
+    /// The real denominator (the constant 1 for a polynomial support function).
+    pub den: MPoly<F>,
 }
 
 impl<F: Scalar> Support<F> {
@@ -151,12 +156,32 @@ impl<F: Scalar> Support<F> {
         Support {
             re,
             im: MPoly::zero(2),
+            den: MPoly::constant(2, F::one()),
         }
     }
 
     /// A complex support function `re + i·im`.
     pub fn complex(re: MPoly<F>, im: MPoly<F>) -> Self {
-        Support { re, im }
+        Support {
+            re,
+            im,
+            den: MPoly::constant(2, F::one()),
+        }
+    }
+
+    /// This support function divided by the real polynomial `den` (a rational support
+    /// function; `den` must not vanish identically, else [`SphereFamilyEnvelope::new`]
+    /// refuses it).
+    pub fn over(self, den: MPoly<F>) -> Self {
+        Support {
+            den: &self.den * &den,
+            ..self
+        }
+    }
+
+    /// `true` for a polynomial support function (constant denominator).
+    pub fn is_polynomial(&self) -> bool {
+        self.den.total_degree().unwrap_or(0) == 0
     }
 
     /// The univariate polynomial `Σ cₖ xᵏ` (real coefficients, lowest first) in variable `var`.
@@ -183,6 +208,7 @@ impl<F: Scalar> Support<F> {
         Support {
             re: swap_vars(&self.re),
             im: -&swap_vars(&self.im),
+            den: swap_vars(&self.den),
         }
     }
 
@@ -191,6 +217,26 @@ impl<F: Scalar> Support<F> {
             re: self.re.clone(),
             im: self.im.clone(),
         }
+    }
+
+    /// The support function with each coefficient mapped by `f`.
+    pub fn map<G: Scalar>(&self, f: impl Fn(&F) -> G + Copy) -> Support<G> {
+        Support {
+            re: self.re.map(f),
+            im: self.im.map(f),
+            den: self.den.map(f),
+        }
+    }
+
+    /// The numerators of the derivative `∂a/∂x_i = (p_i q − p q_i)/q²` (real and imaginary
+    /// parts; the denominator is `q²`).
+    fn derivative_numerators(&self, i: usize) -> (MPoly<F>, MPoly<F>) {
+        let q = &self.den;
+        let qi = q.partial(i);
+        (
+            &(&self.re.partial(i) * q) - &(&self.re * &qi),
+            &(&self.im.partial(i) * q) - &(&self.im * &qi),
+        )
     }
 }
 
@@ -383,10 +429,12 @@ fn cpartial<F: Scalar>(p: &CPoly<F>, i: usize) -> CPoly<F> {
 type CDeriv<'a, F> = Box<dyn Fn(&CPoly<F>) -> CPoly<F> + 'a>;
 
 /// One equation `rowᵀ x = rhs` of (3.7) with its name.
+/// `rowᵀ x = rhs / den`.
 struct Equation<F> {
     name: &'static str,
     row: [CPoly<F>; 4],
     rhs: CPoly<F>,
+    den: CPoly<F>,
 }
 
 impl<F: Scalar> SphereFamilyEnvelope<F> {
@@ -462,7 +510,7 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
         let d = NetParameters::degree_bounds(all.iter());
         let mut st: Vec<MPoly<F>> = all.iter().map(|p| params.substitute(p, d)).collect();
         let candidates = factor_candidates(&params, &w);
-        cancel_common(&mut st, &candidates);
+        cancel_common_checked(&mut st, &candidates);
         normalize_content(&mut st);
         let phi_st: [MPoly<F>; 4] = core::array::from_fn(|k| st[k].clone());
         let phi_st_den = st[4].clone();
@@ -471,7 +519,7 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
         for i in 0..3 {
             psi.push(&(&phi_st[i] * &w[3]) - &(&phi_st[3] * &w[i]));
         }
-        cancel_common(&mut psi, &candidates);
+        cancel_common_checked(&mut psi, &candidates);
         normalize_content(&mut psi);
         Ok(SphereFamilyEnvelope {
             net: net.clone(),
@@ -490,7 +538,8 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
     /// (`[c₀, c₁, d₀, d₁]` for hyperbolic and parabolic nets with `d(u, v) = d₀ + u d₁ + v c₁`
     /// for the latter; `[Re c₀, Im c₀, Re c₁, Im c₁]` for elliptic nets), the support
     /// function `a` as a grid of power coefficients of `uⁱvʲ` (with an imaginary part for
-    /// elliptic nets) and `b` (default for elliptic nets: `ā(v)`).
+    /// elliptic nets) and `b` (default for elliptic nets: `ā(v)`), each optionally divided
+    /// by a real denominator grid (`dens = [a's, b's]`: rational support functions).
     ///
     /// # Errors
     /// [`SphereFamilyError::InconsistentSupport`] for a wrong number of rows or a missing
@@ -501,6 +550,7 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
         a: &[Vec<F>],
         a_im: Option<&[Vec<F>]>,
         b: Option<&[Vec<F>]>,
+        dens: [Option<&[Vec<F>]>; 2],
     ) -> Result<Self, SphereFamilyError> {
         let bad = |m: String| SphereFamilyError::InconsistentSupport(m);
         let rows4: Vec<[F; 4]> = rows
@@ -522,12 +572,19 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
         }
         let four: [[F; 4]; 4] = core::array::from_fn(|k| rows4[k].clone());
         let net = LineNet::from_points(kind, &four)?;
-        let a = Support {
-            re: grid_poly(a),
-            im: a_im.map(grid_poly).unwrap_or_else(|| MPoly::zero(2)),
+        let over = |s: Support<F>, d: Option<&[Vec<F>]>| match d {
+            Some(g) => s.over(grid_poly(g)),
+            None => s,
         };
+        let a = over(
+            Support::complex(
+                grid_poly(a),
+                a_im.map(grid_poly).unwrap_or_else(|| MPoly::zero(2)),
+            ),
+            dens[0],
+        );
         let b = match (b, kind) {
-            (Some(g), _) => Support::from_grid(g),
+            (Some(g), _) => over(Support::from_grid(g), dens[1]),
             (None, NetKind::Elliptic) => a.conjugate_in_v(),
             (None, _) => {
                 return Err(bad(
@@ -797,11 +854,42 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
         f: impl Fn(&F) -> G + Copy,
     ) -> Result<SphereFamilyEnvelope<G>, SphereFamilyError> {
         let net = self.net.map_scalar(f);
-        let m = |s: &Support<F>| Support {
-            re: s.re.map(f),
-            im: s.im.map(f),
-        };
-        SphereFamilyEnvelope::new(&net, m(&self.a), m(&self.b))
+        SphereFamilyEnvelope::new(&net, self.a.map(f), self.b.map(f))
+    }
+}
+
+/// [`cancel_common`] on the homogeneous vector `polys`; for inexact scalars the result is
+/// kept only if it is the same projective point as before at three sample parameters
+/// (`f64` division drops coefficients below a tolerance relative to the largest one, which
+/// for polynomials of high degree can accept a candidate that does not divide: then the
+/// common factor is kept, as the exact path would not have found it either).
+fn cancel_common_checked<F: Scalar>(polys: &mut [MPoly<F>], candidates: &[MPoly<F>]) {
+    if F::EXACT {
+        cancel_common(polys, candidates);
+        return;
+    }
+    let before = polys.to_vec();
+    cancel_common(polys, candidates);
+    let samples = [
+        ((3, 10), (7, 10)),
+        ((-11, 10), (9, 20)),
+        ((23, 10), (-3, 5)),
+    ];
+    let at = |ps: &[MPoly<F>], (s, t): ((i64, i64), (i64, i64))| -> Vec<f64> {
+        let x = [F::from_ratio(s.0, s.1), F::from_ratio(t.0, t.1)];
+        ps.iter()
+            .map(|p| p.eval(&x).map(|v| v.to_f64()).unwrap_or(f64::NAN))
+            .collect()
+    };
+    let parallel = samples.iter().all(|&st| {
+        let (a, b) = (at(&before, st), at(polys, st));
+        let na = a.iter().map(|x| x * x).sum::<f64>().sqrt();
+        let nb = b.iter().map(|x| x * x).sum::<f64>().sqrt();
+        (0..a.len())
+            .all(|i| (0..a.len()).all(|j| (a[i] * b[j] - a[j] * b[i]).abs() <= 1e-8 * na * nb))
+    });
+    if !parallel {
+        polys.clone_from_slice(&before);
     }
 }
 
@@ -1120,6 +1208,11 @@ fn check_support<F: Scalar>(
 ) -> Result<(), SphereFamilyError> {
     let sc = 1.0;
     let bad = |m: &str| Err(SphereFamilyError::InconsistentSupport(m.to_string()));
+    if is_zero_poly(&a.den, sc) || is_zero_poly(&b.den, sc) {
+        return bad("a support function has the denominator 0");
+    }
+    let (a_u, a_v) = (a.derivative_numerators(0), a.derivative_numerators(1));
+    let (b_u, b_v) = (b.derivative_numerators(0), b.derivative_numerators(1));
     match net.kind() {
         NetKind::Hyperbolic | NetKind::Parabolic => {
             if !is_zero_poly(&a.im, sc) || !is_zero_poly(&b.im, sc) {
@@ -1128,31 +1221,37 @@ fn check_support<F: Scalar>(
         }
         NetKind::Elliptic => {}
     }
-    if !is_zero_poly(&a.re.partial(1), sc) || !is_zero_poly(&a.im.partial(1), sc) {
+    if !is_zero_poly(&a_v.0, sc) || !is_zero_poly(&a_v.1, sc) {
         return bad("a_v ≢ 0: the support function a depends on u only ((3.11), (3.43), (3.55))");
     }
     match net.kind() {
         NetKind::Hyperbolic => {
-            if !is_zero_poly(&b.re.partial(0), sc) {
+            if !is_zero_poly(&b_u.0, sc) {
                 return bad(
                     "b_u ≢ 0: the support function b of a hyperbolic net depends on v only (3.11)",
                 );
             }
         }
         NetKind::Elliptic => {
-            if !is_zero_poly(&b.re.partial(0), sc) || !is_zero_poly(&b.im.partial(0), sc) {
+            if !is_zero_poly(&b_u.0, sc) || !is_zero_poly(&b_u.1, sc) {
                 return bad(
                     "b_u ≢ 0: the support function b of an elliptic net depends on v only (3.43)",
                 );
             }
-            let want_re = swap_vars(&a.re);
-            let want_im = -&swap_vars(&a.im);
-            if !is_zero_poly(&(&b.re - &want_re), sc) || !is_zero_poly(&(&b.im - &want_im), sc) {
+            // b = ā(v) cross-multiplied: b.re·ā.den = ā.re·b.den, likewise the imaginary parts
+            let conj = a.conjugate_in_v();
+            let cross = |x: &MPoly<F>, y: &MPoly<F>| &(x * &conj.den) - &(y * &b.den);
+            if !is_zero_poly(&cross(&b.re, &conj.re), sc)
+                || !is_zero_poly(&cross(&b.im, &conj.im), sc)
+            {
                 return bad("b ≠ ā: the support functions of an elliptic net are conjugate, b(v) = ā(v) (Gruber (3.44), corrected)");
             }
         }
         NetKind::Parabolic => {
-            if !is_zero_poly(&(&a.re.partial(0) - &b.re.partial(1)), sc) {
+            // a_u = b_v cross-multiplied by the denominators q_a², q_b²
+            let qa2 = &a.den * &a.den;
+            let qb2 = &b.den * &b.den;
+            if !is_zero_poly(&(&(&a_u.0 * &qb2) - &(&b_v.0 * &qa2)), sc) {
                 return bad("a_u ≠ b_v: the support functions of a parabolic net satisfy a_u = b_v (3.55), i.e. b = v·a'(u) + b₀(u)");
             }
         }
@@ -1170,7 +1269,7 @@ fn equations<F: Scalar>(net: &LineNet<F>, a: &Support<F>, b: &Support<F>) -> Vec
     };
     let e = cpolar(&c);
     let f = cpolar(&d);
-    let (ac, bc) = match net.kind() {
+    let (ac, bc, aq, bq) = match net.kind() {
         NetKind::Elliptic => {
             let u = CPoly {
                 re: MPoly::var(2, 0),
@@ -1180,9 +1279,16 @@ fn equations<F: Scalar>(net: &LineNet<F>, a: &Support<F>, b: &Support<F>) -> Vec
             (
                 complex_subst(&a.as_cpoly(), 0, &u),
                 complex_subst(&b.as_cpoly(), 1, &v),
+                complex_subst(&CPoly::real(a.den.clone()), 0, &u),
+                complex_subst(&CPoly::real(b.den.clone()), 1, &v),
             )
         }
-        _ => (a.as_cpoly(), b.as_cpoly()),
+        _ => (
+            a.as_cpoly(),
+            b.as_cpoly(),
+            CPoly::real(a.den.clone()),
+            CPoly::real(b.den.clone()),
+        ),
     };
     // derivatives with respect to u and v
     let (du, dv): (CDeriv<'_, F>, CDeriv<'_, F>) = match net.kind() {
@@ -1215,36 +1321,47 @@ fn equations<F: Scalar>(net: &LineNet<F>, a: &Support<F>, b: &Support<F>) -> Vec
     let dvec = |g: &dyn Fn(&CPoly<F>) -> CPoly<F>, x: &[CPoly<F>; 4]| -> [CPoly<F>; 4] {
         core::array::from_fn(|k| g(&x[k]))
     };
+    // (p/q)' = (p' q − p q')/q²
+    let quot = |g: &dyn Fn(&CPoly<F>) -> CPoly<F>, p: &CPoly<F>, q: &CPoly<F>| -> CPoly<F> {
+        g(p).mul(q).sub(&p.mul(&g(q)))
+    };
+    let (aq2, bq2) = (aq.mul(&aq), bq.mul(&bq));
     vec![
         Equation {
             name: "eᵀx = a",
             row: e.clone(),
             rhs: ac.clone(),
+            den: aq.clone(),
         },
         Equation {
             name: "e_uᵀx = a_u",
             row: dvec(&*du, &e),
-            rhs: du(&ac),
+            rhs: quot(&*du, &ac, &aq),
+            den: aq2.clone(),
         },
         Equation {
             name: "e_vᵀx = a_v",
             row: dvec(&*dv, &e),
-            rhs: dv(&ac),
+            rhs: quot(&*dv, &ac, &aq),
+            den: aq2,
         },
         Equation {
             name: "fᵀx = b",
             row: f.clone(),
             rhs: bc.clone(),
+            den: bq.clone(),
         },
         Equation {
             name: "f_uᵀx = b_u",
             row: dvec(&*du, &f),
-            rhs: du(&bc),
+            rhs: quot(&*du, &bc, &bq),
+            den: bq2.clone(),
         },
         Equation {
             name: "f_vᵀx = b_v",
             row: dvec(&*dv, &f),
-            rhs: dv(&bc),
+            rhs: quot(&*dv, &bc, &bq),
+            den: bq2,
         },
     ]
 }
@@ -1255,18 +1372,23 @@ fn real_system<F: Scalar>(
     net: &LineNet<F>,
     eqs: &[Equation<F>],
 ) -> ([[MPoly<F>; 4]; 4], [MPoly<F>; 4]) {
-    let re = |k: usize| -> ([MPoly<F>; 4], MPoly<F>) {
+    // (den · row)ᵀ x = rhs, whose real and imaginary parts are real equations
+    let scaled = |k: usize| -> [CPoly<F>; 4] {
         let e = &eqs[k];
+        core::array::from_fn(|i| e.row[i].mul(&e.den))
+    };
+    let re = |k: usize| -> ([MPoly<F>; 4], MPoly<F>) {
+        let r = scaled(k);
         (
-            core::array::from_fn(|i| e.row[i].re.clone()),
-            e.rhs.re.clone(),
+            core::array::from_fn(|i| r[i].re.clone()),
+            eqs[k].rhs.re.clone(),
         )
     };
     let im = |k: usize| -> ([MPoly<F>; 4], MPoly<F>) {
-        let e = &eqs[k];
+        let r = scaled(k);
         (
-            core::array::from_fn(|i| e.row[i].im.clone()),
-            e.rhs.im.clone(),
+            core::array::from_fn(|i| r[i].im.clone()),
+            eqs[k].rhs.im.clone(),
         )
     };
     let picks = match net.kind() {
@@ -1306,9 +1428,9 @@ impl<F: Scalar> Certified for SphereFamilyEnvelope<F> {
                 out.push(zero_cert("e_u ≡ f_v (3.54)", &zero_vec(&diff), 1.0));
             }
         }
-        // (3.7): rowᵀ Φ − rhs · den ≡ 0
+        // (3.7): (rowᵀ Φ)·q − rhs · den ≡ 0 (q the equation's denominator)
         for eq in &eqs {
-            let lhs = cdot4(&eq.row, &self.phi);
+            let lhs = cdot4(&eq.row, &self.phi).mul(&eq.den);
             let r = CPoly {
                 re: &eq.rhs.re * &self.phi_den,
                 im: &eq.rhs.im * &self.phi_den,
@@ -1519,7 +1641,7 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
         let mut candidates = factor_candidates(&self.params, &w);
         candidates.push(w2[3].clone());
         candidates.sort_by_key(|p| std::cmp::Reverse(p.total_degree().unwrap_or(0)));
-        cancel_common(&mut psi, &candidates);
+        cancel_common_checked(&mut psi, &candidates);
         normalize_content(&mut psi);
         core::array::from_fn(|k| psi[k].clone())
     }
