@@ -61,3 +61,9 @@ def test_examples_with_opencascade(tmp_path):
     best = min(float(line.split("max ")[1].split(",")[0])
                for line in out.splitlines() if "max " in line)
     assert best < 1e-9, out
+
+
+def test_example_sphere_family(tmp_path):
+    out = _run("sphere_family.py", str(tmp_path / "families.step"))
+    assert "all hold: True" in out
+    assert (tmp_path / "families.step").stat().st_size > 0

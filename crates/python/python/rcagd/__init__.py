@@ -814,3 +814,59 @@ def quadric_patch_image(net, weights=None, homogeneous=False, quadric="unit_sphe
     return op("quadric_patch_image", name, net=net, weights=weights, homogeneous=homogeneous,
               quadric=quadric, coefficients=coefficients, matrix=matrix,
               rational_point=rational_point)
+
+
+# --------------------------------------------------------------------------------------
+# Every other op of the registry as a function with its signature and documentation
+# --------------------------------------------------------------------------------------
+
+_KEYWORDS = frozenset(__import__("keyword").kwlist)
+
+
+def _op_function(op_name, summary, params):
+    """A function for the op ``op_name``: required parameters first (positional or
+    keyword), then the optional ones (default ``None``: the op's own default), then
+    ``name``; a parameter spelled like a Python keyword takes a trailing underscore."""
+    import inspect
+
+    P = inspect.Parameter
+    ordered = [p for p in params if p[2] == "required"] + [
+        p for p in params if p[2] != "required"
+    ]
+    py = [(n + "_" if n in _KEYWORDS else n) for n, _, _, _ in ordered]
+    sig = inspect.Signature(
+        [
+            P(pn, P.POSITIONAL_OR_KEYWORD,
+              default=P.empty if req == "required" else None)
+            for pn, (_, _, req, _) in zip(py, ordered)
+        ]
+        + [P("name", P.KEYWORD_ONLY, default=op_name)]
+    )
+
+    def function(*args, **kwargs):
+        bound = sig.bind(*args, **kwargs)
+        bound.apply_defaults()
+        values = dict(bound.arguments)
+        name = values.pop("name")
+        return op(op_name, name, **values)
+
+    lines = [summary, "", "Parameters (as in ``rcagd ops " + op_name + "``):"]
+    for pn, (_, kind, req, doc) in zip(py, ordered):
+        lines.append(f"    {pn}: {kind}, {req}. {doc}")
+    lines.append("    name: the object's name (default: the op name).")
+    lines.append("")
+    lines.append("Returns the object called ``name``; the op's other results are in its "
+                 "``extras``. Errors are ``ValueError`` with the op's message.")
+    function.__name__ = op_name
+    function.__qualname__ = op_name
+    function.__signature__ = sig
+    function.__doc__ = "\n".join(lines)
+    function.__module__ = __name__
+    return function
+
+
+for _name, _summary, _params in _rcagd.ops():
+    if _name not in globals():
+        globals()[_name] = _op_function(_name, _summary, _params)
+        __all__.append(_name)
+del _name, _summary, _params
