@@ -364,10 +364,20 @@ fn raw_counts(
         reciprocal_product(&gp, &l)
     };
     let line = |a: [i64; 4], b: [i64; 4]| wedge(&a.map(Rational::from), &b.map(Rational::from));
+    // the u-coordinates of the common zeros of three conditions: gcd(Res_v(f₁, f₂),
+    // Res_v(f₁, f₃)); verified to be genuine (every root u₀ has one v₀ with
+    // f₁ = f₂ = f₃ = 0, not a root of (f₁, f₂) paired with another of (f₁, f₃)) by
+    // `common_zeros_verified`, else the choice is rejected as special
     let gcd_count = |fs: [MPoly<Rational>; 3]| -> Result<Poly<Rational>, String> {
         let r12 = resultant_in(&fs[0], &fs[1], 1).map_err(|e| e.to_string())?;
         let r13 = resultant_in(&fs[0], &fs[2], 1).map_err(|e| e.to_string())?;
-        Ok(r12.gcd(&r13))
+        let g = r12.gcd(&r13);
+        if !g.is_zero() && !common_zeros_verified(&fs, &g)? {
+            return Err(
+                "the gcd of the resultants pairs different roots (a special choice)".into(),
+            );
+        }
+        Ok(g)
     };
     // three lines through a point P (directions d₁, d₂, d₃)
     let through = |pt: [i64; 4]| -> Result<Poly<Rational>, String> {
@@ -463,6 +473,34 @@ fn raw_counts(
         return Err("degenerate congruence: no parameter point on a generic line (μ = 0)".into());
     }
     Ok((count_pt, count_pl, mu))
+}
+
+/// `true` if every root `u₀` of `g` (a divisor of `gcd(Res_v(f₁, f₂), Res_v(f₁, f₃))`)
+/// is the `u` of a common zero of `f₁, f₂, f₃`: the square-free part of `g` divides
+/// `Res_v(f₁, f₂ + c f₃)` for `c = 1, …, deg_v f₁ + 1`. (If at `u₀` no root `v_i` of
+/// `f₁(u₀, ·)` is a common root of `f₂` and `f₃`, then `f₂ + c f₃` vanishes at some `v_i`
+/// for at most one `c` per root, i.e. for at most `deg_v f₁` values of `c`; a vanishing
+/// leading coefficient of `f₁` at `u₀` makes every resultant vanish there and is a base
+/// point or a special choice either way.)
+fn common_zeros_verified(fs: &[MPoly<Rational>; 3], g: &Poly<Rational>) -> Result<bool, String> {
+    use rcagd_algebra::mpoly::resultant_in;
+    if g.degree().unwrap_or(0) == 0 {
+        return Ok(true);
+    }
+    let sf = g.square_free();
+    let n = fs[0].degree_in(1).unwrap_or(0) as i64;
+    for c in 1..=n + 1 {
+        let h = &fs[1] + &fs[2].scale(&Rational::from(c));
+        let r = resultant_in(&fs[0], &h, 1).map_err(|e| e.to_string())?;
+        if r.is_zero() {
+            continue;
+        }
+        let (_, rem) = r.div_rem(&sf).map_err(|e| e.to_string())?;
+        if !rem.is_zero() {
+            return Ok(false);
+        }
+    }
+    Ok(true)
 }
 
 fn mag<F: Scalar>(p: &MPoly<F>) -> f64 {
