@@ -279,7 +279,8 @@ fn offset_object(
 }
 
 // ---------------------------------------------------------------------------------
-// PN surface from a function of the isotropic model (Theorem 4.3/4.4, A4.2)
+// PN surface from a function of the isotropic model (Peternell Theorem 4.3/4.4,
+// docs/math/laguerre-pn.md#closed-formula)
 // ---------------------------------------------------------------------------------
 
 const PN_GRAPH: OpSpec = OpSpec {
@@ -1852,8 +1853,8 @@ mod tests {
 
     /// `orientation = "negative"` flips the unit normal: the exported surface is the same,
     /// its offset at d is the positive orientation's offset at −d (and not at +d). For
-    /// the pipe of radius 1/2 around the parabola (t, t², 0), the offsets at d = 1/4 have radius 3/4
-    /// (positive) and 1/4 (negative: the family (m; −r)).
+    /// the pipe of radius 1/2 around the parabola (t, t², 0), the offsets at d = 1/4 have radius
+    /// 3/4 (positive) and 1/4 (negative: the family (m; −r)).
     #[test]
     fn negative_orientation_flips_the_normal() {
         let str_val = |s: &str| Value::Str(s.to_string());
@@ -1909,7 +1910,8 @@ mod tests {
                 panic!("a patch")
             };
             let x = p.eval(&q(1, 9), &q(2, 7)).expect("point");
-            // local 1/9 is the family parameter t = 1/4 + (3/4)/9 = 1/3: spine point m = (1/3, 1/9, 0)
+            // local 1/9 is the family parameter t = 1/4 + (3/4)/9 = 1/3:
+            // spine point m = (1/3, 1/9, 0)
             let m = [q(1, 3), q(1, 9), q(0, 1)];
             (0..3)
                 .map(|k| (x[k].clone() - m[k].clone()) * (x[k].clone() - m[k].clone()))

@@ -56,7 +56,7 @@ fn printed_example_u_v() {
     assert_eq!(c[0], rho.clone() * cs);
     assert_eq!(c[1], rho.clone() * q(5, 4) * sn.clone());
     assert_eq!(c[3], r0.clone() + rho.clone() * q(3, 4) * sn);
-    // normals where the second family is at infinity are the seed's constant f and its mirror
+    // normals where the second family is at infinity are the paper's constant f and its mirror
     let n_inf = cy.normal(&t, &qi(0)).expect("finite");
     let f = [qi(0), q(-3, 5), q(4, 5)];
     let f2 = [qi(0), q(-3, 5), q(-4, 5)];
