@@ -49,6 +49,7 @@ pub mod reducing_frame;
 pub mod ruled;
 pub mod support;
 pub mod surface;
+pub mod two_sheet;
 
 pub use isotropic::IsotropicSurface;
 pub use offset::PnOffset;
