@@ -26,6 +26,7 @@ use rcagd::pn::planar::{surface_of_revolution, PnCurve};
 use rcagd::pn::reducing_frame::ReducedConeEnvelope;
 use rcagd::pn::ruled::{CanalPn, CycleFamily, EllipsoidPn, RuledPn};
 use rcagd::pn::support::{anticaustic, anticaustic_certificates, from_support_function};
+use rcagd::pn::two_sheet::TwoSheetPn;
 use rcagd::pn::{Domain, IsotropicSurface, PnError, PnSurface, RatFn};
 use rcagd::Certified;
 use rcagd_algebra::mpoly::MPoly;
@@ -52,6 +53,7 @@ pub const OPS: &[OpSpec] = &[
     PN_REVOLUTION,
     PN_ELLIPSOID,
     PN_QUADRIC,
+    PN_TWO_SHEET,
     HYPERCYCLIDE,
     CYCLOGRAPHIC_SURFACE,
     PN_LAGUERRE,
@@ -1310,6 +1312,41 @@ fn build_pn_quadric(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let h = Hypercyclide::<Q>::quadric(regular_quadric(args)?, first_family(args))
         .map_err(blame("a"))?;
     hypercyclide_objects(args, &h)
+}
+
+const PN_TWO_SHEET: OpSpec = OpSpec {
+    name: "pn_two_sheet_hyperboloid",
+    summary: "the two-sheet hyperboloid x²/a² − y²/b² − z²/c² = 1 (b² ≠ c²) as a PN surface with exact rational offsets for every rational a, b, c: a degree-2 unirational parametrization of its tangent planes (the conic bundle through the vertex normal, base-changed along its 2-section; docs/math/hypercyclides.md#two-sheet-unirational), certified PN and on the quadric",
+    params: &[
+        ParamSpec::required("a", ParamKind::Number, "semi-axis a (the real axis x)"),
+        ParamSpec::required("b", ParamKind::Number, "semi-axis b"),
+        ParamSpec::required("c", ParamKind::Number, "semi-axis c, c² ≠ b²"),
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[\"3/2\", 3, \"1/4\", 1]",
+            "parameter rectangle [τ0, τ1, σ0, σ1]; avoid τ = 0 and σ = 0, which map to the vertex (a, 0, 0)",
+        ),
+        OFFSET,
+        ORIENTATION,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_two_sheet"
+op = "pn_two_sheet_hyperboloid"
+a = 9
+b = 13
+c = 3
+domain = ["3/2", 3, "1/4", 1]
+"#,
+    build: build_pn_two_sheet,
+};
+
+fn build_pn_two_sheet(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let h = TwoSheetPn::<Q>::new(args.number("a")?, args.number("b")?, args.number("c")?)
+        .map_err(blame("c"))?;
+    let certs = vec![h.quadric_certificate()];
+    surface_objects(args, &oriented(args, h.surface()), &domain(args)?, certs, "domain")
 }
 
 const HYPERCYCLIDE: OpSpec = OpSpec {

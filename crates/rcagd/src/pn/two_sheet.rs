@@ -73,7 +73,7 @@ impl<F: Scalar> TwoSheetPn<F> {
         let q = &(&t * &t) + &int(1);
         let p = &(&(&t * &t) * &k(&b2)) + &k(&c2);
         let a2q = q.scale(&a2);
-        let dk = &(&p * &(&a2q + &p)) + &(&(&a2q * &(&s * &s)).scale(&bc));
+        let dk = &(&p * &(&a2q + &p)) + &(&a2q * &(&s * &s)).scale(&bc);
         let kn = (&(&a2q * &t) * &s).scale(&(-(F::from_i64(2) * bc)));
         // homogeneous with the denominator Dₖ·kₙ: e = kₙ², N₂ = (τDₖ + σkₙ)kₙ, N₃ = Dₖkₙ,
         // W + N₁ = (τDₖ + σkₙ)² + Dₖ²
