@@ -89,11 +89,13 @@ fn build_dupin_cyclide(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 
 const DUPIN_CYCLIDE_SPHERES: OpSpec = OpSpec {
     name: "dupin_cyclide_spheres",
-    summary: "the Dupin cyclide enveloping all spheres tangent (in oriented contact) to three oriented spheres (Peternell §3.8.1: Γ(A₁) ∩ Γ(A₂) ∩ Γ(A₃) is a pe circle); reversing a radius's sign picks another of the cyclides",
+    summary: "the Dupin cyclide enveloping all spheres tangent (in oriented contact) to three oriented spheres (Peternell §3.8.1: Γ(A₁) ∩ Γ(A₂) ∩ Γ(A₃) is a pe conic): the cyclide of the pe circle through the three cycles (Euclidean plane), of the pe circle conjugate to the pe hyperbola through them (pseudo-Euclidean plane; 16 covering patches), or the parabolic cyclide of the pe parabola through them (γ-plane; one patch over the box t × s); reversing a radius's sign picks another of the cyclides",
     params: &[
         ParamSpec::required("centers", ParamKind::Points, "the three centres [[x, y, z], …]"),
         ParamSpec::required("radii", ParamKind::Numbers, "the three signed radii (the sign is the orientation)"),
         ParamSpec::optional("offset", ParamKind::Number, "also certify the offset at this distance"),
+        ParamSpec::with_default("t", ParamKind::Numbers, "[-2, 2]", "parabolic cyclide only: parameter interval of the first family (the parabola through the three cycles)"),
+        ParamSpec::with_default("s", ParamKind::Numbers, "[-2, 2]", "parabolic cyclide only: parameter interval of the second family"),
     ],
     example: r#"[[object]]
 name = "cyclide_of_three_spheres"
@@ -117,7 +119,13 @@ fn build_spheres(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         OrientedSphere::new(core::array::from_fn(|k| centers[i][k].clone()), radii[i].clone())
     });
     let cy = from_three_spheres(&spheres).map_err(|e| OpError::param("radii", e.to_string()))?;
-    let patches = cy.covering_patches().map_err(|e| OpError::new(e.to_string()))?;
+    let patches = if cy.conic().is_parabola() {
+        let (t0, t1) = range(args, "t")?;
+        let (s0, s1) = range(args, "s")?;
+        vec![cy.patch((&t0, &t1), (&s0, &s1)).map_err(|e| OpError::new(e.to_string()))?]
+    } else {
+        cy.covering_patches().map_err(|e| OpError::new(e.to_string()))?
+    };
     let certs = certify_three_spheres(&cy, &spheres);
     cyclide_object(args, &cy, patches, certs)
 }

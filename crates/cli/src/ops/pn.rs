@@ -26,6 +26,7 @@ use rcagd::pn::planar::{surface_of_revolution, PnCurve};
 use rcagd::pn::reducing_frame::ReducedConeEnvelope;
 use rcagd::pn::ruled::{CanalPn, CycleFamily, EllipsoidPn, RuledPn};
 use rcagd::pn::support::{anticaustic, anticaustic_certificates, from_support_function};
+use rcagd::pn::two_sheet::TwoSheetPn;
 use rcagd::pn::{Domain, IsotropicSurface, PnError, PnSurface, RatFn};
 use rcagd::Certified;
 use rcagd_algebra::mpoly::MPoly;
@@ -52,6 +53,7 @@ pub const OPS: &[OpSpec] = &[
     PN_REVOLUTION,
     PN_ELLIPSOID,
     PN_QUADRIC,
+    PN_TWO_SHEET,
     HYPERCYCLIDE,
     CYCLOGRAPHIC_SURFACE,
     PN_LAGUERRE,
@@ -279,7 +281,8 @@ fn offset_object(
 }
 
 // ---------------------------------------------------------------------------------
-// PN surface from a function of the isotropic model (Theorem 4.3/4.4, A4.2)
+// PN surface from a function of the isotropic model (Peternell Theorem 4.3/4.4,
+// docs/math/laguerre-pn.md#closed-formula)
 // ---------------------------------------------------------------------------------
 
 const PN_GRAPH: OpSpec = OpSpec {
@@ -1311,6 +1314,41 @@ fn build_pn_quadric(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     hypercyclide_objects(args, &h)
 }
 
+const PN_TWO_SHEET: OpSpec = OpSpec {
+    name: "pn_two_sheet_hyperboloid",
+    summary: "the two-sheet hyperboloid x²/a² − y²/b² − z²/c² = 1 (b² ≠ c²) as a PN surface with exact rational offsets for every rational a, b, c: a degree-2 unirational parametrization of its tangent planes (the conic bundle through the vertex normal, base-changed along its 2-section; docs/math/hypercyclides.md#two-sheet-unirational), certified PN and on the quadric",
+    params: &[
+        ParamSpec::required("a", ParamKind::Number, "semi-axis a (the real axis x)"),
+        ParamSpec::required("b", ParamKind::Number, "semi-axis b"),
+        ParamSpec::required("c", ParamKind::Number, "semi-axis c, c² ≠ b²"),
+        ParamSpec::with_default(
+            "domain",
+            ParamKind::Numbers,
+            "[\"3/2\", 3, \"1/4\", 1]",
+            "parameter rectangle [τ0, τ1, σ0, σ1]; avoid τ = 0 and σ = 0, which map to the vertex (a, 0, 0)",
+        ),
+        OFFSET,
+        ORIENTATION,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_two_sheet"
+op = "pn_two_sheet_hyperboloid"
+a = 9
+b = 13
+c = 3
+domain = ["3/2", 3, "1/4", 1]
+"#,
+    build: build_pn_two_sheet,
+};
+
+fn build_pn_two_sheet(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let h = TwoSheetPn::<Q>::new(args.number("a")?, args.number("b")?, args.number("c")?)
+        .map_err(blame("c"))?;
+    let certs = vec![h.quadric_certificate()];
+    surface_objects(args, &oriented(args, h.surface()), &domain(args)?, certs, "domain")
+}
+
 const HYPERCYCLIDE: OpSpec = OpSpec {
     name: "hypercyclide",
     summary: "the hypercyclide η(L(φ)): cyclographic image of a regular quadric φ moved into a (tilted) Euclidean hyperplane of R⁴ by a rational pe similarity L (boost, translation, scale), as a PN surface (Peternell Prop. 4.3, §4.7), certified as the envelope of the cycles of L(φ)",
@@ -1852,8 +1890,8 @@ mod tests {
 
     /// `orientation = "negative"` flips the unit normal: the exported surface is the same,
     /// its offset at d is the positive orientation's offset at −d (and not at +d). For
-    /// the pipe of radius 1/2 around the parabola (t, t², 0), the offsets at d = 1/4 have radius 3/4
-    /// (positive) and 1/4 (negative: the family (m; −r)).
+    /// the pipe of radius 1/2 around the parabola (t, t², 0), the offsets at d = 1/4 have radius
+    /// 3/4 (positive) and 1/4 (negative: the family (m; −r)).
     #[test]
     fn negative_orientation_flips_the_normal() {
         let str_val = |s: &str| Value::Str(s.to_string());
@@ -1909,7 +1947,8 @@ mod tests {
                 panic!("a patch")
             };
             let x = p.eval(&q(1, 9), &q(2, 7)).expect("point");
-            // local 1/9 is the family parameter t = 1/4 + (3/4)/9 = 1/3: spine point m = (1/3, 1/9, 0)
+            // local 1/9 is the family parameter t = 1/4 + (3/4)/9 = 1/3:
+            // spine point m = (1/3, 1/9, 0)
             let m = [q(1, 3), q(1, 9), q(0, 1)];
             (0..3)
                 .map(|k| (x[k].clone() - m[k].clone()) * (x[k].clone() - m[k].clone()))

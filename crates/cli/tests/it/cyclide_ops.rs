@@ -1,5 +1,6 @@
-//! The `cyclide_blend` op with `point2` (the fitting contact sphere computed by the library)
-//! and the `pn_cone_envelope` op in the degree-reducing frame.
+//! The `cyclide_blend` op with `point2` (the fitting contact sphere computed by the library),
+//! `dupin_cyclide_spheres` in all three plane types, and the `pn_cone_envelope` op in the
+//! degree-reducing frame.
 
 use crate::common::{build_json_certified, value_exact};
 
@@ -43,4 +44,17 @@ fn cone_envelope_reports_its_reducing_frame() {
         .map(|c| c["property"].as_str().unwrap_or("").to_string())
         .collect();
     assert!(props.iter().any(|p| p.contains("Prop. 4.1")), "{props:#?}");
+}
+
+/// Three spheres on a pe hyperbola (spheres of the second family of the printed ring
+/// cyclide) give that ring cyclide (16 patches); three spheres in a γ-plane give the
+/// parabolic cyclide on the box `t × s` (one patch); all certificates hold.
+#[test]
+fn dupin_cyclide_spheres_on_a_hyperbola_and_in_a_gamma_plane() {
+    let hyper = "[[object]]\nname = \"c\"\nop = \"dupin_cyclide_spheres\"\ncenters = [[0, 3, 0], [0, -3, 0], [0, \"15/4\", 3]]\nradii = [9, -1, \"41/4\"]\noffset = 1\n";
+    let v = build_json_certified("cyc-hyperbola", hyper, "c");
+    assert_eq!(value_exact(&v, "kind"), "ring");
+    let gamma = "[[object]]\nname = \"c\"\nop = \"dupin_cyclide_spheres\"\ncenters = [[0, 0, 0], [1, 1, 1], [2, 2, 4]]\nradii = [1, 2, 5]\nt = [-1, 1]\ns = [-1, 1]\n";
+    let v = build_json_certified("cyc-gamma", gamma, "c");
+    assert_eq!(value_exact(&v, "kind"), "parabolic");
 }

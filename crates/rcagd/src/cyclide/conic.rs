@@ -26,8 +26,9 @@ pub enum PeConic<F> {
         rho: F,
     },
     /// The pe parabola `C(t) = C₀ + t U + (t²/2) N` in a γ-plane (Prop. 3.2):
-    /// `⟨U, U⟩ = 1`, `N ≠ 0` isotropic (`⟨N, N⟩ = 0`), `⟨U, N⟩ = 0`; its image is a
-    /// parabolic Dupin cyclide (a cubic).
+    /// `⟨U, U⟩ = 1` (or, from [`PeConic::parabola_scaled`], any `⟨U, U⟩ = g > 0`: the
+    /// parameter is then `√g` times the pe arc length), `N ≠ 0` isotropic
+    /// (`⟨N, N⟩ = 0`), `⟨U, N⟩ = 0`; its image is a parabolic Dupin cyclide (a cubic).
     Parabola {
         /// The vertex `C₀`.
         vertex: [F; 4],
@@ -112,7 +113,7 @@ impl<F: Scalar> PeConic<F> {
         Self::circle_checked(center, w1, w2, F::one(), false)
     }
 
-    fn circle_checked(
+    pub(crate) fn circle_checked(
         center: [F; 4],
         u: [F; 4],
         v: [F; 4],
@@ -166,6 +167,24 @@ impl<F: Scalar> PeConic<F> {
     /// [`CyclideError::IsotropicTangents`] if `⟨U, U⟩ ≤ 0`;
     /// [`CyclideError::NotOrthonormal`] unless `⟨U, U⟩ = 1`, `⟨N, N⟩ = 0`, `⟨U, N⟩ = 0`.
     pub fn parabola(vertex: [F; 4], u: [F; 4], n: [F; 4]) -> Result<Self, CyclideError> {
+        Self::parabola_checked(vertex, u, n, true)
+    }
+
+    /// The pe parabola `C₀ + t U + (t²/2) N` with `⟨U, U⟩ = g > 0` not necessarily 1 (the
+    /// pe-unit tangent `U/√g` need not be rational; docs/math/cyclides.md#three-spheres).
+    ///
+    /// # Errors
+    /// As [`PeConic::parabola`], with "`⟨U, U⟩ > 0`" in place of "`⟨U, U⟩ = 1`".
+    pub fn parabola_scaled(vertex: [F; 4], u: [F; 4], n: [F; 4]) -> Result<Self, CyclideError> {
+        Self::parabola_checked(vertex, u, n, false)
+    }
+
+    pub(crate) fn parabola_checked(
+        vertex: [F; 4],
+        u: [F; 4],
+        n: [F; 4],
+        unit: bool,
+    ) -> Result<Self, CyclideError> {
         let s = size(&u).max(size(&n)).max(1.0);
         if n.iter().all(|x| negligible(x, s)) {
             return Err(CyclideError::ZeroRadius(
@@ -179,15 +198,17 @@ impl<F: Scalar> PeConic<F> {
                 format_scalar(&uu)
             )));
         }
-        if !(negligible(&(uu.clone() - F::one()), s * s)
+        let one = if unit { F::one() } else { uu.clone() };
+        if !(negligible(&(uu.clone() - one), s * s)
             && negligible(&nn, s * s)
             && negligible(&un, s * s))
         {
             return Err(CyclideError::NotOrthonormal(format!(
-                "⟨U, U⟩ = {}, ⟨N, N⟩ = {}, ⟨U, N⟩ = {} (need 1, 0, 0: a pe parabola in a γ-plane) for U = {}, N = {}",
+                "⟨U, U⟩ = {}, ⟨N, N⟩ = {}, ⟨U, N⟩ = {} (need {}, 0, 0: a pe parabola in a γ-plane) for U = {}, N = {}",
                 format_scalar(&uu),
                 format_scalar(&nn),
                 format_scalar(&un),
+                if unit { "1" } else { "> 0" },
                 format_vector(&u),
                 format_vector(&n)
             )));
@@ -229,8 +250,9 @@ impl<F: Scalar> PeConic<F> {
     /// `{C₀ + Z : Z ⟂ U, V, ⟨Z, Z⟩ = −ρ²R}` of Prop. 3.1 (both branches, `R = ⟨U, U⟩`),
     /// `D(s) = (k s² N₊ + s C₀ + (a/k) N₋) / s` in the isotropic basis `N±` of
     /// `span(U, V)^⊥`, `a = −ρ²R / (2⟨N₊, N₋⟩)`, `k` a power of two near `√|a|`; for the
-    /// parabola: `C₀ + M + sP − (s²/2)N` with `⟨P, P⟩ = 1`, `P ⟂ U, N`, `M` isotropic,
-    /// `⟨M, N⟩ = 1`, `M ⟂ U, P` (Prop. 3.2).
+    /// parabola with `g = ⟨U, U⟩`: `C₀ + M + sP − (s²q/(2g))N` with `P ⟂ U, N`,
+    /// `q = ⟨P, P⟩` (`P` pe-unit, `q = 1`, when its norm is a square), `M` isotropic,
+    /// `⟨M, N⟩ = g`, `M ⟂ U, P` (Prop. 3.2; docs/math/cyclides.md#two-families).
     ///
     /// # Errors
     /// [`CyclideError::NotRational`] if a square root the construction needs is not in
@@ -255,13 +277,13 @@ impl<F: Scalar> PeConic<F> {
                 })
             }
             PeConic::Parabola { vertex, u, n } => {
-                let (m, p) = parabola_frame(u, n)?;
+                let (m, p, q) = parabola_frame(u, n)?;
                 let c = add(vertex, &m);
-                let two = F::from_i64(2);
+                let k = q / (F::from_i64(2) * pe(u, u));
                 Ok(CycleCurve {
                     w: Poly::constant(F::one()),
                     p: core::array::from_fn(|i| {
-                        quad(c[i].clone(), p[i].clone(), -n[i].clone() / two.clone())
+                        quad(c[i].clone(), p[i].clone(), -(n[i].clone() * k.clone()))
                     }),
                 })
             }
@@ -313,12 +335,13 @@ pub(crate) fn null_pair<F: Scalar>(uv: &[[F; 4]; 2]) -> Result<([F; 4], [F; 4]),
     Ok((np, nm))
 }
 
-/// For the pe parabola: `M` isotropic with `⟨M, N⟩ = 1`, `M ⟂ U, P`, and `P` pe-unit,
-/// `P ⟂ U, N` (docs/math/cyclides.md#two-families).
+/// For the pe parabola `C₀ + tU + (t²/2)N`: `(M, P, q)` with `M` isotropic, `⟨M, N⟩ = ⟨U, U⟩`,
+/// `M ⟂ U, P`, and `P ⟂ U, N` spacelike with `q = ⟨P, P⟩` (`P` pe-unit and `q = 1` when the
+/// norm of the first candidate is a square in the field) (docs/math/cyclides.md#two-families).
 pub(crate) fn parabola_frame<F: Scalar>(
     u: &[F; 4],
     n: &[F; 4],
-) -> Result<([F; 4], [F; 4]), CyclideError> {
+) -> Result<([F; 4], [F; 4], F), CyclideError> {
     let basis = pe_complement(&[u.clone(), n.clone()])?;
     let s = size(n).max(1.0);
     let mut cands = basis.clone();
@@ -332,24 +355,23 @@ pub(crate) fn parabola_frame<F: Scalar>(
             CyclideError::InvalidArgument("span(U, N)^⊥ has no spacelike vector".into())
         })?;
     let pp = pe(&p0, &p0);
-    let root = sqrt_in_field(&pp).ok_or_else(|| {
-        CyclideError::NotRational(format!(
-            "the unit vector of span(U, N)^⊥ needs √{}",
-            format_scalar(&pp)
-        ))
-    })?;
-    let p = scale(&(F::one() / root), &p0);
+    let (p, q) = match sqrt_in_field(&pp) {
+        Some(root) if !root.is_zero() => (scale(&(F::one() / root), &p0), F::one()),
+        _ => (p0, pp),
+    };
+    let g = pe(u, u);
     let m = Matrix::from_rows(vec![pe_row(u), pe_row(&p), pe_row(n)])
         .map_err(|e| CyclideError::InvalidArgument(e.to_string()))?;
     let sol = m
-        .solve(&[F::zero(), F::zero(), F::one()])
+        .solve(&[F::zero(), F::zero(), g.clone()])
         .map_err(|e| CyclideError::InvalidArgument(e.to_string()))?;
     let m0 = sol
         .particular()
         .and_then(|x| <[F; 4]>::try_from(x.to_vec()).ok())
         .ok_or_else(|| {
-            CyclideError::InvalidArgument("no vector M with ⟨M, N⟩ = 1, M ⟂ U, P".into())
+            CyclideError::InvalidArgument("no vector M with ⟨M, N⟩ = ⟨U, U⟩, M ⟂ U, P".into())
         })?;
-    let c = pe(&m0, &m0) / F::from_i64(2);
-    Ok((sub(&m0, &scale(&c, n)), p))
+    // M = M₀ − c N is isotropic: ⟨M₀, M₀⟩ − 2c⟨M₀, N⟩ = 0
+    let c = pe(&m0, &m0) / (F::from_i64(2) * g);
+    Ok((sub(&m0, &scale(&c, n)), p, q))
 }

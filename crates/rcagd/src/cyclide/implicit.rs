@@ -11,8 +11,9 @@
 //!
 //! which for `U = (1, 0, 0, 0)`, `V = (0, b/ρ, 0, c/ρ)` is the classical
 //! `(x² + y² + z² − μ² + b²)² = 4(ax − cμ)² + 4b²y²` (Peternell §3.8.1 with the axes
-//! relabelled); for the pe parabola `f(t) = ⟨Y, Y⟩ − 2t⟨Y, U⟩ + t²(1 − ⟨Y, N⟩)`, whence the
-//! cubic `F(x) = ⟨Y, U⟩² − ⟨Y, Y⟩(1 − ⟨Y, N⟩)` (Prop. 3.2: order 3).
+//! relabelled); for the pe parabola `f(t) = ⟨Y, Y⟩ − 2t⟨Y, U⟩ + t²(g − ⟨Y, N⟩)`
+//! (`g = ⟨U, U⟩`, 1 normally), whence the cubic `F(x) = ⟨Y, U⟩² − ⟨Y, Y⟩(g − ⟨Y, N⟩)`
+//! (Prop. 3.2: order 3).
 
 use super::conic::PeConic;
 use crate::canal::bipoly::BiPoly;
@@ -102,7 +103,10 @@ pub(crate) fn implicit_generic<F: Scalar, T: Alg<F>>(conic: &PeConic<F>, x: &[T;
         }
         PeConic::Parabola { u, n, .. } => {
             let (yu, yn) = (pe_const(&y, u), pe_const(&y, n));
-            x[0].mul(&yu).mul(&yu).sub(&yy.mul(&x[0].sub(&yn)))
+            let g = super::pe::pe(u, u);
+            x[0].mul(&yu)
+                .mul(&yu)
+                .sub(&yy.mul(&x[0].scale(&g).sub(&yn)))
         }
     }
 }

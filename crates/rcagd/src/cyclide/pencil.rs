@@ -8,7 +8,8 @@
 //! `C = e eᵀ − ρ²(Ũ Ũᵀ + Ṽ Ṽᵀ)` and the second singular member is `D = C + ρ²Ω` (the pe
 //! hyperbola of the second family); `det(λC + μΩ) = κ λ μ² (μ − ρ²λ)²`, i.e. `λ = 0` (Ω)
 //! is a simple zero and `μ = 0` (C) a double zero (the printed text has them the other
-//! way round). For the pe parabola, `C = ŨŨᵀ − (e Ñᵀ + Ñ eᵀ)` with `Ñ = (0, N)`, every
+//! way round). For the pe parabola, `C = (ŨŨᵀ − (e Ñᵀ + Ñ eᵀ))/g` with `Ñ = (0, N)` and
+//! `g = ⟨U, U⟩` (the form of the pe-unit tangent `U/√g` and `N/g`), every
 //! member is singular (`det ≡ 0`), `D = Ω − C` is the parabola of the second family and
 //! `P = C + Ω` a paraboloid of rank 4 in the γ-hyperplane `⟨N, x − C₀⟩ = −1`.
 //!
@@ -153,15 +154,17 @@ impl<F: Scalar> DualPencil<F> {
             PeConic::Parabola { vertex, u, n } => {
                 let e = lift(vertex, F::one());
                 let (ut, nt) = (lift(u, F::zero()), lift(n, F::zero()));
+                // in the pe-unit form U/√g, N/g (g = ⟨U, U⟩) the member C is this over g
+                let gi = F::one() / super::pe::pe(u, u);
                 let c = lin(&[
-                    (F::one(), &outer(&ut, &ut)),
-                    (-F::one(), &outer(&e, &nt)),
-                    (-F::one(), &outer(&nt, &e)),
+                    (gi.clone(), &outer(&ut, &ut)),
+                    (-gi.clone(), &outer(&e, &nt)),
+                    (-gi, &outer(&nt, &e)),
                 ]);
                 let d = lin(&[(F::one(), &om), (-F::one(), &c)]);
                 let p = lin(&[(F::one(), &om), (F::one(), &c)]);
                 let ck = plane_kernel(vertex, u, n)?;
-                let (m, pv) = super::conic::parabola_frame(u, n)?;
+                let (m, pv, _) = super::conic::parabola_frame(u, n)?;
                 let dv = super::pe::add(vertex, &m);
                 let dk = plane_kernel(&dv, &pv, n)?;
                 Ok(DualPencil {

@@ -1,19 +1,29 @@
 //! The Dupin cyclide enveloping all spheres tangent to three given oriented spheres
 //! (Peternell, "Rational Parametrizations for Envelopes of Quadric Families", §3.8.1:
-//! `Γ(A₁) ∩ Γ(A₂) ∩ Γ(A₃)` is a pe circle; docs/math/cyclides.md#three-spheres).
+//! `Γ(A₁) ∩ Γ(A₂) ∩ Γ(A₃)` is a pe conic; docs/math/cyclides.md#three-spheres).
 //!
 //! The cycles tangent (in oriented contact) to the three cycles `Aᵢ` form the conic
 //! `{X : ⟨X − Aᵢ, X − Aᵢ⟩ = 0}`; its conjugate conic — the second family of the same
-//! cyclide — is the pe conic through `A₁, A₂, A₃` in their plane. When that plane is
-//! Euclidean, the three cycles lie on the pe circle `C₀ + cos θ W₁ + sin θ W₂` with the
-//! pe circumcentre `C₀` and `W₁ = A₁ − C₀`, and the cyclide of this circle touches each
-//! given sphere along a circle and envelops every sphere tangent to all three.
+//! cyclide — is the pe conic through `A₁, A₂, A₃` in their plane `T`. Three cases, by the
+//! plane's Gram determinant:
+//!
+//! * `T` Euclidean: the three cycles lie on the pe circle `C₀ + cos θ W₁ + sin θ W₂` with
+//!   the pe circumcentre `C₀` and `W₁ = A₁ − C₀`;
+//! * `T` pseudo-Euclidean: they lie on a pe hyperbola `{C₀ + W : W ∈ T, ⟨W, W⟩ = R}`; the
+//!   tangent cycles are the pe circle `{C₀ + Z : Z ∈ T^⊥, ⟨Z, Z⟩ = −R}` in the Euclidean plane
+//!   `T^⊥` (real iff `R < 0`), whose rational point comes from a conic over `Q`
+//!   (`rcagd_algebra::conic_point::rational_conic_point`);
+//! * `T` a γ-plane: they lie on the pe parabola through three points (a parabolic cyclide).
+//!
+//! In each case the cyclide of that conic touches each given sphere along a circle and
+//! envelops every sphere tangent to all three.
 
-use super::conic::PeConic;
+use super::conic::{CycleCurve, PeConic};
 use super::pe::{negligible, pe, scale, size, sqrt_in_field, sub};
 use super::surface::DupinCyclide;
 use super::CyclideError;
 use crate::cyclographic::OrientedSphere;
+use rcagd_algebra::conic_point::{rational_conic_point, TernaryOutcome};
 use rcagd_algebra::{format_scalar, Certificate, Poly, Scalar};
 use rcagd_geom::certify::polynomial_is_zero_scaled;
 
@@ -22,10 +32,10 @@ use rcagd_geom::certify::polynomial_is_zero_scaled;
 ///
 /// # Errors
 /// [`CyclideError::DegenerateSpheres`] if the three cycles are collinear in `R^{3,1}`
-/// (e.g. collinear centres with equal radii), coincide, or their plane is not Euclidean
-/// (a pe hyperbola or parabola through them: a γ-plane gives the parabolic case, build it
-/// with [`DupinCyclide::from_pe_parabola`]); [`CyclideError::NotRational`] if the plane's
-/// discriminant is not a rational square (the cyclide then needs a quadratic field).
+/// (e.g. collinear centres with equal radii) or coincide, if two of them in a γ-plane are
+/// in oriented contact, or if they lie on a pe hyperbola of spacelike radius (no real sphere
+/// touches all three); [`CyclideError::NotRational`] if the cyclide needs a quadratic field
+/// (a discriminant that is not a rational square, or a conic without rational point).
 pub fn from_three_spheres<F: Scalar>(
     spheres: &[OrientedSphere<F>; 3],
 ) -> Result<DupinCyclide<F>, CyclideError> {
@@ -50,15 +60,12 @@ pub fn from_three_spheres<F: Scalar>(
         ));
     }
     if negligible(&det, sc.powi(4)) {
-        return Err(CyclideError::DegenerateSpheres(format!(
-            "the plane of the three cycles is a γ-plane (Gram determinant 0): the spheres tangent to all three envelop a parabolic cyclide; build it from the pe parabola (DupinCyclide::from_pe_parabola). Gram = [[{}, {}], [{}, {}]]",
-            format_scalar(&g11), format_scalar(&g12), format_scalar(&g12), format_scalar(&g22)
-        )));
+        return parabola_through(&a[0], &b2, &b3, [&g11, &g12, &g22], sc);
     }
-    if det < F::zero() || g11 <= F::zero() {
+    if det > F::zero() && g11 <= F::zero() {
         return Err(CyclideError::DegenerateSpheres(format!(
-            "the plane of the three cycles is pseudo-Euclidean (Gram determinant {} < 0): they lie on a pe hyperbola, not a pe circle; reverse the orientation of one sphere (the sign of its radius) or use spheres whose radii differ less than their centres",
-            format_scalar(&det)
+            "the plane of the three cycles has a negative definite Gram matrix (g₁₁ = {}), impossible in R^{{3,1}}",
+            format_scalar(&g11)
         )));
     }
     // circumcentre C₀ = A₁ + αB₂ + βB₃: 2G(α, β)ᵀ = (g11, g22)
@@ -71,6 +78,9 @@ pub fn from_three_spheres<F: Scalar>(
     let c0: [F; 4] = core::array::from_fn(|i| a[0][i].clone() + y[i].clone());
     let w1 = sub(&a[0], &c0);
     let r = pe(&w1, &w1);
+    if det < F::zero() {
+        return hyperbola_case(c0, &b2, &b3, r, sc);
+    }
     // Z ⟂ W₁ in the plane, then W₂ = Z √(R/⟨Z, Z⟩)
     let pick = if negligible(
         &(b2[0].clone() * w1[1].clone() - b2[1].clone() * w1[0].clone()),
@@ -101,21 +111,235 @@ pub fn from_three_spheres<F: Scalar>(
     DupinCyclide::from_conic(PeConic::circle_scaled(c0, w1, w2)?)
 }
 
+/// The pseudo-Euclidean plane `T = span(B₂, B₃)`: the three cycles lie on the pe hyperbola
+/// `{C₀ + W : W ∈ T, ⟨W, W⟩ = R}`, and the cycles touching all three are the pe circle
+/// `{C₀ + Z : Z ∈ T^⊥, ⟨Z, Z⟩ = −R}` of the Euclidean plane `T^⊥`
+/// (docs/math/cyclides.md#three-spheres). With an orthogonal basis `z₁, z₂` of `T^⊥`
+/// (`a = ⟨z₁, z₁⟩`, `b = ⟨z₂, z₂⟩`) a point `W₁ = x z₁ + y z₂` of the circle is a rational
+/// point of the conic `a x² + b y² = −R`, and `W₂ = (b y z₁ − a x z₂)/√(ab)` completes it to
+/// the equal-norm pair of [`PeConic::circle_scaled`].
+fn hyperbola_case<F: Scalar>(
+    c0: [F; 4],
+    b2: &[F; 4],
+    b3: &[F; 4],
+    r: F,
+    sc: f64,
+) -> Result<DupinCyclide<F>, CyclideError> {
+    if r >= F::zero() || negligible(&r, sc * sc) {
+        return Err(CyclideError::DegenerateSpheres(format!(
+            "the three cycles lie on a pe hyperbola of spacelike radius (⟨A₁ − C₀, A₁ − C₀⟩ = {} ≥ 0 for its centre C₀): no real sphere is in oriented contact with all three",
+            format_scalar(&r)
+        )));
+    }
+    let [z1, z2] = complement_basis(b2, b3, sc)?;
+    let a = pe(&z1, &z1);
+    let b = pe(&z2, &z2);
+    let n = -r;
+    let ab = a.clone() * b.clone();
+    let root_ab = sqrt_in_field(&ab).ok_or_else(|| {
+        CyclideError::NotRational(format!(
+            "the three cycles lie on a pe hyperbola; the conjugate pe circle lies in the plane T^⊥ of discriminant {} (not a rational square): its (cos θ, sin θ) form needs Q(√{})",
+            format_scalar(&ab),
+            format_scalar(&ab)
+        ))
+    })?;
+    let (x, y) = match sqrt_in_field(&(n.clone() / a.clone())) {
+        Some(k) => (k, F::zero()),
+        None => conic_point_of(&a, &b, &n)?,
+    };
+    let w1: [F; 4] =
+        core::array::from_fn(|i| x.clone() * z1[i].clone() + y.clone() * z2[i].clone());
+    let w2: [F; 4] = core::array::from_fn(|i| {
+        (b.clone() * y.clone() * z1[i].clone() - a.clone() * x.clone() * z2[i].clone())
+            / root_ab.clone()
+    });
+    DupinCyclide::from_conic(PeConic::circle_scaled(c0, w1, w2)?)
+}
+
+/// A pe-orthogonal basis `z₁, z₂` of `T^⊥`, `T = span(B₂, B₃)` Lorentzian: the projections
+/// `x − (⟨x, B₂⟩, ⟨x, B₃⟩) G⁻¹ (B₂, B₃)` of the unit vectors, the longest first, the second
+/// made orthogonal to it (no null-space computation, so `f64` stays accurate).
+fn complement_basis<F: Scalar>(
+    b2: &[F; 4],
+    b3: &[F; 4],
+    sc: f64,
+) -> Result<[[F; 4]; 2], CyclideError> {
+    let (g11, g12, g22) = (pe(b2, b2), pe(b2, b3), pe(b3, b3));
+    let det = g11.clone() * g22.clone() - g12.clone() * g12.clone();
+    let proj = |k: usize| -> [F; 4] {
+        let mut x: [F; 4] = core::array::from_fn(|i| if i == k { F::one() } else { F::zero() });
+        let (p2, p3) = (pe(&x, b2), pe(&x, b3));
+        let c2 = (g22.clone() * p2.clone() - g12.clone() * p3.clone()) / det.clone();
+        let c3 = (g11.clone() * p3 - g12.clone() * p2) / det.clone();
+        for i in 0..4 {
+            x[i] = x[i].clone() - c2.clone() * b2[i].clone() - c3.clone() * b3[i].clone();
+        }
+        x
+    };
+    let longest = |v: Vec<[F; 4]>| {
+        v.into_iter().max_by(|x, y| {
+            pe(x, x)
+                .to_f64()
+                .partial_cmp(&pe(y, y).to_f64())
+                .unwrap_or(core::cmp::Ordering::Equal)
+        })
+    };
+    let all: Vec<[F; 4]> = (0..4).map(proj).collect();
+    let z1 = longest(all.clone())
+        .filter(|z| pe(z, z) > F::zero() && !negligible(&pe(z, z), 1e-6))
+        .ok_or_else(|| {
+            CyclideError::DegenerateSpheres(format!(
+                "the plane orthogonal to the three cycles is not Euclidean (scale {sc})"
+            ))
+        })?;
+    let a = pe(&z1, &z1);
+    let rest: Vec<[F; 4]> = all
+        .iter()
+        .map(|z| sub(z, &scale(&(pe(z, &z1) / a.clone()), &z1)))
+        .collect();
+    let z2 = longest(rest)
+        .filter(|z| pe(z, z) > F::zero() && !negligible(&pe(z, z), 1e-6))
+        .ok_or_else(|| {
+            CyclideError::DegenerateSpheres(
+                "the plane orthogonal to the three cycles is degenerate".into(),
+            )
+        })?;
+    Ok([z1, z2])
+}
+
+/// A rational point `(x, y)` of `a x² + b y² = n` (`a, b, n > 0`), exact scalars only.
+fn conic_point_of<F: Scalar>(a: &F, b: &F, n: &F) -> Result<(F, F), CyclideError> {
+    let q = |v: &F| {
+        v.to_rational().ok_or_else(|| {
+            CyclideError::NotRational(format!("{} is not a rational number", format_scalar(v)))
+        })
+    };
+    let (qa, qb, qn) = (q(a)?, q(b)?, q(n)?);
+    let none = |why: String| {
+        CyclideError::NotRational(format!(
+            "the pe circle touching the three cycles ({}·x² + {}·y² = {} in an orthogonal basis of T^⊥) has no rational point: {why}; the cyclide needs a quadratic field",
+            format_scalar(a),
+            format_scalar(b),
+            format_scalar(n)
+        ))
+    };
+    match rational_conic_point(&qa, &qb, &(-qn)) {
+        Ok(TernaryOutcome::Point([x, y, z])) if !z.is_zero() => Ok((
+            F::from_rational(&(x / z.clone())),
+            F::from_rational(&(y / z)),
+        )),
+        Ok(TernaryOutcome::Point(_)) => Err(none("the conic point is at infinity".into())),
+        Ok(TernaryOutcome::NoPoint(place)) => Err(none(format!("none over {place}"))),
+        Err(e) => Err(none(e.to_string())),
+    }
+}
+
+/// The γ-plane `T = span(B₂, B₃)` (Gram determinant 0): its radical `N` is isotropic, and
+/// with `U₀ ∈ T`, `g = ⟨U₀, U₀⟩ > 0`, the cycles are `Aᵢ = A₁ + xᵢU₀ + yᵢN`. The pe parabola
+/// through them is `y = βx + γx²`, i.e. `C(x) = A₁ + xU + (x²/2)(2γN)` with
+/// `U = U₀ + βN` (docs/math/cyclides.md#three-spheres).
+fn parabola_through<F: Scalar>(
+    a1: &[F; 4],
+    b2: &[F; 4],
+    b3: &[F; 4],
+    [g11, g12, g22]: [&F; 3],
+    sc: f64,
+) -> Result<DupinCyclide<F>, CyclideError> {
+    let sc2 = sc * sc;
+    let (n, u0) = if !negligible(g11, sc2) {
+        (sub(&scale(g12, b2), &scale(g11, b3)), b2.clone())
+    } else if !negligible(g22, sc2) {
+        (b2.clone(), b3.clone())
+    } else {
+        return Err(CyclideError::DegenerateSpheres(
+            "the plane of the three cycles is totally isotropic (impossible for a plane of R^{3,1})".into(),
+        ));
+    };
+    let g = pe(&u0, &u0);
+    let j = (0..4)
+        .max_by(|&i, &k| {
+            n[i].to_f64()
+                .abs()
+                .partial_cmp(&n[k].to_f64().abs())
+                .unwrap_or(core::cmp::Ordering::Equal)
+        })
+        .unwrap_or(0);
+    if negligible(&n[j], sc2) {
+        return Err(CyclideError::DegenerateSpheres(
+            "the radical of the γ-plane of the three cycles vanishes".into(),
+        ));
+    }
+    let coords = |b: &[F; 4]| {
+        let x = pe(b, &u0) / g.clone();
+        let y = (b[j].clone() - x.clone() * u0[j].clone()) / n[j].clone();
+        (x, y)
+    };
+    let ((x2, y2), (x3, y3)) = (coords(b2), coords(b3));
+    for (x, which) in [(&x2, "1 and 2"), (&x3, "1 and 3")] {
+        if negligible(x, sc) {
+            return Err(CyclideError::DegenerateSpheres(format!(
+                "the three cycles lie in a γ-plane and the spheres {which} are in oriented contact (their difference is isotropic): no pe parabola passes through the three cycles"
+            )));
+        }
+    }
+    if negligible(&(x2.clone() - x3.clone()), sc) {
+        return Err(CyclideError::DegenerateSpheres(
+            "the three cycles lie in a γ-plane and the spheres 2 and 3 are in oriented contact (their difference is isotropic): no pe parabola passes through the three cycles".into(),
+        ));
+    }
+    let d = x2.clone() * x3.clone() * (x3.clone() - x2.clone());
+    let beta =
+        (y2.clone() * x3.clone() * x3.clone() - y3.clone() * x2.clone() * x2.clone()) / d.clone();
+    let gamma = (x2 * y3 - x3 * y2) / d;
+    let u = sub(&u0, &scale(&(-beta), &n));
+    let nn = scale(&(F::from_i64(2) * gamma), &n);
+    let conic = match sqrt_in_field(&g) {
+        Some(k) if !k.is_zero() => PeConic::parabola(
+            a1.clone(),
+            scale(&(F::one() / k), &u),
+            scale(&(F::one() / g.clone()), &nn),
+        )?,
+        _ => PeConic::parabola_scaled(a1.clone(), u, nn)?,
+    };
+    DupinCyclide::from_conic(conic)
+}
+
+/// `⟨W X − W A, W X − W A⟩` for the cycle curve `X = P/W` and a fixed cycle `A`: zero iff
+/// every cycle of the curve is in oriented contact with `A`.
+fn touching<F: Scalar>(c: &CycleCurve<F>, ai: &[F; 4]) -> Poly<F> {
+    let diff: [Poly<F>; 4] = core::array::from_fn(|k| &c.p[k] - &c.w.scale(&ai[k]));
+    &(&(&(&diff[0] * &diff[0]) + &(&diff[1] * &diff[1])) + &(&diff[2] * &diff[2]))
+        - &(&diff[3] * &diff[3])
+}
+
 /// Certificates that the cyclide envelops the spheres tangent to the three: each given
-/// cycle lies on the first conic (`Aᵢ − C₀ = αU + βV`, `α² + β² = 1`) and every sphere of
-/// the second family is in oriented contact with it (`⟨D(s) − Aᵢ, D(s) − Aᵢ⟩ ≡ 0`).
+/// cycle belongs to one family of the cyclide (the first — `Aᵢ − C₀ = ρ(αU + βV)`,
+/// `α² + β² = 1` on the pe circle, `Aᵢ = C(τ)` on the pe parabola — or, when the three lie
+/// on a pe hyperbola, the second: `Aᵢ − C₀ ⟂ U, V`, `⟨Aᵢ − C₀, Aᵢ − C₀⟩ = −ρ²⟨U, U⟩`), and
+/// every sphere of the other family is in oriented contact with it
+/// (`⟨X(s) − Aᵢ, X(s) − Aᵢ⟩ ≡ 0`).
 pub fn certify_three_spheres<F: Scalar>(
     cyclide: &DupinCyclide<F>,
     spheres: &[OrientedSphere<F>; 3],
 ) -> Vec<Certificate> {
     let mut out = Vec::new();
-    let d = cyclide.second_family();
+    // the three lie on the second family iff A₁ − C₀ ⟂ U, V (the hyperbola case)
+    let on_second = match cyclide.conic() {
+        PeConic::Circle { center, u, v, .. } => {
+            let w = sub(&spheres[0].to_point(), center);
+            let s = size(&w).max(size(u)).max(size(v)).max(1.0);
+            negligible(&pe(&w, u), s * s) && negligible(&pe(&w, v), s * s)
+        }
+        PeConic::Parabola { .. } => false,
+    };
+    let (touch_fam, touch_name, own_name) = if on_second {
+        (cyclide.first_family(), "C(t)", "second")
+    } else {
+        (cyclide.second_family(), "D(s)", "first")
+    };
     for (i, s) in spheres.iter().enumerate() {
         let ai = s.to_point();
-        // ⟨W D(s) − W Aᵢ, same⟩ as a polynomial in s
-        let diff: [Poly<F>; 4] = core::array::from_fn(|k| &d.p[k] - &d.w.scale(&ai[k]));
-        let q = &(&(&(&diff[0] * &diff[0]) + &(&diff[1] * &diff[1])) + &(&diff[2] * &diff[2]))
-            - &(&diff[3] * &diff[3]);
+        let q = touching(touch_fam, &ai);
         let sc = q
             .coeffs()
             .iter()
@@ -123,31 +347,52 @@ pub fn certify_three_spheres<F: Scalar>(
             .fold(1.0, f64::max)
             .max(size(&ai).powi(2));
         out.push(polynomial_is_zero_scaled(
-            &format!("⟨D(s) − A{}, D(s) − A{}⟩ ≡ 0 (every sphere of the second family touches sphere {} in oriented contact)", i + 1, i + 1, i + 1),
+            &format!("⟨{touch_name} − A{}, {touch_name} − A{}⟩ ≡ 0 (every sphere of the other family touches sphere {} in oriented contact)", i + 1, i + 1, i + 1),
             q.coeffs(),
             sc,
         ));
-        if let PeConic::Circle { center, u, v, rho } = cyclide.conic() {
-            let w = sub(&ai, center);
-            let (al, be) = (
-                pe(&w, u) / (pe(u, u) * rho.clone()),
-                pe(&w, v) / (pe(v, v) * rho.clone()),
-            );
-            let rest: Vec<F> = (0..4)
-                .map(|k| {
-                    w[k].clone()
-                        - rho.clone() * (al.clone() * u[k].clone() + be.clone() * v[k].clone())
-                })
-                .chain(core::iter::once(
-                    al.clone() * al.clone() + be.clone() * be.clone() - F::one(),
-                ))
-                .collect();
-            out.push(polynomial_is_zero_scaled(
-                &format!("A{} − C₀ = ρ(αU + βV) with α² + β² = 1 (sphere {} belongs to the first family)", i + 1, i + 1),
-                &rest,
-                size(&ai).max(1.0),
-            ));
-        }
+        let (label, rest): (String, Vec<F>) = match cyclide.conic() {
+            PeConic::Circle { center, u, v, rho } if on_second => {
+                let w = sub(&ai, center);
+                let want = -(rho.clone() * rho.clone() * pe(u, u));
+                (
+                    format!("A{} − C₀ ⟂ U, V and ⟨A{} − C₀, A{} − C₀⟩ = −ρ²⟨U, U⟩ (sphere {} belongs to the second family, the pe hyperbola)", i + 1, i + 1, i + 1, i + 1),
+                    vec![pe(&w, u), pe(&w, v), pe(&w, &w) - want],
+                )
+            }
+            PeConic::Circle { center, u, v, rho } => {
+                let w = sub(&ai, center);
+                let (al, be) = (
+                    pe(&w, u) / (pe(u, u) * rho.clone()),
+                    pe(&w, v) / (pe(v, v) * rho.clone()),
+                );
+                let rest = (0..4)
+                    .map(|k| {
+                        w[k].clone()
+                            - rho.clone() * (al.clone() * u[k].clone() + be.clone() * v[k].clone())
+                    })
+                    .chain(core::iter::once(
+                        al.clone() * al.clone() + be.clone() * be.clone() - F::one(),
+                    ))
+                    .collect();
+                (
+                    format!("A{} − C₀ = ρ(αU + βV) with α² + β² = 1 (sphere {} belongs to the {own_name} family)", i + 1, i + 1),
+                    rest,
+                )
+            }
+            PeConic::Parabola { vertex, u, n } => {
+                let w = sub(&ai, vertex);
+                let tau = pe(&w, u) / pe(u, u);
+                let half = tau.clone() * tau.clone() / F::from_i64(2);
+                (
+                    format!("A{} = C₀ + τU + (τ²/2)N for τ = ⟨A{} − C₀, U⟩/⟨U, U⟩ (sphere {} belongs to the pe parabola)", i + 1, i + 1, i + 1),
+                    (0..4)
+                        .map(|k| w[k].clone() - tau.clone() * u[k].clone() - half.clone() * n[k].clone())
+                        .collect(),
+                )
+            }
+        };
+        out.push(polynomial_is_zero_scaled(&label, &rest, size(&ai).max(1.0)));
     }
     out
 }

@@ -214,12 +214,13 @@ impl<F: Scalar> DupinCyclide<F> {
             PeConic::Circle { center, u, v, rho } => {
                 let mut c = center.clone();
                 c[3] = c[3].clone() + d.clone();
-                PeConic::circle(c, u.clone(), v.clone(), rho.clone())?
+                // equal norms suffice (the pe-unit and the scaled form alike)
+                PeConic::circle_checked(c, u.clone(), v.clone(), rho.clone(), false)?
             }
             PeConic::Parabola { vertex, u, n } => {
                 let mut c = vertex.clone();
                 c[3] = c[3].clone() + d.clone();
-                PeConic::parabola(c, u.clone(), n.clone())?
+                PeConic::parabola_checked(c, u.clone(), n.clone(), false)?
             }
         };
         Ok(Self::from_families(
@@ -562,7 +563,15 @@ impl<F: Scalar> DupinCyclide<F> {
             PeConic::Parabola { u, n, .. } => {
                 let sc = size(u).max(size(n)).max(1.0).powi(2);
                 vec![
-                    cert("⟨U, U⟩ = 1 (pe-unit)", pe(u, u), F::one(), sc),
+                    {
+                        let uu = pe(u, u);
+                        Certificate::decide(
+                            "⟨U, U⟩ > 0 (a spacelike tangent: hyperbolic tangents)",
+                            uu > F::zero() && !negligible(&uu, sc),
+                            ex,
+                            || format_scalar(&uu),
+                        )
+                    },
                     cert(
                         "⟨N, N⟩ = 0 (N isotropic: a parabola in a γ-plane, Prop. 3.2)",
                         pe(n, n),

@@ -1,6 +1,6 @@
 //! The models of Euclidean Laguerre geometry and the maps between them (Peternell §3.1–§3.5,
 //! docs/math/laguerre-pn.md#conventions; every formula below was re-derived and is checked by the
-//! unit tests and `tests/seed004_pn_examples.rs`).
+//! unit tests and `tests/it/seed004_pn_examples.rs`).
 //!
 //! | object | standard model | cyclographic `R⁴` (3.5)/(3.6) | Blaschke cylinder (3.10) | isotropic `I³` (3.11)/(3.12) |
 //! |---|---|---|---|---|
@@ -47,7 +47,8 @@ pub fn lorentz_product<F: Scalar>(a: &[F; 4], b: &[F; 4]) -> F {
         - a[3].clone() * b[3].clone()
 }
 
-/// An oriented plane `e0 + n·x = 0` with unit normal `n` (Peternell (3.1); docs/math/laguerre-pn.md#conventions).
+/// An oriented plane `e0 + n·x = 0` with unit normal `n` (Peternell (3.1);
+/// docs/math/laguerre-pn.md#conventions).
 #[derive(Debug, Clone, PartialEq)]
 pub struct OrientedPlane<F> {
     /// The coefficient `e0` (minus the signed distance of the origin along `n`).
@@ -330,7 +331,8 @@ impl<F: Scalar> Cycle<F> {
         is_negligible(&self.contact_residual(plane), scale)
     }
 
-    /// The point of contact `m + r n` of a plane in oriented contact (docs/math/laguerre-pn.md#conventions).
+    /// The point of contact `m + r n` of a plane in oriented contact
+    /// (docs/math/laguerre-pn.md#conventions).
     ///
     /// # Errors
     /// [`LaguerreError::NotInContact`] unless `e0 + n·m + r = 0`.
@@ -487,7 +489,8 @@ mod tests {
         // a multiple of the γ-hyperplane gives the same plane
         let h = e.to_gamma_hyperplane().map(|x| x * q(-3, 2));
         assert_eq!(OrientedPlane::from_gamma_hyperplane(&h).expect("γ"), e);
-        // dual isotropic: the inverse of Λ* for any multiple, orientation kept (E7)
+        // dual isotropic: the inverse of Λ* for any multiple, orientation kept
+        // (docs/math/laguerre-pn.md, Errata E7)
         for k in [q(1, 1), q(-5, 2), q(7, 3)] {
             let yy = e.to_dual_isotropic().map(|x| x * k.clone());
             assert_eq!(OrientedPlane::from_dual_isotropic(&yy).expect("Y3 ≠ 0"), e);
@@ -533,7 +536,8 @@ mod tests {
             c.contact_point(&f),
             Err(LaguerreError::NotInContact(_))
         ));
-        // offsets: the dilatation keeps the contact (E6: e0 − d ⇔ r + d)
+        // offsets: the dilatation keeps the contact (e0 − d ⇔ r + d,
+        // docs/math/laguerre-pn.md, Errata E6)
         assert!(c.offset(&q(1, 1)).in_oriented_contact(&f));
     }
 

@@ -5,7 +5,8 @@
 //! cycles (points of `R⁴`) to cycles and γ-hyperplanes (oriented planes) to γ-hyperplanes,
 //! preserving oriented contact. On hyperplane coordinates `ε = (ε₀, ε_v)` of
 //! `ε₀ + ε_v·x = 0` it acts as the row-vector map
-//! `ε_v' = ε_v B`, `ε₀' = ε₀ − ε_v B a`, `B = A⁻¹/λ = E Aᵀ E/λ` ([`LaguerreMap::hyperplane_matrix`]).
+//! `ε_v' = ε_v B`, `ε₀' = ε₀ − ε_v B a`, `B = A⁻¹/λ = E Aᵀ E/λ`
+//! ([`LaguerreMap::hyperplane_matrix`]).
 //!
 //! Special maps: the **dilatation** `r ↦ r + d` (3.4), `a = (0,0,0,d)`, which is the
 //! offset at distance `d` (`e0 ↦ e0 − d`, docs/math/laguerre-pn.md#conventions); translations,
@@ -346,8 +347,8 @@ impl<F: Scalar> Certified for LaguerreMap<F> {
 }
 
 /// The dilatation in the isotropic model: `x ↦ x + d n` is
-/// `y₃ ↦ y₃ − (d/2)(y₁² + y₂² + 1)` (Peternell (3.15) **corrected**, docs/math/laguerre-pn.md#conventions: the printed
-/// `+ (d/2)(S+1)` is the offset by `−d`).
+/// `y₃ ↦ y₃ − (d/2)(y₁² + y₂² + 1)` (Peternell (3.15) **corrected**,
+/// docs/math/laguerre-pn.md#conventions: the printed `+ (d/2)(S+1)` is the offset by `−d`).
 pub fn isotropic_dilatation<F: Scalar>(y: &[F; 3], d: &F) -> [F; 3] {
     let s = y[0].clone() * y[0].clone() + y[1].clone() * y[1].clone();
     [
@@ -359,7 +360,7 @@ pub fn isotropic_dilatation<F: Scalar>(y: &[F; 3], d: &F) -> [F; 3] {
 
 /// The translation of points by `t` in the isotropic model:
 /// `y₃ ↦ y₃ − t₁y₁ − t₂y₂ − (t₃/2)(y₁² + y₂² − 1)` (Peternell (3.14) with its `a = −t`: the
-/// seed's map `e0 ↦ e0 + a·n` moves points by `−a`).
+/// printed map `e0 ↦ e0 + a·n` moves points by `−a`).
 pub fn isotropic_translation<F: Scalar>(y: &[F; 3], t: &[F; 3]) -> [F; 3] {
     let s = y[0].clone() * y[0].clone() + y[1].clone() * y[1].clone();
     [
@@ -443,7 +444,7 @@ mod tests {
         let img = LaguerreMap::dilatation(d.clone())
             .apply_plane(&e)
             .expect("plane");
-        // e0 ↦ e0 − d (E6): the plane is moved by +d along n
+        // e0 ↦ e0 − d (docs/math/laguerre-pn.md, Errata E6): the plane is moved by +d along n
         assert_eq!(img, e.offset(&d));
         let x = [q(0, 1), q(0, 1), q(7, 9)]; // on e: −2/3 + 6/7·7/9 = 0
         assert!(e.contains(&x));

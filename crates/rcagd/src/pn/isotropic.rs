@@ -24,12 +24,14 @@
 //! x  = [N₀ (μ₁, μ₂, 0) − 2Cτ (A, B, −C)] / (N₀ μ₃),   n = (2AC, 2BC, A² + B² − C²)/N₀
 //! ```
 //! (derived here and checked with sympy; the graph case `A = u, B = v, C = D = 1` is
-//! A4.2). The weight is `W = N₀ μ₃`, so the cofactor of the offsets is `K = μ₃ = D²J`.
-//! `J ≡ 0` means the spherical image `(A/C, B/C)` is a curve: the planes envelope a
-//! developable surface and have no point representation of this kind.
+//! the closed formula of Theorem 4.3/4.4, docs/math/laguerre-pn.md#closed-formula). The weight is
+//! `W = N₀ μ₃`, so the cofactor of the offsets is `K = μ₃ = D²J`. `J ≡ 0` means the spherical image
+//! `(A/C, B/C)` is a curve: the planes envelope a developable surface and have no point
+//! representation of this kind.
 //!
 //! The offset at distance `d` is `y₃ ↦ y₃ − (d/2)(S + 1)` (Peternell (3.15) corrected,
-//! docs/math/laguerre-pn.md#conventions) — for a graph `F ↦ F − (d/2)(u² + v² + 1)` ([`IsotropicSurface::offset`]).
+//! docs/math/laguerre-pn.md#conventions) — for a graph `F ↦ F − (d/2)(u² + v² + 1)`
+//! ([`IsotropicSurface::offset`]).
 
 use super::poly::{cancel_common, det3, int, normalize_content, var, RatFn};
 use super::surface::PnSurface;
@@ -149,7 +151,8 @@ impl<F: Scalar> IsotropicSurface<F> {
 
     /// The parabolic Dupin cyclide `F = αu² + βv²` (Peternell §4.4; `α ≠ β`; for `α = β` it is an
     /// isotropic sphere, i.e. a sphere). Its dual form is
-    /// `(2(αu² + βv²), 2u, 2v, S − 1)/(S + 1)` (the factor 2 is missing in print; docs/math/laguerre-pn.md).
+    /// `(2(αu² + βv²), 2u, 2v, S − 1)/(S + 1)` (the factor 2 is missing in print;
+    /// docs/math/laguerre-pn.md).
     pub fn parabolic_dupin_cyclide(alpha: F, beta: F) -> Self {
         let (u, v) = (var::<F>(0), var::<F>(1));
         let f = &(&u * &u).scale(&alpha) + &(&v * &v).scale(&beta);
@@ -339,7 +342,7 @@ mod tests {
             .to_pn_surface()
             .expect("pn");
         assert!(s.all_hold(), "{:?}", s.certify());
-        // compare with A4.2 at a point
+        // compare with the closed formula of Theorem 4.3/4.4 at a point
         let (uu, vv) = (q(1, 2), q(-2, 3));
         let x = s.eval(&uu, &vv).expect("point");
         let fe = |p: &MPoly<Q>| p.eval(&[uu.clone(), vv.clone()]).expect("2 vars");

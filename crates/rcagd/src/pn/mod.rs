@@ -10,10 +10,11 @@
 //! ([`PnSurface::offset`]); its support function is `h − d` (docs/math/laguerre-pn.md#conventions).
 //!
 //! * [`isotropic`]: the isotropic model `I³` (Theorem 4.3): any rational surface
-//!   `y(u,v) = (A/C, B/C, G/D)` of `I³` gives a PN surface by the closed formula (A4.2,
-//!   generalized here from graphs to parametrized surfaces); graphs `y₃ = F(u, v)`, the
-//!   dual form (4.1)/(4.4), the support-function form (4.2), isotropic spheres (cycles),
-//!   parabolic Dupin cyclides (`F` quadratic), the paraboloid `F = pS/(S − 1)`;
+//!   `y(u,v) = (A/C, B/C, G/D)` of `I³` gives a PN surface by the closed formula of
+//!   Theorem 4.3/4.4 (docs/math/laguerre-pn.md#closed-formula, generalized here from graphs
+//!   to parametrized surfaces); graphs `y₃ = F(u, v)`, the dual form (4.1)/(4.4), the
+//!   support-function form (4.2), isotropic spheres (cycles), parabolic Dupin cyclides (`F`
+//!   quadratic), the paraboloid `F = pS/(S − 1)`;
 //! * [`support`]: any rational field of oriented planes with a Pythagorean normal
 //!   (`h`, `N`) → points `e ∩ e_u ∩ e_v` (§4.1), the anticaustic of a rational mirror for
 //!   parallel light (Theorem 4.1, (3.18) corrected), the Laguerre image of a PN surface
@@ -48,6 +49,7 @@ pub mod reducing_frame;
 pub mod ruled;
 pub mod support;
 pub mod surface;
+pub mod two_sheet;
 
 pub use isotropic::IsotropicSurface;
 pub use offset::PnOffset;

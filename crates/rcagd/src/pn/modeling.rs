@@ -7,13 +7,14 @@
 //! 2. The point datum becomes a gradient datum: the graph must touch at `Bᵢ` the
 //!    isotropic sphere of the point cycle `(Aᵢ; 0)`,
 //!    `F_A(u, v) = −[A₃(u² + v²) + 2A₁u + 2A₂v − A₃]/2`, so
-//!    `∇F(uᵢ, vᵢ) = −(A₃uᵢ + A₁, A₃vᵢ + A₂)` (the closed formula of A4.2 uses only `F`,
-//!    `F_u`, `F_v`, and `F_A` maps to the constant point `Aᵢ`).
+//!    `∇F(uᵢ, vᵢ) = −(A₃uᵢ + A₁, A₃vᵢ + A₂)` (the closed formula of Theorem 4.3/4.4 uses
+//!    only `F`, `F_u`, `F_v`, and `F_A` maps to the constant point `Aᵢ`).
 //! 3. The data `(uᵢ, vᵢ; Fᵢ, ∇Fᵢ)` are interpolated by the C¹ piecewise quadratic
 //!    Powell–Sabin spline (6-split; the split point of a macro triangle is its centroid, the
 //!    split point of an interior edge is where the segment between the two centroids
 //!    crosses it, of a boundary edge its midpoint).
-//! 4. `Λ⁻¹` of every quadratic piece is a parabolic Dupin cyclide patch (A4.2): C¹ in
+//! 4. `Λ⁻¹` of every quadratic piece is a parabolic Dupin cyclide patch
+//!    (docs/math/laguerre-pn.md#closed-formula; Errata E11): C¹ in
 //!    `I³` gives G¹ (continuous tangent planes) in `R³`; the pieces meet along cubics.
 //!    Point regularity is not guaranteed (parabolic points ↔ Gauss-map singularities):
 //!    [`PnModel::check_regular`] decides it. The offset of the whole model is

@@ -22,7 +22,7 @@
 
 use super::isotropic::IsotropicSurface;
 use super::poly::{
-    cancel_common, cross3, dot3, identity_cert, int, mag, normalize_content, pad_eval,
+    cancel_common, cross3, dot3, gcd2, identity_cert, int, mag, normalize_content, pad_eval,
     univariate_from_q, univariate_sqrt, univariate_to_q, var, zero_cert, RatFn,
 };
 use super::surface::PnSurface;
@@ -338,6 +338,15 @@ impl<F: Scalar> ConeFamilyEnvelope<F> {
         .named("cone-family envelope (Theorem 4.5)");
         let mut extra = cands;
         extra.extend([w1.clone(), w2.clone()]);
+        // Where p₁ = p₂ = 0 (a real zero of |M|² − R²) the circle d′(t) has radius 0 and
+        // every u gives the same point: the point map has a base point along that t, a
+        // common factor of the point coordinates. Offering the factors of p as candidates
+        // cancels it by exact division in both paths (f64 has no polynomial gcd), so exact
+        // and f64 keep the same representation (docs/plans/pn-laguerre.md, item 1).
+        extra.extend([p[0].num.clone(), p[1].num.clone()]);
+        if F::EXACT {
+            extra.push(gcd2(&p[0].num, &p[1].num));
+        }
         let surface = isotropic.to_pn_surface_with(&extra)?;
         if surface.point_map_degenerate() {
             return Err(PnError::Developable(

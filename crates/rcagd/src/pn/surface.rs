@@ -90,9 +90,31 @@ impl<F: Scalar> PnSurface<F> {
         cancel_common(&mut pk, candidates);
         normalize_content(&mut pk[..4]);
         let point = [pk[0].clone(), pk[1].clone(), pk[2].clone(), pk[3].clone()];
+        // the candidates once more on the point alone (the cofactor may have lost a factor
+        // the four coordinates still share), keeping N₀ | W where it holds: the same
+        // cancellation as the gcd below, but also for f64, which has no polynomial gcd
+        let mut point = point;
+        let keep = div_exact(&point[0], &normal[0]).is_some();
+        for c in candidates {
+            if c.total_degree().unwrap_or(0) == 0 {
+                continue;
+            }
+            while let Some(qs) = point
+                .iter()
+                .map(|p| div_exact(p, c))
+                .collect::<Option<Vec<_>>>()
+            {
+                if qs.iter().all(|q| q.is_zero())
+                    || (keep && div_exact(&qs[0], &normal[0]).is_none())
+                {
+                    break;
+                }
+                point = [qs[0].clone(), qs[1].clone(), qs[2].clone(), qs[3].clone()];
+            }
+        }
+        normalize_content(&mut point);
         // the remaining common factor: all of it if N₀ ∤ W, else only the part that keeps
         // N₀ | W (so that the offsets keep the denominator W)
-        let mut point = point;
         let mut g = point.iter().fold(MPoly::zero(2), |g, p| gcd2(&g, p));
         if let Some(k) = div_exact(&point[0], &normal[0]) {
             g = gcd2(&g, &k);

@@ -56,7 +56,7 @@ fn printed_example_u_v() {
     assert_eq!(c[0], rho.clone() * cs);
     assert_eq!(c[1], rho.clone() * q(5, 4) * sn.clone());
     assert_eq!(c[3], r0.clone() + rho.clone() * q(3, 4) * sn);
-    // normals where the second family is at infinity are the seed's constant f and its mirror
+    // normals where the second family is at infinity are the paper's constant f and its mirror
     let n_inf = cy.normal(&t, &qi(0)).expect("finite");
     let f = [qi(0), q(-3, 5), q(4, 5)];
     let f2 = [qi(0), q(-3, 5), q(-4, 5)];
@@ -234,8 +234,9 @@ fn three_spheres() {
     }
     let e = from_three_spheres(&[s([0, 0, 0], 1), s([1, 0, 0], 1), s([3, 0, 0], 1)]).unwrap_err();
     assert!(matches!(e, CyclideError::DegenerateSpheres(_)), "{e}");
+    // a pe hyperbola whose conjugate circle lies in a plane of discriminant 199 (not a square)
     let e = from_three_spheres(&[s([0, 0, 0], 0), s([1, 0, 0], 10), s([0, 1, 0], 10)]).unwrap_err();
-    assert!(matches!(e, CyclideError::DegenerateSpheres(_)), "{e}");
+    assert!(matches!(e, CyclideError::NotRational(_)), "{e}");
     // f64 agrees
     let sf = |c: [f64; 3], r: f64| OrientedSphere::new(c, r);
     let cf = from_three_spheres(&[
@@ -601,4 +602,216 @@ fn blends_between_cones_and_cylinders() {
     )
     .unwrap_err();
     assert!(matches!(e, CyclideError::NoBlend(_)), "{e}");
+}
+
+fn sphere_of(x: &[Q; 4]) -> OrientedSphere<Q> {
+    OrientedSphere::new([x[0].clone(), x[1].clone(), x[2].clone()], x[3].clone())
+}
+
+fn sphere_f64(x: &[Q; 4]) -> OrientedSphere<f64> {
+    OrientedSphere::new(
+        [
+            Scalar::to_f64(&x[0]),
+            Scalar::to_f64(&x[1]),
+            Scalar::to_f64(&x[2]),
+        ],
+        Scalar::to_f64(&x[3]),
+    )
+}
+
+/// Points of `built` at a few parameters lie on the implicit surface of `want`, exactly.
+fn same_cyclide(built: &DupinCyclide<Q>, want: &DupinCyclide<Q>) -> bool {
+    [
+        (q(1, 3), q(2, 1)),
+        (q(-2, 1), q(1, 5)),
+        (qi(0), qi(-1)),
+        (q(3, 7), q(-5, 2)),
+    ]
+    .iter()
+    .filter_map(|(t, s)| built.eval(t, s))
+    .all(|x| want.implicit_value(&x) == qi(0))
+}
+
+/// Three spheres of the second family of the printed cyclide (cycles on the pe hyperbola
+/// conjugate to its pe circle; their plane is pseudo-Euclidean): the spheres tangent to all
+/// three are the first family, so the cyclide is the printed one again (its implicit
+/// equation holds on every point). A pe hyperbola of spacelike radius has no tangent
+/// sphere.
+#[test]
+fn three_spheres_on_a_pe_hyperbola() {
+    let cy = DupinCyclide::from_pe_circle(
+        [qi(0), qi(0), qi(0), qi(4)],
+        v4([(1, 1), (0, 1), (0, 1), (0, 1)]),
+        v4([(0, 1), (5, 4), (0, 1), (3, 4)]),
+        qi(4),
+    )
+    .expect("cyclide");
+    let d = cy.second_family();
+    let pts: Vec<[Q; 4]> = [qi(1), qi(2), qi(-1)]
+        .iter()
+        .map(|s| d.eval(s).expect("finite"))
+        .collect();
+    let spheres: [OrientedSphere<Q>; 3] = core::array::from_fn(|i| sphere_of(&pts[i]));
+    let built = from_three_spheres(&spheres).expect("hyperbola case");
+    assert_all_hold(&built.certify());
+    let certs = certify_three_spheres(&built, &spheres);
+    assert_eq!(certs.len(), 6);
+    assert!(certs[0].property.contains("C(t)"), "{}", certs[0]);
+    assert_all_hold(&certs);
+    assert!(same_cyclide(&built, &cy));
+    assert_eq!(built.kind(), cy.kind());
+    let off = built.certify_offset(&qi(1)).expect("offset");
+    assert_all_hold(&off);
+    // f64: the same case through square roots
+    let sf: [OrientedSphere<f64>; 3] = core::array::from_fn(|i| sphere_f64(&pts[i]));
+    let cf = from_three_spheres(&sf).expect("f64");
+    assert!(cf.all_hold());
+    assert_eq!(cf.kind(), cy.kind());
+    assert!(rcagd::cyclide::spheres::certify_three_spheres(&cf, &sf)
+        .iter()
+        .all(|c| c.holds));
+    // a pe hyperbola of spacelike radius: ⟨W, W⟩ = 1 in span(e₁, e₄)
+    let e = from_three_spheres(&[
+        sphere_of(&v4([(1, 1), (0, 1), (0, 1), (0, 1)])),
+        sphere_of(&v4([(-1, 1), (0, 1), (0, 1), (0, 1)])),
+        sphere_of(&v4([(5, 4), (0, 1), (0, 1), (3, 4)])),
+    ])
+    .unwrap_err();
+    assert!(matches!(e, CyclideError::DegenerateSpheres(_)), "{e}");
+}
+
+/// Three spheres in a γ-plane: the parabolic cyclide of the pe parabola through them, for
+/// the parabola of `random_pe_parabolas` with pe-unit tangent, for a γ-plane whose tangent
+/// norm is not a square (`⟨U, U⟩ = 2`, the `parabola_scaled` form), and the named error
+/// for two spheres in oriented contact.
+#[test]
+fn three_spheres_in_a_gamma_plane() {
+    let par = DupinCyclide::from_pe_parabola(
+        [qi(0), qi(0), qi(0), qi(1)],
+        v4([(1, 1), (0, 1), (0, 1), (0, 1)]),
+        v4([(0, 1), (3, 5), (4, 5), (1, 1)]),
+    )
+    .expect("parabolic");
+    let c = par.first_family();
+    let pts: Vec<[Q; 4]> = [qi(0), qi(1), qi(2)]
+        .iter()
+        .map(|t| c.eval(t).expect("finite"))
+        .collect();
+    let spheres: [OrientedSphere<Q>; 3] = core::array::from_fn(|i| sphere_of(&pts[i]));
+    let built = from_three_spheres(&spheres).expect("γ-plane");
+    assert_eq!(built.kind(), CyclideKind::Parabolic);
+    assert_all_hold(&built.certify());
+    assert_all_hold(&certify_three_spheres(&built, &spheres));
+    assert!(same_cyclide(&built, &par));
+    assert_all_hold(&DualPencil::of(&built).expect("pencil").certify(&built));
+    let sf: [OrientedSphere<f64>; 3] = core::array::from_fn(|i| sphere_f64(&pts[i]));
+    let cf = from_three_spheres(&sf).expect("f64");
+    assert!(cf.all_hold());
+    for (t, s) in [(q(1, 3), q(2, 1)), (q(-2, 1), q(1, 5))] {
+        let (xe, xf) = (
+            built.eval(&t, &s).expect("finite"),
+            cf.eval(&Scalar::to_f64(&t), &Scalar::to_f64(&s))
+                .expect("finite"),
+        );
+        for i in 0..3 {
+            assert!((Scalar::to_f64(&xe[i]) - xf[i]).abs() <= 1e-9 * (1.0 + xf[i].abs()));
+        }
+    }
+    // ⟨U, U⟩ = 2: A₁ + xU₀ + x²N with U₀ = (1, 1, 0, 0), N = (0, 0, 1, 1), A₁ = (0, 0, 0; 1)
+    let s = |c: [i64; 3], r: i64| OrientedSphere::new([qi(c[0]), qi(c[1]), qi(c[2])], qi(r));
+    let spheres = [s([0, 0, 0], 1), s([1, 1, 1], 2), s([2, 2, 4], 5)];
+    let built = from_three_spheres(&spheres).expect("γ-plane, g = 2");
+    assert_eq!(built.kind(), CyclideKind::Parabolic);
+    assert!(
+        matches!(built.conic(), PeConic::Parabola { u, .. } if rcagd::cyclographic::lorentz(u, u) == qi(2))
+    );
+    assert_all_hold(&built.certify());
+    assert_all_hold(&certify_three_spheres(&built, &spheres));
+    assert_all_hold(&DualPencil::of(&built).expect("pencil").certify(&built));
+    assert_all_hold(&built.certify_offset(&q(1, 2)).expect("offset"));
+    // A₂ − A₁ = N is isotropic: spheres 1 and 2 touch
+    let e = from_three_spheres(&[s([0, 0, 0], 1), s([0, 0, 1], 2), s([1, 1, 1], 2)]).unwrap_err();
+    assert!(matches!(e, CyclideError::DegenerateSpheres(_)), "{e}");
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// Three random spheres of the second family of a random exact pe circle (their plane
+    /// is pseudo-Euclidean): `from_three_spheres` must accept them, certify, and give the
+    /// same cyclide (exact implicit equation); `f64` certifies too and agrees on the type.
+    #[test]
+    fn random_three_spheres_on_a_pe_hyperbola(
+        b in prop::array::uniform3(boost()),
+        rot in small(),
+        c in prop::array::uniform4(small()),
+        rho in (1i64..=5, 1i64..=3),
+        s in prop::array::uniform3(small()),
+    ) {
+        prop_assume!(s.iter().all(|x| *x != qi(0)));
+        prop_assume!(s[0] != s[1] && s[1] != s[2] && s[0] != s[2]);
+        let Some((_, _, _, cy)) = random_cyclide(b, rot, &c, rho) else {
+            return Ok(());
+        };
+        let d = cy.second_family();
+        let pts: Vec<[Q; 4]> = s.iter().map(|x| d.eval(x).expect("finite")).collect();
+        let spheres: [OrientedSphere<Q>; 3] = core::array::from_fn(|i| sphere_of(&pts[i]));
+        let built = match from_three_spheres(&spheres) {
+            Ok(x) => x,
+            Err(e) => return Err(TestCaseError::fail(format!("refused: {e}"))),
+        };
+        for cert in built.certify().iter().chain(&certify_three_spheres(&built, &spheres)) {
+            prop_assert!(cert.holds && cert.exact, "{}", cert);
+        }
+        prop_assert!(same_cyclide(&built, &cy));
+        prop_assert_eq!(built.kind(), cy.kind());
+        let sf: [OrientedSphere<f64>; 3] = core::array::from_fn(|i| sphere_f64(&pts[i]));
+        let cf = from_three_spheres(&sf).expect("f64");
+        for cert in cf.certify() {
+            prop_assert!(cert.holds, "f64: {}", cert);
+        }
+        prop_assert_eq!(cf.kind(), cy.kind());
+    }
+
+    /// Three random spheres of a random exact pe parabola (a γ-plane), with the tangent
+    /// scaled by a random factor (so `⟨U, U⟩` is in general not a square): the parabolic
+    /// cyclide through them is accepted, certified (with its pencil) and equals the given
+    /// one; `f64` certifies too.
+    #[test]
+    fn random_three_spheres_in_a_gamma_plane(
+        b in prop::array::uniform3(boost()),
+        rot in small(),
+        c in prop::array::uniform4(small()),
+        k in small(),
+        scale in (1i64..=5, 1i64..=3),
+        t in prop::array::uniform3(small()),
+    ) {
+        prop_assume!(k != qi(0));
+        prop_assume!(t[0] != t[1] && t[1] != t[2] && t[0] != t[2]);
+        let l = lorentz(b, rot);
+        let u = l(&[qi(1), qi(0), qi(0), qi(0)]);
+        let n = l(&[qi(0), k.clone(), qi(0), k]);
+        let cy = DupinCyclide::from_pe_parabola(c, u, n).expect("parabolic");
+        let fam = cy.first_family();
+        let g = q(scale.0, scale.1);
+        let pts: Vec<[Q; 4]> = t.iter().map(|x| fam.eval(&(x.clone() * g.clone())).expect("finite")).collect();
+        let spheres: [OrientedSphere<Q>; 3] = core::array::from_fn(|i| sphere_of(&pts[i]));
+        let built = match from_three_spheres(&spheres) {
+            Ok(x) => x,
+            Err(e) => return Err(TestCaseError::fail(format!("refused: {e}"))),
+        };
+        prop_assert_eq!(built.kind(), CyclideKind::Parabolic);
+        for cert in built.certify().iter().chain(&certify_three_spheres(&built, &spheres)) {
+            prop_assert!(cert.holds && cert.exact, "{}", cert);
+        }
+        for cert in DualPencil::of(&built).expect("pencil").certify(&built) {
+            prop_assert!(cert.holds, "{}", cert);
+        }
+        prop_assert!(same_cyclide(&built, &cy));
+        let sf: [OrientedSphere<f64>; 3] = core::array::from_fn(|i| sphere_f64(&pts[i]));
+        let cf = from_three_spheres(&sf).expect("f64");
+        for cert in cf.certify() {
+            prop_assert!(cert.holds, "f64: {}", cert);
+        }
+    }
 }

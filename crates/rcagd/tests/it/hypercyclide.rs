@@ -435,3 +435,64 @@ mod surfaces_of_r4 {
         }
     }
 }
+
+/// The two-sheet hyperboloid, whose principal-frame construction above ends in
+/// `NoRationalPoint`, has a rational PN parametrization over `Q` by the degree-2
+/// unirational parametrization of its tangent-plane surface
+/// (docs/math/hypercyclides.md#two-sheet-unirational): for `(a, b, c) = (9, 13, 3)` every
+/// certificate holds exactly (PN, point on the quadric), the point bidegree is (8, 4) as
+/// the sympy derivation predicts, a sample point is a real point of the sheet `x₁ ≥ a`, and
+/// the offsets are certified; `f64` certifies too; `b = c` is a named error.
+#[test]
+fn two_sheet_hyperboloid_by_the_unirational_parametrization() {
+    use rcagd::pn::two_sheet::TwoSheetPn;
+    let h = TwoSheetPn::new(q(9, 1), q(13, 1), q(3, 1)).expect("two-sheet");
+    assert_exact(&h.certify());
+    assert_eq!(h.surface().degree(), (8, 4));
+    let x = h.surface().eval(&q(1, 2), &q(1, 3)).expect("finite");
+    let r = x[0].clone() * x[0].clone() / q(81, 1)
+        - x[1].clone() * x[1].clone() / q(169, 1)
+        - x[2].clone() * x[2].clone() / q(9, 1);
+    assert_eq!(r, q(1, 1));
+    assert!(x[0].abs() >= q(9, 1), "{x:?}");
+    assert_exact(&h.surface().offset(q(1, 2)).certify());
+    let hf = TwoSheetPn::new(9.0f64, 13.0, 3.0).expect("f64");
+    assert!(
+        hf.certify().iter().all(|c| c.holds),
+        "{:?}",
+        hf.certify().iter().filter(|c| !c.holds).collect::<Vec<_>>()
+    );
+    let xf = hf.surface().eval(&0.5, &(1.0 / 3.0)).expect("finite");
+    for i in 0..3 {
+        let e = Scalar::to_f64(&x[i]);
+        assert!(
+            (e - xf[i]).abs() <= 1e-9 * (1.0 + e.abs()),
+            "{x:?} vs {xf:?}"
+        );
+    }
+    assert!(matches!(
+        TwoSheetPn::new(q(9, 1), q(3, 1), q(-3, 1)),
+        Err(rcagd::pn::PnError::InvalidInput(_))
+    ));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(8))]
+
+    /// Random exact semi-axes (`b² ≠ c²`): the unirational PN parametrization of the
+    /// two-sheet hyperboloid is certified exactly (PN and on the quadric).
+    #[test]
+    fn random_two_sheet_hyperboloids_are_pn(
+        a in (1i64..=12, 1i64..=3),
+        b in (1i64..=12, 1i64..=3),
+        c in (1i64..=12, 1i64..=3),
+    ) {
+        use rcagd::pn::two_sheet::TwoSheetPn;
+        let (a, b, c) = (q(a.0, a.1), q(b.0, b.1), q(c.0, c.1));
+        prop_assume!(b != c);
+        let h = TwoSheetPn::new(a, b, c).expect("two-sheet");
+        for cert in h.certify() {
+            prop_assert!(cert.holds && cert.exact, "{}", cert);
+        }
+    }
+}

@@ -1,7 +1,8 @@
-//! Property tests of the Laguerre-geometry module (Peternell ch. 3, §3.1–§3.2) with random exact inputs: the model maps round-trip, Laguerre maps preserve
-//! oriented contact (and the incidence form of every hyperplane), the dilatation is the
-//! offset with the sign of erratum E6, every map is pe-orthogonal, and `f64` agrees with
-//! the exact result.
+//! Property tests of the Laguerre-geometry module (Peternell ch. 3, §3.1–§3.2) with random exact
+//! inputs: the model maps round-trip, Laguerre maps preserve oriented contact (and the incidence
+//! form of every hyperplane), the dilatation is the offset with the sign of
+//! docs/math/laguerre-pn.md, Errata E6, every map is pe-orthogonal, and `f64` agrees with the exact
+//! result.
 
 use proptest::prelude::*;
 use rcagd::laguerre::*;
@@ -29,7 +30,7 @@ fn dot(a: &[Q], b: &[Q]) -> Q {
 }
 
 /// The unit normal `(2a, 2b, a² + b² − 1)/(a² + b² + 1)` (inverse stereographic
-/// projection, seed (3.13)), optionally reversed.
+/// projection, Peternell (3.13)), optionally reversed.
 fn unit_normal(a: &Q, b: &Q, flip: bool) -> [Q; 3] {
     let s = a.clone() * a.clone() + b.clone() * b.clone();
     let den = s.clone() + qi(1);
@@ -145,10 +146,10 @@ fn pe_residual_is_zero(a: &[[Q; 4]; 4]) -> bool {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(48))]
 
-    /// Every model map of seed §3.2–§3.5 round-trips exactly: γ-hyperplanes (3.5) (any
+    /// Every model map of Peternell §3.2–§3.5 round-trips exactly: γ-hyperplanes (3.5) (any
     /// multiple), Blaschke points (3.10), the isotropic model (3.11)/(3.13) in both
-    /// directions, the dual isotropic model (3.16)/(3.17) with the E7 factor ρ (any
-    /// multiple), cycles ↔ cyclographic points (3.6) ↔ isotropic spheres (3.12).
+    /// directions, the dual isotropic model (3.16)/(3.17) with the factor ρ of
+    /// docs/math/laguerre-pn.md, Errata E7 (any multiple), cycles ↔ cyclographic points (3.6) ↔ isotropic spheres (3.12).
     #[test]
     fn model_maps_round_trip(
         a in rational(), b in rational(), flip in any::<bool>(),
@@ -251,8 +252,8 @@ proptest! {
     }
 
     /// The dilatation (3.4) is the offset x ↦ x + d n: on planes e0 ↦ e0 − d and on cycles
-    /// r ↦ r + d (erratum E6 — the seed's e0 ↦ e0 + d is the offset by −d);
-    /// in the isotropic model y₃ ↦ y₃ − (d/2)(S + 1) (corrected (3.15)). It commutes with
+    /// r ↦ r + d (docs/math/laguerre-pn.md, Errata E6 — the printed e0 ↦ e0 + d is the offset by
+    /// −d); in the isotropic model y₃ ↦ y₃ − (d/2)(S + 1) (corrected (3.15)). It commutes with
     /// Euclidean motions and dilatations add.
     #[test]
     fn dilatation_is_the_offset_e6(
@@ -275,7 +276,7 @@ proptest! {
         let xm: [Q; 3] = std::array::from_fn(|i| x[i].clone() - d.clone() * e.n[i].clone());
         prop_assert!(img.contains(&xd), "x + d n on the dilated plane");
         prop_assert!(!img.contains(&xm), "E6: not x − d n");
-        // the seed's printed rule e0 + d is the offset by −d
+        // the printed rule e0 + d is the offset by −d
         let printed = OrientedPlane::new(e.e0.clone() + d.clone(), e.n.clone()).expect("unit");
         prop_assert!(printed.contains(&xm));
         // cycles: r ↦ r + d; the point cycle of x becomes the sphere touching img at x + d n

@@ -221,15 +221,14 @@ fn f64_agrees_with_exact_on_the_theorem_4_5_example() {
     }
 }
 
-/// Known defect (found by the property test above): for `m₁ = 0, r₁ = t, M = (0, −t, ·)`,
-/// `p = (1 − 3t, 0)` the exact envelope has point bidegree (8, 4) and the `f64` one (9, 6):
-/// the exact path cancels a common factor vanishing at `t = 1/3` by a polynomial gcd, the
-/// `f64` path has no gcd (`pn/poly.rs`, `gcd2` returns 1 for `f64`), so the `f64` surface
-/// keeps a base point there and evaluates to 0/0 rounding noise at `(1/3, 1/2)`. Away from
-/// the base point both parametrize the same surface (checked by
-/// `f64_envelope_agrees_away_from_its_base_point`). Run with `--ignored`.
+/// Regression of a defect found by the property test above: for `m₁ = 0, r₁ = t,
+/// M = (0, −t, ·)`, `p = (1 − 3t, 0)` the exact envelope has point bidegree (8, 4); the
+/// `f64` one had (9, 6): the exact path cancelled the common factor `1 − 3t` (the zero of
+/// `p₁ = p₂ = 0`, where the cone degenerates and the point map has a base point) by a
+/// polynomial gcd, which `f64` lacks, and evaluated to 0/0 rounding noise at `(1/3, 1/2)`.
+/// Now the factors of `p` are cancellation candidates in both paths
+/// (docs/plans/pn-laguerre.md, item 1).
 #[test]
-#[ignore = "known defect of the f64 path: docs/plans/pn-laguerre.md"]
 fn f64_envelope_of_random_integer_families() {
     let (env, envf) = base_point_example();
     assert_eq!(envf.surface().degree(), env.surface().degree());

@@ -1,7 +1,8 @@
 //! Peternell, *Rational Parametrizations for Envelopes of Quadric Families*, chapters 1, 2
 //! and §5.1 (conic surfaces, envelopes of quadratic cones, rational points on conic
 //! families): the printed examples reproduced exactly over Q (corrected where the printed
-//! formula is wrong; see docs/math/conic-surfaces.md), and the callers of the
+//! formula is wrong; see docs/math/conic-surfaces.md and docs/math/laguerre-pn.md, Errata E4
+//! and E5), and the callers of the
 //! sum-of-squares engine.
 
 use rcagd::canal::{sum_of_two_squares, CanalError, SumOfSquares};
@@ -402,8 +403,8 @@ mod props {
 use rcagd::conic_surface::cones::{CanalViaCones, ConeFamily};
 
 /// Thm 2.1, Cor. 2.1, Cor. 2.2: cones of revolution x² + y² = (1 + t)²z² whose apex moves
-/// along the parabola (t, t², 0): the envelope is rational, every point lies on its cone and on ċ(t)
-/// (the characteristic curve), and the identities (2.2), (2.4), (2.6), (2.7) hold.
+/// along the parabola (t, t², 0): the envelope is rational, every point lies on its cone and on
+/// ċ(t) (the characteristic curve), and the identities (2.2), (2.4), (2.6), (2.7) hold.
 #[test]
 fn ch2_cone_envelope() {
     let z = || p(&[]);
@@ -458,9 +459,9 @@ fn ch2_cone_envelope() {
 }
 
 /// Thm 2.3: a canal surface whose squared radius is rational but whose radius is not —
-/// centres (t, 0, 0), r² = t²/2 + 1 (a hyperboloid of revolution) — is rational: built as the envelope of its
-/// circumscribed cones of revolution (Thm 2.2), every point on its sphere and on the
-/// characteristic circle. Over Q a rational generator of the cones need not exist: for
+/// centres (t, 0, 0), r² = t²/2 + 1 (a hyperboloid of revolution) — is rational: built as the
+/// envelope of its circumscribed cones of revolution (Thm 2.2), every point on its sphere and on
+/// the characteristic circle. Over Q a rational generator of the cones need not exist: for
 /// the pipe of radius √2 around the parabola (t, t², 0) the engine proves there is none
 /// (a residue at t² + 1/4 that is not a square in Q(i)).
 #[test]

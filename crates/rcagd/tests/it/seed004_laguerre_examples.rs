@@ -1,7 +1,8 @@
-//! M. Peternell, *Rational Parametrizations for Envelopes of Quadric Families*, chapter 3 — the examples and statements of the Laguerre-geometry
-//! chapter that are not already in `seed004_pn_examples.rs` (which holds (3.11)–(3.13),
-//! Lemma 3.1, (3.14)/(3.15) with erratum E6, (3.17) with E7, (3.18) with E8 and the
-//! cyclide pencils of §3.8.1 with E9/E10). Everything here is exact over Q.
+//! M. Peternell, *Rational Parametrizations for Envelopes of Quadric Families*, chapter 3 —
+//! the examples and statements of the Laguerre-geometry chapter that are not already in
+//! `seed004_pn_examples.rs` (which holds (3.11)–(3.13), Lemma 3.1, (3.14)/(3.15) with
+//! docs/math/laguerre-pn.md, Errata E6, (3.17) with E7, (3.18) with E8 and the cyclide
+//! pencils of §3.8.1 with E9/E10). Everything here is exact over Q.
 
 use rcagd::laguerre::*;
 use rcagd::Certified;

@@ -1,13 +1,13 @@
 //! M. Peternell, *Rational Parametrizations for Envelopes of Quadric Families*,
 //! chapters 3–5: every formula and printed example of Laguerre geometry, PN surfaces,
 //! modeling with PN surfaces and offsets of ruled manifolds, reproduced exactly over Q.
-//! Where our verification found an erratum, the test checks the corrected form *and* that the
-//! printed form fails (the erratum is confirmed). Of the two items our sympy checks could not
-//! re-verify, the §4.6 example is decided here (its printed translation has the wrong
-//! sign: a new erratum, see the test); the Prop. 4.1 degree bound needs the special frame
-//! of §4.5.1 (x₃ ∥ A × Ā), which is not implemented — `ch4_cor_4_3_canal_surfaces` only
-//! bounds the degree we get. The Laguerre chapter's remaining statements are in
-//! `seed004_laguerre_examples.rs`.
+//! Where our verification found an erratum (E6–E17 of docs/math/laguerre-pn.md, Errata E6 and
+//! the following entries), the test checks the corrected form *and* that the printed form
+//! fails (the erratum is confirmed). The §4.6 example is decided here (its printed
+//! translation has the wrong sign: docs/math/laguerre-pn.md, Errata E17); the Prop. 4.1
+//! degree bound in the frame of §4.5.1 is checked in `reducing_frame.rs`, and
+//! `ch4_cor_4_3_canal_surfaces` only bounds the degree we get. The Laguerre chapter's
+//! remaining statements are in `seed004_laguerre_examples.rs`.
 
 use rcagd::laguerre::*;
 use rcagd::pn::ruled::*;
@@ -184,7 +184,7 @@ fn ch3_e6_translation_and_dilatation_in_the_isotropic_model() {
         xd[1].clone(),
         xd[2].clone()
     ]));
-    // (3.14): the translation by t, with the seed's a = −t
+    // (3.14): the translation by t, with the paper's a = −t
     let t = [qi(1), q(-1, 2), qi(3)];
     let moved = LaguerreMap::translation(t.clone())
         .apply_plane(&e)
@@ -586,7 +586,7 @@ fn ch4_theorem_4_5_cone_family_envelope_and_e12() {
         assert!(c2.eval(&tt).expect("c").in_oriented_contact(&plane));
     }
     // (4.19) with α = M₁²+M₂², β = R+M₃, γ = p₁M₁ − p₂M₂, δ = p₁M₂ + p₂M₁ and "2uh" read 2uδ
-    let w = v(); // the second parameter u of the seed is our v
+    let w = v(); // the second parameter u of the paper is our v
     let (m1, m2, m3, r) = (t.scale(&qi(2)), &(&t * &t) - &ki(1), ki(2), ki(2));
     let (p1, p2) = (&(&t * &t) + &ki(1), ki(0));
     let al = &(&m1 * &m1) + &(&m2 * &m2);
@@ -745,7 +745,7 @@ fn ch4_sec_4_6_parabolic_cylinder_under_a_motion() {
 }
 
 /// §4.7, ellipsoid of revolution (a = b), erratum E14: the printed planes φ (with offsets
-/// d) are the envelope of Theorem 4.5 for the seed's cycle families; the corrected point
+/// d) are the envelope of Theorem 4.5 for the paper's cycle families; the corrected point
 /// representation (printed x₁, x₂ negated) is x_d = x₀ + d n; the printed one is not
 /// the contact point.
 #[test]
@@ -781,7 +781,7 @@ fn ch4_sec_4_7_e14_ellipsoid_of_revolution() {
         let normal = [nn.clone(), ph[1].clone(), ph[2].clone(), ph[3].clone()];
         let s = from_plane_field(&h, &normal).expect("envelope");
         assert_certs(&s.certify());
-        // the Theorem 4.5 construction with the seed's families gives the same planes
+        // the Theorem 4.5 construction with the paper's families gives the same planes
         let ours = ell.surface().offset(d.clone());
         let os = ours.surface();
         let on = os.normal_polys();
@@ -824,7 +824,7 @@ fn ch4_sec_4_7_e14_ellipsoid_of_revolution() {
 }
 
 /// §4.7 triaxial ellipsoid (a, b, c) = (25/3, 5, 3) (α = 4, γ = 20/3, μ = 5): the printed
-/// planes φ are exactly (up to a positive factor) the envelope of the seed's cone
+/// planes φ are exactly (up to a positive factor) the envelope of the paper's cone
 /// family, tangent to the ellipsoid in the umbilic frame; offsets are certified too.
 #[test]
 fn ch4_sec_4_7_triaxial_ellipsoid() {
@@ -1091,8 +1091,8 @@ fn data_from(s: &PnSurface<Q>, n: usize) -> Vec<rcagd::pn::modeling::HermiteDatu
     out
 }
 
-/// §4.4 (modeling scheme with PN surfaces): Hermite data (points with oriented planes) are mapped to
-/// gradient data in I³, interpolated by a C¹ Powell–Sabin quadratic spline and mapped back:
+/// §4.4 (modeling scheme with PN surfaces): Hermite data (points with oriented planes) are mapped
+/// to gradient data in I³, interpolated by a C¹ Powell–Sabin quadratic spline and mapped back:
 /// a G¹ surface of parabolic Dupin cyclide pieces that interpolates points and normals
 /// exactly; its offsets interpolate the offset data; quadratic data are reproduced.
 #[test]
@@ -1285,7 +1285,7 @@ fn surfaces_of_revolution_with_ph_profile() {
 /// §5.2 (5.3)/(5.4), erratum E6 in dimension 4: the dual form
 /// (g, 2a₁cf, 2a₂cf, 2a₃cf, (a₁² + a₂² + a₃² − c²)f) has normal length (Σaᵢ² + c²)f; for the
 /// normalized form (h, n), n = (2u₁, 2u₂, 2u₃, S − 1)/(S + 1) (1.32), the envelope point
-/// e ∩ e_{u₁} ∩ e_{u₂} ∩ e_{u₃} of h − d is x + d n, and the seed's h + d gives x − d n.
+/// e ∩ e_{u₁} ∩ e_{u₂} ∩ e_{u₃} of h − d is x + d n, and the printed h + d gives x − d n.
 #[test]
 fn ch5_pn_hypersurfaces_5_3_5_4_and_e6() {
     use rcagd_algebra::Matrix;
