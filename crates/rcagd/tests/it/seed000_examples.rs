@@ -200,7 +200,7 @@ fn satz_2_sigma_is_the_stereographic_projection_from_z() {
 }
 
 /// Satz 3 (11), corrected (docs/math/quadrics.md, "The map δ onto the sphere"): δ = σ∘ϑ holds only up to the factor p0²+p3²,
-/// σ(ϑ(p)) = (p0²+p3²)·δ(p); the seed's proof ϑ = σ⁻¹∘δ holds up to the factor 2.
+/// σ(ϑ(p)) = (p0²+p3²)·δ(p); the paper's proof ϑ = σ⁻¹∘δ holds up to the factor 2.
 #[test]
 fn satz_3_delta_is_sigma_after_theta_up_to_a_factor() {
     let certs = stereographic::certify_identities::<Rational>();

@@ -410,7 +410,7 @@ const EX8_9: Printed = Printed {
 // ------------------------------------------------------------------ chapter 3 and 4
 
 /// Besednjak Example 3.13 (after Farouki): a DPH septic that is not a helix.
-/// σ and |r'×r''| as printed; τ/κ corrected per docs/math/ph-curves.md, Errata E8: the seed prints
+/// σ and |r'×r''| as printed; τ/κ corrected per docs/math/ph-curves.md, Errata E8: the thesis prints
 /// `(2t⁶+9t⁴−9)/(9(t²+1)²)`, with τ from (2.14) it is `−(2t⁶+9t⁴−9)/(9(t²+1)²)`.
 #[test]
 fn example_3_13_dph_septic_not_helix() {
@@ -431,7 +431,7 @@ fn example_3_13_dph_septic_not_helix() {
     assert_eq!(dph.omega_tilde, poly(&["6", "0", "6"]), "ω = 6(t²+1)");
     assert_certs(&pc.certify_dph(&dph));
     assert_certs(&pc.frenet_frame(&dph).certify());
-    // τ/κ = trip/ω³ = −(2t⁶+9t⁴−9)/(9(t²+1)²)  (docs/math/ph-curves.md, Errata E8: the seed drops the sign)
+    // τ/κ = trip/ω³ = −(2t⁶+9t⁴−9)/(9(t²+1)²)  (docs/math/ph-curves.md, Errata E8: the thesis drops the sign)
     let trip = pc.triple_product();
     let w3 = dph.omega_tilde.pow(3);
     let lhs = &trip * &poly(&["9", "0", "18", "0", "9"]);
@@ -744,7 +744,7 @@ fn examples_8_4_and_8_5_h0_w2() {
 }
 
 /// Besednjak Examples 8.6 (helical) and 8.7 (non-helical): `st h = 2`, `st w = 1`.
-/// Erratum E16 (docs/math/ph-curves.md): the second root of (5.10) is `(h_2w_0² + h_1w_0w_1 + h_0w_1²)/9` (the seed
+/// Erratum E16 (docs/math/ph-curves.md): the second root of (5.10) is `(h_2w_0² + h_1w_0w_1 + h_0w_1²)/9` (the thesis
 /// prints `− h_0w_1²`, with which the linear system of Ex 8.6 has no solution).
 /// Erratum E20 (docs/math/ph-curves.md): Ex 8.6 solves (5.9), not (5.7).
 #[test]
@@ -808,7 +808,7 @@ fn examples_8_6_and_8_7_h2_w1() {
 }
 
 /// Besednjak Examples 8.8 (helical, Δ = 0) and 8.9 (non-helical, Δ = −9): `st h = 4`,
-/// `st w = 0`. Erratum E22 (docs/math/ph-curves.md): `Δ = 9h_2² + 3h_0h_4 − 12h_1h_3` (the seed prints `h_1h_4`,
+/// `st w = 0`. Erratum E22 (docs/math/ph-curves.md): `Δ = 9h_2² + 3h_0h_4 − 12h_1h_3` (the thesis prints `h_1h_4`,
 /// which would give 216 and 15); docs/math/ph-curves.md, Errata E21: Ex 8.7 cites (5.8)/(5.7) for (5.10)/(5.9).
 #[test]
 fn examples_8_8_and_8_9_h4_w0() {

@@ -553,7 +553,7 @@ fn s003_2_4_krasauskas_pieces() {
     let a = v4([1, 2, -1, 3]);
     let b = v4([2, -3, 1, 1]);
     assert_eq!(qf(&f(&a)), q(0));
-    // (2.24) corrected (E6): f((λ, μ)·U) = λμ f(U)
+    // (2.24) corrected (docs/math/lines-and-canal.md, Errata G6): f((λ, μ)·U) = λμ f(U)
     let (la, mu) = (q(3), r(-1, 2));
     let scaled = [
         la.clone() * a[0].clone(),
@@ -697,7 +697,7 @@ fn s003_2_35_factorizations_and_satz2_erratum_e9() {
         let s = split.decompose(choice).expect("sos");
         assert!(matches!(s, SumOfSquares::Rational { .. }) && s.verifies(&d));
     }
-    // Satz 2 (2.37) as printed overestimates for polynomial data (E9):
+    // Satz 2 (2.37) as printed overestimates for polynomial data (docs/math/lines-and-canal.md, Errata G9):
     // m = (t, t²/2, 0), r = t, D = t²: n = 2·max(1, 2) = 4, bound (6, 2); construction (4, 2)
     let spine = CanalSpine::polynomial(
         [p(&[0, 1]), pr(&[(0, 1), (0, 1), (1, 2)]), p(&[])],
@@ -820,7 +820,7 @@ fn s004_a3_4_dupin_cyclide_family() {
     let b = canal_surface(&spine, &CanalOptions::default()).expect("cyclide");
     assert!(b.as_rational().is_some());
     assert!(b.all_hold(), "{:?}", b.certify());
-    // the quartic of A3.4, (X² + Y² + Z² − μ² + b²)² = 4(aX − cμ)² + 4b²Y², with the axes
+    // the Dupin quartic (Peternell §3.8.1; docs/math/cyclides.md, "Implicit"), (X² + Y² + Z² − μ² + b²)² = 4(aX − cμ)² + 4b²Y², with the axes
     // relabelled (X = y, Y = x; semi-axes a = 5ρ/4, b = ρ, c = −3ρ/4, μ = r₀):
     // (|x|² − 5)² − 4((5/2)y + 9/2)² − 16x² ≡ 0 as a polynomial identity in (t, u)
     let x = b.as_rational().expect("rational").homogeneous();
