@@ -458,6 +458,101 @@ pub fn product_tensor<F: Field>(
     Ok(out)
 }
 
+/// [`product_tensor`] for exact scalars, fraction-free: each factor is brought to integer
+/// coefficients over one common denominator (`a = A/d_a`), the products of the
+/// binomial-scaled integer coefficients are summed in integers, and each coefficient of the
+/// result is normalized once, `Σ (C·A)(C·B) / (d_a d_b C(m, i) C(n, j))`. The same numbers as
+/// [`product_tensor`] (which normalizes a rational after every product and sum); for `f64`
+/// (or any inexact scalar) it is [`product_tensor`].
+///
+/// # Errors
+/// As [`product_tensor`].
+pub fn product_tensor_scalar<F: crate::scalar::Scalar>(
+    a: &[F],
+    da: (usize, usize),
+    b: &[F],
+    db: (usize, usize),
+) -> Result<Vec<F>, AlgebraError> {
+    use crate::rational::Rational;
+    use dashu_int::{IBig, UBig};
+    if !F::EXACT {
+        return product_tensor(a, da, b, db);
+    }
+    let to_q = |v: &[F]| -> Option<Vec<Rational>> { v.iter().map(|x| x.to_rational()).collect() };
+    let (Some(qa), Some(qb)) = (to_q(a), to_q(b)) else {
+        return product_tensor(a, da, b, db);
+    };
+    for (name, arr, (m, n)) in [("first", &qa, da), ("second", &qb, db)] {
+        if arr.len() != (m + 1) * (n + 1) {
+            return Err(AlgebraError::Mismatch(format!(
+                "{name} factor has {} coefficients, bidegree ({m}, {n}) needs {}",
+                arr.len(),
+                (m + 1) * (n + 1)
+            )));
+        }
+    }
+    // integers over a common denominator, scaled by the binomials of the degree
+    let ints = |v: &[Rational], (m, n): (usize, usize)| -> (Vec<IBig>, UBig) {
+        let mut l = UBig::ONE;
+        for x in v {
+            let d = x.denominator();
+            if d != &UBig::ONE {
+                let g = dashu_base::Gcd::gcd(&l, d);
+                l = &l / &g * d;
+            }
+        }
+        let cm = binomials_int(m);
+        let cn = binomials_int(n);
+        let out = v
+            .iter()
+            .enumerate()
+            .map(|(k, x)| {
+                x.numerator()
+                    * IBig::from(&l / x.denominator())
+                    * IBig::from(cm[k / (n + 1)].clone())
+                    * IBig::from(cn[k % (n + 1)].clone())
+            })
+            .collect();
+        (out, l)
+    };
+    let (ia, la) = ints(&qa, da);
+    let (ib, lb) = ints(&qb, db);
+    let ((m1, n1), (m2, n2)) = (da, db);
+    let (m, n) = (m1 + m2, n1 + n2);
+    let mut out = vec![IBig::ZERO; (m + 1) * (n + 1)];
+    for (ka, x) in ia.iter().enumerate() {
+        if x == &IBig::ZERO {
+            continue;
+        }
+        let (i, j) = (ka / (n1 + 1), ka % (n1 + 1));
+        for (kb, y) in ib.iter().enumerate() {
+            let (i2, j2) = (kb / (n2 + 1), kb % (n2 + 1));
+            out[(i + i2) * (n + 1) + j + j2] += x * y;
+        }
+    }
+    let cm = binomials_int(m);
+    let cn = binomials_int(n);
+    let l = &la * &lb;
+    Ok(out
+        .into_iter()
+        .enumerate()
+        .map(|(k, x)| {
+            let d = &l * &cm[k / (n + 1)] * &cn[k % (n + 1)];
+            F::from_rational(&Rational::from_parts(x, d))
+        })
+        .collect())
+}
+
+/// `C(n, 0), …, C(n, n)` as integers.
+fn binomials_int(n: usize) -> Vec<dashu_int::UBig> {
+    let mut row = vec![dashu_int::UBig::ONE];
+    for k in 0..n {
+        let next = row[k].clone() * dashu_int::UBig::from(n - k) / dashu_int::UBig::from(k + 1);
+        row.push(next);
+    }
+    row
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -607,5 +702,44 @@ mod tests {
         let b = [1.0, -2.0, 0.5, 3.0];
         let p = from_bernstein(&b);
         assert!((eval(&b, &0.3) - p.eval(&0.3)).abs() < 1e-14);
+    }
+}
+
+#[cfg(test)]
+mod fraction_free_tests {
+    use super::*;
+    use crate::rational::Rational;
+    use crate::scalar::Scalar;
+
+    /// The fraction-free product equals the rational one coefficient for coefficient, on
+    /// factors with mixed denominators, zeros and signs, for several bidegrees.
+    #[test]
+    fn fraction_free_product_equals_the_rational_product() {
+        let mut seed = 7u64;
+        let mut next = || {
+            seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
+            let p = ((seed >> 33) % 41) as i64 - 20;
+            let q = ((seed >> 20) % 17) as i64 + 1;
+            Rational::from_ratio(if p % 5 == 0 { 0 } else { p }, q)
+        };
+        for (da, db) in [
+            ((1, 2), (3, 1)),
+            ((0, 0), (2, 2)),
+            ((3, 3), (3, 3)),
+            ((6, 1), (0, 4)),
+        ] {
+            let a: Vec<Rational> = (0..(da.0 + 1) * (da.1 + 1)).map(|_| next()).collect();
+            let b: Vec<Rational> = (0..(db.0 + 1) * (db.1 + 1)).map(|_| next()).collect();
+            let slow = product_tensor(&a, da, &b, db).expect("slow");
+            let fast = product_tensor_scalar(&a, da, &b, db).expect("fast");
+            assert_eq!(slow, fast, "{da:?} × {db:?}");
+            let af: Vec<f64> = a.iter().map(Scalar::to_f64).collect();
+            let bf: Vec<f64> = b.iter().map(Scalar::to_f64).collect();
+            let ff = product_tensor_scalar(&af, da, &bf, db).expect("f64");
+            for (x, y) in slow.iter().zip(&ff) {
+                assert!((Scalar::to_f64(x) - y).abs() <= 1e-12 * (1.0 + y.abs()));
+            }
+        }
+        assert!(product_tensor_scalar(&[Rational::from(1)], (1, 0), &[], (0, 0)).is_err());
     }
 }

@@ -150,8 +150,8 @@ fn cross_terms<F: Scalar>(
         if i == k {
             continue;
         }
-        let a = bernstein::product_tensor(&pi.coeffs, pi.degree, &qk.coeffs, qk.degree)?;
-        let b = bernstein::product_tensor(&pk.coeffs, pk.degree, &qi.coeffs, qi.degree)?;
+        let a = bernstein::product_tensor_scalar(&pi.coeffs, pi.degree, &qk.coeffs, qk.degree)?;
+        let b = bernstein::product_tensor_scalar(&pk.coeffs, pk.degree, &qi.coeffs, qi.degree)?;
         out.extend(a.into_iter().zip(b).map(|(x, y)| x - y));
     }
     Ok(Some((out, pmax * qmax)))

@@ -344,8 +344,12 @@ impl<F: Scalar> Bernstein2<F> {
     }
 
     fn mul(&self, other: &Self) -> Result<Self, GeomError> {
-        let coeffs =
-            bernstein::product_tensor(&self.coeffs, self.degree, &other.coeffs, other.degree)?;
+        let coeffs = bernstein::product_tensor_scalar(
+            &self.coeffs,
+            self.degree,
+            &other.coeffs,
+            other.degree,
+        )?;
         Ok(Bernstein2 {
             coeffs,
             degree: (
