@@ -523,10 +523,16 @@ fn inversion_setups(
             format_scalar(&nn)
         ))
     })?;
-    if nlen.is_zero() || plane.radius <= Rational::ZERO {
+    if nlen.is_zero() {
         return Err(CanalError::InvalidArgument(
-            "the plane needs a non-zero normal and a contact circle of positive radius".into(),
+            "the plane needs a non-zero normal".into(),
         ));
+    }
+    if plane.radius <= Rational::ZERO {
+        return Err(CanalError::InvalidArgument(format!(
+            "the contact circle radius must be positive, got {}",
+            format_scalar(&plane.radius)
+        )));
     }
     if dot(&plane.normal, &plane.center) != plane.offset {
         return Err(CanalError::InvalidArgument(format!(
