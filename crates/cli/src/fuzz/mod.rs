@@ -83,6 +83,9 @@ pub struct Outcome {
     /// The exit code `rcagd build` gives: 0 every certificate holds, 1 a certificate
     /// fails, 2 an input error (parse, parameters, construction or export refused).
     pub exit: u8,
+    /// The exit code of `rcagd build` with the default format (JSON to standard output):
+    /// as `exit`, but an exporter that refuses the object does not count.
+    pub build_exit: u8,
     /// Where it ended: `parse`, `build`, `export FORMAT`, `certificate` or `ok`.
     pub stage: String,
     /// The first error message (empty on success).
@@ -132,6 +135,7 @@ fn first_line(s: &str) -> String {
 pub fn evaluate(file_name: &str, text: &str) -> Outcome {
     let fail = |exit: u8, stage: &str, message: String, finding: Option<FindingKind>| Outcome {
         exit,
+        build_exit: exit,
         stage: stage.to_string(),
         message,
         finding,
@@ -225,6 +229,7 @@ pub fn evaluate(file_name: &str, text: &str) -> Outcome {
     if !failing.is_empty() {
         return Outcome {
             exit: 1,
+            build_exit: 1,
             stage: "certificate".into(),
             message: failing.join("; "),
             finding: finding.or(Some(FindingKind::Certificate)),
@@ -234,6 +239,7 @@ pub fn evaluate(file_name: &str, text: &str) -> Outcome {
     match export_error {
         Some((fmt, e)) => Outcome {
             exit: 2,
+            build_exit: if fmt == OutFormat::Json.label() { 2 } else { 0 },
             stage: format!("export {fmt}"),
             message: e,
             finding,
@@ -241,6 +247,7 @@ pub fn evaluate(file_name: &str, text: &str) -> Outcome {
         },
         None => Outcome {
             exit: 0,
+            build_exit: 0,
             stage: "ok".into(),
             message: String::new(),
             finding,
@@ -277,6 +284,7 @@ pub fn evaluate_limited(file_name: &str, text: &str, limit: Duration) -> (Outcom
         None => (
             Outcome {
                 exit: 1,
+                build_exit: 1,
                 stage: "timeout".into(),
                 message: format!("still running after {:.1} s", limit.as_secs_f64()),
                 finding: Some(FindingKind::Timeout),
@@ -559,6 +567,18 @@ pub fn run(opts: &Options) -> u8 {
         });
         let elapsed = started.elapsed();
         done += 1;
+        if opts.verbose {
+            match &result {
+                Some((o, _, _)) => errln!(
+                    "  -> exit {} at {} ({:.2} s): {}",
+                    o.exit,
+                    o.stage,
+                    elapsed.as_secs_f64(),
+                    first_line(&o.message)
+                ),
+                None => errln!("  -> still running after the time limit"),
+            }
+        }
         let st = stats.entry(op.name).or_default();
         st.cases += 1;
         let (outcome, reader_bad) = match result {
@@ -571,6 +591,7 @@ pub fn run(opts: &Options) -> u8 {
                 (
                     Outcome {
                         exit: 1,
+                        build_exit: 1,
                         stage: "timeout".into(),
                         message: format!("still running after {:.1} s", limit.as_secs_f64()),
                         finding: Some(FindingKind::Timeout),
