@@ -5,7 +5,7 @@
 //! * `rcagd build RECIPE [--out DIR] [--format json|step|iges|exact|obj|stl|ply|gltf|svg|png]…`
 //!   — build a user's recipe;
 //! * `rcagd ops [NAME] [--markdown]` — the op reference;
-//! * `rcagd fuzz [--cases N] [--seed S] [--op NAME] [--corpus DIR] [--case-seconds T]` —
+//! * `rcagd fuzz [--cases N] [--seed S] [--op NAME] [--corpus DIR] [--case-seconds T] [--huge]` —
 //!   the structured fuzzer over the op registry (`rcagd_cli::fuzz`).
 //!
 //! Exit codes: 0 all certificates hold, 1 a certificate fails (or an object of the
@@ -110,6 +110,10 @@ enum Command {
         /// Print every recipe before running it (to standard error).
         #[arg(long, short)]
         verbose: bool,
+        /// Hostile numbers up to 1e±300 and 30 digits: finds work that is not bounded
+        /// (reported as timeouts).
+        #[arg(long)]
+        huge: bool,
     },
 }
 
@@ -147,6 +151,7 @@ fn main() -> ExitCode {
             corpus,
             case_seconds,
             verbose,
+            huge,
         } => {
             let code = rcagd_cli::fuzz::run(&rcagd_cli::fuzz::Options {
                 cases,
@@ -155,6 +160,7 @@ fn main() -> ExitCode {
                 corpus,
                 case_seconds,
                 verbose,
+                huge,
             });
             // cases still running past their time limit are abandoned here
             if let Some(e) = rcagd_cli::stdout_error() {

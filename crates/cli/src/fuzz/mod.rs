@@ -318,6 +318,8 @@ pub struct Options {
     pub case_seconds: f64,
     /// Print every case before running it.
     pub verbose: bool,
+    /// Hostile numbers up to 1e±300 and 30 digits (finds unbounded work: timeouts).
+    pub huge: bool,
 }
 
 #[derive(Default)]
@@ -534,7 +536,7 @@ pub fn run(opts: &Options) -> u8 {
         let k = (case % ops.len() as u64) as usize;
         let (op, op_seeds) = (ops[k], &seeds[k]);
         let mut rng = Rng::for_case(opts.seed, case);
-        let c = gen::generate(&mut rng, op, op_seeds);
+        let c = gen::generate_with(&mut rng, op, op_seeds, opts.huge);
         let text = c.toml();
         if opts.verbose {
             errln!("case {case} ({}):\n{text}", c.category);
