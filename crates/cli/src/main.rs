@@ -9,7 +9,8 @@
 //!   the structured fuzzer over the op registry (`rcagd_cli::fuzz`).
 //!
 //! Exit codes: 0 all certificates hold, 1 a certificate fails (or an object of the
-//! gallery cannot be built), 2 a usage or input error.
+//! gallery cannot be built, or a construction fails internally: a panic caught, an
+//! "internal error"), 2 a usage or input error.
 
 use clap::{Parser, Subcommand};
 use rcagd_cli::output::OutFormat;
@@ -23,7 +24,7 @@ use std::process::ExitCode;
     version,
     about = "Exact rational curves and surfaces for CAD, with certificates",
     long_about = "Exact rational curves and surfaces for CAD, with certificates.\n\n\
-        Exit codes: 0 = every certificate holds, 1 = a certificate fails, 2 = usage or input error."
+        Exit codes: 0 = every certificate holds, 1 = a certificate fails (or an internal error), 2 = usage or input error."
 )]
 struct Cli {
     #[command(subcommand)]

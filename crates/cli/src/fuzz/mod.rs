@@ -165,13 +165,13 @@ pub fn evaluate(file_name: &str, text: &str) -> Outcome {
                 .map(|d| d.message.clone())
                 .collect::<Vec<_>>()
                 .join("; ");
-            let f = if m.contains("panicked") {
+            let f = if m.contains("the construction panicked") {
                 Some(FindingKind::Panic)
             } else {
                 internal(&m).then_some(FindingKind::Internal)
             };
-            // a panic caught by the registry is an internal error: exit 1
-            let exit = if f.is_some() { 1 } else { 2 };
+            // as `rcagd build`: a panic caught by the registry is an internal error, exit 1
+            let exit = crate::build::build_error_exit(&d);
             return fail(exit, "build", m, f);
         }
         Ok(Ok(o)) => o,
