@@ -115,6 +115,10 @@ enum Command {
         /// (reported as timeouts).
         #[arg(long)]
         huge: bool,
+        /// Stop after N cases ran past the time limit (each keeps a thread busy until
+        /// the process ends).
+        #[arg(long, value_name = "N", default_value_t = 3)]
+        max_abandoned: u32,
     },
 }
 
@@ -153,6 +157,7 @@ fn main() -> ExitCode {
             case_seconds,
             verbose,
             huge,
+            max_abandoned,
         } => {
             let code = rcagd_cli::fuzz::run(&rcagd_cli::fuzz::Options {
                 cases,
@@ -162,6 +167,7 @@ fn main() -> ExitCode {
                 case_seconds,
                 verbose,
                 huge,
+                max_abandoned,
             });
             // cases still running past their time limit are abandoned here
             if let Some(e) = rcagd_cli::stdout_error() {

@@ -320,6 +320,9 @@ pub struct Options {
     pub verbose: bool,
     /// Hostile numbers up to 1e±300 and 30 digits (finds unbounded work: timeouts).
     pub huge: bool,
+    /// Stop after this many cases were abandoned past the time limit (each keeps a
+    /// thread busy until the process ends).
+    pub max_abandoned: u32,
 }
 
 #[derive(Default)]
@@ -665,7 +668,14 @@ pub fn run(opts: &Options) -> u8 {
             }
             findings.push(f);
         }
-        if running >= 3 {
+        if done % 500 == 0 {
+            errln!(
+                "… {done} cases, {:.0} s, {} findings",
+                start.elapsed().as_secs_f64(),
+                findings.len()
+            );
+        }
+        if running >= opts.max_abandoned.max(1) {
             errln!("stopping early: {running} cases are still running past the time limit");
             break;
         }
