@@ -668,7 +668,7 @@ pub fn run(opts: &Options) -> u8 {
             }
             findings.push(f);
         }
-        if done % 500 == 0 {
+        if done.is_multiple_of(500) {
             errln!(
                 "… {done} cases, {:.0} s, {} findings",
                 start.elapsed().as_secs_f64(),
