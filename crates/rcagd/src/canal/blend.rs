@@ -237,6 +237,14 @@ pub fn blend_spheres(
     b: &BlendEnd<Rational>,
     spine: &BlendSpine<Rational>,
 ) -> Result<SphereBlend, CanalError> {
+    // one sphere twice: a blend from a sphere to itself is no surface between two spheres
+    if a.center == b.center && a.radius == b.radius {
+        return Err(CanalError::InvalidArgument(format!(
+            "coincident spheres: both ends are the sphere ({}; {}); a blend needs two different spheres",
+            fmt_vec(&a.center),
+            format_scalar(&a.radius)
+        )));
+    }
     let family = match spine {
         BlendSpine::Default => {
             let (l0, l1) = default_lambdas(a, b);
