@@ -308,6 +308,18 @@ pub fn load(path: &Path) -> Result<Recipe, Vec<Diagnostic>> {
     Ok(recipe)
 }
 
+/// The exit code of a recipe that could not be built: 1 when a construction panicked
+/// or reported an internal error (a defect: "internal error" at the start of the op's
+/// message or of the diagnostic), else 2 (an input error).
+pub fn build_error_exit(diags: &[Diagnostic]) -> u8 {
+    let internal = |m: &str| m.starts_with("internal error") || m.contains("`): internal error");
+    if diags.iter().any(|d| internal(&d.message)) {
+        EXIT_FAIL
+    } else {
+        EXIT_INPUT
+    }
+}
+
 fn print_diagnostics(diags: &[Diagnostic]) {
     err!("{}", crate::source::render_all(diags));
 }
@@ -340,7 +352,9 @@ pub fn run(path: &Path, out: Option<&Path>, formats: &[OutFormat]) -> u8 {
         Ok(o) => o,
         Err(d) => {
             print_diagnostics(&d);
-            return EXIT_INPUT;
+            // a construction that panicked (or otherwise reported an internal error) is
+            // a defect, not the input's fault: exit 1, as documented
+            return build_error_exit(&d);
         }
     };
     match out {
@@ -434,6 +448,28 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn an_internal_error_exits_1_and_an_input_error_2() {
+        let file = SourceFile::new("r.toml", "x");
+        let e = |m: &str| vec![file.error(Span::default(), m.to_string())];
+        let panicked = "cannot build \"a\" (op `circle`): internal error (please report): the construction panicked: x";
+        assert_eq!(build_error_exit(&e(panicked)), EXIT_FAIL);
+        assert_eq!(
+            build_error_exit(&e("internal error: default of `x`")),
+            EXIT_FAIL
+        );
+        assert_eq!(
+            build_error_exit(&e("unknown op \"internal error\"")),
+            EXIT_INPUT
+        );
+        assert_eq!(
+            build_error_exit(&e(
+                "cannot build \"a\" (op `circle`): the radius must be positive"
+            )),
+            EXIT_INPUT
+        );
     }
 
     #[test]

@@ -4,10 +4,13 @@
 //!   write JSON/STEP/IGES/OBJ/SVG/PNG and the exact sidecar per object, `report.json` and `index.html`;
 //! * `rcagd build RECIPE [--out DIR] [--format json|step|iges|exact|obj|stl|ply|gltf|svg|png]…`
 //!   — build a user's recipe;
-//! * `rcagd ops [NAME] [--markdown]` — the op reference.
+//! * `rcagd ops [NAME] [--markdown]` — the op reference;
+//! * `rcagd fuzz [--cases N] [--seed S] [--op NAME] [--corpus DIR] [--case-seconds T] [--huge]` —
+//!   the structured fuzzer over the op registry (`rcagd_cli::fuzz`).
 //!
 //! Exit codes: 0 all certificates hold, 1 a certificate fails (or an object of the
-//! gallery cannot be built), 2 a usage or input error.
+//! gallery cannot be built, or a construction fails internally: a panic caught, an
+//! "internal error"), 2 a usage or input error.
 
 use clap::{Parser, Subcommand};
 use rcagd_cli::output::OutFormat;
@@ -21,7 +24,7 @@ use std::process::ExitCode;
     version,
     about = "Exact rational curves and surfaces for CAD, with certificates",
     long_about = "Exact rational curves and surfaces for CAD, with certificates.\n\n\
-        Exit codes: 0 = every certificate holds, 1 = a certificate fails, 2 = usage or input error."
+        Exit codes: 0 = every certificate holds, 1 = a certificate fails (or an internal error), 2 = usage or input error."
 )]
 struct Cli {
     #[command(subcommand)]
@@ -82,6 +85,41 @@ enum Command {
         #[arg(long)]
         markdown: bool,
     },
+    /// Fuzz the ops: generated recipes through parse, build and every exporter.
+    ///
+    /// Valid, near-valid, degenerate and hostile recipes from each op's parameter
+    /// table, run in-process; STEP and IGES readers on damaged files. Exit 0 when
+    /// nothing was found, 1 when a case panicked, said "internal error", failed a
+    /// certificate or ran past --case-seconds (each finding is printed with its recipe
+    /// and, with --corpus, written there as a regression recipe).
+    Fuzz {
+        /// Number of cases (spread over the ops in turn).
+        #[arg(long, value_name = "N", default_value_t = 1000)]
+        cases: u64,
+        /// The seed: a run is a function of the seed and the case count.
+        #[arg(long, value_name = "S", default_value_t = 1)]
+        seed: u64,
+        /// Only this op.
+        #[arg(long, value_name = "NAME")]
+        op: Option<String>,
+        /// Write each finding (a minimal recipe or reader file) into DIR.
+        #[arg(long, value_name = "DIR")]
+        corpus: Option<PathBuf>,
+        /// Time limit of one case, in seconds (a longer case is a finding).
+        #[arg(long, value_name = "T", default_value_t = 10.0)]
+        case_seconds: f64,
+        /// Print every recipe before running it (to standard error).
+        #[arg(long, short)]
+        verbose: bool,
+        /// Hostile numbers up to 1e±300 and 30 digits: finds work that is not bounded
+        /// (reported as timeouts).
+        #[arg(long)]
+        huge: bool,
+        /// Stop after N cases ran past the time limit (each keeps a thread busy until
+        /// the process ends).
+        #[arg(long, value_name = "N", default_value_t = 3)]
+        max_abandoned: u32,
+    },
 }
 
 fn main() -> ExitCode {
@@ -111,6 +149,37 @@ fn main() -> ExitCode {
             build::run(&recipe, out.as_deref(), &formats)
         }
         Command::Ops { name, markdown } => ops::describe::run(name.as_deref(), markdown),
+        Command::Fuzz {
+            cases,
+            seed,
+            op,
+            corpus,
+            case_seconds,
+            verbose,
+            huge,
+            max_abandoned,
+        } => {
+            let code = rcagd_cli::fuzz::run(&rcagd_cli::fuzz::Options {
+                cases,
+                seed,
+                op,
+                corpus,
+                case_seconds,
+                verbose,
+                huge,
+                max_abandoned,
+            });
+            // cases still running past their time limit are abandoned here
+            if let Some(e) = rcagd_cli::stdout_error() {
+                if e.kind() != std::io::ErrorKind::BrokenPipe {
+                    rcagd_cli::write_stderr(&format!(
+                        "error: cannot write to standard output: {e}\n"
+                    ));
+                }
+                std::process::exit(i32::from(code.max(EXIT_INPUT)));
+            }
+            std::process::exit(i32::from(code));
+        }
     };
     // output that did not arrive is a failure (a full disk, `> /dev/full`); a reader
     // that closed the pipe early gets no message

@@ -178,16 +178,30 @@ const MAX_SPLITS: (usize, usize) = rcagd::canal::EXPORT_SPLITS;
 /// point).
 pub(super) fn positive_pieces(
     patches: Vec<BezierPatch<Rational>>,
+    blame: Option<&'static str>,
 ) -> Result<(Vec<BezierPatch<Rational>>, Certificate), OpError> {
     let split = split_patches_adaptive(patches, SignRule::Positive, MAX_SPLITS)
         .map_err(|e| OpError::new(e.to_string()))?;
     let (out, bad) = (split.pieces, split.failed);
     let n = out.len();
-    let cert = Certificate::decide(
+    // one rule for a weight that is not positive on the whole domain (as for curves,
+    // `rcagd_geom::weight_sign`): an input error naming the parameter that chose it
+    // (the domain, a tangent magnitude), not a failing certificate
+    if bad > 0 {
+        let message = format!(
+            "the surface's weight is not positive on the whole domain ({bad} of {n} pieces keep a weight ≤ 0 after {} + {} bisections): it passes through or near a point at infinity (a pole){}",
+            MAX_SPLITS.0,
+            MAX_SPLITS.1,
+            blame.map_or(String::new(), |b| format!("; choose `{b}` so that the surface stays finite"))
+        );
+        return Err(match blame {
+            Some(b) => OpError::param(b, message),
+            None => OpError::new(message),
+        });
+    }
+    let cert = Certificate::holds(
         format!("every Bernstein weight of the {n} patches is > 0 (the weight has no zero: no pole, no base point)"),
-        bad == 0,
         true,
-        || format!("{bad} patches keep a weight ≤ 0 after the largest subdivision"),
     );
     Ok((out, cert))
 }
@@ -577,7 +591,7 @@ fn canal_object(
     s: &CanalSurface<Rational>,
     extra: Vec<Certificate>,
 ) -> Result<Object, OpError> {
-    let (patches, wcert) = positive_pieces(s.domain_patches().map_err(canal_err_plain)?)?;
+    let (patches, wcert) = positive_pieces(s.domain_patches().map_err(canal_err_plain)?, None)?;
     let mut certs = s.certify();
     certs.push(degree_cert(s));
     certs.push(wcert);
@@ -827,7 +841,11 @@ fn blend_end(args: &OpArgs, k: usize) -> Result<BlendEnd<Rational>, OpError> {
         point3(args, n[2])?,
         args.number(n[3])?,
     )
-    .map_err(|e| OpError::param(n[3], e.to_string()))
+    .map_err(|e| {
+        let m = e.to_string();
+        // a zero normal is the normal's fault; the rest (the plane misses the sphere) the offset's
+        OpError::param(if m.contains("normal must be non-zero") { n[2] } else { n[3] }, m)
+    })
 }
 
 fn blend_spine(args: &OpArgs) -> Result<BlendSpine<Rational>, OpError> {
@@ -856,7 +874,7 @@ fn build_blend_spheres(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let blend = blend_spheres(&a, &b, &blend_spine(args)?)
         .map_err(|e| canal_err(e, "center1", "lambda0"))?;
     let s = rational_build(&blend.build, "lambda0")?;
-    let (patches, wcert) = positive_pieces(s.domain_patches().map_err(canal_err_plain)?)?;
+    let (patches, wcert) = positive_pieces(s.domain_patches().map_err(canal_err_plain)?, Some("lambda0"))?;
     let mut certs = blend.certify();
     certs.push(degree_cert(s));
     certs.push(wcert);
@@ -904,6 +922,9 @@ fn build_blend_sphere_plane(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         radius: args.number("circle_radius")?,
     };
     let blend = blend_sphere_plane(&a, &plane, &blend_spine(args)?).map_err(|e| match e {
+        CanalError::InvalidArgument(ref m) if m.contains("contact circle radius") => {
+            OpError::param("circle_radius", e.to_string())
+        }
         CanalError::InvalidArgument(_) => OpError::param("plane_normal", e.to_string()),
         other => canal_err(other, "center0", "lambda0"),
     })?;
@@ -940,7 +961,7 @@ fn build_blend_sphere_plane(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             patches.push(patch_of(&ch, (&zero, &one), (&m1, &one)).map_err(|e| OpError::new(e.to_string()))?);
         }
     }
-    let (patches, wcert) = positive_pieces(patches)?;
+    let (patches, wcert) = positive_pieces(patches, Some("lambda0"))?;
     let mut certs = blend.certify();
     certs.push(wcert);
     Ok(vec![args.object(Geometry::Patches(patches), certs)])
@@ -1041,7 +1062,7 @@ fn build_canal_normal_field(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let patch = built
         .patch((t0, t1), (u0, u1))
         .map_err(|e| OpError::param("domain", e.to_string()))?;
-    let (patches, wcert) = positive_pieces(vec![patch])?;
+    let (patches, wcert) = positive_pieces(vec![patch], Some("domain"))?;
     let mut certs = built.certify();
     certs.push(wcert);
     Ok(vec![args.object(Geometry::Patches(patches), certs)])

@@ -433,9 +433,10 @@ fn build_conic_point(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpError
         (d[0].clone(), d[1].clone()),
         (d[2].clone(), d[3].clone()),
     )
-    .map_err(|e| {
-        let p = if matches!(e, QuadricFamilyError::Patch(_)) { "domain" } else { "N" };
-        OpError::param(p, e.to_string())
+    .map_err(|e| match e {
+        QuadricFamilyError::Rank(0) => OpError::param("L", "L = M = N = 0: the zero form X²L + Y²M + Z²N is no conic (every point satisfies it)"),
+        QuadricFamilyError::Patch(_) => OpError::param("domain", e.to_string()),
+        _ => OpError::param("N", e.to_string()),
     })?;
     let text = |s: &str| Quantity::Text(s.to_string());
     let mut values = Vec::new();

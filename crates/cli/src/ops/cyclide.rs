@@ -51,7 +51,7 @@ pub(super) fn cyclide_object(
     if let Some(d) = args.opt_number("offset")? {
         certs.extend(cy.certify_offset(&d).map_err(|e| OpError::param("offset", e.to_string()))?);
     }
-    let (patches, wcert) = super::canal::positive_pieces(patches)?;
+    let (patches, wcert) = super::canal::positive_pieces(patches, None)?;
     certs.push(wcert);
     let kind = NamedQuantity::new("kind", "the type of the Dupin cyclide (ring, horn, spindle, parabolic)", Quantity::Text(cy.kind().name().into()));
     Ok(vec![args.object(Geometry::Patches(patches), certs).with_values(vec![kind])])
@@ -213,7 +213,7 @@ fn build_blend(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let blend = blend_cones(p1, d1, p2, d2).map_err(|e| OpError::param(blame, e.to_string()))?;
     let patches = blend.patches().map_err(|e| OpError::new(e.to_string()))?;
     let mut certs = blend.certify();
-    let (patches, wcert) = super::canal::positive_pieces(patches)?;
+    let (patches, wcert) = super::canal::positive_pieces(patches, Some("sphere2"))?;
     certs.push(wcert);
     let kind = NamedQuantity::new(
         "kind",

@@ -193,8 +193,31 @@ fn build_curve(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 fn build_offset(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let c = planar_curve(args)?;
     let off = c.offset(&args.number("distance")?)?;
+    // the offset's weight is σ = |w|² ≥ 0: a zero of w on [0, 1] (a cusp of the curve,
+    // σ = 0) is a pole of the offset; the one rule for weights decides it exactly
+    let pole_free = rcagd_geom::weight_sign::curve_pole_free(&off.curve).map_err(|e| {
+        let at: Vec<String> = e
+            .zeros
+            .iter()
+            .map(|(lo, hi, x)| {
+                if lo == hi {
+                    format!("t = {}", rcagd_algebra::rational::format_rational(lo))
+                } else {
+                    format!("t ≈ {x}")
+                }
+            })
+            .collect();
+        OpError::param(
+            "preimage",
+            format!(
+                "the curve has a cusp at {} (w(t) = 0, so the speed σ = |w|² vanishes): its offset has a pole there; give a preimage without a zero on [0, 1]",
+                at.join(", ")
+            ),
+        )
+    })?;
     let mut certs: Vec<Certificate> = prefixed("base: ", c.certify()).collect();
     certs.extend(off.certify());
+    certs.push(pole_free);
     Ok(vec![args.object(Geometry::Curve(off.curve), certs)])
 }
 

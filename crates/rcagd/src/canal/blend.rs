@@ -237,6 +237,14 @@ pub fn blend_spheres(
     b: &BlendEnd<Rational>,
     spine: &BlendSpine<Rational>,
 ) -> Result<SphereBlend, CanalError> {
+    // one sphere twice: a blend from a sphere to itself is no surface between two spheres
+    if a.center == b.center && a.radius == b.radius {
+        return Err(CanalError::InvalidArgument(format!(
+            "coincident spheres: both ends are the sphere ({}; {}); a blend needs two different spheres",
+            fmt_vec(&a.center),
+            format_scalar(&a.radius)
+        )));
+    }
     let family = match spine {
         BlendSpine::Default => {
             let (l0, l1) = default_lambdas(a, b);
@@ -523,10 +531,16 @@ fn inversion_setups(
             format_scalar(&nn)
         ))
     })?;
-    if nlen.is_zero() || plane.radius <= Rational::ZERO {
+    if nlen.is_zero() {
         return Err(CanalError::InvalidArgument(
-            "the plane needs a non-zero normal and a contact circle of positive radius".into(),
+            "the plane needs a non-zero normal".into(),
         ));
+    }
+    if plane.radius <= Rational::ZERO {
+        return Err(CanalError::InvalidArgument(format!(
+            "the contact circle radius must be positive, got {}",
+            format_scalar(&plane.radius)
+        )));
     }
     if dot(&plane.normal, &plane.center) != plane.offset {
         return Err(CanalError::InvalidArgument(format!(

@@ -778,12 +778,17 @@ pub fn graph_curve(p: &P, t: &(Q, Q)) -> Result<BezierCurve<Q>, QuadricFamilyErr
 /// ([`ConicPointReport`]).
 ///
 /// # Errors
+/// [`QuadricFamilyError::Rank`]`(0)` when `L = M = N = 0` (the zero form, no conic),
 /// [`QuadricFamilyError::Engine`] (undecided), [`QuadricFamilyError::Patch`] (picture).
 pub fn conic_point_report(
     coeffs: [P; 3],
     t: (Q, Q),
     u: (Q, Q),
 ) -> Result<ConicPointReport, QuadricFamilyError> {
+    // L = M = N = 0 is the zero form: every point satisfies it, no conic (rank 0)
+    if coeffs.iter().all(P::is_zero) {
+        return Err(QuadricFamilyError::Rank(0));
+    }
     let decision = conic_point(&coeffs[0], &coeffs[1], &coeffs[2])?;
     let mut certificates = Vec::new();
     let mut patches = Vec::new();
