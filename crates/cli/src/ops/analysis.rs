@@ -54,7 +54,7 @@ const PH_ANALYZE: OpSpec = OpSpec {
         ParamSpec::optional(
             "at",
             ParamKind::Numbers,
-            "parameters t at which to give the Frenet data (point, t, p, b, κ, τ) exactly",
+            "parameters t ∈ [0, 1] at which to give the Frenet data (point, t, p, b, κ, τ) exactly",
         ),
     ],
     example: r#"[[object]]
@@ -436,6 +436,12 @@ fn chapter7_values(c: &rcagd::ph::dph_criteria::SepticDphCriteria) -> Vec<NamedQ
 fn frenet_values(a: &PhAnalysis<Q>, ts: &[Q]) -> Result<Vec<NamedQuantity>, OpError> {
     let mut v = Vec::new();
     for (k, t) in ts.iter().enumerate() {
+        if *t < Q::from(0) || *t > Q::from(1) {
+            return Err(OpError::param(
+                "at",
+                format!("t = {t} is outside the curve's parameter domain [0, 1]"),
+            ));
+        }
         let f = a
             .frenet_at(t)
             .map_err(|e| OpError::param("at", format!("at t = {t}: {e}")))?;
