@@ -77,9 +77,9 @@ pub use envelope::{
     Construction, KrasauskasBound, Method, Orientation, QuadraticCanal,
 };
 pub use exportable::{
-    canal_surface_exportable, degree_certificate, pipe_along_chain, pipe_around_ph_exportable,
-    pipe_around_ph_with, pipe_exportable, positive_weight_certificate, ExportPiece,
-    ExportableCanal, Frame, PipeChain,
+    canal_surface_exportable, check_ph_chain_embedded, degree_certificate, pipe_along_chain,
+    pipe_around_ph_exportable, pipe_around_ph_with, pipe_exportable, positive_weight_certificate,
+    ExportPiece, ExportableCanal, Frame, PipeChain,
 };
 pub use frame::{
     canal_surface_pole_free, pipe_around_ph_pole_free, pole_free_direction, EXPORT_SPLITS,
