@@ -86,6 +86,7 @@ struct Piece {
     wf: Poly<f64>,
     mf: [Poly<f64>; 3],
     pf: [Poly<f64>; 3],
+    pdf: [Poly<f64>; 3],
 }
 
 impl Piece {
@@ -104,6 +105,7 @@ impl Piece {
             wf: to_f(&w),
             mf: core::array::from_fn(|k| to_f(&m[k])),
             pf: core::array::from_fn(|k| to_f(&p[k])),
+            pdf: core::array::from_fn(|k| to_f(&p[k].derivative())),
             w,
             m,
             p,
@@ -138,6 +140,19 @@ impl Piece {
 
     fn tangent_f(&self, t: f64) -> [f64; 3] {
         core::array::from_fn(|k| self.pf[k].eval(&t))
+    }
+
+    /// `κ(t)` in `f64` (`W²|P × P′|/|P|³`).
+    fn kappa_f(&self, t: f64) -> f64 {
+        let (p, q) = (self.tangent_f(t), self.pdf.clone().map(|x| x.eval(&t)));
+        let c = [
+            p[1] * q[2] - p[2] * q[1],
+            p[2] * q[0] - p[0] * q[2],
+            p[0] * q[1] - p[1] * q[0],
+        ];
+        let w = self.wf.eval(&t);
+        let pn = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt();
+        w * w * (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt() / (pn * pn * pn)
     }
 
     /// `(κ² upper bound, arc length upper bound)` on `[c, d]` (`None` if unbounded).
