@@ -354,6 +354,22 @@ impl Check<'_> {
         &mut self,
         parts: &[(usize, Rational, Rational)],
     ) -> Result<bool, CanalError> {
+        // an f64 lower estimate first (κ at three points per part, chord lengths): when it
+        // already reaches 1 the exact upper bounds cannot pass, skip them
+        let mut kest = 0.0f64;
+        let mut lest = Scalar::to_f64(&self.rho2).sqrt();
+        for (k, c, d) in parts {
+            let p = &self.pieces[*k];
+            let (c, d) = (Scalar::to_f64(c), Scalar::to_f64(d));
+            for t in [c, 0.5 * (c + d), d] {
+                kest = kest.max(p.kappa_f(t));
+            }
+            let (x, y) = (p.point_f(c), p.point_f(d));
+            lest += (0..3).map(|i| (x[i] - y[i]).powi(2)).sum::<f64>().sqrt();
+        }
+        if kest * lest >= 1.0 + 1e-9 {
+            return Ok(false);
+        }
         let mut kmax = Rational::ZERO;
         let mut len = sqrt_upper(&self.rho2);
         for (k, c, d) in parts {
@@ -569,6 +585,64 @@ impl Check<'_> {
     /// Searches the box for a double-critical pair closer than `2ρ` (`f64` Newton from the
     /// centre), then proves it exactly ([`Self::witness_at`]).
     fn witness(&self, c: &Cell) -> Option<Witness> {
+        if let Some(w) = self.witness_critical(c) {
+            return Some(w);
+        }
+        if self.closed {
+            return None;
+        }
+        let last = self.pieces.len() - 1;
+        if c.i == 0 && c.t.0 == self.pieces[0].lo {
+            let e = self.pieces[0].lo.clone();
+            if let Some(w) = self.witness_end(0, &e, c.j, &c.s) {
+                return Some(w);
+            }
+        }
+        if c.j == last && c.s.1 == self.pieces[last].hi {
+            let e = self.pieces[last].hi.clone();
+            if let Some(w) = self.witness_end(last, &e, c.i, &c.t) {
+                return Some(w);
+            }
+        }
+        None
+    }
+
+    /// A witness with the end `(k, e)`: the parameter `s ∈ iv` of piece `j` where
+    /// `(m(e) − m(s))·m′(s) = 0` (`f64` Newton from the middle of `iv`), checked exactly.
+    fn witness_end(
+        &self,
+        k: usize,
+        e: &Rational,
+        j: usize,
+        iv: &(Rational, Rational),
+    ) -> Option<Witness> {
+        let (a, b) = (&self.pieces[k], &self.pieces[j]);
+        let me = a.point_f(Scalar::to_f64(e));
+        let h = |s: f64| {
+            let (x, p) = (b.point_f(s), b.tangent_f(s));
+            (0..3).map(|i| (me[i] - x[i]) * p[i]).sum::<f64>()
+        };
+        let (lo, hi) = (Scalar::to_f64(&b.lo), Scalar::to_f64(&b.hi));
+        let mut s = 0.5 * (Scalar::to_f64(&iv.0) + Scalar::to_f64(&iv.1));
+        let step = 1e-7 * (1.0 + hi - lo);
+        for _ in 0..40 {
+            let (v, d) = (h(s), (h(s + step) - h(s)) / step);
+            if !d.is_finite() || d == 0.0 {
+                break;
+            }
+            let next = (s - v / d).clamp(lo, hi);
+            if (next - s).abs() < 1e-16 {
+                break;
+            }
+            s = next;
+        }
+        let sq = Scalar::to_rational(&s)?;
+        self.witness_at(k, e, j, &sq)
+            .or_else(|| self.witness_at(k, e, j, &iv.0))
+            .or_else(|| self.witness_at(k, e, j, &iv.1))
+    }
+
+    fn witness_critical(&self, c: &Cell) -> Option<Witness> {
         let (a, b) = (&self.pieces[c.i], &self.pieces[c.j]);
         let f = |x: &Rational| Scalar::to_f64(x);
         let (t0, t1, s0, s1) = (f(&c.t.0), f(&c.t.1), f(&c.s.0), f(&c.s.1));

@@ -276,7 +276,14 @@ mod props {
                         };
                     prop_assert!(meet, "witness {t}, {u} (r = {rf})");
                 }
-                Err(e) => prop_assert!(false, "undecided: {e}"),
+                // undecided only where the margin is not clear: the box's spine points
+                // within 1 % of 2|r| (found at random: an end disc vs. a disc 0.04 % from
+                // touching distance)
+                Err(CanalError::TubePartsNotApart { distance, diameter, .. }) => {
+                    let (d, dia): (f64, f64) = (distance.parse().expect("d"), diameter.parse().expect("2r"));
+                    prop_assert!((d - dia).abs() <= 0.01 * dia, "undecided with a clear margin: {d} vs 2r = {dia}");
+                }
+                Err(e) => prop_assert!(false, "{e}"),
             }
         }
     }
