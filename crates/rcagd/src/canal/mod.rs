@@ -192,7 +192,7 @@ pub enum CanalError {
     },
     /// The pipe intersects itself: the normal discs of radius `|r|` at two distinct spine
     /// points meet (an exact witness: a point in both discs).
-    #[error("the pipe intersects itself: the normal discs of radius |r| at t ≈ {first} and t ≈ {second} meet (the spine points are {distance} apart, the tube diameter 2|r| is {diameter}); use a radius below half the distance or change the spine")]
+    #[error("the pipe intersects itself: the normal discs of radius |r| at t ≈ {first} and t ≈ {second} meet (the spine points are {distance} apart, the tube diameter 2|r| is {diameter}): use a smaller radius or change the spine")]
     PipeSelfIntersects {
         /// The first spine parameter (rounded; with the piece of a chain).
         first: String,
