@@ -706,7 +706,8 @@ fn pipe_err(e: CanalError, spine_param: &'static str) -> OpError {
     match e {
         CanalError::InvalidArgument(_)
         | CanalError::RadiusNotBelowCurvatureRadius { .. }
-        | CanalError::TubePartsNotApart { .. } => {
+        | CanalError::TubePartsNotApart { .. }
+        | CanalError::PipeSelfIntersects { .. } => {
             OpError::param("radius", e.to_string())
         }
         CanalError::IrrationalSplit { .. }

@@ -254,9 +254,30 @@ proptest! {
             if negative { "negative" } else { "positive" }
         );
         let parsed = Recipe::parse("t.toml", &recipe, None).expect("recipe parses");
-        let objs = build_recipe(&parsed, |_| {}).map_err(|d| {
-            TestCaseError::fail(format!("{recipe}\n{}", d.first().map_or("", |x| x.message.as_str())))
-        })?;
+        let objs = match build_recipe(&parsed, |_| {}) {
+            Ok(o) => o,
+            // below the radius of curvature a pipe can still meet itself globally (found at
+            // random: preimage [[0,1,1,2],[-2,-3,-2,-3],[0,0,-1,0]], r = 18/1024, spine points
+            // at t ≈ 0.065 and 0.323 are 0.0329 apart < 2r): the refusal must say so, with
+            // spine points closer than 2r (or, undecided, within 1 % of it)
+            Err(d) => {
+                let msg = d.first().map_or(String::new(), |x| x.message.clone());
+                let num_after = |key: &str| -> f64 {
+                    msg.split(key).nth(1).and_then(|t| t.split([' ', ')']).next()).and_then(|x| x.parse().ok()).unwrap_or(f64::NAN)
+                };
+                if msg.contains("intersects itself") {
+                    let (dist, dia) = (num_after("points are "), num_after("2|r| is "));
+                    prop_assert!(dist <= dia, "{recipe}\n{msg}");
+                    return Ok(());
+                }
+                if msg.contains("(undecided)") {
+                    let (dist, dia) = (num_after("within ≈ "), num_after("2|r| is "));
+                    prop_assert!((dist - dia).abs() <= 0.01 * dia, "{recipe}\n{msg}");
+                    return Ok(());
+                }
+                return Err(TestCaseError::fail(format!("{recipe}\n{msg}")));
+            }
+        };
         for c in &objs[0].certificates {
             prop_assert!(c.holds && c.exact, "{recipe}\n{c:?}");
         }
@@ -439,4 +460,39 @@ fn pipe_around_an_imported_bspline() {
     let (line, msg) = build_err(&recipe("tolerance = \"1/1000000000000000000000000000\"\n"));
     assert_eq!(line, 6, "{msg}");
     assert!(msg.contains("tolerance"), "{msg}");
+}
+
+/// A pipe whose spine crosses itself (the cubic loop (0,0), (3,3), (−2,3), (1,0), least radius
+/// of curvature ≈ 0.47, crossing near t ≈ 0.07 and 0.93) is refused by the global check with
+/// a named error at the radius (issue 17 item 5), and the binary exits 2.
+#[test]
+fn self_intersecting_pipe_is_refused_at_the_radius() {
+    let text = "[[object]]\nname = \"loop\"\nop = \"pipe\"\npoints = [[0, 0, 0], [3, 3, 0], [-2, 3, 0], [1, 0, 0]]\nradius = \"1/10\"\n";
+    let (line, msg) = build_err(text);
+    assert_eq!(line, 5, "{msg}");
+    assert!(msg.contains("intersects itself"), "{msg}");
+    assert!(
+        msg.contains("t ≈ 0.066987") && msg.contains("t ≈ 0.933013"),
+        "{msg}"
+    );
+    let dir = temp_dir("pipes-selfx");
+    let recipe = dir.join("loop.toml");
+    std::fs::write(&recipe, text).expect("write recipe");
+    let out = bin()
+        .args(["build", "--format", "step", "--out"])
+        .arg(&dir)
+        .arg(&recipe)
+        .output()
+        .expect("run");
+    assert_eq!(out.status.code(), Some(2), "{out:?}");
+    assert!(String::from_utf8_lossy(&out.stderr).contains("intersects itself"));
+    // a thin enough pipe around a spine that does not cross: certified embedded
+    let objs = build(&text.replace("[-2, 3, 0], [1, 0, 0]", "[4, 3, 0], [5, 0, 0]"));
+    let certs = &objs[0].certificates;
+    assert!(
+        certs
+            .iter()
+            .any(|c| c.holds && c.property.contains("no two normal discs")),
+        "{certs:#?}"
+    );
 }

@@ -6,13 +6,17 @@
 //! canal surfaces"); for most imported B-spline spines it is not. Such a spine is replaced by
 //! a `G¹` spline of spatial PH quintics within a certified distance `ε` of it
 //! ([`crate::ph::approximation`]), and the pipe around each quintic is built exactly
-//! ([`pipe_around_ph_exportable`]). The result is the exact pipe of a spine within `ε` of
+//! ([`super::pipe_around_ph_exportable`]; the whole spline checked for self-intersection,
+//! [`super::check_ph_chain_embedded`]). The result is the exact pipe of a spine within `ε` of
 //! the given one: every point of it lies within `ε` of the ideal pipe's point set and
 //! conversely (the tubes are the sets of points at distance `|r|` from their spines, and the
 //! spines are within Hausdorff distance `ε`).
 
+use super::envelope::Method;
 use super::envelope::Orientation;
-use super::exportable::{pipe_along_chain, pipe_around_ph_exportable, ExportableCanal, PipeChain};
+use super::exportable::{
+    check_ph_chain_embedded, pipe_along_chain, pipe_around_ph_checked, ExportableCanal, PipeChain,
+};
 use super::CanalError;
 use crate::ph::approximation::{
     approximate_by_ph_quintics, PhApproximationOptions, PhSplineApproximation,
@@ -196,19 +200,28 @@ pub fn pipe_along_spine(
         .par_iter()
         .enumerate()
         .map(|(k, p)| {
-            pipe_around_ph_exportable(&p.curve, radius, (&zero, &one), orientation).map_err(|e| {
-                CanalError::SpinePiece {
-                    index: k,
-                    source: Box::new(e),
-                }
+            pipe_around_ph_checked(
+                &p.curve,
+                radius,
+                (&zero, &one),
+                orientation,
+                Method::Lowest,
+                false,
+            )
+            .map_err(|e| CanalError::SpinePiece {
+                index: k,
+                source: Box::new(e),
             })
         })
         .collect::<Vec<_>>()
         .into_iter()
         .collect::<Result<Vec<_>, _>>()?;
+    // the global check of the whole PH spline (after the pieces' local regularity)
+    let curves: Vec<_> = spline.pieces().iter().map(|p| &p.curve).collect();
+    let global = check_ph_chain_embedded(&curves, radius)?;
     Ok(SpinePipe::Approximate(ApproximatePipe {
         spline,
-        pipe: PipeChain::from_pieces(pieces, "pipe around PH piece"),
+        pipe: PipeChain::from_pieces(pieces, "pipe around PH piece", global),
         radius: radius.clone(),
     }))
 }

@@ -35,6 +35,7 @@ use super::frame::{
     coordinate_axis, householder, oriented, pole_free_directions, transform_spine, EXPORT_SPLITS,
 };
 use super::regularity::check_pipe_regularity;
+use super::self_intersection::{check_chain_embedded, check_pipe_embedded};
 use super::{CanalError, CanalSpine};
 use crate::error::format_scalar;
 use crate::ph::approximation::{cross_dot, joint_tangents};
@@ -636,11 +637,26 @@ pub fn pipe_exportable(
     domain: (&Rational, &Rational),
     orientation: Orientation,
 ) -> Result<ExportableCanal, CanalError> {
+    pipe_exportable_checked(spine, radius, domain, orientation, true)
+}
+
+/// [`pipe_exportable`], with the global check only if `global` (a chain checks its pieces
+/// together).
+fn pipe_exportable_checked(
+    spine: &BezierCurve<Rational>,
+    radius: &Rational,
+    domain: (&Rational, &Rational),
+    orientation: Orientation,
+    global: bool,
+) -> Result<ExportableCanal, CanalError> {
     check_radius(radius)?;
     let s = CanalSpine::constant_radius(spine, radius)?;
     // a constant spine is a degenerate family before it is a zero tangent
     s.derivative_numerators()?;
-    let regular = check_pipe_regularity(&s, domain)?;
+    let mut regular = vec![check_pipe_regularity(&s, domain)?];
+    if global {
+        regular.push(check_pipe_embedded(&s, domain)?);
+    }
     let split = known_pipe_split(&s)?;
     let options = CanalOptions {
         orientation,
@@ -648,7 +664,7 @@ pub fn pipe_exportable(
         ..CanalOptions::default()
     };
     let mut out = canal_surface_exportable(&s, split.as_ref(), &options)?;
-    out.regularity.push(regular);
+    out.regularity.extend(regular);
     Ok(out)
 }
 
@@ -680,12 +696,28 @@ pub fn pipe_around_ph_with(
     orientation: Orientation,
     method: Method,
 ) -> Result<ExportableCanal, CanalError> {
+    pipe_around_ph_checked(curve, radius, domain, orientation, method, true)
+}
+
+/// [`pipe_around_ph_with`], with the global check only if `global` (the pieces of a PH
+/// spline are checked together, [`check_ph_chain_embedded`]).
+pub(crate) fn pipe_around_ph_checked(
+    curve: &PhCurve<Rational>,
+    radius: &Rational,
+    domain: (&Rational, &Rational),
+    orientation: Orientation,
+    method: Method,
+    global: bool,
+) -> Result<ExportableCanal, CanalError> {
     check_radius(radius)?;
     let position = curve.position();
     let s = CanalSpine::polynomial(position.clone(), Poly::constant(radius.clone()));
     // a constant spine is a degenerate family before it is a zero tangent
     s.derivative_numerators()?;
-    let regular = check_pipe_regularity(&s, domain)?;
+    let mut regular = vec![check_pipe_regularity(&s, domain)?];
+    if global {
+        regular.push(check_pipe_embedded(&s, domain)?);
+    }
     let h: [Poly<Rational>; 3] = core::array::from_fn(|i| position[i].derivative());
     let d = h
         .iter()
@@ -711,8 +743,30 @@ pub fn pipe_around_ph_with(
         ..CanalOptions::default()
     };
     let mut out = canal_surface_exportable(&s, split.as_ref(), &options)?;
-    out.regularity.push(regular);
+    out.regularity.extend(regular);
     Ok(out)
+}
+
+/// The global check ([`check_chain_embedded`]) of the pipe of radius `r` around a chain of
+/// PH curves, each on `t ∈ [0, 1]` (the pieces of a PH spline).
+///
+/// # Errors
+/// As [`check_chain_embedded`].
+pub fn check_ph_chain_embedded(
+    curves: &[&PhCurve<Rational>],
+    radius: &Rational,
+) -> Result<Certificate, CanalError> {
+    check_radius(radius)?;
+    let chain: Vec<_> = curves
+        .iter()
+        .map(|c| {
+            (
+                CanalSpine::polynomial(c.position().clone(), Poly::constant(radius.clone())),
+                (Rational::ZERO, Rational::ONE),
+            )
+        })
+        .collect();
+    check_chain_embedded(&chain)
 }
 
 /// A pipe around a chain of spine curves (for example the Bézier pieces of B-spline curves
@@ -729,10 +783,14 @@ pub struct PipeChain {
 impl PipeChain {
     /// Pieces built elsewhere, without join certificates, called `label` in the
     /// certificates (the pipes around the pieces of a PH spline).
-    pub(crate) fn from_pieces(pieces: Vec<ExportableCanal>, label: &'static str) -> Self {
+    pub(crate) fn from_pieces(
+        pieces: Vec<ExportableCanal>,
+        label: &'static str,
+        global: Certificate,
+    ) -> Self {
         PipeChain {
             pieces,
-            joins: Vec::new(),
+            joins: vec![global],
             label,
         }
     }
@@ -821,11 +879,13 @@ fn join_certificates(
 }
 
 /// The pipe of radius `r` around a chain of spine curves, each on `t ∈ [0, 1]`
-/// ([`pipe_exportable`] per piece), with the `G⁰`/`G¹` certificates of the joints.
+/// ([`pipe_exportable`] per piece), with the `G⁰`/`G¹` certificates of the joints and the
+/// global check of the whole chain ([`check_chain_embedded`]: no two normal discs meet).
 ///
 /// # Errors
 /// [`CanalError::InvalidArgument`] for an empty chain; [`CanalError::SpinePiece`] wrapping
-/// the error of a piece (as [`pipe_exportable`]).
+/// the error of a piece (as [`pipe_exportable`]); [`CanalError::PipeSelfIntersects`] and
+/// [`CanalError::TubePartsNotApart`] of the global check.
 pub fn pipe_along_chain(
     spines: &[BezierCurve<Rational>],
     radius: &Rational,
@@ -841,7 +901,7 @@ pub fn pipe_along_chain(
         .par_iter()
         .enumerate()
         .map(|(k, s)| {
-            pipe_exportable(s, radius, (&zero, &one), orientation).map_err(|e| {
+            pipe_exportable_checked(s, radius, (&zero, &one), orientation, false).map_err(|e| {
                 if spines.len() == 1 {
                     e
                 } else {
@@ -855,11 +915,22 @@ pub fn pipe_along_chain(
         .collect::<Vec<_>>()
         .into_iter()
         .collect::<Result<Vec<_>, _>>()?;
-    let joins = spines
+    let mut joins: Vec<Certificate> = spines
         .windows(2)
         .enumerate()
         .flat_map(|(k, w)| join_certificates(k, &w[0], &w[1]))
         .collect();
+    // after the pieces (whose local regularity the global check assumes)
+    let chain = spines
+        .iter()
+        .map(|c| {
+            Ok((
+                CanalSpine::constant_radius(c, radius)?,
+                (zero.clone(), one.clone()),
+            ))
+        })
+        .collect::<Result<Vec<_>, CanalError>>()?;
+    joins.push(check_chain_embedded(&chain)?);
     Ok(PipeChain {
         pieces,
         joins,

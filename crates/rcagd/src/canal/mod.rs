@@ -61,6 +61,7 @@ pub mod krasauskas;
 pub mod normal_field;
 pub mod pipe;
 pub mod regularity;
+pub mod self_intersection;
 pub mod sum_of_squares;
 
 pub use approximate_pipe::{pipe_along_spine, ApproximatePipe, ApproximationPolicy, SpinePipe};
@@ -76,9 +77,9 @@ pub use envelope::{
     Construction, KrasauskasBound, Method, Orientation, QuadraticCanal,
 };
 pub use exportable::{
-    canal_surface_exportable, degree_certificate, pipe_along_chain, pipe_around_ph_exportable,
-    pipe_around_ph_with, pipe_exportable, positive_weight_certificate, ExportPiece,
-    ExportableCanal, Frame, PipeChain,
+    canal_surface_exportable, check_ph_chain_embedded, degree_certificate, pipe_along_chain,
+    pipe_around_ph_exportable, pipe_around_ph_with, pipe_exportable, positive_weight_certificate,
+    ExportPiece, ExportableCanal, Frame, PipeChain,
 };
 pub use frame::{
     canal_surface_pole_free, pipe_around_ph_pole_free, pole_free_direction, EXPORT_SPLITS,
@@ -86,6 +87,7 @@ pub use frame::{
 pub use normal_field::{canal_surface_from_normal_field, NormalFieldCanal};
 pub use pipe::{pipe_around_ph, pipe_around_ph_poly, pipe_around_planar, pipe_surface};
 pub use regularity::{check_pipe_global, check_pipe_regularity, pipe_regularity_polynomials};
+pub use self_intersection::{check_chain_embedded, check_pipe_embedded};
 pub use sum_of_squares::{
     sum_of_two_squares, sum_of_two_squares_approx, sum_of_two_squares_f64, GaussianSplit,
     SumOfSquares,
@@ -175,14 +177,28 @@ pub enum CanalError {
         /// `1/κ` there, rounded.
         curvature_radius: String,
     },
-    /// Two parts of a pipe could not be shown apart by the exact subdivision bounds.
-    #[error("the pipe parts over t in {first} and t in {second} may meet: their spine pieces come within ≈ {distance} of each other (the tube diameter 2|r| is {diameter}), and the exact subdivision bounds cannot separate them")]
+    /// Two parts of a pipe could not be shown apart by the exact subdivision bounds
+    /// (undecided: no witness of a meeting was found either).
+    #[error("the pipe parts over t in {first} and t in {second} may meet: their spine pieces come within ≈ {distance} of each other (the tube diameter 2|r| is {diameter}), and the exact subdivision bounds cannot separate them (undecided)")]
     TubePartsNotApart {
         /// The first parameter interval.
         first: String,
         /// The second parameter interval.
         second: String,
         /// The sampled distance of the two spine pieces.
+        distance: String,
+        /// `2|r|`.
+        diameter: String,
+    },
+    /// The pipe intersects itself: the normal discs of radius `|r|` at two distinct spine
+    /// points meet (an exact witness: a point in both discs).
+    #[error("the pipe intersects itself: the normal discs of radius |r| at t ≈ {first} and t ≈ {second} meet (the spine points are {distance} apart, the tube diameter 2|r| is {diameter}): use a smaller radius or change the spine")]
+    PipeSelfIntersects {
+        /// The first spine parameter (rounded; with the piece of a chain).
+        first: String,
+        /// The second spine parameter.
+        second: String,
+        /// `|m(t) − m(s)|`, rounded.
         distance: String,
         /// `2|r|`.
         diameter: String,

@@ -16,6 +16,7 @@ mod ph_approximation;
 mod ph_planar;
 mod ph_preimage;
 mod ph_props;
+mod pipe_self_intersection;
 mod pn_laguerre;
 mod pn_motion;
 mod pn_props;

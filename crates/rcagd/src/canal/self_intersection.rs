@@ -1,0 +1,1047 @@
+//! Certified global regularity of pipes: no two normal discs of radius `|r|` of distinct
+//! spine points meet (the pipe has no self-intersection), decided exactly by subdivision
+//! (`docs/math/pipes.md#global`).
+//!
+//! With `ρ = |r|` and `r·κ < 1` certified ([`super::check_pipe_regularity`]), the discs of
+//! two spine points meet only if (Lemma A of the docs, the `φ′ < 0` argument) the stretch
+//! of spine between them has `κ_max(ρ + L) ≥ 1`, and then (R. A. Litherland, J. Simon,
+//! O. Durumeric, E. Rawdon, "Thickness of knots", Topology Appl. 91 (1999) 233–244: the
+//! normal injectivity radius of a `C²` curve is `min(min 1/κ, dcsd/2)`) only through a
+//! *double-critical* pair `(m(t) − m(s)) ⟂ m′(t), m′(s)` at distance `≤ 2ρ`, or through an
+//! end disc of an open spine. Boxes `I × J` of parameter pairs are settled by exact
+//! Bernstein bounds of the bivariate polynomials
+//!
+//! ```text
+//! D = M(t)W(s) − M(s)W(t),  g₁ = D·P(t),  g₂ = D·P(s),  N = |D|² − 4ρ²W(t)²W(s)²
+//! ```
+//!
+//! (`N > 0`: farther than `2ρ`; `g₁` or `g₂` of one strict sign: no double-critical pair),
+//! by the close-along-the-spine bound, and at the ends of an open spine by the end tests;
+//! unsettled boxes are quartered. A refusal carries an exact witness (a point in both
+//! discs) when one is found ([`CanalError::PipeSelfIntersects`]), else names the box
+//! ([`CanalError::TubePartsNotApart`], undecided).
+
+use super::bipoly::BiPoly;
+use super::regularity::{pipe_regularity_polynomials, sqrt_upper};
+use super::{CanalError, CanalSpine};
+use crate::error::format_scalar;
+use rcagd_algebra::bernstein::to_bernstein;
+use rcagd_algebra::roots::rational_roots;
+use rcagd_algebra::{Certificate, Poly, Rational, Scalar};
+use std::collections::{HashMap, VecDeque};
+
+type P = Poly<Rational>;
+
+/// The most halvings of a parameter interval in the global check.
+pub const SELF_INTERSECTION_DEPTH: u32 = 14;
+
+/// The most boxes of parameter pairs the global check examines.
+pub const SELF_INTERSECTION_BOXES: usize = 40_000;
+
+fn dot(a: &[P; 3], b: &[P; 3]) -> P {
+    &(&(&a[0] * &b[0]) + &(&a[1] * &b[1])) + &(&a[2] * &b[2])
+}
+
+fn cross(a: &[P; 3], b: &[P; 3]) -> [P; 3] {
+    [
+        &(&a[1] * &b[2]) - &(&a[2] * &b[1]),
+        &(&a[2] * &b[0]) - &(&a[0] * &b[2]),
+        &(&a[0] * &b[1]) - &(&a[1] * &b[0]),
+    ]
+}
+
+fn dot_q(a: &[Rational; 3], b: &[Rational; 3]) -> Rational {
+    a[0].clone() * b[0].clone() + a[1].clone() * b[1].clone() + a[2].clone() * b[2].clone()
+}
+
+fn cross_q(a: &[Rational; 3], b: &[Rational; 3]) -> [Rational; 3] {
+    [
+        a[1].clone() * b[2].clone() - a[2].clone() * b[1].clone(),
+        a[2].clone() * b[0].clone() - a[0].clone() * b[2].clone(),
+        a[0].clone() * b[1].clone() - a[1].clone() * b[0].clone(),
+    ]
+}
+
+fn sub_q(a: &[Rational; 3], b: &[Rational; 3]) -> [Rational; 3] {
+    core::array::from_fn(|k| a[k].clone() - b[k].clone())
+}
+
+fn half() -> Rational {
+    Rational::from_ratio(1, 2)
+}
+
+/// One spine piece on its domain, with the polynomials of the check.
+struct Piece {
+    w: P,
+    m: [P; 3],
+    /// `P = W M′ − W′ M` (`m′ = P/W²`).
+    p: [P; 3],
+    lo: Rational,
+    hi: Rational,
+    /// `W⁴|P × P′|²` (`κ² = this/|P|⁶`).
+    k2: P,
+    p6: P,
+    pp: P,
+    w4: P,
+    wf: Poly<f64>,
+    mf: [Poly<f64>; 3],
+    pf: [Poly<f64>; 3],
+    pdf: [Poly<f64>; 3],
+}
+
+impl Piece {
+    fn new(spine: &CanalSpine<Rational>, lo: &Rational, hi: &Rational) -> Result<Self, CanalError> {
+        let (pp, f, r) = pipe_regularity_polynomials(spine)?;
+        let w = spine.weight().clone();
+        let m = spine.center_polys().clone();
+        let wd = w.derivative();
+        let p: [P; 3] = core::array::from_fn(|i| &(&w * &m[i].derivative()) - &(&wd * &m[i]));
+        let p6 = &(&pp * &pp) * &pp;
+        let k2 = (&p6 - &f).scale(&(Rational::ONE / (r.clone() * r)));
+        let w2 = &w * &w;
+        let w4 = &w2 * &w2;
+        let to_f = |q: &P| q.map(Scalar::to_f64);
+        Ok(Piece {
+            wf: to_f(&w),
+            mf: core::array::from_fn(|k| to_f(&m[k])),
+            pf: core::array::from_fn(|k| to_f(&p[k])),
+            pdf: core::array::from_fn(|k| to_f(&p[k].derivative())),
+            w,
+            m,
+            p,
+            lo: lo.clone(),
+            hi: hi.clone(),
+            k2,
+            p6,
+            pp,
+            w4,
+        })
+    }
+
+    fn point(&self, t: &Rational) -> Result<[Rational; 3], CanalError> {
+        let w = self.w.eval(t);
+        if w.is_zero() {
+            return Err(CanalError::DegenerateSpine(format!(
+                "the spine weight vanishes at t = {}",
+                format_scalar(t)
+            )));
+        }
+        Ok(core::array::from_fn(|k| self.m[k].eval(t) / w.clone()))
+    }
+
+    fn tangent(&self, t: &Rational) -> [Rational; 3] {
+        core::array::from_fn(|k| self.p[k].eval(t))
+    }
+
+    fn point_f(&self, t: f64) -> [f64; 3] {
+        let w = self.wf.eval(&t);
+        core::array::from_fn(|k| self.mf[k].eval(&t) / w)
+    }
+
+    fn tangent_f(&self, t: f64) -> [f64; 3] {
+        core::array::from_fn(|k| self.pf[k].eval(&t))
+    }
+
+    /// `κ(t)` in `f64` (`W²|P × P′|/|P|³`).
+    fn kappa_f(&self, t: f64) -> f64 {
+        let (p, q) = (self.tangent_f(t), self.pdf.clone().map(|x| x.eval(&t)));
+        let c = [
+            p[1] * q[2] - p[2] * q[1],
+            p[2] * q[0] - p[0] * q[2],
+            p[0] * q[1] - p[1] * q[0],
+        ];
+        let w = self.wf.eval(&t);
+        let pn = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt();
+        w * w * (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt() / (pn * pn * pn)
+    }
+
+    /// `(κ² upper bound, arc length upper bound)` on `[c, d]` (`None` if unbounded).
+    fn stretch(
+        &self,
+        c: &Rational,
+        d: &Rational,
+    ) -> Result<Option<(Rational, Rational)>, CanalError> {
+        if c >= d {
+            return Ok(Some((Rational::ZERO, Rational::ZERO)));
+        }
+        let (qlo, _) = bernstein_range(&self.p6, c, d)?;
+        let (_, khi) = bernstein_range(&self.k2, c, d)?;
+        let (wlo, _) = bernstein_range(&self.w4, c, d)?;
+        let (_, phi) = bernstein_range(&self.pp, c, d)?;
+        if qlo <= Rational::ZERO || wlo <= Rational::ZERO {
+            return Ok(None);
+        }
+        let h = d.clone() - c.clone();
+        Ok(Some((khi / qlo, sqrt_upper(&(h.clone() * h * phi / wlo)))))
+    }
+}
+
+/// `(min, max)` of the Bernstein coefficients of `p` on `[c, d]` (bounds of `p` there).
+fn bernstein_range(p: &P, c: &Rational, d: &Rational) -> Result<(Rational, Rational), CanalError> {
+    let q = p.compose(&Poly::new(vec![c.clone(), d.clone() - c.clone()]));
+    let n = q.degree().unwrap_or(0);
+    let b = to_bernstein(&q, n)?;
+    let mut it = b.into_iter();
+    let first = it.next().unwrap_or(Rational::ZERO);
+    Ok(it.fold((first.clone(), first), |(lo, hi), x| {
+        let lo = if x < lo { x.clone() } else { lo };
+        let hi = if x > hi { x } else { hi };
+        (lo, hi)
+    }))
+}
+
+/// Tensor-product Bernstein coefficients (`(m + 1) × (n + 1)`, row-major in `t`) of a
+/// bivariate polynomial on a box.
+#[derive(Clone)]
+struct Tensor {
+    m: usize,
+    n: usize,
+    c: Vec<Rational>,
+}
+
+/// de Casteljau at `1/2` of `b`: the coefficients of the two halves.
+fn split_row(b: &[Rational]) -> (Vec<Rational>, Vec<Rational>) {
+    let k = b.len();
+    let mut work = b.to_vec();
+    let mut left = Vec::with_capacity(k);
+    let mut right = Vec::with_capacity(k);
+    for level in 0..k {
+        left.push(work[0].clone());
+        right.push(work[k - 1 - level].clone());
+        for i in 0..k - 1 - level {
+            work[i] = (work[i].clone() + work[i + 1].clone()) * half();
+        }
+    }
+    right.reverse();
+    (left, right)
+}
+
+impl Tensor {
+    fn of(
+        p: &BiPoly<Rational>,
+        t: (&Rational, &Rational),
+        s: (&Rational, &Rational),
+    ) -> Result<Self, CanalError> {
+        let m = p.degree_t().unwrap_or(0);
+        let n = p.degree_u().unwrap_or(0);
+        let c = if p.is_zero() {
+            vec![Rational::ZERO]
+        } else {
+            p.bernstein_on(t, s, m, n)?
+        };
+        Ok(Tensor { m, n, c })
+    }
+
+    /// The halves in `t`.
+    fn split_t(&self) -> (Tensor, Tensor) {
+        let (m, n) = (self.m, self.n);
+        let mut a = vec![Rational::ZERO; self.c.len()];
+        let mut b = a.clone();
+        for j in 0..=n {
+            let col: Vec<Rational> = (0..=m).map(|i| self.c[i * (n + 1) + j].clone()).collect();
+            let (l, r) = split_row(&col);
+            for i in 0..=m {
+                a[i * (n + 1) + j] = l[i].clone();
+                b[i * (n + 1) + j] = r[i].clone();
+            }
+        }
+        (Tensor { m, n, c: a }, Tensor { m, n, c: b })
+    }
+
+    /// The halves in `s`.
+    fn split_s(&self) -> (Tensor, Tensor) {
+        let (m, n) = (self.m, self.n);
+        let mut a = Vec::with_capacity(self.c.len());
+        let mut b = Vec::with_capacity(self.c.len());
+        for i in 0..=m {
+            let (l, r) = split_row(&self.c[i * (n + 1)..(i + 1) * (n + 1)]);
+            a.extend(l);
+            b.extend(r);
+        }
+        (Tensor { m, n, c: a }, Tensor { m, n, c: b })
+    }
+
+    /// `true` if every coefficient is `> 0` or every one is `< 0`.
+    fn strict_sign(&self) -> bool {
+        self.c.iter().all(|x| *x > Rational::ZERO) || self.c.iter().all(|x| *x < Rational::ZERO)
+    }
+
+    fn min(&self) -> Rational {
+        self.c
+            .iter()
+            .fold(None, |m: Option<&Rational>, x| match m {
+                Some(m) if m <= x => Some(m),
+                _ => Some(x),
+            })
+            .cloned()
+            .unwrap_or(Rational::ZERO)
+    }
+}
+
+/// `[g₁, g₂, N]` of a pair of pieces on a box.
+type Tensors = [Tensor; 3];
+
+fn quarter(t: &Tensors) -> [Tensors; 4] {
+    let parts: Vec<[Tensor; 4]> = t
+        .iter()
+        .map(|x| {
+            let (l, r) = x.split_t();
+            let (ll, lr) = l.split_s();
+            let (rl, rr) = r.split_s();
+            [ll, lr, rl, rr]
+        })
+        .collect();
+    // order: (t₁, s₁), (t₁, s₂), (t₂, s₁), (t₂, s₂)
+    core::array::from_fn(|q| core::array::from_fn(|k| parts[k][q].clone()))
+}
+
+/// A box `I × J` of parameter pairs, `t ∈ I` on piece `i`, `s ∈ J` on piece `j`, with
+/// `(i, I) ≤ (j, J)` (`diag`: `i = j`, `I = J`).
+struct Cell {
+    i: usize,
+    j: usize,
+    t: (Rational, Rational),
+    s: (Rational, Rational),
+    depth: u32,
+    diag: bool,
+    tensors: Option<Tensors>,
+}
+
+/// How the box was settled (for the certificate).
+#[derive(Default)]
+struct Tally {
+    boxes: usize,
+    near: usize,
+    far: usize,
+    critical: usize,
+    ends: usize,
+    /// The least `δ²` with `|m(t) − m(s)|² ≥ δ²` on boxes settled by distance.
+    min_dist_sq: Option<Rational>,
+}
+
+/// A witness: the discs at `(i, t)` and `(j, s)` meet.
+struct Witness {
+    i: usize,
+    t: Rational,
+    j: usize,
+    s: Rational,
+    distance: f64,
+}
+
+struct Check<'a> {
+    pieces: &'a [Piece],
+    rho2: Rational,
+    closed: bool,
+    /// `g1[k]`: the joint after piece `k` is `G¹` (the last one: the seam of a closed spine).
+    g1: Vec<bool>,
+    whole: HashMap<usize, Option<(Rational, Rational)>>,
+    ends: HashMap<(bool, usize), [P; 3]>,
+}
+
+impl Check<'_> {
+    fn whole_piece(&mut self, k: usize) -> Result<Option<(Rational, Rational)>, CanalError> {
+        if let Some(v) = self.whole.get(&k) {
+            return Ok(v.clone());
+        }
+        let p = &self.pieces[k];
+        let v = p.stretch(&p.lo, &p.hi)?;
+        self.whole.insert(k, v.clone());
+        Ok(v)
+    }
+
+    /// `κ_max²(ρ + L)² < 1` over the parts `(piece, from, to)`.
+    fn stretch_is_near(
+        &mut self,
+        parts: &[(usize, Rational, Rational)],
+    ) -> Result<bool, CanalError> {
+        // an f64 lower estimate first (κ at three points per part, chord lengths): when it
+        // already reaches 1 the exact upper bounds cannot pass, skip them
+        let mut kest = 0.0f64;
+        let mut lest = Scalar::to_f64(&self.rho2).sqrt();
+        for (k, c, d) in parts {
+            let p = &self.pieces[*k];
+            let (c, d) = (Scalar::to_f64(c), Scalar::to_f64(d));
+            for t in [c, 0.5 * (c + d), d] {
+                kest = kest.max(p.kappa_f(t));
+            }
+            let (x, y) = (p.point_f(c), p.point_f(d));
+            lest += (0..3).map(|i| (x[i] - y[i]).powi(2)).sum::<f64>().sqrt();
+        }
+        if kest * lest >= 1.0 + 1e-9 {
+            return Ok(false);
+        }
+        let mut kmax = Rational::ZERO;
+        let mut len = sqrt_upper(&self.rho2);
+        for (k, c, d) in parts {
+            let p = &self.pieces[*k];
+            let b = if *c == p.lo && *d == p.hi {
+                self.whole_piece(*k)?
+            } else {
+                p.stretch(c, d)?
+            };
+            let Some((k2, l)) = b else {
+                return Ok(false);
+            };
+            if k2 > kmax {
+                kmax = k2;
+            }
+            len += l;
+        }
+        Ok(kmax * len.clone() * len < Rational::ONE)
+    }
+
+    /// Lemma A on the box: forward from `min I` to `max J`, or (closed) through the seam.
+    fn near(&mut self, c: &Cell) -> Result<bool, CanalError> {
+        let n = self.pieces.len();
+        let (i, j) = (c.i, c.j);
+        if (i..j).all(|k| self.g1[k]) {
+            let parts: Vec<(usize, Rational, Rational)> = if i == j {
+                vec![(i, c.t.0.clone(), c.s.1.clone())]
+            } else {
+                let mut v = vec![(i, c.t.0.clone(), self.pieces[i].hi.clone())];
+                for k in i + 1..j {
+                    v.push((k, self.pieces[k].lo.clone(), self.pieces[k].hi.clone()));
+                }
+                v.push((j, self.pieces[j].lo.clone(), c.s.1.clone()));
+                v
+            };
+            if self.stretch_is_near(&parts)? {
+                return Ok(true);
+            }
+        }
+        if self.closed && (j..n).chain(0..i).all(|k| self.g1[k]) {
+            // from min J to the seam, then to max I
+            let mut v = vec![(j, c.s.0.clone(), self.pieces[j].hi.clone())];
+            for k in j + 1..n {
+                v.push((k, self.pieces[k].lo.clone(), self.pieces[k].hi.clone()));
+            }
+            for k in 0..i {
+                v.push((k, self.pieces[k].lo.clone(), self.pieces[k].hi.clone()));
+            }
+            v.push((i, self.pieces[i].lo.clone(), c.t.1.clone()));
+            if self.stretch_is_near(&v)? {
+                return Ok(true);
+            }
+        }
+        Ok(false)
+    }
+
+    fn tensors(&self, c: &Cell) -> Result<Tensors, CanalError> {
+        let (a, b) = (&self.pieces[c.i], &self.pieces[c.j]);
+        let d: [BiPoly<Rational>; 3] = core::array::from_fn(|k| {
+            BiPoly::from_t(a.m[k].clone())
+                .mul(&BiPoly::from_u(&b.w))
+                .sub(&BiPoly::from_u(&b.m[k]).mul_t(&a.w))
+        });
+        let mut g1 = BiPoly::zero();
+        let mut g2 = BiPoly::zero();
+        let mut dd = BiPoly::zero();
+        for ((dk, pa), pb) in d.iter().zip(&a.p).zip(&b.p) {
+            g1 = g1.add(&dk.mul_t(pa));
+            g2 = g2.add(&dk.mul(&BiPoly::from_u(pb)));
+            dd = dd.add(&dk.mul(dk));
+        }
+        let ww = BiPoly::from_u(&(&b.w * &b.w)).mul_t(&(&a.w * &a.w));
+        let n = dd.sub(&ww.scale(&(self.rho2.clone() * Rational::from(4))));
+        let (t, s) = ((&c.t.0, &c.t.1), (&c.s.0, &c.s.1));
+        Ok([
+            Tensor::of(&g1, t, s)?,
+            Tensor::of(&g2, t, s)?,
+            Tensor::of(&n, t, s)?,
+        ])
+    }
+
+    /// The end polynomials in `s` (piece `j`) for the end `(start?)` of the spine:
+    /// `[|D|² − 4ρ²W²W², |P_e|²(D·P(s))² − ρ²W²W²|P_e × P(s)|², |P(s)|²(D·P_e)² − …]`.
+    fn end_polys(&mut self, start: bool, j: usize) -> Result<[P; 3], CanalError> {
+        if let Some(v) = self.ends.get(&(start, j)) {
+            return Ok(v.clone());
+        }
+        let (ek, et) = if start {
+            (0, self.pieces[0].lo.clone())
+        } else {
+            let k = self.pieces.len() - 1;
+            (k, self.pieces[k].hi.clone())
+        };
+        let e = &self.pieces[ek];
+        let b = &self.pieces[j];
+        let we = e.w.eval(&et);
+        let me: [Rational; 3] = core::array::from_fn(|k| e.m[k].eval(&et));
+        let pe: [P; 3] = core::array::from_fn(|k| Poly::constant(e.p[k].eval(&et)));
+        let d: [P; 3] = core::array::from_fn(|k| &b.w.scale(&me[k]) - &b.m[k].scale(&we));
+        let ww = (&b.w * &b.w).scale(&(we.clone() * we));
+        let pe2 = dot(&pe, &pe);
+        let cr = cross(&pe, &b.p);
+        let cr2 = dot(&cr, &cr);
+        let dps = dot(&d, &b.p);
+        let dpe = dot(&d, &pe);
+        let far = &dot(&d, &d) - &ww.scale(&(self.rho2.clone() * Rational::from(4)));
+        let rw = (&ww * &cr2).scale(&self.rho2);
+        let miss_s = &(&pe2 * &(&dps * &dps)) - &rw;
+        let miss_e = &(&dot(&b.p, &b.p) * &(&dpe * &dpe)) - &rw;
+        let v = [far, miss_s, miss_e];
+        self.ends.insert((start, j), v.clone());
+        Ok(v)
+    }
+
+    /// The end discs meet no disc over `J` (piece `j`): one end test holds on `J`.
+    fn end_ok(
+        &mut self,
+        start: bool,
+        j: usize,
+        iv: &(Rational, Rational),
+    ) -> Result<bool, CanalError> {
+        let polys = self.end_polys(start, j)?;
+        for p in &polys {
+            if p.is_zero() {
+                continue;
+            }
+            let (lo, _) = bernstein_range(p, &iv.0, &iv.1)?;
+            if lo > Rational::ZERO {
+                return Ok(true);
+            }
+        }
+        Ok(false)
+    }
+
+    /// The end tests a box settled away from the diagonal still needs.
+    fn ends_ok(&mut self, c: &Cell) -> Result<bool, CanalError> {
+        if self.closed {
+            return Ok(true);
+        }
+        let last = self.pieces.len() - 1;
+        if c.i == 0 && c.t.0 == self.pieces[0].lo && !self.end_ok(true, c.j, &c.s)? {
+            return Ok(false);
+        }
+        if c.j == last && c.s.1 == self.pieces[last].hi && !self.end_ok(false, c.i, &c.t)? {
+            return Ok(false);
+        }
+        Ok(true)
+    }
+
+    /// Global parameter of `(piece, t)` (for distinctness of a witness pair).
+    fn global(&self, k: usize, t: &Rational) -> Rational {
+        let p = &self.pieces[k];
+        let g =
+            Rational::from(k as i64) + (t.clone() - p.lo.clone()) / (p.hi.clone() - p.lo.clone());
+        let n = Rational::from(self.pieces.len() as i64);
+        if self.closed && g == n {
+            Rational::ZERO
+        } else {
+            g
+        }
+    }
+
+    /// An exact witness that the discs at `(i, t)` and `(j, s)` meet.
+    fn witness_at(&self, i: usize, t: &Rational, j: usize, s: &Rational) -> Option<Witness> {
+        if self.global(i, t) == self.global(j, s) {
+            return None;
+        }
+        let (a, b) = (&self.pieces[i], &self.pieces[j]);
+        let mt = a.point(t).ok()?;
+        let ms = b.point(s).ok()?;
+        let pt = a.tangent(t);
+        let ps = b.tangent(s);
+        let c: [Rational; 3] = core::array::from_fn(|k| (mt[k].clone() + ms[k].clone()) * half());
+        let on = |x: &[Rational; 3]| {
+            dot_q(&sub_q(x, &mt), &pt).is_zero() && dot_q(&sub_q(x, &ms), &ps).is_zero()
+        };
+        let x = if on(&c) {
+            c
+        } else {
+            let cr = cross_q(&pt, &ps);
+            if dot_q(&cr, &cr).is_zero() {
+                return None;
+            }
+            // x = c + α P(t) + β P(s) on both planes
+            let (a11, a12, a22) = (dot_q(&pt, &pt), dot_q(&pt, &ps), dot_q(&ps, &ps));
+            let r1 = dot_q(&sub_q(&mt, &c), &pt);
+            let r2 = dot_q(&sub_q(&ms, &c), &ps);
+            let det = a11.clone() * a22.clone() - a12.clone() * a12.clone();
+            let alpha = (r1.clone() * a22 - r2.clone() * a12.clone()) / det.clone();
+            let beta = (a11 * r2 - a12 * r1) / det;
+            let x: [Rational; 3] = core::array::from_fn(|k| {
+                c[k].clone() + alpha.clone() * pt[k].clone() + beta.clone() * ps[k].clone()
+            });
+            if !on(&x) {
+                return None;
+            }
+            x
+        };
+        let (u, v) = (sub_q(&x, &mt), sub_q(&x, &ms));
+        if dot_q(&u, &u) > self.rho2 || dot_q(&v, &v) > self.rho2 {
+            return None;
+        }
+        let d = sub_q(&mt, &ms);
+        Some(Witness {
+            i,
+            t: t.clone(),
+            j,
+            s: s.clone(),
+            distance: Scalar::to_f64(&dot_q(&d, &d)).sqrt(),
+        })
+    }
+
+    /// Searches the box for a double-critical pair closer than `2ρ` (`f64` Newton from the
+    /// centre), then proves it exactly ([`Self::witness_at`]).
+    fn witness(&self, c: &Cell) -> Option<Witness> {
+        if let Some(w) = self.witness_critical(c) {
+            return Some(w);
+        }
+        if self.closed {
+            return None;
+        }
+        let last = self.pieces.len() - 1;
+        if c.i == 0 && c.t.0 == self.pieces[0].lo {
+            let e = self.pieces[0].lo.clone();
+            if let Some(w) = self.witness_end(0, &e, c.j, &c.s) {
+                return Some(w);
+            }
+        }
+        if c.j == last && c.s.1 == self.pieces[last].hi {
+            let e = self.pieces[last].hi.clone();
+            if let Some(w) = self.witness_end(last, &e, c.i, &c.t) {
+                return Some(w);
+            }
+        }
+        None
+    }
+
+    /// A witness with the end `(k, e)`: the parameter `s ∈ iv` of piece `j` where
+    /// `(m(e) − m(s))·m′(s) = 0` (`f64` Newton from the middle of `iv`), checked exactly.
+    fn witness_end(
+        &self,
+        k: usize,
+        e: &Rational,
+        j: usize,
+        iv: &(Rational, Rational),
+    ) -> Option<Witness> {
+        let (a, b) = (&self.pieces[k], &self.pieces[j]);
+        let me = a.point_f(Scalar::to_f64(e));
+        let h = |s: f64| {
+            let (x, p) = (b.point_f(s), b.tangent_f(s));
+            (0..3).map(|i| (me[i] - x[i]) * p[i]).sum::<f64>()
+        };
+        let (lo, hi) = (Scalar::to_f64(&b.lo), Scalar::to_f64(&b.hi));
+        let mut s = 0.5 * (Scalar::to_f64(&iv.0) + Scalar::to_f64(&iv.1));
+        let step = 1e-7 * (1.0 + hi - lo);
+        for _ in 0..40 {
+            let (v, d) = (h(s), (h(s + step) - h(s)) / step);
+            if !d.is_finite() || d == 0.0 {
+                break;
+            }
+            let next = (s - v / d).clamp(lo, hi);
+            if (next - s).abs() < 1e-16 {
+                break;
+            }
+            s = next;
+        }
+        let sq = Scalar::to_rational(&s)?;
+        self.witness_at(k, e, j, &sq)
+            .or_else(|| self.witness_at(k, e, j, &iv.0))
+            .or_else(|| self.witness_at(k, e, j, &iv.1))
+    }
+
+    fn witness_critical(&self, c: &Cell) -> Option<Witness> {
+        let (a, b) = (&self.pieces[c.i], &self.pieces[c.j]);
+        let f = |x: &Rational| Scalar::to_f64(x);
+        let (t0, t1, s0, s1) = (f(&c.t.0), f(&c.t.1), f(&c.s.0), f(&c.s.1));
+        let (tlo, thi, slo, shi) = (f(&a.lo), f(&a.hi), f(&b.lo), f(&b.hi));
+        let mut t = 0.5 * (t0 + t1);
+        let mut s = 0.5 * (s0 + s1);
+        let d3 = |x: [f64; 3], y: [f64; 3]| x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+        let g = |t: f64, s: f64| {
+            let d: [f64; 3] = {
+                let (x, y) = (a.point_f(t), b.point_f(s));
+                core::array::from_fn(|k| x[k] - y[k])
+            };
+            (d3(d, a.tangent_f(t)), d3(d, b.tangent_f(s)))
+        };
+        let hstep = 1e-7 * (1.0 + thi - tlo).max(1.0 + shi - slo);
+        for _ in 0..40 {
+            let (g1, g2) = g(t, s);
+            let (a1, b1) = g(t + hstep, s);
+            let (a2, b2) = g(t, s + hstep);
+            let j11 = (a1 - g1) / hstep;
+            let j21 = (b1 - g2) / hstep;
+            let j12 = (a2 - g1) / hstep;
+            let j22 = (b2 - g2) / hstep;
+            // Levenberg–Marquardt step (the double-critical set may be a curve)
+            let lam = 1e-12 * (j11 * j11 + j12 * j12 + j21 * j21 + j22 * j22) + 1e-300;
+            let (h11, h12, h22) = (
+                j11 * j11 + j21 * j21 + lam,
+                j11 * j12 + j21 * j22,
+                j12 * j12 + j22 * j22 + lam,
+            );
+            let (r1, r2) = (j11 * g1 + j21 * g2, j12 * g1 + j22 * g2);
+            let det = h11 * h22 - h12 * h12;
+            if !det.is_finite() || det == 0.0 {
+                break;
+            }
+            let dt = (h22 * r1 - h12 * r2) / det;
+            let ds = (h11 * r2 - h12 * r1) / det;
+            t = (t - dt).clamp(tlo, thi);
+            s = (s - ds).clamp(slo, shi);
+            if dt.abs() + ds.abs() < 1e-15 {
+                break;
+            }
+        }
+        if !(t.is_finite() && s.is_finite()) {
+            return None;
+        }
+        // stay near the box (Newton may run to the trivial pairs t = s of the diagonal)
+        let (wt, ws) = (t1 - t0, s1 - s0);
+        if t < t0 - wt || t > t1 + wt || s < s0 - ws || s > s1 + ws {
+            return None;
+        }
+        if c.i == c.j && (t - s).abs() <= 1e-9 * (1.0 + thi - tlo) {
+            return None;
+        }
+        let (x, y) = (a.point_f(t), b.point_f(s));
+        let dist2: f64 = (0..3).map(|k| (x[k] - y[k]).powi(2)).sum();
+        if dist2 > 4.0 * f(&self.rho2) * (1.0 + 1e-6) {
+            return None;
+        }
+        let (ta, tb) = (a.tangent_f(t), b.tangent_f(s));
+        let cr = [
+            ta[1] * tb[2] - ta[2] * tb[1],
+            ta[2] * tb[0] - ta[0] * tb[2],
+            ta[0] * tb[1] - ta[1] * tb[0],
+        ];
+        let nearly_parallel = d3(cr, cr) <= 1e-12 * d3(ta, ta) * d3(tb, tb);
+        let tq = Scalar::to_rational(&t)?;
+        let sq = Scalar::to_rational(&s)?;
+        if let Some(w) = self.witness_at(c.i, &tq, c.j, &sq) {
+            return Some(w);
+        }
+        if !nearly_parallel {
+            return None;
+        }
+        // snap one parameter to an exact critical point of the other (parallel tangents)
+        let snap = |p: &P, lo: &Rational, hi: &Rational, near: f64| {
+            rational_roots(p)
+                .into_iter()
+                .filter(|x| x >= lo && x <= hi)
+                .min_by(|x, y| {
+                    (f(x) - near)
+                        .abs()
+                        .partial_cmp(&(f(y) - near).abs())
+                        .unwrap_or(core::cmp::Ordering::Equal)
+                })
+        };
+        let mt = a.point(&tq).ok()?;
+        let pt = a.tangent(&tq);
+        // (m(t) − m(s))·P(t) = 0 in s: (M(s) − m(t) W(s))·P(t)
+        let in_s: P = (0..3).fold(Poly::zero(), |acc, k| {
+            &acc + &(&b.m[k] - &b.w.scale(&mt[k])).scale(&pt[k])
+        });
+        if let Some(s2) = snap(&in_s, &b.lo, &b.hi, s) {
+            if let Some(w) = self.witness_at(c.i, &tq, c.j, &s2) {
+                return Some(w);
+            }
+        }
+        let ms = b.point(&sq).ok()?;
+        let ps = b.tangent(&sq);
+        let in_t: P = (0..3).fold(Poly::zero(), |acc, k| {
+            &acc + &(&a.m[k] - &a.w.scale(&ms[k])).scale(&ps[k])
+        });
+        if let Some(t2) = snap(&in_t, &a.lo, &a.hi, t) {
+            if let Some(w) = self.witness_at(c.i, &t2, c.j, &sq) {
+                return Some(w);
+            }
+        }
+        None
+    }
+}
+
+/// How a chain of spine pieces is joined.
+fn joints(pieces: &[Piece]) -> Result<(Vec<bool>, bool), CanalError> {
+    let n = pieces.len();
+    let g1_at = |a: &Piece, b: &Piece| -> Result<(bool, bool), CanalError> {
+        let (pa, pb) = (a.point(&a.hi)?, b.point(&b.lo)?);
+        let g0 = pa == pb;
+        let (ta, tb) = (a.tangent(&a.hi), b.tangent(&b.lo));
+        let cr = cross_q(&ta, &tb);
+        let g1 = g0 && cr.iter().all(Rational::is_zero) && dot_q(&ta, &tb) > Rational::ZERO;
+        Ok((g0, g1))
+    };
+    let mut g1 = Vec::with_capacity(n);
+    for k in 0..n.saturating_sub(1) {
+        g1.push(g1_at(&pieces[k], &pieces[k + 1])?.1);
+    }
+    let closed = match (pieces.last(), pieces.first()) {
+        (Some(l), Some(f)) => g1_at(l, f)?.1,
+        _ => false,
+    };
+    g1.push(closed);
+    Ok((g1, closed))
+}
+
+fn fmt_param(pieces: usize, k: usize, t: &Rational) -> String {
+    let v = format!("{:.6}", Scalar::to_f64(t));
+    if pieces > 1 {
+        format!("{v} (spine piece {k})")
+    } else {
+        v
+    }
+}
+
+/// Certifies that the pipe of radius `r` around `spine` on `domain` has no
+/// self-intersection: no two normal discs of radius `|r|` at distinct spine points meet
+/// (module docs; `docs/math/pipes.md#global`). A spine with `m(a) = m(b)` and the same
+/// tangent direction there is closed (no ends). Assumes the local regularity `r·κ < 1`
+/// ([`super::check_pipe_regularity`]), which the close-along-the-spine bound needs.
+///
+/// # Errors
+/// [`CanalError::PipeSelfIntersects`] with two spine parameters whose discs meet (an
+/// exact witness); [`CanalError::TubePartsNotApart`] if the subdivision stops
+/// ([`SELF_INTERSECTION_DEPTH`], [`SELF_INTERSECTION_BOXES`]) without a decision, naming the
+/// box; [`CanalError::InvalidArgument`] for a radius that is not constant.
+pub fn check_pipe_embedded(
+    spine: &CanalSpine<Rational>,
+    domain: (&Rational, &Rational),
+) -> Result<Certificate, CanalError> {
+    check_chain_embedded(&[(spine.clone(), (domain.0.clone(), domain.1.clone()))])
+}
+
+/// [`check_pipe_embedded`] for a chain of spine pieces (each a pipe family of the same
+/// constant radius on its own domain), joined end to start. The close-along-the-spine
+/// bound runs across `G¹` joints (and the seam of a closed chain). A joint that is not
+/// `G¹` (a corner or a gap) cuts the chain into runs, each checked on its own; pairs in
+/// different runs are not checked, and a failing certificate says so.
+///
+/// # Errors
+/// As [`check_pipe_embedded`]; [`CanalError::InvalidArgument`] for an empty chain, an empty
+/// domain or pieces of different radii.
+pub fn check_chain_embedded(
+    chain: &[(CanalSpine<Rational>, (Rational, Rational))],
+) -> Result<Certificate, CanalError> {
+    let mut pieces = Vec::with_capacity(chain.len());
+    let mut radius: Option<Rational> = None;
+    for (s, (lo, hi)) in chain {
+        if lo >= hi {
+            return Err(CanalError::InvalidArgument(format!(
+                "empty parameter interval [{}, {}]",
+                format_scalar(lo),
+                format_scalar(hi)
+            )));
+        }
+        let (_, _, r) = pipe_regularity_polynomials(s)?;
+        let r = if r < Rational::ZERO { -r } else { r };
+        match &radius {
+            Some(q) if *q != r => {
+                return Err(CanalError::InvalidArgument(
+                    "the pieces of a pipe chain must have the same radius".into(),
+                ))
+            }
+            _ => radius = Some(r),
+        }
+        pieces.push(Piece::new(s, lo, hi)?);
+    }
+    let rho = radius.ok_or_else(|| CanalError::InvalidArgument("no spine piece".into()))?;
+    let (g1, closed) = joints(&pieces)?;
+    let n = pieces.len();
+    // runs of G¹-joined pieces (one run if closed)
+    let mut runs: Vec<(usize, usize)> = Vec::new();
+    let mut start = 0;
+    for (k, smooth) in g1.iter().enumerate() {
+        if k + 1 == n || !smooth {
+            runs.push((start, k));
+            start = k + 1;
+        }
+    }
+    let mut tally = Tally::default();
+    if runs.len() > 1 {
+        for &(a, b) in &runs {
+            let sub = &pieces[a..=b];
+            let (sg1, sclosed) = joints(sub)?;
+            run_check(sub, &rho, sg1, sclosed, a, n, &mut tally)?;
+        }
+        let cut: Vec<String> = (0..n - 1)
+            .filter(|&k| !g1[k])
+            .map(|k| format!("{k}/{}", k + 1))
+            .collect();
+        return Ok(Certificate::fails(
+            format!(
+                "no two normal discs of radius {} of the pipe meet (pipe without self-intersection)",
+                format_scalar(&rho)
+            ),
+            format!(
+                "checked within each G¹ run of spine pieces ({} boxes), not between runs: the joints {} are not G¹ (a corner or a gap)",
+                tally.boxes,
+                cut.join(", ")
+            ),
+            true,
+        ));
+    }
+    run_check(&pieces, &rho, g1, closed, 0, n, &mut tally)?;
+    let dist = tally
+        .min_dist_sq
+        .as_ref()
+        .map(|d| format!("{:.6}", Scalar::to_f64(d).sqrt() * (1.0 - 1e-12)))
+        .unwrap_or_else(|| "—".into());
+    let (a, b) = (&chain[0].1 .0, &chain[n - 1].1 .1);
+    let domain = if n == 1 {
+        format!("t ∈ [{}, {}]", format_scalar(a), format_scalar(b))
+    } else {
+        format!("{n} spine pieces")
+    };
+    Ok(Certificate::holds(
+        format!(
+            "no two normal discs of radius {} of the pipe meet ({domain}, {} spine): no self-intersection — {} boxes of parameter pairs examined ({} close along the spine with κ_max(|r| + L) < 1, {} farther than 2|r|, {} without a double-critical pair{}), exact Bernstein bounds; boxes settled by distance have |m(t) − m(s)| ≥ {dist}",
+            format_scalar(&rho),
+            if closed { "closed" } else { "open" },
+            tally.boxes,
+            tally.near,
+            tally.far,
+            tally.critical,
+            if closed { String::new() } else { format!(", {} with end tests", tally.ends) },
+        ),
+        true,
+    ))
+}
+
+fn run_check(
+    pieces: &[Piece],
+    rho: &Rational,
+    g1: Vec<bool>,
+    closed: bool,
+    offset: usize,
+    total: usize,
+    tally: &mut Tally,
+) -> Result<(), CanalError> {
+    let mut check = Check {
+        pieces,
+        rho2: rho.clone() * rho.clone(),
+        closed,
+        g1,
+        whole: HashMap::new(),
+        ends: HashMap::new(),
+    };
+    let n = pieces.len();
+    let mut queue: VecDeque<Cell> = VecDeque::new();
+    for i in 0..n {
+        for j in i..n {
+            queue.push_back(Cell {
+                i,
+                j,
+                t: (pieces[i].lo.clone(), pieces[i].hi.clone()),
+                s: (pieces[j].lo.clone(), pieces[j].hi.clone()),
+                depth: 0,
+                diag: i == j,
+                tensors: None,
+            });
+        }
+    }
+    let four_rho2 = check.rho2.clone() * Rational::from(4);
+    while let Some(mut c) = queue.pop_front() {
+        tally.boxes += 1;
+        if check.near(&c)? {
+            tally.near += 1;
+            continue;
+        }
+        if c.tensors.is_none() {
+            c.tensors = Some(check.tensors(&c)?);
+        }
+        let tensors = c
+            .tensors
+            .take()
+            .ok_or_else(|| CanalError::InvalidArgument("internal: box without tensors".into()))?;
+        if !c.diag {
+            let far = tensors[2].c.iter().all(|x| *x > Rational::ZERO);
+            if far {
+                // every pair of the box is more than 2ρ apart: no disc meets another
+                tally.far += 1;
+                let (_, wt) = bernstein_range(&(&pieces[c.i].w * &pieces[c.i].w), &c.t.0, &c.t.1)?;
+                let (_, ws) = bernstein_range(&(&pieces[c.j].w * &pieces[c.j].w), &c.s.0, &c.s.1)?;
+                let den = wt * ws;
+                if den > Rational::ZERO {
+                    let d2 = four_rho2.clone() + tensors[2].min() / den;
+                    if tally.min_dist_sq.as_ref().is_none_or(|m| d2 < *m) {
+                        tally.min_dist_sq = Some(d2);
+                    }
+                }
+                continue;
+            }
+            if tensors[0].strict_sign() || tensors[1].strict_sign() {
+                // no double-critical pair; the end discs still need their own test
+                let at_end = !check.closed
+                    && ((c.i == 0 && c.t.0 == pieces[0].lo)
+                        || (c.j == n - 1 && c.s.1 == pieces[n - 1].hi));
+                if !at_end || check.ends_ok(&c)? {
+                    tally.critical += 1;
+                    if at_end {
+                        tally.ends += 1;
+                    }
+                    continue;
+                }
+            }
+            if let Some(w) = check.witness(&c) {
+                return Err(CanalError::PipeSelfIntersects {
+                    first: fmt_param(total, w.i + offset, &w.t),
+                    second: fmt_param(total, w.j + offset, &w.s),
+                    distance: format!("{:.6}", w.distance),
+                    diameter: format!("{:.6}", 2.0 * Scalar::to_f64(rho)),
+                });
+            }
+        }
+        if c.depth >= SELF_INTERSECTION_DEPTH
+            || tally.boxes + queue.len() >= SELF_INTERSECTION_BOXES
+        {
+            // undecided: name the box (and its sampled spine distance)
+            let f = |x: &(Rational, Rational)| {
+                format!("[{:.6}, {:.6}]", Scalar::to_f64(&x.0), Scalar::to_f64(&x.1))
+            };
+            let (ti, si) = (f(&c.t), f(&c.s));
+            let piece = |k: usize, s: String| {
+                if total > 1 {
+                    format!("{s} (spine piece {})", k + offset)
+                } else {
+                    s
+                }
+            };
+            let lerp = |x: &(Rational, Rational), k: usize| {
+                let (a, b) = (Scalar::to_f64(&x.0), Scalar::to_f64(&x.1));
+                a + (b - a) * k as f64 / 4.0
+            };
+            let dist = (0..=4)
+                .flat_map(|u| (0..=4).map(move |v| (u, v)))
+                .map(|(u, v)| {
+                    let (pa, pb) = (
+                        pieces[c.i].point_f(lerp(&c.t, u)),
+                        pieces[c.j].point_f(lerp(&c.s, v)),
+                    );
+                    (0..3).map(|k| (pa[k] - pb[k]).powi(2)).sum::<f64>().sqrt()
+                })
+                .fold(f64::INFINITY, f64::min);
+            return Err(CanalError::TubePartsNotApart {
+                first: piece(c.i, ti),
+                second: piece(c.j, si),
+                distance: format!("{dist:.6}"),
+                diameter: format!("{:.6}", 2.0 * Scalar::to_f64(rho)),
+            });
+        }
+        // quarter the box (a diagonal box: the three quarters with t ≤ s)
+        let tm = (c.t.0.clone() + c.t.1.clone()) * half();
+        let sm = (c.s.0.clone() + c.s.1.clone()) * half();
+        let [q11, q12, q21, q22] = quarter(&tensors);
+        let ts = [(c.t.0.clone(), tm.clone()), (tm, c.t.1.clone())];
+        let ss = [(c.s.0.clone(), sm.clone()), (sm, c.s.1.clone())];
+        let kids = [(0, 0, q11), (0, 1, q12), (1, 0, q21), (1, 1, q22)];
+        for (a, b, q) in kids {
+            if c.diag && a > b {
+                continue;
+            }
+            queue.push_back(Cell {
+                i: c.i,
+                j: c.j,
+                t: ts[a].clone(),
+                s: ss[b].clone(),
+                depth: c.depth + 1,
+                diag: c.diag && a == b,
+                tensors: Some(q),
+            });
+        }
+    }
+    Ok(())
+}
