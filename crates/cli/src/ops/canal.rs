@@ -654,7 +654,7 @@ fn build_canal_surface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 
 const PIPE_PH: OpSpec = OpSpec {
     name: "pipe_ph",
-    summary: "the exact rational pipe surface of constant radius around a spatial PH curve in quaternion form, t ∈ [0, 1]: every exact construction (split D = σ² and the Gaussian splits, Peternell–Pottmann and Krasauskas, every frame, interval splits) is tried and the smallest with positive weights kept",
+    summary: "the exact rational pipe surface of constant radius around a spatial PH curve in quaternion form, t ∈ [0, 1]: every exact construction (split D = σ² and the Gaussian splits, Peternell–Pottmann and Krasauskas, every frame, interval splits) is tried and the smallest with positive weights kept; r·κ < 1 and that no two normal discs of radius |r| meet are certified",
     params: &[
         ParamSpec::required("coefficients", ParamKind::Points, "Bernstein coefficients A₀ … A_m of the quaternion preimage, each [a, b, c, d] = a + b i + c j + d k (curve degree 2m + 1)"),
         ParamSpec::with_default("start", ParamKind::Point3, "[0, 0, 0]", "start point r(0)"),
@@ -720,7 +720,7 @@ fn pipe_err(e: CanalError, spine_param: &'static str) -> OpError {
 
 const PIPE: OpSpec = OpSpec {
     name: "pipe",
-    summary: "the pipe surface of constant radius around a rational spine on t ∈ [0, 1] (control points, or every curve of a STEP, IGES or exact JSON file chained end to end, each piece on t ∈ [0, 1]), exact over Q when |m'|² is a sum of two rational squares (planar and PH spines always); the smallest exact construction with positive weights is kept, r·κ < 1 is certified",
+    summary: "the pipe surface of constant radius around a rational spine on t ∈ [0, 1] (control points, or every curve of a STEP, IGES or exact JSON file chained end to end, each piece on t ∈ [0, 1]), exact over Q when |m'|² is a sum of two rational squares (planar and PH spines always); the smallest exact construction with positive weights is kept; r·κ < 1 and that no two normal discs of radius |r| meet (no self-intersection) are certified",
     params: &[
         ParamSpec::optional("points", ParamKind::Points, "control points [x, y, z] of the spine (or give spine_file)"),
         ParamSpec::optional("weights", ParamKind::Numbers, "spine weights (default all 1)"),
