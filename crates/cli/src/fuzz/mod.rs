@@ -147,11 +147,7 @@ pub fn evaluate(file_name: &str, text: &str) -> Outcome {
     })) {
         Err(p) => return fail(101, "parse", panic_message(&*p), Some(FindingKind::Panic)),
         Ok(Err(d)) => {
-            let m = d
-                .iter()
-                .map(|d| d.message.clone())
-                .collect::<Vec<_>>()
-                .join("; ");
+            let m = joined_messages(&d);
             let f = internal(&m).then_some(FindingKind::Internal);
             return fail(2, "parse", m, f);
         }
@@ -160,11 +156,7 @@ pub fn evaluate(file_name: &str, text: &str) -> Outcome {
     let objects = match catch_unwind(AssertUnwindSafe(|| build_recipe(&recipe, |_| {}))) {
         Err(p) => return fail(101, "build", panic_message(&*p), Some(FindingKind::Panic)),
         Ok(Err(d)) => {
-            let m = d
-                .iter()
-                .map(|d| d.message.clone())
-                .collect::<Vec<_>>()
-                .join("; ");
+            let m = joined_messages(&d);
             let f = if m.contains("the construction panicked") {
                 Some(FindingKind::Panic)
             } else {
@@ -217,15 +209,7 @@ pub fn evaluate(file_name: &str, text: &str) -> Outcome {
             Some(FindingKind::Panic),
         );
     }
-    let failing: Vec<String> = objects
-        .iter()
-        .flat_map(|o| {
-            o.certificates
-                .iter()
-                .filter(|c| !c.holds)
-                .map(move |c| format!("{}: {c}", o.name))
-        })
-        .collect();
+    let failing: Vec<String> = output::failures(&objects);
     if !failing.is_empty() {
         return Outcome {
             exit: 1,
@@ -741,4 +725,12 @@ fn kind_ok(kind: FileKind, file: &str) -> Result<(), String> {
         Err(p) => Err(p),
         Ok(_) => Ok(()),
     }
+}
+
+/// The messages of a list of diagnostics, joined by `; `.
+fn joined_messages(d: &[crate::source::Diagnostic]) -> String {
+    d.iter()
+        .map(|d| d.message.clone())
+        .collect::<Vec<_>>()
+        .join("; ")
 }
