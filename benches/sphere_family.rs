@@ -185,7 +185,7 @@ fn build(c: &Case) -> SphereFamilyEnvelope<Rational> {
         .map(|p| p.iter().map(|&x| Rational::from(x)).collect())
         .collect();
     let b = c.b.map(grid);
-    SphereFamilyEnvelope::from_data(c.kind, &rows, &grid(c.a), None, b.as_deref())
+    SphereFamilyEnvelope::from_data(c.kind, &rows, &grid(c.a), None, b.as_deref(), [None, None])
         .expect("envelope")
 }
 
