@@ -4,6 +4,7 @@ import ast
 import importlib.util
 import inspect
 import pathlib
+import re
 import subprocess
 import sys
 
@@ -55,7 +56,9 @@ def test_example_ph_arc_length(tmp_path):
                     reason="cadquery-ocp is not installed: the OpenCascade examples are skipped")
 def test_examples_with_opencascade(tmp_path):
     out = _run("exact_pipe_cadquery.py", str(tmp_path))
-    assert "12/12 hold" in out and (tmp_path / "half_ring.step").exists()
+    held = re.search(r"(\d+)/(\d+) hold", out)
+    assert held and held.group(1) == held.group(2), out  # every certificate holds
+    assert (tmp_path / "half_ring.step").exists()
     out = _run("pn_offset_vs_occ.py")
     # one normal sense agrees with OpenCascade's offset to rounding
     best = min(float(line.split("max ")[1].split(",")[0])
