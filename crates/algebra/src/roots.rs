@@ -961,6 +961,78 @@ pub fn square_free_decomposition<F: Field>(p: &Poly<F>) -> Vec<(Poly<F>, usize)>
     out
 }
 
+/// All complex roots of the `f64` polynomial `p` (degree ≥ 1; a constant has none), by the
+/// Weierstrass–Durand–Kerner iteration (Durand 1960, Kerner 1966: `zᵢ ← zᵢ − p(zᵢ)/∏_{j≠i}(zᵢ − zⱼ)`
+/// on the monic polynomial, simultaneous for all roots, started on a circle inside
+/// Cauchy's bound `1 + max|aₖ/aₙ|`), then polished by a few Newton steps. Accurate for simple
+/// roots; multiple roots converge only linearly (pass a square-free `p`). `None` for the
+/// zero polynomial or if the iteration leaves the finite numbers.
+pub fn complex_roots_f64(p: &Poly<f64>) -> Option<Vec<crate::complex::Complex<f64>>> {
+    use crate::complex::Complex;
+    type C = Complex<f64>;
+    let n = p.degree()?;
+    if n == 0 {
+        return Some(Vec::new());
+    }
+    let lc = p.leading();
+    let c: Vec<C> = p
+        .coeffs()
+        .iter()
+        .map(|x| Complex::new(x / lc, 0.0))
+        .collect();
+    let horner = |coeffs: &[C], z: &C| {
+        coeffs
+            .iter()
+            .rev()
+            .fold(Complex::new(0.0, 0.0), |acc, a| acc * z.clone() + a.clone())
+    };
+    let radius = 1.0
+        + c[..n]
+            .iter()
+            .map(|z| z.norm_sq().sqrt())
+            .fold(0.0, f64::max);
+    let mut z: Vec<C> = (0..n)
+        .map(|k| {
+            let a = 2.0 * core::f64::consts::PI * (k as f64 + 0.25) / n as f64;
+            Complex::new(radius * 0.9 * a.cos(), radius * 0.9 * a.sin())
+        })
+        .collect();
+    for _ in 0..2000 {
+        let mut moved: f64 = 0.0;
+        for i in 0..n {
+            let mut den = Complex::new(1.0, 0.0);
+            for j in 0..n {
+                if i != j {
+                    den *= z[i].clone() - z[j].clone();
+                }
+            }
+            if den.norm_sq() == 0.0 {
+                // two iterates coincide: nudge instead of dividing by zero
+                den = Complex::new(1e-300, 0.0);
+            }
+            let step = horner(&c, &z[i]) / den;
+            moved = moved.max(step.norm_sq().sqrt());
+            z[i] = z[i].clone() - step;
+        }
+        if moved < 1e-15 * radius {
+            break;
+        }
+    }
+    let dc: Vec<C> = (1..=n).map(|k| c[k].scale(&(k as f64))).collect();
+    for w in z.iter_mut() {
+        for _ in 0..8 {
+            let d = horner(&dc, w);
+            if d.norm_sq() == 0.0 {
+                break;
+            }
+            *w = w.clone() - horner(&c, w) / d;
+        }
+    }
+    z.iter()
+        .all(|w| w.re.is_finite() && w.im.is_finite())
+        .then_some(z)
+}
+
 /// The distinct real roots of `p` with their multiplicities, sorted: the isolating
 /// intervals of [`isolate_real_roots`], each paired with the `k` of the square-free
 /// factor `fₖ` ([`square_free_decomposition`]) that vanishes inside it.
@@ -991,6 +1063,56 @@ pub fn isolate_real_roots_with_multiplicity(
             (iv, k)
         })
         .collect())
+}
+
+#[cfg(test)]
+mod complex_root_tests {
+    use super::*;
+
+    /// The roots of `(x² + 1)(x − 2)(x + 1/2)(x² − 2x + 5)` (±i, 2, −1/2, 1 ± 2i), and a
+    /// Wilkinson-like product of 8 real roots, to 1e-10.
+    #[test]
+    fn complex_roots_of_products_of_known_factors() {
+        type Case = (Vec<f64>, Vec<(f64, f64)>);
+        let cases: Vec<Case> = vec![
+            (
+                // (x² + 1)(x − 2)(x + 1/2)(x² − 2x + 5)
+                vec![-5.0, -5.5, 2.0, -9.0, 8.0, -3.5, 1.0],
+                vec![
+                    (0.0, 1.0),
+                    (0.0, -1.0),
+                    (2.0, 0.0),
+                    (-0.5, 0.0),
+                    (1.0, 2.0),
+                    (1.0, -2.0),
+                ],
+            ),
+            (
+                (1..=8).fold(vec![1.0], |acc, r| {
+                    let mut out = vec![0.0; acc.len() + 1];
+                    for (k, a) in acc.iter().enumerate() {
+                        out[k + 1] += a;
+                        out[k] -= a * r as f64;
+                    }
+                    out
+                }),
+                (1..=8).map(|r| (r as f64, 0.0)).collect(),
+            ),
+        ];
+        for (coeffs, want) in cases {
+            let z = complex_roots_f64(&Poly::new(coeffs)).expect("roots");
+            assert_eq!(z.len(), want.len());
+            for (re, im) in want {
+                assert!(
+                    z.iter()
+                        .any(|w| (w.re - re).abs() + (w.im - im).abs() < 1e-8),
+                    "root {re} + {im}i not found in {z:?}"
+                );
+            }
+        }
+        assert_eq!(complex_roots_f64(&Poly::new(vec![3.0])), Some(Vec::new()));
+        assert_eq!(complex_roots_f64(&Poly::new(vec![])), None);
+    }
 }
 
 #[cfg(test)]

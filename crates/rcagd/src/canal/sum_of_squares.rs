@@ -121,81 +121,10 @@ pub fn sum_of_two_squares_approx(
     Ok(re_im_polys(&(&h * &af)))
 }
 
-/// Durand–Kerner iteration followed by Newton polishing (for simple roots).
+/// The complex roots of the square-free `p` (`rcagd_algebra::roots::complex_roots_f64`).
 fn durand_kerner(p: &Poly<f64>) -> Result<Vec<Complex<f64>>, CanalError> {
-    let n = p.degree().unwrap_or(0);
-    if n == 0 {
-        return Ok(Vec::new());
-    }
-    let lc = p.leading();
-    let c: Vec<Complex<f64>> = p
-        .coeffs()
-        .iter()
-        .map(|x| Complex::new(x / lc, 0.0))
-        .collect();
-    let eval = |z: &Complex<f64>| {
-        c.iter()
-            .rev()
-            .fold(Complex::new(0.0, 0.0), |acc, a| acc * z.clone() + a.clone())
-    };
-    let radius = 1.0
-        + c.iter()
-            .take(n)
-            .map(|z| z.norm_sq().sqrt())
-            .fold(0.0, f64::max);
-    let mut z: Vec<Complex<f64>> = (0..n)
-        .map(|k| {
-            let a = 2.0 * core::f64::consts::PI * (k as f64 + 0.25) / n as f64;
-            Complex::new(radius * 0.9 * a.cos(), radius * 0.9 * a.sin())
-        })
-        .collect();
-    for _ in 0..2000 {
-        let mut delta: f64 = 0.0;
-        for i in 0..n {
-            let mut den = Complex::new(1.0, 0.0);
-            for j in 0..n {
-                if i != j {
-                    den *= z[i].clone() - z[j].clone();
-                }
-            }
-            if den.norm_sq() == 0.0 {
-                den = Complex::new(1e-300, 0.0);
-            }
-            let step = eval(&z[i]) / den;
-            delta = delta.max(step.norm_sq().sqrt());
-            z[i] = z[i].clone() - step;
-        }
-        if delta < 1e-15 * radius {
-            break;
-        }
-    }
-    let dc: Vec<Complex<f64>> = c
-        .iter()
-        .enumerate()
-        .skip(1)
-        .map(|(k, a)| a.clone() * Complex::new(k as f64, 0.0))
-        .collect();
-    let deval = |z: &Complex<f64>| {
-        dc.iter()
-            .rev()
-            .fold(Complex::new(0.0, 0.0), |acc, a| acc * z.clone() + a.clone())
-    };
-    for w in z.iter_mut() {
-        for _ in 0..8 {
-            let dv = deval(w);
-            if dv.norm_sq() == 0.0 {
-                break;
-            }
-            let step = eval(w) / dv;
-            *w = w.clone() - step;
-        }
-    }
-    if z.iter().any(|w| !w.re.is_finite() || !w.im.is_finite()) {
-        return Err(CanalError::InvalidArgument(
-            "the root finder did not converge".into(),
-        ));
-    }
-    Ok(z)
+    rcagd_algebra::roots::complex_roots_f64(p)
+        .ok_or_else(|| CanalError::InvalidArgument("the root finder did not converge".into()))
 }
 
 #[cfg(test)]

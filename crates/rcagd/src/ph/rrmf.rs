@@ -173,7 +173,7 @@ fn rotation_f64<F: Scalar>(curve: &PhCurve<F>) -> Result<(Poly<F>, Poly<F>), PhE
     if n.coeffs().iter().all(|c| c.abs() <= 1e-12 * scale) {
         return back(&Poly::constant(1.0)).map(|a| (a, Poly::zero()));
     }
-    let roots = complex_roots(&sigma)
+    let roots = rcagd_algebra::roots::complex_roots_f64(&sigma)
         .ok_or_else(|| not_rrmf("the roots of σ could not be found in f64".into()))?;
     let ds = sigma.derivative();
     let ev = |p: &Poly<f64>, z: &C| {
@@ -217,80 +217,6 @@ fn rotation_f64<F: Scalar>(curve: &PhCurve<F>) -> Result<(Poly<F>, Poly<F>), PhE
         ));
     }
     Ok((back(&a)?, back(&b)?))
-}
-
-/// All complex roots of a real polynomial (Durand–Kerner, then Newton polishing); `None`
-/// if the iteration does not settle.
-fn complex_roots(p: &Poly<f64>) -> Option<Vec<Complex<f64>>> {
-    type C = Complex<f64>;
-    let n = p.degree()?;
-    if n == 0 {
-        return Some(Vec::new());
-    }
-    let lc = p.leading();
-    let c: Vec<C> = p
-        .coeffs()
-        .iter()
-        .map(|x| Complex::new(x / lc, 0.0))
-        .collect();
-    let ev = |z: &C| {
-        c.iter()
-            .rev()
-            .fold(Complex::new(0.0, 0.0), |acc, k| acc * z.clone() + k.clone())
-    };
-    let radius = 1.0
-        + c[..n]
-            .iter()
-            .map(|k| k.norm_sq().sqrt())
-            .fold(0.0, f64::max);
-    let seed = Complex::new(0.4, 0.9);
-    let mut z: Vec<C> = (0..n)
-        .map(|k| {
-            let mut s = Complex::new(1.0, 0.0);
-            for _ in 0..k {
-                s *= seed.clone();
-            }
-            s.scale(&(radius * 0.5))
-        })
-        .collect();
-    for _ in 0..500 {
-        let mut moved = 0.0f64;
-        for i in 0..n {
-            let mut den = Complex::new(1.0, 0.0);
-            for j in 0..n {
-                if i != j {
-                    den *= z[i].clone() - z[j].clone();
-                }
-            }
-            if den.norm_sq() == 0.0 {
-                return None;
-            }
-            let step = ev(&z[i]) / den;
-            moved = moved.max(step.norm_sq().sqrt());
-            z[i] = z[i].clone() - step;
-        }
-        if moved < 1e-15 * radius {
-            break;
-        }
-    }
-    let dc: Vec<C> = (1..=n).map(|k| c[k].scale(&(k as f64))).collect();
-    let evd = |w: &C| {
-        dc.iter()
-            .rev()
-            .fold(Complex::new(0.0, 0.0), |acc, k| acc * w.clone() + k.clone())
-    };
-    for zi in z.iter_mut() {
-        for _ in 0..3 {
-            let d = evd(zi);
-            if d.norm_sq() == 0.0 {
-                break;
-            }
-            *zi = zi.clone() - ev(zi) / d;
-        }
-    }
-    z.iter()
-        .all(|w| w.re.is_finite() && w.im.is_finite())
-        .then_some(z)
 }
 
 fn not_rrmf(msg: String) -> PhError {
