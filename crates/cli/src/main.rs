@@ -92,34 +92,7 @@ enum Command {
     /// nothing was found, 1 when a case panicked, said "internal error", failed a
     /// certificate or ran past --case-seconds (each finding is printed with its recipe
     /// and, with --corpus, written there as a regression recipe).
-    Fuzz {
-        /// Number of cases (spread over the ops in turn).
-        #[arg(long, value_name = "N", default_value_t = 1000)]
-        cases: u64,
-        /// The seed: a run is a function of the seed and the case count.
-        #[arg(long, value_name = "S", default_value_t = 1)]
-        seed: u64,
-        /// Only this op.
-        #[arg(long, value_name = "NAME")]
-        op: Option<String>,
-        /// Write each finding (a minimal recipe or reader file) into DIR.
-        #[arg(long, value_name = "DIR")]
-        corpus: Option<PathBuf>,
-        /// Time limit of one case, in seconds (a longer case is a finding).
-        #[arg(long, value_name = "T", default_value_t = 10.0)]
-        case_seconds: f64,
-        /// Print every recipe before running it (to standard error).
-        #[arg(long, short)]
-        verbose: bool,
-        /// Hostile numbers up to 1e±300 and 30 digits: finds work that is not bounded
-        /// (reported as timeouts).
-        #[arg(long)]
-        huge: bool,
-        /// Stop after N cases ran past the time limit (each keeps a thread busy until
-        /// the process ends).
-        #[arg(long, value_name = "N", default_value_t = 3)]
-        max_abandoned: u32,
-    },
+    Fuzz(rcagd_cli::fuzz::Options),
 }
 
 fn main() -> ExitCode {
@@ -149,26 +122,8 @@ fn main() -> ExitCode {
             build::run(&recipe, out.as_deref(), &formats)
         }
         Command::Ops { name, markdown } => ops::describe::run(name.as_deref(), markdown),
-        Command::Fuzz {
-            cases,
-            seed,
-            op,
-            corpus,
-            case_seconds,
-            verbose,
-            huge,
-            max_abandoned,
-        } => {
-            let code = rcagd_cli::fuzz::run(&rcagd_cli::fuzz::Options {
-                cases,
-                seed,
-                op,
-                corpus,
-                case_seconds,
-                verbose,
-                huge,
-                max_abandoned,
-            });
+        Command::Fuzz(options) => {
+            let code = rcagd_cli::fuzz::run(&options);
             // cases still running past their time limit are abandoned here
             if let Some(e) = rcagd_cli::stdout_error() {
                 if e.kind() != std::io::ErrorKind::BrokenPipe {

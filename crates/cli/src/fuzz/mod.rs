@@ -96,6 +96,20 @@ pub struct Outcome {
     pub files: Vec<(FileKind, String)>,
 }
 
+impl Outcome {
+    /// A case still running after `limit`: a timeout finding (exit 1).
+    fn timeout(limit: Duration) -> Self {
+        Outcome {
+            exit: 1,
+            build_exit: 1,
+            stage: "timeout".into(),
+            message: format!("still running after {:.1} s", limit.as_secs_f64()),
+            finding: Some(FindingKind::Timeout),
+            files: Vec::new(),
+        }
+    }
+}
+
 static PANIC_SITE: Mutex<Option<String>> = Mutex::new(None);
 
 /// Replaces the panic hook by one that prints nothing and records where the last panic
@@ -265,17 +279,7 @@ pub fn evaluate_limited(file_name: &str, text: &str, limit: Duration) -> (Outcom
     let (n, t) = (file_name.to_string(), text.to_string());
     match with_limit(limit, move || evaluate(&n, &t)) {
         Some(o) => (o, start.elapsed()),
-        None => (
-            Outcome {
-                exit: 1,
-                build_exit: 1,
-                stage: "timeout".into(),
-                message: format!("still running after {:.1} s", limit.as_secs_f64()),
-                finding: Some(FindingKind::Timeout),
-                files: Vec::new(),
-            },
-            start.elapsed(),
-        ),
+        None => (Outcome::timeout(limit), start.elapsed()),
     }
 }
 
@@ -287,25 +291,34 @@ pub fn read_no_panic(kind: FileKind, text: &str) -> Result<Result<usize, String>
     catch_unwind(AssertUnwindSafe(|| kind.read(text))).map_err(|p| panic_message(&*p))
 }
 
-/// The options of `rcagd fuzz`.
-#[derive(Debug, Clone)]
+/// The options of `rcagd fuzz` (also its command-line arguments).
+#[derive(Debug, Clone, clap::Args)]
 pub struct Options {
-    /// Number of cases.
+    /// Number of cases (spread over the ops in turn).
+    #[arg(long, value_name = "N", default_value_t = 1000)]
     pub cases: u64,
-    /// The run's seed.
+    /// The seed: a run is a function of the seed and the case count.
+    #[arg(long, value_name = "S", default_value_t = 1)]
     pub seed: u64,
     /// Only this op.
+    #[arg(long, value_name = "NAME")]
     pub op: Option<String>,
-    /// Where findings are written (none: only reported).
+    /// Write each finding (a minimal recipe or reader file) into DIR.
+    #[arg(long, value_name = "DIR")]
     pub corpus: Option<PathBuf>,
-    /// The time limit of one case.
+    /// Time limit of one case, in seconds (a longer case is a finding).
+    #[arg(long, value_name = "T", default_value_t = 10.0)]
     pub case_seconds: f64,
-    /// Print every case before running it.
+    /// Print every recipe before running it (to standard error).
+    #[arg(long, short)]
     pub verbose: bool,
-    /// Hostile numbers up to 1e±300 and 30 digits (finds unbounded work: timeouts).
+    /// Hostile numbers up to 1e±300 and 30 digits: finds work that is not bounded
+    /// (reported as timeouts).
+    #[arg(long)]
     pub huge: bool,
-    /// Stop after this many cases were abandoned past the time limit (each keeps a
-    /// thread busy until the process ends).
+    /// Stop after N cases ran past the time limit (each keeps a thread busy until
+    /// the process ends).
+    #[arg(long, value_name = "N", default_value_t = 3)]
     pub max_abandoned: u32,
 }
 
@@ -577,17 +590,7 @@ pub fn run(opts: &Options) -> u8 {
             }
             None => {
                 running += 1;
-                (
-                    Outcome {
-                        exit: 1,
-                        build_exit: 1,
-                        stage: "timeout".into(),
-                        message: format!("still running after {:.1} s", limit.as_secs_f64()),
-                        finding: Some(FindingKind::Timeout),
-                        files: Vec::new(),
-                    },
-                    None,
-                )
+                (Outcome::timeout(limit), None)
             }
         };
         if elapsed > slowest.0 && outcome.finding != Some(FindingKind::Timeout) {
