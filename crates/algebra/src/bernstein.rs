@@ -419,15 +419,7 @@ pub fn product_tensor<F: Field>(
     b: &[F],
     (m2, n2): (usize, usize),
 ) -> Result<Vec<F>, AlgebraError> {
-    for (name, arr, (m, n)) in [("first", a, (m1, n1)), ("second", b, (m2, n2))] {
-        if arr.len() != (m + 1) * (n + 1) {
-            return Err(AlgebraError::Mismatch(format!(
-                "{name} factor has {} coefficients, bidegree ({m}, {n}) needs {}",
-                arr.len(),
-                (m + 1) * (n + 1)
-            )));
-        }
-    }
+    check_tensor_lengths(a.len(), (m1, n1), b.len(), (m2, n2))?;
     let scale2 = |arr: &[F], m: usize, n: usize| -> Vec<F> {
         let cm: Vec<F> = binomial_row(m);
         let cn: Vec<F> = binomial_row(n);
@@ -482,15 +474,7 @@ pub fn product_tensor_scalar<F: crate::scalar::Scalar>(
     let (Some(qa), Some(qb)) = (to_q(a), to_q(b)) else {
         return product_tensor(a, da, b, db);
     };
-    for (name, arr, (m, n)) in [("first", &qa, da), ("second", &qb, db)] {
-        if arr.len() != (m + 1) * (n + 1) {
-            return Err(AlgebraError::Mismatch(format!(
-                "{name} factor has {} coefficients, bidegree ({m}, {n}) needs {}",
-                arr.len(),
-                (m + 1) * (n + 1)
-            )));
-        }
-    }
+    check_tensor_lengths(qa.len(), da, qb.len(), db)?;
     // integers over a common denominator, scaled by the binomials of the degree
     let ints = |v: &[Rational], (m, n): (usize, usize)| -> (Vec<IBig>, UBig) {
         let mut l = UBig::ONE;
@@ -541,6 +525,24 @@ pub fn product_tensor_scalar<F: crate::scalar::Scalar>(
             F::from_rational(&Rational::from_parts(x, d))
         })
         .collect())
+}
+
+/// Both factors of a tensor product have `(m + 1)(n + 1)` coefficients for their bidegree.
+fn check_tensor_lengths(
+    la: usize,
+    da: (usize, usize),
+    lb: usize,
+    db: (usize, usize),
+) -> Result<(), AlgebraError> {
+    for (name, len, (m, n)) in [("first", la, da), ("second", lb, db)] {
+        if len != (m + 1) * (n + 1) {
+            return Err(AlgebraError::Mismatch(format!(
+                "{name} factor has {len} coefficients, bidegree ({m}, {n}) needs {}",
+                (m + 1) * (n + 1)
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// `C(n, 0), …, C(n, n)` as integers.

@@ -230,14 +230,7 @@ fn line_witness(
         }));
     }
     // between and beside the isolating intervals (open, disjoint, sorted)
-    let mut samples = vec![&roots[0].lo - &Rational::one()];
-    for w in roots.windows(2) {
-        samples.push((&w[0].hi + &w[1].lo) / Rational::from(2));
-    }
-    if let Some(last) = roots.last() {
-        samples.push(&last.hi + &Rational::one());
-    }
-    for y in samples {
+    for y in samples_between(&roots) {
         let value = h.eval(&y);
         if value <= Rational::zero() {
             return Ok(Some(PlanePositivity::NotPositive {
