@@ -771,15 +771,30 @@ mod tests {
     }
 
     /// The integers that left four conic-point benchmark families undecided under Pollard ρ
-    /// alone (docs/BENCHMARKS.md) are factored now.
+    /// alone (docs/BENCHMARKS.md) are factored now: the two with 17- and 15-digit factors
+    /// here, the two with 20- and 21-digit factors (about 40 s each in the test profile)
+    /// in [`benchmark_integers_with_20_digit_factors`].
     #[test]
     fn benchmark_integers() {
-        for s in [
+        factor_all(&[
             "7137525858178123098574649693617337",
             "165007955199822014276293129864111",
+        ]);
+    }
+
+    /// Slow in the test profile (ECM with 20- and 21-digit factors): run by
+    /// `cargo test --release -p rcagd-algebra --lib -- --ignored benchmark_integers`.
+    #[test]
+    #[ignore = "slow: ECM on 20- and 21-digit factors (about 80 s in the test profile)"]
+    fn benchmark_integers_with_20_digit_factors() {
+        factor_all(&[
             "1112697600727565733339128465758264846982101581422315967301372853",
             "27366208895456260263398415383589608518923884862147430339",
-        ] {
+        ]);
+    }
+
+    fn factor_all(integers: &[&str]) {
+        for s in integers {
             let n: UBig = s.parse().expect("literal");
             let f = factor(&n).expect("decided");
             eprintln!("{s} = {f:?}");

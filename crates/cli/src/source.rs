@@ -361,10 +361,19 @@ pub fn edit_distance(a: &str, b: &str) -> usize {
 /// The candidate closest to `word`, if it is close enough to be a plausible typo.
 pub fn closest<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
     let lw = word.to_ascii_lowercase();
+    let len = lw.chars().count();
     candidates
         .into_iter()
-        .map(|c| (edit_distance(&lw, &c.to_ascii_lowercase()), c))
-        .filter(|&(d, c)| d <= (c.chars().count() / 3).max(2))
+        .filter_map(|c| {
+            let limit = (c.chars().count() / 3).max(2);
+            // the distance is at least the difference of the lengths: a 10 MB word is
+            // not compared character by character with every op name
+            if len.abs_diff(c.chars().count()) > limit {
+                return None;
+            }
+            let d = edit_distance(&lw, &c.to_ascii_lowercase());
+            (d <= limit).then_some((d, c))
+        })
         .min_by_key(|&(d, _)| d)
         .map(|(_, c)| c)
 }

@@ -43,10 +43,20 @@ to = [0, 1]
 
 #[test]
 fn gallery_writes_everything_and_all_certificates_hold() {
-    let dir = temp_dir("cli-gallery");
+    // CI keeps this gallery (`RCAGD_GALLERY_OUT`, an absolute path) for its OpenCascade
+    // and mesh checks instead of building it a second time
+    let keep = std::env::var_os("RCAGD_GALLERY_OUT").map(std::path::PathBuf::from);
+    let tmp = temp_dir("cli-gallery");
+    let dir: &std::path::Path = match &keep {
+        Some(k) => {
+            let _ = std::fs::remove_dir_all(k);
+            k
+        }
+        None => &tmp,
+    };
     let o = bin()
         .args(["gallery", "--out"])
-        .arg(&dir)
+        .arg(dir)
         .output()
         .expect("run rcagd gallery");
     let out = stdout(&o);
@@ -146,7 +156,7 @@ fn gallery_writes_everything_and_all_certificates_hold() {
         }
     }
     assert!(html.contains("href=\"gallery-all.step\""));
-    closed_objects_arrive_closed(&dir);
+    closed_objects_arrive_closed(dir);
 }
 
 /// The closed gallery objects (examples/closed-objects.txt): one closed solid in STEP,
