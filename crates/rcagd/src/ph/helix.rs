@@ -146,11 +146,13 @@ impl<F: Scalar> PhPolyCurve<F> {
         match self.rho() {
             Ok(rho) => {
                 let trip = self.triple_product();
-                certs.push(identity_cert(
-                    "ρ³ − (|a|²−1)·((r'×r'')·r''')² ≡ 0 (Lancret: (κ/τ)² = tan²ψ)",
-                    &rho.pow(3),
-                    &(&trip * &trip).scale(&h.tan2_psi()),
-                ));
+                let property = "ρ³ − (|a|²−1)·((r'×r'')·r''')² ≡ 0 (Lancret: (κ/τ)² = tan²ψ)";
+                let (lhs, rhs) = (rho.pow(3), (&trip * &trip).scale(&h.tan2_psi()));
+                certs.push(if F::EXACT {
+                    identity_cert(property, &lhs, &rhs)
+                } else {
+                    identity_cert_within(property, &lhs, &rhs, &self.lancret_magnitude(h))
+                });
             }
             Err(e) => certs.push(Certificate::fails(
                 "ρ = |r'×r''|²/σ² is a polynomial",
@@ -159,6 +161,32 @@ impl<F: Scalar> PhPolyCurve<F> {
             )),
         }
         certs
+    }
+
+    /// For `f64`: coefficientwise bounds of the sums of the absolute values of the terms
+    /// of Lancret's identity, `(|r''|² + σ'²)³ + |tan²ψ|·(Σᵢ|r'×r''|ᵢ·|r'''ᵢ|)²` evaluated on
+    /// the absolute values of the coefficients (`ρ = |r''|² − σ'²` as [`Self::rho`]
+    /// computes it in `f64`; the cross product with its differences turned into sums).
+    /// The residual is compared with these, not with the largest coefficient: the
+    /// identity cancels terms far larger than its coefficients when the end tangents
+    /// differ in size by orders of magnitude (start derivative `(1000, 0, 1)`, end
+    /// derivative `(0, 1, 1)`: terms near 10²⁴, residual 10¹⁶ from rounding alone).
+    fn lancret_magnitude(&self, h: &HelixData<F>) -> Vec<f64> {
+        let abs = |p: &Poly<F>| Poly::new(p.coeffs().iter().map(|c| c.to_f64().abs()).collect());
+        let r = [abs(&self.r[0]), abs(&self.r[1]), abs(&self.r[2])];
+        let d1 = pderiv(&r);
+        let d2 = pderiv(&d1);
+        let d3 = pderiv(&d2);
+        let ds = abs(&self.sigma).derivative();
+        let rho = &pdot(&d2, &d2) + &(&ds * &ds);
+        let cross = [
+            &(&d1[1] * &d2[2]) + &(&d1[2] * &d2[1]),
+            &(&d1[2] * &d2[0]) + &(&d1[0] * &d2[2]),
+            &(&d1[0] * &d2[1]) + &(&d1[1] * &d2[0]),
+        ];
+        let trip = pdot(&cross, &d3);
+        let m = &rho.pow(3) + &(&trip * &trip).scale(&h.tan2_psi().to_f64().abs());
+        m.coeffs().to_vec()
     }
 
     /// Certificates of an outcome of [`Self::helix_test`]: [`Self::certify_helix`] for an

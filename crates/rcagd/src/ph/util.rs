@@ -81,6 +81,30 @@ pub(crate) fn identity_cert<F: Scalar>(
     })
 }
 
+/// A certificate for the polynomial identity `lhs ≡ rhs`; for `f64`, coefficient `k` of
+/// the residual is compared with [`F64_TOL`]` · magnitude[k]` (a bound of the sum of the
+/// absolute values of the terms that make up that coefficient) instead of the largest
+/// coefficient. Exact scalars need the residual to vanish.
+pub(crate) fn identity_cert_within<F: Scalar>(
+    property: impl Into<String>,
+    lhs: &Poly<F>,
+    rhs: &Poly<F>,
+    magnitude: &[f64],
+) -> Certificate {
+    let diff = lhs - rhs;
+    let ok = diff.coeffs().iter().enumerate().all(|(k, c)| {
+        if F::EXACT {
+            c.is_zero()
+        } else {
+            let v = c.to_f64().abs();
+            v.is_finite() && v <= F64_TOL * magnitude.get(k).copied().unwrap_or(0.0)
+        }
+    });
+    Certificate::decide(property, ok, F::EXACT, || {
+        format!("residual polynomial {}", format_poly(&diff, "t"))
+    })
+}
+
 /// A certificate for the scalar identity `lhs = rhs`.
 pub(crate) fn scalar_cert<F: Scalar>(property: impl Into<String>, lhs: &F, rhs: &F) -> Certificate {
     let diff = lhs.clone() - rhs.clone();
