@@ -3,6 +3,7 @@
 
 mod canal_cyclographic;
 mod canal_hypersurface;
+mod canal_krasauskas_ext;
 mod canal_props;
 mod cyclide;
 mod hermite_enclosure;
