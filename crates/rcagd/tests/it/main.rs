@@ -11,6 +11,7 @@ mod hypercyclide;
 mod laguerre_props;
 mod laguerre_query;
 mod line_generation;
+mod lines_order_bound;
 mod lines_props;
 mod ndim;
 mod ph_approximation;
