@@ -160,6 +160,29 @@ fn a_polynomial_family_over_a_quadratic_field_goes_below_the_bound() {
     }
 }
 
+/// Gruber (2.19), `m = (u, 0, u²)`, `r = u²/4`, `D = 1 + (15/4)u²` (needs `Q(√15)`): a
+/// quadratic polynomial family already at the bound `(4, 2)` with Peternell–Pottmann; the
+/// reduction over `Q(√15)(i)` gives `(4, 2)` too (no change of the lowest degree).
+#[test]
+fn gruber_2_19_over_q_sqrt_15() {
+    let spine = CanalSpine::polynomial(
+        [p(&[0, 1]), p(&[]), p(&[0, 0, 1])],
+        Poly::new(vec![q(0), q(0), Rational::from_ratio(1, 4)]),
+    );
+    assert_eq!(krasauskas_bound(&spine).expect("bound").bidegree, (4, 2));
+    for (method, want) in [
+        (Method::PeternellPottmann, (4, 2)),
+        (Method::Krasauskas, (4, 2)),
+        (Method::Lowest, (4, 2)),
+    ] {
+        let b = build(&spine, method);
+        assert_eq!(b.radicand(), Some(&q(15)), "{method:?}");
+        assert_eq!(b.degree(), want, "{method:?}");
+        assert!(b.all_hold(), "{method:?}: {:?}", b.certify());
+        check_f64(&spine, &b);
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(16))]
 
