@@ -275,3 +275,24 @@ fn search_families_needing_an_extension() {
         );
     }
 }
+
+/// Build times over `Q(√d)` per method (debug build; printed, run by hand).
+#[test]
+#[ignore]
+fn build_times_over_a_quadratic_field() {
+    for (spine, d) in rational_quadratic_families() {
+        for method in [Method::PeternellPottmann, Method::Lowest] {
+            let t0 = std::time::Instant::now();
+            let b = build(&spine, method);
+            let built = t0.elapsed();
+            let t1 = std::time::Instant::now();
+            assert!(b.all_hold());
+            println!(
+                "d = {d} {method:?}: {:?}, build {:.1} ms, certify {:.1} ms",
+                b.degree(),
+                built.as_secs_f64() * 1e3,
+                t1.elapsed().as_secs_f64() * 1e3
+            );
+        }
+    }
+}
