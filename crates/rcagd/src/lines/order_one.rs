@@ -168,8 +168,9 @@ pub struct OrderClass {
     pub mu: usize,
     /// The raw counts `(m·μ, n·μ, μ)` per independent choice.
     pub counts: Vec<Option<(usize, usize, usize)>>,
-    /// The upper bound of `(m + n)·μ` by Bézout minus the rational base points
-    /// ([`super::order_bound`]); `None` if it could not be computed.
+    /// The upper bound of `(m + n)·μ` by Bézout minus the base points found (rational
+    /// finite ones, every one at infinity; [`super::order_bound`]); `None` if it could not
+    /// be computed.
     pub upper: Option<super::order_bound::BezoutBound>,
 }
 

@@ -134,3 +134,70 @@ fn bounds_of_known_congruences() {
     let oc = c.order_class(3).expect("decided");
     check("cubic chords", &oc, (1, 3, 2), true, 8);
 }
+
+mod props {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn lin(a: [i64; 4], b: [i64; 4], var: usize) -> [MPoly<Rational>; 4] {
+        core::array::from_fn(|i| {
+            let mut e = [0u32; 2];
+            e[var] = 1;
+            &MPoly::constant(2, Rational::from(a[i]))
+                + &MPoly::monomial(2, &e, Rational::from(b[i]))
+        })
+    }
+
+    fn det4(m: [[i64; 4]; 4]) -> i64 {
+        let mut d = 0i64;
+        for k in 0..24 {
+            let perm = nth_perm(k);
+            d += perm_sign(&perm) * (0..4).map(|r| m[r][perm[r]]).product::<i64>();
+        }
+        d
+    }
+
+    fn nth_perm(mut k: usize) -> [usize; 4] {
+        let mut items = vec![0usize, 1, 2, 3];
+        let mut out = [0usize; 4];
+        for (i, f) in [6usize, 2, 1, 1].iter().enumerate() {
+            let j = k / f;
+            k %= f;
+            out[i] = items.remove(j);
+        }
+        out
+    }
+
+    fn perm_sign(p: &[usize; 4]) -> i64 {
+        let mut s = 1;
+        for i in 0..4 {
+            for j in i + 1..4 {
+                if p[i] > p[j] {
+                    s = -s;
+                }
+            }
+        }
+        s
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(16))]
+
+        /// The lines meeting two random skew lines (a hyperbolic net, `p = A + uB`,
+        /// `q = C + vD`): order 1 and class 1 exactly (bidegree (1, 1): `2·1·1 = 2`).
+        #[test]
+        fn random_nets_are_exact(
+            a in proptest::array::uniform4(-4i64..5),
+            b in proptest::array::uniform4(-4i64..5),
+            c in proptest::array::uniform4(-4i64..5),
+            d in proptest::array::uniform4(-4i64..5),
+        ) {
+            prop_assume!(det4([a, b, c, d]) != 0);
+            let cong = ParametrizedCongruence::new(lin(a, b, 0), lin(c, d, 1)).expect("net");
+            let oc = cong.order_class(3).expect("decided");
+            prop_assert_eq!((oc.order, oc.class, oc.mu), (1, 1, 1));
+            prop_assert!(oc.exact(), "{}", oc.describe());
+            prop_assert!(oc.exact_certificate().holds);
+        }
+    }
+}
