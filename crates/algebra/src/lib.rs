@@ -15,6 +15,7 @@ pub mod complex;
 pub mod conic_point;
 pub mod error;
 pub mod factor;
+pub mod factor_ext;
 pub mod integer;
 pub mod interval;
 pub mod linalg;

@@ -4,6 +4,7 @@
 mod big_integers;
 mod conic_point_props;
 mod conic_point_rows;
+mod factor_ext;
 mod fields_linalg;
 mod plane_positivity;
 mod roots_resultants;

@@ -33,7 +33,7 @@
 //!
 //! **Degree.** The exact builder tries every admissible axis and every choice of Gaussian
 //! factors of `D` (Gruber (2.35)) with this construction and with Krasauskas' reduced
-//! pencil ([`super::krasauskas`], over `Q`), and keeps the lowest bidegree ([`Method`]); the
+//! pencil ([`super::krasauskas`], over `Q` or over the field `Q(√d)` of the split), and keeps the lowest bidegree ([`Method`]); the
 //! Krasauskas bound of Gruber Satz 2 (2.37) is computed by [`krasauskas_bound`] for
 //! comparison — note docs/math/lines-and-canal.md, Errata G9: as printed it holds for rational `γ` and overestimates
 //! for polynomial data (e.g. `m = (t, t²/2, 0)`, `r = t`: (2.37) gives `(6, 2)`, the
@@ -175,8 +175,8 @@ pub enum Method {
     Lowest,
     /// Only the Peternell–Pottmann construction (Gruber §2.1).
     PeternellPottmann,
-    /// Only Krasauskas' reduced pencil (Gruber §2.4; over `Q` only — a build whose split
-    /// needs `Q(√d)` is [`CanalError::NeedsLargerExtension`]).
+    /// Only Krasauskas' reduced pencil (Gruber §2.4; over `Q` with factors over `Q(i)`, or
+    /// over `Q(√d)` with factors over `Q(√d)(i)` when the split of `D` needs `√d`).
     Krasauskas,
 }
 
@@ -390,8 +390,13 @@ fn build_best<F: Scalar>(
     })
 }
 
-/// Builds `x(t, u)` from Krasauskas' reduced pencil for one axis choice
-/// ([`super::krasauskas`]).
+/// The irreducible factors of `det(a, b)` over the coefficient field with `i`, for step 3
+/// of the Krasauskas reduction ([`super::krasauskas`]).
+pub(crate) type Factors<'a, F> =
+    &'a dyn Fn(&Poly<rcagd_algebra::Complex<F>>) -> Vec<Poly<rcagd_algebra::Complex<F>>>;
+
+/// Builds `x(t, u)` from Krasauskas' reduced pencil for one axis choice over `Q`
+/// (factors over `Q(i)`, [`krasauskas::gaussian_factors_of`]).
 pub(crate) fn build_krasauskas(
     spine: &CanalSpine<Rational>,
     numerators: &[Poly<Rational>; 4],
@@ -399,8 +404,28 @@ pub(crate) fn build_krasauskas(
     axis: AxisChoice,
     balance_at: &Rational,
 ) -> Result<CanalSurface<Rational>, CanalError> {
-    let mut pencil =
-        krasauskas::reduced_pencil(numerators, g, axis, &krasauskas::gaussian_factors_of)?;
+    build_krasauskas_with(
+        spine,
+        numerators,
+        g,
+        axis,
+        balance_at,
+        &krasauskas::gaussian_factors_of,
+    )
+}
+
+/// Builds `x(t, u)` from Krasauskas' reduced pencil for one axis choice
+/// ([`super::krasauskas`]), over `Q` (factors over `Q(i)`) or `Q(√d)` (factors over
+/// `Q(√d)(i)`).
+pub(crate) fn build_krasauskas_with<F: krasauskas::RealRoots>(
+    spine: &CanalSpine<F>,
+    numerators: &[Poly<F>; 4],
+    g: &[Poly<F>; 2],
+    axis: AxisChoice,
+    balance_at: &Rational,
+    factors: Factors<'_, F>,
+) -> Result<CanalSurface<F>, CanalError> {
+    let mut pencil = krasauskas::reduced_pencil(numerators, g, axis, factors)?;
     pencil.balance_at(balance_at);
     let d = spine.discriminant()?;
     if krasauskas::has_interior_base_point(&pencil, &d)? {
@@ -429,14 +454,16 @@ pub(crate) fn build_krasauskas(
     ))
 }
 
-/// [`build_best`] over `Q`, also trying Krasauskas' reduced pencil for every admissible axis.
-fn build_best_rational(
-    spine: &CanalSpine<Rational>,
-    g: &[Poly<Rational>; 2],
+/// [`build_best`] over an exact field (`Q` or `Q(√d)`), also trying Krasauskas' reduced
+/// pencil for every admissible axis (step 3 with `factors`).
+fn build_best_exact<F: krasauskas::RealRoots>(
+    spine: &CanalSpine<F>,
+    g: &[Poly<F>; 2],
     axis: Option<AxisChoice>,
     method: Method,
     balance_at: &Rational,
-) -> Result<CanalSurface<Rational>, CanalError> {
+    factors: Factors<'_, F>,
+) -> Result<CanalSurface<F>, CanalError> {
     let (mut best, err) = match method {
         Method::PeternellPottmann => return build_best(spine, g, axis),
         Method::Krasauskas => (None, None),
@@ -451,7 +478,7 @@ fn build_best_rational(
         None => AxisChoice::all().to_vec(),
     };
     for a in axes {
-        if let Ok(s) = build_krasauskas(spine, &numerators, g, a, balance_at) {
+        if let Ok(s) = build_krasauskas_with(spine, &numerators, g, a, balance_at, factors) {
             let better = match &best {
                 None => true,
                 Some(b) => degree_key(&s) < degree_key(b),
@@ -669,26 +696,33 @@ pub fn canal_surface(
             }
         };
         let built = match &sos {
-            SumOfSquares::Rational { g1, g2 } => build_best_rational(
+            SumOfSquares::Rational { g1, g2 } => build_best_exact(
                 &spine,
                 &[g1.clone(), g2.clone()],
                 options.axis,
                 options.method,
                 &mid,
+                &krasauskas::gaussian_factors_of,
             )
             .map(|mut s| {
                 s.reparametrized = reparam.clone();
                 s.domain = options.domain.clone();
                 CanalBuild::Rational(s)
             }),
-            SumOfSquares::Extension { .. } if options.method == Method::Krasauskas => {
-                Err(CanalError::NeedsLargerExtension(
-                    "Krasauskas' pencil is built over Q(i) only, and this split of D needs a quadratic field (use the method lowest or peternell-pottmann)".into(),
-                ))
-            }
             SumOfSquares::Extension { radicand, g1, g2 } => {
                 let se = spine.map_scalar(|x| QuadExt::rational(x.clone()));
-                build_best(&se, &[g1.clone(), g2.clone()], options.axis).map(|mut s| {
+                let factors = |l: &Poly<rcagd_algebra::Complex<QuadExt>>| {
+                    krasauskas::biquadratic_factors_of(l, radicand)
+                };
+                build_best_exact(
+                    &se,
+                    &[g1.clone(), g2.clone()],
+                    options.axis,
+                    options.method,
+                    &mid,
+                    &factors,
+                )
+                .map(|mut s| {
                     s.reparametrized = reparam.clone();
                     s.domain = options.domain.clone();
                     CanalBuild::Extension {

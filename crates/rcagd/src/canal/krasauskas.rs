@@ -43,15 +43,29 @@
 //!
 //! **What it reaches.** Gruber Satz 2 states the degree `(k + n, 2)`,
 //! `n = 2 max(k − 1, 2k − 2 − Σ⌈pᵢ/2⌉)` ([`super::krasauskas_bound`]), over `C`: the
-//! operations may need the roots of `D`. Over the field of the data (`Q(i)`, or
-//! `Q(√d)(i)`), step 3 needs the irreducible factors of `det(a, b)` over that field; when
-//! they are of higher degree the reduction can stop above the bound, and the result says
-//! which degree it reached. docs/math/lines-and-canal.md, Errata G9: for polynomial data the bound (2.37) itself can
+//! operations may need the roots of `D`. Over the field of the data, step 3 needs the
+//! irreducible factors of `det(a, b)` over that field with `i`:
+//! * over `Q` the factors over `Q(i)` ([`gaussian_factors_of`], complete);
+//! * over `Q(√d)` (a split `D = g₁² + g₂²` that needs `√d`) the factors over
+//!   `K = Q(√d)(i)` ([`biquadratic_factors_of`], Trager's norm method with the primitive
+//!   element `√d + i`, [`rcagd_algebra::factor_ext`]): complete — linear factors (roots in
+//!   `K`), factors over `Q(i)`, `Q(√d)` and `Q(√−d)` alike — unless a Zassenhaus
+//!   factorization over `Q` gives up (more than 16 modular factors); then only the
+//!   factors over `Q(i)` and the `gcd`s of `det(a, b)` with the `Q`-irreducible factors of
+//!   its norm are found, and the `K`-irreducible pieces of such a `gcd` are the factors
+//!   *not found*.
+//!
+//! When the factors of `det(a, b)` over the field are of degree > 1 (roots of `D` outside
+//! `K`), the reduction can stop above the bound, and the result says which degree it
+//! reached (e.g. `D = (t² − (4 + 2i)t − 1)(t² − (4 − 2i)t − 1)`, roots `2 ± i ± 2√(1 ± i)`:
+//! `(6, 2)` against `(4, 2)`). docs/math/lines-and-canal.md, Errata G9: for polynomial data the bound (2.37) itself can
 //! be exceeded by the construction's own degree being lower. The builders of
 //! [`super::canal_surface`] try this construction and the Peternell–Pottmann one for every
-//! axis and split and keep the lowest bidegree (e.g. the ring torus and the Dupin cyclide
-//! from rational circle spines come out biquadratic, `(2, 2)`, where the first pencil gives
-//! `(6, 2)`).
+//! axis and split, over `Q` and over `Q(√d)`, and keep the lowest bidegree (e.g. the ring
+//! torus and the Dupin cyclide from rational circle spines come out biquadratic, `(2, 2)`,
+//! where the first pencil gives `(6, 2)`; a rational quadratic family with
+//! `D = 3(t⁴ + 6t² + 1)`, which needs `Q(√3)`, comes out `(4, 2)` = (2.37), where
+//! Peternell–Pottmann gives `(6, 2)`).
 //!
 //! **Base points.** A real root `t₀` of `det(a, b)` with `D(t₀) ≠ 0` would collapse the
 //! iso-curve `x(t₀, ·)` to a point; a pencil with such a root is rejected
@@ -63,7 +77,7 @@ use num_traits::{One, Zero};
 use rcagd_algebra::complex::{conj_poly, re_im_polys};
 use rcagd_algebra::linalg::{solve, Matrix};
 use rcagd_algebra::roots::isolate_real_roots;
-use rcagd_algebra::{Complex, Poly, Rational, Scalar};
+use rcagd_algebra::{Complex, Poly, QuadExt, Rational, Scalar};
 
 type CPoly<F> = Poly<Complex<F>>;
 
@@ -382,7 +396,7 @@ impl<F: Scalar> Pencil<F> {
     }
 }
 
-impl Pencil<Rational> {
+impl<F: Scalar> Pencil<F> {
     /// A constant real change of the pencil basis (a real Möbius map of `u`, which keeps the
     /// circles and the degree) that makes `a(t₀)` and `b(t₀)` orthogonal
     /// (`Re⟨a, b⟩ = 0`) and of nearly equal length (a rational factor within 1/64 of
@@ -390,8 +404,8 @@ impl Pencil<Rational> {
     /// Bernstein coefficients on the charts `u ∈ [−1, 0], [0, 1]` (and `u ↦ 1/u`) are
     /// positive near `t₀`.
     pub fn balance_at(&mut self, t0: &Rational) {
-        let z = Complex::from_real(t0.clone());
-        let ev = |p: &CPoly<Rational>| p.eval(&z);
+        let z = Complex::from_real(F::from_rational(t0));
+        let ev = |p: &CPoly<F>| p.eval(&z);
         let (a0, a1) = (ev(&self.a[0]), ev(&self.a[1]));
         let (b0, b1) = (ev(&self.b[0]), ev(&self.b[1]));
         let aa = a0.norm_sq() + a1.norm_sq();
@@ -410,8 +424,30 @@ impl Pencil<Rational> {
         }
         let ratio = Scalar::to_f64(&(aa / bb)).sqrt();
         let num = (ratio * 64.0).round().clamp(1.0, 1e12) as i64;
-        let lambda = Complex::from_real(Rational::from_ratio(num, 64));
+        let lambda = Complex::from_real(F::from_ratio(num, 64));
         self.b = [b[0].scale(&lambda), b[1].scale(&lambda)];
+    }
+}
+
+/// The scalars whose real-root question is decided exactly here: `Q` (real-root isolation)
+/// and `Q(√d)` (through the norm, [`rcagd_algebra::factor_ext::has_real_root_quad`]).
+pub(crate) trait RealRoots: Scalar {
+    /// Whether the non-zero `g` has a real root.
+    ///
+    /// # Errors
+    /// From real-root isolation.
+    fn has_real_root(g: &Poly<Self>) -> Result<bool, CanalError>;
+}
+
+impl RealRoots for Rational {
+    fn has_real_root(g: &Poly<Self>) -> Result<bool, CanalError> {
+        Ok(!isolate_real_roots(g)?.is_empty())
+    }
+}
+
+impl RealRoots for QuadExt {
+    fn has_real_root(g: &Poly<Self>) -> Result<bool, CanalError> {
+        Ok(rcagd_algebra::factor_ext::has_real_root_quad(g)?)
     }
 }
 
@@ -419,9 +455,9 @@ impl Pencil<Rational> {
 ///
 /// # Errors
 /// From real-root isolation.
-pub(crate) fn has_interior_base_point(
-    pencil: &Pencil<Rational>,
-    d: &Poly<Rational>,
+pub(crate) fn has_interior_base_point<F: RealRoots>(
+    pencil: &Pencil<F>,
+    d: &Poly<F>,
 ) -> Result<bool, CanalError> {
     let l = pencil.det();
     let (re, im) = re_im_polys(&l);
@@ -443,7 +479,7 @@ pub(crate) fn has_interior_base_point(
     if g.degree().is_none_or(|k| k == 0) {
         return Ok(false);
     }
-    Ok(!isolate_real_roots(&g)?.is_empty())
+    F::has_real_root(&g)
 }
 
 /// The Krasauskas pencil of a spine for one axis and split (module docs), reduced.
@@ -497,6 +533,17 @@ pub(crate) fn gaussian_factors_of(l: &CPoly<Rational>) -> Vec<CPoly<Rational>> {
         }
     }
     out
+}
+
+/// Irreducible factors over `K = Q(√d)(i)` of `l ∈ K[t]` that divide `l`
+/// ([`rcagd_algebra::factor_ext::factor_biquadratic`]: complete unless a factorization over
+/// `Q` gives up; then the factors over `Q(i)` and the `gcd`s with the `Q`-irreducible
+/// factors of the norm, which may be reducible over `K`). Empty on failure.
+pub(crate) fn biquadratic_factors_of(l: &CPoly<QuadExt>, d: &Rational) -> Vec<CPoly<QuadExt>> {
+    match rcagd_algebra::factor_ext::factor_biquadratic(l, d) {
+        Ok(f) => f.factors,
+        Err(_) => Vec::new(),
+    }
 }
 
 #[cfg(test)]

@@ -43,11 +43,13 @@
 //!   `(13, 2)`).
 //!
 //! **Limits of the degree reduction.** The bound of Satz 2 (2.37) ([`krasauskas_bound`]) is
-//! over `C`; the reduction works over the field of the data (`Q(i)`), so when the factors of
-//! `det(a, b)` are irreducible over `Q(i)` of degree > 1 it can stop above the bound (test
-//! `seed003_examples::s003_2_4_krasauskas_reduction`: `(6, 2)` against `(4, 2)`); builds
-//! over `Q(√d)` use Peternell–Pottmann only. docs/math/lines-and-canal.md, Errata G9: for polynomial data the bound
-//! can be *above* what the constructions reach.
+//! over `C`; the reduction works over the field of the data with `i` (`Q(i)`, or
+//! `Q(√d)(i)` when the split of `D` needs `√d`: [`krasauskas`], factors by Trager's norm
+//! method in [`rcagd_algebra::factor_ext`]), so when the factors of `det(a, b)` are
+//! irreducible over that field of degree > 1 it can stop above the bound (test
+//! `seed003_examples::s003_2_4_krasauskas_reduction`: `(6, 2)` against `(4, 2)`; over
+//! `Q(√3)` the bound is reached: `canal_krasauskas_ext`). docs/math/lines-and-canal.md,
+//! Errata G9: for polynomial data the bound can be *above* what the constructions reach.
 
 pub mod approximate_pipe;
 pub mod bipoly;

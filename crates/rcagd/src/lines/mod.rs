@@ -41,6 +41,7 @@ pub mod congruence;
 pub mod drawing;
 pub mod generation;
 pub mod net;
+pub mod order_bound;
 pub mod order_one;
 pub mod parametrized;
 pub mod plucker;

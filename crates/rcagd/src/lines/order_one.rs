@@ -168,9 +168,80 @@ pub struct OrderClass {
     pub mu: usize,
     /// The raw counts `(m·μ, n·μ, μ)` per independent choice.
     pub counts: Vec<Option<(usize, usize, usize)>>,
+    /// The upper bound of `(m + n)·μ` by Bézout minus the base points found (rational
+    /// finite ones, every one at infinity; [`super::order_bound`]); `None` if it could not
+    /// be computed.
+    pub upper: Option<super::order_bound::BezoutBound>,
 }
 
 impl OrderClass {
+    /// `true` if the proved lower bounds meet the upper bound: `m·μ + n·μ` (the counts,
+    /// lower bounds of the generic ones) equals the Bézout bound of `(m + n)·μ`, so both
+    /// counts are the generic ones ([`super::order_bound`]).
+    pub fn exact(&self) -> bool {
+        self.upper
+            .as_ref()
+            .is_some_and(|u| u.bound == (self.order + self.class) * self.mu)
+    }
+
+    /// The largest order and class the bounds allow: `m ≤ (U − n·μ)/μ`, `n ≤ (U − m·μ)/μ`
+    /// for the upper bound `U` of `(m + n)·μ` (`None` without a bound).
+    pub fn at_most(&self) -> Option<(usize, usize)> {
+        let u = self.upper.as_ref()?.bound;
+        let mu = self.mu.max(1);
+        Some((
+            u.saturating_sub(self.class * mu) / mu,
+            u.saturating_sub(self.order * mu) / mu,
+        ))
+    }
+
+    /// A sentence: `order m, class n (exact)` when the bounds meet, else
+    /// `order at least m (at most m'), class at least n (at most n')`.
+    pub fn describe(&self) -> String {
+        match (self.exact(), self.at_most()) {
+            (true, _) => format!(
+                "order {}, class {} (exact: the lower bounds meet the Bézout bound (m + n)·μ ≤ {})",
+                self.order,
+                self.class,
+                (self.order + self.class) * self.mu
+            ),
+            (false, Some((m, n))) => format!(
+                "order at least {} (at most {m}), class at least {} (at most {n})",
+                self.order, self.class
+            ),
+            (false, None) => format!(
+                "order at least {}, class at least {} (no upper bound)",
+                self.order, self.class
+            ),
+        }
+    }
+
+    /// The certificate that order and class are exact: the counts (proved lower bounds)
+    /// reach the Bézout upper bound of `(m + n)·μ`.
+    pub fn exact_certificate(&self) -> Certificate {
+        Certificate::decide(
+            format!(
+                "order {} and class {} exact: (m + n)·μ = {} reaches the upper bound Bézout − Σ base-point multiplicities²",
+                self.order,
+                self.class,
+                (self.order + self.class) * self.mu
+            ),
+            self.exact(),
+            true,
+            || match &self.upper {
+                Some(u) => format!(
+                    "upper bound {} in {} (Bézout {}, base points {:?}): {}",
+                    u.bound,
+                    u.compactification,
+                    u.bezout,
+                    u.base_points,
+                    self.describe()
+                ),
+                None => "no upper bound computed".into(),
+            },
+        )
+    }
+
     /// How many choices reached the stated `(m·μ, n·μ, μ)`.
     pub fn agreeing(&self) -> usize {
         let want = (self.order * self.mu, self.class * self.mu, self.mu);
@@ -251,6 +322,7 @@ pub fn order_and_class_decided(
         class: best.1 / best.2,
         mu: best.2,
         counts,
+        upper: super::order_bound::degree_upper_bound(p, q).ok(),
     })
 }
 

@@ -15,7 +15,10 @@
 //! pseudo-random choices. The count is exact for generic choices and can only drop for a
 //! non-generic coincidence; `order_class(trials)` repeats it at independent pseudo-random
 //! choices, takes the maximum and certifies that two choices reach it
-//! ([`OrderClass::certificate`]).
+//! ([`OrderClass::certificate`]); the maxima are proved lower bounds, and the Bézout bound
+//! of `(m + n)·μ` minus the base points ([`super::order_bound`]) is the upper bound: when
+//! they meet, order and class are exact ([`OrderClass::exact`],
+//! [`OrderClass::exact_certificate`]), otherwise [`OrderClass::describe`] says "at least".
 
 use super::net::plane3;
 use super::order_one::{

@@ -3,6 +3,7 @@
 
 mod canal_cyclographic;
 mod canal_hypersurface;
+mod canal_krasauskas_ext;
 mod canal_props;
 mod cyclide;
 mod hermite_enclosure;
@@ -10,6 +11,7 @@ mod hypercyclide;
 mod laguerre_props;
 mod laguerre_query;
 mod line_generation;
+mod lines_order_bound;
 mod lines_props;
 mod ndim;
 mod ph_approximation;
