@@ -40,9 +40,17 @@ fn median(mut f: impl FnMut(), runs: usize) -> Duration {
 fn main() {
     let cases = [
         // the gallery's pipe_ph_quintic (preimage 1, i + k, 1 + j), r = 1/10
-        ("gallery quintic, r = 1/10", [[1, 0, 0, 0], [0, 1, 0, 1], [1, 0, 1, 0]], (1, 10)),
+        (
+            "gallery quintic, r = 1/10",
+            [[1, 0, 0, 0], [0, 1, 0, 1], [1, 0, 1, 0]],
+            (1, 10),
+        ),
         // issue 17's quintic, r = 1/8
-        ("issue quintic, r = 1/8", [[1, 0, 0, 0], [1, 1, 0, 1], [0, 0, 1, 1]], (1, 8)),
+        (
+            "issue quintic, r = 1/8",
+            [[1, 0, 0, 0], [1, 1, 0, 1], [0, 0, 1, 1]],
+            (1, 8),
+        ),
     ];
     let (zero, one) = (Rational::from(0), Rational::from(1));
     println!("| spine | global check | pipe build + all certificates |");
