@@ -5,7 +5,9 @@
 //! Run: `cargo bench -p rcagd-benches --bench pipe_speed` (release profile, no extra
 //! dependencies).
 
-use rcagd::canal::{check_pipe_embedded, pipe_around_ph_exportable, CanalSpine, Orientation};
+use rcagd::canal::{
+    check_pipe_embedded, check_pipe_regularity, pipe_around_ph_exportable, CanalSpine, Orientation,
+};
 use rcagd::ph::PhCurve;
 use rcagd::Certified;
 use rcagd_algebra::quaternion::Quaternion;
@@ -53,12 +55,27 @@ fn main() {
         ),
     ];
     let (zero, one) = (Rational::from(0), Rational::from(1));
-    println!("| spine | global check | pipe build + all certificates |");
-    println!("| --- | --- | --- |");
+    println!("| spine | local check r·κ < 1 | global check | pipe build + all certificates | of which certify() |");
+    println!("| --- | --- | --- | --- | --- |");
     for (name, a, (p, d)) in cases {
         let c = quintic(a);
         let r = Rational::from_ratio(p, d);
         let s = CanalSpine::polynomial(c.position().clone(), Poly::constant(r.clone()));
+        let local = median(
+            || {
+                let cert = check_pipe_regularity(&s, (&zero, &one)).expect("regular");
+                assert!(cert.holds);
+            },
+            21,
+        );
+        let built = pipe_around_ph_exportable(&c, &r, (&zero, &one), Orientation::Positive)
+            .expect("pipe");
+        let certify = median(
+            || {
+                std::hint::black_box(built.certify());
+            },
+            11,
+        );
         let global = median(
             || {
                 let cert = check_pipe_embedded(&s, (&zero, &one)).expect("embedded");
@@ -76,10 +93,13 @@ fn main() {
             },
             11,
         );
+        let ms = |d: Duration| d.as_secs_f64() * 1e3;
         println!(
-            "| {name} | {:.2} ms | {:.2} ms |",
-            global.as_secs_f64() * 1e3,
-            full.as_secs_f64() * 1e3
+            "| {name} | {:.2} ms | {:.2} ms | {:.2} ms | {:.2} ms |",
+            ms(local),
+            ms(global),
+            ms(full),
+            ms(certify)
         );
     }
 }
