@@ -68,8 +68,8 @@ fn main() {
             },
             21,
         );
-        let built = pipe_around_ph_exportable(&c, &r, (&zero, &one), Orientation::Positive)
-            .expect("pipe");
+        let built =
+            pipe_around_ph_exportable(&c, &r, (&zero, &one), Orientation::Positive).expect("pipe");
         let certify = median(
             || {
                 std::hint::black_box(built.certify());

@@ -21,9 +21,9 @@
 //! discs) when one is found ([`CanalError::PipeSelfIntersects`]), else names the box
 //! ([`CanalError::TubePartsNotApart`], undecided).
 //!
-//! **Speed without giving up the proof** (`docs/math/pipes.md#global-speed`): the exact
-//! Bernstein coefficients are computed once per piece (univariate bounds) and once per pair
-//! of pieces (the tensors), converted to `f64` with a proven bound `e` on the conversion
+//! **Speed without giving up the proof** (`docs/math/pipes.md`, "Global check: f64
+//! filters"): the exact Bernstein coefficients are computed once per piece (univariate
+//! bounds) and once per pair of pieces (the tensors), converted to `f64` with a proven bound `e` on the conversion
 //! error, and subdivided by `f64` de Casteljau at `1/2`. Every level of de Casteljau is a
 //! convex average: it adds at most `u·M + 2⁻¹⁰⁷⁴` to the error bound (`u = 2⁻⁵³`, `M` a bound
 //! of the magnitudes; N. J. Higham, "Accuracy and Stability of Numerical Algorithms", 2nd
