@@ -1898,6 +1898,14 @@ fn exact_tensors<'a>(
         .ok_or_else(|| CanalError::InvalidArgument("internal: box without tensors".into()))
 }
 
+/// Lemma A (`docs/math/pipes.md`, "Global"): `κ_max(ρ + κ_max L²/2) < 1` from upper bounds
+/// `κ_max² ≤ k2`, `L ≤ len` (square roots rounded up).
+fn lemma_a_exact(k2: &Rational, len: &Rational, rho2: &Rational) -> bool {
+    let k = sqrt_upper(k2);
+    let inner = sqrt_upper(rho2) + k * len.clone() * len.clone() * half();
+    k2.clone() * inner.clone() * inner < Rational::ONE
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -2096,12 +2104,4 @@ mod tests {
             }
         }
     }
-}
-
-/// Lemma A (`docs/math/pipes.md`, "Global"): `κ_max(ρ + κ_max L²/2) < 1` from upper bounds
-/// `κ_max² ≤ k2`, `L ≤ len` (square roots rounded up).
-fn lemma_a_exact(k2: &Rational, len: &Rational, rho2: &Rational) -> bool {
-    let k = sqrt_upper(k2);
-    let inner = sqrt_upper(rho2) + k * len.clone() * len.clone() * half();
-    k2.clone() * inner.clone() * inner < Rational::ONE
 }
