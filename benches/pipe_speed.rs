@@ -6,7 +6,8 @@
 //! dependencies).
 
 use rcagd::canal::{
-    check_pipe_embedded, check_pipe_regularity, pipe_around_ph_exportable, CanalSpine, Orientation,
+    check_pipe_embedded, check_pipe_regularity, pipe_around_ph_exportable, pipe_around_ph_with,
+    CanalSpine, Method, Orientation,
 };
 use rcagd::ph::PhCurve;
 use rcagd::Certified;
@@ -55,8 +56,8 @@ fn main() {
         ),
     ];
     let (zero, one) = (Rational::from(0), Rational::from(1));
-    println!("| spine | local check r·κ < 1 | global check | pipe build + all certificates | of which certify() |");
-    println!("| --- | --- | --- | --- | --- |");
+    println!("| spine | local check r·κ < 1 | global check | pipe build + all certificates | of which certify() | build, Peternell–Pottmann only | build, Krasauskas only |");
+    println!("| --- | --- | --- | --- | --- | --- | --- |");
     for (name, a, (p, d)) in cases {
         let c = quintic(a);
         let r = Rational::from_ratio(p, d);
@@ -93,13 +94,27 @@ fn main() {
             },
             11,
         );
+        let only = |m: Method| {
+            median(
+                || {
+                    let e = pipe_around_ph_with(&c, &r, (&zero, &one), Orientation::Positive, m)
+                        .expect("pipe");
+                    std::hint::black_box(e);
+                },
+                11,
+            )
+        };
+        let pp = only(Method::PeternellPottmann);
+        let kr = only(Method::Krasauskas);
         let ms = |d: Duration| d.as_secs_f64() * 1e3;
         println!(
-            "| {name} | {:.2} ms | {:.2} ms | {:.2} ms | {:.2} ms |",
+            "| {name} | {:.2} ms | {:.2} ms | {:.2} ms | {:.2} ms | {:.2} ms | {:.2} ms |",
             ms(local),
             ms(global),
             ms(full),
-            ms(certify)
+            ms(certify),
+            ms(pp),
+            ms(kr)
         );
     }
 }
