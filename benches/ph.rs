@@ -1,7 +1,7 @@
-//! Spatial PH curves (seed 001): Hermite solves, arc length and frames, against what a
+//! Spatial PH curves (Besednjak, docs/math/ph-curves.md): Hermite solves, arc length and frames, against what a
 //! kernel without PH structure does with the same curve.
 //!
-//! Curve: the least-energy helical PH quintic of seed 001 Example 9.1 (`p_s = 0`,
+//! Curve: the least-energy helical PH quintic of Besednjak Example 9.1 (`p_s = 0`,
 //! `d_s = (1,0,1)`, `p_f = (1,1,1)`, `d_f = (0,1,1)`), in `f64`. `N = 1000` parameters
 //! `t_k = k/(N−1)`.
 //!

@@ -2,7 +2,7 @@
 //! section "Exact pipe vs swept-circle approximation").
 //!
 //! * **Exact:** `rcagd::canal::pipe_around_ph_pole_free` — the rational pipe of radius `r`
-//!   around a spatial PH quintic (split `D = σ²`, seed 003 §2.1) on `t ∈ [0, 1]`, in a frame
+//!   around a spatial PH quintic (split `D = σ²`, Gruber 2008 §2.1) on `t ∈ [0, 1]`, in a frame
 //!   (rational reflection) without base points there; exact (`Rational`) and the same
 //!   construction in `f64`; construction and certification (the canal identities as
 //!   polynomial identities).

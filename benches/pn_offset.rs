@@ -1,6 +1,6 @@
 //! Exact PN offsets against the approximated offsets a CAD kernel makes.
 //!
-//! Two PN surfaces of seed 004 on a parameter rectangle, offset at a rational distance:
+//! Two PN surfaces of Peternell (docs/math/laguerre-pn.md) on a parameter rectangle, offset at a rational distance:
 //!
 //! * the PN surface of the cubic graph `F = u³/3 − uv + v²/2 + 5` of the isotropic model
 //!   (Theorem 4.3) on `[−1/2, 1/2]²`, `d = 1/4` (the gallery surface `pn_cubic_graph`;

@@ -1,5 +1,5 @@
-//! Mapping a rational bicubic patch (bidegree (3,3)) onto the unit sphere by the seed's
-//! δ (seed 000 (9), notes 000-3: polar-form rule, result bidegree (6,6)) and certifying
+//! Mapping a rational bicubic patch (bidegree (3,3)) onto the unit sphere by Jüttler's
+//! δ (Jüttler (9); docs/math/quadrics.md, "The map δ onto the sphere": polar-form rule, result bidegree (6,6)) and certifying
 //! `Xᵀ Q X ≡ 0`, exact (`Rational`) and `f64`; in the same run the peer comparison of the
 //! two ways to get points of the sphere patch on a 32 × 32 grid:
 //!
