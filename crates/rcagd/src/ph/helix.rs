@@ -80,6 +80,9 @@ impl<F: Scalar> PhPolyCurve<F> {
     /// # Errors
     /// None at present (kept fallible for degenerate inputs).
     pub fn helix_test(&self) -> Result<HelixTest<F>, PhError> {
+        if let Some(a) = self.axis_from_ends() {
+            return Ok(HelixTest::Helix(HelixData { a }));
+        }
         let d = self.hodograph();
         let rows = d
             .iter()
@@ -113,6 +116,65 @@ impl<F: Scalar> PhPolyCurve<F> {
         }
     }
 
+    /// The axis of a helix from its ends: `a·r'(0) = σ(0)`, `a·r'(1) = σ(1)` and
+    /// `a·(r(1) − r(0)) = ∫₀¹σ` (the identity `a·r' ≡ σ` at both ends and integrated), by
+    /// Cramer's rule when the three vectors are independent, accepted when `a·r' ≡ σ`
+    /// holds: exactly, or for `f64` coefficientwise within [`F64_TOL`] of the sum of the
+    /// absolute values of the terms. A solution of `a·r' ≡ σ` satisfies the three
+    /// equations, so when they determine `a` this is the helix test; in `f64` it is far
+    /// better conditioned than the solve over all coefficients when the end tangents
+    /// differ in size by orders of magnitude (a nearly planar helix, `|a| = 1/cos ψ`
+    /// large, was taken for a planar curve).
+    fn axis_from_ends(&self) -> Option<[F; 3]> {
+        let d = self.hodograph();
+        let zero = F::zero();
+        let one = F::one();
+        let at = |p: &Poly<F>, t: &F| p.eval(t);
+        let chord: [F; 3] = std::array::from_fn(|i| self.r[i].eval(&one) - self.r[i].eval(&zero));
+        let rows = [
+            [at(&d[0], &zero), at(&d[1], &zero), at(&d[2], &zero)],
+            [at(&d[0], &one), at(&d[1], &one), at(&d[2], &one)],
+            chord,
+        ];
+        let length = self
+            .sigma
+            .coeffs()
+            .iter()
+            .enumerate()
+            .fold(F::zero(), |acc, (k, c)| {
+                acc + c.clone() / F::from_i64(k as i64 + 1)
+            });
+        let rhs = [self.sigma.eval(&zero), self.sigma.eval(&one), length];
+        let det3 = |m: &[[F; 3]; 3]| {
+            m[0][0].clone()
+                * (m[1][1].clone() * m[2][2].clone() - m[1][2].clone() * m[2][1].clone())
+                - m[0][1].clone()
+                    * (m[1][0].clone() * m[2][2].clone() - m[1][2].clone() * m[2][0].clone())
+                + m[0][2].clone()
+                    * (m[1][0].clone() * m[2][1].clone() - m[1][1].clone() * m[2][0].clone())
+        };
+        let det = det3(&rows);
+        // Hadamard's bound: |det| ≤ the product of the row lengths
+        let hadamard: f64 = rows
+            .iter()
+            .map(|r| r.iter().map(|x| x.to_f64().powi(2)).sum::<f64>().sqrt())
+            .product();
+        if det.is_zero() || (!F::EXACT && det.to_f64().abs() <= F64_TOL * hadamard) {
+            return None;
+        }
+        let a: [F; 3] = std::array::from_fn(|j| {
+            let mut m = rows.clone();
+            for (row, b) in m.iter_mut().zip(&rhs) {
+                row[j] = b.clone();
+            }
+            det3(&m) / det.clone()
+        });
+        let m = axis_magnitude(&a, &d, &self.sigma);
+        identity_cert_within("", &pdot_const(&a, &d), &self.sigma, &m)
+            .holds
+            .then_some(a)
+    }
+
     /// The helix data, or an error.
     ///
     /// # Errors
@@ -135,13 +197,14 @@ impl<F: Scalar> PhPolyCurve<F> {
     /// `ρ³ − (|a|² − 1)·((r'×r'')·r''')² ≡ 0` (`(κ/τ)² = tan²ψ`).
     pub fn certify_helix(&self, h: &HelixData<F>) -> Vec<Certificate> {
         let d = self.hodograph();
-        let mut certs = vec![identity_cert(
+        let mut certs = vec![identity_cert_within(
             format!(
                 "a·r' − σ ≡ 0 with a = {} (helix axis, |a| = 1/cos ψ)",
                 fmt_v3(&h.a)
             ),
             &pdot_const(&h.a, &d),
             &self.sigma,
+            &axis_magnitude(&h.a, &d, &self.sigma),
         )];
         match self.rho() {
             Ok(rho) => {
@@ -576,4 +639,23 @@ impl<F: Scalar> LineCircle<F> {
         let hc = h.map(|c| cmul(&cx(c.clone(), F::zero()), &d));
         &hc * &(&wp * &wp)
     }
+}
+
+/// Coefficientwise `Σᵢ|aᵢ|·|r'ᵢ| + |σ|`: the sums of the absolute values of the terms of
+/// `a·r' − σ`, the scale of its `f64` residual (large `|a| = 1/cos ψ` cancels).
+fn axis_magnitude<F: Scalar>(a: &[F; 3], d: &[Poly<F>; 3], sigma: &Poly<F>) -> Vec<f64> {
+    let n = d
+        .iter()
+        .chain([sigma])
+        .map(|p| p.coeffs().len())
+        .max()
+        .unwrap_or(0);
+    (0..n)
+        .map(|k| {
+            (0..3)
+                .map(|i| a[i].to_f64().abs() * d[i].coeff(k).to_f64().abs())
+                .sum::<f64>()
+                + sigma.coeff(k).to_f64().abs()
+        })
+        .collect()
 }
