@@ -76,6 +76,22 @@ enum Command {
         /// Largest number of digits of one input number.
         #[arg(long, value_name = "N", default_value_t = rcagd_cli::limits::DEFAULT_DIGITS)]
         max_digits: usize,
+        /// Largest degree a parameter may ask for (control points, coefficients,
+        /// interpolation or Hermite data, degree parameters).
+        #[arg(long, value_name = "N", default_value_t = rcagd_cli::limits::DEFAULT_DEGREE)]
+        max_degree: usize,
+        /// Largest number of items of one list parameter.
+        #[arg(long, value_name = "N", default_value_t = rcagd_cli::limits::DEFAULT_POINTS)]
+        max_points: usize,
+        /// Largest sample or mesh count of a parameter.
+        #[arg(long, value_name = "N", default_value_t = rcagd_cli::limits::DEFAULT_SAMPLES)]
+        max_samples: usize,
+        /// Largest spread of one object's input numbers, in decimal orders of magnitude.
+        #[arg(long, value_name = "N", default_value_t = rcagd_cli::limits::DEFAULT_MAGNITUDE)]
+        max_magnitude: u32,
+        /// Show progress per object on standard error (default: only on a terminal).
+        #[arg(long)]
+        progress: bool,
     },
     /// List the recipe ops and their parameters, or describe one op.
     Ops {
@@ -112,14 +128,23 @@ fn main() -> ExitCode {
             max_recipe_bytes,
             max_objects,
             max_digits,
+            max_degree,
+            max_points,
+            max_samples,
+            max_magnitude,
+            progress,
         } => {
             rcagd_cli::limits::Limits {
                 recipe_bytes: max_recipe_bytes,
                 objects: max_objects,
                 digits: max_digits,
+                degree: max_degree,
+                points: max_points,
+                samples: max_samples,
+                magnitude: max_magnitude,
             }
             .install();
-            build::run(&recipe, out.as_deref(), &formats)
+            build::run(&recipe, out.as_deref(), &formats, progress)
         }
         Command::Ops { name, markdown } => ops::describe::run(name.as_deref(), markdown),
         Command::Fuzz(options) => {
