@@ -110,7 +110,11 @@ pub fn op_markdown(op: &OpSpec) -> String {
     }
     let limits = op.limit_lines();
     if !limits.is_empty() {
-        let _ = writeln!(s, "Limits (`rcagd build` options raise them): {}.\n", limits.join("; "));
+        let _ = writeln!(
+            s,
+            "Limits (`rcagd build` options raise them): {}.\n",
+            limits.join("; ")
+        );
     }
     let _ = writeln!(s, "```toml\n{}```\n", op.example);
     s

@@ -356,8 +356,10 @@ fn build_support(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let a = opt_poly(args, "a", MPoly::var(2, 0))?;
     let b = opt_poly(args, "b", MPoly::var(2, 1))?;
     let c = opt_poly(args, "c", MPoly::constant(2, Q::from(1)))?;
+    // the rectangle is checked before the (possibly long) construction
+    let rect = domain(args)?;
     let surface = from_support_function(a, b, c, &h).map_err(blame("c"))?;
-    surface_objects(args, &oriented(args, &surface), &domain(args)?, Vec::new(), "support")
+    surface_objects(args, &oriented(args, &surface), &rect, Vec::new(), "support")
 }
 
 // ---------------------------------------------------------------------------------

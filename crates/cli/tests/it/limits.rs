@@ -66,17 +66,17 @@ fn every_op_limit_is_named_and_can_be_raised() {
         &["`samples` = 9", "--max-samples"],
         &["--max-samples", "9"],
     );
-    // magnitudes: a centre 1e50 beside a radius 1
+    // magnitudes: a centre 1e30 beside a radius 1
     let far = write(
         &dir,
         "magnitude.toml",
-        "[[object]]\nname = \"c\"\nop = \"circle\"\ncenter = [1e50, 0]\nradius = 1\n",
+        "[[object]]\nname = \"c\"\nop = \"circle\"\ncenter = [1e30, 0]\nradius = 1\n",
     );
     refused_then_raised(
         &far,
         &[],
-        &["50 decimal orders", "center", "--max-magnitude"],
-        &["--max-magnitude", "50"],
+        &["30.0 decimal orders", "center", "--max-magnitude"],
+        &["--max-magnitude", "31"],
     );
     // the error points at the parameter
     let (_, err) = build(&far, &[]);
@@ -89,8 +89,14 @@ fn ops_name_states_the_limits() {
     let s = stdout(&o);
     assert!(s.contains("limits"), "{s}");
     assert!(s.contains("`points`: degree ≤ 40"), "{s}");
-    assert!(s.contains("--max-degree") && s.contains("--max-points"), "{s}");
-    assert!(s.contains("--max-magnitude") && s.contains("--max-digits"), "{s}");
+    assert!(
+        s.contains("--max-degree") && s.contains("--max-points"),
+        "{s}"
+    );
+    assert!(
+        s.contains("--max-magnitude") && s.contains("--max-digits"),
+        "{s}"
+    );
     let o = bin().args(["ops", "ph_curve"]).output().expect("run");
     assert!(stdout(&o).contains("`samples` ≤ 1000 (`--max-samples`)"));
 }
