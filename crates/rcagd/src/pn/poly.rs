@@ -755,29 +755,8 @@ fn from_bi<F: Scalar>(c: &[Poly<F>]) -> MPoly<F> {
     MPoly::from_terms(2, terms).unwrap_or_else(|_| MPoly::zero(2))
 }
 
-/// The monic gcd of two univariate polynomials: over ℤ by the subresultant sequence for
-/// exact scalars ([`rcagd_algebra::roots::gcd_rational`]; Euclid over ℚ let the
-/// coefficients of its remainders grow until a small `pn_support` took minutes, issue 19),
-/// Euclid otherwise.
-fn upoly_gcd<F: Scalar>(a: &Poly<F>, b: &Poly<F>) -> Poly<F> {
-    if F::EXACT {
-        let q = |p: &Poly<F>| -> Option<Poly<Rational>> {
-            p.coeffs()
-                .iter()
-                .map(Scalar::to_rational)
-                .collect::<Option<Vec<_>>>()
-                .map(Poly::new)
-        };
-        if let (Some(qa), Some(qb)) = (q(a), q(b)) {
-            let g = rcagd_algebra::roots::gcd_rational(&qa, &qb);
-            return Poly::new(g.coeffs().iter().map(F::from_rational).collect());
-        }
-    }
-    a.gcd(b)
-}
-
 fn bi_content<F: Scalar>(c: &[Poly<F>]) -> Poly<F> {
-    c.iter().fold(Poly::zero(), |g, p| upoly_gcd(&g, p))
+    c.iter().fold(Poly::zero(), |g, p| g.gcd(p))
 }
 
 fn bi_primitive<F: Scalar>(c: &[Poly<F>]) -> Vec<Poly<F>> {
@@ -826,7 +805,7 @@ pub(crate) fn gcd2<F: Scalar>(p: &MPoly<F>, q: &MPoly<F>) -> MPoly<F> {
         return p.clone();
     }
     let (a, b) = (to_bi(p), to_bi(q));
-    let cont = upoly_gcd(&bi_content(&a), &bi_content(&b));
+    let cont = bi_content(&a).gcd(&bi_content(&b));
     let (mut a, mut b) = (bi_primitive(&a), bi_primitive(&b));
     if a.len() < b.len() {
         std::mem::swap(&mut a, &mut b);
