@@ -30,7 +30,7 @@ pub const DEFAULT_OBJECTS: usize = 10_000;
 pub const DEFAULT_DIGITS: usize = 10_000;
 /// Default largest degree asked for by a list of control points, coefficients or
 /// interpolation data (a degree-`n` list has `n + 1` items) or by a degree parameter.
-pub const DEFAULT_DEGREE: usize = 40;
+pub const DEFAULT_DEGREE: usize = 64;
 /// Default largest number of items of one list parameter (points, numbers, net or grid
 /// entries).
 pub const DEFAULT_POINTS: usize = 10_000;
@@ -255,7 +255,7 @@ pub fn check_params(
             let (limit, what, option) = match bound {
                 Bound::Degree => (limits.degree, "degree", "--max-degree"),
                 Bound::Samples => (limits.samples, "samples", "--max-samples"),
-                Bound::Items => continue,
+                Bound::Items | Bound::Tolerance => continue,
             };
             if usize::try_from(*n).is_ok_and(|n| n > limit) {
                 return Err((
@@ -271,6 +271,7 @@ pub fn check_params(
     let all = || {
         values
             .iter()
+            .filter(|(n, _)| op.param(n).is_none_or(|p| p.bound != Bound::Tolerance))
             .flat_map(|(n, v)| numbers(v).map(move |x| (*n, x)))
     };
     if let Some((spread, lo, hi)) = magnitude_spread(all().map(|(_, x)| x)) {
@@ -338,7 +339,7 @@ pub fn limit_lines(op: &OpSpec, limits: &Limits) -> Vec<String> {
                 "`{}` ≤ {} (`--max-samples`)",
                 p.name, limits.samples
             )),
-            (Bound::Items, _) => {}
+            (Bound::Items | Bound::Tolerance, _) => {}
         }
     }
     if op.params.iter().any(|p| {

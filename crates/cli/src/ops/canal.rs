@@ -728,7 +728,7 @@ const PIPE: OpSpec = OpSpec {
         ParamSpec::required("radius", ParamKind::Number, "pipe radius, ≠ 0, below the spine's least radius of curvature"),
         ORIENTATION,
         ParamSpec::with_default("approximate", ParamKind::Choice(&["auto", "never", "always"]), "\"auto\"", "auto: exact around the spine where |m'|² is a sum of two rational squares, else exact around a G¹ spline of PH quintics within a certified distance (tolerance) of the spine; never: exact around the spine or an error; always: around the PH spline"),
-        ParamSpec::optional("tolerance", ParamKind::Number, "the largest distance allowed between the PH spline and the spine (default 10⁻⁶ of the diagonal of the spine's control-point box); certified"),
+        ParamSpec::optional("tolerance", ParamKind::Number, "the largest distance allowed between the PH spline and the spine (default 10⁻⁶ of the diagonal of the spine's control-point box); certified").tolerance(),
     ],
     example: r#"[[object]]
 name = "pipe_quarter_circle"

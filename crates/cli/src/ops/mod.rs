@@ -58,6 +58,9 @@ pub enum Bound {
     Degree,
     /// An integer that is a sample or mesh count; limited to `--max-samples`.
     Samples,
+    /// A tolerance or precision: not part of the data, so not counted in the spread of
+    /// magnitudes (`1e-27` beside coordinates of size 1 is a demand, not a scale).
+    Tolerance,
 }
 
 /// One parameter of an op.
@@ -123,6 +126,12 @@ impl ParamSpec {
     /// ([`Bound::Degree`]).
     pub const fn degree(mut self) -> Self {
         self.bound = Bound::Degree;
+        self
+    }
+
+    /// The same parameter, a tolerance ([`Bound::Tolerance`]).
+    pub const fn tolerance(mut self) -> Self {
+        self.bound = Bound::Tolerance;
         self
     }
 

@@ -31,8 +31,8 @@ fn refused_then_raised(recipe: &Path, tight: &[&str], phrases: &[&str], raised: 
 #[test]
 fn every_op_limit_is_named_and_can_be_raised() {
     let dir = temp_dir("op-limits");
-    // degree: 50 control points ask for degree 49
-    let pts: Vec<String> = (0..50).map(|i| format!("[{i}, {}]", i % 3)).collect();
+    // degree: 70 control points ask for degree 69
+    let pts: Vec<String> = (0..70).map(|i| format!("[{i}, {}]", i % 3)).collect();
     let curve = write(
         &dir,
         "degree.toml",
@@ -44,15 +44,15 @@ fn every_op_limit_is_named_and_can_be_raised() {
     refused_then_raised(
         &curve,
         &[],
-        &["degree 49", "the limit is degree 40", "--max-degree"],
-        &["--max-degree", "49"],
+        &["degree 69", "the limit is degree 64", "--max-degree"],
+        &["--max-degree", "69"],
     );
     // list items: the same curve under a tighter item limit
     refused_then_raised(
         &curve,
-        &["--max-degree", "60", "--max-points", "20"],
-        &["50 items", "--max-points"],
-        &["--max-degree", "60", "--max-points", "50"],
+        &["--max-degree", "80", "--max-points", "20"],
+        &["70 items", "--max-points"],
+        &["--max-degree", "80", "--max-points", "70"],
     );
     // a sample count
     let ph = write(
@@ -88,7 +88,7 @@ fn ops_name_states_the_limits() {
     let o = bin().args(["ops", "bezier_curve"]).output().expect("run");
     let s = stdout(&o);
     assert!(s.contains("limits"), "{s}");
-    assert!(s.contains("`points`: degree ≤ 40"), "{s}");
+    assert!(s.contains("`points`: degree ≤ 64"), "{s}");
     assert!(
         s.contains("--max-degree") && s.contains("--max-points"),
         "{s}"
