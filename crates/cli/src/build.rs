@@ -385,7 +385,16 @@ pub fn run(path: &Path, out: Option<&Path>, formats: &[OutFormat], progress: boo
         }
     };
     let pb = progress_bar(recipe.objects.len(), progress);
+    // indicatif draws only on a terminal: a forced progress to a file or pipe is one line
+    // per object
+    let lines = progress && !std::io::IsTerminal::is_terminal(&std::io::stderr());
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    let total = recipe.objects.len();
     let built = build_recipe(&recipe, |name| {
+        if lines {
+            let k = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+            errln!("built {k}/{total}: {}", clip(name));
+        }
         pb.set_message(clip(name).into_owned());
         pb.inc(1);
     });

@@ -100,3 +100,22 @@ fn ops_name_states_the_limits() {
     let o = bin().args(["ops", "ph_curve"]).output().expect("run");
     assert!(stdout(&o).contains("`samples` ≤ 1000 (`--max-samples`)"));
 }
+
+#[test]
+fn build_shows_progress_on_request() {
+    let dir = temp_dir("progress");
+    let two = write(
+        &dir,
+        "two.toml",
+        "[[object]]\nname = \"a\"\nop = \"circle\"\ncenter = [0, 0]\nradius = 1\n\n\
+         [[object]]\nname = \"b\"\nop = \"circle\"\ncenter = [1, 0]\nradius = 2\n",
+    );
+    // standard error is a pipe here: no progress unless asked for
+    let (code, err) = build(&two, &[]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(!err.contains("built"), "{err}");
+    let (code, err) = build(&two, &["--progress"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(err.contains("built 2/2"), "{err}");
+    assert!(err.contains(": a") && err.contains(": b"), "{err}");
+}
