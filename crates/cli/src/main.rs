@@ -3,7 +3,9 @@
 //! * `rcagd gallery [--out DIR] [--quiet] [--only RECIPE,…]` — build every embedded default recipe,
 //!   write JSON/STEP/IGES/OBJ/SVG/PNG and the exact sidecar per object, `report.json` and `index.html`;
 //! * `rcagd build RECIPE [--out DIR] [--format json|step|iges|exact|obj|stl|ply|gltf|svg|png]…`
-//!   — build a user's recipe;
+//!   `[--max-recipe-bytes N] [--max-objects N] [--max-digits N] [--max-degree N] [--max-points N]`
+//!   `[--max-samples N] [--max-magnitude N] [--progress]` — build a user's recipe (the limits:
+//!   `rcagd_cli::limits`);
 //! * `rcagd ops [NAME] [--markdown]` — the op reference;
 //! * `rcagd fuzz [--cases N] [--seed S] [--op NAME] [--corpus DIR] [--case-seconds T] [--huge]` —
 //!   the structured fuzzer over the op registry (`rcagd_cli::fuzz`).
