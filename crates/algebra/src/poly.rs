@@ -214,9 +214,16 @@ impl<F: Field> Poly<F> {
         }
     }
 
-    /// The monic greatest common divisor (zero iff both are zero). Euclid's algorithm;
-    /// exact over exact fields.
+    /// The monic greatest common divisor (zero iff both are zero). Exact over exact
+    /// fields: over ℚ by the subresultant sequence over ℤ ([`Field::fast_poly_gcd`]; the
+    /// monic remainders of Euclid over ℚ grow until small inputs take minutes, issue 19),
+    /// otherwise Euclid's algorithm ([`Self::gcd_euclid`]).
     pub fn gcd(&self, other: &Poly<F>) -> Poly<F> {
+        F::fast_poly_gcd(self, other).unwrap_or_else(|| self.gcd_euclid(other))
+    }
+
+    /// The monic greatest common divisor by Euclid's algorithm.
+    pub fn gcd_euclid(&self, other: &Poly<F>) -> Poly<F> {
         let mut a = self.clone();
         let mut b = other.clone();
         while !b.is_zero() {

@@ -69,6 +69,13 @@ pub trait Field: Ring + Div<Output = Self> + DivAssign {
             Some(Self::one() / self.clone())
         }
     }
+
+    /// The monic gcd of two polynomials by a method faster than Euclid's algorithm, if the
+    /// field has one ([`crate::Poly::gcd`] falls back to Euclid on `None`). ℚ uses the
+    /// subresultant sequence over ℤ ([`crate::roots::gcd_rational`]).
+    fn fast_poly_gcd(_a: &crate::Poly<Self>, _b: &crate::Poly<Self>) -> Option<crate::Poly<Self>> {
+        None
+    }
 }
 
 /// An ordered field approximating the real numbers: `f64` or an exact type.
@@ -127,7 +134,11 @@ impl Ring for Rational {
         Rational::from(n)
     }
 }
-impl Field for Rational {}
+impl Field for Rational {
+    fn fast_poly_gcd(a: &crate::Poly<Self>, b: &crate::Poly<Self>) -> Option<crate::Poly<Self>> {
+        Some(crate::roots::gcd_rational(a, b))
+    }
+}
 impl Scalar for Rational {
     const EXACT: bool = true;
     fn from_rational(q: &Rational) -> Self {

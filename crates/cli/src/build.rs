@@ -123,6 +123,21 @@ pub fn check_object(
         }
     }
     if diags.is_empty() {
+        // the per-op limits (list sizes, degrees, sample counts, magnitudes), before
+        // anything is built
+        if let Err((param, message)) =
+            crate::limits::check_params(op, &values, &crate::limits::Limits::current())
+        {
+            let span = obj
+                .params
+                .iter()
+                .find(|e| e.key == param)
+                .map_or(obj.op_key_span, |e| e.value.span);
+            return Err(vec![file.error(
+                span,
+                format!("object {:?} (op `{}`): {message}", obj.name, op.name),
+            )]);
+        }
         let mut args = OpArgs::new(obj.name.clone(), op, values);
         // file parameters are relative to the recipe's directory (stdin: the working one)
         if file.name() != "-" {
@@ -326,7 +341,28 @@ fn print_diagnostics(diags: &[Diagnostic]) {
 
 /// Runs `rcagd build`; returns the exit code (0 all certificates hold, 1 one fails,
 /// 2 usage or input error; nothing is written on an input error).
-pub fn run(path: &Path, out: Option<&Path>, formats: &[OutFormat]) -> u8 {
+/// A progress bar on standard error, one step per object: drawn when `show` is set or
+/// standard error is a terminal, hidden otherwise.
+fn progress_bar(len: usize, show: bool) -> indicatif::ProgressBar {
+    use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+    use std::io::IsTerminal as _;
+    let pb = ProgressBar::with_draw_target(Some(len as u64), ProgressDrawTarget::stderr());
+    if !show && !std::io::stderr().is_terminal() {
+        pb.set_draw_target(ProgressDrawTarget::hidden());
+    }
+    if let Ok(style) =
+        ProgressStyle::with_template("{spinner} building [{bar:30}] {pos}/{len} {wide_msg}")
+    {
+        pb.set_style(style.progress_chars("=> "));
+    }
+    pb
+}
+
+/// Runs `rcagd build`; `progress` forces the per-object progress bar on standard error
+/// (it is shown anyway when standard error is a terminal). Nothing is written before
+/// every object is built and rendered, so an interrupt (Ctrl-C) leaves no file behind
+/// (at most the `.NAME.rcagd-partial` temporaries of the final write phase).
+pub fn run(path: &Path, out: Option<&Path>, formats: &[OutFormat], progress: bool) -> u8 {
     let mut formats: Vec<OutFormat> = formats.to_vec();
     if formats.is_empty() {
         formats.push(OutFormat::Json);
@@ -348,7 +384,22 @@ pub fn run(path: &Path, out: Option<&Path>, formats: &[OutFormat]) -> u8 {
             return EXIT_INPUT;
         }
     };
-    let objects = match build_recipe(&recipe, |_| {}) {
+    let pb = progress_bar(recipe.objects.len(), progress);
+    // indicatif draws only on a terminal: a forced progress to a file or pipe is one line
+    // per object
+    let lines = progress && !std::io::IsTerminal::is_terminal(&std::io::stderr());
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    let total = recipe.objects.len();
+    let built = build_recipe(&recipe, |name| {
+        if lines {
+            let k = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+            errln!("built {k}/{total}: {}", clip(name));
+        }
+        pb.set_message(clip(name).into_owned());
+        pb.inc(1);
+    });
+    pb.finish_and_clear();
+    let objects = match built {
         Ok(o) => o,
         Err(d) => {
             print_diagnostics(&d);

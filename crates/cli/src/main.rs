@@ -3,7 +3,9 @@
 //! * `rcagd gallery [--out DIR] [--quiet] [--only RECIPE,…]` — build every embedded default recipe,
 //!   write JSON/STEP/IGES/OBJ/SVG/PNG and the exact sidecar per object, `report.json` and `index.html`;
 //! * `rcagd build RECIPE [--out DIR] [--format json|step|iges|exact|obj|stl|ply|gltf|svg|png]…`
-//!   — build a user's recipe;
+//!   `[--max-recipe-bytes N] [--max-objects N] [--max-digits N] [--max-degree N] [--max-points N]`
+//!   `[--max-samples N] [--max-magnitude N] [--progress]` — build a user's recipe (the limits:
+//!   `rcagd_cli::limits`);
 //! * `rcagd ops [NAME] [--markdown]` — the op reference;
 //! * `rcagd fuzz [--cases N] [--seed S] [--op NAME] [--corpus DIR] [--case-seconds T] [--huge]` —
 //!   the structured fuzzer over the op registry (`rcagd_cli::fuzz`).
@@ -76,6 +78,22 @@ enum Command {
         /// Largest number of digits of one input number.
         #[arg(long, value_name = "N", default_value_t = rcagd_cli::limits::DEFAULT_DIGITS)]
         max_digits: usize,
+        /// Largest degree a parameter may ask for (control points, coefficients,
+        /// interpolation or Hermite data, degree parameters).
+        #[arg(long, value_name = "N", default_value_t = rcagd_cli::limits::DEFAULT_DEGREE)]
+        max_degree: usize,
+        /// Largest number of items of one list parameter.
+        #[arg(long, value_name = "N", default_value_t = rcagd_cli::limits::DEFAULT_POINTS)]
+        max_points: usize,
+        /// Largest sample or mesh count of a parameter.
+        #[arg(long, value_name = "N", default_value_t = rcagd_cli::limits::DEFAULT_SAMPLES)]
+        max_samples: usize,
+        /// Largest spread of one object's input numbers, in decimal orders of magnitude.
+        #[arg(long, value_name = "N", default_value_t = rcagd_cli::limits::DEFAULT_MAGNITUDE)]
+        max_magnitude: u32,
+        /// Show progress per object on standard error (default: only on a terminal).
+        #[arg(long)]
+        progress: bool,
     },
     /// List the recipe ops and their parameters, or describe one op.
     Ops {
@@ -112,14 +130,23 @@ fn main() -> ExitCode {
             max_recipe_bytes,
             max_objects,
             max_digits,
+            max_degree,
+            max_points,
+            max_samples,
+            max_magnitude,
+            progress,
         } => {
             rcagd_cli::limits::Limits {
                 recipe_bytes: max_recipe_bytes,
                 objects: max_objects,
                 digits: max_digits,
+                degree: max_degree,
+                points: max_points,
+                samples: max_samples,
+                magnitude: max_magnitude,
             }
             .install();
-            build::run(&recipe, out.as_deref(), &formats)
+            build::run(&recipe, out.as_deref(), &formats, progress)
         }
         Command::Ops { name, markdown } => ops::describe::run(name.as_deref(), markdown),
         Command::Fuzz(options) => {

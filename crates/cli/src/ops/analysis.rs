@@ -34,17 +34,17 @@ const PH_ANALYZE: OpSpec = OpSpec {
             "points",
             ParamKind::Points,
             "Bézier control points [x, y, z] of a polynomial curve on t ∈ [0, 1]",
-        ),
+        ).degree(),
         ParamSpec::optional(
             "power",
             ParamKind::Points,
             "instead of `points`: power-form coefficients [x_k, y_k, z_k] of t^k, k = 0, 1, …",
-        ),
+        ).degree(),
         ParamSpec::optional(
             "quaternions",
             ParamKind::Points,
             "instead of `points`: Bernstein coefficients [u, v, p, q] of a preimage A(t), r' = A i A* (adds the DPH class αβ' − α'β = λhW²)",
-        ),
+        ).degree(),
         ParamSpec::with_default(
             "start",
             ParamKind::Point3,
@@ -70,9 +70,9 @@ const PH_PREIMAGE: OpSpec = OpSpec {
     name: "ph_preimage",
     summary: "the quaternion preimage A(t) of a PH curve, r' = A i A*, recovered exactly from its hodograph (Besednjak, DPH-krivulje in polinomske vijačnice, Remark 3.15; construction in docs/math/ph-preimage.md): Bernstein coefficients A_l = [u, v, p, q], the components u, v, p, q, σ = |A|², the content gcd(x', y', z') and the number of choices of its complex factors; every other preimage of a choice is A·(cos φ + i sin φ)",
     params: &[
-        ParamSpec::optional("points", ParamKind::Points, "Bézier control points [x, y, z] of a PH curve on t ∈ [0, 1]"),
-        ParamSpec::optional("power", ParamKind::Points, "instead of `points`: power-form coefficients [x_k, y_k, z_k] of t^k"),
-        ParamSpec::optional("quaternions", ParamKind::Points, "instead of `points`: Bernstein coefficients [u, v, p, q] of some preimage (a round trip)"),
+        ParamSpec::optional("points", ParamKind::Points, "Bézier control points [x, y, z] of a PH curve on t ∈ [0, 1]").degree(),
+        ParamSpec::optional("power", ParamKind::Points, "instead of `points`: power-form coefficients [x_k, y_k, z_k] of t^k").degree(),
+        ParamSpec::optional("quaternions", ParamKind::Points, "instead of `points`: Bernstein coefficients [u, v, p, q] of some preimage (a round trip)").degree(),
         ParamSpec::with_default("start", ParamKind::Point3, "[0, 0, 0]", "r(0) for `quaternions`"),
         ParamSpec::with_default("choice", ParamKind::Int, "0", "which complex factors of the content gcd(x', y', z') go into A (0 … choices − 1)"),
         ParamSpec::optional("rotation", ParamKind::Point2, "[cos φ, sin φ] (rational, cos²φ + sin²φ = 1): the member A·(cos φ + i sin φ) of the family"),
@@ -109,7 +109,7 @@ const PH_DPH_FORMS: OpSpec = OpSpec {
             "quaternions",
             ParamKind::Points,
             "Bernstein coefficients [u, v, p, q] of the preimage A(t), r' = A i A*",
-        ),
+        ).degree(),
         ParamSpec::with_default("start", ParamKind::Point3, "[0, 0, 0]", "r(0)"),
     ],
     example: r#"[[object]]

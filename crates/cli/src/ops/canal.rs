@@ -528,9 +528,9 @@ const CANAL_SURFACE: OpSpec = OpSpec {
     name: "canal_surface",
     summary: "the rational canal surface (envelope of spheres) of a rational spine and a polynomial radius on t ∈ [0, 1], exact over Q, by Peternell–Pottmann (Gruber §2.1) or Krasauskas' reduced pencil (§2.4), by default whichever exports with fewer control points",
     params: &[
-        ParamSpec::required("points", ParamKind::Points, "control points [x, y, z] of the spine m(t), t ∈ [0, 1]"),
+        ParamSpec::required("points", ParamKind::Points, "control points [x, y, z] of the spine m(t), t ∈ [0, 1]").degree(),
         ParamSpec::optional("weights", ParamKind::Numbers, "spine weights (default all 1)"),
-        ParamSpec::required("radius", ParamKind::Numbers, "Bernstein control values of the radius r(t) (any degree)"),
+        ParamSpec::required("radius", ParamKind::Numbers, "Bernstein control values of the radius r(t) (any degree)").degree(),
         ORIENTATION,
         ParamSpec::with_default(
             "method",
@@ -656,7 +656,7 @@ const PIPE_PH: OpSpec = OpSpec {
     name: "pipe_ph",
     summary: "the exact rational pipe surface of constant radius around a spatial PH curve in quaternion form, t ∈ [0, 1]: every exact construction (split D = σ² and the Gaussian splits, Peternell–Pottmann and Krasauskas, every frame, interval splits) is tried and the smallest with positive weights kept; r·κ < 1 and that no two normal discs of radius |r| meet are certified",
     params: &[
-        ParamSpec::required("coefficients", ParamKind::Points, "Bernstein coefficients A₀ … A_m of the quaternion preimage, each [a, b, c, d] = a + b i + c j + d k (curve degree 2m + 1)"),
+        ParamSpec::required("coefficients", ParamKind::Points, "Bernstein coefficients A₀ … A_m of the quaternion preimage, each [a, b, c, d] = a + b i + c j + d k (curve degree 2m + 1)").degree(),
         ParamSpec::with_default("start", ParamKind::Point3, "[0, 0, 0]", "start point r(0)"),
         ParamSpec::required("radius", ParamKind::Number, "pipe radius, ≠ 0"),
         ORIENTATION,
@@ -722,13 +722,13 @@ const PIPE: OpSpec = OpSpec {
     name: "pipe",
     summary: "the pipe surface of constant radius around a rational spine on t ∈ [0, 1] (control points, or every curve of a STEP, IGES or exact JSON file chained end to end, each piece on t ∈ [0, 1]), exact over Q when |m'|² is a sum of two rational squares (planar and PH spines always); the smallest exact construction with positive weights is kept; r·κ < 1 and that no two normal discs of radius |r| meet (no self-intersection) are certified",
     params: &[
-        ParamSpec::optional("points", ParamKind::Points, "control points [x, y, z] of the spine (or give spine_file)"),
+        ParamSpec::optional("points", ParamKind::Points, "control points [x, y, z] of the spine (or give spine_file)").degree(),
         ParamSpec::optional("weights", ParamKind::Numbers, "spine weights (default all 1)"),
         ParamSpec::optional("spine_file", ParamKind::String, "a STEP (.step, .stp), IGES (.igs, .iges) or rcagd JSON (.json) file whose curves form the spine (a relative path is taken relative to the recipe's directory; instead of points)"),
         ParamSpec::required("radius", ParamKind::Number, "pipe radius, ≠ 0, below the spine's least radius of curvature"),
         ORIENTATION,
         ParamSpec::with_default("approximate", ParamKind::Choice(&["auto", "never", "always"]), "\"auto\"", "auto: exact around the spine where |m'|² is a sum of two rational squares, else exact around a G¹ spline of PH quintics within a certified distance (tolerance) of the spine; never: exact around the spine or an error; always: around the PH spline"),
-        ParamSpec::optional("tolerance", ParamKind::Number, "the largest distance allowed between the PH spline and the spine (default 10⁻⁶ of the diagonal of the spine's control-point box); certified"),
+        ParamSpec::optional("tolerance", ParamKind::Number, "the largest distance allowed between the PH spline and the spine (default 10⁻⁶ of the diagonal of the spine's control-point box); certified").tolerance(),
     ],
     example: r#"[[object]]
 name = "pipe_quarter_circle"
@@ -976,23 +976,23 @@ const CANAL_NORMAL_FIELD: OpSpec = OpSpec {
             "spine",
             ParamKind::Points,
             "power coefficients [x, y, z] of the spine m(t) = Σ spine[k] tᵏ",
-        ),
+        ).degree(),
         ParamSpec::required(
             "radius",
             ParamKind::Numbers,
             "power coefficients of the radius r(t) = Σ radius[k] tᵏ",
-        ),
+        ).degree(),
         ParamSpec::required(
             "normal",
             ParamKind::Points,
             "power coefficients [x, y, z] of the numerator N(t) of the normal field n₀ = N/d; needs |N|² ≡ d² and ⟨N, ṁ⟩ + d ṙ ≡ 0",
-        ),
+        ).degree(),
         ParamSpec::with_default(
             "denominator",
             ParamKind::Numbers,
             "[1]",
             "power coefficients of the denominator d(t) of the normal field",
-        ),
+        ).degree(),
         ParamSpec::with_default(
             "domain",
             ParamKind::Numbers,

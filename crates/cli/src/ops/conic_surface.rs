@@ -42,7 +42,7 @@ const CONIC_SURFACE: OpSpec = OpSpec {
             "matrix",
             ParamKind::Net,
             "C(t): 4 rows of 4 entries, each the power coefficients of C_jk(t) (all padded to one length); symmetric, rank 3",
-        ),
+        ).degree(),
         ParamSpec::optional(
             "conic",
             ParamKind::Grid,
@@ -52,7 +52,7 @@ const CONIC_SURFACE: OpSpec = OpSpec {
             "transform",
             ParamKind::Net,
             "with `conic`: the plane transformation X = X′·M(t), 4 rows of 4 entries of power coefficients; C(t) = Mᵀ·C₀·M",
-        ),
+        ).degree(),
         ParamSpec::with_default(
             "domain",
             ParamKind::Numbers,
@@ -171,12 +171,12 @@ const CONE_ENVELOPE: OpSpec = OpSpec {
             "transform",
             ParamKind::Net,
             "the point transformation x′ = M(t)·x, 4 rows of 4 entries of power coefficients; C(t) = Mᵀ·C₀·M",
-        ),
+        ).degree(),
         ParamSpec::optional(
             "scale",
             ParamKind::Numbers,
             "power coefficients of k(t): the last diagonal entry of C₀ is multiplied by k(t) (a varying opening angle)",
-        ),
+        ).degree(),
         ParamSpec::with_default(
             "domain",
             ParamKind::Numbers,
@@ -245,12 +245,12 @@ const CANAL_VIA_CONES: OpSpec = OpSpec {
             "spine",
             ParamKind::Grid,
             "m(t): three rows (x, y, z) of power coefficients in t",
-        ),
+        ).degree(),
         ParamSpec::required(
             "radius_squared",
             ParamKind::Numbers,
             "power coefficients of ρ(t) = r(t)²",
-        ),
+        ).degree(),
         ParamSpec::with_default(
             "domain",
             ParamKind::Numbers,
@@ -313,7 +313,7 @@ const QUADRIC_FAMILY: OpSpec = OpSpec {
             "matrix",
             ParamKind::Net,
             "Q(t): n + 1 rows of n + 1 entries, each the power coefficients of Q_jk(t) (all padded to one length); symmetric, n ≥ 2, rank ≥ 3",
-        ),
+        ).degree(),
         ParamSpec::with_default("t", ParamKind::Number, "0", "n ≥ 3: the parameter t₀ of the quadric drawn"),
         ParamSpec::with_default(
             "domain",
@@ -481,13 +481,13 @@ const CANAL_HYPERSURFACE: OpSpec = OpSpec {
     name: "canal_hypersurface",
     summary: "the canal hypersurface of Rⁿ enveloped by the spheres |y − m(t)|² = ρ(t) (only ρ = r² rational; Peternell Thm 2.3 and the remark after it), or by the spheres of a curve c(t) of the Möbius model P^(n+1) ((2.12), (2.13)): the characteristic spheres parametrized by §5.1, certified on every sphere and characteristic hyperplane; values: the map; picture: the surface (n = 3) or the slice u₂ = … = 0 projected to (y₀ : y₁ : y₂ : y₃)",
     params: &[
-        ParamSpec::optional("spine", ParamKind::Grid, "m(t): n rows (n ≥ 3) of power coefficients in t"),
-        ParamSpec::optional("radius_squared", ParamKind::Numbers, "with `spine`: power coefficients of ρ(t) = r(t)²"),
+        ParamSpec::optional("spine", ParamKind::Grid, "m(t): n rows (n ≥ 3) of power coefficients in t").degree(),
+        ParamSpec::optional("radius_squared", ParamKind::Numbers, "with `spine`: power coefficients of ρ(t) = r(t)²").degree(),
         ParamSpec::optional(
             "mobius_curve",
             ParamKind::Grid,
             "instead of `spine`: c(t) in the Möbius model, n + 2 rows of power coefficients (c₀, …, c_(n+1)); centre cᵢ/(c₀ − c_(n+1)), r² = (c₁² + … + c_(n+1)² − c₀²)/(c₀ − c_(n+1))²",
-        ),
+        ).degree(),
         ParamSpec::with_default("domain", ParamKind::Numbers, "[-1, 1, -1, 1]", "[t0, t1, u0, u1] (u = u₁ of the characteristic spheres)"),
     ],
     example: r#"[[object]]
@@ -550,7 +550,7 @@ const TYPE_C_ENVELOPE: OpSpec = OpSpec {
             "matrix",
             ParamKind::Net,
             "C(t): 4 rows of 4 entries, each the power coefficients of C_jk(t); symmetric, rank 3, type C at every t",
-        ),
+        ).degree(),
         ParamSpec::with_default("domain", ParamKind::Numbers, "[-1, 1, -1, 1]", "[t0, t1, u0, u1]"),
     ],
     example: r#"[[object]]

@@ -64,6 +64,16 @@ pub fn op_text(op: &OpSpec) -> String {
             p.doc
         );
     }
+    let limits = op.limit_lines();
+    if !limits.is_empty() {
+        let _ = writeln!(
+            s,
+            "\nlimits (checked before building; `rcagd build` options raise them):"
+        );
+        for l in limits {
+            let _ = writeln!(s, "  {l}");
+        }
+    }
     let _ = writeln!(s, "\nexample:\n");
     for l in op.example.lines() {
         let _ = writeln!(s, "    {l}");
@@ -97,6 +107,14 @@ pub fn op_markdown(op: &OpSpec) -> String {
             );
         }
         s.push('\n');
+    }
+    let limits = op.limit_lines();
+    if !limits.is_empty() {
+        let _ = writeln!(
+            s,
+            "Limits (`rcagd build` options raise them): {}.\n",
+            limits.join("; ")
+        );
     }
     let _ = writeln!(s, "```toml\n{}```\n", op.example);
     s

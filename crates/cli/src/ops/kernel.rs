@@ -203,7 +203,7 @@ weights = [1, 1, 2]
 };
 
 const INLINE_CURVE_PARAMS: [ParamSpec; 3] = [
-    ParamSpec::required("points", ParamKind::Points, POINTS_DOC),
+    ParamSpec::required("points", ParamKind::Points, POINTS_DOC).degree(),
     ParamSpec::optional(
         "weights",
         ParamKind::Numbers,
@@ -224,7 +224,7 @@ const DEGREE_ELEVATE: OpSpec = OpSpec {
         INLINE_CURVE_PARAMS[0],
         INLINE_CURVE_PARAMS[1],
         INLINE_CURVE_PARAMS[2],
-        ParamSpec::with_default("by", ParamKind::Int, "1", "degree increase, 1 to 32"),
+        ParamSpec::with_default("by", ParamKind::Int, "1", "degree increase, 1 to 32").degree(),
     ],
     example: r#"[[object]]
 name = "quarter_circle_cubic"
@@ -262,7 +262,7 @@ const BEZIER_PATCH: OpSpec = OpSpec {
             "net",
             ParamKind::Net,
             "control net: rows of control points, row i along u, entry j along v (with `homogeneous = true`: weight first)",
-        ),
+        ).degree(),
         ParamSpec::optional(
             "weights",
             ParamKind::Grid,

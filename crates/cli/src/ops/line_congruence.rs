@@ -29,7 +29,7 @@ const LINE_CONGRUENCE_STRIPS: OpSpec = OpSpec {
             "points",
             ParamKind::Points,
             "homogeneous points [x0, x1, x2, x3] (weight first): nets c0, c1, d0, d1 (axes c0 + u c1, d0 + v d1; parabolic: lines through c(u) to d0 + u d1 + v c1) or Re c0, Im c0, Re c1, Im c1 (elliptic); pencil c0, c1, e0, e1 (the point c0 + u c1 of the axis is mapped to the plane e0 + u e1 through it; lines through c(u) in that plane: a parabolic net); cubic_chords a0, a1, a2, a3 of k(t) = a0 + t a1 + t² a2 + t³ a3 (chord k(u) ∨ k(v)); collineation a0, a1, a2, b0, b1, b2 (κ(x0 a0 + x1 a1 + x2 a2) = x0 b0 + x1 b1 + x2 b2, lines x(u, v) ∨ κ(x(u, v)) with x = a0 + u a1 + v a2); one_n g0, g1 of the focal line (lines k(u) ∨ (g0 + v g1)); ruled_tangents: the power coefficients of p(t) (see `ruling`) of the ruled surface X(t, v) = p(t) + v q(t); reguli (Gruber §1.1.6: the net of two reguli sharing two lines) a0, a1, b0, b1, c0, c1 of three pairwise skew lines a, b, c of the first regulus, then the same for the second: one strip per regulus, its generators x(1 − u, u) (x(1, 0) = b, x(0, 1) = c) between the transversals through the points (1 − v)a0 + v a1 of a for the two values of `v`; pencil_bundle (Gruber §1.1.6) the plane coordinates [u0, u1, u2, u3] (plane u0 + u1 x + u2 y + u3 z = 0) of ε0, ε1, φ0, φ1, φ2: the lines ε(u) ∩ φ(u, v) of the pencil ε0 + u ε1 about the axis and the bundle φ0 + u φ1 + v φ2 through a point off the axis, φ2 containing the axis (a parabolic net, drawn by its pencils about the vertices)",
-        ),
+        ).degree(),
         ParamSpec::optional(
             "curve",
             ParamKind::Points,
@@ -39,7 +39,7 @@ const LINE_CONGRUENCE_STRIPS: OpSpec = OpSpec {
             "ruling",
             ParamKind::Points,
             "ruled_tangents only: the power coefficients of q(t) (homogeneous points) of the ruled surface X(t, v) = p(t) + v q(t); the net is the tangents along the generator t = t0 (Gruber §1.1.6: a parabolic net with axis the generator)",
-        ),
+        ).degree(),
         ParamSpec::with_default(
             "t0",
             ParamKind::Number,

@@ -44,6 +44,25 @@ topics!(
 
 pub mod describe;
 
+/// What the size of a parameter asks of the construction: the limit it is checked
+/// against before the op starts ([`crate::limits::check_params`]). Every list parameter
+/// is limited to `--max-points` items and every object's numbers to a spread of
+/// `--max-magnitude` decimal orders, whatever its bound.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Bound {
+    /// Only the limits of every parameter.
+    Items,
+    /// The degree of the construction grows with it: a list of `n + 1` control points,
+    /// coefficients or interpolation/Hermite data asks for degree `n` (a net or grid in
+    /// each direction), an integer is the degree itself; limited to `--max-degree`.
+    Degree,
+    /// An integer that is a sample or mesh count; limited to `--max-samples`.
+    Samples,
+    /// A tolerance or precision: not part of the data, so not counted in the spread of
+    /// magnitudes (`1e-27` beside coordinates of size 1 is a demand, not a scale).
+    Tolerance,
+}
+
 /// One parameter of an op.
 #[derive(Debug, Clone, Copy)]
 pub struct ParamSpec {
@@ -57,6 +76,8 @@ pub struct ParamSpec {
     pub default: Option<&'static str>,
     /// What it means (one line).
     pub doc: &'static str,
+    /// The limit its size is checked against (see [`Bound`]).
+    pub bound: Bound,
 }
 
 impl ParamSpec {
@@ -68,6 +89,7 @@ impl ParamSpec {
             required: true,
             default: None,
             doc,
+            bound: Bound::Items,
         }
     }
 
@@ -79,6 +101,7 @@ impl ParamSpec {
             required: false,
             default: None,
             doc,
+            bound: Bound::Items,
         }
     }
 
@@ -95,7 +118,27 @@ impl ParamSpec {
             required: false,
             default: Some(default),
             doc,
+            bound: Bound::Items,
         }
+    }
+
+    /// The same parameter, whose size fixes the degree of the construction
+    /// ([`Bound::Degree`]).
+    pub const fn degree(mut self) -> Self {
+        self.bound = Bound::Degree;
+        self
+    }
+
+    /// The same parameter, a tolerance ([`Bound::Tolerance`]).
+    pub const fn tolerance(mut self) -> Self {
+        self.bound = Bound::Tolerance;
+        self
+    }
+
+    /// The same parameter, a sample or mesh count ([`Bound::Samples`]).
+    pub const fn samples(mut self) -> Self {
+        self.bound = Bound::Samples;
+        self
     }
 
     /// `required`, `default: …` or `optional`, for listings.
@@ -130,6 +173,12 @@ impl OpSpec {
     /// The parameter called `name`.
     pub fn param(&self, name: &str) -> Option<&'static ParamSpec> {
         self.params.iter().find(|p| p.name == name)
+    }
+
+    /// The limits this op's parameters are checked against, one line each, with the
+    /// option that raises each (for `rcagd ops NAME` and docs/recipes.md).
+    pub fn limit_lines(&self) -> Vec<String> {
+        crate::limits::limit_lines(self, &crate::limits::Limits::default())
     }
 
     /// One line per parameter: `name: type (required) — doc`.

@@ -31,7 +31,7 @@ const PREIMAGE: ParamSpec = ParamSpec::required(
     "preimage",
     ParamKind::Points,
     "Bernstein coefficients [re, im] of the complex preimage w(t); the curve has r' = w², degree 2·len − 1",
-);
+).degree();
 const START: ParamSpec =
     ParamSpec::with_default("start", ParamKind::Point2, "[0, 0]", "start point r(0)");
 
@@ -100,7 +100,7 @@ const PH_PLANAR_SPLINE: OpSpec = OpSpec {
     name: "ph_planar_spline",
     summary: "a C2 PH quintic spline through points (open with natural or given end derivatives, or closed), by Newton–Raphson; exact PH segments, exact C2 junctions",
     params: &[
-        ParamSpec::required("points", ParamKind::Points, "the points [x, y] (at least 2; 3 for closed)"),
+        ParamSpec::required("points", ParamKind::Points, "the points [x, y] (at least 2; 3 for closed)").degree(),
         ParamSpec::with_default(
             "ends",
             ParamKind::Choice(&["natural", "derivatives", "closed"]),

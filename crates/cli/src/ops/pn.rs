@@ -91,12 +91,12 @@ const COEFFICIENTS: ParamSpec = ParamSpec::required(
     "coefficients",
     ParamKind::Grid,
     "power-basis coefficients c[i][j] of u^i v^j of the numerator of F(u, v)",
-);
+).degree();
 const DENOMINATOR: ParamSpec = ParamSpec::optional(
     "denominator",
     ParamKind::Grid,
     "power-basis coefficients of the denominator of F (default 1)",
-);
+).degree();
 
 /// `Σ c[i][j] u^i v^j`.
 fn poly_from_grid(grid: &[Vec<Q>]) -> Result<MPoly<Q>, OpError> {
@@ -320,12 +320,12 @@ const PN_SUPPORT: OpSpec = OpSpec {
             "support",
             ParamKind::Grid,
             "power coefficients c[i][j] of u^i v^j of the numerator of h",
-        ),
+        ).degree(),
         ParamSpec::optional(
             "support_denominator",
             ParamKind::Grid,
             "power coefficients of the denominator of h (default 1)",
-        ),
+        ).degree(),
         ParamSpec::optional("a", ParamKind::Grid, "polynomial a(u, v) (default u)"),
         ParamSpec::optional("b", ParamKind::Grid, "polynomial b(u, v) (default v)"),
         ParamSpec::optional("c", ParamKind::Grid, "polynomial c(u, v) (default 1)"),
@@ -356,8 +356,10 @@ fn build_support(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let a = opt_poly(args, "a", MPoly::var(2, 0))?;
     let b = opt_poly(args, "b", MPoly::var(2, 1))?;
     let c = opt_poly(args, "c", MPoly::constant(2, Q::from(1)))?;
+    // the rectangle is checked before the (possibly long) construction
+    let rect = domain(args)?;
     let surface = from_support_function(a, b, c, &h).map_err(blame("c"))?;
-    surface_objects(args, &oriented(args, &surface), &domain(args)?, Vec::new(), "support")
+    surface_objects(args, &oriented(args, &surface), &rect, Vec::new(), "support")
 }
 
 // ---------------------------------------------------------------------------------
@@ -368,7 +370,7 @@ const PN_MODEL: OpSpec = OpSpec {
     name: "pn_model",
     summary: "a G¹ PN surface of parabolic Dupin cyclide pieces interpolating points with unit normals (Peternell §4.4: Hermite data → gradient data in I³ → C¹ Powell–Sabin quadratic spline → Λ⁻¹), with offsets",
     params: &[
-        ParamSpec::required("points", ParamKind::Points, "data points A_i [x, y, z]"),
+        ParamSpec::required("points", ParamKind::Points, "data points A_i [x, y, z]").degree(),
         ParamSpec::required(
             "normals",
             ParamKind::Points,
@@ -515,7 +517,7 @@ const PN_LOFT: OpSpec = OpSpec {
             "curve0",
             ParamKind::Grid,
             "first boundary curve, homogeneous: four rows (W, X1, X2, X3) of power coefficients in t ∈ [0, 1]",
-        ),
+        ).degree(),
         ParamSpec::required(
             "normal0",
             ParamKind::Grid,
@@ -528,7 +530,7 @@ const PN_LOFT: OpSpec = OpSpec {
             ParamKind::Int,
             "4",
             "samples per curve at t = k/(samples − 1), 2 to 32; the strip between is split into triangles",
-        ),
+        ).samples(),
         OFFSET,
         DISTANCES,
     ],
@@ -611,12 +613,12 @@ const PN_RULED: OpSpec = OpSpec {
             "directrix",
             ParamKind::Grid,
             "l(t): three rows (x, y, z) of power coefficients in t",
-        ),
+        ).degree(),
         ParamSpec::required(
             "ruling",
             ParamKind::Grid,
             "g(t): three rows (x, y, z) of power coefficients in t",
-        ),
+        ).degree(),
         DOMAIN,
         OFFSET,
         ORIENTATION, DISTANCES,
@@ -651,12 +653,12 @@ const PN_CANAL: OpSpec = OpSpec {
             "spine",
             ParamKind::Grid,
             "m(t): three rows (x, y, z) of power coefficients in t",
-        ),
+        ).degree(),
         ParamSpec::required(
             "radius",
             ParamKind::Numbers,
             "power coefficients of the signed radius r(t)",
-        ),
+        ).degree(),
         DOMAIN,
         OFFSET,
         ORIENTATION, DISTANCES,
@@ -694,36 +696,36 @@ const PN_CONE_ENVELOPE: OpSpec = OpSpec {
             "center1",
             ParamKind::Grid,
             "numerator of m₁(t): three rows (x, y, z) of power coefficients in t",
-        ),
+        ).degree(),
         ParamSpec::with_default(
             "radius1",
             ParamKind::Numbers,
             "[0]",
             "power coefficients of the numerator of the signed radius r₁(t)",
-        ),
+        ).degree(),
         ParamSpec::with_default(
             "denominator1",
             ParamKind::Numbers,
             "[1]",
             "power coefficients of the common denominator w₁(t) of m₁ and r₁",
-        ),
+        ).degree(),
         ParamSpec::required(
             "center2",
             ParamKind::Grid,
             "numerator of m₂(t): three rows (x, y, z) of power coefficients in t",
-        ),
+        ).degree(),
         ParamSpec::with_default(
             "radius2",
             ParamKind::Numbers,
             "[0]",
             "power coefficients of the numerator of the signed radius r₂(t)",
-        ),
+        ).degree(),
         ParamSpec::with_default(
             "denominator2",
             ParamKind::Numbers,
             "[1]",
             "power coefficients of the common denominator w₂(t) of m₂ and r₂",
-        ),
+        ).degree(),
         DOMAIN,
         OFFSET,
         ORIENTATION,
@@ -807,13 +809,13 @@ const PN_DEVELOPABLE: OpSpec = OpSpec {
             "curve",
             ParamKind::Grid,
             "numerators of y(t) = (y₁, y₂, y₃): three rows of power coefficients in t",
-        ),
+        ).degree(),
         ParamSpec::with_default(
             "denominator",
             ParamKind::Numbers,
             "[1]",
             "power coefficients of the common denominator of y(t)",
-        ),
+        ).degree(),
         ParamSpec::with_default(
             "domain",
             ParamKind::Numbers,
@@ -863,13 +865,13 @@ const CURVE_PARAM: ParamSpec = ParamSpec::required(
     "curve",
     ParamKind::Grid,
     "numerators of the isotropic curve y(t) = (y₁, y₂, y₃) (its planes Λ⁻¹(y(t)) are the tangent planes of the developable): three rows of power coefficients in t",
-);
+).degree();
 const CURVE_DENOMINATOR: ParamSpec = ParamSpec::with_default(
     "denominator",
     ParamKind::Numbers,
     "[1]",
     "power coefficients of the common denominator of y(t)",
-);
+).degree();
 
 const PN_DEVELOPABLE_EDGE: OpSpec = OpSpec {
     name: "pn_developable_edge",
@@ -973,7 +975,7 @@ const TRANSLATION: ParamSpec = ParamSpec::required(
     "translation",
     ParamKind::Grid,
     "translation b(u) of the motions: three rows of power coefficients in the family parameter",
-);
+).degree();
 
 /// The screw family of the `axis` and `translation` parameters.
 fn screw_family(args: &OpArgs) -> Result<LaguerreFamily<Q>, OpError> {
@@ -1063,12 +1065,12 @@ const PN_RULED_CYCLOGRAPHIC: OpSpec = OpSpec {
             "directrix",
             ParamKind::Grid,
             "l(t) = (m₁, m₂, m₃, r): four rows of power coefficients in t",
-        ),
+        ).degree(),
         ParamSpec::required(
             "ruling",
             ParamKind::Grid,
             "g(t): four rows of power coefficients in t (spacelike: |g₁₋₃|² > g₄²)",
-        ),
+        ).degree(),
         DOMAIN,
         OFFSET,
         ORIENTATION,
@@ -1103,12 +1105,12 @@ const PN_REVOLUTION: OpSpec = OpSpec {
             "u",
             ParamKind::Numbers,
             "Bernstein coefficients of the preimage u(t) on [0, 1] (hodograph (u² − v², 2uv) in the (ρ, z) half-plane)",
-        ),
+        ).degree(),
         ParamSpec::required(
             "v",
             ParamKind::Numbers,
             "Bernstein coefficients of v(t), as many as u",
-        ),
+        ).degree(),
         ParamSpec::with_default(
             "start",
             ParamKind::Point2,
@@ -1420,7 +1422,7 @@ const CYCLOGRAPHIC_SURFACE: OpSpec = OpSpec {
     name: "cyclographic_surface",
     summary: "the cyclographic image of a rational 2-surface s(u, v) = (m; r) of R⁴ (Peternell §3.9, Lemma 3.5): one sheet of the envelope of its cycles, rational when Δ is a square (one sheet for a γ-surface), as a PN surface",
     params: &[
-        ParamSpec::required("x", ParamKind::Grid, "power coefficients c[i][j] of u^i v^j of the numerator of m₁"),
+        ParamSpec::required("x", ParamKind::Grid, "power coefficients c[i][j] of u^i v^j of the numerator of m₁").degree(),
         ParamSpec::required("y", ParamKind::Grid, "numerator of m₂ (same layout)"),
         ParamSpec::required("z", ParamKind::Grid, "numerator of m₃ (same layout)"),
         ParamSpec::required("r", ParamKind::Grid, "numerator of the radius r (same layout)"),
@@ -1575,7 +1577,7 @@ const PN_ANTICAUSTIC: OpSpec = OpSpec {
             "mirror",
             ParamKind::Grid,
             "power coefficients c[i][j] of u^i v^j of the mirror height F(u, v) (polynomial)",
-        ),
+        ).degree(),
         ParamSpec::with_default(
             "level",
             ParamKind::Number,
@@ -1624,12 +1626,12 @@ const PN_PLANAR: OpSpec = OpSpec {
             "function",
             ParamKind::Numbers,
             "power coefficients of the numerator of F(t)",
-        ),
+        ).degree(),
         ParamSpec::optional(
             "denominator",
             ParamKind::Numbers,
             "power coefficients of the denominator of F (default 1)",
-        ),
+        ).degree(),
         ParamSpec::with_default(
             "interval",
             ParamKind::Numbers,

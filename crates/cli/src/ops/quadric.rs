@@ -81,7 +81,7 @@ const QUADRIC_INTERPOLATE: OpSpec = OpSpec {
     name: "quadric_interpolate",
     summary: "a rational curve exactly on a quadric (default the unit sphere) through given points, optionally with tangents, of the lowest possible degree (Jüttler §2: a linear problem)",
     params: &[
-        ParamSpec::required("points", ParamKind::Points, POINTS_DOC),
+        ParamSpec::required("points", ParamKind::Points, POINTS_DOC).degree(),
         ParamSpec::optional(
             "params",
             ParamKind::Numbers,
@@ -96,7 +96,7 @@ const QUADRIC_INTERPOLATE: OpSpec = OpSpec {
             "degree",
             ParamKind::Int,
             "the preimage degree n (the curve has degree 2n); default the lowest that works",
-        ),
+        ).degree(),
         QUADRIC,
         COEFFICIENTS,
         MATRIX,
@@ -117,7 +117,7 @@ const QUADRIC_CURVE_IMAGE: OpSpec = OpSpec {
     name: "quadric_curve_image",
     summary: "the image of a rational Bézier curve of degree n under the generalized stereographic projection: a curve of degree 2n exactly on the quadric",
     params: &[
-        ParamSpec::required("points", ParamKind::Points, CURVE_DOC),
+        ParamSpec::required("points", ParamKind::Points, CURVE_DOC).degree(),
         ParamSpec::optional("weights", ParamKind::Numbers, "one weight per control point (default all 1)"),
         ParamSpec::with_default(
             "homogeneous",
@@ -146,7 +146,7 @@ const QUADRIC_PATCH_IMAGE: OpSpec = OpSpec {
             "net",
             ParamKind::Net,
             "control net of the preimage patch in 3-space: rows of [x, y, z] (with `homogeneous = true`: [w, w·x, w·y, w·z])",
-        ),
+        ).degree(),
         ParamSpec::optional(
             "weights",
             ParamKind::Grid,

@@ -81,8 +81,8 @@ const QUADRIC_COLLINEATION: OpSpec = OpSpec {
     summary: "the image of a rational curve (`points`) or patch (`net`) under the collineation X ↦ A X of homogeneous coordinates X = (w, x, y, z), certified Y ≡ A·X; with `on_quadric` Q (which the input must lie on) also the image quadric Q' = A⁻ᵀ Q A⁻¹ and Yᵀ Q' Y ≡ 0 (Jüttler, Schlussbemerkung: collineations carry constructions between quadrics)",
     params: &[
         ParamSpec::required("collineation", ParamKind::Grid, "the regular 4×4 matrix A acting on (w, x, y, z)"),
-        ParamSpec::optional("points", ParamKind::Points, "control points of a curve, [x, y, z] (homogeneous with `homogeneous = true`)"),
-        ParamSpec::optional("net", ParamKind::Net, "instead of `points`: the control net of a patch (rows)"),
+        ParamSpec::optional("points", ParamKind::Points, "control points of a curve, [x, y, z] (homogeneous with `homogeneous = true`)").degree(),
+        ParamSpec::optional("net", ParamKind::Net, "instead of `points`: the control net of a patch (rows)").degree(),
         ParamSpec::optional("weights", ParamKind::Grid, "weights: one row for a curve, rows like `net` for a patch (default all 1)"),
         ParamSpec::with_default("homogeneous", ParamKind::Bool, "false", "the points are homogeneous (weight first); then `weights` must be absent"),
         ParamSpec::optional("on_quadric", ParamKind::Grid, "a symmetric 4×4 matrix Q with Xᵀ Q X ≡ 0 on the input: adds the image quadric"),
@@ -103,7 +103,7 @@ const QUADRIC_MIQUEL_POINTS: OpSpec = OpSpec {
     name: "quadric_miquel_points",
     summary: "the Miquel configuration of a biquadratic patch on the quadric: corners p1..p4, the planes of the boundary conics, the second intersections q1..q4 of adjacent boundary conics, and whether p1, q2, p3, q4 and q1, p2, q3, p4 are concyclic (det = 0; Jüttler Satz 7); the object is the patch",
     params: &[
-        ParamSpec::required("net", ParamKind::Net, "the 3×3 control net of the patch on the quadric: rows of [x, y, z] (homogeneous with `homogeneous = true`)"),
+        ParamSpec::required("net", ParamKind::Net, "the 3×3 control net of the patch on the quadric: rows of [x, y, z] (homogeneous with `homogeneous = true`)").degree(),
         ParamSpec::optional("weights", ParamKind::Grid, "3×3 weights (default all 1)"),
         ParamSpec::with_default("homogeneous", ParamKind::Bool, "false", "the points are homogeneous (weight first); then `weights` must be absent"),
         QUADRIC,
@@ -127,8 +127,8 @@ const QUADRIC_PSI_INTERPOLATE: OpSpec = OpSpec {
     params: &[
         ParamSpec::required("points", ParamKind::Points, "points of z = xy, [x, y, z] or homogeneous [w, w·x, w·y, w·z] with w·z = x·y·…"),
         ParamSpec::optional("params", ParamKind::Numbers, "one parameter per point, pairwise distinct (default 0, 1/(N−1), …, 1)"),
-        ParamSpec::required("degree", ParamKind::Int, "the degree n = r + s of the curve"),
-        ParamSpec::optional("u_degree", ParamKind::Int, "the degree r of u (default: the extra degree split evenly, u first)"),
+        ParamSpec::required("degree", ParamKind::Int, "the degree n = r + s of the curve").degree(),
+        ParamSpec::optional("u_degree", ParamKind::Int, "the degree r of u (default: the extra degree split evenly, u first)").degree(),
     ],
     example: r#"[[object]]
 name = "psi_quartic"

@@ -280,7 +280,7 @@ const A: ParamSpec = ParamSpec::required(
     "a",
     ParamKind::Grid,
     "support function a of the planes e = D c: power coefficients a[i][j] of u^i v^j (a depends on u only)",
-);
+).degree();
 
 const A_IMAGINARY: ParamSpec = ParamSpec::optional(
     "a_imaginary",
@@ -292,19 +292,19 @@ const A_DENOMINATOR: ParamSpec = ParamSpec::optional(
     "a_denominator",
     ParamKind::Grid,
     "a rational support function a = (a + i·a_imaginary)/a_denominator: power coefficients of u^i v^j of the real denominator (default 1)",
-);
+).degree();
 
 const B_DENOMINATOR: ParamSpec = ParamSpec::optional(
     "b_denominator",
     ParamKind::Grid,
     "a rational support function b = b/b_denominator: power coefficients of u^i v^j (default 1; elliptic nets with the default b = ā(v) use a's denominator)",
-);
+).degree();
 
 const B: ParamSpec = ParamSpec::optional(
     "b",
     ParamKind::Grid,
     "support function b of the planes f = D d: power coefficients b[i][j] of u^i v^j (hyperbolic: v only; parabolic: b_v = a_u; elliptic: default and required value ā(v))",
-);
+).degree();
 
 /// The parameter rectangle of the sphere-family ops.
 const DOMAIN: ParamSpec = ParamSpec::with_default(
@@ -361,7 +361,7 @@ const SPHERE_FAMILY_RECOGNIZE: OpSpec = OpSpec {
             ParamKind::Grid,
             "[[1]]",
             "common denominator W(u, v) of centre and radius (power coefficients of u^i v^j)",
-        ),
+        ).degree(),
         DOMAIN,
         CENTRES,
         SPHERES,

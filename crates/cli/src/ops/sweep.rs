@@ -29,7 +29,7 @@ const CURVE_PARAMS: [ParamSpec; 5] = [
         "quaternions",
         ParamKind::Points,
         "Bernstein coefficients A_0..A_m of the preimage A(t), each [u, v, p, q] = u + v i + p j + q k; the op decides exactly whether the curve has a rational RMF",
-    ),
+    ).degree(),
     ParamSpec::optional(
         "a0",
         ParamKind::Point,
@@ -62,13 +62,13 @@ const PH_RRMF: OpSpec = OpSpec {
             "hermite",
             ParamKind::Points,
             "instead of a preimage: RRMF Hermite data [p_i, t_i, u_i, p_f, t_f, u_f] (end points, tangents, first frame vectors ⟂ tangents); the interpolating RRMF quintic is solved in f64 and made exact (residuals reported)",
-        ),
+        ).degree(),
         ParamSpec::with_default(
             "samples",
             ParamKind::Int,
             "9",
             "number of parameters t = k/(samples−1) at which the frame (t, f1, f2) is drawn, 2 to 200",
-        ),
+        ).samples(),
         ParamSpec::with_default(
             "frame_length",
             ParamKind::Number,
@@ -100,12 +100,12 @@ const SWEEP_RRMF: OpSpec = OpSpec {
             "profile",
             ParamKind::Net,
             "profile pieces, each a list of control points [x, y] of a rational Bézier curve in the normal plane (x along f1, y along f2); consecutive pieces must meet (certified), and a profile whose last piece ends where the first starts is certified closed",
-        ),
+        ).degree(),
         ParamSpec::optional(
             "weights",
             ParamKind::Grid,
             "weights of the profile control points (one row per piece, all > 0); default all 1",
-        ),
+        ).degree(),
     ],
     example: r#"[[object]]
 name = "rrmf_sweep"

@@ -406,7 +406,7 @@ fn build_writes_formats_to_out_dir() {
         .arg(&bad)
         .arg("--out")
         .arg(dir.join("out3"))
-        .args(["--format", "step"])
+        .args(["--format", "step", "--max-magnitude", "500"])
         .output()
         .expect("run");
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
@@ -419,7 +419,7 @@ fn build_writes_formats_to_out_dir() {
         .arg(&bad)
         .arg("--out")
         .arg(&out6)
-        .args(["--format", "json,step"])
+        .args(["--format", "json,step", "--max-magnitude", "500"])
         .output()
         .expect("run");
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));

@@ -414,12 +414,17 @@ fn enclose_energy(pts: &[[Interval; 3]], rel_tol: &Rational) -> Result<(Interval
     let num = &(&(&cross[0] * &cross[0]) + &(&cross[1] * &cross[1])) + &(&cross[2] * &cross[2]);
     let sq = &(&(&d1[0] * &d1[0]) + &(&d1[1] * &d1[1])) + &(&d1[2] * &d1[2]);
     let sigma = sigma_from_square(&sq)?;
-    let mut pieces: Vec<Piece> = Vec::new();
+    // Each piece's width is computed once, and the total kept as exact sums of the
+    // pieces' ends (the enclosures are on one fixed-point grid, so the sums are exact):
+    // an iteration costs one scan of cached widths instead of recomputing every width
+    // (a gcd each) and every sum — the quadratic cost that made data of very different
+    // scales run for minutes before the budget ended it (issue 19).
+    let mut set = PieceSet::default();
     let n0 = 8;
     for i in 0..n0 {
         let a = Rational::from(i) / Rational::from(n0);
         let b = Rational::from(i + 1) / Rational::from(n0);
-        pieces.push(Piece {
+        set.push(Piece {
             enclosure: enclose_piece(&num, &sigma, &a, &b),
             a,
             b,
@@ -427,35 +432,20 @@ fn enclose_energy(pts: &[[Interval; 3]], rel_tol: &Rational) -> Result<(Interval
     }
     const BUDGET: usize = 4000;
     loop {
-        let total = pieces.iter().try_fold(Interval::zero(), |acc, p| {
-            p.enclosure.as_ref().map(|e| acc + e.clone())
-        });
-        if let Some(total) = &total {
-            if total.width() <= rel_tol.clone() * total.mag() || pieces.len() >= BUDGET {
-                return Ok((total.clone(), pieces.len()));
+        if set.unproven == 0 {
+            let total = set.total();
+            if total.width() <= rel_tol.clone() * total.mag() || set.pieces.len() >= BUDGET {
+                return Ok((total, set.pieces.len()));
             }
         }
-        if pieces.len() >= BUDGET {
+        if set.pieces.len() >= BUDGET {
             return Err(PhError::Degenerate(
                 "σ could not be proven positive on [0, 1]: the bending energy diverges or is \
                  too close to diverging"
                     .into(),
             ));
         }
-        // bisect the widest piece
-        let (wi, _) = pieces
-            .iter()
-            .enumerate()
-            .map(|(i, p)| (i, p.enclosure.as_ref().map(Interval::width)))
-            .fold((0, Some(Rational::from(-1))), |best, x| {
-                match (&best.1, &x.1) {
-                    (None, _) => best,
-                    (_, None) => x,
-                    (Some(b), Some(w)) if w > b => x,
-                    _ => best,
-                }
-            });
-        let p = pieces.swap_remove(wi);
+        let p = set.take_widest();
         if p.enclosure.is_none() && &p.b - &p.a < pow2(-40) {
             return Err(PhError::Degenerate(format!(
                 "σ could not be proven positive near t = {:.12}: the bending energy diverges or \
@@ -465,12 +455,77 @@ fn enclose_energy(pts: &[[Interval; 3]], rel_tol: &Rational) -> Result<(Interval
         }
         let mid = (&p.a + &p.b) / Rational::from(2);
         for (a, b) in [(p.a.clone(), mid.clone()), (mid, p.b.clone())] {
-            pieces.push(Piece {
+            set.push(Piece {
                 enclosure: enclose_piece(&num, &sigma, &a, &b),
                 a,
                 b,
             });
         }
+    }
+}
+
+/// The pieces of the quadrature with each piece's width computed once and the total kept
+/// as exact sums of the pieces' ends (the enclosures are on one fixed-point grid, so the
+/// sums are exact): an iteration costs one scan of cached widths instead of recomputing
+/// every width (a gcd each) and every sum — the quadratic cost that made Hermite data of
+/// very different scales run for minutes before the budget ended it (issue 19).
+#[derive(Default)]
+struct PieceSet {
+    pieces: Vec<Piece>,
+    widths: Vec<Option<Rational>>,
+    sum_lo: Rational,
+    sum_hi: Rational,
+    /// Pieces on which σ is not proven positive (no enclosure).
+    unproven: usize,
+}
+
+impl PieceSet {
+    fn push(&mut self, p: Piece) {
+        match &p.enclosure {
+            Some(e) => {
+                self.sum_lo += e.lo();
+                self.sum_hi += e.hi();
+                self.widths.push(Some(e.width()));
+            }
+            None => {
+                self.unproven += 1;
+                self.widths.push(None);
+            }
+        }
+        self.pieces.push(p);
+    }
+
+    /// The sum of the enclosures (all pieces enclosed).
+    fn total(&self) -> Interval {
+        Interval::new(&self.sum_lo, &self.sum_hi).unwrap_or_else(Interval::zero)
+    }
+
+    /// Removes the piece to bisect: one without enclosure first, else the widest.
+    fn take_widest(&mut self) -> Piece {
+        let wi = match self.widths.iter().position(Option::is_none) {
+            Some(i) => i,
+            None => {
+                self.widths
+                    .iter()
+                    .enumerate()
+                    .fold((0, None::<&Rational>), |best, (i, w)| match (best.1, w) {
+                        (Some(b), Some(w)) if w <= b => best,
+                        (_, Some(w)) => (i, Some(w)),
+                        _ => best,
+                    })
+                    .0
+            }
+        };
+        self.widths.swap_remove(wi);
+        let p = self.pieces.swap_remove(wi);
+        match &p.enclosure {
+            Some(e) => {
+                self.sum_lo -= e.lo();
+                self.sum_hi -= e.hi();
+            }
+            None => self.unproven -= 1,
+        }
+        p
     }
 }
 
