@@ -156,7 +156,7 @@ fn build_strips(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 
 const LINE_CONGRUENCE_PARAMETRIZED: OpSpec = OpSpec {
     name: "line_congruence_parametrized",
-    summary: "any rational two-parameter line congruence p(u, v) ∨ q(u, v), or the normal congruence of a rational surface X(u, v), drawn as ruled strips like line_congruence_strips, with its order and class (lines through a generic point / in a generic plane, by exact elimination at independent choices, certified when two choices reach the maximum; Pottmann and Wallner 2001 §3.2, §5.1) and its focal sheets as surfaces where they are rational (A₀ ≡ 0, A₂ ≡ 0 or a square discriminant of the focal polynomial)",
+    summary: "any rational two-parameter line congruence p(u, v) ∨ q(u, v), or the normal congruence of a rational surface X(u, v), drawn as ruled strips like line_congruence_strips, with its order and class (lines through a generic point / in a generic plane, by exact elimination at independent choices, certified when two choices reach the maximum: proved lower bounds, exact when they reach the Bézout bound minus the base points, docs/math/lines-and-canal.md; Pottmann and Wallner 2001 §3.2, §5.1) and its focal sheets as surfaces where they are rational (A₀ ≡ 0, A₂ ≡ 0 or a square discriminant of the focal polynomial)",
     params: &[
         ParamSpec::optional(
             "surface",
@@ -245,6 +245,16 @@ fn build_parametrized(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     main.values.push(NamedQuantity::new("order", "lines through a generic point", int(oc.order)));
     main.values.push(NamedQuantity::new("class", "lines in a generic plane", int(oc.class)));
     main.values.push(NamedQuantity::new("mu", "parameter points (u, v) per generic line", int(oc.mu)));
+    main.values.push(NamedQuantity::new(
+        "order_class_exact",
+        "the counted order and class (proved lower bounds) reach the Bézout upper bound of (m + n)·μ",
+        Quantity::Bool(oc.exact()),
+    ));
+    if let Some((m, n)) = oc.at_most() {
+        main.values.push(NamedQuantity::new("order_at_most", "upper bound of the order (Bézout minus base points)", int(m)));
+        main.values.push(NamedQuantity::new("class_at_most", "upper bound of the class (Bézout minus base points)", int(n)));
+    }
+    main.values.push(NamedQuantity::new("order_class", "order and class in words", Quantity::Text(oc.describe())));
     let mut out = vec![main];
     if args.bool("focal_sheets")? {
         let sheets = sheets.ok_or_else(|| {

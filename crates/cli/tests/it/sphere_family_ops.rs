@@ -284,6 +284,16 @@ fn a_normal_congruence_is_drawn_with_order_class_and_its_rational_focal_sheet() 
         ),
         (3, 2, 1)
     );
+    // the paraboloid of revolution: its base points at infinity are not ordinary, the
+    // Bézout bound (7) stays above the count (5)
+    assert!(!value_bool(&objs[0], "order_class_exact"));
+    assert_eq!(
+        (
+            value_int(&objs[0], "order_at_most"),
+            value_int(&objs[0], "class_at_most")
+        ),
+        (5, 4)
+    );
     assert_eq!(objs[1].name, "n_focal_1");
     crate::common::assert_exact_patches_certifying(&objs[1], "sheet patches is > 0");
     // the elliptic paraboloid z = u² + 2v²: irrational focal sheets, a located error
@@ -300,6 +310,26 @@ fn a_normal_congruence_is_drawn_with_order_class_and_its_rational_focal_sheet() 
         (value_int(&objs[0], "order"), value_int(&objs[0], "class")),
         (5, 2)
     );
+    // exact: the counts reach the Bézout bound
+    assert!(value_bool(&objs[0], "order_class_exact"));
+    match objs[0]
+        .values
+        .iter()
+        .find(|v| v.name == "order_class")
+        .map(|v| &v.value)
+    {
+        Some(rcagd_io::quantity::Quantity::Text(t)) => {
+            assert!(t.starts_with("order 5, class 2 (exact"), "{t}")
+        }
+        other => panic!("order_class: {other:?}"),
+    }
+}
+
+fn value_bool(o: &Object, name: &str) -> bool {
+    match o.values.iter().find(|v| v.name == name).map(|v| &v.value) {
+        Some(rcagd_io::quantity::Quantity::Bool(b)) => *b,
+        other => panic!("{name}: {other:?}"),
+    }
 }
 
 #[test]
