@@ -42,9 +42,10 @@ pub struct PlanarHermiteInterpolant<F> {
     pub root_sign: i8,
     /// The PH quintic.
     pub curve: PlanarPhCurve<F>,
-    /// Absolute rotation index `(1/2π)∫|κ| ds` (f64).
+    /// Absolute rotation index `(1/2π)∫|κ| ds` (f64; `+∞` for an interpolant with a cusp,
+    /// where `σ` vanishes on `[0, 1]` and the quadrature does not apply).
     pub absolute_rotation_index: f64,
-    /// Bending energy `∫κ² ds` (f64).
+    /// Bending energy `∫κ² ds` (f64; `+∞` for an interpolant with a cusp: it diverges).
     pub bending_energy: f64,
     /// `true` for the "good" interpolant (least rotation index, then least energy).
     pub best: bool,
@@ -139,8 +140,11 @@ impl<F: Scalar> PlanarHermiteData<F> {
         let r = if root_sign > 0 { root } else { -root };
         let w1 = (r - (w0.clone() + w2.clone()).scale(&f(3))).scale(&(F::one() / f(4)));
         let curve = PlanarPhCurve::new(vec![w0, w1, w2], self.p0.clone())?;
-        let absolute_rotation_index = curve.absolute_rotation_index()?;
-        let bending_energy = curve.bending_energy()?;
+        // an interpolant through a cusp (σ vanishes on [0, 1]) is still an interpolant:
+        // its energy diverges and its rotation index is not computed (+∞ for both), so it
+        // is never the best one; before, it failed the whole solve
+        let absolute_rotation_index = curve.absolute_rotation_index().unwrap_or(f64::INFINITY);
+        let bending_energy = curve.bending_energy().unwrap_or(f64::INFINITY);
         Ok(PlanarHermiteInterpolant {
             end_sign: if end_sign > 0 { 1 } else { -1 },
             root_sign: if root_sign > 0 { 1 } else { -1 },
