@@ -396,22 +396,18 @@ pub(crate) type Factors<'a, F> =
     &'a dyn Fn(&Poly<rcagd_algebra::Complex<F>>) -> Vec<Poly<rcagd_algebra::Complex<F>>>;
 
 /// Builds `x(t, u)` from Krasauskas' reduced pencil for one axis choice over `Q`
-/// (factors over `Q(i)`, [`krasauskas::gaussian_factors_of`]).
+/// (factors over `Q(i)`, [`krasauskas::gaussian_factors_of`], through `memo`).
 pub(crate) fn build_krasauskas(
     spine: &CanalSpine<Rational>,
     numerators: &[Poly<Rational>; 4],
     g: &[Poly<Rational>; 2],
     axis: AxisChoice,
     balance_at: &Rational,
+    memo: &krasauskas::FactorMemo,
 ) -> Result<CanalSurface<Rational>, CanalError> {
-    build_krasauskas_with(
-        spine,
-        numerators,
-        g,
-        axis,
-        balance_at,
-        &krasauskas::gaussian_factors_of,
-    )
+    build_krasauskas_with(spine, numerators, g, axis, balance_at, &|l| {
+        memo.gaussian_factors(l)
+    })
 }
 
 /// Builds `x(t, u)` from Krasauskas' reduced pencil for one axis choice
@@ -669,12 +665,23 @@ pub fn canal_surface(
     spine: &CanalSpine<Rational>,
     options: &CanalOptions,
 ) -> Result<CanalBuild, CanalError> {
+    canal_surface_memo(spine, options, &krasauskas::FactorMemo::default())
+}
+
+/// [`canal_surface`] with the exact factorizations taken from (and added to) `memo` (the
+/// same result: the memo only returns what the factorization would).
+pub(crate) fn canal_surface_memo(
+    spine: &CanalSpine<Rational>,
+    options: &CanalOptions,
+    memo: &krasauskas::FactorMemo,
+) -> Result<CanalBuild, CanalError> {
     if spine.r.is_zero() {
         return Err(CanalError::ZeroRadius);
     }
     let (spine, reparam) = oriented_on_domain(spine, options)?;
     let d = spine.discriminant()?;
-    let split = super::sum_of_squares::gaussian_split(&d)?;
+    let split = memo.gaussian_split(&d)?;
+    let gaussian = |l: &Poly<rcagd_algebra::Complex<Rational>>| memo.gaussian_factors(l);
     // the Krasauskas pencil is balanced at the middle of the domain (s = 0 after the
     // reparametrization of a domain, t = 0 without one)
     let mid = match (&options.domain, &reparam) {
@@ -702,7 +709,7 @@ pub fn canal_surface(
                 options.axis,
                 options.method,
                 &mid,
-                &krasauskas::gaussian_factors_of,
+                &gaussian,
             )
             .map(|mut s| {
                 s.reparametrized = reparam.clone();

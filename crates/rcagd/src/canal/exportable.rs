@@ -29,11 +29,14 @@
 //! then to the earlier candidate (coordinate axes before tilted frames, Krasauskas before
 //! Peternell–Pottmann, general splits before the caller's split).
 
-use super::envelope::{build_krasauskas, canal_surface, CanalBuild, CanalOptions, CanalSurface};
+use super::envelope::{
+    build_krasauskas, canal_surface_memo, CanalBuild, CanalOptions, CanalSurface,
+};
 use super::envelope::{AxisChoice, Construction, Method, Orientation};
 use super::frame::{
     coordinate_axis, householder, oriented, pole_free_directions, transform_spine, EXPORT_SPLITS,
 };
+use super::krasauskas::FactorMemo;
 use super::regularity::check_pipe_regularity;
 use super::self_intersection::{check_chain_embedded, check_pipe_embedded};
 use super::{CanalError, CanalSpine};
@@ -351,6 +354,7 @@ fn candidates_on(
     options: &CanalOptions,
     a: &Rational,
     b: &Rational,
+    memo: &FactorMemo,
 ) -> Result<IntervalResult, CanalError> {
     let so = oriented(spine, options.orientation);
     // the reality of the envelope on the interval is a property of the data, not of a
@@ -410,7 +414,7 @@ fn candidates_on(
                 domain: Some((a.clone(), b.clone())),
                 method,
             };
-            let general = match canal_surface(&fam, &opts) {
+            let general = match canal_surface_memo(&fam, &opts, memo) {
                 Ok(CanalBuild::Rational(s)) => Some(Ok(s)),
                 Ok(CanalBuild::Extension { radicand, .. }) => {
                     res.radicand.get_or_insert(radicand);
@@ -430,7 +434,7 @@ fn candidates_on(
             let used = matches!(&general, Some(Ok(s)) if same(s));
             built.extend(general);
             if let (Some(g), true, false) = (split, global, used) {
-                built.push(with_split(&fo, g, axis, method, &mid).map(|s| s.on_domain(a, b)));
+                built.push(with_split(&fo, g, axis, method, &mid, memo).map(|s| s.on_domain(a, b)));
             }
         }
         for s in built {
@@ -493,6 +497,7 @@ fn with_split(
     axis: AxisChoice,
     method: Method,
     mid: &Rational,
+    memo: &FactorMemo,
 ) -> Result<CanalSurface<Rational>, CanalError> {
     let d = fo.discriminant()?;
     if &(&g[0] * &g[0]) + &(&g[1] * &g[1]) != d {
@@ -503,7 +508,7 @@ fn with_split(
     match method {
         Method::Krasauskas => {
             let p = fo.derivative_numerators()?;
-            build_krasauskas(fo, &p, g, axis, mid)
+            build_krasauskas(fo, &p, g, axis, mid, memo)
         }
         _ => super::canal_surface_with_split(
             fo,
@@ -524,9 +529,10 @@ fn pieces_on(
     interval: (&Rational, &Rational),
     depth: usize,
     acc: &mut ExportableCanal,
+    memo: &FactorMemo,
 ) -> Result<(), CanalError> {
     let (a, b) = interval;
-    let res = candidates_on(spine, split, options, a, b)?;
+    let res = candidates_on(spine, split, options, a, b, memo)?;
     acc.tried += res.tried;
     acc.exporting += res.exporting;
     if let Some(p) = res.best {
@@ -552,8 +558,8 @@ fn pieces_on(
         });
     }
     let m = (a.clone() + b.clone()) / Rational::from(2);
-    pieces_on(spine, split, options, (a, &m), depth + 1, acc)?;
-    pieces_on(spine, split, options, (&m, b), depth + 1, acc)
+    pieces_on(spine, split, options, (a, &m), depth + 1, acc, memo)?;
+    pieces_on(spine, split, options, (&m, b), depth + 1, acc, memo)
 }
 
 /// The canal surface of `spine` on the domain of `options` (required) as exact pieces that
@@ -589,7 +595,9 @@ pub fn canal_surface_exportable(
         exporting: 0,
         regularity: Vec::new(),
     };
-    pieces_on(spine, split, options, (&a, &b), 0, &mut acc)?;
+    // the factorizations repeat across frames, methods and intervals: computed once
+    let memo = FactorMemo::default();
+    pieces_on(spine, split, options, (&a, &b), 0, &mut acc, &memo)?;
     Ok(acc)
 }
 

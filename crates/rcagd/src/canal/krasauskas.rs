@@ -77,7 +77,9 @@ use num_traits::{One, Zero};
 use rcagd_algebra::complex::{conj_poly, re_im_polys};
 use rcagd_algebra::linalg::{solve, Matrix};
 use rcagd_algebra::roots::isolate_real_roots;
+use rcagd_algebra::sum_of_squares::GaussianSplit;
 use rcagd_algebra::{Complex, Poly, QuadExt, Rational, Scalar};
+use std::cell::RefCell;
 
 type CPoly<F> = Poly<Complex<F>>;
 
@@ -513,8 +515,22 @@ pub(crate) fn envelope_of_pencil<F: Scalar>(
 }
 
 /// Irreducible factors over `Q(i)` of a Gaussian polynomial `l` (through the norm `l l̄`),
-/// those that divide `l`; empty if the factorization gives up.
+/// those that divide `l`; empty if the factorization gives up. (The builders use the memoized
+/// [`FactorMemo::gaussian_factors`]; this is its reference in the tests.)
+#[cfg_attr(not(test), allow(dead_code))]
 pub(crate) fn gaussian_factors_of(l: &CPoly<Rational>) -> Vec<CPoly<Rational>> {
+    gaussian_factors_with(l, &|f| super::factor::factor_gaussian(f).ok())
+}
+
+/// Irreducible factors over `Q(i)`.
+type GaussFactors = Vec<CPoly<Rational>>;
+
+/// [`gaussian_factors_of`] with the factorization over `Q(i)` of the monic square-free
+/// factors of the norm supplied by `factor` (`None`: it gave up).
+fn gaussian_factors_with(
+    l: &CPoly<Rational>,
+    factor: &dyn Fn(&Poly<Rational>) -> Option<GaussFactors>,
+) -> Vec<CPoly<Rational>> {
     use rcagd_algebra::complex::norm_sq_poly;
     use rcagd_algebra::roots::square_free_decomposition;
     let n = norm_sq_poly(l);
@@ -523,7 +539,7 @@ pub(crate) fn gaussian_factors_of(l: &CPoly<Rational>) -> Vec<CPoly<Rational>> {
     }
     let mut out: Vec<CPoly<Rational>> = Vec::new();
     for (f, _) in square_free_decomposition(&n) {
-        let Ok(fs) = super::factor::factor_gaussian(&f) else {
+        let Some(fs) = factor(&f) else {
             continue;
         };
         for h in fs {
@@ -533,6 +549,69 @@ pub(crate) fn gaussian_factors_of(l: &CPoly<Rational>) -> Vec<CPoly<Rational>> {
         }
     }
     out
+}
+
+/// A memo of the exact factorizations one construction repeats (the candidate search of
+/// [`super::exportable`] builds every frame × method × interval): the factors over `Q(i)`
+/// of `det(a, b)` ([`gaussian_factors_of`], keyed by the monic `det`: the monic factors of
+/// `c·l` and `l` are the same), the factorizations over `Q(i)` of the square-free factors
+/// of its norm, and the Gaussian split of `D` ([`super::sum_of_squares::gaussian_split`]).
+/// Every entry is the value of a pure function of its key, so a search with the memo makes
+/// the same choices as one without. Not shared across threads.
+#[derive(Debug, Default)]
+pub(crate) struct FactorMemo {
+    dets: RefCell<Vec<(CPoly<Rational>, GaussFactors)>>,
+    norms: RefCell<Vec<(Poly<Rational>, Option<GaussFactors>)>>,
+    splits: RefCell<Vec<(Poly<Rational>, GaussianSplit)>>,
+}
+
+/// The most entries per table of a [`FactorMemo`] (then it starts over).
+const MEMO_ENTRIES: usize = 256;
+
+fn remember<K, V>(table: &RefCell<Vec<(K, V)>>, key: K, value: V) {
+    let mut t = table.borrow_mut();
+    if t.len() >= MEMO_ENTRIES {
+        t.clear();
+    }
+    t.push((key, value));
+}
+
+impl FactorMemo {
+    /// [`gaussian_factors_of`], memoized.
+    pub(crate) fn gaussian_factors(&self, l: &CPoly<Rational>) -> Vec<CPoly<Rational>> {
+        if l.is_zero() {
+            return Vec::new();
+        }
+        let key = l.monic();
+        if let Some((_, v)) = self.dets.borrow().iter().find(|(k, _)| *k == key) {
+            return v.clone();
+        }
+        let v = gaussian_factors_with(l, &|f| self.factor_gaussian(f));
+        remember(&self.dets, key, v.clone());
+        v
+    }
+
+    fn factor_gaussian(&self, f: &Poly<Rational>) -> Option<Vec<CPoly<Rational>>> {
+        if let Some((_, v)) = self.norms.borrow().iter().find(|(k, _)| k == f) {
+            return v.clone();
+        }
+        let v = super::factor::factor_gaussian(f).ok();
+        remember(&self.norms, f.clone(), v.clone());
+        v
+    }
+
+    /// [`super::sum_of_squares::gaussian_split`], memoized (errors are not).
+    ///
+    /// # Errors
+    /// As [`super::sum_of_squares::gaussian_split`].
+    pub(crate) fn gaussian_split(&self, d: &Poly<Rational>) -> Result<GaussianSplit, CanalError> {
+        if let Some((_, v)) = self.splits.borrow().iter().find(|(k, _)| k == d) {
+            return Ok(v.clone());
+        }
+        let v = super::sum_of_squares::gaussian_split(d)?;
+        remember(&self.splits, d.clone(), v.clone());
+        Ok(v)
+    }
 }
 
 /// Irreducible factors over `K = Q(√d)(i)` of `l ∈ K[t]` that divide `l`
