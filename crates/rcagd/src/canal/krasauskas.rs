@@ -79,7 +79,7 @@ use rcagd_algebra::linalg::{solve, Matrix};
 use rcagd_algebra::roots::isolate_real_roots;
 use rcagd_algebra::sum_of_squares::GaussianSplit;
 use rcagd_algebra::{Complex, Poly, QuadExt, Rational, Scalar};
-use std::cell::RefCell;
+use std::sync::Mutex;
 
 type CPoly<F> = Poly<Complex<F>>;
 
@@ -551,53 +551,114 @@ fn gaussian_factors_with(
     out
 }
 
-/// A memo of the exact factorizations one construction repeats (the candidate search of
+/// A memo of the exact computations one construction repeats (the candidate search of
 /// [`super::exportable`] builds every frame × method × interval): the factors over `Q(i)`
 /// of `det(a, b)` ([`gaussian_factors_of`], keyed by the monic `det`: the monic factors of
 /// `c·l` and `l` are the same), the factorizations over `Q(i)` of the square-free factors
-/// of its norm, and the Gaussian split of `D` ([`super::sum_of_squares::gaussian_split`]).
-/// Every entry is the value of a pure function of its key, so a search with the memo makes
-/// the same choices as one without. Not shared across threads.
+/// of its norm, the Gaussian split of `D` ([`super::sum_of_squares::gaussian_split`]) and
+/// the reality checks of the family ([`CanalSpine::check_real_envelope`]). Every entry is
+/// the value of a pure function of its key, so a search with the memo makes the same
+/// choices as one without; it may be shared by threads (a lookup that misses computes
+/// the value without holding the lock).
 #[derive(Debug, Default)]
 pub(crate) struct FactorMemo {
-    dets: RefCell<Vec<(CPoly<Rational>, GaussFactors)>>,
-    norms: RefCell<Vec<(Poly<Rational>, Option<GaussFactors>)>>,
-    splits: RefCell<Vec<(Poly<Rational>, GaussianSplit)>>,
+    dets: Table<CPoly<Rational>, GaussFactors>,
+    norms: Table<Poly<Rational>, Option<GaussFactors>>,
+    splits: Table<Poly<Rational>, GaussianSplit>,
+    real: Table<RealKey, ()>,
+    /// Remember nothing (the reference of the tests).
+    off: bool,
 }
+
+/// A family and a domain (`None`: all of `R`) on which its envelope was found real.
+type RealKey = (CanalSpine<Rational>, Option<(Rational, Rational)>);
 
 /// The most entries per table of a [`FactorMemo`] (then it starts over).
 const MEMO_ENTRIES: usize = 256;
 
-fn remember<K, V>(table: &RefCell<Vec<(K, V)>>, key: K, value: V) {
-    let mut t = table.borrow_mut();
-    if t.len() >= MEMO_ENTRIES {
-        t.clear();
+/// Key–value pairs, found by equality (the keys are polynomials: few, and compared fast).
+#[derive(Debug)]
+struct Table<K, V>(Mutex<Vec<(K, V)>>);
+
+impl<K, V> Default for Table<K, V> {
+    fn default() -> Self {
+        Table(Mutex::new(Vec::new()))
     }
-    t.push((key, value));
+}
+
+impl<K: PartialEq, V: Clone> Table<K, V> {
+    fn get(&self, key: &K) -> Option<V> {
+        let t = self.0.lock().ok()?;
+        t.iter().find(|(k, _)| k == key).map(|(_, v)| v.clone())
+    }
+
+    fn put(&self, key: K, value: V) {
+        if let Ok(mut t) = self.0.lock() {
+            if t.len() >= MEMO_ENTRIES {
+                t.clear();
+            }
+            t.push((key, value));
+        }
+    }
 }
 
 impl FactorMemo {
+    /// A memo that remembers nothing: every call computes (the reference in the tests).
+    #[cfg(test)]
+    pub(crate) fn off() -> Self {
+        FactorMemo {
+            off: true,
+            ..FactorMemo::default()
+        }
+    }
+
+    fn get<K: PartialEq, V: Clone>(&self, table: &Table<K, V>, key: &K) -> Option<V> {
+        if self.off {
+            None
+        } else {
+            table.get(key)
+        }
+    }
+
     /// [`gaussian_factors_of`], memoized.
     pub(crate) fn gaussian_factors(&self, l: &CPoly<Rational>) -> Vec<CPoly<Rational>> {
         if l.is_zero() {
             return Vec::new();
         }
         let key = l.monic();
-        if let Some((_, v)) = self.dets.borrow().iter().find(|(k, _)| *k == key) {
-            return v.clone();
+        if let Some(v) = self.get(&self.dets, &key) {
+            return v;
         }
         let v = gaussian_factors_with(l, &|f| self.factor_gaussian(f));
-        remember(&self.dets, key, v.clone());
+        self.dets.put(key, v.clone());
         v
     }
 
-    fn factor_gaussian(&self, f: &Poly<Rational>) -> Option<Vec<CPoly<Rational>>> {
-        if let Some((_, v)) = self.norms.borrow().iter().find(|(k, _)| k == f) {
-            return v.clone();
+    fn factor_gaussian(&self, f: &Poly<Rational>) -> Option<GaussFactors> {
+        if let Some(v) = self.get(&self.norms, f) {
+            return v;
         }
         let v = super::factor::factor_gaussian(f).ok();
-        remember(&self.norms, f.clone(), v.clone());
+        self.norms.put(f.clone(), v.clone());
         v
+    }
+
+    /// [`CanalSpine::check_real_envelope`], memoized (errors are not).
+    ///
+    /// # Errors
+    /// As [`CanalSpine::check_real_envelope`].
+    pub(crate) fn check_real_envelope(
+        &self,
+        spine: &CanalSpine<Rational>,
+        domain: Option<(&Rational, &Rational)>,
+    ) -> Result<(), CanalError> {
+        let key = (spine.clone(), domain.map(|(a, b)| (a.clone(), b.clone())));
+        if self.get(&self.real, &key).is_some() {
+            return Ok(());
+        }
+        spine.check_real_envelope(domain)?;
+        self.real.put(key, ());
+        Ok(())
     }
 
     /// [`super::sum_of_squares::gaussian_split`], memoized (errors are not).
@@ -605,11 +666,11 @@ impl FactorMemo {
     /// # Errors
     /// As [`super::sum_of_squares::gaussian_split`].
     pub(crate) fn gaussian_split(&self, d: &Poly<Rational>) -> Result<GaussianSplit, CanalError> {
-        if let Some((_, v)) = self.splits.borrow().iter().find(|(k, _)| k == d) {
-            return Ok(v.clone());
+        if let Some(v) = self.get(&self.splits, d) {
+            return Ok(v);
         }
         let v = super::sum_of_squares::gaussian_split(d)?;
-        remember(&self.splits, d.clone(), v.clone());
+        self.splits.put(d.clone(), v.clone());
         Ok(v)
     }
 }
