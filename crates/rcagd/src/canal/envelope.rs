@@ -329,19 +329,32 @@ pub(crate) fn envelope_from_normals<F: Scalar>(
     ]
 }
 
+/// The monic `gcd` of polynomials (zero if all are zero), lowest degrees first and stopped
+/// as soon as it is `1` (the same value as the `gcd` of all of them, at a fraction of the
+/// cost when there is no common factor).
+fn common_factor<'a, F: Scalar + 'a>(polys: impl Iterator<Item = &'a Poly<F>>) -> Poly<F> {
+    let mut ps: Vec<&Poly<F>> = polys.filter(|p| !p.is_zero()).collect();
+    ps.sort_by_key(|p| p.degree());
+    let mut acc = Poly::zero();
+    for p in ps {
+        acc = acc.gcd(p);
+        if acc.degree() == Some(0) {
+            break;
+        }
+    }
+    acc
+}
+
 /// Removes the common factors in `t` and in `u` of the four components (exact scalars).
 fn reduce<F: Scalar>(x: &mut [BiPoly<F>; 4]) -> Result<(), CanalError> {
-    let ct = x
-        .iter()
-        .fold(Poly::zero(), |acc: Poly<F>, b| acc.gcd(&b.content_t()));
+    let ct = common_factor(x.iter().flat_map(|b| b.coeffs().iter()));
     if ct.degree().is_some_and(|d| d > 0) {
         for b in x.iter_mut() {
             *b = b.div_t(&ct)?;
         }
     }
-    let cu = x.iter().fold(Poly::zero(), |acc: Poly<F>, b| {
-        acc.gcd(&b.transpose().content_t())
-    });
+    let xt: Vec<BiPoly<F>> = x.iter().map(BiPoly::transpose).collect();
+    let cu = common_factor(xt.iter().flat_map(|b| b.coeffs().iter()));
     if cu.degree().is_some_and(|d| d > 0) {
         for b in x.iter_mut() {
             *b = b.transpose().div_t(&cu)?.transpose();
@@ -396,22 +409,18 @@ pub(crate) type Factors<'a, F> =
     &'a dyn Fn(&Poly<rcagd_algebra::Complex<F>>) -> Vec<Poly<rcagd_algebra::Complex<F>>>;
 
 /// Builds `x(t, u)` from Krasauskas' reduced pencil for one axis choice over `Q`
-/// (factors over `Q(i)`, [`krasauskas::gaussian_factors_of`]).
+/// (factors over `Q(i)`, [`krasauskas::gaussian_factors_of`], through `memo`).
 pub(crate) fn build_krasauskas(
     spine: &CanalSpine<Rational>,
     numerators: &[Poly<Rational>; 4],
     g: &[Poly<Rational>; 2],
     axis: AxisChoice,
     balance_at: &Rational,
+    memo: &krasauskas::FactorMemo,
 ) -> Result<CanalSurface<Rational>, CanalError> {
-    build_krasauskas_with(
-        spine,
-        numerators,
-        g,
-        axis,
-        balance_at,
-        &krasauskas::gaussian_factors_of,
-    )
+    build_krasauskas_with(spine, numerators, g, axis, balance_at, &|l| {
+        memo.gaussian_factors(l)
+    })
 }
 
 /// Builds `x(t, u)` from Krasauskas' reduced pencil for one axis choice
@@ -638,6 +647,7 @@ fn reparametrize<F: Scalar>(spine: &CanalSpine<F>, a: &F, b: &F) -> CanalSpine<F
 fn oriented_on_domain(
     spine: &CanalSpine<Rational>,
     options: &CanalOptions,
+    memo: &krasauskas::FactorMemo,
 ) -> Result<(CanalSpine<Rational>, Option<(Rational, Rational)>), CanalError> {
     let mut spine = match options.orientation {
         Orientation::Positive => spine.clone(),
@@ -645,13 +655,13 @@ fn oriented_on_domain(
     };
     let mut reparam = None;
     if let Some((a, b)) = &options.domain {
-        spine.check_real_envelope(Some((a, b)))?;
-        if spine.check_real_envelope(None).is_err() {
+        memo.check_real_envelope(&spine, Some((a, b)))?;
+        if memo.check_real_envelope(&spine, None).is_err() {
             spine = reparametrize(&spine, a, b);
             reparam = Some((a.clone(), b.clone()));
         }
     } else {
-        spine.check_real_envelope(None)?;
+        memo.check_real_envelope(&spine, None)?;
     }
     Ok((spine, reparam))
 }
@@ -669,12 +679,23 @@ pub fn canal_surface(
     spine: &CanalSpine<Rational>,
     options: &CanalOptions,
 ) -> Result<CanalBuild, CanalError> {
+    canal_surface_memo(spine, options, &krasauskas::FactorMemo::default())
+}
+
+/// [`canal_surface`] with the exact factorizations taken from (and added to) `memo` (the
+/// same result: the memo only returns what the factorization would).
+pub(crate) fn canal_surface_memo(
+    spine: &CanalSpine<Rational>,
+    options: &CanalOptions,
+    memo: &krasauskas::FactorMemo,
+) -> Result<CanalBuild, CanalError> {
     if spine.r.is_zero() {
         return Err(CanalError::ZeroRadius);
     }
-    let (spine, reparam) = oriented_on_domain(spine, options)?;
+    let (spine, reparam) = oriented_on_domain(spine, options, memo)?;
     let d = spine.discriminant()?;
-    let split = super::sum_of_squares::gaussian_split(&d)?;
+    let split = memo.gaussian_split(&d)?;
+    let gaussian = |l: &Poly<rcagd_algebra::Complex<Rational>>| memo.gaussian_factors(l);
     // the Krasauskas pencil is balanced at the middle of the domain (s = 0 after the
     // reparametrization of a domain, t = 0 without one)
     let mid = match (&options.domain, &reparam) {
@@ -702,7 +723,7 @@ pub fn canal_surface(
                 options.axis,
                 options.method,
                 &mid,
-                &krasauskas::gaussian_factors_of,
+                &gaussian,
             )
             .map(|mut s| {
                 s.reparametrized = reparam.clone();
@@ -765,7 +786,7 @@ pub fn canal_surface_approx(
     spine: &CanalSpine<Rational>,
     options: &CanalOptions,
 ) -> Result<CanalSurface<f64>, CanalError> {
-    let (spine, reparam) = oriented_on_domain(spine, options)?;
+    let (spine, reparam) = oriented_on_domain(spine, options, &krasauskas::FactorMemo::default())?;
     let d = spine.discriminant()?;
     let (g1, g2) = sum_of_two_squares_approx(&d)?;
     // the f64 numerators are not divided by their content: scale the split accordingly

@@ -29,11 +29,14 @@
 //! then to the earlier candidate (coordinate axes before tilted frames, Krasauskas before
 //! Peternell–Pottmann, general splits before the caller's split).
 
-use super::envelope::{build_krasauskas, canal_surface, CanalBuild, CanalOptions, CanalSurface};
+use super::envelope::{
+    build_krasauskas, canal_surface_memo, CanalBuild, CanalOptions, CanalSurface,
+};
 use super::envelope::{AxisChoice, Construction, Method, Orientation};
 use super::frame::{
     coordinate_axis, householder, oriented, pole_free_directions, transform_spine, EXPORT_SPLITS,
 };
+use super::krasauskas::FactorMemo;
 use super::regularity::check_pipe_regularity;
 use super::self_intersection::{check_chain_embedded, check_pipe_embedded};
 use super::{CanalError, CanalSpine};
@@ -351,11 +354,12 @@ fn candidates_on(
     options: &CanalOptions,
     a: &Rational,
     b: &Rational,
+    memo: &FactorMemo,
 ) -> Result<IntervalResult, CanalError> {
     let so = oriented(spine, options.orientation);
     // the reality of the envelope on the interval is a property of the data, not of a
     // candidate: report it as it is
-    so.check_real_envelope(Some((a, b)))?;
+    memo.check_real_envelope(&so, Some((a, b)))?;
     let mut res = IntervalResult {
         best: None,
         tried: 0,
@@ -369,7 +373,7 @@ fn candidates_on(
     };
     // a family without reparametrization and with W ≠ 0 on [a, b] may be built in a tilted
     // frame (the built surface is mapped back by an orthogonal map)
-    let global = so.check_real_envelope(None).is_ok();
+    let global = memo.check_real_envelope(&so, None).is_ok();
     let tilted = if global && count_real_roots_in(so.weight(), a, b)? == 0 {
         pole_free_directions(&so, a, b, TILTED_FRAMES + 6)?
             .into_iter()
@@ -410,7 +414,7 @@ fn candidates_on(
                 domain: Some((a.clone(), b.clone())),
                 method,
             };
-            let general = match canal_surface(&fam, &opts) {
+            let general = match canal_surface_memo(&fam, &opts, memo) {
                 Ok(CanalBuild::Rational(s)) => Some(Ok(s)),
                 Ok(CanalBuild::Extension { radicand, .. }) => {
                     res.radicand.get_or_insert(radicand);
@@ -430,7 +434,7 @@ fn candidates_on(
             let used = matches!(&general, Some(Ok(s)) if same(s));
             built.extend(general);
             if let (Some(g), true, false) = (split, global, used) {
-                built.push(with_split(&fo, g, axis, method, &mid).map(|s| s.on_domain(a, b)));
+                built.push(with_split(&fo, g, axis, method, &mid, memo).map(|s| s.on_domain(a, b)));
             }
         }
         for s in built {
@@ -493,6 +497,7 @@ fn with_split(
     axis: AxisChoice,
     method: Method,
     mid: &Rational,
+    memo: &FactorMemo,
 ) -> Result<CanalSurface<Rational>, CanalError> {
     let d = fo.discriminant()?;
     if &(&g[0] * &g[0]) + &(&g[1] * &g[1]) != d {
@@ -503,7 +508,7 @@ fn with_split(
     match method {
         Method::Krasauskas => {
             let p = fo.derivative_numerators()?;
-            build_krasauskas(fo, &p, g, axis, mid)
+            build_krasauskas(fo, &p, g, axis, mid, memo)
         }
         _ => super::canal_surface_with_split(
             fo,
@@ -524,9 +529,10 @@ fn pieces_on(
     interval: (&Rational, &Rational),
     depth: usize,
     acc: &mut ExportableCanal,
+    memo: &FactorMemo,
 ) -> Result<(), CanalError> {
     let (a, b) = interval;
-    let res = candidates_on(spine, split, options, a, b)?;
+    let res = candidates_on(spine, split, options, a, b, memo)?;
     acc.tried += res.tried;
     acc.exporting += res.exporting;
     if let Some(p) = res.best {
@@ -552,8 +558,8 @@ fn pieces_on(
         });
     }
     let m = (a.clone() + b.clone()) / Rational::from(2);
-    pieces_on(spine, split, options, (a, &m), depth + 1, acc)?;
-    pieces_on(spine, split, options, (&m, b), depth + 1, acc)
+    pieces_on(spine, split, options, (a, &m), depth + 1, acc, memo)?;
+    pieces_on(spine, split, options, (&m, b), depth + 1, acc, memo)
 }
 
 /// The canal surface of `spine` on the domain of `options` (required) as exact pieces that
@@ -573,6 +579,18 @@ pub fn canal_surface_exportable(
     split: Option<&[Poly<Rational>; 2]>,
     options: &CanalOptions,
 ) -> Result<ExportableCanal, CanalError> {
+    // the factorizations repeat across frames, methods and intervals: computed once
+    canal_surface_exportable_memo(spine, split, options, &FactorMemo::default())
+}
+
+/// [`canal_surface_exportable`] with the exact factorizations taken from (and added to)
+/// `memo`.
+fn canal_surface_exportable_memo(
+    spine: &CanalSpine<Rational>,
+    split: Option<&[Poly<Rational>; 2]>,
+    options: &CanalOptions,
+    memo: &FactorMemo,
+) -> Result<ExportableCanal, CanalError> {
     let (a, b) = options.domain.clone().ok_or_else(|| {
         CanalError::InvalidArgument("an exported canal surface needs a parameter domain".into())
     })?;
@@ -589,7 +607,7 @@ pub fn canal_surface_exportable(
         exporting: 0,
         regularity: Vec::new(),
     };
-    pieces_on(spine, split, options, (&a, &b), 0, &mut acc)?;
+    pieces_on(spine, split, options, (&a, &b), 0, &mut acc, memo)?;
     Ok(acc)
 }
 
@@ -945,6 +963,86 @@ mod tests {
 
     fn q(n: i64) -> Rational {
         Rational::from(n)
+    }
+
+    /// The search with the memo of factorizations ([`FactorMemo`]) and without it
+    /// (every factorization and reality check computed where it is needed, as before the
+    /// memo) on the family `s` with the split `split`: the same pieces, candidates and
+    /// certificates, or the same error.
+    fn memo_agrees(s: &CanalSpine<Rational>, split: Option<&[Poly<Rational>; 2]>) {
+        let options = CanalOptions {
+            domain: Some((q(0), q(1))),
+            ..CanalOptions::default()
+        };
+        let with = canal_surface_exportable_memo(s, split, &options, &FactorMemo::default());
+        let without = canal_surface_exportable_memo(s, split, &options, &FactorMemo::off());
+        match (&with, &without) {
+            (Ok(x), Ok(y)) => {
+                assert_eq!(x, y, "{} against {}", x.summary(), y.summary());
+                assert_eq!(x.certify(), y.certify());
+            }
+            (Err(x), Err(y)) => assert_eq!(format!("{x:?}"), format!("{y:?}")),
+            _ => panic!("{with:?} against {without:?}"),
+        }
+    }
+
+    #[test]
+    fn memo_keeps_the_choice_of_the_seed_pipes() {
+        // the gallery quintic (preimage 1, i + k, 1 + j) and issue 17's quintic
+        for (a, r) in [
+            ([[1, 0, 0, 0], [0, 1, 0, 1], [1, 0, 1, 0]], (1, 10)),
+            ([[1, 0, 0, 0], [1, 1, 0, 1], [0, 0, 1, 1]], (1, 8)),
+        ] {
+            let a: Vec<Quaternion<Rational>> = a
+                .iter()
+                .map(|c| Quaternion::new(q(c[0]), q(c[1]), q(c[2]), q(c[3])))
+                .collect();
+            let c = PhCurve::new(a, [q(0), q(0), q(0)]).expect("ph");
+            let s = CanalSpine::polynomial(
+                c.position().clone(),
+                Poly::constant(Rational::from_ratio(r.0, r.1)),
+            );
+            let split = known_pipe_split(&s).expect("split");
+            memo_agrees(&s, split.as_ref());
+            memo_agrees(&s, None);
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(16))]
+
+        /// Random PH quintics (with their split `(σ, 0)`) and pipes around random planar
+        /// cubics (the general splits of `D`): the memo changes nothing.
+        #[test]
+        fn memo_keeps_the_choice_on_random_spines(
+            a in proptest::collection::vec(proptest::array::uniform4(-3i64..4), 3),
+            cubic in proptest::collection::vec(-4i64..5, 12),
+            r in 1i64..20,
+            planar in proptest::prelude::any::<bool>(),
+        ) {
+            let quats: Vec<Quaternion<Rational>> = a
+                .iter()
+                .map(|c| Quaternion::new(q(c[0]), q(c[1]), q(c[2]), q(c[3])))
+                .collect();
+            if let Ok(c) = PhCurve::new(quats, [q(0), q(0), q(0)]) {
+                let s = CanalSpine::polynomial(
+                    c.position().clone(),
+                    Poly::constant(Rational::from_ratio(r, 40)),
+                );
+                if let Ok(split) = known_pipe_split(&s) {
+                    memo_agrees(&s, split.as_ref());
+                }
+            }
+            // a planar cubic (D = ẋ² + ẏ², split over Q(i) by the general builder) in the
+            // plane z = 0 or z = x
+            let m: [Poly<Rational>; 3] = core::array::from_fn(|k| match k {
+                2 if planar => Poly::zero(),
+                2 => Poly::from_ints(&cubic[..4]),
+                _ => Poly::from_ints(&cubic[4 * k..4 * k + 4]),
+            });
+            let radius = Poly::constant(Rational::from_ratio(r, 40));
+            memo_agrees(&CanalSpine::polynomial(m, radius), None);
+        }
     }
 
     /// The PH quintic of issue 17 (preimage `1`, `1 + i + k`, `j + k`): no single frame

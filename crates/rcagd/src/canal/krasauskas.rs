@@ -77,7 +77,9 @@ use num_traits::{One, Zero};
 use rcagd_algebra::complex::{conj_poly, re_im_polys};
 use rcagd_algebra::linalg::{solve, Matrix};
 use rcagd_algebra::roots::isolate_real_roots;
+use rcagd_algebra::sum_of_squares::GaussianSplit;
 use rcagd_algebra::{Complex, Poly, QuadExt, Rational, Scalar};
+use std::sync::Mutex;
 
 type CPoly<F> = Poly<Complex<F>>;
 
@@ -513,8 +515,22 @@ pub(crate) fn envelope_of_pencil<F: Scalar>(
 }
 
 /// Irreducible factors over `Q(i)` of a Gaussian polynomial `l` (through the norm `l l̄`),
-/// those that divide `l`; empty if the factorization gives up.
+/// those that divide `l`; empty if the factorization gives up. (The builders use the memoized
+/// [`FactorMemo::gaussian_factors`]; this is its reference in the tests.)
+#[cfg_attr(not(test), allow(dead_code))]
 pub(crate) fn gaussian_factors_of(l: &CPoly<Rational>) -> Vec<CPoly<Rational>> {
+    gaussian_factors_with(l, &|f| super::factor::factor_gaussian(f).ok())
+}
+
+/// Irreducible factors over `Q(i)`.
+type GaussFactors = Vec<CPoly<Rational>>;
+
+/// [`gaussian_factors_of`] with the factorization over `Q(i)` of the monic square-free
+/// factors of the norm supplied by `factor` (`None`: it gave up).
+fn gaussian_factors_with(
+    l: &CPoly<Rational>,
+    factor: &dyn Fn(&Poly<Rational>) -> Option<GaussFactors>,
+) -> Vec<CPoly<Rational>> {
     use rcagd_algebra::complex::norm_sq_poly;
     use rcagd_algebra::roots::square_free_decomposition;
     let n = norm_sq_poly(l);
@@ -523,7 +539,7 @@ pub(crate) fn gaussian_factors_of(l: &CPoly<Rational>) -> Vec<CPoly<Rational>> {
     }
     let mut out: Vec<CPoly<Rational>> = Vec::new();
     for (f, _) in square_free_decomposition(&n) {
-        let Ok(fs) = super::factor::factor_gaussian(&f) else {
+        let Some(fs) = factor(&f) else {
             continue;
         };
         for h in fs {
@@ -533,6 +549,130 @@ pub(crate) fn gaussian_factors_of(l: &CPoly<Rational>) -> Vec<CPoly<Rational>> {
         }
     }
     out
+}
+
+/// A memo of the exact computations one construction repeats (the candidate search of
+/// [`super::exportable`] builds every frame × method × interval): the factors over `Q(i)`
+/// of `det(a, b)` ([`gaussian_factors_of`], keyed by the monic `det`: the monic factors of
+/// `c·l` and `l` are the same), the factorizations over `Q(i)` of the square-free factors
+/// of its norm, the Gaussian split of `D` ([`super::sum_of_squares::gaussian_split`]) and
+/// the reality checks of the family ([`CanalSpine::check_real_envelope`]). Every entry is
+/// the value of a pure function of its key, so a search with the memo makes the same
+/// choices as one without; it may be shared by threads (a lookup that misses computes
+/// the value without holding the lock).
+#[derive(Debug, Default)]
+pub(crate) struct FactorMemo {
+    dets: Table<CPoly<Rational>, GaussFactors>,
+    norms: Table<Poly<Rational>, Option<GaussFactors>>,
+    splits: Table<Poly<Rational>, GaussianSplit>,
+    real: Table<RealKey, ()>,
+    /// Remember nothing (the reference of the tests).
+    off: bool,
+}
+
+/// A family and a domain (`None`: all of `R`) on which its envelope was found real.
+type RealKey = (CanalSpine<Rational>, Option<(Rational, Rational)>);
+
+/// The most entries per table of a [`FactorMemo`] (then it starts over).
+const MEMO_ENTRIES: usize = 256;
+
+/// Key–value pairs, found by equality (the keys are polynomials: few, and compared fast).
+#[derive(Debug)]
+struct Table<K, V>(Mutex<Vec<(K, V)>>);
+
+impl<K, V> Default for Table<K, V> {
+    fn default() -> Self {
+        Table(Mutex::new(Vec::new()))
+    }
+}
+
+impl<K: PartialEq, V: Clone> Table<K, V> {
+    fn get(&self, key: &K) -> Option<V> {
+        let t = self.0.lock().ok()?;
+        t.iter().find(|(k, _)| k == key).map(|(_, v)| v.clone())
+    }
+
+    fn put(&self, key: K, value: V) {
+        if let Ok(mut t) = self.0.lock() {
+            if t.len() >= MEMO_ENTRIES {
+                t.clear();
+            }
+            t.push((key, value));
+        }
+    }
+}
+
+impl FactorMemo {
+    /// A memo that remembers nothing: every call computes (the reference in the tests).
+    #[cfg(test)]
+    pub(crate) fn off() -> Self {
+        FactorMemo {
+            off: true,
+            ..FactorMemo::default()
+        }
+    }
+
+    fn get<K: PartialEq, V: Clone>(&self, table: &Table<K, V>, key: &K) -> Option<V> {
+        if self.off {
+            None
+        } else {
+            table.get(key)
+        }
+    }
+
+    /// [`gaussian_factors_of`], memoized.
+    pub(crate) fn gaussian_factors(&self, l: &CPoly<Rational>) -> Vec<CPoly<Rational>> {
+        if l.is_zero() {
+            return Vec::new();
+        }
+        let key = l.monic();
+        if let Some(v) = self.get(&self.dets, &key) {
+            return v;
+        }
+        let v = gaussian_factors_with(l, &|f| self.factor_gaussian(f));
+        self.dets.put(key, v.clone());
+        v
+    }
+
+    fn factor_gaussian(&self, f: &Poly<Rational>) -> Option<GaussFactors> {
+        if let Some(v) = self.get(&self.norms, f) {
+            return v;
+        }
+        let v = super::factor::factor_gaussian(f).ok();
+        self.norms.put(f.clone(), v.clone());
+        v
+    }
+
+    /// [`CanalSpine::check_real_envelope`], memoized (errors are not).
+    ///
+    /// # Errors
+    /// As [`CanalSpine::check_real_envelope`].
+    pub(crate) fn check_real_envelope(
+        &self,
+        spine: &CanalSpine<Rational>,
+        domain: Option<(&Rational, &Rational)>,
+    ) -> Result<(), CanalError> {
+        let key = (spine.clone(), domain.map(|(a, b)| (a.clone(), b.clone())));
+        if self.get(&self.real, &key).is_some() {
+            return Ok(());
+        }
+        spine.check_real_envelope(domain)?;
+        self.real.put(key, ());
+        Ok(())
+    }
+
+    /// [`super::sum_of_squares::gaussian_split`], memoized (errors are not).
+    ///
+    /// # Errors
+    /// As [`super::sum_of_squares::gaussian_split`].
+    pub(crate) fn gaussian_split(&self, d: &Poly<Rational>) -> Result<GaussianSplit, CanalError> {
+        if let Some(v) = self.get(&self.splits, d) {
+            return Ok(v);
+        }
+        let v = super::sum_of_squares::gaussian_split(d)?;
+        self.splits.put(d.clone(), v.clone());
+        Ok(v)
+    }
 }
 
 /// Irreducible factors over `K = Q(√d)(i)` of `l ∈ K[t]` that divide `l`
