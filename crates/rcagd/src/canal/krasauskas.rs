@@ -45,9 +45,9 @@
 //! `n = 2 max(k − 1, 2k − 2 − Σ⌈pᵢ/2⌉)` ([`super::krasauskas_bound`]), over `C`: the
 //! operations may need the roots of `D`. Over the field of the data, step 3 needs the
 //! irreducible factors of `det(a, b)` over that field with `i`:
-//! * over `Q` the factors over `Q(i)` ([`gaussian_factors_of`], complete);
+//! * over `Q` the factors over `Q(i)` (`gaussian_factors_of`, complete);
 //! * over `Q(√d)` (a split `D = g₁² + g₂²` that needs `√d`) the factors over
-//!   `K = Q(√d)(i)` ([`biquadratic_factors_of`], Trager's norm method with the primitive
+//!   `K = Q(√d)(i)` (`biquadratic_factors_of`, Trager's norm method with the primitive
 //!   element `√d + i`, [`rcagd_algebra::factor_ext`]): complete — linear factors (roots in
 //!   `K`), factors over `Q(i)`, `Q(√d)` and `Q(√−d)` alike — unless a Zassenhaus
 //!   factorization over `Q` gives up (more than 16 modular factors); then only the

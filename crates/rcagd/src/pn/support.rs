@@ -9,7 +9,7 @@
 //! x = −h n − [h_u (n_v × n) + h_v (n × n_u)] / det(n_u, n_v, n)
 //!   = [−H L Δ N − N₀² (η_u (N_v × N) + η_v (N × N_u))] / (L² N₀ Δ),
 //! ```
-//! `Δ = det(N_u, N_v, N)`, `η_s = H_s L − H L_s` (derived here; Peternell refers to his reference [35]).
+//! `Δ = det(N_u, N_v, N)`, `η_s = H_s L − H L_s` (derived here; Peternell refers to his reference \[35\]).
 //! For the stereographic normal `N = (2ac, 2bc, a² + b² − c²)`, `Δ = −4 N₀ c J`
 //! (`J = det((a,b,c), ∂_u, ∂_v)`, checked with sympy), so `N₀` cancels. `Δ ≡ 0` means a
 //! developable (one-parameter) family of planes.
