@@ -646,21 +646,34 @@ type Tensors = [Tensor; 3];
 /// `[g₁, g₂, N]` of a pair of pieces on a box, in `f64` with error bounds.
 type FTensors = [FTensor; 3];
 
-fn quarter_f(t: &FTensors) -> [FTensors; 4] {
-    let parts: Vec<[FTensor; 4]> = t
-        .iter()
-        .map(|x| {
-            let (l, r) = x.split_t();
-            let (ll, lr) = l.split_s();
-            let (rl, rr) = r.split_s();
-            [ll, lr, rl, rr]
-        })
-        .collect();
-    core::array::from_fn(|q| core::array::from_fn(|k| parts[k][q].clone()))
+/// A tensor-product Bernstein form that halves in `t` and in `s` (exact or `f64`).
+trait Halving: Sized + Clone {
+    fn split_t(&self) -> (Self, Self);
+    fn split_s(&self) -> (Self, Self);
 }
 
-fn quarter(t: &Tensors) -> [Tensors; 4] {
-    let parts: Vec<[Tensor; 4]> = t
+impl Halving for Tensor {
+    fn split_t(&self) -> (Self, Self) {
+        Tensor::split_t(self)
+    }
+    fn split_s(&self) -> (Self, Self) {
+        Tensor::split_s(self)
+    }
+}
+
+impl Halving for FTensor {
+    fn split_t(&self) -> (Self, Self) {
+        FTensor::split_t(self)
+    }
+    fn split_s(&self) -> (Self, Self) {
+        FTensor::split_s(self)
+    }
+}
+
+/// The three tensors of a box on its four quarters, in the order
+/// (t₁, s₁), (t₁, s₂), (t₂, s₁), (t₂, s₂).
+fn quarter<T: Halving>(t: &[T; 3]) -> [[T; 3]; 4] {
+    let parts: Vec<[T; 4]> = t
         .iter()
         .map(|x| {
             let (l, r) = x.split_t();
@@ -669,7 +682,6 @@ fn quarter(t: &Tensors) -> [Tensors; 4] {
             [ll, lr, rl, rr]
         })
         .collect();
-    // order: (t₁, s₁), (t₁, s₂), (t₂, s₁), (t₂, s₂)
     core::array::from_fn(|q| core::array::from_fn(|k| parts[k][q].clone()))
 }
 
@@ -1855,7 +1867,7 @@ fn run_check(
         let mut eq: Vec<Option<Tensors>> = vec![None, None, None, None];
         let mut fq: Vec<Option<FTensors>> = vec![None, None, None, None];
         if let Some(f) = &ft {
-            fq = quarter_f(f).into_iter().map(Some).collect();
+            fq = quarter(f).into_iter().map(Some).collect();
         } else if let Some(t) = &exact_t {
             eq = quarter(t).into_iter().map(Some).collect();
         }
