@@ -59,24 +59,10 @@ pub struct BezoutBound {
 
 /// The Plücker polynomials of `p ∧ q` with their common factor divided out.
 fn plucker(p: &[MPoly<Rational>; 4], q: &[MPoly<Rational>; 4]) -> Vec<MPoly<Rational>> {
-    let l: [MPoly<Rational>; 6] = wedge(p, q);
-    let common = l.iter().fold(MPoly::zero(2), |acc: MPoly<Rational>, x| {
-        if acc.is_zero() {
-            x.clone()
-        } else if x.is_zero() {
-            acc
-        } else {
-            crate::pn::poly::gcd2(&acc, x)
-        }
-    });
-    let l: Vec<MPoly<Rational>> = if common.total_degree().unwrap_or(0) > 0 {
-        l.iter()
-            .map(|x| crate::pn::poly::div_exact(x, &common).unwrap_or_else(|| x.clone()))
-            .collect()
-    } else {
-        l.to_vec()
-    };
-    l.into_iter().filter(|x| !x.is_zero()).collect()
+    super::order_one::without_common_factor(wedge(p, q))
+        .into_iter()
+        .filter(|x| !x.is_zero())
+        .collect()
 }
 
 fn exps(e: &[u32]) -> (u32, u32) {

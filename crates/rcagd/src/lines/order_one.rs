@@ -417,20 +417,7 @@ fn raw_counts(
         wedge(&p.clone().map(|c| shear(&c)), &q.clone().map(|c| shear(&c)));
     // a common factor of the Plücker coordinates (a curve of parameters where p ∧ q = 0, e.g.
     // the diagonal of the chord parametrization) is divided out
-    let common = l.iter().fold(MPoly::zero(2), |acc: MPoly<Rational>, x| {
-        if acc.is_zero() {
-            x.clone()
-        } else if x.is_zero() {
-            acc
-        } else {
-            crate::pn::poly::gcd2(&acc, x)
-        }
-    });
-    let l: [MPoly<Rational>; 6] = if common.total_degree().unwrap_or(0) > 0 {
-        l.map(|x| crate::pn::poly::div_exact(&x, &common).unwrap_or(x))
-    } else {
-        l
-    };
+    let l = without_common_factor(l);
     let cond = |g: &[Rational; 6]| -> MPoly<Rational> {
         let gp: [MPoly<Rational>; 6] = core::array::from_fn(|k| MPoly::constant(2, g[k].clone()));
         reciprocal_product(&gp, &l)
@@ -1020,6 +1007,25 @@ impl<F: Scalar> Certified for OneNCongruence<F> {
             || "the leading coefficient vanishes".into(),
         ));
         out
+    }
+}
+
+/// The six Plücker polynomials with their common factor (a curve of parameters where
+/// `p ∧ q = 0`) divided out.
+pub(super) fn without_common_factor(l: [MPoly<Rational>; 6]) -> [MPoly<Rational>; 6] {
+    let common = l.iter().fold(MPoly::zero(2), |acc: MPoly<Rational>, x| {
+        if acc.is_zero() {
+            x.clone()
+        } else if x.is_zero() {
+            acc
+        } else {
+            crate::pn::poly::gcd2(&acc, x)
+        }
+    });
+    if common.total_degree().unwrap_or(0) > 0 {
+        l.map(|x| crate::pn::poly::div_exact(&x, &common).unwrap_or(x))
+    } else {
+        l
     }
 }
 
