@@ -407,9 +407,68 @@ impl<F: Scalar> Domain<F> {
 
 /// `p(u₀ + s Δu, v₀ + t Δv)` as a polynomial in the local coordinates `(s, t)`.
 pub(crate) fn to_local<F: Scalar>(p: &MPoly<F>, d: &Domain<F>) -> MPoly<F> {
+    if let Some(q) = affine_shift_2(p, d) {
+        return q;
+    }
     let su = &cst(d.u.0.clone()) + &var::<F>(0).scale(&(d.u.1.clone() - d.u.0.clone()));
     let sv = &cst(d.v.0.clone()) + &var::<F>(1).scale(&(d.v.1.clone() - d.v.0.clone()));
     compose(p, &[su, sv])
+}
+
+/// `Σᵢ cᵢ xⁱ ↦ Σᵢ cᵢ (a + h x)ⁱ` in place: Horner's shift by `a`, then `cᵢ ← hⁱ cᵢ`.
+fn taylor_shift<F: Scalar>(c: &mut [F], a: &F, h: &F) {
+    let deg = c.len().saturating_sub(1);
+    for k in 0..deg {
+        for i in (k..deg).rev() {
+            let next = c[i + 1].clone();
+            c[i] = c[i].clone() + a.clone() * next;
+        }
+    }
+    let mut hp = F::one();
+    for x in c.iter_mut() {
+        *x = x.clone() * hp.clone();
+        hp *= h.clone();
+    }
+}
+
+/// [`to_local`] for a polynomial in `u, v` only, by Taylor shifts: each column
+/// `Σᵢ cᵢ uⁱ` becomes `Σᵢ cᵢ (a + h s)ⁱ` by the Horner shift `cᵢ += a·cᵢ₊₁` (descending,
+/// `O(m²)` operations) and the scaling `cᵢ ← hⁱ cᵢ`, then the same for the rows in `v`.
+/// The general composition multiplies powers of `a + h s` as polynomials, far slower for
+/// big coefficients. `None` for other variables (the caller composes).
+fn affine_shift_2<F: Scalar>(p: &MPoly<F>, d: &Domain<F>) -> Option<MPoly<F>> {
+    if p.nvars() != 2 {
+        return None;
+    }
+    let m = p.degree_in(0).unwrap_or(0) as usize;
+    let n = p.degree_in(1).unwrap_or(0) as usize;
+    let mut c = vec![vec![F::zero(); n + 1]; m + 1];
+    for (e, x) in p.terms() {
+        c[e[0] as usize][e[1] as usize] = x.clone();
+    }
+    let (au, hu) = (d.u.0.clone(), d.u.1.clone() - d.u.0.clone());
+    let (av, hv) = (d.v.0.clone(), d.v.1.clone() - d.v.0.clone());
+    for j in 0..=n {
+        let mut col: Vec<F> = c.iter().map(|row| row[j].clone()).collect();
+        taylor_shift(&mut col, &au, &hu);
+        for (row, x) in c.iter_mut().zip(col) {
+            row[j] = x;
+        }
+    }
+    for row in c.iter_mut() {
+        taylor_shift(row, &av, &hv);
+    }
+    let terms = c
+        .into_iter()
+        .enumerate()
+        .flat_map(|(i, row)| {
+            row.into_iter()
+                .enumerate()
+                .filter(|(_, x)| !x.is_zero())
+                .map(move |(j, x)| (vec![i as u32, j as u32], x))
+        })
+        .collect();
+    MPoly::from_terms(2, terms).ok()
 }
 
 /// `(deg_u, deg_v)` of a polynomial in `u, v` (0 for the zero polynomial).
@@ -572,6 +631,21 @@ mod tests {
     }
     fn v() -> MPoly<Q> {
         var(1)
+    }
+
+    /// The Taylor-shift `to_local` equals the composition with `(a + h s, b + k t)`.
+    #[test]
+    fn to_local_by_taylor_shifts_equals_the_composition() {
+        let p = &(&(&(&u() * &u()) * &v()) - &v().pow(3).scale(&q(7, 3)))
+            + &(&(&u() * &int(5)) + &int(-2));
+        let d = Domain {
+            u: (q(1, 4), q(3, 2)),
+            v: (q(-2, 3), q(5, 7)),
+        };
+        let su = &cst(d.u.0.clone()) + &var::<Q>(0).scale(&(d.u.1.clone() - d.u.0.clone()));
+        let sv = &cst(d.v.0.clone()) + &var::<Q>(1).scale(&(d.v.1.clone() - d.v.0.clone()));
+        assert_eq!(to_local(&p, &d), compose(&p, &[su, sv]));
+        assert_eq!(affine_shift_2(&p, &d), Some(to_local(&p, &d)));
     }
 
     #[test]
