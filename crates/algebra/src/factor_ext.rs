@@ -24,7 +24,7 @@
 //! and by `gcd_K(l, p)`: these divide `l` but may be reducible over `K` — the factors *not
 //! found* are then exactly the `K`-irreducible pieces of such a gcd.
 
-use crate::complex::{conj_poly, re_im_polys, Complex};
+use crate::complex::{conj_poly, Complex};
 use crate::factor::{factor_gaussian, factor_rational, primitive_int, FactorError};
 use crate::roots::isolate_real_roots;
 use crate::{AlgebraError, Poly, QuadExt, Rational};
@@ -259,11 +259,6 @@ pub fn has_real_root_quad(g: &Poly<QuadExt>) -> Result<bool, AlgebraError> {
         }
     }
     Ok(false)
-}
-
-/// Real and imaginary parts of a polynomial over `K` (re-export for callers).
-pub fn re_im(p: &BiquadPoly) -> (Poly<QuadExt>, Poly<QuadExt>) {
-    re_im_polys(p)
 }
 
 #[cfg(test)]
