@@ -80,9 +80,6 @@ impl<F: Scalar> PhPolyCurve<F> {
     /// # Errors
     /// None at present (kept fallible for degenerate inputs).
     pub fn helix_test(&self) -> Result<HelixTest<F>, PhError> {
-        if let Some(a) = self.axis_from_ends() {
-            return Ok(HelixTest::Helix(HelixData { a }));
-        }
         let d = self.hodograph();
         let rows = d
             .iter()
@@ -103,6 +100,11 @@ impl<F: Scalar> PhPolyCurve<F> {
                 HelixTest::Line
             });
         }
+        // a nearly planar helix whose f64 solve over all coefficients failed (its rows
+        // differ in size by orders of magnitude): the better conditioned axis from the ends
+        if let Some(a) = self.axis_from_ends() {
+            return Ok(HelixTest::Helix(HelixData { a }));
+        }
         let zeros = vec![F::zero(); rows];
         match solve_linear(&m, &zeros, 3) {
             Some((_, null)) if null.len() == 1 => {
@@ -121,39 +123,22 @@ impl<F: Scalar> PhPolyCurve<F> {
     /// Cramer's rule when the three vectors are independent, accepted when `a·r' ≡ σ`
     /// holds: exactly, or for `f64` coefficientwise within [`F64_TOL`] of the sum of the
     /// absolute values of the terms. A solution of `a·r' ≡ σ` satisfies the three
-    /// equations, so when they determine `a` this is the helix test; in `f64` it is far
-    /// better conditioned than the solve over all coefficients when the end tangents
-    /// differ in size by orders of magnitude (a nearly planar helix, `|a| = 1/cos ψ`
-    /// large, was taken for a planar curve).
+    /// equations, so when they determine `a` this is the helix test. Used after the solve
+    /// over all coefficients finds no axis: in `f64` that solve fails when the end tangents
+    /// differ in size by orders of magnitude (a nearly planar helix, `|a| = 1/cos ψ` large,
+    /// was taken for a planar curve), while its axis is the more accurate one otherwise.
     fn axis_from_ends(&self) -> Option<[F; 3]> {
         let d = self.hodograph();
-        let zero = F::zero();
-        let one = F::one();
-        let at = |p: &Poly<F>, t: &F| p.eval(t);
-        let chord: [F; 3] = std::array::from_fn(|i| self.r[i].eval(&one) - self.r[i].eval(&zero));
-        let rows = [
-            [at(&d[0], &zero), at(&d[1], &zero), at(&d[2], &zero)],
-            [at(&d[0], &one), at(&d[1], &one), at(&d[2], &one)],
-            chord,
+        let (zero, one) = (F::zero(), F::one());
+        let (p0, p1) = (peval(&self.r, &zero), peval(&self.r, &one));
+        let chord: V3<F> = std::array::from_fn(|i| p1[i].clone() - p0[i].clone());
+        let rows = [peval(&d, &zero), peval(&d, &one), chord];
+        let rhs = [
+            self.sigma.eval(&zero),
+            self.sigma.eval(&one),
+            self.arc_length(),
         ];
-        let length = self
-            .sigma
-            .coeffs()
-            .iter()
-            .enumerate()
-            .fold(F::zero(), |acc, (k, c)| {
-                acc + c.clone() / F::from_i64(k as i64 + 1)
-            });
-        let rhs = [self.sigma.eval(&zero), self.sigma.eval(&one), length];
-        let det3 = |m: &[[F; 3]; 3]| {
-            m[0][0].clone()
-                * (m[1][1].clone() * m[2][2].clone() - m[1][2].clone() * m[2][1].clone())
-                - m[0][1].clone()
-                    * (m[1][0].clone() * m[2][2].clone() - m[1][2].clone() * m[2][0].clone())
-                + m[0][2].clone()
-                    * (m[1][0].clone() * m[2][1].clone() - m[1][1].clone() * m[2][0].clone())
-        };
-        let det = det3(&rows);
+        let det = det3(&rows[0], &rows[1], &rows[2]);
         // Hadamard's bound: |det| ≤ the product of the row lengths
         let hadamard: f64 = rows
             .iter()
@@ -162,12 +147,12 @@ impl<F: Scalar> PhPolyCurve<F> {
         if det.is_zero() || (!F::EXACT && det.to_f64().abs() <= F64_TOL * hadamard) {
             return None;
         }
-        let a: [F; 3] = std::array::from_fn(|j| {
+        let a: V3<F> = std::array::from_fn(|j| {
             let mut m = rows.clone();
             for (row, b) in m.iter_mut().zip(&rhs) {
                 row[j] = b.clone();
             }
-            det3(&m) / det.clone()
+            det3(&m[0], &m[1], &m[2]) / det.clone()
         });
         let m = axis_magnitude(&a, &d, &self.sigma);
         identity_cert_within("", &pdot_const(&a, &d), &self.sigma, &m)
