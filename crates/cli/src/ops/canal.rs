@@ -16,7 +16,7 @@ use rcagd::canal::bipoly::{patch_of, BiPoly};
 use rcagd::canal::blend::PlaneEnd;
 use rcagd::canal::{
     pipe_along_spine, ApproximationPolicy,
-    blend_sphere_plane, blend_spheres, canal_surface_rational,
+    blend_sphere_plane, blend_spheres, canal_surface_rational, check_canal_regularity,
     pipe_around_ph_exportable, BlendEnd, BlendSpine, CanalBuild, CanalError, CanalOptions, CanalSpine,
     CanalSurface, Method, Orientation, RationalCanal,
 };
@@ -133,9 +133,9 @@ fn meets_cert(name: &str, g: &Line<Rational>, h: &Line<Rational>, hname: &str) -
 /// Blames a canal error on the parameter that controls it.
 fn canal_err(e: CanalError, spine_param: &'static str, radius_param: &'static str) -> OpError {
     match &e {
-        CanalError::NoRealEnvelope { .. } | CanalError::ZeroRadius => {
-            OpError::param(radius_param, e.to_string())
-        }
+        CanalError::NoRealEnvelope { .. }
+        | CanalError::ZeroRadius
+        | CanalError::SingularCanal { .. } => OpError::param(radius_param, e.to_string()),
         CanalError::DegenerateSpine(_) => OpError::param(spine_param, e.to_string()),
         _ => OpError::new(e.to_string()),
     }
@@ -644,7 +644,12 @@ fn build_canal_surface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         e => canal_err(e, "points", "radius"),
     })?;
     match built {
-        RationalCanal::Spine(s) => Ok(vec![canal_object(args, &s, Vec::new())?]),
+        RationalCanal::Spine(s) => {
+            let (zero, one) = (Rational::zero(), Rational::one());
+            let regular = check_canal_regularity(&family, (&zero, &one))
+                .map_err(|e| canal_err(e, "points", "radius"))?;
+            Ok(vec![canal_object(args, &s, vec![regular])?])
+        }
         RationalCanal::Cyclographic(c) => Ok(vec![args.object(
             Geometry::Patches(c.patches().to_vec()),
             c.certify(),

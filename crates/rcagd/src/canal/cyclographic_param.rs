@@ -177,8 +177,13 @@ impl Certified for CyclographicCanal {
 /// when it needs `Q(√d)` and the family is polynomial of degree ≤ 2, the cyclographic
 /// parametrization `Γ(s, t)` on `cyclographic_domain = [s₀, s₁, t₀, t₁]` (module docs).
 ///
+/// A surface in the spine parameter is checked for local self-intersections on the domain of
+/// `options` ([`super::check_canal_regularity`]).
+///
 /// # Errors
-/// The errors of [`canal_surface_pole_free`]; [`CanalError::IrrationalSplit`] when the
+/// The errors of [`canal_surface_pole_free`]; [`CanalError::SingularCanal`] where the
+/// surface in the spine parameter intersects itself locally on the domain of `options`;
+/// [`CanalError::IrrationalSplit`] when the
 /// spine-parameter constructions need `Q(√d)` and `Γ` does not apply (degree > 2 or a
 /// non-constant weight); [`CanalError::CyclographicDomainNeeded`] when `Γ` applies but no
 /// rectangle is given; [`CanalError::InvalidArgument`] for an empty rectangle or one where
@@ -189,7 +194,13 @@ pub fn canal_surface_rational(
     cyclographic_domain: Option<&[Rational; 4]>,
 ) -> Result<RationalCanal, CanalError> {
     let radicand = match canal_surface_pole_free(spine, options)? {
-        CanalBuild::Rational(s) => return Ok(RationalCanal::Spine(Box::new(s))),
+        CanalBuild::Rational(s) => {
+            // no local self-intersection on the spine domain (decided exactly)
+            if let Some((a, b)) = &options.domain {
+                super::regularity::check_canal_regularity(spine, (a, b))?;
+            }
+            return Ok(RationalCanal::Spine(Box::new(s)));
+        }
         CanalBuild::Extension { radicand, .. } => radicand,
     };
     let (surface, mobius) = match QuadraticCanal::from_spine(spine) {

@@ -88,7 +88,10 @@ pub use frame::{
 };
 pub use normal_field::{canal_surface_from_normal_field, NormalFieldCanal};
 pub use pipe::{pipe_around_ph, pipe_around_ph_poly, pipe_around_planar, pipe_surface};
-pub use regularity::{check_pipe_global, check_pipe_regularity, pipe_regularity_polynomials};
+pub use regularity::{
+    canal_regularity_polynomial, check_canal_regularity, check_pipe_global, check_pipe_regularity,
+    pipe_regularity_polynomials,
+};
 pub use self_intersection::{check_chain_embedded, check_pipe_embedded};
 pub use sum_of_squares::{
     sum_of_two_squares, sum_of_two_squares_approx, sum_of_two_squares_f64, GaussianSplit,
@@ -212,6 +215,17 @@ pub enum CanalError {
         index: usize,
         /// Its error.
         source: Box<CanalError>,
+    },
+    /// The canal surface is singular: its characteristic circles meet the characteristic
+    /// points of the family (the edge of regression) for these parameters.
+    #[error("the canal surface is singular for t in [{from}, {to}] (e.g. at t = {witness}): there the characteristic circle of the sphere family meets its neighbours (F = (H|A|² + RB(A·C))² − R²(|A|² − B²)|A × C|² ≤ 0, docs/math/pipes.md#canal-regularity), so the surface intersects itself locally or has a cusp — change the radii or shrink the domain")]
+    SingularCanal {
+        /// Lower end of the interval (a root of `F` or the domain end).
+        from: String,
+        /// Upper end of the interval.
+        to: String,
+        /// A rational parameter inside the interval.
+        witness: String,
     },
     /// The spine's tangent `m′` vanishes at a parameter of the domain.
     #[error("the spine has a zero-length tangent m′ = 0 at t = {at}: the pipe is singular there")]

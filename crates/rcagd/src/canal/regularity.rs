@@ -21,6 +21,24 @@
 //! `rcagd_algebra::roots`). Where it fails, the roots of `F` bound the parameter intervals
 //! with `r κ ≥ 1`, and the error names one ([`CanalError::RadiusNotBelowCurvatureRadius`]).
 //! A root of `|P|²` in `[a, b]` is a zero-length tangent ([`CanalError::ZeroTangent`]).
+//!
+//! **Canal surfaces of varying radius** ([`check_canal_regularity`]). The envelope of the
+//! spheres `|x − m(t)|² = r(t)²` meets its neighbours' characteristic circles where a point
+//! of the characteristic circle `C(t)` (on the plane `(x − m)·ṁ + r ṙ = 0`) also satisfies
+//! the derivative condition `(x − m)·m̈ = |ṁ|² − ṙ² − r r̈` (the characteristic points of the
+//! family, the classical condition for a singular point of an envelope). In the plane of
+//! `C(t)` this is the distance of a line from the circle's centre compared with its radius;
+//! with `A = W M′ − W′ M`, `B = W R′ − W′ R` (`ṁ = A/W²`, `ṙ = B/W²`), `C = W A′ − 2W′A`,
+//! `H = |A|² − B² − R (W B′ − 2W′B)` the circles keep off those points iff
+//!
+//! ```text
+//! F(t) = (H|A|² + R B (A·C))² − R² (|A|² − B²) |A × C|² > 0
+//! ```
+//!
+//! (times `W¹⁶ > 0`; derivation in `docs/math/pipes.md#canal-regularity`). For constant
+//! radius `F = |A|²·(|A|⁶ − r²W⁴|A × A′|²)`, the pipe condition above. A sphere of radius 0
+//! (`R = 0`, a vertex) is singular as well; a circle that collapses to a point because
+//! `|ṁ| = |ṙ|` (a pole of a closed surface) is not excluded by `F`.
 
 use super::{CanalError, CanalSpine};
 use crate::error::format_scalar;
@@ -37,8 +55,148 @@ fn cross(a: &[P; 3], b: &[P; 3]) -> [P; 3] {
     ]
 }
 
+fn dot(a: &[P; 3], b: &[P; 3]) -> P {
+    &(&(&a[0] * &b[0]) + &(&a[1] * &b[1])) + &(&a[2] * &b[2])
+}
+
 fn norm_sq(a: &[P; 3]) -> P {
-    &(&(&a[0] * &a[0]) + &(&a[1] * &a[1])) + &(&a[2] * &a[2])
+    dot(a, a)
+}
+
+/// Where `f > 0` fails on `[a, b]`: `None` if `f > 0` on the whole interval, else the ends
+/// of an interval where `f < 0` (roots or domain ends, as text) with a rational witness in
+/// it, or a root of `f` (`from = to`, the witness its isolating interval's midpoint).
+fn where_not_positive(
+    f: &P,
+    a: &Rational,
+    b: &Rational,
+) -> Result<Option<(String, String, Rational)>, CanalError> {
+    if f.is_zero() {
+        return Ok(Some((format_scalar(a), format_scalar(b), a.clone())));
+    }
+    let mut roots = isolate_real_roots_in(f, a, b)?;
+    if roots.is_empty() && f.eval(a) > Rational::ZERO {
+        return Ok(None);
+    }
+    // the gaps between the roots (and the ends) where f < 0, else a root where f = 0;
+    // isolating intervals may share an endpoint (not a root): refine them first
+    let width = Rational::from_ratio(1, 1 << 20);
+    for iv in &mut roots {
+        if !iv.is_exact() {
+            iv.refine(f, &width)?;
+        }
+    }
+    let mut cuts: Vec<(Rational, Rational, String)> =
+        vec![(a.clone(), a.clone(), format_scalar(a))];
+    for iv in &roots {
+        cuts.push((iv.lo.clone(), iv.hi.clone(), describe(iv, f)));
+    }
+    cuts.push((b.clone(), b.clone(), format_scalar(b)));
+    for w in cuts.windows(2) {
+        let (left, right) = (&w[0], &w[1]);
+        if left.1 <= right.0 {
+            let s = (left.1.clone() + right.0.clone()) / Rational::from(2);
+            if f.eval(&s) < Rational::ZERO {
+                return Ok(Some((left.2.clone(), right.2.clone(), s)));
+            }
+        }
+    }
+    // f ≥ 0 with a root
+    let iv = roots
+        .first()
+        .cloned()
+        .unwrap_or_else(|| RootInterval::exact(a.clone()));
+    let t = describe(&iv, f);
+    Ok(Some((t.clone(), t, iv.midpoint())))
+}
+
+/// Refuses a weight `W` with a root in `[a, b]` (a point of the spine at infinity) and
+/// `a > b`.
+fn check_interval_and_weight(
+    spine: &CanalSpine<Rational>,
+    a: &Rational,
+    b: &Rational,
+) -> Result<(), CanalError> {
+    if a > b {
+        return Err(CanalError::InvalidArgument(format!(
+            "empty parameter interval [{}, {}]",
+            format_scalar(a),
+            format_scalar(b)
+        )));
+    }
+    if let Some(iv) = isolate_real_roots_in(spine.weight(), a, b)?.first() {
+        return Err(CanalError::DegenerateSpine(format!(
+            "the spine weight W vanishes at t = {} in [{}, {}] (a point at infinity)",
+            describe(iv, spine.weight()),
+            format_scalar(a),
+            format_scalar(b)
+        )));
+    }
+    Ok(())
+}
+
+/// The polynomial `F` of the module docs for a canal surface of any (rational) radius:
+/// `F(t) > 0` iff the characteristic circle at `t` keeps off the characteristic points of
+/// the sphere family (no local self-intersection there), for `W(t) ≠ 0`.
+pub fn canal_regularity_polynomial(spine: &CanalSpine<Rational>) -> P {
+    let w = spine.weight();
+    let wd = w.derivative();
+    let m = spine.center_polys();
+    let r = spine.radius_poly();
+    let two = Rational::from(2);
+    let a: [P; 3] = core::array::from_fn(|i| &(w * &m[i].derivative()) - &(&wd * &m[i]));
+    let b = &(w * &r.derivative()) - &(&wd * r);
+    let c: [P; 3] =
+        core::array::from_fn(|i| &(w * &a[i].derivative()) - &(&wd * &a[i]).scale(&two));
+    let d = &(w * &b.derivative()) - &(&wd * &b).scale(&two);
+    let aa = norm_sq(&a);
+    let g = &aa - &(&b * &b);
+    let h = &g - &(r * &d);
+    let k = &(&h * &aa) + &(&(r * &b) * &dot(&a, &c));
+    &(&k * &k) - &(&(&(r * r) * &g) * &norm_sq(&cross(&a, &c)))
+}
+
+/// Decides exactly that the canal surface of `spine` has no local self-intersection for
+/// `t ∈ [a, b]`: `F > 0` (module docs, [`canal_regularity_polynomial`]) and `R ≠ 0` (no
+/// sphere of radius 0) there, and returns the certificate. For pipes (constant radius)
+/// [`check_pipe_regularity`] states the same as `r·κ < 1`.
+///
+/// # Errors
+/// [`CanalError::SingularCanal`] naming an interval (or point) of `[a, b]` where `F ≤ 0`
+/// or `R = 0`; [`CanalError::DegenerateSpine`] where `W = 0` on `[a, b]`;
+/// [`CanalError::InvalidArgument`] for `a > b`.
+pub fn check_canal_regularity(
+    spine: &CanalSpine<Rational>,
+    domain: (&Rational, &Rational),
+) -> Result<Certificate, CanalError> {
+    let (a, b) = domain;
+    check_interval_and_weight(spine, a, b)?;
+    let singular = |(from, to, witness): (String, String, Rational)| CanalError::SingularCanal {
+        from,
+        to,
+        witness: format_scalar(&witness),
+    };
+    let r = spine.radius_poly();
+    if r.is_zero() {
+        return Err(CanalError::ZeroRadius);
+    }
+    if let Some(iv) = isolate_real_roots_in(r, a, b)?.first() {
+        let t = describe(iv, r);
+        return Err(singular((t.clone(), t, iv.midpoint())));
+    }
+    let f = canal_regularity_polynomial(spine);
+    if let Some(place) = where_not_positive(&f, a, b)? {
+        return Err(singular(place));
+    }
+    Ok(Certificate::holds(
+        format!(
+            "no local self-intersection for t ∈ [{}, {}]: F = (H|A|² + RB(A·C))² − R²(|A|² − B²)|A × C|² > 0 there (no real root, F({}) > 0; A = WM′ − W′M, B = WR′ − W′R, C = WA′ − 2W′A, H = |A|² − B² − R(WB′ − 2W′B)) — the characteristic circles keep off the characteristic points of the sphere family — and R ≠ 0 (no sphere of radius 0)",
+            format_scalar(a),
+            format_scalar(b),
+            format_scalar(a)
+        ),
+        true,
+    ))
 }
 
 /// The polynomials of the module docs for a pipe family (`R = r W`): `(|P|², F)` and `r`.
@@ -103,21 +261,7 @@ pub fn check_pipe_regularity(
     domain: (&Rational, &Rational),
 ) -> Result<Certificate, CanalError> {
     let (a, b) = domain;
-    if a > b {
-        return Err(CanalError::InvalidArgument(format!(
-            "empty parameter interval [{}, {}]",
-            format_scalar(a),
-            format_scalar(b)
-        )));
-    }
-    if let Some(iv) = isolate_real_roots_in(spine.weight(), a, b)?.first() {
-        return Err(CanalError::DegenerateSpine(format!(
-            "the spine weight W vanishes at t = {} in [{}, {}] (a point at infinity)",
-            describe(iv, spine.weight()),
-            format_scalar(a),
-            format_scalar(b)
-        )));
-    }
+    check_interval_and_weight(spine, a, b)?;
     let (pp, f, r) = pipe_regularity_polynomials(spine)?;
     if pp.is_zero() {
         return Err(CanalError::ZeroTangent {
@@ -133,18 +277,7 @@ pub fn check_pipe_regularity(
             at: describe(iv, &pp),
         });
     }
-    if f.is_zero() {
-        // r κ ≡ 1: every point of the spine has curvature radius |r|
-        return Err(CanalError::RadiusNotBelowCurvatureRadius {
-            radius: format_scalar(&r),
-            from: format_scalar(a),
-            to: format_scalar(b),
-            witness: format_scalar(a),
-            curvature_radius: format!("{:.6}", Scalar::to_f64(&r).abs()),
-        });
-    }
-    let mut roots = isolate_real_roots_in(&f, a, b)?;
-    if roots.is_empty() && f.eval(a) > Rational::ZERO {
+    let Some((from, to, witness)) = where_not_positive(&f, a, b)? else {
         return Ok(Certificate::holds(
             format!(
                 "r·κ < 1 and m′ ≠ 0 for t ∈ [{}, {}] (r = {}): F = |P|⁶ − r²W⁴|P × P′|² > 0 there (no real root, F({}) > 0), P = W M′ − W′ M — no local self-intersection",
@@ -155,58 +288,28 @@ pub fn check_pipe_regularity(
             ),
             true,
         ));
-    }
-    // the gaps between the roots (and the ends) where F < 0, else a root where F = 0;
-    // isolating intervals may share an endpoint (not a root): refine them first
-    let width = Rational::from_ratio(1, 1 << 20);
-    for iv in &mut roots {
-        if !iv.is_exact() {
-            iv.refine(&f, &width)?;
-        }
-    }
-    let mut cuts: Vec<(Rational, Rational, String)> =
-        vec![(a.clone(), a.clone(), format_scalar(a))];
-    for iv in &roots {
-        cuts.push((iv.lo.clone(), iv.hi.clone(), describe(iv, &f)));
-    }
-    cuts.push((b.clone(), b.clone(), format_scalar(b)));
-    let curvature_radius = |t: &Rational| -> String {
-        // 1/κ = r·(|P|⁶/(r²W⁴|P × P′|²))^{1/2}
-        let fv = Scalar::to_f64(&f.eval(t));
-        let ppv = Scalar::to_f64(&pp.eval(t));
-        let rf = Scalar::to_f64(&r).abs();
+    };
+    // 1/κ = r·(|P|⁶/(r²W⁴|P × P′|²))^{1/2} at the witness (∞ where F ≡ |P|⁶)
+    let curvature_radius = if f.is_zero() {
+        format!("{:.6}", Scalar::to_f64(&r).abs())
+    } else {
+        let fv = Scalar::to_f64(&f.eval(&witness));
+        let ppv = Scalar::to_f64(&pp.eval(&witness));
         let num = ppv * ppv * ppv;
         let den = num - fv; // r²W⁴|P × P′|²
         if den <= 0.0 {
             "∞".into()
         } else {
-            format!("{:.6}", rf * (num / den).sqrt())
+            format!("{:.6}", Scalar::to_f64(&r).abs() * (num / den).sqrt())
         }
     };
-    let err =
-        |from: &str, to: &str, witness: &Rational| CanalError::RadiusNotBelowCurvatureRadius {
-            radius: format_scalar(&r),
-            from: from.to_string(),
-            to: to.to_string(),
-            witness: format_scalar(witness),
-            curvature_radius: curvature_radius(witness),
-        };
-    for w in cuts.windows(2) {
-        let (left, right) = (&w[0], &w[1]);
-        if left.1 <= right.0 {
-            let s = (left.1.clone() + right.0.clone()) / Rational::from(2);
-            if f.eval(&s) < Rational::ZERO {
-                return Err(err(&left.2, &right.2, &s));
-            }
-        }
-    }
-    // F ≥ 0 with a root: r κ = 1 at that parameter (a singular point of the pipe)
-    let iv = roots
-        .first()
-        .cloned()
-        .unwrap_or_else(|| RootInterval::exact(a.clone()));
-    let t = describe(&iv, &f);
-    Err(err(&t, &t, &iv.midpoint()))
+    Err(CanalError::RadiusNotBelowCurvatureRadius {
+        radius: format_scalar(&r),
+        from,
+        to,
+        witness: format_scalar(&witness),
+        curvature_radius,
+    })
 }
 
 /// A rational `s ≥ √x` (an `f64` guess made safe, checked exactly).
@@ -296,6 +399,61 @@ mod tests {
     }
 
     #[test]
+    fn canal_condition_is_the_pipe_condition_for_constant_radius() {
+        // F_canal = |A|²·F_pipe with |A|² = 1 + 4t² for the parabola (W = 1)
+        for r in [q(1, 4), q(1, 2), q(3, 1)] {
+            let s = parabola(r.clone());
+            let (pp, f_pipe, _) = pipe_regularity_polynomials(&s).expect("pipe");
+            assert_eq!(canal_regularity_polynomial(&s), &pp * &f_pipe);
+        }
+        let (a, b) = (q(-1, 1), q(1, 1));
+        let c = check_canal_regularity(&parabola(q(49, 100)), (&a, &b)).expect("regular");
+        assert!(c.holds && c.exact, "{c:?}");
+        assert!(matches!(
+            check_canal_regularity(&parabola(q(1, 1)), (&a, &b)),
+            Err(CanalError::SingularCanal { .. })
+        ));
+    }
+
+    fn on_z_axis(r: Poly<Rational>) -> CanalSpine<Rational> {
+        CanalSpine::polynomial([Poly::zero(), Poly::zero(), Poly::from_ints(&[0, 1])], r)
+    }
+
+    #[test]
+    fn cone_of_revolution_is_regular_away_from_its_vertex() {
+        // spheres of radius 1 + t/2 centred at (0, 0, t): a cone, vertex at t = −2
+        let s = on_z_axis(Poly::new(vec![q(1, 1), q(1, 2)]));
+        // F = (1 − ṙ²)² = 9/16 (m̈ = 0)
+        assert_eq!(canal_regularity_polynomial(&s), Poly::constant(q(9, 16)));
+        let c = check_canal_regularity(&s, (&q(0, 1), &q(1, 1))).expect("regular");
+        assert!(c.holds && c.exact);
+        match check_canal_regularity(&s, (&q(-3, 1), &q(0, 1))) {
+            Err(CanalError::SingularCanal { from, to, .. }) => {
+                assert_eq!((from.as_str(), to.as_str()), ("-2", "-2"));
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn surface_of_revolution_with_a_cusp_is_refused() {
+        // r = t²/2 on the z-axis: H = 1 − ṙ² − r r̈ = 1 − 3t²/2 vanishes at t = √(2/3), where
+        // the meridian of the envelope has a cusp (|ṁ| > |ṙ| there: the envelope is real)
+        let s = on_z_axis(Poly::new(vec![q(0, 1), q(0, 1), q(1, 2)]));
+        assert_eq!(
+            canal_regularity_polynomial(&s),
+            Poly::new(vec![q(1, 1), q(0, 1), q(-3, 2)]).pow(2)
+        );
+        match check_canal_regularity(&s, (&q(1, 2), &q(9, 10))) {
+            Err(CanalError::SingularCanal { from, to, .. }) => {
+                assert_eq!((from.as_str(), to.as_str()), ("0.816497", "0.816497"));
+            }
+            other => panic!("{other:?}"),
+        }
+        assert!(check_canal_regularity(&s, (&q(1, 2), &q(4, 5))).is_ok());
+    }
+
+    #[test]
     fn cusp_is_a_zero_tangent() {
         let s = CanalSpine::polynomial(
             [
@@ -368,5 +526,32 @@ mod tests {
         // the same loop on [−1/2, 3/2] (one crossing parameter only): apart
         let c = check_pipe_global(&s, (&q(-1, 2), &b)).expect("apart");
         assert!(c.holds);
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(16))]
+        /// For a random rational spine of constant radius the canal condition is the pipe
+        /// condition times `|A|²` (`A = WM′ − W′M`), as an exact polynomial identity, and the
+        /// two checks agree on `[0, 1]`.
+        #[test]
+        fn canal_and_pipe_conditions_agree_on_random_spines(
+            c in proptest::collection::vec(-4i64..=4, 9),
+            w in proptest::collection::vec(1i64..=3, 3),
+            r in 1i64..=8,
+        ) {
+            let m: [Poly<Rational>; 3] =
+                core::array::from_fn(|i| Poly::from_ints(&c[3 * i..3 * i + 3]));
+            let w = Poly::from_ints(&w);
+            let rr = q(r, 10);
+            let s = CanalSpine::new(w.clone(), m, w.scale(&rr));
+            proptest::prop_assume!(s.is_ok());
+            let s = s.expect("checked");
+            let (pp, f_pipe, _) = pipe_regularity_polynomials(&s).expect("pipe");
+            proptest::prop_assert_eq!(canal_regularity_polynomial(&s), &pp * &f_pipe);
+            let (a, b) = (q(0, 1), q(1, 1));
+            let pipe = check_pipe_regularity(&s, (&a, &b));
+            let canal = check_canal_regularity(&s, (&a, &b));
+            proptest::prop_assert_eq!(pipe.is_ok(), canal.is_ok(), "{:?} / {:?}", pipe, canal);
+        }
     }
 }
