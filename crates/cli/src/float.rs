@@ -511,6 +511,8 @@ mod quadric {
     use rcagd_geom::weight_sign::{split_curve_uniform, split_patch_uniform};
 
     type Hom = [Rational; 4];
+    /// A projection onto a quadric, in `f64`.
+    type Projection = Box<dyn GeneralizedProjection<f64>>;
 
     fn hom(p: &[Rational], param: &'static str) -> Result<Hom, OpError> {
         match p {
@@ -531,9 +533,7 @@ mod quadric {
     /// point are found exactly (the point by exact-only algebra: a rational point of a
     /// quadratic form over ℚ); the projection is then set up in `f64` from the rounded
     /// matrix and point, so the construction runs in `f64` as in the exact op.
-    fn target(
-        args: &OpArgs,
-    ) -> Result<(Box<dyn GeneralizedProjection<f64>>, Vec<Certificate>), OpError> {
+    fn target(args: &OpArgs) -> Result<(Projection, Vec<Certificate>), OpError> {
         let name = args.string("quadric")?;
         let coefficients = args.opt_numbers("coefficients")?.unwrap_or_default();
         let matrix = args.opt_grid("matrix")?;

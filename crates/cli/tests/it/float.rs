@@ -403,3 +403,58 @@ proptest! {
         }
     }
 }
+
+/// The measurement of docs/BENCHMARKS.md, "The float path": every gallery recipe's
+/// objects that have a float path, built one at a time on one thread, exact then `f64`
+/// (best of 3 each, same run). Run with
+/// `cargo test -p rcagd-cli --test it float::timings -- --ignored --nocapture`.
+#[test]
+#[ignore = "a measurement, not a test"]
+fn timings() {
+    use rcagd_cli::build::build_object_with;
+    use std::time::Instant;
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/recipes");
+    let mut paths: Vec<_> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    paths.sort();
+    println!("| recipe | objects with a float path | exact (ms) | f64 (ms) | ratio |");
+    println!("|---|---|---|---|---|");
+    let (mut te, mut tf) = (0.0, 0.0);
+    for path in paths {
+        let text = std::fs::read_to_string(&path).unwrap();
+        let r = without_display_objects(
+            &Recipe::parse(&path.display().to_string(), &text, None).unwrap(),
+        );
+        let objs: Vec<_> = r
+            .objects
+            .iter()
+            .filter(|o| float::has_float_path(&o.op))
+            .collect();
+        if objs.is_empty() {
+            continue;
+        }
+        let time = |a: Arithmetic| {
+            (0..3)
+                .map(|_| {
+                    let t = Instant::now();
+                    for o in &objs {
+                        build_object_with(&r.file, o, a).unwrap();
+                    }
+                    t.elapsed().as_secs_f64() * 1e3
+                })
+                .fold(f64::INFINITY, f64::min)
+        };
+        let (e, f) = (time(Arithmetic::Exact), time(Arithmetic::Float));
+        te += e;
+        tf += f;
+        let name = path.file_stem().unwrap().to_string_lossy().to_string();
+        println!(
+            "| {name} | {} | {e:.2} | {f:.2} | {:.1}× |",
+            objs.len(),
+            e / f
+        );
+    }
+    println!("| all | | {te:.2} | {tf:.2} | {:.1}× |", te / tf);
+}
