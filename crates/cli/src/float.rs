@@ -100,6 +100,26 @@ pub const FLOAT_OPS: &[FloatOp] = &[
         note: "",
     },
     FloatOp {
+        name: "torus",
+        build: cyclide::torus,
+        note: "",
+    },
+    FloatOp {
+        name: "dupin_canal",
+        build: cyclide::dupin_canal,
+        note: "",
+    },
+    FloatOp {
+        name: "dupin_cyclide",
+        build: cyclide::dupin_cyclide,
+        note: "",
+    },
+    FloatOp {
+        name: "dupin_cyclide_parabolic",
+        build: cyclide::dupin_cyclide_parabolic,
+        note: "",
+    },
+    FloatOp {
         name: "ph_curve",
         build: ph::ph_curve,
         note: "the curve only: the display objects (`frame`, `comb`, `feed`) are refused; `arc_length` is an f64 value",
@@ -844,5 +864,143 @@ pub fn describe_markdown(name: &str) -> String {
         (Some(op), _) => format!("Float path (`rcagd build --float`): yes; {}.", op.note),
         (None, Some(why)) => format!("Float path (`rcagd build --float`): none; {why}."),
         (None, None) => "Float path (`rcagd build --float`): none.".to_string(),
+    }
+}
+
+/// Dupin cyclides and tori in `f64` (`rcagd::cyclide`: Peternell, Lemma 3.4 and
+/// Prop. 3.2).
+mod cyclide {
+    use super::*;
+    use rcagd::cyclide::{DualPencil, DupinCyclide};
+    use rcagd_geom::weight_sign::{split_patches_adaptive, SignRule};
+
+    fn vec4(args: &OpArgs, param: &'static str) -> Result<[f64; 4], OpError> {
+        fa::<4>(&args.point(param)?, param)
+    }
+
+    fn range(args: &OpArgs, param: &'static str) -> Result<(f64, f64), OpError> {
+        match args.opt_numbers(param)?.unwrap_or_default().as_slice() {
+            [a, b] if a < b => Ok((f(a), f(b))),
+            _ => Err(OpError::param(
+                param,
+                format!("`{param}` must be an interval [a, b] with a < b"),
+            )),
+        }
+    }
+
+    /// As the exact op: the cyclide's and its dual pencil's certificates, the offset's if
+    /// asked, and the patches split until every Bernstein weight is positive (the same
+    /// adaptive bisection, `rcagd::canal::EXPORT_SPLITS`, deciding signs in `f64`).
+    fn object(
+        args: &OpArgs,
+        cy: &DupinCyclide<f64>,
+        patches: Vec<BezierPatch<f64>>,
+    ) -> Result<Vec<Object>, OpError> {
+        let mut certs = cy.certify();
+        let pencil = DualPencil::of(cy).map_err(|e| OpError::new(e.to_string()))?;
+        certs.extend(pencil.certify(cy));
+        if let Some(d) = args.opt_number("offset")? {
+            certs.extend(
+                cy.certify_offset(&f(&d))
+                    .map_err(|e| OpError::param("offset", e.to_string()))?,
+            );
+        }
+        let split =
+            split_patches_adaptive(patches, SignRule::Positive, rcagd::canal::EXPORT_SPLITS)?;
+        if split.failed > 0 {
+            return Err(OpError::new(
+                "the surface's weight is not positive on the whole domain (a pole or a point near infinity)",
+            ));
+        }
+        let n = split.pieces.len();
+        certs.push(Certificate::holds(
+            format!("every Bernstein weight of the {n} patches is > 0 (the weight has no zero: no pole, no base point)"),
+            false,
+        ));
+        let kind = NamedQuantity::new(
+            "kind",
+            "the type of the Dupin cyclide (ring, horn, spindle, parabolic)",
+            Quantity::Text(cy.kind().name().into()),
+        );
+        let o = float_object(
+            args,
+            Geometry::Patches(
+                split
+                    .pieces
+                    .iter()
+                    .map(exact_patch)
+                    .collect::<Result<_, _>>()?,
+            ),
+            certs,
+        );
+        Ok(vec![with_value(o, kind)])
+    }
+
+    pub(super) fn torus(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+        let big = args.number("major_radius")?;
+        let rho = args.number("minor_radius")?;
+        if big <= Rational::zero() {
+            return Err(OpError::param("major_radius", "R must be positive"));
+        }
+        if rho <= Rational::zero() || rho >= big {
+            return Err(OpError::param(
+                "minor_radius",
+                "a ring torus needs 0 < ρ < R",
+            ));
+        }
+        let cy = DupinCyclide::tilted(
+            fa::<3>(&args.point("center")?, "center")?,
+            f(&big),
+            f(&rho),
+            0.0,
+        )
+        .map_err(|e| OpError::new(e.to_string()))?;
+        let patches = cy
+            .covering_patches()
+            .map_err(|e| OpError::new(e.to_string()))?;
+        object(args, &cy, patches)
+    }
+
+    pub(super) fn dupin_canal(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+        let cy = DupinCyclide::tilted(
+            fa::<3>(&args.point("center")?, "center")?,
+            f(&args.number("rho")?),
+            f(&args.number("r0")?),
+            f(&args.number("s")?),
+        )
+        .map_err(|e| OpError::new(e.to_string()))?;
+        let patches = cy
+            .covering_patches()
+            .map_err(|e| OpError::new(e.to_string()))?;
+        object(args, &cy, patches)
+    }
+
+    pub(super) fn dupin_cyclide(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+        let cy = DupinCyclide::from_pe_circle(
+            vec4(args, "center")?,
+            vec4(args, "u")?,
+            vec4(args, "v")?,
+            f(&args.number("rho")?),
+        )
+        .map_err(|e| OpError::new(e.to_string()))?;
+        let patches = cy
+            .covering_patches()
+            .map_err(|e| OpError::new(e.to_string()))?;
+        object(args, &cy, patches)
+    }
+
+    pub(super) fn dupin_cyclide_parabolic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+        let cy = DupinCyclide::from_pe_parabola(
+            vec4(args, "vertex")?,
+            vec4(args, "u")?,
+            vec4(args, "n")?,
+        )
+        .map_err(|e| OpError::new(e.to_string()))?;
+        let (t0, t1) = range(args, "t")?;
+        let (s0, s1) = range(args, "s")?;
+        let patch = cy
+            .patch((&t0, &t1), (&s0, &s1))
+            .map_err(|e| OpError::new(e.to_string()))?;
+        object(args, &cy, vec![patch])
     }
 }
