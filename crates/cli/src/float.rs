@@ -120,6 +120,16 @@ pub const FLOAT_OPS: &[FloatOp] = &[
         note: "",
     },
     FloatOp {
+        name: "pn_graph",
+        build: pn::graph,
+        note: "regularity is decided by f64 Bernstein signs",
+    },
+    FloatOp {
+        name: "pn_support",
+        build: pn::support,
+        note: "regularity is decided by f64 Bernstein signs",
+    },
+    FloatOp {
         name: "ph_curve",
         build: ph::ph_curve,
         note: "the curve only: the display objects (`frame`, `comb`, `feed`) are refused; `arc_length` is an f64 value",
@@ -1002,5 +1012,145 @@ mod cyclide {
             .patch((&t0, &t1), (&s0, &s1))
             .map_err(|e| OpError::new(e.to_string()))?;
         object(args, &cy, vec![patch])
+    }
+}
+
+/// PN surfaces in `f64` (`rcagd::pn`: Peternell, Theorem 4.3/4.4 and (4.2)).
+mod pn {
+    use super::*;
+    use rcagd::pn::support::from_support_function;
+    use rcagd::pn::{Domain, IsotropicSurface, PnError, PnSurface, RatFn};
+    use rcagd_algebra::mpoly::MPoly;
+
+    fn blame(param: &'static str) -> impl Fn(PnError) -> OpError {
+        move |e| OpError::param(param, e.to_string())
+    }
+
+    /// `Σ c[i][j] u^i v^j` in `f64`.
+    fn poly_from_grid(grid: &[Vec<Rational>]) -> Result<MPoly<f64>, OpError> {
+        let mut terms = Vec::new();
+        for (i, row) in grid.iter().enumerate() {
+            for (j, c) in row.iter().enumerate() {
+                if !c.is_zero() {
+                    let e = |k: usize| {
+                        u32::try_from(k)
+                            .map_err(|_| OpError::new("a polynomial degree is too large"))
+                    };
+                    terms.push((vec![e(i)?, e(j)?], f(c)));
+                }
+            }
+        }
+        MPoly::from_terms(2, terms).map_err(|e| OpError::new(e.to_string()))
+    }
+
+    fn ratfn(args: &OpArgs, num: &'static str, den: &'static str) -> Result<RatFn<f64>, OpError> {
+        let n = poly_from_grid(&args.opt_grid(num)?.unwrap_or_default())?;
+        let d = match args.opt_grid(den)? {
+            Some(g) => poly_from_grid(&g)?,
+            None => MPoly::constant(2, 1.0),
+        };
+        RatFn::new(n, d).map_err(|e| OpError::param(den, e.to_string()))
+    }
+
+    fn opt_poly(
+        args: &OpArgs,
+        param: &'static str,
+        default: MPoly<f64>,
+    ) -> Result<MPoly<f64>, OpError> {
+        match args.opt_grid(param)? {
+            Some(g) => poly_from_grid(&g),
+            None => Ok(default),
+        }
+    }
+
+    fn domain(args: &OpArgs) -> Result<Domain<f64>, OpError> {
+        match args.opt_numbers("domain")?.unwrap_or_default().as_slice() {
+            [a, b, c, d] => Domain::new(f(a), f(b), f(c), f(d))
+                .map_err(|e| OpError::param("domain", e.to_string())),
+            d => Err(OpError::param(
+                "domain",
+                format!("give four numbers [u0, u1, v0, v1], got {}", d.len()),
+            )),
+        }
+    }
+
+    fn oriented(args: &OpArgs, s: PnSurface<f64>) -> Result<PnSurface<f64>, OpError> {
+        Ok(match args.get("orientation") {
+            Some(crate::value::Value::Str(o)) if o == "negative" => s.opposite(),
+            _ => s,
+        })
+    }
+
+    /// As the exact op: the surface on the domain (certified, checked regular), then one
+    /// object `NAME_offsetK` per offset distance.
+    fn surface_objects(
+        args: &OpArgs,
+        surface: &PnSurface<f64>,
+        dom: &Domain<f64>,
+        param: &'static str,
+    ) -> Result<Vec<Object>, OpError> {
+        let mut certs = surface.certify();
+        certs.push(surface.check_regular(dom).map_err(|e| {
+            OpError::param(
+                param,
+                format!("the input surface is not regular on the domain: {e}"),
+            )
+        })?);
+        let patch = match args.opt_number("offset")?.filter(|d| !d.is_zero()) {
+            None => surface.patch(dom).map_err(blame("domain"))?,
+            Some(d) => {
+                let off = surface.offset(f(&d));
+                certs.extend(off.certify());
+                certs.push(off.check_regular(dom).map_err(blame("offset"))?);
+                off.patch(dom).map_err(blame("offset"))?
+            }
+        };
+        let mut out = vec![float_object(
+            args,
+            Geometry::Patch(exact_patch(&patch)?),
+            certs,
+        )];
+        for (k, d) in args
+            .opt_numbers("distances")?
+            .unwrap_or_default()
+            .iter()
+            .enumerate()
+        {
+            let off = surface.offset(f(d));
+            let mut c = off.certify();
+            c.push(
+                off.check_regular(dom)
+                    .map_err(|e| OpError::param("distances", format!("distance entry {k}: {e}")))?,
+            );
+            let patch = off.patch(dom).map_err(blame("distances"))?;
+            let mut o = float_object(args, Geometry::Patch(exact_patch(&patch)?), c);
+            o.name = format!("{}_offset{}", args.name(), k + 1);
+            if let Some(m) = o.params.as_object_mut() {
+                m.insert(
+                    "offset_distance".into(),
+                    serde_json::Value::String(rcagd_algebra::rational::format_rational(d)),
+                );
+            }
+            out.push(o);
+        }
+        Ok(out)
+    }
+
+    pub(super) fn graph(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+        let fun = ratfn(args, "coefficients", "denominator")?;
+        let s = IsotropicSurface::graph(&fun)
+            .to_pn_surface()
+            .map_err(blame("coefficients"))?;
+        surface_objects(args, &oriented(args, s)?, &domain(args)?, "coefficients")
+    }
+
+    pub(super) fn support(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+        let h = ratfn(args, "support", "support_denominator")?;
+        let a = opt_poly(args, "a", MPoly::var(2, 0))?;
+        let b = opt_poly(args, "b", MPoly::var(2, 1))?;
+        let c = opt_poly(args, "c", MPoly::constant(2, 1.0))?;
+        let rect = domain(args)?;
+        let s = from_support_function(a, b, c, &h).map_err(blame("c"))?;
+        surface_objects(args, &oriented(args, s)?, &rect, "support")
     }
 }

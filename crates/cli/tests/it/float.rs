@@ -48,16 +48,39 @@ fn build(src: &str, arithmetic: Arithmetic) -> Result<Vec<Object>, String> {
     build_recipe_with(&r, arithmetic, |_| {}).map_err(|d| d[0].to_string())
 }
 
-/// Every homogeneous coordinate of every piece, in order, as `f64`.
-fn coords(o: &Object) -> Vec<Vec<f64>> {
+/// Every homogeneous coordinate of every piece, in order, as `f64`, with the stride
+/// (dimension + 1) of each piece.
+fn coords(o: &Object) -> Vec<(usize, Vec<f64>)> {
     let mut out = Vec::new();
     for c in o.geometry.curves() {
-        out.push(c.coords().iter().map(Rational::to_f64_lossy).collect());
+        out.push((
+            c.dim() + 1,
+            c.coords().iter().map(Rational::to_f64_lossy).collect(),
+        ));
     }
     for p in o.geometry.patches() {
-        out.push(p.coords().iter().map(Rational::to_f64_lossy).collect());
+        out.push((
+            p.dim() + 1,
+            p.coords().iter().map(Rational::to_f64_lossy).collect(),
+        ));
     }
     out
+}
+
+/// A rational curve or patch is defined up to a common factor of its homogeneous
+/// coordinates, and the exact ops may divide one out (a content, a balancing power of
+/// 2) where the `f64` builder does not. Both pieces are therefore divided by their
+/// weight at the index where the exact piece's |weight| is largest (the same index for
+/// both); that is the only normalization before the comparison.
+fn normalize(exact: &mut [f64], float: &mut [f64], stride: usize) {
+    let k = (0..exact.len() / stride.max(1))
+        .max_by(|&a, &b| exact[a * stride].abs().total_cmp(&exact[b * stride].abs()))
+        .unwrap_or(0);
+    let (we, wf) = (exact[k * stride], float[k * stride]);
+    if we != 0.0 && wf != 0.0 {
+        exact.iter_mut().for_each(|x| *x /= we);
+        float.iter_mut().for_each(|x| *x /= wf);
+    }
 }
 
 trait Lossy {
@@ -92,7 +115,20 @@ fn agree(what: &str, exact: &[Object], float: &[Object]) -> Result<(), String> {
                 f.degree_summary()
             ));
         }
-        let (ce, cf) = (coords(e), coords(f));
+        let (mut ce, mut cf) = (coords(e), coords(f));
+        if ce.len() != cf.len() {
+            return Err(format!("{what}: piece counts differ"));
+        }
+        for ((stride, a), (_, b)) in ce.iter_mut().zip(cf.iter_mut()) {
+            if a.len() != b.len() {
+                return Err(format!("{what}: pieces of different sizes"));
+            }
+            normalize(a, b, *stride);
+        }
+        let (ce, cf): (Vec<Vec<f64>>, Vec<Vec<f64>>) = (
+            ce.into_iter().map(|(_, v)| v).collect(),
+            cf.into_iter().map(|(_, v)| v).collect(),
+        );
         let scale = ce
             .iter()
             .flatten()
@@ -153,9 +189,18 @@ fn power_form_slack(e: &Object) -> f64 {
     let mut slack = 0.0f64;
     for c in e.geometry.curves() {
         let n = c.degree() as f64;
+        // in the units of the comparison (see `normalize`)
+        let w = c
+            .weights()
+            .iter()
+            .map(|x| x.to_f64_lossy().abs())
+            .fold(0.0, f64::max);
+        if w == 0.0 {
+            continue;
+        }
         for p in c.coordinate_polys() {
             let s: f64 = p.coeffs().iter().map(|a| a.to_f64_lossy().abs()).sum();
-            slack = slack.max(16.0 * (n + 1.0) * f64::EPSILON * s);
+            slack = slack.max(16.0 * (n + 1.0) * f64::EPSILON * s / w);
         }
     }
     slack
@@ -416,6 +461,32 @@ proptest! {
         }
         let src = obj("dupin_cyclide_parabolic", &format!("t = [{t0}, {t1}]\ns = [{t0}, {t1}]\n"));
         check("dupin_cyclide_parabolic", &src).map_err(TestCaseError::fail)?;
+    }
+
+    /// PN surfaces of random polynomial graphs F(u, v) and support functions h(u, v) on
+    /// random rectangles, with offsets (where the exact op finds them regular).
+    #[test]
+    fn pn_graphs_and_supports_agree(
+        g in proptest::collection::vec(proptest::collection::vec(q(), 3), 3),
+        u0 in -4i64..=2, v0 in -4i64..=2, du in 1i64..=4, dv in 1i64..=4,
+        dist in proptest::collection::vec(q(), 0..=2),
+    ) {
+        let grid: Vec<String> = g.iter().map(|r| format!("[{}]", r.join(", "))).collect();
+        let rest = format!(
+            "domain = [\"{u0}/4\", \"{}/4\", \"{v0}/4\", \"{}/4\"]\ndistances = [{}]\n",
+            u0 + du, v0 + dv, dist.join(", ")
+        );
+        for (op, key) in [("pn_graph", "coefficients"), ("pn_support", "support")] {
+            let src = obj(op, &format!("{key} = [{}]\n{rest}", grid.join(", ")));
+            if let Ok(e) = build(&src, Arithmetic::Exact) {
+                // regularity decided by Bernstein signs: an f64 sign may refuse a surface
+                // the exact signs accept (a zero of the regularity polynomial near the
+                // domain); what the float path builds must agree
+                if let Ok(f) = build(&src, Arithmetic::Float) {
+                    agree(op, &e, &f).map_err(TestCaseError::fail)?;
+                }
+            }
+        }
     }
 
     /// Spatial PH curves from quaternion preimages; planar PH curves and their offsets.
