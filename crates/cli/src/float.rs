@@ -130,6 +130,11 @@ pub const FLOAT_OPS: &[FloatOp] = &[
         note: "regularity is decided by f64 Bernstein signs",
     },
     FloatOp {
+        name: "pn_revolution",
+        build: pn::revolution,
+        note: "regularity is decided by f64 Bernstein signs",
+    },
+    FloatOp {
         name: "ph_curve",
         build: ph::ph_curve,
         note: "the curve only: the display objects (`frame`, `comb`, `feed`) are refused; `arc_length` is an f64 value",
@@ -158,6 +163,7 @@ pub const NO_FLOAT_PATH: &[(&str, &str)] = &[
     ("pipe", "exact-only algebra: the op searches the splittings of |m′|² as sums of two squares over Q (Gaussian factorizations, every frame and method) and keeps the smallest with positive weights; an f64 pipe (`rcagd::canal::pipe_around_ph::<f64>`) would be a different parametrization, so it is not offered as the same construction"),
     ("pipe_ph", "exact-only algebra: as `pipe`, a search over exact splittings of |m′|² = σ² and their Gaussian factors"),
     ("canal_surface", "exact-only algebra: |ṁ|² − ṙ² must split as a sum of two squares over Q"),
+    ("pn_ellipsoid", "tried and withdrawn (session 12): the library's EllipsoidPn runs in f64, but its f64 regularity check (Bernstein signs of x_u × x_v) finds a singular point at the corner (1/4, 0) of the example's domain that the exact signs exclude"),
     ("conic_point", "exact-only algebra: a rational point of a conic over Q"),
     ("analysis", "exact analysis of a PH curve (factorization, exact roots): queries, not constructions"),
     ("quadric_query", "queries of exact algebra (rational points, fibres, collineations over Q)"),
@@ -1018,6 +1024,7 @@ mod cyclide {
 /// PN surfaces in `f64` (`rcagd::pn`: Peternell, Theorem 4.3/4.4 and (4.2)).
 mod pn {
     use super::*;
+    use rcagd::pn::planar::{surface_of_revolution, PnCurve};
     use rcagd::pn::support::from_support_function;
     use rcagd::pn::{Domain, IsotropicSurface, PnError, PnSurface, RatFn};
     use rcagd_algebra::mpoly::MPoly;
@@ -1087,9 +1094,10 @@ mod pn {
         args: &OpArgs,
         surface: &PnSurface<f64>,
         dom: &Domain<f64>,
+        mut certs: Vec<Certificate>,
         param: &'static str,
     ) -> Result<Vec<Object>, OpError> {
-        let mut certs = surface.certify();
+        certs.extend(surface.certify());
         certs.push(surface.check_regular(dom).map_err(|e| {
             OpError::param(
                 param,
@@ -1141,7 +1149,23 @@ mod pn {
         let s = IsotropicSurface::graph(&fun)
             .to_pn_surface()
             .map_err(blame("coefficients"))?;
-        surface_objects(args, &oriented(args, s)?, &domain(args)?, "coefficients")
+        surface_objects(
+            args,
+            &oriented(args, s)?,
+            &domain(args)?,
+            Vec::new(),
+            "coefficients",
+        )
+    }
+
+    pub(super) fn revolution(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+        let u = fv(&args.opt_numbers("u")?.unwrap_or_default());
+        let v = fv(&args.opt_numbers("v")?.unwrap_or_default());
+        let start = fa::<2>(&args.point("start")?, "start")?;
+        let profile = PnCurve::from_ph_preimage(&u, &v, start).map_err(blame("v"))?;
+        let s = surface_of_revolution(&profile).map_err(blame("u"))?;
+        let certs = prefixed("profile: ", profile.certify());
+        surface_objects(args, &oriented(args, s)?, &domain(args)?, certs, "domain")
     }
 
     pub(super) fn support(args: &OpArgs) -> Result<Vec<Object>, OpError> {
@@ -1151,6 +1175,6 @@ mod pn {
         let c = opt_poly(args, "c", MPoly::constant(2, 1.0))?;
         let rect = domain(args)?;
         let s = from_support_function(a, b, c, &h).map_err(blame("c"))?;
-        surface_objects(args, &oriented(args, s)?, &rect, "support")
+        surface_objects(args, &oriented(args, s)?, &rect, Vec::new(), "support")
     }
 }

@@ -463,8 +463,9 @@ proptest! {
         check("dupin_cyclide_parabolic", &src).map_err(TestCaseError::fail)?;
     }
 
-    /// PN surfaces of random polynomial graphs F(u, v) and support functions h(u, v) on
-    /// random rectangles, with offsets (where the exact op finds them regular).
+    /// PN surfaces of random polynomial graphs F(u, v), support functions h(u, v) and
+    /// surfaces of revolution of PH profiles on random rectangles, with offsets (where
+    /// the exact op finds them regular).
     #[test]
     fn pn_graphs_and_supports_agree(
         g in proptest::collection::vec(proptest::collection::vec(q(), 3), 3),
@@ -476,6 +477,17 @@ proptest! {
             "domain = [\"{u0}/4\", \"{}/4\", \"{v0}/4\", \"{}/4\"]\ndistances = [{}]\n",
             u0 + du, v0 + dv, dist.join(", ")
         );
+        // a surface of revolution of a PH profile with preimage (row 0, row 1) of `g`
+        let uv: Vec<String> = g.iter().take(2).map(|r| r.join(", ")).collect();
+        let src = obj(
+            "pn_revolution",
+            &format!("u = [{}]\nv = [{}]\nstart = [{}, 0]\n{rest}", uv[0], uv[1], 1 + du),
+        );
+        if let Ok(e) = build(&src, Arithmetic::Exact) {
+            if let Ok(f) = build(&src, Arithmetic::Float) {
+                agree("pn_revolution", &e, &f).map_err(TestCaseError::fail)?;
+            }
+        }
         for (op, key) in [("pn_graph", "coefficients"), ("pn_support", "support")] {
             let src = obj(op, &format!("{key} = [{}]\n{rest}", grid.join(", ")));
             if let Ok(e) = build(&src, Arithmetic::Exact) {
