@@ -163,6 +163,7 @@ pub const NO_FLOAT_PATH: &[(&str, &str)] = &[
     ("pipe", "exact-only algebra: the op searches the splittings of |m′|² as sums of two squares over Q (Gaussian factorizations, every frame and method) and keeps the smallest with positive weights; an f64 pipe (`rcagd::canal::pipe_around_ph::<f64>`) would be a different parametrization, so it is not offered as the same construction"),
     ("pipe_ph", "exact-only algebra: as `pipe`, a search over exact splittings of |m′|² = σ² and their Gaussian factors"),
     ("canal_surface", "exact-only algebra: |ṁ|² − ṙ² must split as a sum of two squares over Q"),
+    ("ph_helix", "tried and withdrawn (session 12): the library's LineCircle::helix runs in f64, but `certify_helix_construction` decides αβ' − α'β ≡ (f'g − fg')(a0b1 − a1b0)w² on the already-subtracted residual with the scale of that residual (`ph::util::identity_cert` with a right side 0), an absolute 10⁻⁹ that rounding exceeds for seeds of size ~5"),
     ("pn_ellipsoid", "tried and withdrawn (session 12): the library's EllipsoidPn runs in f64, but its f64 regularity check (Bernstein signs of x_u × x_v) finds a singular point at the corner (1/4, 0) of the example's domain that the exact signs exclude"),
     ("conic_point", "exact-only algebra: a rational point of a conic over Q"),
     ("analysis", "exact analysis of a PH curve (factorization, exact roots): queries, not constructions"),
@@ -769,7 +770,16 @@ mod ph {
                 ))
             }
         };
-        let mut certs: Vec<Certificate> = Vec::new();
+        curve_object(args, &curve, Vec::new())
+    }
+
+    /// The curve object of `ph_curve`: the PH, arc-length and curvature
+    /// certificates after `certs`, and the arc length as an f64 value.
+    fn curve_object(
+        args: &OpArgs,
+        curve: &PhCurve<f64>,
+        mut certs: Vec<Certificate>,
+    ) -> Result<Vec<Object>, OpError> {
         for c in curve
             .certify()
             .into_iter()
