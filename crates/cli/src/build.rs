@@ -154,7 +154,12 @@ pub fn check_object(
 
 /// Runs an op, turning a panic into an error (no input may crash the CLI).
 pub fn run_op(op: &OpSpec, args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    match catch_unwind(AssertUnwindSafe(|| (op.build)(args))) {
+    run_build(op.build, args)
+}
+
+/// Runs a build function (an op's, or its float path's), turning a panic into an error.
+fn run_build(build: ops::BuildFn, args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    match catch_unwind(AssertUnwindSafe(|| build(args))) {
         Ok(r) => r,
         Err(payload) => {
             let msg = payload
@@ -175,8 +180,53 @@ pub fn run_op(op: &OpSpec, args: &OpArgs) -> Result<Vec<Object>, OpError> {
 /// Parameter problems, or the construction's error located at the `op` key (or at
 /// the parameter the op names).
 pub fn build_object(file: &SourceFile, obj: &RecipeObject) -> Result<Vec<Object>, Vec<Diagnostic>> {
+    build_object_with(file, obj, Arithmetic::Exact)
+}
+
+/// The arithmetic a recipe is built in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Arithmetic {
+    /// Exact rational arithmetic: the op's build, certificates are proofs (the default).
+    #[default]
+    Exact,
+    /// `f64` (`rcagd build --float`, module [`crate::float`]): the op's float path, for
+    /// speed; certificates are tolerance checks. An op without a float path is refused.
+    Float,
+}
+
+/// Checks and builds one object in the given arithmetic (see [`build_object`]).
+///
+/// # Errors
+/// As [`build_object`]; with [`Arithmetic::Float`] also an op that has no float path
+/// (located at the `op` key, listing the ops that have one).
+pub fn build_object_with(
+    file: &SourceFile,
+    obj: &RecipeObject,
+    arithmetic: Arithmetic,
+) -> Result<Vec<Object>, Vec<Diagnostic>> {
     let (op, args) = check_object(file, obj)?;
-    run_op(op, &args).map_err(|e| {
+    let build = match arithmetic {
+        Arithmetic::Exact => op.build,
+        Arithmetic::Float => match crate::float::find(op.name) {
+            Some(f) => f.build,
+            None => {
+                return Err(vec![file
+                    .error(
+                        obj.op_key_span,
+                        format!(
+                            "op `{}` of {:?} has no float path: `--float` builds only ops whose construction runs in f64",
+                            op.name, obj.name
+                        ),
+                    )
+                    .note(format!(
+                        "ops with a float path: {}",
+                        crate::float::float_op_names()
+                    ))
+                    .note("build this recipe without --float (exact), or move the object to a recipe of its own")]);
+            }
+        },
+    };
+    run_build(build, &args).map_err(|e| {
         let span = e
             .param
             .and_then(|p| obj.params.iter().find(|x| x.key == p))
@@ -202,11 +252,23 @@ pub fn build_recipe(
     recipe: &Recipe,
     progress: impl Fn(&str) + Sync,
 ) -> Result<Vec<Object>, Vec<Diagnostic>> {
+    build_recipe_with(recipe, Arithmetic::Exact, progress)
+}
+
+/// Builds every object of a recipe in the given arithmetic (see [`build_recipe`]).
+///
+/// # Errors
+/// All problems of all objects.
+pub fn build_recipe_with(
+    recipe: &Recipe,
+    arithmetic: Arithmetic,
+    progress: impl Fn(&str) + Sync,
+) -> Result<Vec<Object>, Vec<Diagnostic>> {
     let built: Vec<_> = recipe
         .objects
         .par_iter()
         .map(|obj| {
-            let r = build_object(&recipe.file, obj);
+            let r = build_object_with(&recipe.file, obj, arithmetic);
             progress(&obj.name);
             r
         })
@@ -362,7 +424,13 @@ fn progress_bar(len: usize, show: bool) -> indicatif::ProgressBar {
 /// (it is shown anyway when standard error is a terminal). Nothing is written before
 /// every object is built and rendered, so an interrupt (Ctrl-C) leaves no file behind
 /// (at most the `.NAME.rcagd-partial` temporaries of the final write phase).
-pub fn run(path: &Path, out: Option<&Path>, formats: &[OutFormat], progress: bool) -> u8 {
+pub fn run(
+    path: &Path,
+    out: Option<&Path>,
+    formats: &[OutFormat],
+    progress: bool,
+    arithmetic: Arithmetic,
+) -> u8 {
     let mut formats: Vec<OutFormat> = formats.to_vec();
     if formats.is_empty() {
         formats.push(OutFormat::Json);
@@ -390,7 +458,7 @@ pub fn run(path: &Path, out: Option<&Path>, formats: &[OutFormat], progress: boo
     let lines = progress && !std::io::IsTerminal::is_terminal(&std::io::stderr());
     let done = std::sync::atomic::AtomicUsize::new(0);
     let total = recipe.objects.len();
-    let built = build_recipe(&recipe, |name| {
+    let built = build_recipe_with(&recipe, arithmetic, |name| {
         if lines {
             let k = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             errln!("built {k}/{total}: {}", clip(name));

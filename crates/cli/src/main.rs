@@ -4,8 +4,8 @@
 //!   write JSON/STEP/IGES/OBJ/SVG/PNG and the exact sidecar per object, `report.json` and `index.html`;
 //! * `rcagd build RECIPE [--out DIR] [--format json|step|iges|exact|obj|stl|ply|gltf|svg|png]…`
 //!   `[--max-recipe-bytes N] [--max-objects N] [--max-digits N] [--max-degree N] [--max-points N]`
-//!   `[--max-samples N] [--max-magnitude N] [--progress]` — build a user's recipe (the limits:
-//!   `rcagd_cli::limits`);
+//!   `[--max-samples N] [--max-magnitude N] [--progress] [--float]` — build a user's recipe (the limits:
+//!   `rcagd_cli::limits`; `--float`: `rcagd_cli::float`);
 //! * `rcagd ops [NAME] [--markdown]` — the op reference;
 //! * `rcagd fuzz [--cases N] [--seed S] [--op NAME] [--corpus DIR] [--case-seconds T] [--huge]` —
 //!   the structured fuzzer over the op registry (`rcagd_cli::fuzz`).
@@ -94,6 +94,12 @@ enum Command {
         /// Show progress per object on standard error (default: only on a terminal).
         #[arg(long)]
         progress: bool,
+        /// Build in f64 instead of exact arithmetic, for speed: control points are the
+        /// exact binary values of f64 results, certificates are tolerance checks (not
+        /// proofs) and every object says `arithmetic = "f64"`. Ops without a float path
+        /// are refused (`rcagd ops NAME` says which have one).
+        #[arg(long)]
+        float: bool,
     },
     /// List the recipe ops and their parameters, or describe one op.
     Ops {
@@ -135,6 +141,7 @@ fn main() -> ExitCode {
             max_samples,
             max_magnitude,
             progress,
+            float,
         } => {
             rcagd_cli::limits::Limits {
                 recipe_bytes: max_recipe_bytes,
@@ -146,7 +153,12 @@ fn main() -> ExitCode {
                 magnitude: max_magnitude,
             }
             .install();
-            build::run(&recipe, out.as_deref(), &formats, progress)
+            let arithmetic = if float {
+                build::Arithmetic::Float
+            } else {
+                build::Arithmetic::Exact
+            };
+            build::run(&recipe, out.as_deref(), &formats, progress, arithmetic)
         }
         Command::Ops { name, markdown } => ops::describe::run(name.as_deref(), markdown),
         Command::Fuzz(options) => {

@@ -74,6 +74,7 @@ pub fn op_text(op: &OpSpec) -> String {
             let _ = writeln!(s, "  {l}");
         }
     }
+    let _ = writeln!(s, "\n{}", crate::float::describe(op.name));
     let _ = writeln!(s, "\nexample:\n");
     for l in op.example.lines() {
         let _ = writeln!(s, "    {l}");
@@ -116,6 +117,7 @@ pub fn op_markdown(op: &OpSpec) -> String {
             limits.join("; ")
         );
     }
+    let _ = writeln!(s, "{}\n", crate::float::describe_markdown(op.name));
     let _ = writeln!(s, "```toml\n{}```\n", op.example);
     s
 }

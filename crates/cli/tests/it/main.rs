@@ -10,6 +10,7 @@ mod cyclide_ops;
 mod degenerate;
 mod docs;
 mod exchange_weights;
+mod float;
 mod fuzz;
 mod fuzz_corpus;
 mod limits;
