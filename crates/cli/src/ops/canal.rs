@@ -8,11 +8,10 @@
 //! field `Q(√d)` the op fails and says which field (the exchange model holds rational
 //! geometry only; `rcagd::canal` builds such surfaces over `Q(√d)` in the library).
 
-use super::{OpArgs, OpError, OpSpec, ParamSpec};
+use super::{poly_io, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
 use num_traits::{One, Zero};
-use rcagd::canal::bipoly::{patch_of, BiPoly};
 use rcagd::canal::blend::PlaneEnd;
 use rcagd::canal::{
     pipe_along_spine, ApproximationPolicy,
@@ -929,39 +928,13 @@ fn build_blend_sphere_plane(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         CanalError::InvalidArgument(_) => OpError::param("plane_normal", e.to_string()),
         other => canal_err(other, "center0", "lambda0"),
     })?;
-    let x: Option<Vec<BiPoly<Rational>>> = blend
-        .surface
-        .x
-        .iter()
-        .map(|b| {
-            let ok = b.all_coeffs().iter().all(|c| QuadExt::to_rational(c).is_some());
-            ok.then(|| b.map_scalar(|c| QuadExt::to_rational(c).unwrap_or_else(Rational::zero)))
-        })
-        .collect();
-    let Some(x) = x else {
-        return Err(OpError::param(
+    let patches = blend.rational_patches().map_err(|e| match e {
+        CanalError::IrrationalSplit { .. } => OpError::param(
             "lambda0",
             "the blend needs a quadratic field Q(√d) (|ṁ|² − ṙ² of the inverted family is no sum of two rational squares); recipes export rational geometry — try other λ₀, λ₁",
-        ));
-    };
-    let nu = x.iter().filter_map(BiPoly::degree_u).max().unwrap_or(0);
-    let (zero, one, m1) = (Rational::zero(), Rational::one(), -Rational::one());
-    let mut patches = Vec::new();
-    let charts_t: Vec<Vec<BiPoly<Rational>>> = if blend.surface.reparametrized.is_some() {
-        let nt = x.iter().filter_map(BiPoly::degree_t).max().unwrap_or(0);
-        vec![
-            x.clone(),
-            x.iter().map(|c| c.transpose().reverse_u(nt).transpose()).collect(),
-        ]
-    } else {
-        vec![x.clone()]
-    };
-    for base in charts_t {
-        let rev: Vec<BiPoly<Rational>> = base.iter().map(|c| c.reverse_u(nu)).collect();
-        for ch in [base, rev] {
-            patches.push(patch_of(&ch, (&zero, &one), (&m1, &one)).map_err(|e| OpError::new(e.to_string()))?);
-        }
-    }
+        ),
+        other => OpError::new(other.to_string()),
+    })?;
     let (patches, wcert) = positive_pieces(patches, Some("lambda0"))?;
     let mut certs = blend.certify();
     certs.push(wcert);
@@ -1014,11 +987,6 @@ domain = ["1/4", 1, -1, 1]
     build: build_canal_normal_field,
 };
 
-/// `Σ c[k] tᵏ` of one coordinate of a list of power-coefficient points.
-fn coordinate_poly(points: &[Vec<Rational>], k: usize) -> rcagd_algebra::Poly<Rational> {
-    rcagd_algebra::Poly::new(points.iter().map(|p| p[k].clone()).collect())
-}
-
 fn build_canal_normal_field(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let spine = args.points("spine")?;
     let normal = args.points("normal")?;
@@ -1044,12 +1012,9 @@ fn build_canal_normal_field(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             format!("four numbers [t0, t1, u0, u1], got {}", dom.len()),
         )
     })?;
-    let family = CanalSpine::polynomial(
-        core::array::from_fn(|k| coordinate_poly(&spine, k)),
-        rcagd_algebra::Poly::new(radius),
-    );
-    let n: [rcagd_algebra::Poly<Rational>; 3] = core::array::from_fn(|k| coordinate_poly(&normal, k));
-    let d = rcagd_algebra::Poly::new(den);
+    let family = CanalSpine::polynomial(poly_io::coordinate_polys(&spine), poly_io::poly(radius));
+    let n = poly_io::coordinate_polys(&normal);
+    let d = poly_io::poly(den);
     let built = rcagd::canal::canal_surface_from_normal_field(&family, &n, &d).map_err(|e| {
         let m = e.to_string();
         if m.contains("denominator") {

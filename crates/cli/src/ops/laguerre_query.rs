@@ -8,6 +8,7 @@
 //! * `laguerre_pe_sphere`: the cyclographic image of a pe sphere `π ∩ Γ(a)` of `R^{3,1}`.
 
 use super::quadric::{exportable_patch, target, COEFFICIENTS, MATRIX, QUADRIC, RATIONAL_POINT};
+use super::poly_io::{self, MPolyQ};
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
@@ -19,8 +20,6 @@ use rcagd::laguerre::query::{
 use rcagd::laguerre::{Cycle, IsotropicSphere, LaguerreMap, OrientedPlane};
 use rcagd::quadric::patch_image;
 use rcagd::Certified;
-use rcagd_algebra::mpoly::MPoly;
-use rcagd_algebra::rational::format_rational;
 use rcagd_algebra::{Certificate, Rational};
 use rcagd_geom::BezierPatch;
 use rcagd_io::quantity::{NamedQuantity, Quantity};
@@ -246,35 +245,8 @@ fn build_models(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     Ok(out)
 }
 
-/// `c·y1^a·y2^b + …` (highest exponents first).
-fn format_mpoly(p: &MPoly<Q>) -> String {
-    let mut terms: Vec<(Vec<u32>, Q)> = p.terms().map(|(e, c)| (e.to_vec(), c.clone())).collect();
-    if terms.is_empty() {
-        return "0".into();
-    }
-    terms.sort_by(|a, b| b.0.cmp(&a.0));
-    terms
-        .iter()
-        .map(|(e, c)| {
-            let mono: Vec<String> = e
-                .iter()
-                .enumerate()
-                .filter(|(_, &d)| d > 0)
-                .map(|(i, &d)| if d == 1 { format!("y{}", i + 1) } else { format!("y{}^{d}", i + 1) })
-                .collect();
-            match (mono.is_empty(), c.is_one()) {
-                (true, _) => format_rational(c),
-                (false, true) => mono.join("·"),
-                (false, false) => format!("{}·{}", format_rational(c), mono.join("·")),
-            }
-        })
-        .collect::<Vec<_>>()
-        .join(" + ")
-        .replace("+ -", "− ")
-}
-
-fn mpoly_value(name: &str, doc: &str, p: &MPoly<Q>) -> NamedQuantity {
-    value(name, doc, Quantity::Text(format_mpoly(p)))
+fn mpoly_value(name: &str, doc: &str, p: &MPolyQ) -> NamedQuantity {
+    value(name, doc, Quantity::Text(poly_io::format_mpoly(p)))
 }
 
 fn build_isotropic_quadric(args: &OpArgs) -> Result<Vec<Object>, OpError> {

@@ -12,6 +12,7 @@ mod docs;
 mod exchange_weights;
 mod fuzz;
 mod fuzz_corpus;
+mod library_first;
 mod limits;
 mod messages;
 mod ndim;
