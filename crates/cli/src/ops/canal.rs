@@ -19,13 +19,13 @@ use rcagd::canal::{
     pipe_around_ph_exportable, BlendEnd, BlendSpine, CanalBuild, CanalError, CanalOptions, CanalSpine,
     CanalSurface, Method, Orientation, RationalCanal,
 };
+use rcagd::lines::regulus_patch::RegulusPatchError;
 use rcagd::lines::{common_transversals, CommonTransversals, Line, Regulus};
 use rcagd::ph::{PhCurve, PhError};
 use rcagd::Certified;
 use rcagd_algebra::quaternion::Quaternion;
 use rcagd_algebra::rational::format_rational;
 use rcagd_algebra::{Certificate, QuadExt, Rational, Scalar};
-use rcagd_geom::certify::patch_on_quadric;
 use rcagd_geom::weight_sign::{split_patches_adaptive, SignRule};
 use rcagd_geom::{BezierCurve, BezierPatch};
 
@@ -461,54 +461,12 @@ fn build_regulus(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let (Some(p0), Some(p1)) = (pa.first(), pa.get(1)) else {
         return Err(OpError::param("lines", "the first line needs two points"));
     };
-    let [_, b, c] = reg.lines();
-    let mut q = Vec::new();
-    for p in [p0, p1] {
-        let u = b
-            .join_point(p)
-            .map_err(|e| OpError::param("lines", e.to_string()))?;
-        let x = c
-            .meet_plane(&u)
-            .map_err(|e| OpError::param("lines", e.to_string()))?;
-        q.push(x);
-    }
-    let (w0, w1) = (q[0][0].clone(), q[1][0].clone());
-    if w0.is_zero() || w1.is_zero() || (w0 > Rational::zero()) != (w1 > Rational::zero()) {
-        return Err(OpError::param(
-            "lines",
-            "the transversals through the segment of the first line meet the third line at infinity (choose another segment on the first line)",
-        ));
-    }
-    if w0 < Rational::zero() {
-        for x in &mut q {
-            for v in x.iter_mut() {
-                *v = -v.clone();
-            }
-        }
-    }
-    let net = vec![
-        vec![p0.to_vec(), q[0].to_vec()],
-        vec![p1.to_vec(), q[1].to_vec()],
-    ];
-    let patch = BezierPatch::from_homogeneous(net).map_err(|e| OpError::new(e.to_string()))?;
+    let patch = reg.segment_patch(p0, p1).map_err(|e| match e {
+        RegulusPatchError::Geom(g) => OpError::new(g.to_string()),
+        e => OpError::param("lines", e.to_string()),
+    })?;
     let mut certs: Vec<Certificate> = prefixed("regulus: ", reg.certify()).collect();
-    match reg.quadric() {
-        Ok(qm) => {
-            let rows: Vec<Vec<Rational>> = qm.iter().map(|r| r.to_vec()).collect();
-            match patch_on_quadric(&patch, &rows) {
-                Ok(c) => certs.push(c),
-                Err(e) => certs.push(Certificate::fails("patch on the carrier quadric", e.to_string(), true)),
-            }
-        }
-        Err(e) => certs.push(Certificate::fails("carrier quadric", e.to_string(), true)),
-    }
-    let weights = patch.weights();
-    certs.push(Certificate::decide(
-        "every weight > 0 (no pole on the patch)",
-        weights.iter().all(|w| *w > Rational::zero()),
-        true,
-        || fmt_vec(&weights),
-    ));
+    certs.extend(reg.segment_patch_certificates(&patch));
     Ok(vec![args.object(Geometry::Patch(patch), certs)])
 }
 

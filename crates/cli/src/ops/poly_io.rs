@@ -74,7 +74,10 @@ pub fn poly_rows(net: &[Vec<Vec<Q>>]) -> Vec<Vec<Poly<Q>>> {
 ///
 /// # Errors
 /// [`OpError::param`] at `param` unless the net has 4 rows of 4 entries.
-pub fn poly_matrix4(net: &[Vec<Vec<Q>>], param: &'static str) -> Result<[[Poly<Q>; 4]; 4], OpError> {
+pub fn poly_matrix4(
+    net: &[Vec<Vec<Q>>],
+    param: &'static str,
+) -> Result<[[Poly<Q>; 4]; 4], OpError> {
     if net.len() != 4 || net.iter().any(|r| r.len() != 4) {
         return Err(OpError::param(param, "needs 4 rows of 4 entries"));
     }
@@ -165,13 +168,21 @@ pub fn net_mpolys4(net: &[Vec<[Q; 4]>]) -> Result<[MPoly<Q>; 4], OpError> {
 /// # Errors
 /// [`OpError::param`] at `param` if a term has the wrong length or an exponent is not a
 /// non-negative integer.
-pub fn terms_mpoly(rows: &[Vec<Q>], nvars: usize, param: &'static str) -> Result<MPoly<Q>, OpError> {
+pub fn terms_mpoly(
+    rows: &[Vec<Q>],
+    nvars: usize,
+    param: &'static str,
+) -> Result<MPoly<Q>, OpError> {
     let mut terms = Vec::with_capacity(rows.len());
     for r in rows {
         if r.len() != nvars + 1 {
             return Err(OpError::param(
                 param,
-                format!("each term is [c, e₁, …, e_{nvars}] ({} entries), got {}", nvars + 1, r.len()),
+                format!(
+                    "each term is [c, e₁, …, e_{nvars}] ({} entries), got {}",
+                    nvars + 1,
+                    r.len()
+                ),
             ));
         }
         let e: Vec<u32> = r[1..]
@@ -237,7 +248,12 @@ pub fn quad_polys_parts_value(name: &str, doc: &str, v: &[Poly<QuadExt>]) -> Nam
         doc,
         Quantity::Vector(
             v.iter()
-                .map(|x| Quantity::Vector(vec![Quantity::poly_t(part(x, false)), Quantity::poly_t(part(x, true))]))
+                .map(|x| {
+                    Quantity::Vector(vec![
+                        Quantity::poly_t(part(x, false)),
+                        Quantity::poly_t(part(x, true)),
+                    ])
+                })
                 .collect(),
         ),
     )
@@ -252,7 +268,13 @@ pub fn quad_poly_value(p: &Poly<QuadExt>, var: &str) -> Quantity {
             poly: p.map(|c| c.a().clone()),
         }
     } else {
-        Quantity::Vector(p.coeffs().iter().cloned().map(Quantity::Quadratic).collect())
+        Quantity::Vector(
+            p.coeffs()
+                .iter()
+                .cloned()
+                .map(Quantity::Quadratic)
+                .collect(),
+        )
     }
 }
 
@@ -279,7 +301,13 @@ pub fn format_mpoly(p: &MPoly<Q>) -> String {
                 .iter()
                 .enumerate()
                 .filter(|(_, &d)| d > 0)
-                .map(|(i, &d)| if d == 1 { format!("y{}", i + 1) } else { format!("y{}^{d}", i + 1) })
+                .map(|(i, &d)| {
+                    if d == 1 {
+                        format!("y{}", i + 1)
+                    } else {
+                        format!("y{}^{d}", i + 1)
+                    }
+                })
                 .collect();
             match (mono.is_empty(), num_traits::One::is_one(c)) {
                 (true, _) => format_rational(c),
@@ -296,7 +324,11 @@ pub fn format_mpoly(p: &MPoly<Q>) -> String {
 ///
 /// # Errors
 /// [`OpError`] if the names do not fit the coordinates.
-pub fn map_value(names: Vec<String>, coords: &[MPoly<Q>], what: &str) -> Result<NamedQuantity, OpError> {
+pub fn map_value(
+    names: Vec<String>,
+    coords: &[MPoly<Q>],
+    what: &str,
+) -> Result<NamedQuantity, OpError> {
     let map = NdimMap::new(names, coords.to_vec()).map_err(|e| OpError::new(e.to_string()))?;
     Ok(NamedQuantity::new(
         "homogeneous_map",
@@ -324,14 +356,24 @@ mod tests {
         }
         assert_eq!(grid_mpoly(&g).unwrap(), sum);
         let l = list_mpoly(&[q(1), q(0), q(5)], 2).unwrap();
-        assert_eq!(l, grid_mpoly(&[vec![q(1)], vec![q(0)], vec![q(5)]]).unwrap());
+        assert_eq!(
+            l,
+            grid_mpoly(&[vec![q(1)], vec![q(0)], vec![q(5)]]).unwrap()
+        );
         let t = list_mpolys(&[vec![q(2), q(3)]]).unwrap();
-        assert_eq!(t[0], &MPoly::constant(1, q(2)) + &MPoly::monomial(1, &[1], q(3)));
+        assert_eq!(
+            t[0],
+            &MPoly::constant(1, q(2)) + &MPoly::monomial(1, &[1], q(3))
+        );
     }
 
     #[test]
     fn terms_are_summed_per_index() {
-        let terms = vec![(0, vec![q(1), q(1)]), (1, vec![q(2), q(0)]), (0, vec![q(3), q(1)])];
+        let terms = vec![
+            (0, vec![q(1), q(1)]),
+            (1, vec![q(2), q(0)]),
+            (0, vec![q(3), q(1)]),
+        ];
         let p = indexed_terms_mpolys(&terms, 2, 1, "a").unwrap();
         assert_eq!(p[0], MPoly::monomial(1, &[1], q(4)));
         assert_eq!(p[1], MPoly::constant(1, q(2)));

@@ -202,7 +202,12 @@ fn no_polynomial_arithmetic_in_ops() {
         .filter(|p| p.extension().is_some_and(|x| x == "rs"))
         .collect();
     files.sort();
-    assert!(files.len() >= 15, "found only {} op files in {}", files.len(), dir.display());
+    assert!(
+        files.len() >= 15,
+        "found only {} op files in {}",
+        files.len(),
+        dir.display()
+    );
     let mut report = Vec::new();
     for f in &files {
         let name = f.file_name().and_then(|n| n.to_str()).unwrap_or_default();
@@ -228,7 +233,10 @@ fn the_scanner_sees_violations_and_ignores_comments_and_strings() {
     let v = violations(bad);
     assert_eq!(v.len(), 3, "{v:?}");
     assert!(v[0].starts_with("1:") && v[1].starts_with("3:") && v[2].starts_with("4:"));
-    assert_eq!(violations("let r = rcagd_algebra::roots::rational_roots(&p);").len(), 1);
+    assert_eq!(
+        violations("let r = rcagd_algebra::roots::rational_roots(&p);").len(),
+        1
+    );
     assert_eq!(violations("let x = MPolyQ::zero(2);").len(), 1);
     assert_eq!(violations("let m = b.reverse_u(3);").len(), 1);
     let fine = "// Poly::new in a comment\nlet s = \"Poly::new(v).derivative()\";\nlet r = r#\"MPoly \"# ;\nlet c = '\"'; let d = Poly_ish + PolyT;\nfn g<'a>(x: &'a PolyT) {}\n#[cfg(test)]\nmod tests { use rcagd_algebra::Poly; }\n";

@@ -87,9 +87,9 @@ impl SpherePlaneBlend<QuadExt> {
             .iter()
             .map(|b| {
                 let c = b.all_coeffs();
-                c.iter().all(|c| c.to_rational().is_some()).then(|| {
-                    b.map_scalar(|c| c.to_rational().unwrap_or_else(|| Rational::from(0)))
-                })
+                c.iter()
+                    .all(|c| c.to_rational().is_some())
+                    .then(|| b.map_scalar(|c| c.to_rational().unwrap_or_else(|| Rational::from(0))))
             })
             .collect()
     }

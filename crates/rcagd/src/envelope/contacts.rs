@@ -50,7 +50,10 @@ impl SphereFamilyEnvelope<Rational> {
                 acc + &di * &di
             }) - &r * &r;
             certs.push(Certificate::decide(
-                format!("contact point {} at ({s}, {t}) lies on its sphere: |f − m|² = r²", k + 1),
+                format!(
+                    "contact point {} at ({s}, {t}) lies on its sphere: |f − m|² = r²",
+                    k + 1
+                ),
                 d == zero,
                 true,
                 || format!("|f − m|² − r² = {d}"),
@@ -71,5 +74,55 @@ impl SphereFamilyEnvelope<Rational> {
             points: pts,
             certificates: certs,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lines::NetKind;
+
+    fn q(a: i64, b: i64) -> Rational {
+        Rational::from(a) / Rational::from(b)
+    }
+
+    /// Gruber §3.3.4 (polar axes), the gallery example `sphere_family_cyclographic_polar`.
+    #[test]
+    fn polar_axes_contacts_are_certified() {
+        let i = |n: i64| Rational::from(n);
+        let points = vec![
+            vec![i(1), i(0), i(0), i(0)],
+            vec![i(0), i(0), i(0), i(-1)],
+            vec![i(0), i(1), i(0), i(0)],
+            vec![i(0), i(0), i(1), i(0)],
+        ];
+        let a = vec![vec![i(0)], vec![i(0)], vec![i(1)]];
+        let b = vec![vec![i(0), i(0), i(1)]];
+        let env = SphereFamilyEnvelope::<Rational>::from_data(
+            NetKind::Hyperbolic,
+            &points,
+            &a,
+            None,
+            Some(&b),
+            [None, None],
+        )
+        .expect("envelope");
+        let psi2 = env.other_sheet_homogeneous();
+        for (s, t) in [(q(1, 2), q(1, 2)), (q(3, 4), q(1, 3))] {
+            let c = env.certified_contacts(&s, &t, &psi2).expect("contacts");
+            assert_eq!(c.certificates.len(), 4);
+            assert!(
+                c.certificates.iter().all(|x| x.holds && x.exact),
+                "{:?}",
+                c.certificates
+            );
+            let (m, r) = &c.sphere;
+            for p in &c.points {
+                let d = (0..3).fold(Rational::from(0), |acc, k| {
+                    acc + (&p[k] - &m[k]) * (&p[k] - &m[k])
+                });
+                assert_eq!(d, r * r);
+            }
+        }
     }
 }

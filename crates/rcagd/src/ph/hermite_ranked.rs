@@ -64,15 +64,19 @@ impl HermiteSolution<QuadExt> {
         point_tolerance: &Rational,
         energy_tolerance: &Rational,
     ) -> Result<Vec<RankedInterpolant>, PhError> {
-        let mut encs: Vec<Option<Result<EnclosedInterpolant, PhError>>> = (0..self.interpolants.len())
-            .map(|i| Some(self.enclose(i, point_tolerance, energy_tolerance)))
-            .collect();
+        let mut encs: Vec<Option<Result<EnclosedInterpolant, PhError>>> =
+            (0..self.interpolants.len())
+                .map(|i| Some(self.enclose(i, point_tolerance, energy_tolerance)))
+                .collect();
         let energy = |i: usize, encs: &[Option<Result<EnclosedInterpolant, PhError>>]| match encs
             .get(i)
             .and_then(Option::as_ref)
         {
             Some(Ok(e)) => e.bending_energy.to_f64(),
-            _ => self.interpolants.get(i).map_or(f64::NAN, |s| s.bending_energy),
+            _ => self
+                .interpolants
+                .get(i)
+                .map_or(f64::NAN, |s| s.bending_energy),
         };
         let mut order: Vec<usize> = (0..self.interpolants.len()).collect();
         order.sort_by(|a, b| energy(*a, &encs).total_cmp(&energy(*b, &encs)));
@@ -81,8 +85,13 @@ impl HermiteSolution<QuadExt> {
         let mut out = Vec::with_capacity(count);
         for (k, idx) in order.into_iter().enumerate() {
             let e_idx = energy(idx, &encs);
-            let (Some(s), Some(enc)) = (self.interpolants.get(idx), encs.get_mut(idx).and_then(Option::take)) else {
-                return Err(PhError::Degenerate("internal error: an interpolant index out of range".into()));
+            let (Some(s), Some(enc)) = (
+                self.interpolants.get(idx),
+                encs.get_mut(idx).and_then(Option::take),
+            ) else {
+                return Err(PhError::Degenerate(
+                    "internal error: an interpolant index out of range".into(),
+                ));
             };
             let exact = s.exact_control_points.is_some();
             let pts: Vec<Vec<Rational>> = match (&s.exact_control_points, &enc) {
@@ -118,7 +127,10 @@ impl HermiteSolution<QuadExt> {
                     .zip(b)
                     .map(|(x, y)| Scalar::to_f64(&(x - y).abs()))
                     .fold(0.0, f64::max);
-                let scale = 1.0 + b.iter().map(|x| Scalar::to_f64(&x.abs())).fold(0.0, f64::max);
+                let scale = 1.0
+                    + b.iter()
+                        .map(|x| Scalar::to_f64(&x.abs()))
+                        .fold(0.0, f64::max);
                 (if exact { d == 0.0 } else { d <= 1e-9 * scale }, d)
             };
             let ds: Vec<Rational> = p1.iter().zip(p0).map(|(a, b)| (a - b) * &five).collect();
@@ -126,8 +138,16 @@ impl HermiteSolution<QuadExt> {
             for (prop, a, b) in [
                 ("r(0) = p_s", p0.as_slice(), data.p_s.as_slice()),
                 ("r(1) = p_f", p5.as_slice(), data.p_f.as_slice()),
-                ("r'(0) = 5(p_1 − p_0) = d_s", ds.as_slice(), data.d_s.as_slice()),
-                ("r'(1) = 5(p_5 − p_4) = d_f", df.as_slice(), data.d_f.as_slice()),
+                (
+                    "r'(0) = 5(p_1 − p_0) = d_s",
+                    ds.as_slice(),
+                    data.d_s.as_slice(),
+                ),
+                (
+                    "r'(1) = 5(p_5 − p_4) = d_f",
+                    df.as_slice(),
+                    data.d_f.as_slice(),
+                ),
             ] {
                 let (ok, d) = close(a, b);
                 certs.push(Certificate::decide(prop, ok, exact, || {

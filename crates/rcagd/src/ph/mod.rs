@@ -52,6 +52,7 @@ pub mod hermite_values;
 pub mod hodograph;
 pub mod planar;
 pub mod planar_hermite;
+pub mod planar_rounding;
 pub mod preimage;
 pub mod rrmf;
 pub mod rrmf_hermite;

@@ -112,8 +112,18 @@ mod tests {
     }
 
     fn cubic() -> PhCurve<Rational> {
-        let a0 = Quaternion { w: q(1), x: q(0), y: q(0), z: q(0) };
-        let a1 = Quaternion { w: q(0), x: q(1), y: q(0), z: q(1) };
+        let a0 = Quaternion {
+            w: q(1),
+            x: q(0),
+            y: q(0),
+            z: q(0),
+        };
+        let a1 = Quaternion {
+            w: q(0),
+            x: q(1),
+            y: q(0),
+            z: q(1),
+        };
         PhCurve::new(vec![a0, a1], [q(0), q(0), q(0)]).unwrap()
     }
 
