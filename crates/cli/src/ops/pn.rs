@@ -656,9 +656,15 @@ distances = ["1/4"]
 
 fn build_canal(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let m = three_polys(args, "spine")?;
-    let r = poly_from_list(&args.opt_numbers("radius")?.unwrap_or_default())?;
-    // the negative orientation envelopes the oriented family (m; −r), as the canal ops do
-    let r = if negative_orientation(args) { -r } else { r };
+    // the negative orientation envelopes the oriented family (m; −r), as the canal ops do:
+    // the radius is read with the orientation's sign
+    let radius = args.opt_numbers("radius")?.unwrap_or_default();
+    let radius: Vec<Q> = if negative_orientation(args) {
+        radius.into_iter().map(|c| -c).collect()
+    } else {
+        radius
+    };
+    let r = poly_from_list(&radius)?;
     let one = poly_io::mpoly_constant(2, Q::from(1));
     let fam = CycleFamily::new([m[0].num.clone(), m[1].num.clone(), m[2].num.clone()], r, one)
         .map_err(blame("spine"))?;

@@ -1,5 +1,5 @@
 //! Drawable pieces of the Laguerre models' objects: a square of an oriented plane and an
-//! isotropic sphere over a square (docs/math/laguerre-pn.md, "The isotropic model").
+//! isotropic sphere over a square (docs/math/laguerre-pn.md, "Isotropic model (Theorem 4.3, (3.11)–(3.15))").
 //!
 //! * The square `[−1, 1]²` of the plane `e0 + n·x = 0` around its foot point `f = −e0·n`,
 //!   spanned by `u = n × e_k` and `v = n × u` (`e_k` the unit vector of the smallest

@@ -21,6 +21,9 @@ fn quat() -> impl Strategy<Value = Quaternion<Q>> {
 fn point() -> impl Strategy<Value = [Q; 3]> {
     (rat(), rat(), rat()).prop_map(|(a, b, c)| [a, b, c])
 }
+fn f(x: &Q) -> f64 {
+    Scalar::to_f64(x)
+}
 fn qi(n: i64) -> Q {
     Q::from(n)
 }
@@ -69,13 +72,13 @@ proptest! {
         let cert = m.certificate("2⁻⁴⁰");
         prop_assert!(cert.holds && cert.exact, "{}", cert);
         let cf = PhCurve::new(
-            coeffs.iter().map(|a| Quaternion::new(a.w.to_f64(), a.x.to_f64(), a.y.to_f64(), a.z.to_f64())).collect(),
-            [p0[0].to_f64(), p0[1].to_f64(), p0[2].to_f64()],
+            coeffs.iter().map(|a| Quaternion::new(f(&a.w), f(&a.x), f(&a.y), f(&a.z))).collect(),
+            [f(&p0[0]), f(&p0[1]), f(&p0[2])],
         ).unwrap();
         let mf = cf.constant_feed_marks(n, &1e-12).unwrap();
-        prop_assert!((mf.total - m.total.to_f64()).abs() <= 1e-9 * (1.0 + m.total.to_f64().abs()));
+        prop_assert!((mf.total - f(&m.total)).abs() <= 1e-9 * (1.0 + f(&m.total).abs()));
         for (a, b) in mf.parameters.iter().zip(&m.parameters) {
-            prop_assert!((a - b.to_f64()).abs() <= 1e-6, "{} vs {}", a, b.to_f64());
+            prop_assert!((a - f(&b)).abs() <= 1e-6, "{} vs {}", a, f(&b));
         }
     }
 
@@ -97,15 +100,15 @@ proptest! {
             }
         }
         let cf = PhCurve::new(
-            coeffs.iter().map(|a| Quaternion::new(a.w.to_f64(), a.x.to_f64(), a.y.to_f64(), a.z.to_f64())).collect(),
-            [p0[0].to_f64(), p0[1].to_f64(), p0[2].to_f64()],
+            coeffs.iter().map(|a| Quaternion::new(f(&a.w), f(&a.x), f(&a.y), f(&a.z))).collect(),
+            [f(&p0[0]), f(&p0[1]), f(&p0[2])],
         ).unwrap();
         let tf: Vec<f64> = ts.iter().map(Scalar::to_f64).collect();
-        let teeth_f = cf.to_poly_curve().curvature_comb(&tf, &lambda.to_f64());
+        let teeth_f = cf.to_poly_curve().curvature_comb(&tf, &f(&lambda));
         prop_assert_eq!(teeth_f.len(), teeth.len());
         for ((_, a), (_, b)) in teeth_f.iter().zip(&teeth) {
             for i in 0..3 {
-                let e = b[i].to_f64();
+                let e = f(&b[i]);
                 prop_assert!((a[i] - e).abs() <= 1e-8 * (1.0 + e.abs()), "{} vs {}", a[i], e);
             }
         }
