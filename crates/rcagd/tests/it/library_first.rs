@@ -78,7 +78,7 @@ proptest! {
         let mf = cf.constant_feed_marks(n, &1e-12).unwrap();
         prop_assert!((mf.total - f(&m.total)).abs() <= 1e-9 * (1.0 + f(&m.total).abs()));
         for (a, b) in mf.parameters.iter().zip(&m.parameters) {
-            prop_assert!((a - f(&b)).abs() <= 1e-6, "{} vs {}", a, f(&b));
+            prop_assert!((a - f(b)).abs() <= 1e-6, "{} vs {}", a, f(b));
         }
     }
 
