@@ -214,6 +214,35 @@ pub fn zero_weight_edge<F: Scalar>(p: &BezierPatch<F>) -> Option<usize> {
         .position(|c| c.control_points().all(|h| h.first() == Some(&zero)))
 }
 
+/// Decides that a patch has no pole on `[0, 1]²`: weights of one sign (convex hull
+/// property), or — weights of mixed sign — pieces of one sign after at most `5 + 5` exact
+/// bisections ([`split_patches_adaptive`]; each piece's weight function is then non-zero,
+/// so the union is). The certificate, or `None` when neither decides (the weight function
+/// may vanish on the square: the patch passes through or near points at infinity).
+pub fn patch_pole_free<F: Scalar>(patch: &BezierPatch<F>) -> Option<rcagd_algebra::Certificate> {
+    use rcagd_algebra::Certificate;
+    if patch_has_one_sign(patch) {
+        return Some(Certificate::decide(
+            "the weights wᵢⱼ all have one sign (Σ wᵢⱼ Bᵢ Bⱼ ≠ 0 on [0, 1]²: no pole)",
+            true,
+            F::EXACT,
+            String::new,
+        ));
+    }
+    match split_patches_adaptive(vec![patch.clone()], SignRule::OneSign, (5, 5)) {
+        Ok(split) if split.failed == 0 => Some(Certificate::decide(
+            format!(
+                "weights of mixed sign, but each of {} subpatches (exact bisections) has weights of one sign: Σ wᵢⱼ Bᵢ Bⱼ ≠ 0 on [0, 1]² (no pole)",
+                split.pieces.len()
+            ),
+            true,
+            F::EXACT,
+            String::new,
+        )),
+        _ => None,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -330,6 +359,31 @@ mod tests {
         let ad = split_patches_adaptive(vec![p.clone()], SignRule::OneSign, (2, 2)).expect("ok");
         assert!(ad.failed > 0);
         assert_eq!(split_patch_uniform(&p, 3).expect("ok"), None);
+    }
+
+    #[test]
+    fn patch_pole_free_decides_one_sign_and_refuses_a_vanishing_weight() {
+        use rcagd_algebra::Rational;
+        let q = |n: i64| Rational::from(n);
+        let patch = |w: [[i64; 2]; 2]| {
+            BezierPatch::from_homogeneous(
+                (0..2)
+                    .map(|i| {
+                        (0..2)
+                            .map(|j| {
+                                let wij = q(w[i][j]);
+                                vec![wij.clone(), wij.clone() * q(i as i64), wij * q(j as i64)]
+                            })
+                            .collect()
+                    })
+                    .collect(),
+            )
+            .unwrap()
+        };
+        let c = patch_pole_free(&patch([[1, 2], [3, 1]])).unwrap();
+        assert!(c.holds && c.exact);
+        // w(u, v) = (1 − 2u)(1 − 2v) vanishes on the square
+        assert!(patch_pole_free(&patch([[1, -1], [-1, 1]])).is_none());
     }
 }
 

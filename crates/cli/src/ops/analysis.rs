@@ -11,13 +11,13 @@
 //! * `ph_dph_forms`: the quaternion DPH forms of a DPH curve (`rcagd::ph::dph_forms`).
 //! * `ph_qiq`: the solutions `Q(φ)` of `Q i Q* = c` (`rcagd::ph::preimage::solve_qiq_certified`).
 
-use super::{OpArgs, OpError, OpSpec, ParamSpec};
+use super::{poly_io, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
 use rcagd::ph::analysis::{ph_test, PhAnalysis, PhTest};
 use rcagd::ph::{DphClass, DphTest, HelixTest, PhCurve};
 use rcagd_algebra::quadratic::{sqrt_in_extension, QuadExt};
-use rcagd_algebra::{Poly, Rational};
+use rcagd_algebra::Rational;
 use rcagd_geom::BezierCurve;
 use rcagd_io::quantity::{NamedQuantity, Quantity};
 
@@ -120,14 +120,6 @@ quaternions = [[1, 0, 1, 0], [0, 1, 0, 1]]
     build: build_ph_dph_forms,
 };
 
-fn quat_poly_value(name: &str, doc: &str, x: &[Poly<Q>; 4]) -> NamedQuantity {
-    value(
-        name,
-        doc,
-        Quantity::Vector(x.iter().cloned().map(Quantity::poly_t).collect()),
-    )
-}
-
 fn build_ph_dph_forms(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let coeffs = super::ph::quaternions(args)?;
     let start = <[Q; 3]>::try_from(args.point("start")?)
@@ -142,12 +134,12 @@ fn build_ph_dph_forms(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         value("h", "h of f + i g = h(a + ib)² (4.12)", Quantity::poly_t(forms.h.clone())),
         value("a", "a of (4.12)", Quantity::poly_t(forms.a.clone())),
         value("b", "b of (4.12)", Quantity::poly_t(forms.b.clone())),
-        quat_poly_value("C", "C = −b + a i + a j + b k, components [1, i, j, k]", &forms.c),
-        quat_poly_value("B", "B = A·C, r'×r'' = h·B i B* (Prop. 4.6)", &forms.b_quat),
+        poly_io::polys_value("C", "C = −b + a i + a j + b k, components [1, i, j, k]", &forms.c),
+        poly_io::polys_value("B", "B = A·C, r'×r'' = h·B i B* (Prop. 4.6)", &forms.b_quat),
         value("h_hopf", "h̃ of αβ' − α'β = h̃(ã + ib̃)²", Quantity::poly_t(forms.h_hopf.clone())),
         value("a_hopf", "ã", Quantity::poly_t(forms.a_hopf.clone())),
         value("b_hopf", "b̃", Quantity::poly_t(forms.b_hopf.clone())),
-        quat_poly_value("D", "D = −ã + b̃ i − b̃ j − ã k, (A*A' − A'*A) × i = h̃·D i D* (4.21)", &forms.d),
+        poly_io::polys_value("D", "D = −ã + b̃ i − b̃ j − ã k, (A*A' − A'*A) × i = h̃·D i D* (4.21)", &forms.d),
     ];
     Ok(vec![args
         .object(Geometry::Curve(pc.to_bezier()?), certificates)
@@ -175,9 +167,7 @@ fn quaternion_values(name: &str, doc: &str, a: &[rcagd_algebra::Quaternion<Q>]) 
 
 fn build_ph_preimage(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let (bez, _) = input_curve(args)?;
-    let polys = bez.coordinate_polys();
-    let [_, x, y, z] = <[Poly<Q>; 4]>::try_from(polys)
-        .map_err(|_| OpError::new("the curve must lie in space (x, y, z)"))?;
+    let [x, y, z] = poly_io::space_polys(&bez)?;
     let choice = usize::try_from(args.int("choice")?)
         .map_err(|_| OpError::param("choice", "a choice is 0, 1, …"))?;
     let rec = rcagd::ph::preimage::recover_preimage([x, y, z], choice)?;
@@ -263,13 +253,8 @@ fn input_curve(args: &OpArgs) -> Result<(BezierCurve<Q>, Option<PhCurve<Q>>), Op
                     "each coefficient must be [x_k, y_k, z_k]",
                 ));
             }
-            let coord = |k: usize| Poly::new(rows.iter().map(|r| r[k].clone()).collect());
-            let polys = [
-                Poly::constant(Q::from(1)),
-                coord(0),
-                coord(1),
-                coord(2),
-            ];
+            let [x, y, z] = poly_io::coordinate_polys(&rows);
+            let polys = [poly_io::poly_one(), x, y, z];
             let n = rows.len().saturating_sub(1).max(1);
             Ok((BezierCurve::from_coordinate_polys(&polys, n)?, None))
         }
@@ -479,9 +464,7 @@ fn frenet_values(a: &PhAnalysis<Q>, ts: &[Q]) -> Result<Vec<NamedQuantity>, OpEr
 
 fn build_ph_analyze(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let (bez, preimage) = input_curve(args)?;
-    let polys = bez.coordinate_polys();
-    let [_, x, y, z] = <[Poly<Q>; 4]>::try_from(polys)
-        .map_err(|_| OpError::new("the curve must lie in space (x, y, z)"))?;
+    let [x, y, z] = poly_io::space_polys(&bez)?;
     let test = ph_test([x, y, z])?;
     let mut certificates = test.certify();
     let values = match &test {

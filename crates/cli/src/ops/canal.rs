@@ -8,11 +8,10 @@
 //! field `Q(√d)` the op fails and says which field (the exchange model holds rational
 //! geometry only; `rcagd::canal` builds such surfaces over `Q(√d)` in the library).
 
-use super::{OpArgs, OpError, OpSpec, ParamSpec};
+use super::{poly_io, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
 use num_traits::{One, Zero};
-use rcagd::canal::bipoly::{patch_of, BiPoly};
 use rcagd::canal::blend::PlaneEnd;
 use rcagd::canal::{
     pipe_along_spine, ApproximationPolicy,
@@ -20,13 +19,13 @@ use rcagd::canal::{
     pipe_around_ph_exportable, BlendEnd, BlendSpine, CanalBuild, CanalError, CanalOptions, CanalSpine,
     CanalSurface, Method, Orientation, RationalCanal,
 };
+use rcagd::lines::regulus_patch::RegulusPatchError;
 use rcagd::lines::{common_transversals, CommonTransversals, Line, Regulus};
 use rcagd::ph::{PhCurve, PhError};
 use rcagd::Certified;
 use rcagd_algebra::quaternion::Quaternion;
 use rcagd_algebra::rational::format_rational;
 use rcagd_algebra::{Certificate, QuadExt, Rational, Scalar};
-use rcagd_geom::certify::patch_on_quadric;
 use rcagd_geom::weight_sign::{split_patches_adaptive, SignRule};
 use rcagd_geom::{BezierCurve, BezierPatch};
 
@@ -462,54 +461,12 @@ fn build_regulus(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let (Some(p0), Some(p1)) = (pa.first(), pa.get(1)) else {
         return Err(OpError::param("lines", "the first line needs two points"));
     };
-    let [_, b, c] = reg.lines();
-    let mut q = Vec::new();
-    for p in [p0, p1] {
-        let u = b
-            .join_point(p)
-            .map_err(|e| OpError::param("lines", e.to_string()))?;
-        let x = c
-            .meet_plane(&u)
-            .map_err(|e| OpError::param("lines", e.to_string()))?;
-        q.push(x);
-    }
-    let (w0, w1) = (q[0][0].clone(), q[1][0].clone());
-    if w0.is_zero() || w1.is_zero() || (w0 > Rational::zero()) != (w1 > Rational::zero()) {
-        return Err(OpError::param(
-            "lines",
-            "the transversals through the segment of the first line meet the third line at infinity (choose another segment on the first line)",
-        ));
-    }
-    if w0 < Rational::zero() {
-        for x in &mut q {
-            for v in x.iter_mut() {
-                *v = -v.clone();
-            }
-        }
-    }
-    let net = vec![
-        vec![p0.to_vec(), q[0].to_vec()],
-        vec![p1.to_vec(), q[1].to_vec()],
-    ];
-    let patch = BezierPatch::from_homogeneous(net).map_err(|e| OpError::new(e.to_string()))?;
+    let patch = reg.segment_patch(p0, p1).map_err(|e| match e {
+        RegulusPatchError::Geom(g) => OpError::new(g.to_string()),
+        e => OpError::param("lines", e.to_string()),
+    })?;
     let mut certs: Vec<Certificate> = prefixed("regulus: ", reg.certify()).collect();
-    match reg.quadric() {
-        Ok(qm) => {
-            let rows: Vec<Vec<Rational>> = qm.iter().map(|r| r.to_vec()).collect();
-            match patch_on_quadric(&patch, &rows) {
-                Ok(c) => certs.push(c),
-                Err(e) => certs.push(Certificate::fails("patch on the carrier quadric", e.to_string(), true)),
-            }
-        }
-        Err(e) => certs.push(Certificate::fails("carrier quadric", e.to_string(), true)),
-    }
-    let weights = patch.weights();
-    certs.push(Certificate::decide(
-        "every weight > 0 (no pole on the patch)",
-        weights.iter().all(|w| *w > Rational::zero()),
-        true,
-        || fmt_vec(&weights),
-    ));
+    certs.extend(reg.segment_patch_certificates(&patch));
     Ok(vec![args.object(Geometry::Patch(patch), certs)])
 }
 
@@ -934,39 +891,13 @@ fn build_blend_sphere_plane(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         CanalError::InvalidArgument(_) => OpError::param("plane_normal", e.to_string()),
         other => canal_err(other, "center0", "lambda0"),
     })?;
-    let x: Option<Vec<BiPoly<Rational>>> = blend
-        .surface
-        .x
-        .iter()
-        .map(|b| {
-            let ok = b.all_coeffs().iter().all(|c| QuadExt::to_rational(c).is_some());
-            ok.then(|| b.map_scalar(|c| QuadExt::to_rational(c).unwrap_or_else(Rational::zero)))
-        })
-        .collect();
-    let Some(x) = x else {
-        return Err(OpError::param(
+    let patches = blend.rational_patches().map_err(|e| match e {
+        CanalError::IrrationalSplit { .. } => OpError::param(
             "lambda0",
             "the blend needs a quadratic field Q(√d) (|ṁ|² − ṙ² of the inverted family is no sum of two rational squares); recipes export rational geometry — try other λ₀, λ₁",
-        ));
-    };
-    let nu = x.iter().filter_map(BiPoly::degree_u).max().unwrap_or(0);
-    let (zero, one, m1) = (Rational::zero(), Rational::one(), -Rational::one());
-    let mut patches = Vec::new();
-    let charts_t: Vec<Vec<BiPoly<Rational>>> = if blend.surface.reparametrized.is_some() {
-        let nt = x.iter().filter_map(BiPoly::degree_t).max().unwrap_or(0);
-        vec![
-            x.clone(),
-            x.iter().map(|c| c.transpose().reverse_u(nt).transpose()).collect(),
-        ]
-    } else {
-        vec![x.clone()]
-    };
-    for base in charts_t {
-        let rev: Vec<BiPoly<Rational>> = base.iter().map(|c| c.reverse_u(nu)).collect();
-        for ch in [base, rev] {
-            patches.push(patch_of(&ch, (&zero, &one), (&m1, &one)).map_err(|e| OpError::new(e.to_string()))?);
-        }
-    }
+        ),
+        other => OpError::new(other.to_string()),
+    })?;
     let (patches, wcert) = positive_pieces(patches, Some("lambda0"))?;
     let mut certs = blend.certify();
     certs.push(wcert);
@@ -1019,11 +950,6 @@ domain = ["1/4", 1, -1, 1]
     build: build_canal_normal_field,
 };
 
-/// `Σ c[k] tᵏ` of one coordinate of a list of power-coefficient points.
-fn coordinate_poly(points: &[Vec<Rational>], k: usize) -> rcagd_algebra::Poly<Rational> {
-    rcagd_algebra::Poly::new(points.iter().map(|p| p[k].clone()).collect())
-}
-
 fn build_canal_normal_field(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let spine = args.points("spine")?;
     let normal = args.points("normal")?;
@@ -1049,12 +975,9 @@ fn build_canal_normal_field(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             format!("four numbers [t0, t1, u0, u1], got {}", dom.len()),
         )
     })?;
-    let family = CanalSpine::polynomial(
-        core::array::from_fn(|k| coordinate_poly(&spine, k)),
-        rcagd_algebra::Poly::new(radius),
-    );
-    let n: [rcagd_algebra::Poly<Rational>; 3] = core::array::from_fn(|k| coordinate_poly(&normal, k));
-    let d = rcagd_algebra::Poly::new(den);
+    let family = CanalSpine::polynomial(poly_io::coordinate_polys(&spine), poly_io::poly(radius));
+    let n = poly_io::coordinate_polys(&normal);
+    let d = poly_io::poly(den);
     let built = rcagd::canal::canal_surface_from_normal_field(&family, &n, &d).map_err(|e| {
         let m = e.to_string();
         if m.contains("denominator") {

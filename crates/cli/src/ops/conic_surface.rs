@@ -3,6 +3,7 @@
 //! of conics `X·C(t)·Xᵀ = 0` (sets of tangent planes), parametrized rationally from a
 //! polynomial point found by the complete conic-point engine.
 
+use super::poly_io::{self, polys_value, PolyMatrix4, PolyT};
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::Geometry;
 use crate::value::ParamKind;
@@ -17,7 +18,7 @@ use rcagd::conic_surface::mobius::{mobius_spheres, CanalHypersurface};
 use rcagd::conic_surface::{conic_surface_patch, moved_conic, FamilyInput};
 use rcagd::Certified;
 use rcagd_algebra::conic_point::ConicPoint;
-use rcagd_algebra::{Poly, Rational};
+use rcagd_algebra::Rational;
 use rcagd_io::ndim::NdimMap;
 use rcagd_io::quantity::{NamedQuantity, Quantity};
 
@@ -82,17 +83,8 @@ domain = ["-1/2", "1/2", -1, 1]
 };
 
 /// A `4×4` matrix of polynomials from a net of coefficient lists.
-fn poly_matrix(
-    args: &OpArgs,
-    param: &'static str,
-) -> Result<[[Poly<Q>; 4]; 4], OpError> {
-    let net = args.net(param)?;
-    if net.len() != 4 || net.iter().any(|r| r.len() != 4) {
-        return Err(OpError::param(param, "needs 4 rows of 4 entries"));
-    }
-    Ok(core::array::from_fn(|i| {
-        core::array::from_fn(|j| Poly::new(net[i][j].clone()))
-    }))
+fn poly_matrix(args: &OpArgs, param: &'static str) -> Result<PolyMatrix4, OpError> {
+    poly_io::poly_matrix4(&args.net(param)?, param)
 }
 
 fn build_conic_surface(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpError> {
@@ -208,7 +200,7 @@ fn build_cone_envelope(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpErr
     if g.len() != 4 || g.iter().any(|r| r.len() != 4) {
         return Err(OpError::param("cone", "needs 4 rows of 4 numbers"));
     }
-    let k = Poly::new(args.opt_numbers("scale")?.unwrap_or_else(|| vec![Q::ONE]));
+    let k = poly_io::poly(args.opt_numbers("scale")?.unwrap_or_else(|| vec![Q::ONE]));
     let mut c0: [[Q; 4]; 4] = core::array::from_fn(|i| core::array::from_fn(|j| g[i][j].clone()));
     let last = c0[3][3].clone();
     c0[3][3] = Q::ZERO;
@@ -277,13 +269,13 @@ fn build_canal_via_cones(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpE
     if g.len() != 3 {
         return Err(OpError::param("spine", "needs three rows (x, y, z)"));
     }
-    let m: [Poly<Q>; 3] = core::array::from_fn(|i| Poly::new(g[i].clone()));
-    let rho = Poly::new(args.opt_numbers("radius_squared")?.unwrap_or_default());
+    let m = poly_io::polys_array::<3>(&g);
+    let rho = poly_io::poly(args.opt_numbers("radius_squared")?.unwrap_or_default());
     let d = domain4(args)?;
     let (patches, certs) = canal_via_cones_patches(
         m,
         rho,
-        Poly::constant(Q::ONE),
+        poly_io::poly_one(),
         (d[0].clone(), d[1].clone()),
         (d[2].clone(), d[3].clone()),
     )
@@ -338,24 +330,13 @@ domain = ["-1/2", "1/2", "-1/2", "1/2"]
     build: build_quadric_family,
 };
 
-fn poly_square(args: &OpArgs, param: &'static str) -> Result<Vec<Vec<Poly<Q>>>, OpError> {
+fn poly_square(args: &OpArgs, param: &'static str) -> Result<Vec<Vec<PolyT>>, OpError> {
     let net = args.net(param)?;
     let n = net.len();
     if net.iter().any(|r| r.len() != n) {
         return Err(OpError::param(param, format!("needs {n} rows of {n} entries (a square matrix)")));
     }
-    Ok(net
-        .iter()
-        .map(|r| r.iter().map(|c| Poly::new(c.clone())).collect())
-        .collect())
-}
-
-fn polys_value(name: &str, doc: &str, v: &[Poly<Q>]) -> NamedQuantity {
-    NamedQuantity::new(
-        name,
-        doc,
-        Quantity::Vector(v.iter().cloned().map(Quantity::poly_t).collect()),
-    )
+    Ok(poly_io::poly_rows(&net))
 }
 
 fn build_quadric_family(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpError> {
@@ -423,8 +404,8 @@ domain = [-1, 1, -1, 1]
 };
 
 fn build_conic_point(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpError> {
-    let coeff = |p: &'static str| -> Result<Poly<Q>, OpError> {
-        Ok(Poly::new(args.opt_numbers(p)?.ok_or_else(|| OpError::param(p, "missing"))?))
+    let coeff = |p: &'static str| -> Result<PolyT, OpError> {
+        Ok(poly_io::poly(args.opt_numbers(p)?.ok_or_else(|| OpError::param(p, "missing"))?))
     };
     let coeffs = [coeff("L")?, coeff("M")?, coeff("N")?];
     let d = domain4(args)?;
@@ -449,18 +430,10 @@ fn build_conic_point(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpError
             values.push(NamedQuantity::new("decision", "quadratic_field: no point over Q, one over Q(√d)", text("quadratic_field")));
             values.push(NamedQuantity::new("obstruction", "why there is no point over Q", Quantity::Text(obstruction.to_string())));
             values.push(NamedQuantity::new("radicand", "d: the point has coefficients in Q(√d)", Quantity::Rational(radicand.clone())));
-            let part = |x: &Poly<rcagd_algebra::QuadExt>, b: bool| {
-                Poly::new(x.coeffs().iter().map(|c| if b { c.b().clone() } else { c.a().clone() }).collect())
-            };
-            values.push(NamedQuantity::new(
+            values.push(poly_io::quad_polys_parts_value(
                 "point",
                 "(X, Y, Z)(t) over Q(√d): each coordinate as [a(t), b(t)] with a + b·√d",
-                Quantity::Vector(
-                    point
-                        .iter()
-                        .map(|x| Quantity::Vector(vec![Quantity::poly_t(part(x, false)), Quantity::poly_t(part(x, true))]))
-                        .collect(),
-                ),
+                point,
             ));
         }
         ConicPoint::NoPoint { obstruction, reduced } => {
@@ -501,16 +474,16 @@ domain = [-1, 1, "-1/2", "1/2"]
 };
 
 fn build_canal_hypersurface(args: &OpArgs) -> Result<Vec<crate::model::Object>, OpError> {
-    let rows = |p: &'static str| -> Result<Option<Vec<Poly<Q>>>, OpError> {
-        Ok(args.opt_grid(p)?.map(|g| g.iter().map(|r| Poly::new(r.clone())).collect()))
+    let rows = |p: &'static str| -> Result<Option<Vec<PolyT>>, OpError> {
+        Ok(args.opt_grid(p)?.map(|g| poly_io::polys(&g)))
     };
     let (m, rho, w, param) = match (rows("spine")?, rows("mobius_curve")?) {
         (Some(m), None) => {
-            let rho = Poly::new(
+            let rho = poly_io::poly(
                 args.opt_numbers("radius_squared")?
                     .ok_or_else(|| OpError::param("radius_squared", "missing (needed with `spine`)"))?,
             );
-            (m, rho, Poly::constant(Q::ONE), "spine")
+            (m, rho, poly_io::poly_one(), "spine")
         }
         (None, Some(c)) => {
             let (m, r, w) = mobius_spheres(&c).map_err(|e| OpError::param("mobius_curve", e.to_string()))?;

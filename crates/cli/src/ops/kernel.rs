@@ -353,30 +353,12 @@ pub(super) fn homogeneous_points(
 /// ([`rcagd_geom::weight_sign::split_patches_adaptive`]); otherwise an input error on
 /// `param`.
 fn patch_pole_certificate(patch: &BezierPatch<Rational>, param: &'static str) -> Result<Certificate, OpError> {
-    use rcagd_geom::weight_sign::{patch_has_one_sign, split_patches_adaptive, SignRule};
-    if patch_has_one_sign(patch) {
-        return Ok(Certificate::decide(
-            "the weights wᵢⱼ all have one sign (Σ wᵢⱼ Bᵢ Bⱼ ≠ 0 on [0, 1]²: no pole)",
-            true,
-            true,
-            String::new,
-        ));
-    }
-    match split_patches_adaptive(vec![patch.clone()], SignRule::OneSign, (5, 5)) {
-        Ok(split) if split.failed == 0 => Ok(Certificate::decide(
-            format!(
-                "weights of mixed sign, but each of {} subpatches (exact bisections) has weights of one sign: Σ wᵢⱼ Bᵢ Bⱼ ≠ 0 on [0, 1]² (no pole)",
-                split.pieces.len()
-            ),
-            true,
-            true,
-            String::new,
-        )),
-        _ => Err(OpError::param(
+    rcagd_geom::weight_sign::patch_pole_free(patch).ok_or_else(|| {
+        OpError::param(
             param,
             "weights of mixed sign whose weight function Σ wᵢⱼ Bᵢ Bⱼ could not be shown to be non-zero on [0, 1]² (5 bisections per direction): the patch passes through or near points at infinity",
-        )),
-    }
+        )
+    })
 }
 
 /// The inline curve of the `points` / `weights` / `homogeneous` parameters.

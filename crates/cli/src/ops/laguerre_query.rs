@@ -8,6 +8,7 @@
 //! * `laguerre_pe_sphere`: the cyclographic image of a pe sphere `π ∩ Γ(a)` of `R^{3,1}`.
 
 use super::quadric::{exportable_patch, target, COEFFICIENTS, MATRIX, QUADRIC, RATIONAL_POINT};
+use super::poly_io::{self, MPolyQ};
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
@@ -19,8 +20,6 @@ use rcagd::laguerre::query::{
 use rcagd::laguerre::{Cycle, IsotropicSphere, LaguerreMap, OrientedPlane};
 use rcagd::quadric::patch_image;
 use rcagd::Certified;
-use rcagd_algebra::mpoly::MPoly;
-use rcagd_algebra::rational::format_rational;
 use rcagd_algebra::{Certificate, Rational};
 use rcagd_geom::BezierPatch;
 use rcagd_io::quantity::{NamedQuantity, Quantity};
@@ -112,52 +111,13 @@ fn arr<const N: usize>(v: &[Q], param: &'static str, what: &str) -> Result<[Q; N
 
 /// A square piece `[−1, 1]²` of the plane around the foot point `−e0 n`.
 fn plane_square(e: &OrientedPlane<Q>) -> Result<BezierPatch<Q>, OpError> {
-    let n = &e.n;
-    let k = (0..3)
-        .min_by_key(|&i| n[i].abs())
-        .unwrap_or(0);
-    let mut ek = [Q::zero(), Q::zero(), Q::zero()];
-    ek[k] = Q::one();
-    let cross = |a: &[Q; 3], b: &[Q; 3]| -> [Q; 3] {
-        [
-            a[1].clone() * b[2].clone() - a[2].clone() * b[1].clone(),
-            a[2].clone() * b[0].clone() - a[0].clone() * b[2].clone(),
-            a[0].clone() * b[1].clone() - a[1].clone() * b[0].clone(),
-        ]
-    };
-    let u = cross(n, &ek);
-    let v = cross(n, &u);
-    let f: [Q; 3] = core::array::from_fn(|i| -e.e0.clone() * n[i].clone());
-    let pt = |a: i64, b: i64| -> Vec<Q> {
-        let mut p = vec![Q::one()];
-        p.extend((0..3).map(|i| f[i].clone() + Q::from(a) * u[i].clone() + Q::from(b) * v[i].clone()));
-        p
-    };
-    Ok(BezierPatch::from_homogeneous(vec![
-        vec![pt(-1, -1), pt(-1, 1)],
-        vec![pt(1, -1), pt(1, 1)],
-    ])?)
+    Ok(e.square_patch()?)
 }
 
 /// The isotropic sphere `y3 = α S + β·y + γ` over `[−1, 1]²` as a polynomial patch of
 /// bidegree (2, 2).
 fn isotropic_patch(s: &IsotropicSphere<Q>) -> Result<BezierPatch<Q>, OpError> {
-    // Bernstein coefficients of y1 on [−1, 1] in degree 2: −1, 0, 1; of y1²: 1, −1, 1.
-    let lin = [Q::from(-1), Q::zero(), Q::one()];
-    let sq = [Q::one(), Q::from(-1), Q::one()];
-    let mut net = Vec::new();
-    for i in 0..3 {
-        let mut row = Vec::new();
-        for j in 0..3 {
-            let z = s.alpha.clone() * (sq[i].clone() + sq[j].clone())
-                + s.beta[0].clone() * lin[i].clone()
-                + s.beta[1].clone() * lin[j].clone()
-                + s.gamma.clone();
-            row.push(vec![Q::one(), lin[i].clone(), lin[j].clone(), z]);
-        }
-        net.push(row);
-    }
-    Ok(BezierPatch::from_homogeneous(net)?)
+    Ok(s.square_patch()?)
 }
 
 fn cycle_geometry(c: &Cycle<Q>) -> Result<Geometry, OpError> {
@@ -246,35 +206,8 @@ fn build_models(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     Ok(out)
 }
 
-/// `c·y1^a·y2^b + …` (highest exponents first).
-fn format_mpoly(p: &MPoly<Q>) -> String {
-    let mut terms: Vec<(Vec<u32>, Q)> = p.terms().map(|(e, c)| (e.to_vec(), c.clone())).collect();
-    if terms.is_empty() {
-        return "0".into();
-    }
-    terms.sort_by(|a, b| b.0.cmp(&a.0));
-    terms
-        .iter()
-        .map(|(e, c)| {
-            let mono: Vec<String> = e
-                .iter()
-                .enumerate()
-                .filter(|(_, &d)| d > 0)
-                .map(|(i, &d)| if d == 1 { format!("y{}", i + 1) } else { format!("y{}^{d}", i + 1) })
-                .collect();
-            match (mono.is_empty(), c.is_one()) {
-                (true, _) => format_rational(c),
-                (false, true) => mono.join("·"),
-                (false, false) => format!("{}·{}", format_rational(c), mono.join("·")),
-            }
-        })
-        .collect::<Vec<_>>()
-        .join(" + ")
-        .replace("+ -", "− ")
-}
-
-fn mpoly_value(name: &str, doc: &str, p: &MPoly<Q>) -> NamedQuantity {
-    value(name, doc, Quantity::Text(format_mpoly(p)))
+fn mpoly_value(name: &str, doc: &str, p: &MPolyQ) -> NamedQuantity {
+    value(name, doc, Quantity::Text(poly_io::format_mpoly(p)))
 }
 
 fn build_isotropic_quadric(args: &OpArgs) -> Result<Vec<Object>, OpError> {

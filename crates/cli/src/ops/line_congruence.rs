@@ -2,6 +2,7 @@
 //! ruled strips (`rcagd::lines::congruence_strips`; D. Gruber, "Rationale
 //! Parametrisierungen von Kugelhüllflächen", 2008, §1.1.6–1.1.8).
 
+use super::poly_io::{self, MPolyQ};
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
@@ -9,7 +10,6 @@ use rcagd::lines::{
     congruence_strips, point_family_patches, CongruenceSpec, NetKind, ParametrizedCongruence,
     PointRow,
 };
-use rcagd_algebra::mpoly::MPoly;
 use rcagd_algebra::Rational;
 use rcagd_io::quantity::{NamedQuantity, Quantity};
 
@@ -197,17 +197,12 @@ domain = ["1/4", 1, 0, "1/2"]
 };
 
 /// `Σ net[i][j] uⁱ vʲ` per homogeneous coordinate.
-fn net_point(param: &'static str, net: &[Vec<Vec<Rational>>]) -> Result<[MPoly<Rational>; 4], OpError> {
-    let mut out: [MPoly<Rational>; 4] = core::array::from_fn(|_| MPoly::zero(2));
-    for (i, row) in net.iter().enumerate() {
-        for (j, pt) in row.iter().enumerate() {
-            let c = four(param, pt)?;
-            for (o, x) in out.iter_mut().zip(c) {
-                *o = &*o + &MPoly::monomial(2, &[i as u32, j as u32], x);
-            }
-        }
-    }
-    Ok(out)
+fn net_point(param: &'static str, net: &[Vec<Vec<Rational>>]) -> Result<[MPolyQ; 4], OpError> {
+    let net4 = net
+        .iter()
+        .map(|row| row.iter().map(|pt| four(param, pt)).collect::<Result<Vec<_>, _>>())
+        .collect::<Result<Vec<_>, _>>()?;
+    poly_io::net_mpolys4(&net4)
 }
 
 fn build_parametrized(args: &OpArgs) -> Result<Vec<Object>, OpError> {

@@ -43,6 +43,7 @@ topics!(
 );
 
 pub mod describe;
+pub mod poly_io;
 
 /// What the size of a parameter asks of the construction: the limit it is checked
 /// against before the op starts ([`crate::limits::check_params`]). Every list parameter

@@ -8,6 +8,7 @@
 //! running over `domain` and the others fixed at `slice`, projected orthogonally onto the
 //! coordinates `project` — an ordinary rational Bézier patch of `R³`.
 
+use super::poly_io::{self, MPolyQ};
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
@@ -15,10 +16,8 @@ use rcagd::ndim::ruled::RuledKind;
 use rcagd::ndim::{Anticaustic, HyperconeEnvelope, NdimError, PnHypersurface, RuledManifold};
 use rcagd::pn::{Domain, RatFn};
 use rcagd::Certified;
-use rcagd_algebra::mpoly::MPoly;
 use rcagd_algebra::rational::format_rational;
 use rcagd_algebra::Rational;
-use rcagd_io::ndim::NdimMap;
 use rcagd_io::quantity::{NamedQuantity, Quantity};
 
 type Q = Rational;
@@ -106,14 +105,7 @@ fn picture(
     Ok((f, fixed, p, dom))
 }
 
-fn map_value(names: Vec<String>, coords: &[MPoly<Q>], what: &str) -> Result<NamedQuantity, OpError> {
-    let map = NdimMap::new(names, coords.to_vec()).map_err(|e| OpError::new(e.to_string()))?;
-    Ok(NamedQuantity::new(
-        "homogeneous_map",
-        format!("{what}: exact homogeneous coordinates (X₀, X₁, …, Xₙ), each a list of terms [c, e₁, …] of c·∏ parameterᵢ^eᵢ"),
-        map.quantity(),
-    ))
-}
+use poly_io::map_value;
 
 // ---------------------------------------------------------------------------------
 // PN hypersurfaces (5.4)
@@ -160,24 +152,7 @@ distances = ["1/4"]
     build: build_hypersurface,
 };
 
-fn terms_poly(rows: &[Vec<Q>], nvars: usize, param: &'static str) -> Result<MPoly<Q>, OpError> {
-    let mut p = MPoly::zero(nvars);
-    for r in rows {
-        if r.len() != nvars + 1 {
-            return Err(OpError::param(
-                param,
-                format!("each term is [c, e₁, …, e_{nvars}] ({} entries), got {}", nvars + 1, r.len()),
-            ));
-        }
-        let e: Vec<u32> = r[1..]
-            .iter()
-            .map(|x| x.to_string().parse::<u32>())
-            .collect::<Result<_, _>>()
-            .map_err(|_| OpError::param(param, "exponents must be non-negative integers"))?;
-        p = &p + &MPoly::monomial(nvars, &e, r[0].clone());
-    }
-    Ok(p)
-}
+use poly_io::terms_mpoly as terms_poly;
 
 fn build_hypersurface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let n = dimension(args)?;
@@ -185,20 +160,22 @@ fn build_hypersurface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let num = terms_poly(&args.points("support")?, p, "support")?;
     let den = match args.get("support_denominator") {
         Some(_) => terms_poly(&args.points("support_denominator")?, p, "support_denominator")?,
-        None => MPoly::constant(p, Q::ONE),
+        None => poly_io::mpoly_constant(p, Q::ONE),
     };
     let h = RatFn::new(num, den).map_err(|e| OpError::param("support_denominator", e.to_string()))?;
-    let mut a: Vec<MPoly<Q>> = (0..p).map(|i| MPoly::var(p, i)).collect();
-    if args.get("a").is_some() {
-        a = vec![MPoly::zero(p); p];
+    let a = if args.get("a").is_some() {
+        let mut terms = Vec::new();
         for r in args.points("a")? {
             let i = r.first().map_or(Ok(0), |x| index(x, p, "a"))?;
-            a[i] = &a[i] + &terms_poly(&[r[1..].to_vec()], p, "a")?;
+            terms.push((i, r.get(1..).unwrap_or_default().to_vec()));
         }
-    }
+        poly_io::indexed_terms_mpolys(&terms, p, p, "a")?
+    } else {
+        (0..p).map(|i| poly_io::mpoly_var(p, i)).collect()
+    };
     let c = match args.get("c") {
         Some(_) => terms_poly(&args.points("c")?, p, "c")?,
-        None => MPoly::constant(p, Q::ONE),
+        None => poly_io::mpoly_constant(p, Q::ONE),
     };
     let surface = PnHypersurface::from_support(&a, &c, &h).map_err(blame("support"))?;
     let names: Vec<String> = (1..=p).map(|i| format!("u{i}")).collect();
@@ -270,10 +247,10 @@ domain = ["1/4", "3/4", "1/4", "3/4"]
 };
 
 fn build_hypercone(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let m1 = polys_t(&args.opt_grid("center1")?.unwrap_or_default());
-    let m2 = polys_t(&args.opt_grid("center2")?.unwrap_or_default());
-    let r1 = polys_t(&[args.opt_numbers("radius1")?.unwrap_or_default()]).remove(0);
-    let r2 = polys_t(&[args.opt_numbers("radius2")?.unwrap_or_default()]).remove(0);
+    let m1 = polys_t(&args.opt_grid("center1")?.unwrap_or_default())?;
+    let m2 = polys_t(&args.opt_grid("center2")?.unwrap_or_default())?;
+    let r1 = poly_io::list_mpoly(&args.opt_numbers("radius1")?.unwrap_or_default(), 1)?;
+    let r2 = poly_io::list_mpoly(&args.opt_numbers("radius2")?.unwrap_or_default(), 1)?;
     let env = HyperconeEnvelope::new(m1, r1, m2, r2, None).map_err(blame("center2"))?;
     let n = env.surface().dim();
     let mut names = vec!["t".to_string()];
@@ -324,15 +301,16 @@ fn build_anticaustic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         .ok()
         .filter(|k| (1..n).contains(k))
         .ok_or_else(|| OpError::param("mirror_dimension", format!("k must be 1 to {}", n - 1)))?;
-    let mut mirror = vec![MPoly::zero(k); n + 1];
+    let mut terms = Vec::new();
     for r in args.points("mirror")? {
         let i = r
             .first()
             .and_then(|x| x.to_string().parse::<usize>().ok())
             .filter(|&i| i <= n)
             .ok_or_else(|| OpError::param("mirror", format!("the first entry of a term is the coordinate 0 … {n}")))?;
-        mirror[i] = &mirror[i] + &terms_poly(&[r[1..].to_vec()], k, "mirror")?;
+        terms.push((i, r.get(1..).unwrap_or_default().to_vec()));
     }
+    let mirror = poly_io::indexed_terms_mpolys(&terms, n + 1, k, "mirror")?;
     let c = args.opt_number("c")?.unwrap_or(Q::ZERO);
     let ac = Anticaustic::new(mirror, k, c).map_err(blame("mirror"))?;
     let mut names: Vec<String> = (1..=k).map(|i| format!("u{i}")).collect();
@@ -392,30 +370,24 @@ fn dimension(args: &OpArgs) -> Result<usize, OpError> {
         .ok_or_else(|| OpError::param("dimension", "n must be 3 to 6"))
 }
 
-fn polys_t(rows: &[Vec<Q>]) -> Vec<MPoly<Q>> {
-    rows.iter()
-        .map(|r| {
-            r.iter().enumerate().fold(MPoly::zero(1), |acc, (i, c)| {
-                &acc + &MPoly::monomial(1, &[i as u32], c.clone())
-            })
-        })
-        .collect()
+fn polys_t(rows: &[Vec<Q>]) -> Result<Vec<MPolyQ>, OpError> {
+    poly_io::list_mpolys(rows)
 }
 
 fn build_ruled_offset(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let l = polys_t(&args.opt_grid("directrix")?.unwrap_or_default());
+    let l = polys_t(&args.opt_grid("directrix")?.unwrap_or_default())?;
     let n = l.len();
-    let g = polys_t(&args.opt_grid("generators")?.unwrap_or_default());
+    let g = polys_t(&args.opt_grid("generators")?.unwrap_or_default())?;
     if n < 3 || g.is_empty() || !g.len().is_multiple_of(n) {
         return Err(OpError::param(
             "generators",
             format!("give k·n rows (n = {n} directrix rows), got {}", g.len()),
         ));
     }
-    let gens: Vec<Vec<MPoly<Q>>> = g.chunks(n).map(<[MPoly<Q>]>::to_vec).collect();
+    let gens: Vec<Vec<MPolyQ>> = g.chunks(n).map(<[MPolyQ]>::to_vec).collect();
     let w = match args.opt_numbers("directrix_denominator")? {
-        Some(c) => polys_t(&[c]).remove(0),
-        None => MPoly::constant(1, Q::ONE),
+        Some(c) => poly_io::list_mpoly(&c, 1)?,
+        None => poly_io::mpoly_constant(1, Q::ONE),
     };
     let k = gens.len();
     let manifold = RuledManifold::new(l, w, gens).map_err(blame("generators"))?;

@@ -10,25 +10,25 @@
 //! arc-length-uniform parameters). Each extra object holds the curve itself as its
 //! first piece, so that its picture shows the curve with the frame, comb or marks.
 
-use super::{OpArgs, OpError, OpSpec, ParamSpec};
+use super::{poly_io, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
 use num_traits::{One, Zero};
 use rcagd::ph::dph::{certify_dph_septic, dph_septic, dph_septic_z_roots};
 use rcagd::ph::hermite_enclosure::EnclosedInterpolant;
-use rcagd::ph::PhError;
+
 use rcagd::ph::{
     DphTest, HelixTest, HermiteData, HermiteInterpolant, HermiteSolution, LineCircle, PhCurve,
     PhPolyCurve,
 };
 use rcagd_algebra::quadratic::QuadExt;
-use rcagd_algebra::roots::RootInterval;
+use super::poly_io::RootInterval;
 use rcagd_io::quantity::{NamedQuantity, Quantity};
 use rcagd_algebra::complex::Complex;
 use rcagd_algebra::quaternion::Quaternion;
 use rcagd_algebra::interval::pow2;
-use rcagd_algebra::rational::{format_rational, round_decimal};
-use rcagd_algebra::{Certificate, Poly, Rational, Scalar};
+use rcagd_algebra::rational::round_decimal;
+use rcagd_algebra::{Certificate, Rational, Scalar};
 use rcagd_geom::BezierCurve;
 
 /// The ops of this topic.
@@ -304,14 +304,6 @@ fn numbers(args: &OpArgs, param: &'static str) -> Result<Vec<Q>, OpError> {
     })
 }
 
-/// Prefixes every certificate's property with `prefix`.
-fn prefixed(prefix: &str, certs: Vec<Certificate>) -> impl Iterator<Item = Certificate> + '_ {
-    certs.into_iter().map(move |mut c| {
-        c.property = format!("{prefix}{}", c.property);
-        c
-    })
-}
-
 fn segment(a: &[Q; 3], b: &[Q; 3]) -> Result<BezierCurve<Q>, OpError> {
     Ok(BezierCurve::from_points(&[a.to_vec(), b.to_vec()])?)
 }
@@ -322,10 +314,6 @@ fn add(a: &[Q; 3], b: &[Q; 3]) -> [Q; 3] {
 
 fn scale(a: &[Q; 3], s: &Q) -> [Q; 3] {
     [&a[0] * s, &a[1] * s, &a[2] * s]
-}
-
-fn eval3(p: &[Poly<Q>; 3], t: &Q) -> [Q; 3] {
-    [p[0].eval(t), p[1].eval(t), p[2].eval(t)]
 }
 
 fn to_q(x: f64) -> Result<Q, OpError> {
@@ -443,13 +431,7 @@ fn frenet_object(
     };
     let frame = pc.frenet_frame(&dph);
     let len = args.number("frame_length")?;
-    let root_c = rcagd_algebra::roots::rational_roots(&Poly::new(vec![
-        -frame.radicand().clone(),
-        Q::zero(),
-        Q::one(),
-    ]))
-    .into_iter()
-    .find(|r| *r > Q::zero());
+    let root_c = rcagd_algebra::sqrt_in_field(frame.radicand()).filter(|r| *r > Q::zero());
     let mut segs = vec![bez.clone()];
     for t in ts {
         let Some((tt, pt, bt)) = frame.eval_scaled(t) else {
@@ -495,17 +477,10 @@ fn comb_object(
     ts: &[Q],
     bez: &BezierCurve<Q>,
 ) -> Result<Object, OpError> {
-    let (num, den) = pc.curvature_vector();
     let k = -args.number("comb_scale")?;
     let mut teeth = vec![bez.clone()];
     let mut tips: Vec<[Q; 3]> = Vec::new();
-    for t in ts {
-        let d = den.eval(t);
-        if d.is_zero() {
-            continue;
-        }
-        let p = pc.eval(t);
-        let tip = add(&p, &scale(&eval3(&num, t), &(k.clone() / d)));
+    for (p, tip) in pc.curvature_comb(ts, &k) {
         teeth.push(segment(&p, &tip)?);
         tips.push(tip);
     }
@@ -534,40 +509,18 @@ fn feed_object(
     }
     let n = usize::try_from(feed).map_err(|_| OpError::param("feed", "feed must be ≥ 0"))?;
     let tol = Q::one() / Q::from(1i64 << 40);
-    let ts = pc.constant_feed_parameters(n, &tol)?;
-    let s = pc.arc_length_poly();
-    let total = pc.arc_length();
+    let fm = curve.constant_feed_marks(n, &tol)?;
     let frame = curve.euler_rodrigues_frame();
     let half = args.number("frame_length")? / qi(4);
-    // |s(t) − s*| ≤ max σ · |t − t*| ≤ (max Bernstein coefficient of σ)·tol
-    let smax = curve
-        .speed_bernstein()
-        .into_iter()
-        .fold(Q::zero(), |a, b| if b > a { b } else { a });
-    let bound = smax * tol;
     let mut marks = vec![bez.clone()];
-    let mut worst = Q::zero();
-    for (k, t) in ts.iter().enumerate() {
-        let target = total.clone() * Q::from(k as i64) / Q::from(feed);
-        let err = (s.eval(t) - target).abs();
-        if err > worst {
-            worst = err;
-        }
+    for t in &fm.parameters {
         let p = pc.eval(t);
         let Some(e) = frame.eval(t) else { continue };
         let off = scale(&e[1], &half);
         let a = add(&p, &scale(&off, &-Q::one()));
         marks.push(segment(&a, &add(&p, &off))?);
     }
-    let certs = vec![Certificate::decide(
-        format!(
-            "|s(t_k) − k·S/{feed}| ≤ max σ · 2⁻⁴⁰ for every mark (constant feed, S = {})",
-            format_rational(&total)
-        ),
-        worst <= bound,
-        true,
-        || format!("worst |s(t_k) − k·S/N| = {}", format_rational(&worst)),
-    )];
+    let certs = vec![fm.certificate("2⁻⁴⁰")];
     Ok(named(
         args,
         format!("{name}_feed"),
@@ -695,91 +648,18 @@ fn build_ph_hermite(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let sol = data.solve_exact()?;
     // every interpolant enclosed from the exact root: control points to 2⁻⁸⁰, the bending
     // energy to 2⁻⁴⁰ relative (None where σ cannot be proven positive: the energy diverges)
-    let (tp, te) = (pow2(-80), pow2(-40));
-    let encs: Vec<Result<EnclosedInterpolant, PhError>> =
-        (0..sol.interpolants.len()).map(|i| sol.enclose(i, &tp, &te)).collect();
-    let energy = |i: usize| match &encs[i] {
-        Ok(e) => e.bending_energy.to_f64(),
-        Err(_) => sol.interpolants[i].bending_energy,
-    };
-    let mut order: Vec<usize> = (0..sol.interpolants.len()).collect();
-    order.sort_by(|a, b| energy(*a).total_cmp(&energy(*b)));
-    let count = order.len();
-    let energies: Vec<f64> = order.iter().map(|i| energy(*i)).collect();
-    let mut out = Vec::with_capacity(count);
-    for (k, idx) in order.into_iter().enumerate() {
-        let s = &sol.interpolants[idx];
-        let enc = encs[idx].as_ref();
-        let exact = s.exact_control_points.is_some();
-        let pts: Vec<Vec<Q>> = match (&s.exact_control_points, enc) {
-            (Some(p), _) => p.iter().map(|v| v.to_vec()).collect(),
-            (None, Ok(e)) => e
-                .control_points_f64()
-                .iter()
-                .map(|v| v.iter().map(|x| to_q(*x)).collect::<Result<Vec<_>, _>>())
-                .collect::<Result<Vec<_>, _>>()?,
-            (None, Err(_)) => s
-                .curve
-                .control_points()
-                .iter()
-                .map(|v| v.iter().map(|x| to_q(*x)).collect::<Result<Vec<_>, _>>())
-                .collect::<Result<Vec<_>, _>>()?,
-        };
-        let mut certs = Vec::new();
-        let last = pts.len().saturating_sub(1);
-        let (Some(p0), Some(p1), Some(p4), Some(p5)) = (
-            pts.first(),
-            pts.get(1),
-            pts.get(last.saturating_sub(1)),
-            pts.get(last),
-        ) else {
-            return Err(OpError::new("internal error: an interpolant without control points"));
-        };
-        let five = qi(5);
-        let close = |a: &[Q], b: &[Q]| -> (bool, f64) {
-            let d = a
-                .iter()
-                .zip(b)
-                .map(|(x, y)| Scalar::to_f64(&(x - y).abs()))
-                .fold(0.0, f64::max);
-            (if exact { d == 0.0 } else { d <= 1e-9 * (1.0 + b.iter().map(|x| Scalar::to_f64(&x.abs())).fold(0.0, f64::max)) }, d)
-        };
-        let ds: Vec<Q> = p1.iter().zip(p0).map(|(a, b)| (a - b) * &five).collect();
-        let df: Vec<Q> = p5.iter().zip(p4).map(|(a, b)| (a - b) * &five).collect();
-        for (prop, a, b) in [
-            ("r(0) = p_s", p0.as_slice(), data.p_s.as_slice()),
-            ("r(1) = p_f", p5.as_slice(), data.p_f.as_slice()),
-            ("r'(0) = 5(p_1 − p_0) = d_s", ds.as_slice(), data.d_s.as_slice()),
-            ("r'(1) = 5(p_5 − p_4) = d_f", df.as_slice(), data.d_f.as_slice()),
-        ] {
-            let (ok, d) = close(a, b);
-            certs.push(Certificate::decide(prop, ok, exact, || {
-                format!("max deviation {d:e}")
-            }));
-        }
-        certs.extend(prefixed("f64 quaternion form: ", s.curve.certify()));
-        certs.extend(prefixed(
-            "f64 quaternion form: ",
-            s.curve.to_poly_curve().certify_helix_test(&s.helix),
-        ));
-        if let Ok(e) = enc {
-            certs.extend(e.certify());
-        }
-        let e = energy(idx);
-        let least = energies.iter().all(|x| e <= *x * (1.0 + 1e-9));
-        certs.push(Certificate::decide(
-            format!(
-                "bending energy E = ∫κ²σ dt = {e:.9} (rank {} of {count}; k0 = {:.7}, k2 = {:.7}, φ = {:.7}){}",
-                k + 1,
-                s.k0,
-                s.k2,
-                s.phi,
-                if s.least_energy { ": the least of all interpolants" } else { "" }
-            ),
-            e.is_finite() && (least == s.least_energy),
-            false,
-            || format!("energies of all interpolants: {energies:?}"),
-        ));
+    let ranked = sol.ranked_interpolants(&data, &pow2(-80), &pow2(-40))?;
+    let mut out = Vec::with_capacity(ranked.len());
+    for r in ranked {
+        let k = r.rank - 1;
+        let s = sol
+            .interpolants
+            .get(r.index)
+            .ok_or_else(|| OpError::new("internal error: a ranked interpolant out of range"))?;
+        let enc = r.enclosure.as_ref();
+        let exact = r.exact;
+        let pts = r.control_points;
+        let certs = r.certificates;
         let bez = BezierCurve::from_points(&pts)?;
         let name = match (k, s.least_energy) {
             (0, _) => args.name().to_string(),
@@ -809,29 +689,10 @@ fn build_ph_hermite(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     Ok(out)
 }
 
-/// A polynomial over `Q(√d)` as a value: a rational polynomial in `var` when it is one,
-/// else the vector of its power coefficients.
-fn quad_poly_value(p: &Poly<QuadExt>, var: &str) -> Quantity {
-    if p.coeffs().iter().all(|c| c.b().is_zero()) {
-        Quantity::Polynomial {
-            variable: var.into(),
-            poly: p.map(|c| c.a().clone()),
-        }
-    } else {
-        Quantity::Vector(p.coeffs().iter().cloned().map(Quantity::Quadratic).collect())
-    }
-}
-
 /// The values of the whole Hermite problem (on the least-energy object): the elimination
 /// quartic, its real roots (exact, or with an exact isolating interval), counts.
 fn hermite_problem_values(sol: &HermiteSolution<QuadExt>) -> Vec<NamedQuantity> {
-    let rational_quartic = sol
-        .quartic
-        .coeffs()
-        .iter()
-        .map(QuadExt::to_rational)
-        .collect::<Option<Vec<Q>>>()
-        .map(Poly::new);
+    let rational_quartic = poly_io::rational_poly(&sol.quartic);
     let roots: Vec<Quantity> = sol
         .roots
         .iter()
@@ -852,7 +713,7 @@ fn hermite_problem_values(sol: &HermiteSolution<QuadExt>) -> Vec<NamedQuantity> 
         NamedQuantity::new(
             "elimination_quartic",
             "Q(s), s = r₁ = 16k₀²: Besednjak (9.22) and (9.26) eliminated in r₁ instead of ξ = tan(φ/2); its real roots give the interpolants",
-            quad_poly_value(&sol.quartic, "s"),
+            poly_io::quad_poly_value(&sol.quartic, "s"),
         ),
         NamedQuantity::new(
             "quartic_roots",

@@ -15,6 +15,7 @@ use rcagd::ph::{
     PlanarPhCurve, SpatialHermiteData, SpatialHermiteQuintic, SpatialHermiteResult, SplineEnds,
 };
 use rcagd::ph::hermite_values::{planar_hermite_branches, PlanarHermiteBranch};
+use rcagd::ph::PhError;
 use rcagd_algebra::{Certificate, Complex, Quaternion, Rational, Scalar};
 use rcagd_io::quantity::{NamedQuantity, Quantity};
 
@@ -227,39 +228,10 @@ fn rat(x: f64) -> Result<Rational, OpError> {
 
 /// An f64 planar interpolant as the exact PH curve of its rounded preimage.
 fn round_planar(c: &PlanarPhCurve<f64>, p0: &[Rational; 2]) -> Result<PlanarPhCurve<Rational>, OpError> {
-    let w = c
-        .preimage_coefficients()
-        .iter()
-        .map(|z| Ok(Complex::new(rat(z.re)?, rat(z.im)?)))
-        .collect::<Result<Vec<_>, OpError>>()?;
-    Ok(PlanarPhCurve::new(w, p0.clone())?)
-}
-
-/// Hermite conditions of an exact curve checked to a tolerance (the rounded case).
-fn planar_residual_cert(c: &PlanarPhCurve<Rational>, d: &PlanarHermiteData<Rational>) -> Certificate {
-    let z = Rational::from(0);
-    let o = Rational::from(1);
-    let pairs = [
-        (c.eval(&z), &d.p0),
-        (c.derivative_at(&z), &d.d0),
-        (c.eval(&o), &d.p1),
-        (c.derivative_at(&o), &d.d1),
-    ];
-    let mut res = 0.0_f64;
-    let mut scale = 1.0_f64;
-    for (a, b) in &pairs {
-        for k in 0..2 {
-            res = res.max(Scalar::to_f64(&(a[k].clone() - b[k].clone())).abs());
-            scale = scale.max(Scalar::to_f64(&b[k]).abs());
-        }
-    }
-    let tol = 1e-9 * scale;
-    Certificate::decide(
-        format!("Hermite conditions r(0) = p0, r'(0) = d0, r(1) = p1, r'(1) = d1 to {tol:e} (preimage rounded from f64)"),
-        res <= tol,
-        false,
-        || format!("{res:e}"),
-    )
+    c.rounded(p0).map_err(|e| match e {
+        PhError::OutOfRange(m) => OpError::new(m),
+        e => e.into(),
+    })
 }
 
 fn build_hermite(args: &OpArgs) -> Result<Vec<Object>, OpError> {
@@ -302,7 +274,7 @@ fn build_hermite(args: &OpArgs) -> Result<Vec<Object>, OpError> {
                 let tag = tag(k, c);
                 let exact = round_planar(&c.curve, &data.p0)?;
                 certs.extend(prefixed(&tag, exact.certify()));
-                certs.push(planar_residual_cert(&exact, &data));
+                certs.push(exact.rounded_hermite_certificate(&data));
                 curves.push(exact.to_bezier()?);
             }
             let branches = planar_hermite_branches(&s);

@@ -11,6 +11,7 @@
 //! principal radius of curvature somewhere on the rectangle is an error on `distances`
 //! that names the parameter point.
 
+use super::poly_io::{self, MPolyQ};
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::{ParamKind, Value};
@@ -29,7 +30,6 @@ use rcagd::pn::support::{anticaustic, anticaustic_certificates, from_support_fun
 use rcagd::pn::two_sheet::TwoSheetPn;
 use rcagd::pn::{Domain, IsotropicSurface, PnError, PnSurface, RatFn};
 use rcagd::Certified;
-use rcagd_algebra::mpoly::MPoly;
 use rcagd_algebra::rational::format_rational;
 use rcagd_algebra::{Certificate, Rational};
 use rcagd_io::quantity::{NamedQuantity, Quantity};
@@ -98,32 +98,11 @@ const DENOMINATOR: ParamSpec = ParamSpec::optional(
     "power-basis coefficients of the denominator of F (default 1)",
 ).degree();
 
-/// `Σ c[i][j] u^i v^j`.
-fn poly_from_grid(grid: &[Vec<Q>]) -> Result<MPoly<Q>, OpError> {
-    let mut terms = Vec::new();
-    for (i, row) in grid.iter().enumerate() {
-        for (j, c) in row.iter().enumerate() {
-            if !c.is_zero() {
-                terms.push((vec![exp(i)?, exp(j)?], c.clone()));
-            }
-        }
-    }
-    MPoly::from_terms(2, terms).map_err(|e| OpError::new(e.to_string()))
-}
+use poly_io::grid_mpoly as poly_from_grid;
 
-/// `Σ c[k] t^k` (a polynomial in the first parameter).
-fn poly_from_list(list: &[Q]) -> Result<MPoly<Q>, OpError> {
-    let mut terms = Vec::new();
-    for (k, c) in list.iter().enumerate() {
-        if !c.is_zero() {
-            terms.push((vec![exp(k)?, 0], c.clone()));
-        }
-    }
-    MPoly::from_terms(2, terms).map_err(|e| OpError::new(e.to_string()))
-}
-
-fn exp(k: usize) -> Result<u32, OpError> {
-    u32::try_from(k).map_err(|_| OpError::new("a polynomial degree is too large"))
+/// `Σ c[k] t^k` (a polynomial in the first of the two parameters).
+fn poly_from_list(list: &[Q]) -> Result<MPolyQ, OpError> {
+    poly_io::list_mpoly(list, 2)
 }
 
 /// The rational function `numerator/denominator` of two grid parameters.
@@ -131,7 +110,7 @@ fn ratfn(args: &OpArgs, num: &'static str, den: &'static str) -> Result<RatFn<Q>
     let n = poly_from_grid(&args.opt_grid(num)?.unwrap_or_default())?;
     let d = match args.opt_grid(den)? {
         Some(g) => poly_from_grid(&g)?,
-        None => MPoly::constant(2, Q::from(1)),
+        None => poly_io::mpoly_constant(2, Q::from(1)),
     };
     RatFn::new(n, d).map_err(|e| OpError::param(den, e.to_string()))
 }
@@ -344,7 +323,7 @@ distances = ["1/2"]
     build: build_support,
 };
 
-fn opt_poly(args: &OpArgs, param: &'static str, default: MPoly<Q>) -> Result<MPoly<Q>, OpError> {
+fn opt_poly(args: &OpArgs, param: &'static str, default: MPolyQ) -> Result<MPolyQ, OpError> {
     match args.opt_grid(param)? {
         Some(g) => poly_from_grid(&g),
         None => Ok(default),
@@ -353,9 +332,9 @@ fn opt_poly(args: &OpArgs, param: &'static str, default: MPoly<Q>) -> Result<MPo
 
 fn build_support(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let h = ratfn(args, "support", "support_denominator")?;
-    let a = opt_poly(args, "a", MPoly::var(2, 0))?;
-    let b = opt_poly(args, "b", MPoly::var(2, 1))?;
-    let c = opt_poly(args, "c", MPoly::constant(2, Q::from(1)))?;
+    let a = opt_poly(args, "a", poly_io::mpoly_var(2, 0))?;
+    let b = opt_poly(args, "b", poly_io::mpoly_var(2, 1))?;
+    let c = opt_poly(args, "c", poly_io::mpoly_constant(2, Q::from(1)))?;
     // the rectangle is checked before the (possibly long) construction
     let rect = domain(args)?;
     let surface = from_support_function(a, b, c, &h).map_err(blame("c"))?;
@@ -557,7 +536,7 @@ fn strip(
     curve: &'static str,
     normal: &'static str,
 ) -> Result<Strip, OpError> {
-    let four = |param: &'static str| -> Result<Vec<MPoly<Q>>, OpError> {
+    let four = |param: &'static str| -> Result<Vec<MPolyQ>, OpError> {
         let g = args.opt_grid(param)?.unwrap_or_default();
         if g.len() != 4 {
             return Err(OpError::param(
@@ -567,7 +546,7 @@ fn strip(
         }
         g.iter().map(|r| poly_from_list(r)).collect()
     };
-    let rat = |v: &[MPoly<Q>], param: &'static str| -> Result<[RatFn<Q>; 3], OpError> {
+    let rat = |v: &[MPolyQ], param: &'static str| -> Result<[RatFn<Q>; 3], OpError> {
         let f = |k: usize| {
             RatFn::new(v[k].clone(), v[0].clone()).map_err(|e| OpError::param(param, e.to_string()))
         };
@@ -677,10 +656,16 @@ distances = ["1/4"]
 
 fn build_canal(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let m = three_polys(args, "spine")?;
-    let r = poly_from_list(&args.opt_numbers("radius")?.unwrap_or_default())?;
-    // the negative orientation envelopes the oriented family (m; −r), as the canal ops do
-    let r = if negative_orientation(args) { -r } else { r };
-    let one = MPoly::constant(2, Q::from(1));
+    // the negative orientation envelopes the oriented family (m; −r), as the canal ops do:
+    // the radius is read with the orientation's sign
+    let radius = args.opt_numbers("radius")?.unwrap_or_default();
+    let radius: Vec<Q> = if negative_orientation(args) {
+        radius.into_iter().map(|c| -c).collect()
+    } else {
+        radius
+    };
+    let r = poly_from_list(&radius)?;
+    let one = poly_io::mpoly_constant(2, Q::from(1));
     let fam = CycleFamily::new([m[0].num.clone(), m[1].num.clone(), m[2].num.clone()], r, one)
         .map_err(blame("spine"))?;
     let canal = CanalPn::new(fam, None).map_err(blame("radius"))?;
@@ -1454,12 +1439,12 @@ domain = [-1, 1, -1, 1]
 };
 
 fn build_cyclographic_surface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let g = |p: &'static str| -> Result<MPoly<Q>, OpError> {
+    let g = |p: &'static str| -> Result<MPolyQ, OpError> {
         poly_from_grid(&args.opt_grid(p)?.unwrap_or_default())
     };
     let w = match args.opt_grid("denominator")? {
         Some(d) => poly_from_grid(&d)?,
-        None => MPoly::constant(2, Q::from(1)),
+        None => poly_io::mpoly_constant(2, Q::from(1)),
     };
     let img = CyclographicImage::new([g("x")?, g("y")?, g("z")?, g("r")?], w)
         .map_err(blame("r"))?;
@@ -1603,9 +1588,9 @@ fn build_anticaustic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let g = args.opt_grid("mirror")?.unwrap_or_default();
     let f = poly_from_grid(&g)?;
     let mirror = [
-        MPoly::constant(2, Q::from(1)),
-        MPoly::var(2, 0),
-        MPoly::var(2, 1),
+        poly_io::mpoly_constant(2, Q::from(1)),
+        poly_io::mpoly_var(2, 0),
+        poly_io::mpoly_var(2, 1),
         f,
     ];
     let c = args.number("level")?;
@@ -1656,7 +1641,7 @@ fn build_planar(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let num = poly_from_list(&args.opt_numbers("function")?.unwrap_or_default())?;
     let den = match args.opt_numbers("denominator")? {
         Some(d) => poly_from_list(&d)?,
-        None => MPoly::constant(2, Q::from(1)),
+        None => poly_io::mpoly_constant(2, Q::from(1)),
     };
     let f = RatFn::new(num, den).map_err(blame("denominator"))?;
     let iv = args.opt_numbers("interval")?.unwrap_or_default();

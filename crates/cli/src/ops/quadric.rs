@@ -21,7 +21,7 @@ use rcagd::quadric::{
 use rcagd::Certified;
 use rcagd_algebra::rational::format_rational;
 use rcagd_algebra::{Certificate, Rational};
-use rcagd_geom::weight_sign::{split_curve_uniform, split_patch_uniform, SignRule};
+use rcagd_geom::weight_sign::SignRule;
 use rcagd_geom::{BezierCurve, BezierPatch};
 use rcagd_io::quantity::{NamedQuantity, Quantity};
 
@@ -647,72 +647,41 @@ fn build_sphere_cover(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     Ok(vec![args.object(Geometry::Patches(cover.into_patches()), certs)])
 }
 
-/// The deepest bisection level of [`exportable_curve`] / [`exportable_patch`].
-const MAX_SPLIT: u32 = 4;
-
 /// `true` if the weights (every `stride`-th coordinate) are all > 0 or all < 0 (an
 /// all-negative piece is the same projective object; exporters negate it).
 fn one_sign(coords: &[Rational], stride: usize) -> bool {
     SignRule::OneSign.holds(coords, stride)
 }
 
-/// The curve, or — if its weights have mixed signs while its weight function has no zero
-/// on `[0, 1]` (e.g. `k0 = |x|² > 0` on the sphere) — its restrictions to the `2^L`
-/// intervals `[i/2^L, (i+1)/2^L]` for the least `L ≤ MAX_SPLIT` that gives every piece
-/// weights of one sign ([`split_curve_uniform`]). STEP/IGES need such weights. The
-/// certificates: every piece on the quadric (`Xᵀ Q X ≡ 0`, exact), consecutive pieces
-/// join exactly.
+/// The curve, or its pieces with weights of one sign and their certificates
+/// ([`rcagd::quadric::exportable::exportable_curve`]).
 pub(super) fn exportable_curve(
     curve: BezierCurve<Rational>,
     q: &rcagd::quadric::Mat4<Rational>,
 ) -> Result<(Geometry, Vec<Certificate>), OpError> {
-    match split_curve_uniform(&curve, MAX_SPLIT)? {
-        Some(pieces) if pieces.len() > 1 => {
-            let k = pieces.len();
-            let mut certs = vec![Certificate::decide(
-                format!("split into {k} pieces [i/{k}, (i+1)/{k}] with weights of one sign (export); every piece lies on the quadric: Xᵀ Q X ≡ 0"),
-                pieces.iter().all(|p| {
-                    rcagd::quadric::image::certify_curve_on_quadric(p, q, "").holds
-                }),
-                true,
-                || "a piece is off the quadric".to_string(),
-            )];
-            let joined = pieces.windows(2).all(|w| match w {
-                [a, b] => a.control_points().last() == b.control_points().next(),
-                _ => true,
-            });
-            certs.push(Certificate::decide(
-                "consecutive pieces join exactly (equal homogeneous end points)",
-                joined,
-                true,
-                || "two pieces do not join".to_string(),
-            ));
-            Ok((Geometry::Curves(pieces), certs))
-        }
-        _ => Ok((Geometry::Curve(curve), Vec::new())),
-    }
+    let mut e = rcagd::quadric::exportable::exportable_curve(curve, q)?;
+    let geometry = match e.pieces.len() {
+        1 => match e.pieces.pop() {
+            Some(c) => Geometry::Curve(c),
+            None => Geometry::Curves(Vec::new()),
+        },
+        _ => Geometry::Curves(e.pieces),
+    };
+    Ok((geometry, e.certificates))
 }
 
-/// As [`exportable_curve`] for a patch: its restrictions to the `2^L × 2^L` sub-squares
-/// ([`split_patch_uniform`], `L ≤ 3`).
+/// As [`exportable_curve`] for a patch ([`rcagd::quadric::exportable::exportable_patch`]).
 pub(super) fn exportable_patch(
     patch: BezierPatch<Rational>,
     q: &rcagd::quadric::Mat4<Rational>,
 ) -> Result<(Geometry, Vec<Certificate>), OpError> {
-    match split_patch_uniform(&patch, MAX_SPLIT.min(3))? {
-        Some(pieces) if pieces.len() > 1 => {
-            let k = (1..=8).find(|k| k * k >= pieces.len()).unwrap_or(1);
-            let on = pieces
-                .iter()
-                .all(|p| rcagd::quadric::image::certify_patch_on_quadric(p, q, "").holds);
-            let cert = Certificate::decide(
-                format!("split into {k}×{k} sub-patches with weights of one sign (export); every sub-patch lies on the quadric: Xᵀ Q X ≡ 0"),
-                on,
-                true,
-                || "a sub-patch is off the quadric".to_string(),
-            );
-            Ok((Geometry::Patches(pieces), vec![cert]))
-        }
-        _ => Ok((Geometry::Patch(patch), Vec::new())),
-    }
+    let mut e = rcagd::quadric::exportable::exportable_patch(patch, q)?;
+    let geometry = match e.pieces.len() {
+        1 => match e.pieces.pop() {
+            Some(p) => Geometry::Patch(p),
+            None => Geometry::Patches(Vec::new()),
+        },
+        _ => Geometry::Patches(e.pieces),
+    };
+    Ok((geometry, e.certificates))
 }

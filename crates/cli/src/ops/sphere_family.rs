@@ -7,13 +7,12 @@
 //! its line net and support functions (`rcagd::envelope::SphereFamily::recognize`) and
 //! builds the same envelope, or names why the family has none of this kind.
 
-use super::{OpArgs, OpError, OpSpec, ParamSpec};
+use super::{poly_io, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::Geometry;
 use crate::model::Object;
 use rcagd_geom::BezierPatch;
 use crate::value::ParamKind;
 use rcagd::envelope::{SphereFamily, SphereFamilyEnvelope};
-use rcagd_algebra::mpoly::MPoly;
 use rcagd::lines::NetKind;
 use rcagd::Certified;
 use rcagd_algebra::{Certificate, Rational};
@@ -129,47 +128,22 @@ fn build_cyclographic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         let [s, t] = <[Rational; 2]>::try_from(st.clone()).map_err(|_| {
             OpError::param("at", format!("a parameter point is [s, t], got {} numbers", st.len()))
         })?;
-        let ((m, r), pts) = env
-            .cyclographic_contacts(&s, &t)
+        let c = env
+            .certified_contacts(&s, &t, &psi2)
             .map_err(|e| OpError::param("at", e.to_string()))?;
-        certs.push(env.cyclographic_certificate(&s, &t));
-        let x = [s.clone(), t.clone()];
-        let v: Vec<Rational> = psi2
-            .iter()
-            .map(|p| p.eval(&x).unwrap_or_else(|_| Rational::from(0)))
-            .collect();
-        for (k, pt) in pts.iter().enumerate() {
-            let d = (0..3).fold(Rational::from(0), |acc, i| {
-                let di = &pt[i] - &m[i];
-                acc + &di * &di
-            }) - &r * &r;
-            certs.push(Certificate::decide(
-                format!("contact point {} at ({s}, {t}) lies on its sphere: |f − m|² = r²", k + 1),
-                d == Rational::from(0),
-                true,
-                || format!("|f − m|² − r² = {d}"),
-            ));
+        let m = &c.sphere.0;
+        for pt in &c.points {
             let hom = |p: &[Rational; 3]| -> Vec<Rational> {
                 let mut h = vec![Rational::from(1)];
                 h.extend(p.iter().cloned());
                 h
             };
             curves.push(
-                rcagd_geom::BezierCurve::from_homogeneous(vec![hom(&m), hom(pt)])
+                rcagd_geom::BezierCurve::from_homogeneous(vec![hom(m), hom(pt)])
                     .map_err(|e| OpError::new(e.to_string()))?,
             );
         }
-        // the other contact point is the second sheet Ψ₂(s, t)
-        let other_is_psi2 = v[0] != Rational::from(0)
-            && pts
-                .iter()
-                .any(|pt| (0..3).all(|i| pt[i] == &v[i + 1] / &v[0]));
-        certs.push(Certificate::decide(
-            format!("a contact point at ({s}, {t}) is the other sheet's Ψ₂(s, t)"),
-            other_is_psi2,
-            true,
-            || "neither contact point is Ψ₂(s, t)".into(),
-        ));
+        certs.extend(c.certificates);
     }
     Ok(vec![args.object(Geometry::Curves(curves), certs)])
 }
@@ -385,16 +359,6 @@ domain = [1, 2, "1/4", 1]
     build: build_recognized,
 };
 
-/// `Σ g[i][j] uⁱ vʲ`.
-fn grid_poly(g: &[Vec<Rational>]) -> MPoly<Rational> {
-    let mut p = MPoly::zero(2);
-    for (i, row) in g.iter().enumerate() {
-        for (j, c) in row.iter().enumerate() {
-            p = &p + &MPoly::monomial(2, &[i as u32, j as u32], c.clone());
-        }
-    }
-    p
-}
 
 fn build_recognized(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let centre = args.net("centre")?;
@@ -425,9 +389,13 @@ fn build_recognized(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         .opt_grid("denominator")?
         .unwrap_or_else(|| vec![vec![Rational::from(1)]]);
     let fam = SphereFamily::new(
-        xyz.each_ref().map(|g| grid_poly(g)),
-        grid_poly(&radius),
-        grid_poly(&den),
+        [
+            poly_io::grid_mpoly(&xyz[0])?,
+            poly_io::grid_mpoly(&xyz[1])?,
+            poly_io::grid_mpoly(&xyz[2])?,
+        ],
+        poly_io::grid_mpoly(&radius)?,
+        poly_io::grid_mpoly(&den)?,
     )
     .map_err(|e| OpError::param("denominator", e.to_string()))?;
     let rec = fam

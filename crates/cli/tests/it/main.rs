@@ -13,6 +13,7 @@ mod exchange_weights;
 mod float;
 mod fuzz;
 mod fuzz_corpus;
+mod library_first;
 mod limits;
 mod messages;
 mod ndim;

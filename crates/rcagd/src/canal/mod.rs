@@ -54,6 +54,7 @@
 pub mod approximate_pipe;
 pub mod bipoly;
 pub mod blend;
+pub mod blend_charts;
 pub mod cyclographic_param;
 pub mod envelope;
 pub mod exportable;

@@ -13,6 +13,7 @@
 //!
 //! Derivations and corrections of the printed formulas: `docs/math/sphere-families.md`.
 
+pub mod contacts;
 pub mod quadratic_class;
 pub mod recognition;
 pub mod sphere_family;

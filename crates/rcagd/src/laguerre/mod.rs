@@ -25,6 +25,7 @@
 //! [`crate::pn::PnSurface::laguerre_image`].
 
 pub mod models;
+pub mod patches;
 pub mod query;
 pub mod transform;
 

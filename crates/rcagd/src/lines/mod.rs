@@ -46,6 +46,7 @@ pub mod order_one;
 pub mod parametrized;
 pub mod plucker;
 pub mod regulus;
+pub mod regulus_patch;
 
 pub use complex::LinearComplex;
 pub use congruence::{net_line, CongruenceKind, FocalLines, LinearCongruence};

@@ -36,6 +36,7 @@
 //! and over the scalar ([`Scalar`]: exact [`rcagd_algebra::Rational`] or `f64`).
 
 pub mod cover;
+pub mod exportable;
 pub mod general;
 pub(crate) mod helpers;
 pub mod image;

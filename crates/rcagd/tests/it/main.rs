@@ -10,6 +10,7 @@ mod hermite_enclosure;
 mod hypercyclide;
 mod laguerre_props;
 mod laguerre_query;
+mod library_first;
 mod line_generation;
 mod lines_order_bound;
 mod lines_props;

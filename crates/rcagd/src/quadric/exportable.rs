@@ -1,0 +1,165 @@
+//! Curves and patches on a quadric made exportable: pieces with Bernstein weights of one
+//! sign, each certified on the quadric.
+//!
+//! STEP and IGES need rational B-spline weights of one sign. A curve (patch) on a quadric
+//! whose weights have mixed signs while its weight function has no zero on `[0, 1]` (e.g.
+//! `k₀ = |x|² > 0` for the images on the sphere) is restricted to the `2^L` intervals
+//! `[i/2^L, (i+1)/2^L]` (the `2^L × 2^L` sub-squares) for the least `L` that gives every
+//! piece weights of one sign ([`rcagd_geom::weight_sign::split_curve_uniform`],
+//! [`rcagd_geom::weight_sign::split_patch_uniform`]; subdivision by de Casteljau, Farin,
+//! *Curves and Surfaces for CAGD*, §4.6 and §16.4, so each piece is exactly a piece of the
+//! same curve). The certificates decide, exactly, that every piece lies on the quadric
+//! (`Xᵀ Q X ≡ 0`) and, for curves, that consecutive pieces join (equal homogeneous end
+//! points).
+
+use super::image::{certify_curve_on_quadric, certify_patch_on_quadric};
+use super::Mat4;
+use rcagd_algebra::{Certificate, Scalar};
+use rcagd_geom::weight_sign::{split_curve_uniform, split_patch_uniform};
+use rcagd_geom::{BezierCurve, BezierPatch, GeomError};
+
+/// The deepest bisection level for curves (patches: `min(3, this)`).
+pub const MAX_SPLIT: u32 = 4;
+
+/// The pieces of [`exportable_curve`] / [`exportable_patch`] and their certificates; one
+/// piece (the input) and no certificate when no split was needed or none was found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Exportable<T> {
+    /// The pieces, in parameter order.
+    pub pieces: Vec<T>,
+    /// The certificates of the split (module docs); empty without a split.
+    pub certificates: Vec<Certificate>,
+}
+
+/// The curve, or its restrictions to `2^L` intervals with weights of one sign (module
+/// docs), with the certificates.
+///
+/// # Errors
+/// As [`split_curve_uniform`].
+pub fn exportable_curve<F: Scalar>(
+    curve: BezierCurve<F>,
+    q: &Mat4<F>,
+) -> Result<Exportable<BezierCurve<F>>, GeomError> {
+    match split_curve_uniform(&curve, MAX_SPLIT)? {
+        Some(pieces) if pieces.len() > 1 => {
+            let k = pieces.len();
+            let mut certs = vec![Certificate::decide(
+                format!("split into {k} pieces [i/{k}, (i+1)/{k}] with weights of one sign (export); every piece lies on the quadric: Xᵀ Q X ≡ 0"),
+                pieces.iter().all(|p| certify_curve_on_quadric(p, q, "").holds),
+                F::EXACT,
+                || "a piece is off the quadric".to_string(),
+            )];
+            let joined = pieces.windows(2).all(|w| match w {
+                [a, b] => a.control_points().last() == b.control_points().next(),
+                _ => true,
+            });
+            certs.push(Certificate::decide(
+                "consecutive pieces join exactly (equal homogeneous end points)",
+                joined,
+                F::EXACT,
+                || "two pieces do not join".to_string(),
+            ));
+            Ok(Exportable {
+                pieces,
+                certificates: certs,
+            })
+        }
+        _ => Ok(Exportable {
+            pieces: vec![curve],
+            certificates: Vec::new(),
+        }),
+    }
+}
+
+/// As [`exportable_curve`] for a patch: its restrictions to the `2^L × 2^L` sub-squares
+/// (`L ≤ 3`).
+///
+/// # Errors
+/// As [`split_patch_uniform`].
+pub fn exportable_patch<F: Scalar>(
+    patch: BezierPatch<F>,
+    q: &Mat4<F>,
+) -> Result<Exportable<BezierPatch<F>>, GeomError> {
+    match split_patch_uniform(&patch, MAX_SPLIT.min(3))? {
+        Some(pieces) if pieces.len() > 1 => {
+            let k = (1..=8).find(|k| k * k >= pieces.len()).unwrap_or(1);
+            let on = pieces
+                .iter()
+                .all(|p| certify_patch_on_quadric(p, q, "").holds);
+            let cert = Certificate::decide(
+                format!("split into {k}×{k} sub-patches with weights of one sign (export); every sub-patch lies on the quadric: Xᵀ Q X ≡ 0"),
+                on,
+                F::EXACT,
+                || "a sub-patch is off the quadric".to_string(),
+            );
+            Ok(Exportable {
+                pieces,
+                certificates: vec![cert],
+            })
+        }
+        _ => Ok(Exportable {
+            pieces: vec![patch],
+            certificates: Vec::new(),
+        }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rcagd_algebra::Rational;
+
+    fn q(n: i64) -> Rational {
+        Rational::from(n)
+    }
+
+    /// A curve with positive weights is returned as is, without certificates.
+    #[test]
+    fn positive_curve_is_kept() {
+        let m: Mat4<Rational> = [
+            [q(-1), q(0), q(0), q(0)],
+            [q(0), q(1), q(0), q(0)],
+            [q(0), q(0), q(1), q(0)],
+            [q(0), q(0), q(0), q(0)],
+        ];
+        let c = BezierCurve::from_homogeneous(vec![
+            vec![q(1), q(1), q(0), q(0)],
+            vec![q(1), q(1), q(1), q(0)],
+            vec![q(2), q(0), q(2), q(0)],
+        ])
+        .unwrap();
+        let e = exportable_curve(c.clone(), &m).unwrap();
+        assert_eq!(e.pieces, vec![c]);
+        assert!(e.certificates.is_empty());
+    }
+
+    /// A circle arc whose middle weight is negative but whose weight function
+    /// `16s² − 16s + 5` is positive on [0, 1]: split into pieces of one sign, all on the
+    /// circle `x² + y² = w²`, joined.
+    #[test]
+    fn mixed_weights_are_split_and_certified() {
+        let m: Mat4<Rational> = [
+            [q(-1), q(0), q(0), q(0)],
+            [q(0), q(1), q(0), q(0)],
+            [q(0), q(0), q(1), q(0)],
+            [q(0), q(0), q(0), q(0)],
+        ];
+        // (w, x, y) = ((1 + t²)… ) in Bernstein form: the circle (1 − t², 2t)/(1 + t²) on
+        // t ∈ [−2, 2] reparametrized to [0, 1]: t = 4s − 2
+        // w = 1 + (4s − 2)², x = 1 − (4s − 2)², y = 2(4s − 2)
+        // Bernstein coefficients (degree 2): w: 5, −3, 5; x: −3, 5, −3; y: −4, 0, 4
+        let c = BezierCurve::from_homogeneous(vec![
+            vec![q(5), q(-3), q(-4), q(0)],
+            vec![q(-3), q(5), q(0), q(0)],
+            vec![q(5), q(-3), q(4), q(0)],
+        ])
+        .unwrap();
+        let e = exportable_curve(c, &m).unwrap();
+        assert!(e.pieces.len() > 1);
+        assert!(
+            e.certificates.iter().all(|c| c.holds && c.exact),
+            "{:?}",
+            e.certificates
+        );
+    }
+}
