@@ -1043,21 +1043,9 @@ mod pn {
         move |e| OpError::param(param, e.to_string())
     }
 
-    /// `Σ c[i][j] u^i v^j` in `f64`.
+    /// `Σ c[i][j] u^i v^j` in `f64` (the exact op's converter, rounded).
     fn poly_from_grid(grid: &[Vec<Rational>]) -> Result<MPoly<f64>, OpError> {
-        let mut terms = Vec::new();
-        for (i, row) in grid.iter().enumerate() {
-            for (j, c) in row.iter().enumerate() {
-                if !c.is_zero() {
-                    let e = |k: usize| {
-                        u32::try_from(k)
-                            .map_err(|_| OpError::new("a polynomial degree is too large"))
-                    };
-                    terms.push((vec![e(i)?, e(j)?], f(c)));
-                }
-            }
-        }
-        MPoly::from_terms(2, terms).map_err(|e| OpError::new(e.to_string()))
+        Ok(crate::ops::poly_io::grid_mpoly(grid)?.map(f))
     }
 
     fn ratfn(args: &OpArgs, num: &'static str, den: &'static str) -> Result<RatFn<f64>, OpError> {
