@@ -152,11 +152,23 @@ pub fn check_object(
     }
 }
 
-/// Runs an op, turning a panic into an error (no input may crash the CLI).
+/// Runs an op, turning a panic into an error (no input may crash the CLI), under the
+/// work budget of [`Limits::seconds`](crate::limits::Limits) (nested in any budget the
+/// caller installed): a construction still working at its deadline ends at its next
+/// checkpoint with "work limit exceeded" (an input error, exit 2).
 pub fn run_op(op: &OpSpec, args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let _budget = crate::limits::Limits::current()
+        .work_limit()
+        .map(rcagd_algebra::budget::install);
     match catch_unwind(AssertUnwindSafe(|| (op.build)(args))) {
         Ok(r) => r,
         Err(payload) => {
+            if let Some(e) = rcagd_algebra::budget::as_work_limit(&*payload) {
+                return Err(OpError::new(crate::limits::work_limit_message(
+                    args.name(),
+                    e,
+                )));
+            }
             let msg = payload
                 .downcast_ref::<&str>()
                 .map(|s| s.to_string())
@@ -202,10 +214,13 @@ pub fn build_recipe(
     recipe: &Recipe,
     progress: impl Fn(&str) + Sync,
 ) -> Result<Vec<Object>, Vec<Diagnostic>> {
+    // the caller's work budget (the fuzzer's per case) holds on the worker threads too
+    let budget = rcagd_algebra::budget::current();
     let built: Vec<_> = recipe
         .objects
         .par_iter()
         .map(|obj| {
+            let _budget = budget.map(rcagd_algebra::budget::install_budget);
             let r = build_object(&recipe.file, obj);
             progress(&obj.name);
             r

@@ -10,6 +10,13 @@
 //! command-line option of `rcagd build` that raises it; the error names the limit and the
 //! option.
 //!
+//! The work of one op is bounded as well, not by its input size but by time: every
+//! object's construction runs under a work budget of [`Limits::seconds`]
+//! (`--max-seconds`, default [`DEFAULT_SECONDS`]; [`rcagd_algebra::budget`]), whose
+//! checkpoints in the exact algebra end it with the error "work limit exceeded:
+//! building NAME took more than N s (raise with --max-seconds)" (exit 2, nothing
+//! written).
+//!
 //! The limits are process-wide settings (`rcagd build` sets them once from its options),
 //! so that the number reader of every op sees them without threading them through the op
 //! registry.
@@ -39,6 +46,10 @@ pub const DEFAULT_SAMPLES: usize = 1_000;
 /// Default largest spread of the input numbers of one object, in decimal orders of
 /// magnitude: `log10(max |x| / min |x|)` over its non-zero numbers.
 pub const DEFAULT_MAGNITUDE: u32 = 20;
+/// Default work budget of one object's construction, in seconds (0: none). Ten minutes:
+/// every gallery object, op example and test input builds in a few seconds, so only a
+/// computation that would run far longer meets it.
+pub const DEFAULT_SECONDS: u64 = 600;
 
 static RECIPE_BYTES: AtomicU64 = AtomicU64::new(DEFAULT_RECIPE_BYTES);
 static OBJECTS: AtomicUsize = AtomicUsize::new(DEFAULT_OBJECTS);
@@ -47,6 +58,7 @@ static DEGREE: AtomicUsize = AtomicUsize::new(DEFAULT_DEGREE);
 static POINTS: AtomicUsize = AtomicUsize::new(DEFAULT_POINTS);
 static SAMPLES: AtomicUsize = AtomicUsize::new(DEFAULT_SAMPLES);
 static MAGNITUDE: AtomicUsize = AtomicUsize::new(DEFAULT_MAGNITUDE as usize);
+static SECONDS: AtomicU64 = AtomicU64::new(DEFAULT_SECONDS);
 
 /// The limits of one run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -66,6 +78,9 @@ pub struct Limits {
     /// Largest spread of the magnitudes of one object's input numbers, in decimal orders
     /// (`--max-magnitude`).
     pub magnitude: u32,
+    /// Work budget of one object's construction in seconds, 0 for none
+    /// (`--max-seconds`).
+    pub seconds: u64,
 }
 
 impl Default for Limits {
@@ -78,6 +93,7 @@ impl Default for Limits {
             points: DEFAULT_POINTS,
             samples: DEFAULT_SAMPLES,
             magnitude: DEFAULT_MAGNITUDE,
+            seconds: DEFAULT_SECONDS,
         }
     }
 }
@@ -92,6 +108,7 @@ impl Limits {
         POINTS.store(self.points, Ordering::Relaxed);
         SAMPLES.store(self.samples, Ordering::Relaxed);
         MAGNITUDE.store(self.magnitude as usize, Ordering::Relaxed);
+        SECONDS.store(self.seconds, Ordering::Relaxed);
     }
 
     /// The process-wide limits.
@@ -104,8 +121,23 @@ impl Limits {
             points: POINTS.load(Ordering::Relaxed),
             samples: SAMPLES.load(Ordering::Relaxed),
             magnitude: u32::try_from(MAGNITUDE.load(Ordering::Relaxed)).unwrap_or(u32::MAX),
+            seconds: SECONDS.load(Ordering::Relaxed),
         }
     }
+
+    /// The work budget of one object's construction (`None` for `seconds = 0`).
+    pub fn work_limit(&self) -> Option<std::time::Duration> {
+        (self.seconds > 0).then(|| std::time::Duration::from_secs(self.seconds))
+    }
+}
+
+/// The message of a construction that ran out of its work budget.
+pub fn work_limit_message(name: &str, e: rcagd_algebra::budget::WorkLimitExceeded) -> String {
+    format!(
+        "work limit exceeded: building {:?} took more than {} s (raise with --max-seconds)",
+        crate::source::clip(name),
+        rcagd_algebra::budget::secs(e.limit)
+    )
 }
 
 /// `log10 |x|` of a non-zero rational to about 15 significant digits (from the leading

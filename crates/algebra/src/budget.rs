@@ -1,0 +1,249 @@
+//! A work budget for long exact computations: cooperative cancellation.
+//!
+//! Exact arithmetic has no a-priori bound on its running time that is both cheap to
+//! state and tight: a resultant, a subresultant PRS or a tensor Bernstein conversion of
+//! inputs of valid size can still take many seconds when the coefficients grow. A
+//! *budget* is a deadline installed on the current thread for the duration of one
+//! computation ([`with_limit`], or the scoped [`Guard`] of [`install`]); the hot loops
+//! of the exact algebra (polynomial products, divisions, gcds and PRS, resultants,
+//! multivariate products, factorization, Bernstein conversions, root isolation) call
+//! [`checkpoint`], which ends the computation promptly once the deadline has passed.
+//!
+//! How the computation ends: the checkpoint unwinds the stack with a private payload
+//! ([`WorkLimitExceeded`]) through [`std::panic::resume_unwind`], which does not run the
+//! panic hook (nothing is printed); [`with_limit`] catches exactly that payload and
+//! returns it as an error value (any other panic continues to unwind). Code between the
+//! checkpoint and the boundary is left by unwinding, so it must not hold invariants
+//! across a checkpoint that a drop cannot restore (the algebra holds none: its values
+//! are immutable or local).
+//!
+//! Without a budget installed, [`checkpoint`] reads one thread-local cell and returns.
+//! With one, it also reads the monotonic clock (`Instant::now`, a vDSO call of a few
+//! tens of nanoseconds on Linux); checkpoints are placed where the work between two of
+//! them is far larger than that.
+//!
+//! Budgets nest: an inner budget never extends an outer one (the earlier deadline
+//! wins), and the outer budget is restored when the inner scope ends. A budget is
+//! per thread: work that a computation hands to other threads (rayon) runs without it
+//! unless the code installs it there ([`current`] and [`install_budget`]).
+
+use std::cell::Cell;
+use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
+use std::time::{Duration, Instant};
+
+/// A deadline and the limit it was made from (for the message).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Budget {
+    /// When the work must end.
+    pub deadline: Instant,
+    /// The time allowed (the deadline minus the moment the budget was made).
+    pub limit: Duration,
+}
+
+impl Budget {
+    /// A budget of `limit` from now (a limit so large that the deadline cannot be
+    /// represented is no deadline in practice: about 30 years from now).
+    pub fn from_now(limit: Duration) -> Self {
+        let now = Instant::now();
+        let deadline = now
+            .checked_add(limit)
+            .or_else(|| now.checked_add(Duration::from_secs(1 << 30)))
+            .unwrap_or(now);
+        Budget { deadline, limit }
+    }
+
+    /// The earlier of two budgets.
+    fn min(self, other: Budget) -> Budget {
+        if other.deadline < self.deadline {
+            other
+        } else {
+            self
+        }
+    }
+}
+
+/// The error (and the unwinding payload) of a computation that ran out of its budget.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+#[error("work limit exceeded: the computation took more than {} s", secs(self.limit))]
+pub struct WorkLimitExceeded {
+    /// The time that was allowed.
+    pub limit: Duration,
+}
+
+/// A duration in seconds for messages: whole seconds when it is whole, else to 0.001 s.
+pub fn secs(d: Duration) -> String {
+    if d.subsec_nanos() == 0 {
+        d.as_secs().to_string()
+    } else {
+        format!("{:.3}", d.as_secs_f64())
+    }
+}
+
+thread_local! {
+    static CURRENT: Cell<Option<Budget>> = const { Cell::new(None) };
+}
+
+/// The budget installed on this thread, if any.
+pub fn current() -> Option<Budget> {
+    CURRENT.with(Cell::get)
+}
+
+/// Restores the previous budget of its thread when dropped (also while unwinding).
+#[must_use = "the budget is removed when the guard is dropped"]
+#[derive(Debug)]
+pub struct Guard {
+    previous: Option<Budget>,
+}
+
+impl Drop for Guard {
+    fn drop(&mut self) {
+        CURRENT.with(|c| c.set(self.previous));
+    }
+}
+
+/// Installs `budget` on this thread until the returned guard is dropped; an outer
+/// budget with an earlier deadline stays in force.
+pub fn install_budget(budget: Budget) -> Guard {
+    let previous = current();
+    let b = previous.map_or(budget, |p| p.min(budget));
+    CURRENT.with(|c| c.set(Some(b)));
+    Guard { previous }
+}
+
+/// Installs a budget of `limit` from now on this thread until the guard is dropped.
+pub fn install(limit: Duration) -> Guard {
+    install_budget(Budget::from_now(limit))
+}
+
+/// Ends the computation (by unwinding with a [`WorkLimitExceeded`] payload, caught by
+/// [`with_limit`] or [`catch`]) when this thread's budget is exhausted; returns at
+/// once when no budget is installed.
+#[inline]
+pub fn checkpoint() {
+    if let Some(b) = current() {
+        exhausted(b);
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn exhausted(b: Budget) {
+    if Instant::now() >= b.deadline {
+        resume_unwind(Box::new(WorkLimitExceeded { limit: b.limit }));
+    }
+}
+
+/// Whether this thread's budget is exhausted (for code that returns a `Result` and
+/// prefers to propagate the error itself).
+///
+/// # Errors
+/// [`WorkLimitExceeded`] when the deadline has passed.
+pub fn check() -> Result<(), WorkLimitExceeded> {
+    match current() {
+        Some(b) if Instant::now() >= b.deadline => Err(WorkLimitExceeded { limit: b.limit }),
+        _ => Ok(()),
+    }
+}
+
+/// Runs `f` and turns an unwinding [`WorkLimitExceeded`] payload into an error; any
+/// other panic continues to unwind. Installs no budget (see [`with_limit`]).
+///
+/// # Errors
+/// [`WorkLimitExceeded`] when a checkpoint inside `f` found the budget exhausted.
+pub fn catch<T>(f: impl FnOnce() -> T) -> Result<T, WorkLimitExceeded> {
+    match catch_unwind(AssertUnwindSafe(f)) {
+        Ok(v) => Ok(v),
+        Err(payload) => match payload.downcast::<WorkLimitExceeded>() {
+            Ok(e) => Err(*e),
+            Err(other) => resume_unwind(other),
+        },
+    }
+}
+
+/// Whether a caught panic payload is a budget's [`WorkLimitExceeded`] (for code that
+/// catches panics itself).
+pub fn as_work_limit(payload: &(dyn std::any::Any + Send)) -> Option<WorkLimitExceeded> {
+    payload.downcast_ref::<WorkLimitExceeded>().copied()
+}
+
+/// Runs `f` with a work budget of `limit` (nested in any budget already installed):
+/// the library's entry point for bounded exact work.
+///
+/// ```
+/// use rcagd_algebra::{budget, Poly, Rational};
+/// use std::time::Duration;
+/// let p = Poly::new(vec![Rational::from(1), Rational::from(1)]);
+/// let q = budget::with_limit(Duration::from_secs(60), || p.pow(8)).unwrap();
+/// assert_eq!(q.degree(), Some(8));
+/// ```
+///
+/// # Errors
+/// [`WorkLimitExceeded`] when `f` was still working at the deadline (it ended at its
+/// next checkpoint).
+pub fn with_limit<T>(limit: Duration, f: impl FnOnce() -> T) -> Result<T, WorkLimitExceeded> {
+    let _guard = install(limit);
+    catch(f)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn no_budget_means_no_change() {
+        assert_eq!(current(), None);
+        checkpoint();
+        assert_eq!(check(), Ok(()));
+        assert_eq!(catch(|| 7), Ok(7));
+    }
+
+    #[test]
+    fn a_spent_budget_ends_at_the_next_checkpoint_and_is_removed_after() {
+        let r = with_limit(Duration::ZERO, || {
+            checkpoint();
+            1
+        });
+        assert_eq!(
+            r,
+            Err(WorkLimitExceeded {
+                limit: Duration::ZERO
+            })
+        );
+        assert_eq!(current(), None);
+        assert_eq!(
+            r.unwrap_err().to_string(),
+            "work limit exceeded: the computation took more than 0 s"
+        );
+    }
+
+    #[test]
+    fn budgets_nest_and_the_earlier_deadline_wins() {
+        let r = with_limit(Duration::ZERO, || {
+            with_limit(Duration::from_secs(3600), || {
+                checkpoint();
+            })
+        });
+        // the inner scope reports the outer (earlier) budget's limit
+        assert_eq!(
+            r,
+            Ok(Err(WorkLimitExceeded {
+                limit: Duration::ZERO
+            }))
+        );
+        let outer = with_limit(Duration::from_secs(3600), || {
+            let inner = with_limit(Duration::ZERO, checkpoint);
+            assert!(inner.is_err());
+            // the outer budget is back in force
+            checkpoint();
+            current().map(|b| b.limit)
+        });
+        assert_eq!(outer, Ok(Some(Duration::from_secs(3600))));
+    }
+
+    #[test]
+    fn other_panics_pass_through() {
+        let r = std::panic::catch_unwind(|| with_limit(Duration::from_secs(5), || panic!("x")));
+        assert!(r.is_err());
+        assert_eq!(current(), None);
+    }
+}
