@@ -240,6 +240,108 @@ mod tests {
         assert_eq!(outer, Ok(Some(Duration::from_secs(3600))));
     }
 
+    /// `Σ (k+1)/(k+2) xᵏ` of degree `n`.
+    fn p(n: i64) -> crate::Poly<crate::Rational> {
+        use crate::Rational;
+        crate::Poly::new(
+            (0..=n)
+                .map(|k| Rational::from(k + 1) / Rational::from(k + 2))
+                .collect(),
+        )
+    }
+
+    #[test]
+    fn a_long_exact_computation_ends_promptly_under_a_tiny_budget() {
+        // powers of a degree-60 polynomial: hours of work without a budget
+        let p = p(60);
+        let start = Instant::now();
+        let r = with_limit(Duration::from_millis(50), || {
+            let mut q = p.clone();
+            for _ in 0..10_000 {
+                q = &q * &p;
+            }
+            q
+        });
+        let took = start.elapsed();
+        assert_eq!(
+            r.map(|q| q.degree()),
+            Err(WorkLimitExceeded {
+                limit: Duration::from_millis(50)
+            })
+        );
+        assert!(took < Duration::from_secs(5), "took {took:?}");
+        assert_eq!(current(), None);
+    }
+
+    #[test]
+    fn a_budget_that_is_not_exhausted_changes_no_result() {
+        let work = || {
+            let p = p(12);
+            let q = &(&p * &p) * &p;
+            (
+                crate::resultant::resultant(&p, &p.derivative()),
+                q.gcd(&q.derivative()),
+                crate::roots::isolate_real_roots(&q.derivative()).map(|r| r.len()),
+            )
+        };
+        let plain = work();
+        assert_eq!(with_limit(Duration::from_secs(3600), work), Ok(plain));
+    }
+
+    /// The cost of a checkpoint (measured, not asserted: `cargo test --profile test -p
+    /// rcagd-algebra --lib budget::tests::checkpoint_cost -- --ignored --nocapture`).
+    #[test]
+    #[ignore = "a measurement"]
+    fn checkpoint_cost() {
+        let n = 100_000_000u32;
+        let t = Instant::now();
+        for _ in 0..n {
+            checkpoint();
+        }
+        let none = t.elapsed().as_secs_f64() / f64::from(n) * 1e9;
+        let m = 10_000_000u32;
+        let with = with_limit(Duration::from_secs(3600), || {
+            let t = Instant::now();
+            for _ in 0..m {
+                checkpoint();
+            }
+            t.elapsed().as_secs_f64() / f64::from(m) * 1e9
+        })
+        .unwrap();
+        // an exact workload (products, gcds, resultants, root isolation) without and with
+        // a budget installed (every checkpoint then reads the clock)
+        let work = || {
+            let p = p(30);
+            let q = &(&p * &p) * &p;
+            let g = q.gcd(&q.derivative());
+            let r = crate::resultant::resultant(&p, &p.derivative());
+            let roots = crate::roots::isolate_real_roots(&q.derivative()).map(|r| r.len());
+            (g.degree(), r, roots)
+        };
+        let time = |f: &dyn Fn()| {
+            let mut best = f64::INFINITY;
+            for _ in 0..7 {
+                let t = Instant::now();
+                f();
+                best = best.min(t.elapsed().as_secs_f64());
+            }
+            best
+        };
+        let plain = time(&|| {
+            std::hint::black_box(work());
+        });
+        let budgeted = time(&|| {
+            std::hint::black_box(with_limit(Duration::from_secs(3600), work).unwrap());
+        });
+        eprintln!(
+            "checkpoint: {none:.2} ns without a budget, {with:.1} ns with one; exact workload \
+             {:.1} ms without, {:.1} ms with a budget ({:+.1} %)",
+            plain * 1e3,
+            budgeted * 1e3,
+            (budgeted / plain - 1.0) * 100.0
+        );
+    }
+
     #[test]
     fn other_panics_pass_through() {
         let r = std::panic::catch_unwind(|| with_limit(Duration::from_secs(5), || panic!("x")));

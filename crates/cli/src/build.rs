@@ -188,7 +188,16 @@ pub fn run_op(op: &OpSpec, args: &OpArgs) -> Result<Vec<Object>, OpError> {
 /// the parameter the op names).
 pub fn build_object(file: &SourceFile, obj: &RecipeObject) -> Result<Vec<Object>, Vec<Diagnostic>> {
     let (op, args) = check_object(file, obj)?;
-    run_op(op, &args).map_err(|e| {
+    let checked = run_op(op, &args).and_then(|objs| f64_overflow(&args, objs));
+    checked.map_err(|mut e| {
+        // an `f64` computation that overflowed shows `inf`/`NaN` in whatever it says
+        // ("√(inf) is irrational", …): the input is too large for f64, say which
+        if let Some(large) = crate::limits::large_input(&args).filter(|_| {
+            crate::limits::shows_non_finite(&e.message) && !e.message.starts_with("input too large")
+        }) {
+            e.param = Some(large.0);
+            e.message = crate::limits::too_large_for_f64(large, &e.message);
+        }
         let span = e
             .param
             .and_then(|p| obj.params.iter().find(|x| x.key == p))
@@ -201,6 +210,28 @@ pub fn build_object(file: &SourceFile, obj: &RecipeObject) -> Result<Vec<Object>
             ),
         )]
     })
+}
+
+/// An object whose `f64` certificate failed with a non-finite residual (`inf`, `NaN`)
+/// while an input number is large ([`crate::limits::large_input`]): the `f64`
+/// computation overflowed, an input error ("input too large for f64", exit 2, nothing
+/// written) rather than a failed certificate.
+fn f64_overflow(args: &OpArgs, objs: Vec<Object>) -> Result<Vec<Object>, OpError> {
+    let overflow = objs.iter().find_map(|o| {
+        o.certificates
+            .iter()
+            .find(|c| !c.holds && crate::limits::shows_non_finite(&c.to_string()))
+            .map(|c| format!("certificate of {:?}: {c}", o.name))
+    });
+    match overflow.zip(crate::limits::large_input(args)) {
+        None => Ok(objs),
+        Some((what, large)) => {
+            let param = large.0;
+            let mut e = OpError::new(crate::limits::too_large_for_f64(large, &what));
+            e.param = Some(param);
+            Err(e)
+        }
+    }
 }
 
 /// Builds every object of a recipe, calling `progress(name)` after each one.
@@ -433,7 +464,7 @@ pub fn run(path: &Path, out: Option<&Path>, formats: &[OutFormat], progress: boo
         },
         Some(dir) => {
             if let Err(e) = output::write_objects(dir, &objects, &formats) {
-                errln!("error: {e}");
+                errln!("error: {}", crate::limits::export_error(&e));
                 return EXIT_INPUT;
             }
         }

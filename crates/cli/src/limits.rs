@@ -131,6 +131,64 @@ impl Limits {
     }
 }
 
+/// Whether a message shows a non-finite `f64` (`inf`, `-inf`, `NaN` as a word): an `f64`
+/// computation overflowed (or computed `inf − inf`, `0·inf`) on the way.
+pub fn shows_non_finite(text: &str) -> bool {
+    text.split(|c: char| !c.is_alphanumeric())
+        .any(|w| matches!(w, "inf" | "NaN" | "nan"))
+}
+
+/// Inputs from this decimal order on can overflow an `f64` computation of moderate
+/// degree (a product of 20 such coordinates exceeds 1.8e308); below it a non-finite
+/// intermediate is taken for something else (`0/0` of degenerate data), not for size.
+pub const F64_LARGE_ORDER: f64 = 15.0;
+
+/// The parameter of an object holding its input number of largest magnitude, with that
+/// number (shortened to `≈ 1eN` when long), when that number is at least
+/// 10^[`F64_LARGE_ORDER`] in magnitude (large enough to overflow `f64` products).
+pub fn large_input(args: &crate::ops::OpArgs) -> Option<(&'static str, String)> {
+    let mut best: Option<(&'static str, f64, &Rational)> = None;
+    for p in args.op().params {
+        let Some(v) = args.get(p.name) else {
+            continue;
+        };
+        for x in numbers(v) {
+            if let Some(l) = log10_abs(x) {
+                if best.is_none_or(|(_, b, _)| l > b) {
+                    best = Some((p.name, l, x));
+                }
+            }
+        }
+    }
+    best.filter(|(_, l, _)| *l >= F64_LARGE_ORDER)
+        .map(|(name, _, x)| (name, short(x)))
+}
+
+/// The message of an `f64` computation that overflowed: names the input to blame (the
+/// parameter with the largest number) and what showed the overflow.
+pub fn too_large_for_f64(largest: (&str, String), what: &str) -> String {
+    let who = format!("`{}` (its largest number is {})", largest.0, largest.1);
+    format!(
+        "input too large for f64: {who}: the floating-point computation overflowed ({}); \
+         f64 ends near 1.8e308 and the construction multiplies coordinates, so rescale the \
+         data to numbers of moderate size",
+        crate::source::clip(what)
+    )
+}
+
+/// An exporter's error, said as "input too large for f64" when it shows a non-finite
+/// number (exact coordinates beyond the `f64` range of a floating-point format).
+pub fn export_error(e: &str) -> String {
+    if shows_non_finite(e) && !e.starts_with("input too large") {
+        format!(
+            "input too large for f64: {e}; the object's exact coordinates exceed the f64 \
+             range (±1.8e308) of the format: rescale the data"
+        )
+    } else {
+        e.to_string()
+    }
+}
+
 /// The message of a construction that ran out of its work budget.
 pub fn work_limit_message(name: &str, e: rcagd_algebra::budget::WorkLimitExceeded) -> String {
     format!(

@@ -214,7 +214,8 @@ pub fn evaluate(file_name: &str, text: &str) -> Outcome {
                     if internal(&e) {
                         finding = Some(FindingKind::Internal);
                     }
-                    export_error.get_or_insert((f.label().to_string(), e));
+                    export_error
+                        .get_or_insert((f.label().to_string(), crate::limits::export_error(&e)));
                 }
                 Ok(Ok(bytes)) => {
                     let kind = match f {
