@@ -328,10 +328,10 @@ mod tests {
             best
         };
         let plain = time(&|| {
-            std::hint::black_box(work());
+            let _ = std::hint::black_box(work());
         });
         let budgeted = time(&|| {
-            std::hint::black_box(with_limit(Duration::from_secs(3600), work).unwrap());
+            let _ = std::hint::black_box(with_limit(Duration::from_secs(3600), work).unwrap());
         });
         eprintln!(
             "checkpoint: {none:.2} ns without a budget, {with:.1} ns with one; exact workload \
