@@ -191,6 +191,8 @@ fn count<R>(b: &[R], width: usize) -> usize {
 /// One homogeneous de Casteljau step in place: `vᵢ ← σ₀ vᵢ + σ₁ vᵢ₊₁` for the first
 /// `points − 1` blocks.
 fn casteljau_step<R: Ring>(v: &mut [R], width: usize, points: usize, s0: &R, s1: &R) {
+    // the exporters' exact boundary curves and subdivisions spend their time here
+    crate::budget::checkpoint();
     for i in 0..points.saturating_sub(1) {
         for q in 0..width {
             let a = v[i * width + q].clone();
