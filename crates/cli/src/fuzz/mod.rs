@@ -353,7 +353,8 @@ pub struct Options {
     /// Write each finding (a minimal recipe or reader file) into DIR.
     #[arg(long, value_name = "DIR")]
     pub corpus: Option<PathBuf>,
-    /// Time limit of one case, in seconds (a longer case is a finding).
+    /// Time limit of one case, in seconds: the case's work budget (a case still working
+    /// then ends with "work limit exceeded"; a longer case is a finding).
     #[arg(long, value_name = "T", default_value_t = 10.0)]
     pub case_seconds: f64,
     /// Print every recipe before running it (to standard error).
@@ -363,8 +364,9 @@ pub struct Options {
     /// (reported as timeouts).
     #[arg(long)]
     pub huge: bool,
-    /// Stop after N cases ran past the time limit (each keeps a thread busy until
-    /// the process ends).
+    /// Stop after N cases were abandoned: still running `--case-seconds`/2 + 5 s past
+    /// their budget (work without a checkpoint; each keeps a thread busy until the
+    /// process ends).
     #[arg(long, value_name = "N", default_value_t = 3)]
     pub max_abandoned: u32,
 }
