@@ -137,6 +137,7 @@ pub fn to_bernstein_blocks<F: Field>(
         .collect();
     let mut out = vec![F::zero(); (n + 1) * width];
     for k in 0..=n {
+        crate::budget::checkpoint();
         let ck: Vec<F> = binomial_row(k);
         let dst = &mut out[k * width..(k + 1) * width];
         for (i, cki) in ck.iter().enumerate().take(count.min(k + 1)) {
@@ -167,6 +168,7 @@ pub fn from_bernstein_blocks<R: Ring>(b: &[R], width: usize) -> Vec<R> {
     for (i, c) in cn.iter().enumerate() {
         // diff[0..n−i+1] holds Δⁱb₀, …, Δⁱbₙ₋ᵢ.
         out.extend(diff[..width].iter().map(|x| c.clone() * x.clone()));
+        crate::budget::checkpoint();
         for k in 0..n - i {
             for q in 0..width {
                 let next = diff[(k + 1) * width + q].clone();
@@ -189,6 +191,8 @@ fn count<R>(b: &[R], width: usize) -> usize {
 /// One homogeneous de Casteljau step in place: `vᵢ ← σ₀ vᵢ + σ₁ vᵢ₊₁` for the first
 /// `points − 1` blocks.
 fn casteljau_step<R: Ring>(v: &mut [R], width: usize, points: usize, s0: &R, s1: &R) {
+    // the exporters' exact boundary curves and subdivisions spend their time here
+    crate::budget::checkpoint();
     for i in 0..points.saturating_sub(1) {
         for q in 0..width {
             let a = v[i * width + q].clone();
@@ -357,6 +361,7 @@ pub fn elevate_blocks<F: Field>(b: &[F], width: usize, r: usize) -> Vec<F> {
     let cnr: Vec<F> = binomial_row(n + r);
     let mut out = vec![F::zero(); (n + r + 1) * width];
     for (k, cnrk) in cnr.iter().enumerate() {
+        crate::budget::checkpoint();
         let inv = F::one() / cnrk.clone();
         let lo = k.saturating_sub(r);
         for i in lo..=n.min(k) {
@@ -384,6 +389,7 @@ pub fn product<F: Field>(a: &[F], b: &[F]) -> Vec<F> {
         if x.is_zero() {
             continue;
         }
+        crate::budget::checkpoint();
         for (j, y) in sb.iter().enumerate() {
             out[i + j] += x.clone() * y.clone();
         }

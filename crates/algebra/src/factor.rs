@@ -587,6 +587,7 @@ pub fn factor_squarefree_int(f: &Poly<Rational>) -> Result<Vec<Poly<Rational>>, 
     while 2 * s <= remaining.len() {
         let mut found = None;
         for subset in combinations(&remaining, s) {
+            crate::budget::checkpoint();
             let lcc = cur.leading();
             let prod = subset.iter().fold(vec![lcc.clone()], |acc, &i| {
                 z_mod(&z_mul(&acc, &lifted[i]), &m)

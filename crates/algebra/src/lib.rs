@@ -10,6 +10,7 @@
 //! Layer rule: this crate depends on nothing else in rcagd.
 
 pub mod bernstein;
+pub mod budget;
 pub mod certificate;
 pub mod complex;
 pub mod conic_point;

@@ -532,6 +532,7 @@ fn bareiss_echelon<F: Field>(m: &mut [Vec<F>], cols: usize) -> (usize, usize) {
         let (top, bottom) = m.split_at_mut(r + 1);
         let prow = &top[r];
         for row in bottom.iter_mut() {
+            crate::budget::checkpoint();
             let f = row[c].clone();
             for j in c + 1..cols {
                 let v =
@@ -572,6 +573,7 @@ fn gauss_jordan<F: Field>(m: &mut [Vec<F>], cols: usize) -> Vec<usize> {
             if i == r || row[c].is_zero() {
                 continue;
             }
+            crate::budget::checkpoint();
             let f = row[c].clone();
             for j in c..width {
                 row[j] = row[j].clone() - f.clone() * prow[j].clone();

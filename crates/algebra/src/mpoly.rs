@@ -536,6 +536,7 @@ impl<R: Ring> Mul for &MPoly<R> {
         let n = self.nvars.max(rhs.nvars);
         let mut out = MPoly::zero(n);
         for (ea, a) in &self.terms {
+            crate::budget::checkpoint();
             for (eb, b) in &rhs.terms {
                 out.add_term(add_exps(ea, eb, n), a.clone() * b.clone());
             }

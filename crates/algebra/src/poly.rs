@@ -179,6 +179,7 @@ impl<F: Field> Poly<F> {
         }
         let mut q = vec![F::zero(); n - dd];
         for k in (0..n - dd).rev() {
+            crate::budget::checkpoint();
             let c = r[k + dd].clone() * lc_inv.clone();
             if !c.is_zero() {
                 for (j, dc) in d.coeffs.iter().enumerate() {
@@ -227,6 +228,7 @@ impl<F: Field> Poly<F> {
         let mut a = self.clone();
         let mut b = other.clone();
         while !b.is_zero() {
+            crate::budget::checkpoint();
             let r = match a.div_rem(&b) {
                 Ok((_, r)) => r,
                 Err(_) => break,
@@ -274,6 +276,7 @@ impl<R: Ring> Mul for &Poly<R> {
             if a.is_zero() {
                 continue;
             }
+            crate::budget::checkpoint();
             for (j, b) in rhs.coeffs.iter().enumerate() {
                 out[i + j] += a.clone() * b.clone();
             }

@@ -119,6 +119,7 @@ pub fn resultant<F: Field>(p: &Poly<F>, q: &Poly<F>) -> F {
     let mut g = F::one();
     let mut h = F::one();
     loop {
+        crate::budget::checkpoint();
         let (Some(da), Some(db)) = (a.degree(), b.degree()) else {
             return F::zero();
         };
@@ -254,6 +255,7 @@ pub fn resultant_poly(p: &Poly<Poly<Rational>>, q: &Poly<Poly<Rational>>) -> Pol
     let mut xs: Vec<Rational> = Vec::with_capacity(npts);
     let mut ys: Vec<Rational> = Vec::with_capacity(npts);
     for k in 0..npts {
+        crate::budget::checkpoint();
         let half = (k as i64 + 1) / 2;
         let t = Rational::from(if k % 2 == 1 { half } else { -half });
         let pt = Poly::new(p.coeffs().iter().map(|c| c.eval(&t)).collect());
@@ -271,6 +273,7 @@ fn interpolate(xs: &[Rational], ys: &[Rational]) -> Poly<Rational> {
     let npts = xs.len().min(ys.len());
     let mut c: Vec<Rational> = ys[..npts].to_vec();
     for j in 1..npts {
+        crate::budget::checkpoint();
         for i in (j..npts).rev() {
             let den = &xs[i] - &xs[i - j];
             let num = &c[i] - &c[i - 1];

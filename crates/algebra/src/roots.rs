@@ -288,6 +288,7 @@ impl IntPoly {
         let mut e = self.degree() - db + 1;
         let mut r = self.c.clone();
         while r.len() >= b.c.len() {
+            crate::budget::checkpoint();
             let lr = r.last().cloned().unwrap_or(IBig::ZERO);
             let shift = r.len() - b.c.len();
             for x in r.iter_mut() {
@@ -343,6 +344,7 @@ impl IntPoly {
         let mut g = IBig::ONE;
         let mut h = IBig::ONE;
         loop {
+            crate::budget::checkpoint();
             let delta = a.degree() - b.degree();
             let r = a.prem(&b);
             if r.is_zero() {
@@ -425,6 +427,7 @@ impl IntPoly {
         // Taylor shift a(t + lo).
         if !lo.is_zero() {
             for i in 0..n {
+                crate::budget::checkpoint();
                 for j in (i..n).rev() {
                     let add = lo * &a[j + 1];
                     a[j] += add;
@@ -565,6 +568,7 @@ fn isolate_open(q: &IntPoly, lo: &Rational, hi: &Rational) -> Vec<RootInterval> 
     let w = hi - lo;
     let mut stack: Vec<(Vec<IBig>, usize, UBig)> = vec![(q.bernstein_on(lo, hi), 0, UBig::ZERO)];
     while let Some((b, depth, k)) = stack.pop() {
+        crate::budget::checkpoint();
         let v = sign_variations(&b);
         if v == 0 {
             continue;
@@ -615,6 +619,7 @@ fn refine_int(
     let mut e: usize = 2;
     let mut iter = 0usize;
     while *lo < *hi && !stop(lo, hi) {
+        crate::budget::checkpoint();
         if max_iter.is_some_and(|m| iter >= m) {
             return;
         }

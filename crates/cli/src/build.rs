@@ -152,16 +152,29 @@ pub fn check_object(
     }
 }
 
-/// Runs an op, turning a panic into an error (no input may crash the CLI).
+/// Runs an op, turning a panic into an error (no input may crash the CLI), under the
+/// work budget of [`Limits::seconds`](crate::limits::Limits) (nested in any budget the
+/// caller installed): a construction still working at its deadline ends at its next
+/// checkpoint with "work limit exceeded" (an input error, exit 2).
 pub fn run_op(op: &OpSpec, args: &OpArgs) -> Result<Vec<Object>, OpError> {
     run_build(op.build, args)
 }
 
-/// Runs a build function (an op's, or its float path's), turning a panic into an error.
+/// Runs a build function (an op's, or its float path's) under the work budget, turning a
+/// panic into an error.
 fn run_build(build: ops::BuildFn, args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let _budget = crate::limits::Limits::current()
+        .work_limit()
+        .map(rcagd_algebra::budget::install);
     match catch_unwind(AssertUnwindSafe(|| build(args))) {
         Ok(r) => r,
         Err(payload) => {
+            if let Some(e) = rcagd_algebra::budget::as_work_limit(&*payload) {
+                return Err(OpError::new(crate::limits::work_limit_message(
+                    args.name(),
+                    e,
+                )));
+            }
             let msg = payload
                 .downcast_ref::<&str>()
                 .map(|s| s.to_string())
@@ -226,7 +239,16 @@ pub fn build_object_with(
             }
         },
     };
-    run_build(build, &args).map_err(|e| {
+    let checked = run_build(build, &args).and_then(|objs| f64_overflow(&args, objs));
+    checked.map_err(|mut e| {
+        // an `f64` computation that overflowed shows `inf`/`NaN` in whatever it says
+        // ("√(inf) is irrational", …): the input is too large for f64, say which
+        if let Some(large) = crate::limits::large_input(&args).filter(|_| {
+            crate::limits::shows_non_finite(&e.message) && !e.message.starts_with("input too large")
+        }) {
+            e.param = Some(large.0);
+            e.message = crate::limits::too_large_for_f64(large, &e.message);
+        }
         let span = e
             .param
             .and_then(|p| obj.params.iter().find(|x| x.key == p))
@@ -239,6 +261,28 @@ pub fn build_object_with(
             ),
         )]
     })
+}
+
+/// An object whose `f64` certificate failed with a non-finite residual (`inf`, `NaN`)
+/// while an input number is large ([`crate::limits::large_input`]): the `f64`
+/// computation overflowed, an input error ("input too large for f64", exit 2, nothing
+/// written) rather than a failed certificate.
+fn f64_overflow(args: &OpArgs, objs: Vec<Object>) -> Result<Vec<Object>, OpError> {
+    let overflow = objs.iter().find_map(|o| {
+        o.certificates
+            .iter()
+            .find(|c| !c.holds && crate::limits::shows_non_finite(&c.to_string()))
+            .map(|c| format!("certificate of {:?}: {c}", o.name))
+    });
+    match overflow.zip(crate::limits::large_input(args)) {
+        None => Ok(objs),
+        Some((what, large)) => {
+            let param = large.0;
+            let mut e = OpError::new(crate::limits::too_large_for_f64(large, &what));
+            e.param = Some(param);
+            Err(e)
+        }
+    }
 }
 
 /// Builds every object of a recipe, calling `progress(name)` after each one.
@@ -264,10 +308,13 @@ pub fn build_recipe_with(
     arithmetic: Arithmetic,
     progress: impl Fn(&str) + Sync,
 ) -> Result<Vec<Object>, Vec<Diagnostic>> {
+    // the caller's work budget (the fuzzer's per case) holds on the worker threads too
+    let budget = rcagd_algebra::budget::current();
     let built: Vec<_> = recipe
         .objects
         .par_iter()
         .map(|obj| {
+            let _budget = budget.map(rcagd_algebra::budget::install_budget);
             let r = build_object_with(&recipe.file, obj, arithmetic);
             progress(&obj.name);
             r
@@ -486,7 +533,7 @@ pub fn run(
         },
         Some(dir) => {
             if let Err(e) = output::write_objects(dir, &objects, &formats) {
-                errln!("error: {e}");
+                errln!("error: {}", crate::limits::export_error(&e));
                 return EXIT_INPUT;
             }
         }

@@ -10,6 +10,13 @@
 //! command-line option of `rcagd build` that raises it; the error names the limit and the
 //! option.
 //!
+//! The work of one op is bounded as well, not by its input size but by time: every
+//! object's construction runs under a work budget of [`Limits::seconds`]
+//! (`--max-seconds`, default [`DEFAULT_SECONDS`]; [`rcagd_algebra::budget`]), whose
+//! checkpoints in the exact algebra end it with the error "work limit exceeded:
+//! building NAME took more than N s (raise with --max-seconds)" (exit 2, nothing
+//! written).
+//!
 //! The limits are process-wide settings (`rcagd build` sets them once from its options),
 //! so that the number reader of every op sees them without threading them through the op
 //! registry.
@@ -39,6 +46,10 @@ pub const DEFAULT_SAMPLES: usize = 1_000;
 /// Default largest spread of the input numbers of one object, in decimal orders of
 /// magnitude: `log10(max |x| / min |x|)` over its non-zero numbers.
 pub const DEFAULT_MAGNITUDE: u32 = 20;
+/// Default work budget of one object's construction, in seconds (0: none). Ten minutes:
+/// every gallery object, op example and test input builds in a few seconds, so only a
+/// computation that would run far longer meets it.
+pub const DEFAULT_SECONDS: u64 = 600;
 
 static RECIPE_BYTES: AtomicU64 = AtomicU64::new(DEFAULT_RECIPE_BYTES);
 static OBJECTS: AtomicUsize = AtomicUsize::new(DEFAULT_OBJECTS);
@@ -47,6 +58,7 @@ static DEGREE: AtomicUsize = AtomicUsize::new(DEFAULT_DEGREE);
 static POINTS: AtomicUsize = AtomicUsize::new(DEFAULT_POINTS);
 static SAMPLES: AtomicUsize = AtomicUsize::new(DEFAULT_SAMPLES);
 static MAGNITUDE: AtomicUsize = AtomicUsize::new(DEFAULT_MAGNITUDE as usize);
+static SECONDS: AtomicU64 = AtomicU64::new(DEFAULT_SECONDS);
 
 /// The limits of one run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -66,6 +78,9 @@ pub struct Limits {
     /// Largest spread of the magnitudes of one object's input numbers, in decimal orders
     /// (`--max-magnitude`).
     pub magnitude: u32,
+    /// Work budget of one object's construction in seconds, 0 for none
+    /// (`--max-seconds`).
+    pub seconds: u64,
 }
 
 impl Default for Limits {
@@ -78,6 +93,7 @@ impl Default for Limits {
             points: DEFAULT_POINTS,
             samples: DEFAULT_SAMPLES,
             magnitude: DEFAULT_MAGNITUDE,
+            seconds: DEFAULT_SECONDS,
         }
     }
 }
@@ -92,6 +108,7 @@ impl Limits {
         POINTS.store(self.points, Ordering::Relaxed);
         SAMPLES.store(self.samples, Ordering::Relaxed);
         MAGNITUDE.store(self.magnitude as usize, Ordering::Relaxed);
+        SECONDS.store(self.seconds, Ordering::Relaxed);
     }
 
     /// The process-wide limits.
@@ -104,8 +121,81 @@ impl Limits {
             points: POINTS.load(Ordering::Relaxed),
             samples: SAMPLES.load(Ordering::Relaxed),
             magnitude: u32::try_from(MAGNITUDE.load(Ordering::Relaxed)).unwrap_or(u32::MAX),
+            seconds: SECONDS.load(Ordering::Relaxed),
         }
     }
+
+    /// The work budget of one object's construction (`None` for `seconds = 0`).
+    pub fn work_limit(&self) -> Option<std::time::Duration> {
+        (self.seconds > 0).then(|| std::time::Duration::from_secs(self.seconds))
+    }
+}
+
+/// Whether a message shows a non-finite `f64` (`inf`, `-inf`, `NaN` as a word): an `f64`
+/// computation overflowed (or computed `inf − inf`, `0·inf`) on the way.
+pub fn shows_non_finite(text: &str) -> bool {
+    text.split(|c: char| !c.is_alphanumeric())
+        .any(|w| matches!(w, "inf" | "NaN" | "nan"))
+}
+
+/// Inputs from this decimal order on can overflow an `f64` computation of moderate
+/// degree (a product of 20 such coordinates exceeds 1.8e308); below it a non-finite
+/// intermediate is taken for something else (`0/0` of degenerate data), not for size.
+pub const F64_LARGE_ORDER: f64 = 15.0;
+
+/// The parameter of an object holding its input number of largest magnitude, with that
+/// number (shortened to `≈ 1eN` when long), when that number is at least
+/// 10^[`F64_LARGE_ORDER`] in magnitude (large enough to overflow `f64` products).
+pub fn large_input(args: &crate::ops::OpArgs) -> Option<(&'static str, String)> {
+    let mut best: Option<(&'static str, f64, &Rational)> = None;
+    for p in args.op().params {
+        let Some(v) = args.get(p.name) else {
+            continue;
+        };
+        for x in numbers(v) {
+            if let Some(l) = log10_abs(x) {
+                if best.is_none_or(|(_, b, _)| l > b) {
+                    best = Some((p.name, l, x));
+                }
+            }
+        }
+    }
+    best.filter(|(_, l, _)| *l >= F64_LARGE_ORDER)
+        .map(|(name, _, x)| (name, short(x)))
+}
+
+/// The message of an `f64` computation that overflowed: names the input to blame (the
+/// parameter with the largest number) and what showed the overflow.
+pub fn too_large_for_f64(largest: (&str, String), what: &str) -> String {
+    let who = format!("`{}` (its largest number is {})", largest.0, largest.1);
+    format!(
+        "input too large for f64: {who}: the floating-point computation overflowed ({}); \
+         f64 ends near 1.8e308 and the construction multiplies coordinates, so rescale the \
+         data to numbers of moderate size",
+        crate::source::clip(what)
+    )
+}
+
+/// An exporter's error, said as "input too large for f64" when it shows a non-finite
+/// number (exact coordinates beyond the `f64` range of a floating-point format).
+pub fn export_error(e: &str) -> String {
+    if shows_non_finite(e) && !e.starts_with("input too large") {
+        format!(
+            "input too large for f64: {e}; the object's exact coordinates exceed the f64 \
+             range (±1.8e308) of the format: rescale the data"
+        )
+    } else {
+        e.to_string()
+    }
+}
+
+/// The message of a construction that ran out of its work budget.
+pub fn work_limit_message(name: &str, e: rcagd_algebra::budget::WorkLimitExceeded) -> String {
+    format!(
+        "work limit exceeded: building {:?} took more than {} s (raise with --max-seconds)",
+        crate::source::clip(name),
+        rcagd_algebra::budget::secs(e.limit)
+    )
 }
 
 /// `log10 |x|` of a non-zero rational to about 15 significant digits (from the leading
@@ -382,6 +472,43 @@ mod tests {
         assert_eq!(digit_count("-2.5e-300"), 2);
         assert_eq!(digit_count("0x1F"), 3);
         assert_eq!(digit_count("1.5/20"), 4);
+    }
+
+    #[test]
+    fn non_finite_numbers_are_recognised_as_words_and_said_as_too_large() {
+        assert!(shows_non_finite("|c| = √(inf) is irrational"));
+        assert!(shows_non_finite("residual NaN·t^16 + 1"));
+        assert!(shows_non_finite("the number -inf cannot be written"));
+        assert!(!shows_non_finite("a point at infinity (weight 0)"));
+        assert!(!shows_non_finite("information: 1e300"));
+        let e = export_error("a.step: the number inf cannot be written");
+        assert!(e.starts_with("input too large for f64: a.step"), "{e}");
+        assert_eq!(export_error(&e), e);
+        assert_eq!(export_error("a plain error"), "a plain error");
+        let m = too_large_for_f64(("d_s", "≈ 1e300".into()), "√(inf)");
+        assert!(
+            m.starts_with("input too large for f64: `d_s` (its largest number is ≈ 1e300)"),
+            "{m}"
+        );
+        let w = work_limit_message(
+            "a",
+            rcagd_algebra::budget::WorkLimitExceeded {
+                limit: std::time::Duration::from_secs(2),
+            },
+        );
+        assert_eq!(
+            w,
+            "work limit exceeded: building \"a\" took more than 2 s (raise with --max-seconds)"
+        );
+        assert_eq!(
+            Limits::default().work_limit(),
+            Some(std::time::Duration::from_secs(600))
+        );
+        let none = Limits {
+            seconds: 0,
+            ..Limits::default()
+        };
+        assert_eq!(none.work_limit(), None);
     }
 
     #[test]

@@ -4,8 +4,8 @@
 //!   write JSON/STEP/IGES/OBJ/SVG/PNG and the exact sidecar per object, `report.json` and `index.html`;
 //! * `rcagd build RECIPE [--out DIR] [--format json|step|iges|exact|obj|stl|ply|gltf|svg|png]…`
 //!   `[--max-recipe-bytes N] [--max-objects N] [--max-digits N] [--max-degree N] [--max-points N]`
-//!   `[--max-samples N] [--max-magnitude N] [--progress] [--float]` — build a user's recipe (the limits:
-//!   `rcagd_cli::limits`; `--float`: `rcagd_cli::float`);
+//!   `[--max-samples N] [--max-magnitude N] [--max-seconds N] [--progress] [--float]` — build a
+//!   user's recipe (the limits: `rcagd_cli::limits`; `--float`: `rcagd_cli::float`);
 //! * `rcagd ops [NAME] [--markdown]` — the op reference;
 //! * `rcagd fuzz [--cases N] [--seed S] [--op NAME] [--corpus DIR] [--case-seconds T] [--huge]` —
 //!   the structured fuzzer over the op registry (`rcagd_cli::fuzz`).
@@ -91,6 +91,10 @@ enum Command {
         /// Largest spread of one object's input numbers, in decimal orders of magnitude.
         #[arg(long, value_name = "N", default_value_t = rcagd_cli::limits::DEFAULT_MAGNITUDE)]
         max_magnitude: u32,
+        /// Work budget of one object's construction, in seconds (0: none); a longer
+        /// construction ends with "work limit exceeded" (exit 2, nothing written).
+        #[arg(long, value_name = "N", default_value_t = rcagd_cli::limits::DEFAULT_SECONDS)]
+        max_seconds: u64,
         /// Show progress per object on standard error (default: only on a terminal).
         #[arg(long)]
         progress: bool,
@@ -140,6 +144,7 @@ fn main() -> ExitCode {
             max_points,
             max_samples,
             max_magnitude,
+            max_seconds,
             progress,
             float,
         } => {
@@ -151,6 +156,7 @@ fn main() -> ExitCode {
                 points: max_points,
                 samples: max_samples,
                 magnitude: max_magnitude,
+                seconds: max_seconds,
             }
             .install();
             let arithmetic = if float {

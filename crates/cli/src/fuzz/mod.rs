@@ -7,7 +7,10 @@
 //! recipe limits, `1/0`, wrong kinds, nested lists, odd keys and names). Each case runs
 //! in-process through the path `rcagd build` takes (parse → build → every exporter
 //! into memory: JSON, STEP, IGES, OBJ, STL, PLY, glTF, SVG, exact NURBS, PNG), under
-//! `catch_unwind`, on a worker thread that is abandoned after `--case-seconds`; for some
+//! `catch_unwind`, on a worker thread, under a work budget of `--case-seconds`
+//! ([`rcagd_algebra::budget`]: the case's exact work ends at its next checkpoint after
+//! the deadline, and the thread with it); a thread still running a few seconds after
+//! the deadline (work without checkpoints) is abandoned. For some
 //! of the cases that build, truncated, garbled and adversarial variants of the STEP and
 //! IGES files are fed to the readers ([`readers`]).
 //!
@@ -173,6 +176,9 @@ pub fn evaluate(file_name: &str, text: &str) -> Outcome {
             let m = joined_messages(&d);
             let f = if m.contains("the construction panicked") {
                 Some(FindingKind::Panic)
+            } else if m.contains(WORK_LIMIT) {
+                // the case's (or the op's) work budget ended it: a timeout, stopped
+                Some(FindingKind::Timeout)
             } else {
                 internal(&m).then_some(FindingKind::Internal)
             };
@@ -188,6 +194,14 @@ pub fn evaluate(file_name: &str, text: &str) -> Outcome {
     for o in &objects {
         for f in FORMATS {
             match catch_unwind(AssertUnwindSafe(|| output::render(o, f))) {
+                Err(p) if rcagd_algebra::budget::as_work_limit(&*p).is_some() => {
+                    return fail(
+                        2,
+                        &format!("export {}", f.label()),
+                        format!("{WORK_LIMIT}: exporting {:?} as {}", o.name, f.label()),
+                        Some(FindingKind::Timeout),
+                    );
+                }
                 Err(p) => {
                     return fail(
                         101,
@@ -200,7 +214,8 @@ pub fn evaluate(file_name: &str, text: &str) -> Outcome {
                     if internal(&e) {
                         finding = Some(FindingKind::Internal);
                     }
-                    export_error.get_or_insert((f.label().to_string(), e));
+                    export_error
+                        .get_or_insert((f.label().to_string(), crate::limits::export_error(&e)));
                 }
                 Ok(Ok(bytes)) => {
                     let kind = match f {
@@ -254,8 +269,20 @@ pub fn evaluate(file_name: &str, text: &str) -> Outcome {
     }
 }
 
-/// The result of a case run with a time limit: `None` when it did not finish in time
-/// (its thread is left running; the process ends it on exit).
+/// The start of the message of a construction (or export) that ran out of its work
+/// budget.
+pub const WORK_LIMIT: &str = "work limit exceeded";
+
+/// How long past its work budget a case may take to end (its next checkpoint, the
+/// unwinding, the exporters' work after a checkpoint) before its thread is abandoned.
+fn grace(limit: Duration) -> Duration {
+    limit / 2 + Duration::from_secs(5)
+}
+
+/// The result of a case run on a worker thread under a work budget of `limit`
+/// ([`rcagd_algebra::budget`], so that its exact work ends soon after the deadline):
+/// `None` when it did not finish within `limit` and [`grace`] (its thread is left
+/// running; the process ends it on exit).
 fn with_limit<T: Send + 'static>(
     limit: Duration,
     f: impl FnOnce() -> T + Send + 'static,
@@ -265,15 +292,18 @@ fn with_limit<T: Send + 'static>(
         .name("rcagd-fuzz-case".into())
         .stack_size(8 << 20)
         .spawn(move || {
+            let _budget = rcagd_algebra::budget::install(limit);
             let _ = tx.send(f());
         });
     if spawned.is_err() {
         return None;
     }
-    rx.recv_timeout(limit).ok()
+    rx.recv_timeout(limit + grace(limit)).ok()
 }
 
-/// Evaluates a recipe with a time limit; a case over the limit is a timeout finding.
+/// Evaluates a recipe under a work budget of `limit`; a case over the limit is a timeout
+/// finding (ended by the budget: exit 2 with "work limit exceeded"; not ended within
+/// the grace time: exit 1, "still running").
 pub fn evaluate_limited(file_name: &str, text: &str, limit: Duration) -> (Outcome, Duration) {
     let start = Instant::now();
     let (n, t) = (file_name.to_string(), text.to_string());
@@ -283,12 +313,29 @@ pub fn evaluate_limited(file_name: &str, text: &str, limit: Duration) -> (Outcom
     }
 }
 
+/// The work budget a corpus recipe asks for in a `# max-seconds: N` header line (an
+/// input that is slow by nature: it must end with "work limit exceeded" under it).
+pub fn expected_seconds(text: &str) -> Option<f64> {
+    text.lines()
+        .take_while(|l| l.starts_with('#'))
+        .find_map(|l| l.strip_prefix("# max-seconds: "))
+        .and_then(|n| n.trim().parse().ok())
+        .filter(|s: &f64| s.is_finite() && *s > 0.0)
+}
+
 /// Reads a file with a reader under `catch_unwind`: `Err(panic message)` on a panic.
 ///
 /// # Errors
 /// The panic message.
 pub fn read_no_panic(kind: FileKind, text: &str) -> Result<Result<usize, String>, String> {
-    catch_unwind(AssertUnwindSafe(|| kind.read(text))).map_err(|p| panic_message(&*p))
+    match catch_unwind(AssertUnwindSafe(|| kind.read(text))) {
+        Ok(r) => Ok(r),
+        // the case's work budget ran out while reading: not a panic of the reader
+        Err(p) if rcagd_algebra::budget::as_work_limit(&*p).is_some() => {
+            Ok(Err(format!("{WORK_LIMIT} while reading")))
+        }
+        Err(p) => Err(panic_message(&*p)),
+    }
 }
 
 /// The options of `rcagd fuzz` (also its command-line arguments).
@@ -306,7 +353,8 @@ pub struct Options {
     /// Write each finding (a minimal recipe or reader file) into DIR.
     #[arg(long, value_name = "DIR")]
     pub corpus: Option<PathBuf>,
-    /// Time limit of one case, in seconds (a longer case is a finding).
+    /// Time limit of one case, in seconds: the case's work budget (a case still working
+    /// then ends with "work limit exceeded"; a longer case is a finding).
     #[arg(long, value_name = "T", default_value_t = 10.0)]
     pub case_seconds: f64,
     /// Print every recipe before running it (to standard error).
@@ -316,8 +364,9 @@ pub struct Options {
     /// (reported as timeouts).
     #[arg(long)]
     pub huge: bool,
-    /// Stop after N cases ran past the time limit (each keeps a thread busy until
-    /// the process ends).
+    /// Stop after N cases were abandoned: still running `--case-seconds`/2 + 5 s past
+    /// their budget (work without a checkpoint; each keeps a thread busy until the
+    /// process ends).
     #[arg(long, value_name = "N", default_value_t = 3)]
     pub max_abandoned: u32,
 }
@@ -470,10 +519,28 @@ pub fn replay(path: &Path, limit: Duration) -> Result<Duration, String> {
     }
     let expect = expected_exit(&text)
         .ok_or_else(|| format!("{}: no `# expect: exit N` line", path.display()))?;
-    let (o, t) = evaluate_limited(&path.display().to_string(), &text, limit);
+    let budget = expected_seconds(&text);
+    let (o, t) = evaluate_limited(
+        &path.display().to_string(),
+        &text,
+        budget.map_or(limit, |s| limit.min(Duration::from_secs_f64(s))),
+    );
+    // under its `# max-seconds` budget, the named work-limit error is the expected end
+    let stopped = budget.is_some()
+        && o.exit == 2
+        && o.finding == Some(FindingKind::Timeout)
+        && o.message.contains(WORK_LIMIT);
+    if stopped && t > limit {
+        return Err(format!(
+            "{}: the work limit ended it only after {:.1} s",
+            path.display(),
+            t.as_secs_f64()
+        ));
+    }
     if let Some(k) = o
         .finding
         .filter(|k| *k != FindingKind::Certificate || expect != 1)
+        .filter(|_| !stopped)
     {
         return Err(format!(
             "{}: {} at {}: {}",
@@ -545,6 +612,8 @@ pub fn run(opts: &Options) -> u8 {
         let mut reader_rng = rng.clone();
         let t2 = text.clone();
         let started = Instant::now();
+        // under the case's work budget (installed by `with_limit`): a case still working
+        // at `limit` ends at its next checkpoint, so its thread does not run on
         let result = with_limit(limit, move || {
             let o = evaluate("fuzz.toml", &t2);
             let mut bad: Option<(FileKind, String, String)> = None;

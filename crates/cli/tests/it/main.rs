@@ -2,6 +2,7 @@
 //! see docs/ARCHITECTURE.md, "Tests").
 
 mod analysis_ops;
+mod budget;
 mod canal_cyclographic_op;
 mod cli;
 mod common;

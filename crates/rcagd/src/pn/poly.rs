@@ -419,6 +419,7 @@ pub(crate) fn to_local<F: Scalar>(p: &MPoly<F>, d: &Domain<F>) -> MPoly<F> {
 fn taylor_shift<F: Scalar>(c: &mut [F], a: &F, h: &F) {
     let deg = c.len().saturating_sub(1);
     for k in 0..deg {
+        rcagd_algebra::budget::checkpoint();
         for i in (k..deg).rev() {
             let next = c[i + 1].clone();
             c[i] = c[i].clone() + a.clone() * next;
@@ -885,6 +886,7 @@ pub(crate) fn gcd2<F: Scalar>(p: &MPoly<F>, q: &MPoly<F>) -> MPoly<F> {
         std::mem::swap(&mut a, &mut b);
     }
     let pp = loop {
+        rcagd_algebra::budget::checkpoint();
         if b.is_empty() {
             break a;
         }
