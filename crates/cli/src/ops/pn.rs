@@ -17,7 +17,7 @@ use crate::model::{Geometry, Object};
 use crate::value::{ParamKind, Value};
 use rcagd::laguerre::LaguerreMap;
 use rcagd::pn::developable::DevelopablePn;
-use rcagd::pn::hypercyclide::{CyclographicImage, Hypercyclide, PeSimilarity, RegularQuadric};
+use rcagd::pn::hypercyclide::{QuadricPn, CyclographicImage, Hypercyclide, PeSimilarity, RegularQuadric};
 use rcagd::pn::modeling::{HermiteDatum, PnModel};
 use rcagd::laguerre::Cycle;
 use rcagd::pn::motion::{
@@ -1264,7 +1264,7 @@ fn hypercyclide_objects(args: &OpArgs, h: &Hypercyclide<Q>) -> Result<Vec<Object
 
 const PN_QUADRIC: OpSpec = OpSpec {
     name: "pn_quadric",
-    summary: "a regular quadric (ellipsoid, two-sheet hyperboloid, elliptic paraboloid) in its principal frame as a PN surface with exact rational offsets (Peternell Thm 4.6): envelope of the cones of revolution of the rulings of the ruled quadric ψ of the pencil φ* + μΩ*",
+    summary: "a regular quadric (ellipsoid, two-sheet hyperboloid, elliptic paraboloid) in its principal frame as a PN surface with exact rational offsets (Peternell Thm 4.6): envelope of the cones of revolution of the rulings of the ruled quadric ψ of the pencil φ* + μΩ*; a two-sheet hyperboloid whose rulings give no rational family falls back to the unirational parametrization of pn_two_sheet_hyperboloid (parameters τ, σ; it covers the wedge |z| ≥ k|x − a| of both sheets, docs/math/hypercyclides.md#two-sheet-region)",
     params: &[
         QUADRIC_KIND,
         QA,
@@ -1275,7 +1275,7 @@ const PN_QUADRIC: OpSpec = OpSpec {
             "domain",
             ParamKind::Numbers,
             "[\"1/4\", \"3/4\", -1, 1]",
-            "parameter rectangle [s0, s1, u0, u1] (s: the double-cover parameter of the rulings, u: along the characteristic conics)",
+            "parameter rectangle [s0, s1, u0, u1] (s: the double-cover parameter of the rulings, u: along the characteristic conics); for the two-sheet hyperboloid (unirational construction) [τ0, τ1, σ0, σ1], avoiding σ = 0 (the vertex)",
         ),
         OFFSET,
         ORIENTATION,
@@ -1296,9 +1296,10 @@ distances = [1]
 };
 
 fn build_pn_quadric(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let h = Hypercyclide::<Q>::quadric(regular_quadric(args)?, first_family(args))
-        .map_err(blame("a"))?;
-    hypercyclide_objects(args, &h)
+    match QuadricPn::<Q>::new(regular_quadric(args)?, first_family(args)).map_err(blame("a"))? {
+        QuadricPn::Rulings(h) => hypercyclide_objects(args, &h),
+        QuadricPn::TwoSheet { pn, .. } => two_sheet_objects(args, &pn),
+    }
 }
 
 const PN_TWO_SHEET: OpSpec = OpSpec {
@@ -1332,8 +1333,26 @@ domain = ["3/2", 3, "1/4", 1]
 fn build_pn_two_sheet(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let h = TwoSheetPn::<Q>::new(args.number("a")?, args.number("b")?, args.number("c")?)
         .map_err(blame("c"))?;
-    let certs = vec![h.quadric_certificate()];
-    surface_objects(args, &oriented(args, h.surface()), &domain(args)?, certs, "domain")
+    two_sheet_objects(args, &h)
+}
+
+/// The objects of the two-sheet hyperboloid's unirational PN parametrization with the
+/// tangency certificates on the base surface and on every offset.
+fn two_sheet_objects(args: &OpArgs, h: &TwoSheetPn<Q>) -> Result<Vec<Object>, OpError> {
+    let s = oriented(args, h.surface());
+    let mut certs = vec![h.quadric_certificate()];
+    certs.extend(h.tangency_certificates(h.surface()));
+    if let Some(d) = main_offset(args)? {
+        certs.extend(h.tangency_certificates(s.offset(d).surface()));
+    }
+    let mut objs = surface_objects(args, &s, &domain(args)?, certs, "domain")?;
+    for (k, d) in distances(args)?.into_iter().enumerate() {
+        if let Some(o) = objs.get_mut(k + 1) {
+            o.certificates
+                .extend(h.tangency_certificates(s.offset(d).surface()));
+        }
+    }
+    Ok(objs)
 }
 
 const HYPERCYCLIDE: OpSpec = OpSpec {

@@ -37,9 +37,9 @@ impl<F: Scalar> HyperconeEnvelope<F> {
     /// `P₁² + P₂² = |M|² − R²` may be given; otherwise it is found exactly.
     ///
     /// # Errors
-    /// [`NdimError::InvalidInput`] for wrong lengths, a dependence on other variables, or
-    /// `β = R + Mₙ ≡ 0` (the sphere `d'(t)` is a hyperplane: exchange the last coordinate with
-    /// another); [`NdimError::Degenerate`] for `|M|² ≡ R²` (isotropic cycle pairs: the
+    /// [`NdimError::InvalidInput`] for wrong lengths or a dependence on other variables
+    /// (`β = R + Mₙ ≡ 0` is the linear case: `d'(t)` is a hyperplane, parametrized
+    /// linearly); [`NdimError::Degenerate`] for `|M|² ≡ R²` (isotropic cycle pairs: the
     /// cycles touch, `d'(t)` has radius 0) or a degenerate Gauss image;
     /// [`NdimError::NoRationalPoint`] if `|M|² − R²` is no sum of two squares over `Q(t)`.
     pub fn new(
@@ -73,9 +73,7 @@ impl<F: Scalar> HyperconeEnvelope<F> {
         let rr = lift(&(&r1 - &r2));
         let beta = clean(&(&rr + &mm[n - 1]));
         if beta.is_zero() {
-            return Err(NdimError::InvalidInput(
-                "β = (r₁ − r₂) + (m₁ − m₂)ₙ ≡ 0: the sphere d'(t) (5.6) is a hyperplane; exchange the last coordinate with another".into(),
-            ));
+            return Self::linear_case(m1, r1, m2, r2, &mm, &rr);
         }
         let disc = clean(&(&dot(&mm, &mm) - &(&rr * &rr)));
         if disc.is_zero() {
@@ -149,12 +147,79 @@ impl<F: Scalar> HyperconeEnvelope<F> {
         })
     }
 
+    /// The linear case `β = R + Mₙ ≡ 0` (Peternell's remark after Theorem 4.5 / 5.1: `d'(t)`
+    /// is a hyperplane, parametrized linearly; docs/math/n-dimensional.md#hypercone-linear-case).
+    /// Subtracting the isotropic spheres (5.12) of the two cycles,
+    /// `2yₙ + rᵢ(S + 1) + mᵢₙ(S − 1) + 2mᵢ′·y′ = 0` (`S = |y′|²`), gives
+    /// `βS + (R − Mₙ) + 2M′·y′ = 0`, i.e. `M′·y′ = −R` for `β ≡ 0`: the hyperplane through
+    /// `y₀ = −R M′/|M′|²` with the directions `vⱼ = M_k eⱼ − Mⱼ e_k` (`j ≠ k`, `M_k ≢ 0`), so
+    /// `y′ = (−R M′ + |M′|² Σ uⱼ vⱼ)/|M′|²` and `yₙ` from (5.12) with `i = 1`. No sum of two
+    /// squares is needed (`|M|² − R² = |M′|²`); `p()` is `(0, 0)`.
+    fn linear_case(
+        m1: Vec<MPoly<F>>,
+        r1: MPoly<F>,
+        m2: Vec<MPoly<F>>,
+        r2: MPoly<F>,
+        mm: &[MPoly<F>],
+        rr: &MPoly<F>,
+    ) -> Result<Self, NdimError> {
+        let n = m1.len();
+        let nv = n - 1;
+        let lift = |x: &MPoly<F>| &MPoly::zero(nv) + x;
+        let mp = &mm[..nv];
+        let Some(k) = (0..nv).find(|&j| !clean(&mp[j]).is_zero()) else {
+            return Err(NdimError::Degenerate(
+                "β ≡ 0 and m₁ − m₂ is parallel to the last axis: the cycles touch for every t (|M|² ≡ R²), no real hypercone".into(),
+            ));
+        };
+        let q = dot(mp, mp);
+        let others: Vec<usize> = (0..nv).filter(|&j| j != k).collect();
+        let z: Vec<MPoly<F>> = (0..nv)
+            .map(|i| {
+                let mut acc = -(rr * &mp[i]);
+                for (idx, &j) in others.iter().enumerate() {
+                    let u = MPoly::var(nv, idx + 1);
+                    // vⱼ = M_k eⱼ − Mⱼ e_k
+                    let vji = if i == j {
+                        mp[k].clone()
+                    } else if i == k {
+                        -mp[j].clone()
+                    } else {
+                        continue;
+                    };
+                    acc = &acc + &(&(&q * &vji) * &u);
+                }
+                clean(&acc)
+            })
+            .collect();
+        let two = F::from_i64(2);
+        let s = dot(&z, &z);
+        let qq = &q * &q;
+        let m1l: Vec<MPoly<F>> = m1.iter().map(lift).collect();
+        let yn = -(&(&(&lift(&r1) * &(&s + &qq)) + &(&m1l[n - 1] * &(&s - &qq)))
+            + &(&q * &dot(&m1l[..nv], &z)).scale(&two));
+        let qn = qq.scale(&two);
+        let mut y = z;
+        y.push(clean(&yn));
+        let surface = PnHypersurface::from_isotropic(&y, &q, &qn)?.named(format!(
+            "envelope of sphere-hypercones in R^{n} (Theorem 5.1, linear case β ≡ 0)"
+        ));
+        let zero = RatFn::poly(MPoly::zero(1));
+        Ok(HyperconeEnvelope {
+            centers: [m1, m2],
+            radii: [r1, r2],
+            p: [zero.clone(), zero],
+            surface,
+        })
+    }
+
     /// The envelope, a PN hypersurface in `(t, u₁, …, u_{n−2})`.
     pub fn surface(&self) -> &PnHypersurface<F> {
         &self.surface
     }
 
-    /// The sum of two squares `(P₁, P₂)` used for `f(t)` (5.10).
+    /// The sum of two squares `(P₁, P₂)` used for `f(t)` (5.10) (`(0, 0)` in the linear
+    /// case `β ≡ 0`, which needs none).
     pub fn p(&self) -> &[RatFn<F>; 2] {
         &self.p
     }

@@ -45,6 +45,7 @@
 use super::poly::{dot3, identity_cert, scalar_sqrt, zero_cert, RatFn};
 use super::ruled::{ConeFamilyEnvelope, CycleFamily};
 use super::surface::PnSurface;
+use super::two_sheet::TwoSheetPn;
 use super::PnError;
 use crate::error::format_scalar;
 use crate::Certified;
@@ -969,6 +970,89 @@ impl<F: Scalar> Certified for Hypercyclide<F> {
         out.extend(self.envelope.certify());
         out.extend(self.image_certificates(self.surface()));
         out
+    }
+}
+
+/// A regular quadric as a PN surface (Peternell Theorem 4.6) through one entry point:
+/// the envelope of the cones of the rulings of `ψ` ([`Hypercyclide::quadric`]) where that
+/// construction finds a rational family, and for the two-sheet hyperboloid, where it
+/// does not (module docs; no example is known where it does), the unirational
+/// parametrization [`TwoSheetPn`] (docs/math/hypercyclides.md#two-sheet-unirational),
+/// which exists for every rational `a, b, c`.
+#[derive(Debug, Clone)]
+pub enum QuadricPn<F> {
+    /// The envelope of the cones of the rulings of `ψ` (parameters `(S, u)`).
+    Rulings(Box<Hypercyclide<F>>),
+    /// The two-sheet hyperboloid by [`TwoSheetPn`] (parameters `(τ, σ)`), with the reason
+    /// the ruling construction gave.
+    TwoSheet {
+        /// The parametrization.
+        pn: Box<TwoSheetPn<F>>,
+        /// Why the ruling construction failed (its `NoRationalPoint` message).
+        rulings_error: String,
+    },
+}
+
+impl<F: Scalar> QuadricPn<F> {
+    /// Theorem 4.6 for every regular quadric of [`RegularQuadric`]: the ruling
+    /// construction first; for a two-sheet hyperboloid whose rulings give no rational
+    /// family ([`PnError::NoRationalPoint`]) the unirational parametrization.
+    ///
+    /// # Errors
+    /// [`PnError::InvalidInput`] for bad axes; [`PnError::NoRationalPoint`] for an
+    /// ellipsoid or paraboloid whose rulings or covers are not rational (the message names
+    /// the obstruction).
+    pub fn new(quadric: RegularQuadric, family: bool) -> Result<Self, PnError> {
+        match Hypercyclide::quadric(quadric.clone(), family) {
+            Ok(h) => Ok(QuadricPn::Rulings(Box::new(h))),
+            Err(PnError::NoRationalPoint(why)) => match quadric {
+                RegularQuadric::TwoSheetHyperboloid { a, b, c } => Ok(QuadricPn::TwoSheet {
+                    pn: Box::new(TwoSheetPn::new(
+                        F::from_rational(&a),
+                        F::from_rational(&b),
+                        F::from_rational(&c),
+                    )?),
+                    rulings_error: why,
+                }),
+                _ => Err(PnError::NoRationalPoint(why)),
+            },
+            Err(e) => Err(e),
+        }
+    }
+
+    /// The PN surface.
+    pub fn surface(&self) -> &PnSurface<F> {
+        match self {
+            QuadricPn::Rulings(h) => h.surface(),
+            QuadricPn::TwoSheet { pn, .. } => pn.surface(),
+        }
+    }
+
+    /// Which construction was used: `"rulings"` or `"two_sheet_unirational"`.
+    pub fn construction(&self) -> &'static str {
+        match self {
+            QuadricPn::Rulings(_) => "rulings",
+            QuadricPn::TwoSheet { .. } => "two_sheet_unirational",
+        }
+    }
+
+    /// The certificates that `surface` (the base or an offset) belongs to the quadric:
+    /// [`Hypercyclide::image_certificates`] or [`TwoSheetPn::tangency_certificates`].
+    pub fn quadric_certificates(&self, surface: &PnSurface<F>) -> Vec<Certificate> {
+        match self {
+            QuadricPn::Rulings(h) => h.image_certificates(surface),
+            QuadricPn::TwoSheet { pn, .. } => pn.tangency_certificates(surface),
+        }
+    }
+}
+
+impl<F: Scalar> Certified for QuadricPn<F> {
+    /// The certificates of the construction used.
+    fn certify(&self) -> Vec<Certificate> {
+        match self {
+            QuadricPn::Rulings(h) => h.certify(),
+            QuadricPn::TwoSheet { pn, .. } => pn.certify(),
+        }
     }
 }
 

@@ -465,7 +465,71 @@ impl<F: Scalar> ReducedConeEnvelope<F> {
             exact: true,
             residual: (deg > bound).then(|| format!("degree {deg}")),
         });
+        out.extend(self.dual_degree_certificates());
         out
+    }
+
+    /// Proposition 4.1's degree of the dual representation, for polynomial data (constant
+    /// cycle denominators): the tangent planes `(E₀ : N₁ : N₂ : N₃)` with
+    /// `E₀ = −(N·m₁ + N₀r₁)` (the support of the plane touching the cycles `c₁ = (m₁; r₁)`,
+    /// certified by the tangency certificates) have `deg_t ≤ (2k_M − 2) + k`, `k_M` the
+    /// degree of `M = m₁ − m₂, R = r₁ − r₂`: `3k − 2` for general data (`k_M = k`) and
+    /// `3k − 4` for canal surfaces (`c₂ = c₁ + ċ₁`, so `M = −ṁ₁` has degree `k − 1`); the
+    /// unit normal then has `deg_t ≤ 2k_M − 2` (docs/math/laguerre-pn.md#degree-reducing-frame).
+    /// Empty without a frame or for rational data.
+    pub fn dual_degree_certificates(&self) -> Vec<Certificate> {
+        if self.frame.is_none() {
+            return Vec::new();
+        }
+        let (c1, c2) = self.envelope.families();
+        let (m1, r1, w1) = c1.parts();
+        let (_, _, w2) = c2.parts();
+        if w1.total_degree().unwrap_or(0) > 0 || w2.total_degree().unwrap_or(0) > 0 {
+            return Vec::new();
+        }
+        let (m, r) = difference(c1, c2);
+        let km = m
+            .iter()
+            .chain(std::iter::once(&r))
+            .map(|p| p.degree_in(0).unwrap_or(0) as usize)
+            .max()
+            .unwrap_or(0);
+        let k = self.k;
+        let n = self.envelope.surface().normal_polys();
+        let e0 = -(&(&(&(&n[1] * m1[0]) + &(&n[2] * m1[1])) + &(&n[3] * m1[2])) + &(&n[0] * r1));
+        let deg_n = n
+            .iter()
+            .map(|p| p.degree_in(0).unwrap_or(0) as usize)
+            .max()
+            .unwrap_or(0);
+        let deg = deg_n.max(e0.degree_in(0).unwrap_or(0) as usize);
+        let nbound = (2 * km).saturating_sub(2);
+        let bound = nbound + k;
+        let name = if km == k {
+            format!("3k − 2 = {bound}")
+        } else if km + 1 == k {
+            format!("the canal bound 3k − 4 = {bound} (k_M = k − 1)")
+        } else {
+            format!("(2k_M − 2) + k = {bound} (k_M = {km})")
+        };
+        vec![
+            Certificate {
+                property: format!(
+                    "deg_t n = {deg_n} ≤ 2k_M − 2 = {nbound} for M, R of degree k_M = {km} (Peternell, Prop. 4.1)"
+                ),
+                holds: deg_n <= nbound,
+                exact: true,
+                residual: (deg_n > nbound).then(|| format!("degree {deg_n}")),
+            },
+            Certificate {
+                property: format!(
+                    "deg_t of the dual representation (E₀ : N), E₀ = −(N·m₁ + N₀r₁): {deg} ≤ {name} for data of degree k = {k} (Peternell, Prop. 4.1)"
+                ),
+                holds: deg <= bound,
+                exact: true,
+                residual: (deg > bound).then(|| format!("degree {deg}")),
+            },
+        ]
     }
 }
 

@@ -19,10 +19,27 @@
 //! ```
 //!
 //! so `e = k`, `N₂ = τ + kσ`, `N₃ = 1`, `W + N₁ = (N₂² + N₃²)/e`, `S = μe + aN₁`. The
-//! contact point of the plane is `x = (a²N₁, −b²N₂, −c²N₃)/S`. The real parameters give
-//! `μ ∈ (−b²/a, −c²/a)`, where the conics are real: an open part of one sheet.
+//! contact point of the plane is `x = (a²N₁, −b²N₂, −c²N₃)/S`.
+//!
+//! **What the real parameters cover** (docs/math/hypercyclides.md#two-sheet-region). Real
+//! `τ` give `μ ∈ [−b²/a, −c²/a]` (`τ = 0` gives `−c²/a`, `τ → ∞` gives `−b²/a`), and for
+//! each such `μ` the real `σ` run through the whole conic but one point. Real points of `X`
+//! are the tangent planes oriented with `n₁ > 0`; on the hyperboloid, with
+//! `μ = (h − an₁)/(1 − n₁)`, the condition `−b²/a ≤ μ ≤ −c²/a` (for `b > c`) reduces to
+//!
+//! ```text
+//! |x₃| ≥ k |x₁ − a|,   k = c²√(a² + b²) / (a b √(b² − c²)),
+//! ```
+//!
+//! (the lower bound holds on the whole surface): the wedge between the two planes
+//! `x₃ = ±k(x₁ − a)` through the vertex tangent `{x₁ = a, x₃ = 0}`, on **both** sheets —
+//! the sheet `x₁ ≥ a` with the normal pointing away from the centre, the sheet `x₁ ≤ −a`
+//! with the normal pointing towards it; the parametrization passes from one to the other
+//! through the planes with `h = 0` (its poles `S = 0`, the asymptotic cone). For `c > b`
+//! exchange the roles of `(x₂, b)` and `(x₃, c)`. `σ = 0` (and `τ = ±i`) map to the vertex
+//! `(a, 0, 0)`.
 
-use super::poly::{int, var};
+use super::poly::{int, mag, var, zero_cert};
 use super::surface::PnSurface;
 use super::PnError;
 use crate::error::format_scalar;
@@ -102,6 +119,71 @@ impl<F: Scalar> TwoSheetPn<F> {
         &self.surface
     }
 
+    /// The semi-axes `(a, b, c)`.
+    pub fn axes(&self) -> [&F; 3] {
+        [&self.a, &self.b, &self.c]
+    }
+
+    /// The tangency certificates for `surface`, the base surface or one of its offsets at
+    /// the oriented distance `d = surface.distance()`: with `p = x − d n` (homogeneous
+    /// `P = (X N₀ − d X₀ N, X₀ N₀)`),
+    /// * `b²c²P₁² − a²c²P₂² − a²b²P₃² − a²b²c²P₀² ≡ 0`: `p` lies on the hyperboloid;
+    /// * `∇φ(p) × n ≡ 0` with `∇φ ∝ (b²c²P₁, −a²c²P₂, −a²b²P₃)`: the normal is the
+    ///   hyperboloid's normal at `p`, so the plane of `surface` at `x` is the tangent plane
+    ///   at `p` moved by `d` (Theorem 4.6: the quadric and its exact offsets).
+    pub fn tangency_certificates(&self, surface: &PnSurface<F>) -> Vec<Certificate> {
+        let d = surface.distance().clone();
+        let x = surface.point_polys();
+        let n = surface.normal_polys();
+        let p0 = &x[0] * &n[0];
+        let p: [MPoly<F>; 3] =
+            std::array::from_fn(|i| &(&x[i + 1] * &n[0]) - &(&x[0] * &n[i + 1]).scale(&d));
+        let (a2, b2, c2) = (
+            self.a.clone() * self.a.clone(),
+            self.b.clone() * self.b.clone(),
+            self.c.clone() * self.c.clone(),
+        );
+        let on = &(&(&(&p[0] * &p[0]).scale(&(b2.clone() * c2.clone()))
+            - &(&p[1] * &p[1]).scale(&(a2.clone() * c2.clone())))
+            - &(&p[2] * &p[2]).scale(&(a2.clone() * b2.clone())))
+            - &(&p0 * &p0).scale(&(a2.clone() * b2.clone() * c2.clone()));
+        let g = [
+            p[0].scale(&(b2.clone() * c2.clone())),
+            -p[1].scale(&(a2.clone() * c2)),
+            -p[2].scale(&(a2 * b2)),
+        ];
+        let nn = [n[1].clone(), n[2].clone(), n[3].clone()];
+        let cr = super::poly::cross3(&g, &nn);
+        // f64 tolerance from the sizes without cancellation (not from the residual)
+        let terms = |q: &MPoly<F>| q.num_terms().max(1) as f64;
+        let mp = p
+            .iter()
+            .chain(std::iter::once(&p0))
+            .map(|q| mag(q) * terms(q))
+            .fold(1.0, f64::max);
+        let mn = n.iter().map(|q| mag(q) * terms(q)).fold(1.0, f64::max);
+        let ax = [&self.a, &self.b, &self.c]
+            .iter()
+            .map(|v| v.to_f64().abs())
+            .fold(1.0, f64::max)
+            .powi(6);
+        let mut out = vec![zero_cert(
+            "the foot point x − d n lies on the two-sheet hyperboloid x₁²/a² − x₂²/b² − x₃²/c² = 1",
+            &on,
+            16.0 * mp * mp * ax,
+        )];
+        for (i, c) in cr.iter().enumerate() {
+            out.push(zero_cert(
+                &format!(
+                    "the normal is the hyperboloid's normal at the foot point: (∇φ × n)_{i} ≡ 0"
+                ),
+                c,
+                16.0 * mp * mn * ax,
+            ));
+        }
+        out
+    }
+
     /// `b²c²X₁² − a²c²X₂² − a²b²X₃² − a²b²c²W² ≡ 0`: the point lies on the hyperboloid.
     pub fn quadric_certificate(&self) -> Certificate {
         let x = self.surface.point_polys();
@@ -137,6 +219,7 @@ impl<F: Scalar> Certified for TwoSheetPn<F> {
     fn certify(&self) -> Vec<Certificate> {
         let mut out = self.surface.certify();
         out.push(self.quadric_certificate());
+        out.extend(self.tangency_certificates(&self.surface));
         out
     }
 }

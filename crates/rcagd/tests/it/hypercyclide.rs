@@ -496,3 +496,142 @@ proptest! {
         }
     }
 }
+
+/// Theorem 4.6 through one entry point: `QuadricPn` uses the ruling construction where it
+/// works (the §4.7 ellipsoid) and falls back to the unirational parametrization for the
+/// two-sheet hyperboloids whose rulings give no rational family ((9, 13, 3): square cross
+/// ratio missing; (12, 5, 3): interleaving parabolic rulings); the fallback is certified
+/// exactly on the quadric (foot point on it, normal = the quadric's normal) for the
+/// surface and for its offsets; an ellipsoid with irrational rulings stays a named error.
+#[test]
+fn pn_quadric_falls_back_to_the_unirational_two_sheet_parametrization() {
+    use rcagd::pn::hypercyclide::QuadricPn;
+    for (a, b, c) in [(9, 13, 3), (12, 5, 3)] {
+        let r = RegularQuadric::TwoSheetHyperboloid {
+            a: q(a, 1),
+            b: q(b, 1),
+            c: q(c, 1),
+        };
+        let h = QuadricPn::<Q>::new(r, true).expect("two-sheet via the fallback");
+        assert_eq!(h.construction(), "two_sheet_unirational");
+        match &h {
+            QuadricPn::TwoSheet { rulings_error, .. } => {
+                assert!(rulings_error.contains("double covers"), "{rulings_error}")
+            }
+            QuadricPn::Rulings(_) => panic!("expected the fallback"),
+        }
+        assert_exact(&h.certify());
+        for d in [q(1, 2), q(-3, 1)] {
+            let off = h.surface().offset(d);
+            assert_exact(&h.quadric_certificates(off.surface()));
+            assert_exact(&off.certify());
+        }
+        let f = QuadricPn::<f64>::new(
+            RegularQuadric::TwoSheetHyperboloid {
+                a: q(a, 1),
+                b: q(b, 1),
+                c: q(c, 1),
+            },
+            true,
+        )
+        .expect("f64");
+        assert!(f.certify().iter().all(|c| c.holds));
+    }
+    let e = QuadricPn::<Q>::new(ellipsoid(q(25, 3), q(5, 1), q(3, 1)), true).expect("ellipsoid");
+    assert_eq!(e.construction(), "rulings");
+    assert_exact(&e.quadric_certificates(e.surface()));
+    // (a² − b²)(b² − c²) = 5·3 not a square: the ellipsoid's rulings are irrational
+    assert!(matches!(
+        QuadricPn::<Q>::new(ellipsoid(q(3, 1), q(2, 1), q(1, 1)), true),
+        Err(PnError::NoRationalPoint(_))
+    ));
+    // validation errors are not masked by the fallback
+    assert!(matches!(
+        QuadricPn::<Q>::new(
+            RegularQuadric::TwoSheetHyperboloid {
+                a: q(9, 1),
+                b: q(3, 1),
+                c: q(13, 1)
+            },
+            true
+        ),
+        Err(PnError::InvalidInput(_))
+    ));
+}
+
+/// Which part of the hyperboloid the real parameters of the unirational parametrization
+/// cover (docs/math/hypercyclides.md#two-sheet-region): for `b > c` the wedge
+/// `|x₃| ≥ k|x₁ − a|`, `k = c²√(a² + b²)/(ab√(b² − c²))`, of **both** sheets, the normal
+/// always with `n₁ ≥ 0`. Exactly on a grid of rational parameters (the squared inequality
+/// `c⁴(a² + b²)(x₁ − a)² ≤ a²b²(b² − c²)x₃²`), both sheets reached; and conversely (f64)
+/// every sampled point strictly inside the wedge, on either sheet, is the image of the
+/// parameters `τ = √(−(c² + aμ)/(b² + aμ))`, `σ = (n₂ − τn₃)/(1 − n₁)`,
+/// `μ = (h − an₁)/(1 − n₁)`; outside the wedge `τ²` is negative.
+#[test]
+fn two_sheet_real_parameters_cover_a_wedge_of_both_sheets() {
+    use rcagd::pn::two_sheet::TwoSheetPn;
+    let (a, b, c) = (9i64, 13i64, 3i64);
+    let h = TwoSheetPn::new(q(a, 1), q(b, 1), q(c, 1)).expect("two-sheet");
+    let (aq, a2, b2, c2) = (q(a, 1), q(a * a, 1), q(b * b, 1), q(c * c, 1));
+    let (mut plus, mut minus) = (0, 0);
+    for i in -6i64..=6 {
+        for j in -6i64..=6 {
+            let (t, s) = (q(i, 2), q(j, 3));
+            let (Ok(x), Ok(n)) = (h.surface().eval(&t, &s), h.surface().normal_at(&t, &s)) else {
+                continue;
+            };
+            assert!(n[0] >= Q::ZERO, "n₁ < 0 at ({t}, {s}): {n:?}");
+            let dx = &x[0] - &aq;
+            let lhs = &(&(&c2 * &c2) * &(&a2 + &b2)) * &(&dx * &dx);
+            let rhs = &(&(&a2 * &b2) * &(&b2 - &c2)) * &(&x[2] * &x[2]);
+            assert!(lhs <= rhs, "({t}, {s}) ↦ {x:?} outside the wedge");
+            if x[0] >= aq {
+                plus += 1;
+            } else {
+                assert!(x[0] <= -aq.clone(), "{x:?} between the sheets");
+                minus += 1;
+            }
+        }
+    }
+    assert!(plus > 0 && minus > 0, "sheets reached: {plus} / {minus}");
+    // converse in f64
+    let hf = TwoSheetPn::new(a as f64, b as f64, c as f64).expect("f64");
+    let (af, bf, cf) = (a as f64, b as f64, c as f64);
+    let k = cf * cf * (af * af + bf * bf).sqrt() / (af * bf * (bf * bf - cf * cf).sqrt());
+    let mut inside = [0, 0];
+    for (m, sg) in [(1.0f64, 1.0f64), (1.0, -1.0)] {
+        for iu in 1..=8 {
+            for ip in 0..24 {
+                let u = 1.0 + 0.4 * iu as f64 * m;
+                let ph = (ip as f64 + 0.5) * std::f64::consts::PI / 12.0;
+                let w = (u * u - 1.0).sqrt();
+                let x = [sg * af * u, bf * w * ph.cos(), cf * w * ph.sin()];
+                let g = [x[0] / (af * af), -x[1] / (bf * bf), -x[2] / (cf * cf)];
+                let l = (g[0] * g[0] + g[1] * g[1] + g[2] * g[2]).sqrt() * sg;
+                let n = [g[0] / l, g[1] / l, g[2] / l];
+                let hh = n[0] * x[0] + n[1] * x[1] + n[2] * x[2];
+                let mu = (hh - af * n[0]) / (1.0 - n[0]);
+                let t2 = -(cf * cf + af * mu) / (bf * bf + af * mu);
+                let margin = x[2].abs() - k * (x[0] - af).abs();
+                if margin < -1e-9 * (1.0 + x[0].abs()) {
+                    assert!(t2 < 1e-9, "outside the wedge but τ² = {t2} at {x:?}");
+                    continue;
+                }
+                if margin < 1e-3 * (1.0 + x[0].abs()) {
+                    continue;
+                }
+                let tau = t2.sqrt();
+                let sigma = (n[1] - tau * n[2]) / (1.0 - n[0]);
+                let y = hf.surface().eval(&tau, &sigma).expect("finite");
+                for i in 0..3 {
+                    assert!(
+                        (y[i] - x[i]).abs() <= 1e-8 * (1.0 + x[i].abs()),
+                        "{x:?} ≠ {y:?} at ({tau}, {sigma})"
+                    );
+                }
+                inside[usize::from(sg < 0.0)] += 1;
+            }
+        }
+    }
+    assert!(inside[0] > 10 && inside[1] > 10, "{inside:?}");
+}

@@ -440,6 +440,63 @@ fn hypercone_envelope_in_r4_with_offsets() {
     assert!(exact_hold(&off.certify()));
 }
 
+/// The linear case `β = R + Mₙ ≡ 0` of Theorem 5.1 (refused before session 12): `d'(t)` is
+/// the hyperplane `M′·y′ = −R`, parametrized linearly; no sum of two squares is needed. Two
+/// families of R⁴ (`M = (t, −t, 1, t²)`, `R = −t²`; and the former refusal example
+/// `M = (−t, 0, 0, −1)`, `R = 1`) give PN hypersurfaces whose tangent hyperplanes touch
+/// both cycle families, exactly, with exact offsets; `f64` certifies too.
+#[test]
+fn hypercone_linear_case_beta_zero() {
+    let m1 = vec![tp(&[0, 1]), tp(&[0]), tp(&[1]), tp(&[0, 0, 1])];
+    let m2 = vec![tp(&[0]), tp(&[0, 1]), tp(&[0]), tp(&[0])];
+    let env = HyperconeEnvelope::new(m1, tp(&[0]), m2, tp(&[0, 0, 1]), None)
+        .expect("the linear case is built");
+    assert!(
+        exact_hold(&env.certify()),
+        "{:#?}",
+        env.certify()
+            .iter()
+            .filter(|c| !c.holds)
+            .collect::<Vec<_>>()
+    );
+    assert!(env.p()[0].num.is_zero() && env.p()[1].num.is_zero());
+    let off = env.surface().offset(&Q::from_ratio(1, 2)).expect("offset");
+    assert!(exact_hold(&off.certify()));
+    let z = || vec![tp(&[0]); 4];
+    let m2 = vec![tp(&[0, 1]), tp(&[0]), tp(&[0]), tp(&[1])];
+    match HyperconeEnvelope::new(z(), tp(&[0]), m2, tp(&[-1]), None) {
+        Ok(env) => assert!(exact_hold(&env.certify())),
+        // every hypercone has its vertex at the origin: all tangent hyperplanes pass
+        // through it and the envelope point collapses there, a named error
+        Err(NdimError::Degenerate(m)) => assert!(m.contains("hypersurface"), "{m}"),
+        Err(e) => panic!("unexpected {e}"),
+    }
+    let mf = |v: &[f64]| {
+        MPoly::from_terms(
+            1,
+            v.iter()
+                .enumerate()
+                .map(|(k, c)| (vec![k as u32], *c))
+                .collect(),
+        )
+        .expect("one variable")
+    };
+    let envf = HyperconeEnvelope::new(
+        vec![
+            mf(&[0.0, 1.0]),
+            mf(&[0.0]),
+            mf(&[1.0]),
+            mf(&[0.0, 0.0, 1.0]),
+        ],
+        mf(&[0.0]),
+        vec![mf(&[0.0]), mf(&[0.0, 1.0]), mf(&[0.0]), mf(&[0.0])],
+        mf(&[0.0, 0.0, 1.0]),
+        None,
+    )
+    .expect("f64 linear case");
+    assert!(envf.certify().iter().all(|c| c.holds));
+}
+
 #[test]
 fn hypercone_errors_are_named() {
     let z = || vec![tp(&[0]); 4];
@@ -449,11 +506,12 @@ fn hypercone_errors_are_named() {
         HyperconeEnvelope::new(z(), tp(&[0]), m2, tp(&[1]), None),
         Err(NdimError::Degenerate(_))
     ));
-    // β = R + Mₙ ≡ 0
-    let m2 = vec![tp(&[0, 1]), tp(&[0]), tp(&[0]), tp(&[1])];
+    // β = R + Mₙ ≡ 0 with M parallel to the last axis: the cycles touch (the linear case
+    // has no hyperplane)
+    let m2 = vec![tp(&[0]), tp(&[0]), tp(&[0]), tp(&[1])];
     assert!(matches!(
         HyperconeEnvelope::new(z(), tp(&[0]), m2, tp(&[-1]), None),
-        Err(NdimError::InvalidInput(_))
+        Err(NdimError::Degenerate(_))
     ));
     // |M|² − R² = 3 is not a sum of two rational squares
     let m2 = vec![tp(&[1]), tp(&[1]), tp(&[1]), tp(&[0, 1])];

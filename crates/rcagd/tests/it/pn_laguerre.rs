@@ -297,3 +297,76 @@ proptest! {
         }
     }
 }
+
+/// Proposition 4.1's degrees certified: data `M′ = ((t − i)(e + if), g(t² + 1)/2)` (real
+/// and imaginary parts; `R = M′₃`) rotated by `x ↦ (x₁, x₃, −x₂)`, so that
+/// `|M|² − R² = (t² + 1)(e² + f²)` and the frame `ζ = ±e₂` reduces the unit normal.
+/// General data (`c₁ = c₂ + (M; R)`, `k = 2`): `deg_t n ≤ 2k − 2 = 2` and the dual
+/// representation `(E₀ : N)` has `deg_t ≤ 3k − 2 = 4`. A canal surface (`c₁ = ∫(M; R)`,
+/// `c₂ = c₁ + ċ₁`, `k = 3`, `M` of degree `k − 1`): `deg_t n ≤ 2`, dual `≤ 3k − 4 = 5`
+/// (the general bound would be 7). Every certificate holds exactly.
+#[test]
+fn prop_4_1_dual_degree_and_canal_bound_are_certified() {
+    use rcagd::pn::reducing_frame::ReducedConeEnvelope;
+    let t = || MPoly::<Q>::var(2, 0);
+    let (e, f, g) = (&k(1) + &t().scale(&q(2, 1)), &k(-1) + &t(), q(2, 1));
+    let t2p1 = &(&t() * &t()) + &k(1);
+    let mp = [
+        &(&t() * &e) + &f,
+        &(&t() * &f) - &e,
+        t2p1.scale(&(g / q(2, 1))),
+    ];
+    // rotation x′ = (x₁, −x₃, x₂) of the frame coordinates: M = (M′₁, M′₃, −M′₂)
+    let m = [mp[0].clone(), mp[2].clone(), -mp[1].clone()];
+    let r = mp[2].clone();
+    let base = [k(0), k(1), k(0)];
+    let c2 = CycleFamily::new(base.clone(), k(1), k(1)).expect("c2");
+    let c1 =
+        CycleFamily::new(std::array::from_fn(|i| &base[i] + &m[i]), &k(1) + &r, k(1)).expect("c1");
+    let check = |env: &ReducedConeEnvelope<Q>, bound: &str, nb: usize, db: usize| {
+        let certs = env.certify();
+        assert!(
+            all_exact_hold(&certs),
+            "{:#?}",
+            certs.iter().filter(|c| !c.holds).collect::<Vec<_>>()
+        );
+        assert!(env.frame().is_some(), "a reducing frame");
+        let dual = env.dual_degree_certificates();
+        assert_eq!(dual.len(), 2, "{dual:#?}");
+        assert!(dual[1].property.contains(bound), "{}", dual[1].property);
+        assert!(env.envelope().surface().normal_degree().0 <= nb);
+        let deg: usize = dual[1]
+            .property
+            .split("r₁): ")
+            .nth(1)
+            .and_then(|s| s.split(' ').next())
+            .and_then(|s| s.parse().ok())
+            .expect("degree in the text");
+        assert!(deg <= db, "{}", dual[1].property);
+    };
+    let env = ReducedConeEnvelope::new(c1, c2).expect("general envelope");
+    assert_eq!(env.data_degree(), 2);
+    check(&env, "3k − 2 = 4", 2, 4);
+    // the canal surface of c = ∫(M; R) dt
+    let integrate = |p: &MPoly<Q>| {
+        MPoly::from_terms(
+            2,
+            p.terms()
+                .map(|(ex, c)| {
+                    let d = ex.first().copied().unwrap_or(0);
+                    (vec![d + 1, 0], c.clone() / Q::from(i64::from(d) + 1))
+                })
+                .collect(),
+        )
+        .expect("two variables")
+    };
+    let cc = CycleFamily::new(
+        std::array::from_fn(|i| integrate(&m[i])),
+        &integrate(&r) + &k(3),
+        k(1),
+    )
+    .expect("canal family");
+    let canal = ReducedConeEnvelope::new(cc.clone(), cc.plus_derivative()).expect("canal");
+    assert_eq!(canal.data_degree(), 3);
+    check(&canal, "canal bound 3k − 4 = 5", 2, 5);
+}
