@@ -21,27 +21,19 @@ const REL: f64 = 1e-12;
 /// they may fail on exact-agreeing control points by rounding alone. Only these, and
 /// only for these ops, are exempt from holding (they must still be marked inexact).
 ///
-/// * `PlanarOffset::certify` (`rcagd::ph::planar`, `identity_cert`): the scale is
-///   max(|lhs|, |rhs|, 1); for a right-hand side 0 — the normal identity, and the
-///   distance identity when d = 0 — that is an absolute tolerance 10⁻⁹, which
-///   products of size |w|²·|r|·|r'| ≈ 10⁶ exceed.
 /// * `DualPencil::certify` (`rcagd::cyclide::pencil`): det(λC + Ω) is compared with
 ///   κλ(1 − ρ²λ)² to 10⁻⁹ of its own largest coefficient, but it is formed from 4×4
 ///   products of entries of size |c|² + r², whose rounding (e.g. 6·10⁻⁴ for a centre
 ///   at distance 27 and ρ = 27) exceeds that.
-const KNOWN_TOLERANCE_DEFECTS: &[(&[&str], &str)] = &[
-    (&["ph_planar_offset"], "(r_d − r)·r' ≡ 0"),
-    (&["ph_planar_offset"], "|r_d − r|² ≡ d²"),
-    (
-        &[
-            "torus",
-            "dupin_canal",
-            "dupin_cyclide",
-            "dupin_cyclide_parabolic",
-        ],
-        "det(λC + μΩ)",
-    ),
-];
+const KNOWN_TOLERANCE_DEFECTS: &[(&[&str], &str)] = &[(
+    &[
+        "torus",
+        "dupin_canal",
+        "dupin_cyclide",
+        "dupin_cyclide_parabolic",
+    ],
+    "det(λC + μΩ)",
+)];
 
 fn build(src: &str, arithmetic: Arithmetic) -> Result<Vec<Object>, String> {
     let r = Recipe::parse("r.toml", src, None).map_err(|d| d[0].to_string())?;

@@ -398,20 +398,34 @@ impl<F: Scalar> PlanarOffset<F> {
         let [hx, hy] = [bx.derivative(), by.derivative()];
         let dd = &(&dx * &dx) + &(&dy * &dy);
         let d2 = self.distance.clone() * self.distance.clone();
+        // f64: the residual against the size of the terms it is made of (`X − xW` cancels:
+        // its magnitude is |X| + |x||W|, not its own size), taken as the largest coefficient
+        // of those magnitudes for every coefficient (the power-basis coordinates come from
+        // Bernstein control points with cancellation of their own)
+        use super::util::{abs_poly, identity_cert_within};
+        let uniform = |m: &Poly<f64>| vec![poly_scale(m); m.coeffs().len().max(1) + 1];
+        let (aw, ahx, ahy) = (abs_poly(w), abs_poly(&hx), abs_poly(&hy));
+        let mdx = &abs_poly(x) + &(&abs_poly(&bx) * &aw);
+        let mdy = &abs_poly(y) + &(&abs_poly(&by) * &aw);
+        let d2f = d2.to_f64().abs();
+        let m_dist = &(&(&mdx * &mdx) + &(&mdy * &mdy)) + &(&aw * &aw).scale(&d2f);
+        let m_normal = &(&mdx * &ahx) + &(&mdy * &ahy);
         vec![
             identity_cert("offset weight W ≡ σ = |w|²", w, &self.base.speed()),
-            identity_cert(
+            identity_cert_within(
                 format!(
                     "|r_d − r|² ≡ d² (as (X − xW)² + (Y − yW)² ≡ d²W², d = {})",
                     fmt_scalar(&self.distance)
                 ),
                 &dd,
                 &(w * w).scale(&d2),
+                &uniform(&m_dist),
             ),
-            identity_cert(
+            identity_cert_within(
                 "(r_d − r)·r' ≡ 0 (as (X − xW)x' + (Y − yW)y' ≡ 0)",
                 &(&(&dx * &hx) + &(&dy * &hy)),
                 &Poly::zero(),
+                &uniform(&m_normal),
             ),
         ]
     }

@@ -105,6 +105,13 @@ pub(crate) fn identity_cert_within<F: Scalar>(
     })
 }
 
+/// The coefficients of `p` by absolute value, in `f64`: the magnitude polynomial of `p`
+/// for [`identity_cert_within`] (products and sums of magnitude polynomials bound the
+/// terms that make up each coefficient of the corresponding products and sums).
+pub(crate) fn abs_poly<F: Scalar>(p: &Poly<F>) -> Poly<f64> {
+    p.map(|c| c.to_f64().abs())
+}
+
 /// A certificate for the scalar identity `lhs = rhs`.
 pub(crate) fn scalar_cert<F: Scalar>(property: impl Into<String>, lhs: &F, rhs: &F) -> Certificate {
     let diff = lhs.clone() - rhs.clone();
