@@ -1086,60 +1086,20 @@ mod pn {
         })
     }
 
-    /// As the exact op: the surface on the domain (certified, checked regular), then one
-    /// object `NAME_offsetK` per offset distance.
+    /// As the exact op (`ops::pn::surface_objects_in`): the surface on the domain
+    /// (certified, checked regular), then one object `NAME_offsetK` per offset distance,
+    /// every object marked f64.
     fn surface_objects(
         args: &OpArgs,
         surface: &PnSurface<f64>,
         dom: &Domain<f64>,
-        mut certs: Vec<Certificate>,
+        certs: Vec<Certificate>,
         param: &'static str,
     ) -> Result<Vec<Object>, OpError> {
-        certs.extend(surface.certify());
-        certs.push(surface.check_regular(dom).map_err(|e| {
-            OpError::param(
-                param,
-                format!("the input surface is not regular on the domain: {e}"),
-            )
-        })?);
-        let patch = match args.opt_number("offset")?.filter(|d| !d.is_zero()) {
-            None => surface.patch(dom).map_err(blame("domain"))?,
-            Some(d) => {
-                let off = surface.offset(f(&d));
-                certs.extend(off.certify());
-                certs.push(off.check_regular(dom).map_err(blame("offset"))?);
-                off.patch(dom).map_err(blame("offset"))?
-            }
-        };
-        let mut out = vec![float_object(
-            args,
-            Geometry::Patch(exact_patch(&patch)?),
-            certs,
-        )];
-        for (k, d) in args
-            .opt_numbers("distances")?
-            .unwrap_or_default()
-            .iter()
-            .enumerate()
-        {
-            let off = surface.offset(f(d));
-            let mut c = off.certify();
-            c.push(
-                off.check_regular(dom)
-                    .map_err(|e| OpError::param("distances", format!("distance entry {k}: {e}")))?,
-            );
-            let patch = off.patch(dom).map_err(blame("distances"))?;
-            let mut o = float_object(args, Geometry::Patch(exact_patch(&patch)?), c);
-            o.name = format!("{}_offset{}", args.name(), k + 1);
-            if let Some(m) = o.params.as_object_mut() {
-                m.insert(
-                    "offset_distance".into(),
-                    serde_json::Value::String(rcagd_algebra::rational::format_rational(d)),
-                );
-            }
-            out.push(o);
-        }
-        Ok(out)
+        let objs = crate::ops::pn::surface_objects_in(args, surface, dom, certs, param, &|p| {
+            Ok(Geometry::Patch(exact_patch(p)?))
+        })?;
+        Ok(objs.into_iter().map(mark).collect())
     }
 
     pub(super) fn graph(args: &OpArgs) -> Result<Vec<Object>, OpError> {

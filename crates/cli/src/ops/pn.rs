@@ -31,7 +31,8 @@ use rcagd::pn::two_sheet::TwoSheetPn;
 use rcagd::pn::{Domain, IsotropicSurface, PnError, PnSurface, RatFn};
 use rcagd::Certified;
 use rcagd_algebra::rational::format_rational;
-use rcagd_algebra::{Certificate, Rational};
+use rcagd_algebra::{Certificate, Rational, Scalar};
+use rcagd_geom::BezierPatch;
 use rcagd_io::quantity::{NamedQuantity, Quantity};
 
 type Q = Rational;
@@ -180,8 +181,23 @@ fn surface_objects(
     args: &OpArgs,
     surface: &PnSurface<Q>,
     dom: &Domain<Q>,
+    certs: Vec<Certificate>,
+    param: &'static str,
+) -> Result<Vec<Object>, OpError> {
+    surface_objects_in(args, surface, dom, certs, param, &|p| {
+        Ok(Geometry::Patch(p.clone()))
+    })
+}
+
+/// [`surface_objects`] in any scalar (the float path, `crate::float`, builds the same
+/// objects in `f64`): `geometry` turns a patch into the object's exact geometry.
+pub(crate) fn surface_objects_in<T: Scalar>(
+    args: &OpArgs,
+    surface: &PnSurface<T>,
+    dom: &Domain<T>,
     mut certs: Vec<Certificate>,
     param: &'static str,
+    geometry: &dyn Fn(&BezierPatch<T>) -> Result<Geometry, OpError>,
 ) -> Result<Vec<Object>, OpError> {
     certs.extend(surface.certify());
     certs.push(surface.check_regular(dom).map_err(|e| {
@@ -193,15 +209,15 @@ fn surface_objects(
     let patch = match main_offset(args)? {
         None => surface.patch(dom).map_err(blame("domain"))?,
         Some(d) => {
-            let off = surface.offset(d);
+            let off = surface.offset(T::from_rational(&d));
             certs.extend(off.certify());
             certs.push(off.check_regular(dom).map_err(blame("offset"))?);
             off.patch(dom).map_err(blame("offset"))?
         }
     };
-    let mut out = vec![args.object(Geometry::Patch(patch), certs)];
+    let mut out = vec![args.object(geometry(&patch)?, certs)];
     for (k, d) in distances(args)?.into_iter().enumerate() {
-        let off = surface.offset(d.clone());
+        let off = surface.offset(T::from_rational(&d));
         let mut c = off.certify();
         c.push(off.check_regular(dom).map_err(|e| {
             OpError::param(
@@ -210,7 +226,7 @@ fn surface_objects(
             )
         })?);
         let patch = off.patch(dom).map_err(blame("distances"))?;
-        out.push(offset_object(args, k, &d, Geometry::Patch(patch), c));
+        out.push(offset_object(args, k, &d, geometry(&patch)?, c));
     }
     Ok(out)
 }
