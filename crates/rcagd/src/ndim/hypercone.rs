@@ -127,18 +127,13 @@ impl<F: Scalar> HyperconeEnvelope<F> {
             .map(|j| clean(&(&(&ff[j] * &cc) + &(&pfc * &c[j]))))
             .collect();
         let q = &q0 * &cc;
-        // (5.12) with i = 1: 2zₙ = −r₁(S + 1) − m₁ₙ(S − 1) − 2Σ m₁ⱼ zⱼ
-        let s = dot(&z, &z);
-        let qq = &q * &q;
-        let m1l: Vec<MPoly<F>> = m1.iter().map(lift).collect();
-        let yn = -(&(&(&lift(&r1) * &(&s + &qq)) + &(&m1l[n - 1] * &(&s - &qq)))
-            + &(&q * &dot(&m1l[..nv], &z)).scale(&two));
-        let qn = qq.scale(&two);
-        let mut y = z;
-        y.push(clean(&yn));
-        let surface = PnHypersurface::from_isotropic(&y, &q, &qn)?.named(format!(
-            "envelope of sphere-hypercones in R^{n} (Theorem 5.1)"
-        ));
+        let surface = isotropic_envelope(
+            &m1,
+            &r1,
+            z,
+            &q,
+            format!("envelope of sphere-hypercones in R^{n} (Theorem 5.1)"),
+        )?;
         Ok(HyperconeEnvelope {
             centers: [m1, m2],
             radii: [r1, r2],
@@ -165,7 +160,6 @@ impl<F: Scalar> HyperconeEnvelope<F> {
     ) -> Result<Self, NdimError> {
         let n = m1.len();
         let nv = n - 1;
-        let lift = |x: &MPoly<F>| &MPoly::zero(nv) + x;
         let mp = &mm[..nv];
         let Some(k) = (0..nv).find(|&j| !clean(&mp[j]).is_zero()) else {
             return Err(NdimError::Degenerate(
@@ -192,18 +186,13 @@ impl<F: Scalar> HyperconeEnvelope<F> {
                 clean(&acc)
             })
             .collect();
-        let two = F::from_i64(2);
-        let s = dot(&z, &z);
-        let qq = &q * &q;
-        let m1l: Vec<MPoly<F>> = m1.iter().map(lift).collect();
-        let yn = -(&(&(&lift(&r1) * &(&s + &qq)) + &(&m1l[n - 1] * &(&s - &qq)))
-            + &(&q * &dot(&m1l[..nv], &z)).scale(&two));
-        let qn = qq.scale(&two);
-        let mut y = z;
-        y.push(clean(&yn));
-        let surface = PnHypersurface::from_isotropic(&y, &q, &qn)?.named(format!(
-            "envelope of sphere-hypercones in R^{n} (Theorem 5.1, linear case β ≡ 0)"
-        ));
+        let surface = isotropic_envelope(
+            &m1,
+            &r1,
+            z,
+            &q,
+            format!("envelope of sphere-hypercones in R^{n} (Theorem 5.1, linear case β ≡ 0)"),
+        )?;
         let zero = RatFn::poly(MPoly::zero(1));
         Ok(HyperconeEnvelope {
             centers: [m1, m2],
@@ -259,4 +248,29 @@ impl<F: Scalar> Certified for HyperconeEnvelope<F> {
         out.extend(self.contact_certificates());
         out
     }
+}
+
+/// The isotropic model point `(z/q, yₙ/(2q²))` of the envelope from its first `n − 1`
+/// coordinates `z` over `q`: `yₙ` from the isotropic sphere (5.12) of the first cycle,
+/// `2yₙ = −r₁(S + 1) − m₁ₙ(S − 1) − 2Σ m₁ⱼ zⱼ` with `S = |z|²` (homogenized by `q`), and the
+/// PN hypersurface of that model point.
+fn isotropic_envelope<F: Scalar>(
+    m1: &[MPoly<F>],
+    r1: &MPoly<F>,
+    mut z: Vec<MPoly<F>>,
+    q: &MPoly<F>,
+    name: String,
+) -> Result<PnHypersurface<F>, NdimError> {
+    let n = m1.len();
+    let nv = n - 1;
+    let lift = |x: &MPoly<F>| &MPoly::zero(nv) + x;
+    let two = F::from_i64(2);
+    let s = dot(&z, &z);
+    let qq = q * q;
+    let m1l: Vec<MPoly<F>> = m1.iter().map(lift).collect();
+    let yn = -(&(&(&lift(r1) * &(&s + &qq)) + &(&m1l[n - 1] * &(&s - &qq)))
+        + &(q * &dot(&m1l[..nv], &z)).scale(&two));
+    let qn = qq.scale(&two);
+    z.push(clean(&yn));
+    Ok(PnHypersurface::from_isotropic(&z, q, &qn)?.named(name))
 }
