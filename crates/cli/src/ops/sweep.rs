@@ -344,6 +344,18 @@ fn build_sweep_rrmf(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         patches.extend(s.patches());
         pieces.push((pts, ws));
     }
-    certs.extend(profile_joints(&pieces));
+    let joints = profile_joints(&pieces);
+    // pieces that do not join are one profile given wrongly (an input error), not a
+    // construction whose certificate fails
+    if let Some(gap) = joints.iter().find(|c| !c.holds) {
+        return Err(OpError::param(
+            "profile",
+            format!(
+                "{}: the pieces of one profile must join end to start (sweep separate profiles as separate objects)",
+                gap.residual.as_deref().unwrap_or(&gap.property)
+            ),
+        ));
+    }
+    certs.extend(joints);
     Ok(vec![args.object(Geometry::Patches(patches), certs)])
 }
