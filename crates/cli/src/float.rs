@@ -23,7 +23,7 @@
 //! construction itself in `f64` (documented per builder).
 
 use crate::model::{Geometry, Object};
-use crate::ops::{OpArgs, OpError};
+use crate::ops::{prefixed, OpArgs, OpError};
 use num_traits::{One, Zero};
 use rcagd::Certified;
 use rcagd_algebra::{Certificate, Rational, Scalar};
@@ -276,17 +276,6 @@ pub fn mark(mut o: Object) -> Object {
         ),
     );
     o
-}
-
-/// Prefixes every certificate's property with `prefix`.
-fn prefixed(prefix: &str, certs: Vec<Certificate>) -> Vec<Certificate> {
-    certs
-        .into_iter()
-        .map(|mut c| {
-            c.property = format!("{prefix}{}", c.property);
-            c
-        })
-        .collect()
 }
 
 /// Homogeneous control points `(w, w·x, …)` from exact `points`/`weights`/`homogeneous`

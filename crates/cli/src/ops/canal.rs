@@ -8,7 +8,7 @@
 //! field `Q(√d)` the op fails and says which field (the exchange model holds rational
 //! geometry only; `rcagd::canal` builds such surfaces over `Q(√d)` in the library).
 
-use super::{poly_io, OpArgs, OpError, OpSpec, ParamSpec};
+use super::{poly_io, prefixed, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
 use num_traits::{One, Zero};
@@ -69,13 +69,6 @@ fn vec4(p: Vec<Rational>, param: &'static str, what: &str) -> Result<[Rational; 
     })
 }
 
-fn prefixed(prefix: &str, certs: Vec<Certificate>) -> impl Iterator<Item = Certificate> + '_ {
-    certs.into_iter().map(move |mut c| {
-        c.property = format!("{prefix}{}", c.property);
-        c
-    })
-}
-
 /// The segment between two homogeneous points (a degree-1 rational Bézier curve).
 fn segment(p: &[Rational; 4], q: &[Rational; 4]) -> Result<BezierCurve<Rational>, OpError> {
     BezierCurve::from_homogeneous(vec![p.to_vec(), q.to_vec()])
@@ -115,7 +108,7 @@ fn lines_param(args: &OpArgs, param: &'static str, n: usize) -> Result<Vec<Line<
 /// The Plücker coordinates in a certificate's property (the "output" of a line op).
 fn line_certs(name: &str, l: &Line<Rational>) -> Vec<Certificate> {
     let coords = fmt_vec(l.coords());
-    prefixed(&format!("{name} l = {coords}: "), l.certify()).collect()
+    prefixed(&format!("{name} l = {coords}: "), l.certify())
 }
 
 /// `Ω(g, h) = 0` for every pair (transversal, given line), exactly.
@@ -465,7 +458,7 @@ fn build_regulus(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         RegulusPatchError::Geom(g) => OpError::new(g.to_string()),
         e => OpError::param("lines", e.to_string()),
     })?;
-    let mut certs: Vec<Certificate> = prefixed("regulus: ", reg.certify()).collect();
+    let mut certs = prefixed("regulus: ", reg.certify());
     certs.extend(reg.segment_patch_certificates(&patch));
     Ok(vec![args.object(Geometry::Patch(patch), certs)])
 }

@@ -2,7 +2,7 @@
 //! `rcagd::cylinder`), and inline rational Bézier curves and patches given by their
 //! control points.
 
-use super::{OpArgs, OpError, OpSpec, ParamSpec};
+use super::{prefixed, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
 use num_traits::{One, Zero};
@@ -108,14 +108,6 @@ fn point2(args: &OpArgs, param: &'static str) -> Result<[Rational; 2], OpError> 
     let p = args.point(param)?;
     <[Rational; 2]>::try_from(p).map_err(|_| {
         OpError::param(param, format!("internal error: `{param}` is not a 2D point"))
-    })
-}
-
-/// Prefixes every certificate's property with `prefix`.
-fn prefixed(prefix: &str, certs: Vec<Certificate>) -> impl Iterator<Item = Certificate> + '_ {
-    certs.into_iter().map(move |mut c| {
-        c.property = format!("{prefix}{}", c.property);
-        c
     })
 }
 

@@ -43,6 +43,18 @@ topics!(
 );
 
 pub mod describe;
+
+/// Prefixes every certificate's property with `prefix` (certificates of a part or an
+/// input of the object, e.g. `"spine: "`).
+pub fn prefixed(prefix: &str, certs: Vec<Certificate>) -> Vec<Certificate> {
+    certs
+        .into_iter()
+        .map(|mut c| {
+            c.property = format!("{prefix}{}", c.property);
+            c
+        })
+        .collect()
+}
 pub mod poly_io;
 
 /// What the size of a parameter asks of the construction: the limit it is checked

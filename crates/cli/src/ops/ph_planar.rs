@@ -7,7 +7,7 @@
 //! exact PH curve of the preimage rounded to rationals: its PH certificates are exact,
 //! and the interpolation conditions are checked to a tolerance (reported, `f64`).
 
-use super::{OpArgs, OpError, OpSpec, ParamSpec};
+use super::{prefixed, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
 use rcagd::ph::{
@@ -162,13 +162,6 @@ fn arg3(args: &OpArgs, param: &'static str) -> Result<[Rational; 3], OpError> {
         .map_err(|_| OpError::param(param, format!("`{param}` needs a point [x, y, z]")))
 }
 
-fn prefixed(prefix: &str, certs: Vec<Certificate>) -> impl Iterator<Item = Certificate> + '_ {
-    certs.into_iter().map(move |mut c| {
-        c.property = format!("{prefix}{}", c.property);
-        c
-    })
-}
-
 fn planar_curve(args: &OpArgs) -> Result<PlanarPhCurve<Rational>, OpError> {
     let w = args
         .points("preimage")?
@@ -216,7 +209,7 @@ fn build_offset(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             ),
         )
     })?;
-    let mut certs: Vec<Certificate> = prefixed("base: ", c.certify()).collect();
+    let mut certs = prefixed("base: ", c.certify());
     certs.extend(off.certify());
     certs.push(pole_free);
     Ok(vec![args.object(Geometry::Curve(off.curve), certs)])

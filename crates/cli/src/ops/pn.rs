@@ -12,7 +12,7 @@
 //! that names the parameter point.
 
 use super::poly_io::{self, MPolyQ};
-use super::{OpArgs, OpError, OpSpec, ParamSpec};
+use super::{prefixed, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::{ParamKind, Value};
 use rcagd::laguerre::LaguerreMap;
@@ -158,16 +158,6 @@ fn domain(args: &OpArgs) -> Result<Domain<Q>, OpError> {
 
 fn distances(args: &OpArgs) -> Result<Vec<Q>, OpError> {
     Ok(args.opt_numbers("distances")?.unwrap_or_default())
-}
-
-fn prefixed(prefix: &str, certs: Vec<Certificate>) -> Vec<Certificate> {
-    certs
-        .into_iter()
-        .map(|mut c| {
-            c.property = format!("{prefix}{}", c.property);
-            c
-        })
-        .collect()
 }
 
 /// A construction error, blamed on `param`.

@@ -9,7 +9,7 @@
 //! rational normal form `B∘N_{a,e}`), `coefficients` (the named quadric's numbers),
 //! `matrix` (a symmetric 4×4 matrix, with `quadric = "matrix"`) and `rational_point`.
 
-use super::{OpArgs, OpError, OpSpec, ParamSpec};
+use super::{prefixed, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
 use num_traits::{One, Zero};
@@ -327,17 +327,6 @@ pub(super) fn target(args: &OpArgs) -> Result<Target, OpError> {
         proj: Box::new(proj),
         certs,
     })
-}
-
-/// Prefixes every certificate's property.
-pub(super) fn prefixed(prefix: &str, certs: Vec<Certificate>) -> Vec<Certificate> {
-    certs
-        .into_iter()
-        .map(|mut c| {
-            c.property = format!("{prefix}{}", c.property);
-            c
-        })
-        .collect()
 }
 
 /// The index in messages like `"point 3"`, `"corner p2"`, `"tangent 1"`.

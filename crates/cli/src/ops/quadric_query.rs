@@ -11,7 +11,7 @@
 //! * `quadric_psi_interpolate`: interpolation on `z = xy` by ψ of any degree.
 
 use super::quadric::{
-    control_points, exportable_curve, exportable_patch, hom, located, prefixed, target,
+    control_points, exportable_curve, exportable_patch, hom, located, target,
     COEFFICIENTS, MATRIX, QUADRIC, RATIONAL_POINT,
 };
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
@@ -369,7 +369,7 @@ fn build_miquel_points(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let patch = BezierPatch::from_homogeneous(rows).map_err(|e| OpError::param("net", e.to_string()))?;
     let q = t.proj.quadric();
     let m = miquel_points(&q, &patch).map_err(|e| OpError::param("net", e.to_string()))?;
-    let mut certs = prefixed("", t.certs);
+    let mut certs = t.certs;
     certs.extend(m.certify());
     let list = |v: &[Hom<Q>]| Quantity::Vector(v.iter().map(|p| Quantity::rationals(p)).collect());
     let mut values = vec![
