@@ -15,7 +15,7 @@ use num_traits::{One, Zero};
 use rcagd::canal::blend::PlaneEnd;
 use rcagd::canal::{
     pipe_along_spine, ApproximationPolicy,
-    blend_sphere_plane, blend_spheres, canal_surface_rational, check_canal_regularity,
+    blend_sphere_plane, blend_spheres, canal_surface_rational,
     pipe_around_ph_exportable, BlendEnd, BlendSpine, CanalBuild, CanalError, CanalOptions, CanalSpine,
     CanalSurface, Method, Orientation, RationalCanal,
 };
@@ -594,11 +594,8 @@ fn build_canal_surface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         e => canal_err(e, "points", "radius"),
     })?;
     match built {
-        RationalCanal::Spine(s) => {
-            let (zero, one) = (Rational::zero(), Rational::one());
-            let regular = check_canal_regularity(&family, (&zero, &one))
-                .map_err(|e| canal_err(e, "points", "radius"))?;
-            Ok(vec![canal_object(args, &s, vec![regular])?])
+        RationalCanal::Spine(s, regular) => {
+            Ok(vec![canal_object(args, &s, regular.into_iter().collect())?])
         }
         RationalCanal::Cyclographic(c) => Ok(vec![args.object(
             Geometry::Patches(c.patches().to_vec()),

@@ -43,8 +43,10 @@ use rcagd_geom::BezierPatch;
 /// parametrization when the former needs a quadratic field.
 #[derive(Debug, Clone)]
 pub enum RationalCanal {
-    /// Peternell–Pottmann or Krasauskas, over `Q` ([`canal_surface_pole_free`]).
-    Spine(Box<CanalSurface<Rational>>),
+    /// Peternell–Pottmann or Krasauskas, over `Q` ([`canal_surface_pole_free`]), with the
+    /// certificate of no local self-intersection on the domain of the options
+    /// ([`super::check_canal_regularity`]; `None` without a domain).
+    Spine(Box<CanalSurface<Rational>>, Option<Certificate>),
     /// `Γ(s, t)` on a rectangle of Ω(s, t) (module docs).
     Cyclographic(Box<CyclographicCanal>),
 }
@@ -196,10 +198,11 @@ pub fn canal_surface_rational(
     let radicand = match canal_surface_pole_free(spine, options)? {
         CanalBuild::Rational(s) => {
             // no local self-intersection on the spine domain (decided exactly)
-            if let Some((a, b)) = &options.domain {
-                super::regularity::check_canal_regularity(spine, (a, b))?;
-            }
-            return Ok(RationalCanal::Spine(Box::new(s)));
+            let regular = match &options.domain {
+                Some((a, b)) => Some(super::regularity::check_canal_regularity(spine, (a, b))?),
+                None => None,
+            };
+            return Ok(RationalCanal::Spine(Box::new(s), regular));
         }
         CanalBuild::Extension { radicand, .. } => radicand,
     };

@@ -155,7 +155,7 @@ fn fallback_errors_are_named() {
     );
     assert!(matches!(
         canal_surface_rational(&pipe, &opts(), Some(&dom)),
-        Ok(RationalCanal::Spine(_))
+        Ok(RationalCanal::Spine(..))
     ));
 }
 
@@ -192,7 +192,7 @@ proptest! {
         }
         let Some(built) = built else { return Ok(()) };
         match built {
-            RationalCanal::Spine(s) => prop_assert!(s.all_hold()),
+            RationalCanal::Spine(s, _) => prop_assert!(s.all_hold()),
             RationalCanal::Cyclographic(g) => {
                 prop_assert!(g.all_hold());
                 let f = QuadraticCanal::from_spine(&spine.map_scalar(Scalar::to_f64)).expect("f64");
