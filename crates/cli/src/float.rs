@@ -769,16 +769,7 @@ mod ph {
         curve: &PhCurve<f64>,
         mut certs: Vec<Certificate>,
     ) -> Result<Vec<Object>, OpError> {
-        for c in curve
-            .certify()
-            .into_iter()
-            .chain(curve.certify_arc_length())
-            .chain(curve.certify_curvature())
-        {
-            if !certs.iter().any(|x| x.property == c.property) {
-                certs.push(c);
-            }
-        }
+        crate::ops::ph::add_curve_certificates(&mut certs, curve);
         let bez = curve.to_bezier()?;
         let len = curve.to_poly_curve().arc_length();
         let o = float_object(args, Geometry::Curve(exact_curve(&bez)?), certs);

@@ -322,12 +322,12 @@ fn to_q(x: f64) -> Result<Q, OpError> {
 
 /// The main curve object with the PH, arc-length and curvature certificates, plus the
 /// display objects requested by [`DISPLAY_PARAMS`].
-fn curve_objects(
-    args: &OpArgs,
-    curve: &PhCurve<Q>,
-    mut certs: Vec<Certificate>,
-) -> Result<Vec<Object>, OpError> {
-    let pc = curve.to_poly_curve();
+/// Appends the PH, arc-length and curvature certificates of `curve` to `certs`, each
+/// property once (the curve object of `ph_curve`, exact or `f64`).
+pub(crate) fn add_curve_certificates<F: rcagd_algebra::Scalar>(
+    certs: &mut Vec<Certificate>,
+    curve: &PhCurve<F>,
+) {
     for c in curve
         .certify()
         .into_iter()
@@ -338,6 +338,15 @@ fn curve_objects(
             certs.push(c);
         }
     }
+}
+
+fn curve_objects(
+    args: &OpArgs,
+    curve: &PhCurve<Q>,
+    mut certs: Vec<Certificate>,
+) -> Result<Vec<Object>, OpError> {
+    let pc = curve.to_poly_curve();
+    add_curve_certificates(&mut certs, curve);
     let bez = curve.to_bezier()?;
     // the arc length the certificates speak of, as a value (exact: σ is a polynomial)
     let values = vec![NamedQuantity::new(
