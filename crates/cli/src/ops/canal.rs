@@ -491,7 +491,7 @@ const CANAL_SURFACE: OpSpec = OpSpec {
         ParamSpec::optional(
             "cyclographic_domain",
             ParamKind::Numbers,
-            "[s0, s1, t0, t1]: when |ṁ|² − ṙ² splits only over Q(√d) and the family is polynomial of degree ≤ 2, the surface is built over Q by the cyclographic parametrization Γ(s, t) of Gruber §2.3 on this rectangle of Ω(s, t) = (2s, 2t, 1 − s² − t², 1 + s² + t²) (not a spine interval)",
+            "[s0, s1, t0, t1]: when |ṁ|² − ṙ² splits only over Q(√d) and the family is polynomial of degree ≤ 2, the surface is built over Q by the cyclographic parametrization Γ(s, t) of Gruber §2.3 on this rectangle of Ω(s, t) = (2s, 2t, 1 − s² − t², 1 + s² + t²) (not a spine interval); no local self-intersection on the rectangle is certified exactly, a rectangle where the surface is singular is refused at a point of it",
         ),
     ],
     example: r#"[[object]]
@@ -588,7 +588,9 @@ fn build_canal_surface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         CanalError::IrrationalSplit { .. }
         | CanalError::CyclographicDomainNeeded { .. }
         | CanalError::ZeroRadius => OpError::param("radius", e.to_string()),
-        CanalError::InvalidArgument(_) if dom.is_some() => {
+        CanalError::InvalidArgument(_) | CanalError::SingularCyclographic { .. }
+            if dom.is_some() =>
+        {
             OpError::param("cyclographic_domain", e.to_string())
         }
         e => canal_err(e, "points", "radius"),

@@ -60,6 +60,9 @@ pub struct CyclographicCanal {
     /// For a family with weight `c(p − ρ)ⁿ`: `ρ` and the identity residuals of the Möbius
     /// change (module docs).
     mobius: Option<(Rational, Vec<Poly<Rational>>)>,
+    /// No local self-intersection on the rectangle
+    /// ([`super::check_cyclographic_regularity`]).
+    regular: Certificate,
 }
 
 /// `p'ⁿ P((ρp' + 1)/p')` for `P` of degree `≤ n`.
@@ -148,6 +151,7 @@ impl Certified for CyclographicCanal {
     /// characteristic plane; `w ⊥ k̇`), and the positive weights of the pieces.
     fn certify(&self) -> Vec<Certificate> {
         let mut out = self.surface.certify();
+        out.push(self.regular.clone());
         if let Some((rho, res)) = &self.mobius {
             out.push(Certificate::decide(
                 format!(
@@ -180,11 +184,13 @@ impl Certified for CyclographicCanal {
 /// parametrization `Γ(s, t)` on `cyclographic_domain = [s₀, s₁, t₀, t₁]` (module docs).
 ///
 /// A surface in the spine parameter is checked for local self-intersections on the domain of
-/// `options` ([`super::check_canal_regularity`]).
+/// `options` ([`super::check_canal_regularity`]), `Γ` on its rectangle
+/// ([`super::check_cyclographic_regularity`]).
 ///
 /// # Errors
 /// The errors of [`canal_surface_pole_free`]; [`CanalError::SingularCanal`] where the
 /// surface in the spine parameter intersects itself locally on the domain of `options`;
+/// [`CanalError::SingularCyclographic`] where `Γ` is singular on the rectangle;
 /// [`CanalError::IrrationalSplit`] when the
 /// spine-parameter constructions need `Q(√d)` and `Γ` does not apply (degree > 2 or a
 /// non-constant weight); [`CanalError::CyclographicDomainNeeded`] when `Γ` applies but no
@@ -206,8 +212,8 @@ pub fn canal_surface_rational(
         }
         CanalBuild::Extension { radicand, .. } => radicand,
     };
-    let (surface, mobius) = match QuadraticCanal::from_spine(spine) {
-        Ok(s) => (s, None),
+    let (surface, mobius, family) = match QuadraticCanal::from_spine(spine) {
+        Ok(s) => (s, None, spine.clone()),
         Err(_) => {
             let irr = || CanalError::IrrationalSplit {
                 radicand: format_scalar(&radicand),
@@ -215,7 +221,7 @@ pub fn canal_surface_rational(
             let (poly, rho) = polynomial_form(spine).ok_or_else(irr)?;
             let s = QuadraticCanal::from_spine(&poly).map_err(|_| irr())?;
             let res = mobius_residuals(spine, &poly, &rho);
-            (s, Some((rho, res)))
+            (s, Some((rho, res)), poly)
         }
     };
     let Some([s0, s1, t0, t1]) = cyclographic_domain else {
@@ -244,10 +250,14 @@ pub fn canal_surface_rational(
             format_scalar(t1)
         )));
     }
+    let rect = [s0.clone(), s1.clone(), t0.clone(), t1.clone()];
+    let regular =
+        super::regularity::check_cyclographic_regularity(&family, surface.parameter(), &rect)?;
     Ok(RationalCanal::Cyclographic(Box::new(CyclographicCanal {
         surface,
         radicand,
         patches: split.pieces,
         mobius,
+        regular,
     })))
 }

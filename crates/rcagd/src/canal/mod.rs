@@ -90,8 +90,8 @@ pub use frame::{
 pub use normal_field::{canal_surface_from_normal_field, NormalFieldCanal};
 pub use pipe::{pipe_around_ph, pipe_around_ph_poly, pipe_around_planar, pipe_surface};
 pub use regularity::{
-    canal_regularity_polynomial, check_canal_regularity, check_pipe_global, check_pipe_regularity,
-    pipe_regularity_polynomials,
+    canal_regularity_polynomial, check_canal_regularity, check_cyclographic_regularity,
+    check_pipe_global, check_pipe_regularity, pipe_regularity_polynomials,
 };
 pub use self_intersection::{check_chain_embedded, check_pipe_embedded};
 pub use sum_of_squares::{
@@ -227,6 +227,19 @@ pub enum CanalError {
         to: String,
         /// A rational parameter inside the interval.
         witness: String,
+    },
+    /// The cyclographic parametrization `Γ(s, t)` of a canal surface is singular at a point
+    /// of its rectangle ([`regularity::check_cyclographic_regularity`]).
+    #[error("the canal surface Γ(s, t) is singular at (s, t) = ({s}, {t}) of the rectangle (spine parameter p = {p}): {reason} — choose a rectangle of Ω(s, t) away from it (docs/math/pipes.md#canal-regularity)")]
+    SingularCyclographic {
+        /// The point's `s`.
+        s: String,
+        /// The point's `t`.
+        t: String,
+        /// The spine parameter there.
+        p: String,
+        /// What fails there.
+        reason: String,
     },
     /// The spine's tangent `m′` vanishes at a parameter of the domain.
     #[error("the spine has a zero-length tangent m′ = 0 at t = {at}: the pipe is singular there")]

@@ -40,6 +40,7 @@
 //! (`R = 0`, a vertex) is singular as well; a circle that collapses to a point because
 //! `|ṁ| = |ṙ|` (a pole of a closed surface) is not excluded by `F`.
 
+use super::bipoly::BiPoly;
 use super::{CanalError, CanalSpine};
 use crate::error::format_scalar;
 use rcagd_algebra::roots::{isolate_real_roots_in, rational_roots, RootInterval};
@@ -310,6 +311,162 @@ pub fn check_pipe_regularity(
         witness: format_scalar(&witness),
         curvature_radius,
     })
+}
+
+/// `Dnᵉ·f(N/Dn) = Σ_k f_k N^k Dn^{e−k}` for `deg f ≤ e` (the homogeneous substitution of
+/// the spine parameter `p = N/Dn` of the cyclographic parametrization).
+fn substitute_ratio(
+    f: &P,
+    num: &BiPoly<Rational>,
+    den: &BiPoly<Rational>,
+    e: usize,
+) -> BiPoly<Rational> {
+    let one = BiPoly::from_t(Poly::constant(Rational::ONE));
+    let mut num_pows = vec![one.clone()];
+    let mut den_pows = vec![one];
+    for k in 1..=e {
+        num_pows.push(num_pows[k - 1].mul(num));
+        den_pows.push(den_pows[k - 1].mul(den));
+    }
+    (0..=e).fold(BiPoly::zero(), |acc, k| {
+        let c = f.coeff(k);
+        if c.is_zero() {
+            acc
+        } else {
+            acc.add(&num_pows[k].mul(&den_pows[e - k]).scale(&c))
+        }
+    })
+}
+
+/// The outcome of [`positive_on_rectangle`].
+enum RectangleSign {
+    /// `g > 0` on the rectangle, shown with this many boxes.
+    Positive(usize),
+    /// `g(s, t) ≤ 0` at this point of the rectangle (exact).
+    NotPositive(Rational, Rational),
+    /// Neither shown after the largest number of boxes: the centre of an undecided box.
+    Undecided(Rational, Rational),
+}
+
+/// Most boxes [`positive_on_rectangle`] examines before it gives up.
+const MAX_RECTANGLE_BOXES: usize = 4096;
+
+/// Decides `g > 0` on `[s₀, s₁] × [t₀, t₁]` exactly: a box whose tensor Bernstein
+/// coefficients are all positive is done (convex hull), a corner coefficient `≤ 0` is a value
+/// of `g` there (a witness), anything else is bisected in both directions.
+fn positive_on_rectangle(
+    g: &BiPoly<Rational>,
+    rect: &[Rational; 4],
+) -> Result<RectangleSign, CanalError> {
+    let (m, n) = (g.degree_t().unwrap_or(0), g.degree_u().unwrap_or(0));
+    if g.is_zero() {
+        return Ok(RectangleSign::NotPositive(rect[0].clone(), rect[2].clone()));
+    }
+    let two = Rational::from(2);
+    let mut todo = vec![rect.clone()];
+    let mut boxes = 0;
+    while let Some([s0, s1, t0, t1]) = todo.pop() {
+        boxes += 1;
+        let c = g.bernstein_on((&s0, &s1), (&t0, &t1), m, n)?;
+        let corners = [
+            (0, &s0, &t0),
+            (n, &s0, &t1),
+            (m * (n + 1), &s1, &t0),
+            (m * (n + 1) + n, &s1, &t1),
+        ];
+        if let Some((_, s, t)) = corners.iter().find(|(k, _, _)| c[*k] <= Rational::ZERO) {
+            return Ok(RectangleSign::NotPositive((*s).clone(), (*t).clone()));
+        }
+        if c.iter().all(|x| *x > Rational::ZERO) {
+            continue;
+        }
+        let (sm, tm) = (
+            (s0.clone() + s1.clone()) / two.clone(),
+            (t0.clone() + t1.clone()) / two.clone(),
+        );
+        if boxes + todo.len() >= MAX_RECTANGLE_BOXES {
+            return Ok(RectangleSign::Undecided(sm, tm));
+        }
+        todo.push([s0.clone(), sm.clone(), t0.clone(), tm.clone()]);
+        todo.push([s0, sm.clone(), tm.clone(), t1.clone()]);
+        todo.push([sm.clone(), s1.clone(), t0, tm.clone()]);
+        todo.push([sm, s1, tm, t1]);
+    }
+    Ok(RectangleSign::Positive(boxes))
+}
+
+/// Decides exactly that the canal surface of the polynomial family `spine`, parametrized by
+/// the cyclographic map on the rectangle `[s₀, s₁] × [t₀, t₁]` of Ω(s, t) with the spine
+/// parameter `p = N(s, t)/Dn(s, t)` (`param = (N, Dn)`, `Dn ≠ 0` on the rectangle), has no
+/// local self-intersection there: the condition of [`check_canal_regularity`], `F(p) > 0` and
+/// `R(p) ≠ 0`, for every `p` the rectangle reaches. With `e` the even number `≥ deg F`,
+/// `G(s, t) = Dnᵉ·F(N/Dn)` has the sign of `F(p(s, t))`, so the condition is `G > 0` and
+/// `Dn^{deg R}·R(N/Dn)` of one sign on the rectangle, both decided by tensor Bernstein
+/// coefficients and exact bisection (docs/math/pipes.md#canal-regularity).
+///
+/// # Errors
+/// [`CanalError::SingularCyclographic`] naming a point of the rectangle where `F ≤ 0` or
+/// `R = 0`, or where neither sign could be shown after [`MAX_RECTANGLE_BOXES`] boxes (the
+/// surface is singular or nearly so there).
+pub fn check_cyclographic_regularity(
+    spine: &CanalSpine<Rational>,
+    param: (&BiPoly<Rational>, &BiPoly<Rational>),
+    rect: &[Rational; 4],
+) -> Result<Certificate, CanalError> {
+    let (num, den) = param;
+    let p_at = |s: &Rational, t: &Rational| -> String {
+        let d = den.eval(s, t);
+        if d.is_zero() {
+            "∞".into()
+        } else {
+            format_scalar(&(num.eval(s, t) / d))
+        }
+    };
+    let singular = |s: Rational, t: Rational, reason: &str| CanalError::SingularCyclographic {
+        s: format_scalar(&s),
+        t: format_scalar(&t),
+        p: p_at(&s, &t),
+        reason: reason.to_string(),
+    };
+    let undecided = "neither sign could be shown after exact bisection into boxes (the surface is singular or nearly so near there)";
+    // R ≠ 0: Dn^{deg R}·R(N/Dn) of one sign
+    let r = spine.radius_poly();
+    if r.is_zero() {
+        return Err(CanalError::ZeroRadius);
+    }
+    let rh = substitute_ratio(r, num, den, r.degree().unwrap_or(0));
+    let rh = if rh.eval(&rect[0], &rect[2]) < Rational::ZERO {
+        rh.neg()
+    } else {
+        rh
+    };
+    let r_boxes = match positive_on_rectangle(&rh, rect)? {
+        RectangleSign::Positive(k) => k,
+        RectangleSign::NotPositive(s, t) => {
+            return Err(singular(s, t, "the sphere radius R(p) changes sign or vanishes there (a sphere of radius 0 is a vertex of the surface)"))
+        }
+        RectangleSign::Undecided(s, t) => return Err(singular(s, t, undecided)),
+    };
+    let f = canal_regularity_polynomial(spine);
+    let e = f.degree().unwrap_or(0).div_ceil(2) * 2;
+    let g = substitute_ratio(&f, num, den, e);
+    let f_boxes = match positive_on_rectangle(&g, rect)? {
+        RectangleSign::Positive(k) => k,
+        RectangleSign::NotPositive(s, t) => {
+            return Err(singular(s, t, "F = (H|A|² + RB(A·C))² − R²(|A|² − B²)|A × C|² ≤ 0 there: the characteristic circle meets its neighbours"))
+        }
+        RectangleSign::Undecided(s, t) => return Err(singular(s, t, undecided)),
+    };
+    Ok(Certificate::holds(
+        format!(
+            "no local self-intersection of Γ(s, t) on [{}, {}] × [{}, {}]: with p = N/Dn, Dn^{e}·F(N/Dn) > 0 (F = (H|A|² + RB(A·C))² − R²(|A|² − B²)|A × C|², the characteristic circles keep off the characteristic points; {f_boxes} boxes of exact bisection, all tensor Bernstein coefficients positive) and R(N/Dn) ≠ 0 ({r_boxes} boxes)",
+            format_scalar(&rect[0]),
+            format_scalar(&rect[1]),
+            format_scalar(&rect[2]),
+            format_scalar(&rect[3]),
+        ),
+        true,
+    ))
 }
 
 /// A rational `s ≥ √x` (an `f64` guess made safe, checked exactly).

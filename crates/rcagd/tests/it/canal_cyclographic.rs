@@ -117,6 +117,96 @@ fn a_family_with_a_square_weight_is_built_by_a_mobius_change() {
     assert!(rcagd::canal::cyclographic_param::polynomial_form(&two_roots).is_none());
 }
 
+/// `F(p(s, t))` of the canal regularity condition at a point of Ω(s, t) (exact).
+fn regularity_at(
+    spine: &CanalSpine<Rational>,
+    g: &QuadraticCanal<Rational>,
+    s: &Rational,
+    t: &Rational,
+) -> (Rational, Rational) {
+    let (n, d) = g.parameter();
+    let p = n.eval(s, t) / d.eval(s, t);
+    (
+        rcagd::canal::canal_regularity_polynomial(spine).eval(&p),
+        spine.radius_poly().eval(&p),
+    )
+}
+
+/// Γ is checked for local self-intersections on its rectangle: the gallery's rectangle of
+/// (2.19) is certified (F(p(s, t)) > 0 checked independently on a grid), a rectangle reaching
+/// the vertex p = 0 (radius 0) and one where the radius 1 + p²/4 exceeds the parabola's
+/// radius of curvature 1/2 are refused at a point where the condition fails.
+#[test]
+fn gamma_is_checked_for_local_self_intersection_on_its_rectangle() {
+    let spine = example_2_3();
+    let dom = [r(1, 1), r(2, 1), r(-1, 1), r(1, 1)];
+    let RationalCanal::Cyclographic(c) =
+        canal_surface_rational(&spine, &opts(), Some(&dom)).expect("built")
+    else {
+        panic!("expected the fallback");
+    };
+    let certs = c.certify();
+    assert!(Certificate::all_hold(&certs), "{certs:#?}");
+    assert!(certs
+        .iter()
+        .any(|x| x.property.starts_with("no local self-intersection of Γ")));
+    for i in 0..=4 {
+        for j in 0..=4 {
+            let (s, t) = (r(4 + i, 4), r(j - 2, 2));
+            let (f, rad) = regularity_at(&spine, c.surface(), &s, &t);
+            assert!(f > r(0, 1) && rad != r(0, 1), "F ≤ 0 at ({s}, {t})");
+        }
+    }
+    let witness = |e: CanalError| match e {
+        CanalError::SingularCyclographic { s, t, reason, .. } => (
+            rcagd_algebra::parse_rational(&s).expect("s"),
+            rcagd_algebra::parse_rational(&t).expect("t"),
+            reason,
+        ),
+        e => panic!("expected SingularCyclographic, got {e}"),
+    };
+    // p = 4s/(5s² + 5t² − 3) = 0 on s = 0: the sphere of radius 0
+    let through_vertex = [r(-1, 10), r(1, 10), r(1, 1), r(2, 1)];
+    let (s, t, reason) = witness(
+        canal_surface_rational(&spine, &opts(), Some(&through_vertex)).expect_err("vertex"),
+    );
+    assert!(reason.contains("radius"), "{reason}");
+    let g = QuadraticCanal::from_spine(&spine).expect("Γ");
+    assert!(
+        regularity_at(&spine, &g, &s, &t).1 <= r(0, 1) || s < r(0, 1),
+        "R(p) > 0 at the witness ({s}, {t})"
+    );
+    // m = (u, 0, u²), r = 1 + u²/4: at u = 0 the radius 1 exceeds the radius of curvature 1/2
+    let fat = CanalSpine::polynomial(
+        [
+            Poly::from_ints(&[0, 1]),
+            Poly::zero(),
+            Poly::from_ints(&[0, 0, 1]),
+        ],
+        Poly::new(vec![r(1, 1), r(0, 1), r(1, 4)]),
+    );
+    let err = canal_surface_rational(&fat, &opts(), Some(&through_vertex)).expect_err("singular");
+    assert!(err.to_string().contains("singular at (s, t)"), "{err}");
+    let (s, t, reason) = witness(err);
+    assert!(reason.contains("F = "), "{reason}");
+    let g = QuadraticCanal::from_spine(&fat).expect("Γ");
+    assert!(
+        regularity_at(&fat, &g, &s, &t).0 <= r(0, 1),
+        "F > 0 at the witness ({s}, {t})"
+    );
+    // F = 15(4u² + 1)(240u⁶ + 183u⁴ + 24u² − 16)/64 > 0 exactly for |u| > 0.4636 (sympy):
+    // the gallery's rectangle reaches u ≈ 0.36 and is refused, [1, 3/2] × [−1/2, 1/2]
+    // (u from about 0.63 to 2) is regular
+    assert!(canal_surface_rational(&fat, &opts(), Some(&dom)).is_err());
+    let off = [r(1, 1), r(3, 2), r(-1, 2), r(1, 2)];
+    let RationalCanal::Cyclographic(c) =
+        canal_surface_rational(&fat, &opts(), Some(&off)).expect("regular")
+    else {
+        panic!("expected the fallback");
+    };
+    assert!(c.all_hold());
+}
+
 #[test]
 fn fallback_errors_are_named() {
     let spine = example_2_3();
@@ -184,17 +274,25 @@ proptest! {
             for j in 0..4 {
                 let dom = [r(i, 4), r(2 * i + 1, 8), r(j, 4), r(2 * j + 1, 8)];
                 match canal_surface_rational(&spine, &opts(), Some(&dom)) {
-                    Ok(b) => { built = Some(b); break 'outer; }
-                    Err(CanalError::InvalidArgument(_)) => continue,
+                    Ok(b) => { built = Some((b, dom)); break 'outer; }
+                    Err(CanalError::InvalidArgument(_) | CanalError::SingularCyclographic { .. }) => continue,
                     Err(_) => return Ok(()),
                 }
             }
         }
-        let Some(built) = built else { return Ok(()) };
+        let Some((built, dom)) = built else { return Ok(()) };
         match built {
             RationalCanal::Spine(s, _) => prop_assert!(s.all_hold()),
             RationalCanal::Cyclographic(g) => {
                 prop_assert!(g.all_hold());
+                // the regularity certificate, checked independently at points of the rectangle
+                let [s0, s1, t0, t1] = dom;
+                for (i, j) in [(0, 0), (1, 2), (2, 1), (3, 3), (4, 4)] {
+                    let s = s0.clone() + (s1.clone() - s0.clone()) * r(i, 4);
+                    let t = t0.clone() + (t1.clone() - t0.clone()) * r(j, 4);
+                    let (fv, rad) = regularity_at(&spine, g.surface(), &s, &t);
+                    prop_assert!(fv > r(0, 1) && rad != r(0, 1));
+                }
                 let f = QuadraticCanal::from_spine(&spine.map_scalar(Scalar::to_f64)).expect("f64");
                 let (s, t) = (r(1, 3), r(2, 7));
                 if let (Ok(x), Ok(y)) = (g.surface().eval(&s, &t), f.eval(&Scalar::to_f64(&s), &Scalar::to_f64(&t))) {
