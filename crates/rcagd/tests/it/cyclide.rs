@@ -871,6 +871,10 @@ fn ratio_cyclide(k: &Q) -> Result<DupinCyclide<Q>, CyclideError> {
     DupinCyclide::from_conic(PeConic::circle_ratio(c0, u, v)?)
 }
 
+/// Three spheres, the cyclide they must give (if known), and whether they lie on the
+/// second family (a pe hyperbola).
+type SphereCase = ([OrientedSphere<Q>; 3], Option<DupinCyclide<Q>>, bool);
+
 /// Three spheres on a pe hyperbola whose conjugate pe circle lies in a plane `T^⊥` of
 /// non-square discriminant `ab` (refused as `NotRational` before session 13): `ab = 199`
 /// for the spheres `(0, 0, 0; 0)`, `(1, 0, 0; 10)`, `(0, 1, 0; 10)`, and three spheres of
@@ -884,7 +888,7 @@ fn ratio_cyclide(k: &Q) -> Result<DupinCyclide<Q>, CyclideError> {
 #[test]
 fn three_spheres_on_a_pe_hyperbola_with_a_non_square_discriminant() {
     let s = |c: [i64; 3], r: i64| OrientedSphere::new([qi(c[0]), qi(c[1]), qi(c[2])], qi(r));
-    let mut cases: Vec<([OrientedSphere<Q>; 3], Option<DupinCyclide<Q>>, bool)> = vec![(
+    let mut cases: Vec<SphereCase> = vec![(
         [s([0, 0, 0], 0), s([1, 0, 0], 10), s([0, 1, 0], 10)],
         None,
         true,
