@@ -915,12 +915,13 @@ fn build_developable_edge(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 
 const PN_DEVELOPABLE_MOTION: OpSpec = OpSpec {
     name: "pn_developable_motion",
-    summary: "the envelope of a developable PN surface (planes Λ⁻¹(y(t)) of a rational isotropic curve) moved by the rational motions x ↦ R(u) x + b(u), R the rotation about a coordinate axis by 2 atan u (Peternell Prop. 4.2, (4.21)): a PN surface with exact offsets; certified AᵀEA ≡ κE, contact with every moved developable",
+    summary: "the envelope of a developable PN surface (planes Λ⁻¹(y(t)) of a rational isotropic curve) moved by the rational motions x ↦ R(u) x + b(u), R the rotation about a coordinate axis by 2 atan u, or by any rational family of Laguerre maps given in the form (4.21) (`family`; Peternell Prop. 4.2, (4.21)): a PN surface with exact offsets; certified AᵀEA ≡ κE, contact with every moved developable",
     params: &[
         CURVE_PARAM,
         CURVE_DENOMINATOR,
         AXIS,
         TRANSLATION,
+        LAGUERRE_FAMILY,
         ParamSpec::with_default(
             "domain",
             ParamKind::Numbers,
@@ -948,7 +949,7 @@ distances = ["1/2"]
 
 fn build_developable_motion(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let dev = developable_arg(args)?;
-    let fam = screw_family(args)?;
+    let fam = laguerre_family(args)?;
     let env = DevelopableMotionEnvelope::new(&dev, &fam).map_err(blame("translation"))?;
     let mut certs = prefixed("developable: ", dev.certify());
     certs.extend(env.family().certificates());
@@ -962,14 +963,41 @@ const AXIS: ParamSpec = ParamSpec::with_default(
     "\"z\"",
     "rotation axis of the motions",
 );
-const TRANSLATION: ParamSpec = ParamSpec::required(
+const TRANSLATION: ParamSpec = ParamSpec::optional(
     "translation",
     ParamKind::Grid,
-    "translation b(u) of the motions: three rows of power coefficients in the family parameter",
+    "translation b(u) of the motions: three rows of power coefficients in the family parameter (needed unless `family` is given)",
 ).degree();
+const LAGUERRE_FAMILY: ParamSpec = ParamSpec::optional(
+    "family",
+    ParamKind::Grid,
+    "any rational family of Laguerre maps in the form (4.21), ε ↦ ε·[[w, 0], [a, A]](u), instead of axis/translation: 21 rows of power coefficients in the family parameter — w, then a₁, a₂, a₃, a₄, then the 16 entries of A row by row (A[i][j] multiplies εᵢ into ε'ⱼ; oriented planes are ε = (e₀, n, 1)); AᵀEA ≡ κE (E = diag(1, 1, 1, −1)) is required and certified",
+).degree();
+
+/// The family of the `family` parameter (any (4.21) family), else the screw family of the
+/// `axis` and `translation` parameters.
+fn laguerre_family(args: &OpArgs) -> Result<LaguerreFamily<Q>, OpError> {
+    if args.get("family").is_none() {
+        return screw_family(args);
+    }
+    let rows: [RatFn<Q>; 21] = n_polys(args, "family", "w, a₁…a₄, A₁₁…A₄₄")?;
+    let p = |i: usize| rows[i].num.clone();
+    LaguerreFamily::new(
+        p(0),
+        [p(1), p(2), p(3), p(4)],
+        core::array::from_fn(|i| core::array::from_fn(|j| p(5 + 4 * i + j))),
+    )
+    .map_err(blame("family"))
+}
 
 /// The screw family of the `axis` and `translation` parameters.
 fn screw_family(args: &OpArgs) -> Result<LaguerreFamily<Q>, OpError> {
+    if args.get("translation").is_none() {
+        return Err(OpError::param(
+            "translation",
+            "give the translation b(u) of the screw family (three rows), or a general `family`",
+        ));
+    }
     let axis = match args.get("axis") {
         Some(Value::Str(a)) if a == "x" => 0,
         Some(Value::Str(a)) if a == "y" => 1,
@@ -990,7 +1018,7 @@ fn cycle_arg(args: &OpArgs, param: &'static str) -> Result<Cycle<Q>, OpError> {
 
 const PN_CONE_MOTION: OpSpec = OpSpec {
     name: "pn_cone_motion",
-    summary: "the envelope of a cone of revolution (spanned by two cycles) moved by the rational motions x ↦ R(t) x + b(t), R the rotation about a coordinate axis by 2 atan t (Peternell Cor. 4.4 via Thm 4.5): a PN surface with exact offsets, touching every moved cone along a curve",
+    summary: "the envelope of a cone of revolution (spanned by two cycles) moved by the rational motions x ↦ R(t) x + b(t), R the rotation about a coordinate axis by 2 atan t, or by any rational family of Laguerre maps in the form (4.21) (`family`; Peternell Cor. 4.4 via Thm 4.5): a PN surface with exact offsets, touching every moved cone along a curve",
     params: &[
         ParamSpec::required(
             "cycle1",
@@ -1004,6 +1032,7 @@ const PN_CONE_MOTION: OpSpec = OpSpec {
         ),
         AXIS,
         TRANSLATION,
+        LAGUERRE_FAMILY,
         ParamSpec::with_default(
             "domain",
             ParamKind::Numbers,
@@ -1032,7 +1061,7 @@ distances = ["1/4"]
 fn build_cone_motion(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let c1 = cycle_arg(args, "cycle1")?;
     let c2 = cycle_arg(args, "cycle2")?;
-    let fam = screw_family(args)?;
+    let fam = laguerre_family(args)?;
     let env = moved_cone_envelope(&c1, &c2, &fam).map_err(blame("cycle2"))?;
     let (f1, f2) = env.families();
     let mut certs = fam.certificates();

@@ -7,14 +7,19 @@ use super::pe::{
     add, negligible, pe, pe_row, power_of_two_near_sqrt, scale, size, sqrt_in_field, sub,
 };
 use super::CyclideError;
+use rcagd_algebra::conic_point::{rational_conic_point, TernaryOutcome};
 use rcagd_algebra::{format_scalar, format_vector, Matrix, Poly, Scalar};
 
 /// A pe conic whose cyclographic image is a Dupin cyclide.
 #[derive(Debug, Clone, PartialEq)]
 pub enum PeConic<F> {
-    /// The pe circle `C(θ) = C₀ + ρ (cos θ U + sin θ V)` in a Euclidean plane of
-    /// `R^{3,1}`: `⟨U, U⟩ = ⟨V, V⟩ = 1` (or, from [`PeConic::circle_scaled`], equal
-    /// positive norms `R` with `ρ = 1`), `⟨U, V⟩ = 0`, `ρ ≠ 0` (Lemma 3.4, Prop. 3.1).
+    /// The pe circle `C(θ) = C₀ + ρ (cos θ U + sin θ V/√k)` in a Euclidean plane of
+    /// `R^{3,1}`: `⟨U, U⟩ = ⟨V, V⟩ = 1`, `k = 1` (or, from [`PeConic::circle_scaled`], equal
+    /// positive norms `R` with `ρ = 1`, `k = 1`; or, from [`PeConic::circle_ratio`],
+    /// `⟨V, V⟩ = k⟨U, U⟩` with `k > 0` not necessarily a square and `ρ = 1`),
+    /// `⟨U, V⟩ = 0`, `ρ ≠ 0` (Lemma 3.4, Prop. 3.1). Its rational parametrization is
+    /// `C₀ + ρ((1 − k s²)U + 2s V)/(1 + k s²)` (`s = tan(θ/2)/√k`;
+    /// docs/math/cyclides.md#three-spheres).
     Circle {
         /// Centre `C₀ = (c, r₀)`: the middle sphere.
         center: [F; 4],
@@ -24,6 +29,9 @@ pub enum PeConic<F> {
         v: [F; 4],
         /// The pe radius `ρ ≠ 0`.
         rho: F,
+        /// The norm ratio `k = ⟨V, V⟩/⟨U, U⟩ > 0` (`1` for the pe-orthonormal and the
+        /// equal-norm forms).
+        ratio: F,
     },
     /// The pe parabola `C(t) = C₀ + t U + (t²/2) N` in a γ-plane (Prop. 3.2):
     /// `⟨U, U⟩ = 1` (or, from [`PeConic::parabola_scaled`], any `⟨U, U⟩ = g > 0`: the
@@ -113,11 +121,41 @@ impl<F: Scalar> PeConic<F> {
         Self::circle_checked(center, w1, w2, F::one(), false)
     }
 
+    /// The pe circle `C₀ + ((1 − k s²)W₁ + 2s W₂)/(1 + k s²)` for spacelike, pe-orthogonal
+    /// `W₁, W₂` with `k = ⟨W₂, W₂⟩/⟨W₁, W₁⟩` (stored with `ρ = 1`). `k` need not be a
+    /// square: this is the circle `C₀ + cos θ W₁ + sin θ W₂/√k` with `tan(θ/2) = √k s`,
+    /// rational although its `(cos θ, sin θ)` form is not (docs/math/cyclides.md#three-spheres).
+    ///
+    /// # Errors
+    /// As [`PeConic::circle`], with "`⟨W₁, W₂⟩ = 0`, both norms positive" in place of
+    /// "pe-unit".
+    pub fn circle_ratio(center: [F; 4], w1: [F; 4], w2: [F; 4]) -> Result<Self, CyclideError> {
+        let (n1, n2) = (pe(&w1, &w1), pe(&w2, &w2));
+        let ratio = if n1 <= F::zero() || n1.is_zero() {
+            F::one() // rejected below as isotropic / timelike
+        } else {
+            n2 / n1
+        };
+        Self::circle_full(center, w1, w2, F::one(), ratio, false)
+    }
+
     pub(crate) fn circle_checked(
         center: [F; 4],
         u: [F; 4],
         v: [F; 4],
         rho: F,
+        unit: bool,
+    ) -> Result<Self, CyclideError> {
+        Self::circle_full(center, u, v, rho, F::one(), unit)
+    }
+
+    /// [`PeConic::circle_checked`] with the norm ratio `k = ⟨V, V⟩/⟨U, U⟩`.
+    pub(crate) fn circle_full(
+        center: [F; 4],
+        u: [F; 4],
+        v: [F; 4],
+        rho: F,
+        ratio: F,
         unit: bool,
     ) -> Result<Self, CyclideError> {
         let s = size(&u).max(size(&v)).max(1.0);
@@ -138,7 +176,7 @@ impl<F: Scalar> PeConic<F> {
         }
         let one = if unit { F::one() } else { uu.clone() };
         if !(negligible(&(uu.clone() - one.clone()), s * s)
-            && negligible(&(vv.clone() - one), s * s)
+            && negligible(&(vv.clone() - one * ratio.clone()), s * s)
             && negligible(&uv, s * s))
         {
             return Err(CyclideError::NotOrthonormal(format!(
@@ -146,7 +184,11 @@ impl<F: Scalar> PeConic<F> {
                 format_scalar(&uu),
                 format_scalar(&vv),
                 format_scalar(&uv),
-                if unit { "1, 1, 0" } else { "equal norms, 0" },
+                if unit {
+                    "1, 1, 0".to_string()
+                } else {
+                    format!("⟨V, V⟩ = {}·⟨U, U⟩, 0", format_scalar(&ratio))
+                },
                 format_vector(&u),
                 format_vector(&v)
             )));
@@ -157,7 +199,13 @@ impl<F: Scalar> PeConic<F> {
                 "r ≡ 0: every cycle of the pe circle is a point (the circle lies in R³); its cyclographic image is the circle itself, not a surface".into(),
             ));
         }
-        Ok(PeConic::Circle { center, u, v, rho })
+        Ok(PeConic::Circle {
+            center,
+            u,
+            v,
+            rho,
+            ratio,
+        })
     }
 
     /// The pe parabola `C₀ + t U + (t²/2) N`, validated.
@@ -221,18 +269,25 @@ impl<F: Scalar> PeConic<F> {
         matches!(self, PeConic::Parabola { .. })
     }
 
-    /// The rational parametrization: `((1+t²)C₀ + ρ((1−t²)U + 2tV)) / (1+t²)` for the
-    /// circle, `C₀ + tU + (t²/2)N` for the parabola.
+    /// The rational parametrization: `((1+kt²)C₀ + ρ((1−kt²)U + 2tV)) / (1+kt²)` for the
+    /// circle (`k` its norm ratio, `1` unless built by [`PeConic::circle_ratio`]),
+    /// `C₀ + tU + (t²/2)N` for the parabola.
     pub fn curve(&self) -> CycleCurve<F> {
         let (z, one, two) = (F::zero(), F::one(), F::from_i64(2));
         match self {
-            PeConic::Circle { center, u, v, rho } => CycleCurve {
-                w: quad(one.clone(), z.clone(), one.clone()),
+            PeConic::Circle {
+                center,
+                u,
+                v,
+                rho,
+                ratio,
+            } => CycleCurve {
+                w: quad(one, z, ratio.clone()),
                 p: core::array::from_fn(|i| {
                     quad(
                         center[i].clone() + rho.clone() * u[i].clone(),
                         two.clone() * rho.clone() * v[i].clone(),
-                        center[i].clone() - rho.clone() * u[i].clone(),
+                        ratio.clone() * (center[i].clone() - rho.clone() * u[i].clone()),
                     )
                 }),
             },
@@ -260,8 +315,17 @@ impl<F: Scalar> PeConic<F> {
     /// discriminants are squares, docs/math/cyclides.md#rationality).
     pub fn conjugate(&self) -> Result<CycleCurve<F>, CyclideError> {
         match self {
-            PeConic::Circle { center, u, v, rho } => {
-                let (na, nb) = null_pair(&[u.clone(), v.clone()])?;
+            PeConic::Circle {
+                center, u, v, rho, ..
+            } => {
+                let (na, nb) = match null_pair(&[u.clone(), v.clone()]) {
+                    Ok(pair) => pair,
+                    // the isotropic directions need √k: parametrize through a rational point
+                    Err(CyclideError::NotRational(why)) => {
+                        return hyperbola_through_point(center, u, v, rho, &why)
+                    }
+                    Err(e) => return Err(e),
+                };
                 let h = pe(&na, &nb);
                 // Z = α N₊ + β N₋ with 2αβh = −ρ²: α = s k, β = a/(s k)
                 let a = -(rho.clone() * rho.clone() * pe(u, u)) / (F::from_i64(2) * h);
@@ -289,6 +353,89 @@ impl<F: Scalar> PeConic<F> {
             }
         }
     }
+}
+
+/// The pe hyperbola `{C₀ + Z : Z ⟂ U, V, ⟨Z, Z⟩ = m}`, `m = −ρ²⟨U, U⟩`, when its isotropic
+/// directions are irrational (the norm ratio `k` of the circle is not a square): with a
+/// pe-orthogonal basis `z₁, z₂` of `span(U, V)^⊥` (`α = ⟨z₁, z₁⟩`, `β = ⟨z₂, z₂⟩`, `αβ < 0`)
+/// and a rational point `P₀ = x z₁ + y z₂` of `αx² + βy² = m` (Legendre's theorem, the
+/// algebra's conic engine), the lines through `P₀` with direction `d(s) = z₁ + sλz₂` meet
+/// the hyperbola again in `Z(s) = (⟨d, d⟩P₀ − 2⟨P₀, d⟩d)/⟨d, d⟩`, so
+/// `D(s) = (⟨d, d⟩C₀ + ⟨d, d⟩P₀ − 2⟨P₀, d⟩d)/⟨d, d⟩` (degree 2; `λ` a power of two near
+/// `√(α/|β|)` balances it; docs/math/cyclides.md#three-spheres).
+fn hyperbola_through_point<F: Scalar>(
+    center: &[F; 4],
+    u: &[F; 4],
+    v: &[F; 4],
+    rho: &F,
+    why: &str,
+) -> Result<CycleCurve<F>, CyclideError> {
+    let basis = pe_complement(&[u.clone(), v.clone()])?;
+    let [a0, b0] = <[[F; 4]; 2]>::try_from(basis)
+        .map_err(|_| CyclideError::InvalidArgument("U and V are linearly dependent".into()))?;
+    let sc = size(&a0).max(size(&b0)).max(1.0);
+    let (z1, z2) = if negligible(&pe(&a0, &a0), sc * sc) {
+        let c = add(&a0, &b0);
+        let cc = pe(&c, &c);
+        (c.clone(), sub(&a0, &scale(&(pe(&a0, &c) / cc), &c)))
+    } else {
+        let aa = pe(&a0, &a0);
+        (a0.clone(), sub(&b0, &scale(&(pe(&b0, &a0) / aa), &a0)))
+    };
+    let (al, be) = (pe(&z1, &z1), pe(&z2, &z2));
+    let m = -(rho.clone() * rho.clone() * pe(u, u));
+    let not_rational = |more: String| {
+        CyclideError::NotRational(format!(
+            "{why}; the conjugate pe hyperbola {}·x² + {}·y² = {} has {more}",
+            format_scalar(&al),
+            format_scalar(&be),
+            format_scalar(&m)
+        ))
+    };
+    let q = |x: &F| {
+        x.to_rational()
+            .ok_or_else(|| not_rational("coefficients outside Q".into()))
+    };
+    let (qa, qb, qm) = (q(&al)?, q(&be)?, q(&m)?);
+    let (x, y) = match rational_conic_point(&qa, &qb, &(-qm)) {
+        Ok(TernaryOutcome::Point([x, y, w])) if !w.is_zero() => (
+            F::from_rational(&(x / w.clone())),
+            F::from_rational(&(y / w)),
+        ),
+        Ok(TernaryOutcome::Point(_)) => {
+            return Err(not_rational("only a point at infinity".into()))
+        }
+        Ok(TernaryOutcome::NoPoint(place)) => {
+            return Err(not_rational(format!(
+                "no rational point (none over {place})"
+            )))
+        }
+        Err(e) => return Err(not_rational(format!("no rational point found ({e})"))),
+    };
+    let p0: [F; 4] =
+        core::array::from_fn(|i| x.clone() * z1[i].clone() + y.clone() * z2[i].clone());
+    let lam = if be.is_zero() {
+        F::one()
+    } else {
+        power_of_two_near_sqrt(&(al.clone() / be.clone()))
+    };
+    // d(s) = z₁ + s λ z₂: ⟨d, d⟩ = α + λ²β s², ⟨P₀, d⟩ = αx + λβy s
+    let l2b = lam.clone() * lam.clone() * be.clone();
+    let w = quad(al.clone(), F::zero(), l2b.clone());
+    let pd = [al.clone() * x, lam.clone() * be * y];
+    let two = F::from_i64(2);
+    let p = core::array::from_fn(|i| {
+        let c = center[i].clone() + p0[i].clone();
+        // ⟨d,d⟩(C₀ + P₀) − 2⟨P₀, d⟩ d
+        let d0 = z1[i].clone();
+        let d1 = lam.clone() * z2[i].clone();
+        quad(
+            al.clone() * c.clone() - two.clone() * pd[0].clone() * d0.clone(),
+            -(two.clone() * (pd[0].clone() * d1.clone() + pd[1].clone() * d0)),
+            l2b.clone() * c - two.clone() * pd[1].clone() * d1,
+        )
+    });
+    Ok(CycleCurve { w, p })
 }
 
 /// A basis of `{X : ⟨X, Aᵢ⟩ = 0 ∀i}`.

@@ -88,14 +88,16 @@ pub(crate) fn implicit_generic<F: Scalar, T: Alg<F>>(conic: &PeConic<F>, x: &[T;
         .add(&y[2].mul(&y[2]))
         .sub(&y[3].mul(&y[3]));
     match conic {
-        PeConic::Circle { u, v, rho, .. } => {
+        PeConic::Circle {
+            u, v, rho, ratio, ..
+        } => {
             let rr = rho.clone() * rho.clone();
             let a = yy.add(&x[0].mul(&x[0]).scale(&(rr.clone() * super::pe::pe(u, u))));
             let (yu, yv) = (pe_const(&y, u), pe_const(&y, v));
             let four_rr = rr * F::from_i64(4);
             a.mul(&a).sub(
                 &yu.mul(&yu)
-                    .add(&yv.mul(&yv))
+                    .add(&yv.mul(&yv).scale(&(F::one() / ratio.clone())))
                     .mul(&x[0])
                     .mul(&x[0])
                     .scale(&four_rr),

@@ -113,12 +113,23 @@ impl<F: Scalar> DualPencil<F> {
     pub fn of(cyclide: &DupinCyclide<F>) -> Result<Self, CyclideError> {
         let om = omega::<F>();
         match cyclide.conic() {
-            PeConic::Circle { center, u, v, rho } => {
+            PeConic::Circle {
+                center,
+                u,
+                v,
+                rho,
+                ratio,
+            } => {
                 let e = lift(center, F::one());
                 let (ut, vt) = (lift(u, F::zero()), lift(v, F::zero()));
                 let rr = rho.clone() * rho.clone();
                 let (ee, uu, vv) = (outer(&e, &e), outer(&ut, &ut), outer(&vt, &vt));
-                let c = lin(&[(F::one(), &ee), (-rr.clone(), &uu), (-rr.clone(), &vv)]);
+                // V/√k is the second pe-orthonormal direction (times ρ): its outer product is VVᵀ/k
+                let c = lin(&[
+                    (F::one(), &ee),
+                    (-rr.clone(), &uu),
+                    (-rr.clone() / ratio.clone(), &vv),
+                ]);
                 let rr_d = rr.clone() * super::pe::pe(u, u);
                 let d = lin(&[(F::one(), &c), (rr_d.clone(), &om)]);
                 let ck = plane_kernel(center, u, v)?;
@@ -212,6 +223,24 @@ impl<F: Scalar> DualPencil<F> {
         det_poly(&m)
     }
 
+    /// The magnitude of `det(λC + Ω)`: the permanent of `|λC| + |Ω|` (entrywise absolute
+    /// values, in `f64`), whose coefficient `k` bounds the sum of the absolute values of the
+    /// terms of coefficient `k` of the determinant (the `f64` tolerance scale).
+    pub fn determinant_magnitude(&self) -> Poly<f64> {
+        let (c, om) = match (self.members.first(), self.members.get(1)) {
+            (Some(c), Some(o)) => (&c.matrix, &o.matrix),
+            _ => return Poly::zero(),
+        };
+        let m: Vec<Vec<Poly<f64>>> = (0..5)
+            .map(|i| {
+                (0..5)
+                    .map(|j| Poly::new(vec![om[i][j].to_f64().abs(), c[i][j].to_f64().abs()]))
+                    .collect()
+            })
+            .collect();
+        permanent_poly(&m)
+    }
+
     /// Certificates: the kernels (singular members of rank ≤ 3), the determinant of the
     /// pencil, and the cyclide's tangent γ-hyperplanes `(−n·x, n, 1)` tangent to every
     /// member (the cyclide is the cyclographic image of each).
@@ -251,6 +280,16 @@ impl<F: Scalar> DualPencil<F> {
             }
         }
         let p = self.determinant();
+        // f64: coefficient k of a residual is compared with the sum of the absolute values
+        // of the terms that make it up — the permanent of |λC| + |Ω| (the determinant's
+        // terms without their signs), not the determinant's own largest coefficient
+        let mag = self.determinant_magnitude();
+        let within = |res: &Poly<F>, extra: &[f64]| {
+            res.coeffs().iter().enumerate().all(|(k, x)| {
+                let m = mag.coeff(k).max(extra.get(k).copied().unwrap_or(0.0));
+                negligible(x, m)
+            })
+        };
         match &self.rho2 {
             Some(rr) => {
                 let l0 = F::one() / rr.clone();
@@ -260,11 +299,6 @@ impl<F: Scalar> DualPencil<F> {
                     && p.degree() == Some(3)
                     && p.eval(&l0).is_zero()
                     && dp.eval(&l0).is_zero();
-                let sc = p
-                    .coeffs()
-                    .iter()
-                    .map(|x| x.to_f64().abs())
-                    .fold(1.0, f64::max);
                 let ok = ok
                     || (!ex && {
                         let k = p.coeff(1);
@@ -273,9 +307,11 @@ impl<F: Scalar> DualPencil<F> {
                             F::zero(),
                             k.clone(),
                             -F::from_i64(2) * k.clone() * rr.clone(),
-                            k * rr.clone() * rr.clone(),
+                            k.clone() * rr.clone() * rr.clone(),
                         ]);
-                        (&p - &want).coeffs().iter().all(|x| negligible(x, sc))
+                        let (kf, rf) = (k.to_f64().abs(), rr.to_f64().abs());
+                        let extra = [0.0, kf, 2.0 * kf * rf, kf * rf * rf];
+                        !k.is_zero() && within(&(&p - &want), &extra)
                     });
                 out.push(Certificate::decide(
                     "det(λC + μΩ) = κλμ²(μ − ρ²λ)², κ ≠ 0: Ω (λ = 0) simple, C (μ = 0) double, D = C + ρ²Ω double (Peternell §3.8.1, corrected)",
@@ -285,15 +321,12 @@ impl<F: Scalar> DualPencil<F> {
                 ));
             }
             None => {
-                let sc = p
-                    .coeffs()
-                    .iter()
-                    .map(|x| x.to_f64().abs())
-                    .fold(1.0, f64::max);
-                out.push(polynomial_is_zero_scaled(
+                let ok = within(&p, &[]);
+                out.push(Certificate::decide(
                     "det(λC + μΩ) ≡ 0 (every member of the parabolic pencil is singular; C and D have rank 3)",
-                    p.coeffs(),
-                    sc,
+                    ok,
+                    ex,
+                    || format!("det(λC + Ω) = {:?}", p.coeffs().iter().map(format_scalar).collect::<Vec<_>>()),
                 ));
             }
         }
@@ -337,6 +370,33 @@ impl<F: Scalar> DualPencil<F> {
         }
         out
     }
+}
+
+/// Permanent of a square matrix of polynomials (the cofactor expansion of
+/// [`det_poly`] without signs; 5×5 here).
+fn permanent_poly(m: &[Vec<Poly<f64>>]) -> Poly<f64> {
+    let n = m.len();
+    if n == 0 {
+        return Poly::constant(1.0);
+    }
+    let mut acc = Poly::zero();
+    for (j, a) in m[0].iter().enumerate() {
+        if a.is_zero() {
+            continue;
+        }
+        let minor: Vec<Vec<Poly<f64>>> = m[1..]
+            .iter()
+            .map(|row| {
+                row.iter()
+                    .enumerate()
+                    .filter(|(k, _)| *k != j)
+                    .map(|(_, x)| x.clone())
+                    .collect()
+            })
+            .collect();
+        acc = &acc + &(a * &permanent_poly(&minor));
+    }
+    acc
 }
 
 /// Determinant of a square matrix of polynomials (cofactor expansion; 5×5 here).

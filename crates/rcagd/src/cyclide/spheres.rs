@@ -35,7 +35,8 @@ use rcagd_geom::certify::polynomial_is_zero_scaled;
 /// (e.g. collinear centres with equal radii) or coincide, if two of them in a γ-plane are
 /// in oriented contact, or if they lie on a pe hyperbola of spacelike radius (no real sphere
 /// touches all three); [`CyclideError::NotRational`] if the cyclide needs a quadratic field
-/// (a discriminant that is not a rational square, or a conic without rational point).
+/// (the conic of the tangent cycles, or in the Euclidean case the conjugate pe hyperbola,
+/// has no rational point).
 pub fn from_three_spheres<F: Scalar>(
     spheres: &[OrientedSphere<F>; 3],
 ) -> Result<DupinCyclide<F>, CyclideError> {
@@ -99,16 +100,12 @@ pub fn from_three_spheres<F: Scalar>(
     };
     let z = sub(pick, &scale(&(pe(pick, &w1) / r.clone()), &w1));
     let zz = pe(&z, &z);
-    let ratio = r.clone() / zz.clone();
-    let k = sqrt_in_field(&ratio).ok_or_else(|| {
-        CyclideError::NotRational(format!(
-            "the plane of the three cycles has discriminant {} (not a rational square): the cyclide needs the field Q(√{})",
-            format_scalar(&(r.clone() * zz.clone())),
-            format_scalar(&(r * zz))
-        ))
-    })?;
-    let w2 = scale(&k, &z);
-    DupinCyclide::from_conic(PeConic::circle_scaled(c0, w1, w2)?)
+    let conic = match sqrt_in_field(&(r.clone() / zz.clone())) {
+        Some(k) => PeConic::circle_scaled(c0, w1, scale(&k, &z))?,
+        // ⟨Z, Z⟩/R not a square: C₀ + ((1 − k s²)W₁ + 2s Z)/(1 + k s²), k = ⟨Z, Z⟩/R
+        None => PeConic::circle_ratio(c0, w1, z)?,
+    };
+    DupinCyclide::from_conic(conic)
 }
 
 /// The pseudo-Euclidean plane `T = span(B₂, B₃)`: the three cycles lie on the pe hyperbola
@@ -116,8 +113,11 @@ pub fn from_three_spheres<F: Scalar>(
 /// `{C₀ + Z : Z ∈ T^⊥, ⟨Z, Z⟩ = −R}` of the Euclidean plane `T^⊥`
 /// (docs/math/cyclides.md#three-spheres). With an orthogonal basis `z₁, z₂` of `T^⊥`
 /// (`a = ⟨z₁, z₁⟩`, `b = ⟨z₂, z₂⟩`) a point `W₁ = x z₁ + y z₂` of the circle is a rational
-/// point of the conic `a x² + b y² = −R`, and `W₂ = (b y z₁ − a x z₂)/√(ab)` completes it to
-/// the equal-norm pair of [`PeConic::circle_scaled`].
+/// point of the conic `a x² + b y² = −R`, and `W₁^⊥ = b y z₁ − a x z₂`
+/// (`⟨W₁^⊥, W₁^⊥⟩ = ab⟨W₁, W₁⟩`) completes it: to the equal-norm pair
+/// `(W₁, W₁^⊥/√(ab))` of [`PeConic::circle_scaled`] when `ab` is a square, else to the
+/// circle `C₀ + ((1 − ab s²)W₁ + 2s W₁^⊥)/(1 + ab s²)` of [`PeConic::circle_ratio`]
+/// (rational either way).
 fn hyperbola_case<F: Scalar>(
     c0: [F; 4],
     b2: &[F; 4],
@@ -136,24 +136,25 @@ fn hyperbola_case<F: Scalar>(
     let b = pe(&z2, &z2);
     let n = -r;
     let ab = a.clone() * b.clone();
-    let root_ab = sqrt_in_field(&ab).ok_or_else(|| {
-        CyclideError::NotRational(format!(
-            "the three cycles lie on a pe hyperbola; the conjugate pe circle lies in the plane T^⊥ of discriminant {} (not a rational square): its (cos θ, sin θ) form needs Q(√{})",
-            format_scalar(&ab),
-            format_scalar(&ab)
-        ))
-    })?;
     let (x, y) = match sqrt_in_field(&(n.clone() / a.clone())) {
         Some(k) => (k, F::zero()),
         None => conic_point_of(&a, &b, &n)?,
     };
     let w1: [F; 4] =
         core::array::from_fn(|i| x.clone() * z1[i].clone() + y.clone() * z2[i].clone());
-    let w2: [F; 4] = core::array::from_fn(|i| {
-        (b.clone() * y.clone() * z1[i].clone() - a.clone() * x.clone() * z2[i].clone())
-            / root_ab.clone()
+    // W₁^⊥ = b y z₁ − a x z₂: ⟨W₁^⊥, W₁^⊥⟩ = ab ⟨W₁, W₁⟩, ⟨W₁, W₁^⊥⟩ = 0
+    let w1p: [F; 4] = core::array::from_fn(|i| {
+        b.clone() * y.clone() * z1[i].clone() - a.clone() * x.clone() * z2[i].clone()
     });
-    DupinCyclide::from_conic(PeConic::circle_scaled(c0, w1, w2)?)
+    let conic = match sqrt_in_field(&ab) {
+        Some(root_ab) if !root_ab.is_zero() => {
+            let w2 = scale(&(F::one() / root_ab), &w1p);
+            PeConic::circle_scaled(c0, w1, w2)?
+        }
+        // ab not a square: C₀ + ((1 − ab s²)W₁ + 2s W₁^⊥)/(1 + ab s²), still rational
+        _ => PeConic::circle_ratio(c0, w1, w1p)?,
+    };
+    DupinCyclide::from_conic(conic)
 }
 
 /// A pe-orthogonal basis `z₁, z₂` of `T^⊥`, `T = span(B₂, B₃)` Lorentzian: the projections
@@ -352,7 +353,9 @@ pub fn certify_three_spheres<F: Scalar>(
             sc,
         ));
         let (label, rest): (String, Vec<F>) = match cyclide.conic() {
-            PeConic::Circle { center, u, v, rho } if on_second => {
+            PeConic::Circle {
+                center, u, v, rho, ..
+            } if on_second => {
                 let w = sub(&ai, center);
                 let want = -(rho.clone() * rho.clone() * pe(u, u));
                 (
@@ -360,7 +363,13 @@ pub fn certify_three_spheres<F: Scalar>(
                     vec![pe(&w, u), pe(&w, v), pe(&w, &w) - want],
                 )
             }
-            PeConic::Circle { center, u, v, rho } => {
+            PeConic::Circle {
+                center,
+                u,
+                v,
+                rho,
+                ratio,
+            } => {
                 let w = sub(&ai, center);
                 let (al, be) = (
                     pe(&w, u) / (pe(u, u) * rho.clone()),
@@ -372,11 +381,12 @@ pub fn certify_three_spheres<F: Scalar>(
                             - rho.clone() * (al.clone() * u[k].clone() + be.clone() * v[k].clone())
                     })
                     .chain(core::iter::once(
-                        al.clone() * al.clone() + be.clone() * be.clone() - F::one(),
+                        al.clone() * al.clone() + ratio.clone() * be.clone() * be.clone()
+                            - F::one(),
                     ))
                     .collect();
                 (
-                    format!("A{} − C₀ = ρ(αU + βV) with α² + β² = 1 (sphere {} belongs to the {own_name} family)", i + 1, i + 1),
+                    format!("A{} − C₀ = ρ(αU + βV) with α² + kβ² = 1 (sphere {} belongs to the {own_name} family)", i + 1, i + 1),
                     rest,
                 )
             }

@@ -184,11 +184,17 @@ impl<F: Scalar> DupinCyclide<F> {
     pub fn kind(&self) -> CyclideKind {
         match &self.conic {
             PeConic::Parabola { .. } => CyclideKind::Parabolic,
-            PeConic::Circle { center, u, v, rho } => {
+            PeConic::Circle {
+                center,
+                u,
+                v,
+                rho,
+                ratio,
+            } => {
                 let r0 = center[3].clone();
                 let r02 = r0.clone() * r0;
                 let rr = rho.clone() * rho.clone();
-                let k2 = u[3].clone() * u[3].clone() + v[3].clone() * v[3].clone();
+                let k2 = u[3].clone() * u[3].clone() + v[3].clone() * v[3].clone() / ratio.clone();
                 let lo = rr.clone() * k2.clone();
                 let hi = rr * (pe(u, u) + k2);
                 let sc = size(&[r02.clone(), hi.clone()]).max(1.0);
@@ -211,11 +217,17 @@ impl<F: Scalar> DupinCyclide<F> {
     /// As [`PeConic::circle`] (e.g. the offset of a torus at `d = −r₀` degenerates).
     pub fn offset(&self, d: &F) -> Result<Self, CyclideError> {
         let conic = match &self.conic {
-            PeConic::Circle { center, u, v, rho } => {
+            PeConic::Circle {
+                center,
+                u,
+                v,
+                rho,
+                ratio,
+            } => {
                 let mut c = center.clone();
                 c[3] = c[3].clone() + d.clone();
-                // equal norms suffice (the pe-unit and the scaled form alike)
-                PeConic::circle_checked(c, u.clone(), v.clone(), rho.clone(), false)?
+                // norms in the ratio k suffice (the pe-unit and the scaled form alike)
+                PeConic::circle_full(c, u.clone(), v.clone(), rho.clone(), ratio.clone(), false)?
             }
             PeConic::Parabola { vertex, u, n } => {
                 let mut c = vertex.clone();
@@ -511,11 +523,17 @@ impl<F: Scalar> Certified for DupinCyclide<F> {
 
 fn conic_data<F: Scalar>(c: &PeConic<F>) -> Vec<F> {
     match c {
-        PeConic::Circle { center, u, v, rho } => center
+        PeConic::Circle {
+            center,
+            u,
+            v,
+            rho,
+            ratio,
+        } => center
             .iter()
             .chain(u.iter())
             .chain(v.iter())
-            .chain(core::iter::once(rho))
+            .chain([rho, ratio])
             .cloned()
             .collect(),
         PeConic::Parabola { vertex, u, n } => vertex
@@ -535,8 +553,9 @@ impl<F: Scalar> DupinCyclide<F> {
             Certificate::decide(prop, negligible(&r, sc), ex, || format_scalar(&r))
         };
         match &self.conic {
-            PeConic::Circle { u, v, .. } => {
+            PeConic::Circle { u, v, ratio, .. } => {
                 let sc = size(u).max(size(v)).max(1.0).powi(2);
+                let pos_k = *ratio > F::zero() && !negligible(ratio, 1.0);
                 let uu = pe(u, u);
                 let pos = uu > F::zero();
                 vec![
@@ -546,10 +565,16 @@ impl<F: Scalar> DupinCyclide<F> {
                         ex,
                         || format_scalar(&uu),
                     ),
+                    Certificate::decide(
+                        "k > 0 (the norm ratio ⟨V, V⟩/⟨U, U⟩ of the circle's parametrization)",
+                        pos_k,
+                        ex,
+                        || format_scalar(ratio),
+                    ),
                     cert(
-                        "⟨V, V⟩ = ⟨U, U⟩ (U, V pe-orthonormal up to the common scale ρ)",
+                        "⟨V, V⟩ = k⟨U, U⟩ (U, V/√k pe-orthonormal up to the common scale ρ; k = 1 unless the circle's plane has a non-square discriminant)",
                         pe(v, v),
-                        uu.clone(),
+                        uu.clone() * ratio.clone(),
                         sc,
                     ),
                     cert(

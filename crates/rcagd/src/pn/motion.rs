@@ -33,7 +33,7 @@
 use super::developable::DevelopablePn;
 use super::poly::{compose, det3, dot3, identity_cert, int, var, RatFn};
 use super::ruled::{ConeFamilyEnvelope, CycleFamily};
-use super::support::from_plane_field;
+use super::support::from_plane_field_with;
 use super::surface::PnSurface;
 use super::PnError;
 use crate::laguerre::{Cycle, LaguerreError};
@@ -367,7 +367,11 @@ impl<F: Scalar> DevelopableMotionEnvelope<F> {
         let g = fam.apply_hyperplane(&e);
         let h = RatFn::new(g[0].clone(), g[4].clone())?;
         let normal = [g[4].clone(), g[1].clone(), g[2].clone(), g[3].clone()];
-        let surface = from_plane_field(&h, &normal)
+        // the raw envelope point shares the factor w(u)⁴ s(t)³ (screw families; sympy:
+        // scripts/checks/prop_4_2_common_factor.py, docs/math/laguerre-pn.md#prop-4-2-common-factor):
+        // name w and s (and κ) so that the f64 path cancels them as the exact gcd does
+        let factors = [fam.weight.clone(), e[4].clone(), fam.kappa.clone()];
+        let surface = from_plane_field_with(&h, &normal, &factors)
             .map_err(|err| match err {
                 PnError::Developable(m) => PnError::Developable(format!(
                     "the moved planes G(t, u) form a one-parameter family ({m}): the envelope is developable (Prop. 4.2 needs a non-developable envelope)"

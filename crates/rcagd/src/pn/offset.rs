@@ -8,7 +8,7 @@
 //! quadratic polynomial in `d` at every parameter point whose roots are the two principal
 //! radii there ([`PnOffset::principal_radii_at`]).
 
-use super::poly::{identity_cert, Domain};
+use super::poly::{abs_mpoly, identity_cert_within, Domain};
 use super::surface::{check_nonzero, PnSurface};
 use super::PnError;
 use crate::error::{format_point, format_scalar};
@@ -143,16 +143,26 @@ impl<F: Scalar> Certified for PnOffset<F> {
         let b = self.base.point_polys();
         let o = self.surface.point_polys();
         let n = self.base.normal_polys();
+        let (ba, oa, na) = (
+            b.each_ref().map(abs_mpoly),
+            o.each_ref().map(abs_mpoly),
+            n.each_ref().map(abs_mpoly),
+        );
+        let dabs = self.distance.to_f64().abs();
         for (i, name) in [(1usize, "x"), (2, "y"), (3, "z")] {
             let lhs = &(&(&o[i] * &b[0]) - &(&b[i] * &o[0])) * &n[0];
             let rhs = (&(&b[0] * &o[0]) * &n[i]).scale(&self.distance);
-            out.push(identity_cert(
+            // the terms' magnitudes: (|O_i||B₀| + |B_i||O₀|)|N₀| + |d||B₀||O₀||N_i|
+            let mag = &(&(&(&oa[i] * &ba[0]) + &(&ba[i] * &oa[0])) * &na[0])
+                + &(&(&ba[0] * &oa[0]) * &na[i]).scale(&dabs);
+            out.push(identity_cert_within(
                 &format!(
                     "offset point at distance {} along the unit normal ({name}): (x_d − x) ≡ d·n",
                     format_scalar(&self.distance)
                 ),
                 &lhs,
                 &rhs,
+                &mag,
             ));
         }
         let sn = self.surface.normal_polys();

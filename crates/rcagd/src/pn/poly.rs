@@ -606,6 +606,55 @@ pub(crate) fn zero_cert<F: Scalar>(property: &str, p: &MPoly<F>, scale: f64) -> 
     certify::polynomial_is_zero_scaled(property, &coeffs, scale)
 }
 
+/// The entrywise absolute values of `p` in `f64`: the magnitude polynomial of `p` for
+/// [`identity_cert_within`] (products and sums of magnitude polynomials bound the terms
+/// that make up each coefficient of the corresponding products and sums).
+pub(crate) fn abs_mpoly<F: Scalar>(p: &MPoly<F>) -> MPoly<f64> {
+    p.map(|c| c.to_f64().abs())
+}
+
+/// The certificate `lhs ≡ rhs`; for `f64` the coefficient of each monomial of the residual
+/// is compared with `10⁻⁹ ·` that monomial's coefficient in `magnitude` (a bound of the
+/// sum of the absolute values of the terms that make it up, built by [`abs_mpoly`] and
+/// the same products and sums), not with the largest coefficient: cancellation in a
+/// coefficient does not make its rounding residue look large. Exact scalars need the
+/// residual to vanish.
+pub(crate) fn identity_cert_within<F: Scalar>(
+    property: &str,
+    lhs: &MPoly<F>,
+    rhs: &MPoly<F>,
+    magnitude: &MPoly<f64>,
+) -> Certificate {
+    let diff = lhs - rhs;
+    if F::EXACT {
+        return zero_cert(property, &diff, 1.0);
+    }
+    let tol = crate::certs::TOL;
+    let worst = diff
+        .terms()
+        .map(|(e, c)| {
+            let v = c.to_f64().abs();
+            let m = magnitude.coeff(e).max(f64::MIN_POSITIVE);
+            (v / m, v, m, e.to_vec())
+        })
+        .fold(None::<(f64, f64, f64, Vec<u32>)>, |best, x| match best {
+            Some(b) if !(x.0 > b.0 || x.0.is_nan()) => Some(b),
+            _ => Some(x),
+        });
+    let ok = match &worst {
+        None => true,
+        Some((r, v, _, _)) => v.is_finite() && *r <= tol,
+    };
+    Certificate::decide(property, ok, false, || {
+        match &worst {
+        Some((_, v, m, e)) => format!(
+            "residual coefficient {v:e} of the monomial with exponents {e:?} exceeds {tol:e} × the magnitude {m:e} of its terms"
+        ),
+        None => String::new(),
+    }
+    })
+}
+
 /// The certificate `lhs ≡ rhs`.
 pub(crate) fn identity_cert<F: Scalar>(
     property: &str,

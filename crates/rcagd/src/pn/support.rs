@@ -71,6 +71,21 @@ pub fn from_plane_field<F: Scalar>(
     h: &RatFn<F>,
     normal: &[MPoly<F>; 4],
 ) -> Result<PnSurface<F>, PnError> {
+    from_plane_field_with(h, normal, &[])
+}
+
+/// [`from_plane_field`] with further known factors of the point representation (divided
+/// out exactly, as often as they divide all four coordinates): the `f64` path has no
+/// polynomial gcd, so a common factor the construction predicts must be named here to be
+/// cancelled there as in the exact path.
+///
+/// # Errors
+/// As [`from_plane_field`].
+pub(crate) fn from_plane_field_with<F: Scalar>(
+    h: &RatFn<F>,
+    normal: &[MPoly<F>; 4],
+    factors: &[MPoly<F>],
+) -> Result<PnSurface<F>, PnError> {
     let cert = unit_normal_cert(normal);
     if !cert.holds {
         return Err(PnError::NotUnitNormal(
@@ -102,13 +117,15 @@ pub fn from_plane_field<F: Scalar>(
     let k = &hd2 * &delta;
     let w = &k * n0;
     let [x1, x2, x3] = x;
+    let mut candidates = vec![n0.clone(), hd.clone()];
+    candidates.extend(factors.iter().cloned());
     PnSurface::assemble(
         "envelope of a plane field",
         [w, x1, x2, x3],
         normal.clone(),
         h.clone(),
         Some(k),
-        &[n0.clone(), hd.clone()],
+        &candidates,
     )
 }
 

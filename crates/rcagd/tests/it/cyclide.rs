@@ -234,9 +234,12 @@ fn three_spheres() {
     }
     let e = from_three_spheres(&[s([0, 0, 0], 1), s([1, 0, 0], 1), s([3, 0, 0], 1)]).unwrap_err();
     assert!(matches!(e, CyclideError::DegenerateSpheres(_)), "{e}");
-    // a pe hyperbola whose conjugate circle lies in a plane of discriminant 199 (not a square)
-    let e = from_three_spheres(&[s([0, 0, 0], 0), s([1, 0, 0], 10), s([0, 1, 0], 10)]).unwrap_err();
-    assert!(matches!(e, CyclideError::NotRational(_)), "{e}");
+    // a pe hyperbola whose conjugate circle lies in a plane of discriminant 199 (not a
+    // square): refused as NotRational before session 13, now the circle_ratio form
+    // (three_spheres_on_a_pe_hyperbola_with_a_non_square_discriminant)
+    let cy = from_three_spheres(&[s([0, 0, 0], 0), s([1, 0, 0], 10), s([0, 1, 0], 10)])
+        .expect("non-square discriminant");
+    assert_all_hold(&cy.certify());
     // f64 agrees
     let sf = |c: [f64; 3], r: f64| OrientedSphere::new(c, r);
     let cf = from_three_spheres(&[
@@ -812,6 +815,253 @@ proptest! {
         let cf = from_three_spheres(&sf).expect("f64");
         for cert in cf.certify() {
             prop_assert!(cert.holds, "f64: {}", cert);
+        }
+    }
+}
+
+/// `f64` agreement of a cyclide built from `f64` data with the exact one: the exact
+/// points at a few parameters lie on the `f64` implicit surface (relative to the size of
+/// its terms), and the kinds agree.
+fn f64_agrees_with(cf: &DupinCyclide<f64>, exact: &DupinCyclide<Q>) -> Result<(), String> {
+    if cf.kind() != exact.kind() {
+        return Err(format!("kind {:?} vs {:?}", cf.kind(), exact.kind()));
+    }
+    for (t, s) in [
+        (q(1, 3), q(2, 1)),
+        (q(-2, 1), q(1, 5)),
+        (qi(0), qi(-1)),
+        (q(3, 7), q(-5, 2)),
+    ] {
+        let Some(x) = exact.eval(&t, &s) else {
+            continue;
+        };
+        let xf: [f64; 3] = core::array::from_fn(|i| Scalar::to_f64(&x[i]));
+        let v = cf.implicit_value(&xf);
+        // the quartic's terms are of size (|x|² + |c|² + ρ²|U|²)²: compare with that
+        let (center, u, rho) = match cf.conic() {
+            PeConic::Circle { center, u, rho, .. } => (center, u, *rho),
+            PeConic::Parabola { vertex, u, .. } => (vertex, u, 1.0),
+        };
+        let c2: f64 = center.iter().map(|c| c * c).sum::<f64>()
+            + u.iter().map(|c| c * c).sum::<f64>() * rho * rho;
+        let x2: f64 = xf.iter().map(|c| c * c).sum();
+        let scale = (1.0 + x2 + c2).powi(2);
+        if v.abs() > 1e-8 * scale {
+            return Err(format!(
+                "F(x) = {v:e} at (t, s) = ({t}, {s}), scale {scale:e}"
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The cyclide of the pe circle `C₀ + ((1 − k s²)U + 2s V)/(1 + k s²)`, `C₀ = (0, 0, 0; 3)`,
+/// `U = e₁`, `V = (0, (k + 1)/2, 0, (k − 1)/2)` (`⟨V, V⟩ = k`): its conjugate pe hyperbola is
+/// `x² − k y² = −1` in a basis of `span(U, V)^⊥`, with a rational point for
+/// `k = 2, 5, 13` (`1 − 2`, `4 − 5`, `324 − 13·25`) but none for `k = 3`.
+fn ratio_cyclide(k: &Q) -> Result<DupinCyclide<Q>, CyclideError> {
+    let c0 = [qi(0), qi(0), qi(0), qi(3)];
+    let u = v4([(1, 1), (0, 1), (0, 1), (0, 1)]);
+    let v: [Q; 4] = [
+        qi(0),
+        (k.clone() + qi(1)) / qi(2),
+        qi(0),
+        (k.clone() - qi(1)) / qi(2),
+    ];
+    DupinCyclide::from_conic(PeConic::circle_ratio(c0, u, v)?)
+}
+
+/// Three spheres, the cyclide they must give (if known), and whether they lie on the
+/// second family (a pe hyperbola).
+type SphereCase = ([OrientedSphere<Q>; 3], Option<DupinCyclide<Q>>, bool);
+
+/// Three spheres on a pe hyperbola whose conjugate pe circle lies in a plane `T^⊥` of
+/// non-square discriminant `ab` (refused as `NotRational` before session 13): `ab = 199`
+/// for the spheres `(0, 0, 0; 0)`, `(1, 0, 0; 10)`, `(0, 1, 0; 10)`, and three spheres of
+/// the second family of [`ratio_cyclide`] for `k = 2, 5`. The circle is
+/// `C₀ + ((1 − ab s²)W₁ + 2s W₁^⊥)/(1 + ab s²)` ([`PeConic::circle_ratio`]), its conjugate
+/// pe hyperbola is parametrized through a rational point; every certificate holds exactly,
+/// the three spheres belong to the second family, the pencil and an offset certify, the
+/// covering patches close up, and `f64` agrees. The Euclidean case: three spheres of the
+/// first family of the same cyclides (a pe circle whose `(cos θ, sin θ)` form is not
+/// rational) give the same cyclide.
+#[test]
+fn three_spheres_on_a_pe_hyperbola_with_a_non_square_discriminant() {
+    let s = |c: [i64; 3], r: i64| OrientedSphere::new([qi(c[0]), qi(c[1]), qi(c[2])], qi(r));
+    let mut cases: Vec<SphereCase> = vec![(
+        [s([0, 0, 0], 0), s([1, 0, 0], 10), s([0, 1, 0], 10)],
+        None,
+        true,
+    )];
+    for k in [qi(2), qi(5)] {
+        let want = ratio_cyclide(&k).expect("ratio cyclide");
+        let d = want.second_family();
+        let pts: Vec<[Q; 4]> = [qi(1), qi(2), q(-1, 2)]
+            .iter()
+            .map(|x| d.eval(x).expect("finite"))
+            .collect();
+        cases.push((
+            core::array::from_fn(|i| sphere_of(&pts[i])),
+            Some(want.clone()),
+            true,
+        ));
+        let c = want.first_family();
+        let pts: Vec<[Q; 4]> = [qi(0), qi(1), q(-2, 3)]
+            .iter()
+            .map(|x| c.eval(x).expect("finite"))
+            .collect();
+        cases.push((
+            core::array::from_fn(|i| sphere_of(&pts[i])),
+            Some(want),
+            false,
+        ));
+    }
+    for (spheres, want, on_hyperbola) in cases {
+        let cy = from_three_spheres(&spheres).expect("non-square discriminant");
+        match cy.conic() {
+            PeConic::Circle { ratio, .. } => {
+                assert!(rcagd_algebra::sqrt_in_field(ratio).is_none(), "k = {ratio}")
+            }
+            PeConic::Parabola { .. } => panic!("a pe circle expected"),
+        }
+        assert_all_hold(&cy.certify());
+        let certs = certify_three_spheres(&cy, &spheres);
+        assert_eq!(
+            certs[0].property.contains("C(t)"),
+            on_hyperbola,
+            "{}",
+            certs[0]
+        );
+        assert_all_hold(&certs);
+        if let Some(want) = &want {
+            assert!(same_cyclide(&cy, want));
+            assert_eq!(cy.kind(), want.kind());
+        }
+        assert_all_hold(&DualPencil::of(&cy).expect("pencil").certify(&cy));
+        assert_all_hold(&cy.certify_offset(&q(1, 2)).expect("offset"));
+        let patches = cy.covering_patches().expect("patches");
+        assert_eq!(patches.len(), 16);
+        let sf: [OrientedSphere<f64>; 3] =
+            core::array::from_fn(|i| sphere_f64(&spheres[i].to_point()));
+        let cf = from_three_spheres(&sf).expect("f64");
+        assert!(cf.all_hold());
+        f64_agrees_with(&cf, &cy).expect("f64 agrees");
+    }
+}
+
+/// A pe circle given by a pe-orthogonal pair of norm ratio `k` ([`PeConic::circle_ratio`],
+/// [`ratio_cyclide`]): the cyclide and its pencil certify exactly; `f64` (the
+/// `(cos θ, sin θ)` form with `V/√k`) agrees; for the square `k = 4` it is the same cyclide
+/// as the exact `(cos θ, sin θ)` form; for `k = 3` the conjugate pe hyperbola
+/// `x² − 3y² = −1` has no rational point (a named error).
+#[test]
+fn pe_circle_of_non_square_norm_ratio() {
+    let c0 = [qi(0), qi(0), qi(0), qi(3)];
+    let u = v4([(1, 1), (0, 1), (0, 1), (0, 1)]);
+    for k in [qi(2), qi(5), qi(13), qi(4)] {
+        let cy = ratio_cyclide(&k).expect("cyclide");
+        assert_all_hold(&cy.certify());
+        assert_all_hold(&DualPencil::of(&cy).expect("pencil").certify(&cy));
+        assert_all_hold(&cy.certify_offset(&qi(1)).expect("offset"));
+        let v = match cy.conic() {
+            PeConic::Circle { v, .. } => v.clone(),
+            PeConic::Parabola { .. } => panic!("circle"),
+        };
+        let f = |x: &[Q; 4]| -> [f64; 4] { core::array::from_fn(|i| Scalar::to_f64(&x[i])) };
+        let rk = Scalar::to_f64(&k).sqrt();
+        let vf = f(&v).map(|x| x / rk);
+        let cf = DupinCyclide::from_conic(PeConic::circle_scaled(f(&c0), f(&u), vf).expect("f64"))
+            .expect("f64 cyclide");
+        assert!(cf.all_hold());
+        f64_agrees_with(&cf, &cy).expect("f64 agrees");
+        if let Some(r) = rcagd_algebra::sqrt_in_field(&k) {
+            let v1: [Q; 4] = core::array::from_fn(|i| v[i].clone() / r.clone());
+            let plain =
+                DupinCyclide::from_pe_circle(c0.clone(), u.clone(), v1, qi(1)).expect("plain");
+            assert!(same_cyclide(&cy, &plain), "k = {k}");
+            assert!(same_cyclide(&plain, &cy), "k = {k}");
+        }
+    }
+    match ratio_cyclide(&qi(3)) {
+        Err(CyclideError::NotRational(why)) => assert!(why.contains("no rational point"), "{why}"),
+        other => panic!("k = 3: {other:?}"),
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Three random exact oriented spheres (any plane: Euclidean, pseudo-Euclidean or a
+    /// γ-plane): either a named error of the documented kinds, or a cyclide whose
+    /// certificates (its own, the three-sphere ones, the pencil's) hold exactly, built in
+    /// `f64` too with every certificate holding and the exact points on the `f64` surface.
+    #[test]
+    fn random_three_spheres(
+        c in prop::array::uniform3(prop::array::uniform3(-6i64..=6)),
+        r in prop::array::uniform3(-4i64..=4),
+        den in 1i64..=3,
+    ) {
+        let spheres: [OrientedSphere<Q>; 3] = core::array::from_fn(|i| {
+            OrientedSphere::new(core::array::from_fn(|k| q(c[i][k], den)), q(r[i], 1))
+        });
+        let cy = match from_three_spheres(&spheres) {
+            Ok(cy) => cy,
+            Err(CyclideError::DegenerateSpheres(_)) => return Ok(()),
+            Err(CyclideError::NotRational(why)) => {
+                prop_assert!(why.contains("no rational point"), "{}", why);
+                return Ok(());
+            }
+            Err(e) => return Err(TestCaseError::fail(format!("unexpected error: {e}"))),
+        };
+        for cert in cy.certify().iter().chain(&certify_three_spheres(&cy, &spheres)) {
+            prop_assert!(cert.holds && cert.exact, "{}", cert);
+        }
+        for cert in DualPencil::of(&cy).expect("pencil").certify(&cy) {
+            prop_assert!(cert.holds && cert.exact, "{}", cert);
+        }
+        let sf: [OrientedSphere<f64>; 3] =
+            core::array::from_fn(|i| sphere_f64(&spheres[i].to_point()));
+        let cf = from_three_spheres(&sf).map_err(|e| TestCaseError::fail(format!("f64: {e}")))?;
+        for cert in cf.certify().iter().chain(&certify_three_spheres(&cf, &sf)) {
+            prop_assert!(cert.holds, "f64: {}", cert);
+        }
+        if let Err(e) = f64_agrees_with(&cf, &cy) {
+            return Err(TestCaseError::fail(e));
+        }
+    }
+}
+
+/// `DualPencil::certify` in `f64` far from the origin (the float helper's finding: a centre
+/// at distance 27 with `ρ = 27` made the residue of the degree-4/5 coefficients of
+/// `det(λC + Ω)` exceed 10⁻⁹ of its own largest coefficient): the determinant is now
+/// compared with the permanent of `|λC| + |Ω|`, the size of its terms.
+#[test]
+fn f64_pencil_certificates_far_from_the_origin() {
+    for (c, rho, r0) in [
+        ([27.0, 0.0, 0.0], 27.0, 30.0),
+        ([27.0, -27.0, 13.0], 27.0, 5.0),
+        ([0.0, 0.0, 0.0], 20.0 / 3.0, 0.0),
+        ([300.0, 200.0, -100.0], 90.0, 100.0),
+    ] {
+        let cy = DupinCyclide::<f64>::from_pe_circle(
+            [c[0], c[1], c[2], r0],
+            [1.0, 0.0, 0.0, 0.0],
+            [0.0, 1.25, 0.0, 0.75],
+            rho,
+        )
+        .expect("f64 cyclide");
+        let pencil = DualPencil::of(&cy).expect("pencil");
+        for cert in pencil.certify(&cy) {
+            assert!(cert.holds, "centre {c:?}, ρ = {rho}: {cert}");
+        }
+        let par = DupinCyclide::<f64>::from_pe_parabola(
+            [c[0], c[1], c[2], r0],
+            [1.0, 0.0, 0.0, 0.0],
+            [0.0, 0.6 * rho, 0.8 * rho, rho],
+        )
+        .expect("f64 parabolic");
+        for cert in DualPencil::of(&par).expect("pencil").certify(&par) {
+            assert!(cert.holds, "parabola at {c:?}: {cert}");
         }
     }
 }

@@ -4,6 +4,7 @@
 
 use proptest::prelude::*;
 use rcagd::laguerre::*;
+use rcagd::pn::planar::{surface_of_revolution, PnCurve};
 use rcagd::pn::ruled::{ConeFamilyEnvelope, CycleFamily};
 use rcagd::pn::support::{from_plane_field, from_support_function};
 use rcagd::pn::*;
@@ -185,6 +186,38 @@ proptest! {
             }
             Err(PnError::Developable(_)) | Err(PnError::InvalidInput(_)) => {}
             Err(e) => prop_assert!(false, "unexpected error {e}"),
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// `f64` surfaces of revolution of random PH profiles (the draws of the CLI test
+    /// `float::pn_graphs_and_supports_agree`: preimage coefficients `p/d`, `|p| ≤ 40`,
+    /// `d ≤ 12`): the offset certificates `(x_d − x) ≡ d·n` hold at `d = 0` and at a
+    /// random distance. With `PROPTEST_CASES=100` that CLI test drew a case failing by
+    /// 1.17e-6 against the largest-coefficient tolerance 8.3e-7 at `d = 0`; the
+    /// certificate now compares each coefficient with the magnitude of its terms.
+    #[test]
+    fn f64_offsets_of_random_revolution_surfaces_certify(
+        u in prop::collection::vec((-40i64..=40, 1i64..=12), 3),
+        v in prop::collection::vec((-40i64..=40, 1i64..=12), 3),
+        du in 1i64..=4,
+        d in (-40i64..=40, 1i64..=12),
+    ) {
+        let f = |(p, q): (i64, i64)| p as f64 / q as f64;
+        let (u, v): (Vec<f64>, Vec<f64>) = (u.into_iter().map(f).collect(), v.into_iter().map(f).collect());
+        let Ok(profile) = PnCurve::from_ph_preimage(&u, &v, [1.0 + du as f64, 0.0]) else {
+            return Ok(());
+        };
+        let Ok(surface) = surface_of_revolution(&profile) else {
+            return Ok(());
+        };
+        for dist in [0.0, f(d)] {
+            for c in surface.offset(dist).certify() {
+                prop_assert!(c.holds, "d = {dist}: {c}");
+            }
         }
     }
 }
