@@ -556,7 +556,14 @@ pub(crate) fn from_f64<F: Scalar>(x: f64) -> Option<F> {
 /// `|z|/(|z| + a)` ulps), so there the root is computed from the other half:
 /// `y = sgn(b)·√((|z| − a)/2)`, `x = b/(2y)` (the standard stable form; same root).
 pub fn complex_sqrt<F: Scalar>(z: &C<F>) -> Option<C<F>> {
-    let norm = sqrt_in(&z.norm_sq())?;
+    let norm = if F::EXACT {
+        sqrt_in(&z.norm_sq())?
+    } else {
+        // |z| without forming |z|² (which overflows from |z| ≈ 1.3e154 on)
+        F::from_rational(
+            &rcagd_algebra::Rational::try_from(z.re.to_f64().hypot(z.im.to_f64())).ok()?,
+        )
+    };
     let two = F::from_i64(2);
     if !F::EXACT && z.re < F::zero() {
         let y = sqrt_in(&((norm - z.re.clone()) / two.clone()))?;
