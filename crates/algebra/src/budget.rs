@@ -405,7 +405,7 @@ mod tests {
 
     #[test]
     fn within_and_inherit_carry_a_budget_to_other_threads() {
-        assert_eq!(within(None, || current()), None);
+        assert_eq!(within(None, current), None);
         let r = with_limit(Duration::ZERO, || {
             let task = inherit(|x: u32| {
                 checkpoint();

@@ -6,7 +6,7 @@
 use rayon::prelude::*;
 use rcagd::canal::{pipe_along_chain, Orientation};
 use rcagd_algebra::budget::{self, WorkLimitExceeded};
-use rcagd_algebra::Rational;
+use rcagd_algebra::{Rational, Scalar};
 use rcagd_geom::BezierCurve;
 use std::time::{Duration, Instant};
 
