@@ -28,7 +28,8 @@
 //! Budgets nest: an inner budget never extends an outer one (the earlier deadline
 //! wins), and the outer budget is restored when the inner scope ends. A budget is
 //! per thread: work that a computation hands to other threads (rayon) runs without it
-//! unless the code installs it there ([`current`] and [`install_budget`]).
+//! unless the code installs it there ([`inherit`] for the closure of a parallel `map`,
+//! or [`current`] and [`within`]).
 
 use std::cell::Cell;
 use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
@@ -123,6 +124,29 @@ pub fn install_budget(budget: Budget) -> Guard {
 /// Installs a budget of `limit` from now on this thread until the guard is dropped.
 pub fn install(limit: Duration) -> Guard {
     install_budget(Budget::from_now(limit))
+}
+
+/// Runs `f` under `budget` when there is one (nested in any budget of this thread, the
+/// earlier deadline wins), else as it is: how a task on another thread takes over the
+/// budget of the code that spawned it (`let b = budget::current();` there,
+/// `budget::within(b, || …)` in the task).
+pub fn within<T>(budget: Option<Budget>, f: impl FnOnce() -> T) -> T {
+    let _guard = budget.map(install_budget);
+    f()
+}
+
+/// Wraps the closure of a parallel iterator's `map` (or any task run on other threads)
+/// so that every call runs under the budget of the thread that made the wrapper (the
+/// caller of the parallel iteration): `.par_iter().map(budget::inherit(|x| …))`.
+/// An exhausted budget unwinds out of the task, and rayon carries that unwinding (its
+/// payload unchanged) to the caller, where [`catch`] or [`with_limit`] turn it into
+/// [`WorkLimitExceeded`].
+pub fn inherit<A, T, F>(f: F) -> impl Fn(A) -> T + Send + Sync
+where
+    F: Fn(A) -> T + Send + Sync,
+{
+    let budget = current();
+    move |a| within(budget, || f(a))
 }
 
 /// Ends the computation (by unwinding with a [`WorkLimitExceeded`] payload, caught by
@@ -376,6 +400,34 @@ mod tests {
             fplain * 1e3,
             fbudgeted * 1e3,
             (fbudgeted / fplain - 1.0) * 100.0
+        );
+    }
+
+    #[test]
+    fn within_and_inherit_carry_a_budget_to_other_threads() {
+        assert_eq!(within(None, current), None);
+        let r = with_limit(Duration::ZERO, || {
+            let task = inherit(|x: u32| {
+                checkpoint();
+                x
+            });
+            // the task runs on another thread, as a rayon worker would run it
+            std::thread::scope(|s| s.spawn(|| catch(|| task(1))).join().unwrap())
+        });
+        assert_eq!(
+            r,
+            Ok(Err(WorkLimitExceeded {
+                limit: Duration::ZERO
+            }))
+        );
+        // without a budget at the wrapper's creation the task runs unbudgeted
+        let task = inherit(|x: u32| {
+            checkpoint();
+            x + 1
+        });
+        assert_eq!(
+            std::thread::scope(|s| s.spawn(|| catch(|| task(1))).join().unwrap()),
+            Ok(2)
         );
     }
 

@@ -166,7 +166,17 @@ fn run_build(build: ops::BuildFn, args: &OpArgs) -> Result<Vec<Object>, OpError>
     let _budget = crate::limits::Limits::current()
         .work_limit()
         .map(rcagd_algebra::budget::install);
-    match catch_unwind(AssertUnwindSafe(|| build(args))) {
+    // an object its op says is closed but whose pieces do not close gets a note
+    // (`closure_warning`, printed by `rcagd build`), checked under the same budget
+    let build_and_check = || {
+        build(args).map(|mut objs| {
+            for o in &mut objs {
+                let _ = crate::closure::annotate(o);
+            }
+            objs
+        })
+    };
+    match catch_unwind(AssertUnwindSafe(build_and_check)) {
         Ok(r) => r,
         Err(payload) => {
             if let Some(e) = rcagd_algebra::budget::as_work_limit(&*payload) {
@@ -241,10 +251,18 @@ pub fn build_object_with(
     };
     let checked = run_build(build, &args).and_then(|objs| f64_overflow(&args, objs));
     checked.map_err(|mut e| {
-        // an `f64` computation that overflowed shows `inf`/`NaN` in whatever it says
-        // ("√(inf) is irrational", …): the input is too large for f64, say which
-        if let Some(large) = crate::limits::large_input(&args).filter(|_| {
-            crate::limits::shows_non_finite(&e.message) && !e.message.starts_with("input too large")
+        // the library's typed overflow (`PhError::NonFinite`: the f64 solvers check their
+        // intermediates): the input is too large for f64, say which; other ops' `f64`
+        // computations that overflowed show `inf`/`NaN` in whatever they say ("√(inf) is
+        // irrational", …), recognised with a large input
+        let typed = crate::limits::is_typed_overflow(&e.message)
+            .then(|| crate::limits::largest_input(&args))
+            .flatten();
+        if let Some(large) = typed.or_else(|| {
+            crate::limits::large_input(&args).filter(|_| {
+                crate::limits::shows_non_finite(&e.message)
+                    && !e.message.starts_with("input too large")
+            })
         }) {
             e.param = Some(large.0);
             e.message = crate::limits::too_large_for_f64(large, &e.message);
@@ -309,16 +327,14 @@ pub fn build_recipe_with(
     progress: impl Fn(&str) + Sync,
 ) -> Result<Vec<Object>, Vec<Diagnostic>> {
     // the caller's work budget (the fuzzer's per case) holds on the worker threads too
-    let budget = rcagd_algebra::budget::current();
     let built: Vec<_> = recipe
         .objects
         .par_iter()
-        .map(|obj| {
-            let _budget = budget.map(rcagd_algebra::budget::install_budget);
+        .map(rcagd_algebra::budget::inherit(|obj: &RecipeObject| {
             let r = build_object_with(&recipe.file, obj, arithmetic);
             progress(&obj.name);
             r
-        })
+        }))
         .collect();
     let mut out: Vec<Object> = Vec::new();
     // which recipe object made each output name
@@ -448,6 +464,31 @@ fn print_diagnostics(diags: &[Diagnostic]) {
     err!("{}", crate::source::render_all(diags));
 }
 
+/// Renders and writes every requested file of every object ([`output::write_objects`],
+/// all or nothing) under a work budget of its own: [`Limits::seconds`](crate::limits::Limits)
+/// (`--max-seconds`) for the whole export phase, separate from the objects' construction
+/// budgets (exporters of exact objects compute exact boundary curves and meshes, work of
+/// the same kind as a construction). The exporters run in parallel and inherit the budget.
+///
+/// # Errors
+/// The exporter's or file system's message ([`crate::limits::export_error`]), or "work
+/// limit exceeded: exporting … took more than N s" — in every case nothing was written
+/// (every file is rendered before any is written).
+pub fn export_within_budget(
+    dir: &Path,
+    objects: &[Object],
+    formats: &[OutFormat],
+) -> Result<Vec<std::path::PathBuf>, String> {
+    let limit = crate::limits::Limits::current().work_limit();
+    let _budget = limit.map(rcagd_algebra::budget::install);
+    match rcagd_algebra::budget::catch(|| output::write_objects(dir, objects, formats)) {
+        Ok(r) => r.map_err(|e| crate::limits::export_error(&e)),
+        Err(e) => Err(crate::limits::export_work_limit_message(
+            objects, formats, e,
+        )),
+    }
+}
+
 /// Runs `rcagd build`; returns the exit code (0 all certificates hold, 1 one fails,
 /// 2 usage or input error; nothing is written on an input error).
 /// A progress bar on standard error, one step per object: drawn when `show` is set or
@@ -532,9 +573,16 @@ pub fn run(
             }
         },
         Some(dir) => {
-            if let Err(e) = output::write_objects(dir, &objects, &formats) {
-                errln!("error: {}", crate::limits::export_error(&e));
+            if let Err(e) = export_within_budget(dir, &objects, &formats) {
+                errln!("error: {e}");
                 return EXIT_INPUT;
+            }
+        }
+    }
+    for o in &objects {
+        for w in o.values.iter().filter(|v| v.name == "closure_warning") {
+            if let rcagd_io::quantity::Quantity::Text(t) = &w.value {
+                errln!("warning: object {:?} (op `{}`) {t}", clip(&o.name), o.op);
             }
         }
     }

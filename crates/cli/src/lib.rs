@@ -54,6 +54,7 @@ macro_rules! errln {
 }
 
 pub mod build;
+pub mod closure;
 pub mod float;
 pub mod fuzz;
 pub mod gallery;

@@ -147,6 +147,25 @@ pub const F64_LARGE_ORDER: f64 = 15.0;
 /// number (shortened to `≈ 1eN` when long), when that number is at least
 /// 10^[`F64_LARGE_ORDER`] in magnitude (large enough to overflow `f64` products).
 pub fn large_input(args: &crate::ops::OpArgs) -> Option<(&'static str, String)> {
+    largest(args)
+        .filter(|(_, l, _)| *l >= F64_LARGE_ORDER)
+        .map(|(name, _, x)| (name, short(x)))
+}
+
+/// The parameter of an object holding its input number of largest magnitude, with that
+/// number (shortened to `≈ 1eN` when long), whatever its size: the input to blame for a
+/// typed `f64` overflow (the library's `PhError::NonFinite`, "f64 overflow: …").
+pub fn largest_input(args: &crate::ops::OpArgs) -> Option<(&'static str, String)> {
+    largest(args).map(|(name, _, x)| (name, short(x)))
+}
+
+/// Whether a construction's message is the library's typed `f64` overflow
+/// (`rcagd::ph::PhError::NonFinite`, whose message starts with "f64 overflow").
+pub fn is_typed_overflow(message: &str) -> bool {
+    message.starts_with("f64 overflow:") || message.contains(": f64 overflow:")
+}
+
+fn largest(args: &crate::ops::OpArgs) -> Option<(&'static str, f64, &Rational)> {
     let mut best: Option<(&'static str, f64, &Rational)> = None;
     for p in args.op().params {
         let Some(v) = args.get(p.name) else {
@@ -160,8 +179,7 @@ pub fn large_input(args: &crate::ops::OpArgs) -> Option<(&'static str, String)> 
             }
         }
     }
-    best.filter(|(_, l, _)| *l >= F64_LARGE_ORDER)
-        .map(|(name, _, x)| (name, short(x)))
+    best
 }
 
 /// The message of an `f64` computation that overflowed: names the input to blame (the
@@ -194,6 +212,30 @@ pub fn work_limit_message(name: &str, e: rcagd_algebra::budget::WorkLimitExceede
     format!(
         "work limit exceeded: building {:?} took more than {} s (raise with --max-seconds)",
         crate::source::clip(name),
+        rcagd_algebra::budget::secs(e.limit)
+    )
+}
+
+/// The message of an export phase (`rcagd build --out`) that ran out of its work budget:
+/// names the objects and formats, and says that nothing was written.
+pub fn export_work_limit_message(
+    objects: &[crate::model::Object],
+    formats: &[crate::output::OutFormat],
+    e: rcagd_algebra::budget::WorkLimitExceeded,
+) -> String {
+    let names: Vec<String> = objects
+        .iter()
+        .take(5)
+        .map(|o| format!("{:?}", crate::source::clip(&o.name)))
+        .collect();
+    let more = if objects.len() > 5 { ", …" } else { "" };
+    let formats: Vec<&str> = formats.iter().map(|f| f.label()).collect();
+    format!(
+        "work limit exceeded: exporting {}{more} as {} took more than {} s (raise with \
+         --max-seconds; the export has a budget of its own, after the construction's); \
+         nothing was written",
+        names.join(", "),
+        formats.join(", "),
         rcagd_algebra::budget::secs(e.limit)
     )
 }

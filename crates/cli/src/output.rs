@@ -173,12 +173,16 @@ pub fn write_objects(
     }
     let files: Vec<(String, Vec<u8>)> = jobs
         .par_iter()
-        .map(|&(o, f)| {
-            let file = format!("{}.{}", o.name, f.extension());
-            render(o, f)
-                .map(|bytes| (file.clone(), bytes))
-                .map_err(|e| format!("{}: {e} (nothing was written)", dir.join(&file).display()))
-        })
+        .map(rcagd_algebra::budget::inherit(
+            |&(o, f): &(&Object, OutFormat)| {
+                let file = format!("{}.{}", o.name, f.extension());
+                render(o, f)
+                    .map(|bytes| (file.clone(), bytes))
+                    .map_err(|e| {
+                        format!("{}: {e} (nothing was written)", dir.join(&file).display())
+                    })
+            },
+        ))
         .collect::<Vec<_>>()
         .into_iter()
         .collect::<Result<_, _>>()?;

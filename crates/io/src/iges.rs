@@ -437,6 +437,9 @@ pub fn write_iges_with(objects: &[Object], opts: &IgesOptions) -> Result<String,
         .iter()
         .map(exchange_object)
         .collect::<Result<Vec<_>, _>>()?;
+    for o in &exch {
+        o.check_f64_range("IGES")?;
+    }
     let mut entities: Vec<Entity> = Vec::new();
     for o in &exch {
         if o.curves.is_empty() && o.patches.is_empty() {

@@ -75,6 +75,15 @@ use std::fmt::Write as _;
 // Numbers and strings
 // ---------------------------------------------------------------------------------
 
+/// `1eN` (or `-1eN`), the decimal order of a non-zero rational, for messages about numbers
+/// too large to print in full.
+fn order_of(x: &Rational) -> String {
+    let digits = |s: String| s.trim_start_matches('-').len() as i64;
+    let e = digits(x.numerator().to_string()) - digits(x.denominator().to_string());
+    let sign = if *x < Rational::ZERO { "-" } else { "" };
+    format!("{sign}1e{e}")
+}
+
 /// The shortest decimal that reads back to `x`, in the real syntax of ISO 10303-21
 /// (and of IGES): a mandatory decimal point, an upper-case exponent
 /// (`1.`, `-0.5`, `1.E-07`, `1.5E+300`). Negative zero is written `0.`.
@@ -174,6 +183,62 @@ pub struct ExchangeObject {
 }
 
 impl ExchangeObject {
+    /// Checks that every number a STEP or IGES file (named `format` in the message)
+    /// holds of this object — weights, Euclidean control-point coordinates, knots — is
+    /// a finite `f64` (those formats write binary64 reals).
+    ///
+    /// # Errors
+    /// [`IoError::Invalid`] "input too large for f64: object NAME, curve/patch k, control
+    /// point …, coordinate x ≈ 1eN: beyond the f64 range (±1.8e308) of FORMAT, it cannot
+    /// be written", for the first such number.
+    pub fn check_f64_range(&self, format: &str) -> Result<(), IoError> {
+        let err = |place: String, x: &Rational| {
+            IoError::Invalid(format!(
+                "input too large for f64: object {:?}, {place} ≈ {}: beyond the f64 range \
+                 (±1.8e308) of {format}, it cannot be written (rescale the data)",
+                self.name,
+                order_of(x)
+            ))
+        };
+        let axis = ["x", "y", "z", "w"];
+        let point = |what: String, h: &[Rational]| -> Result<(), IoError> {
+            let w = h.first().cloned().unwrap_or(Rational::ONE);
+            if !Scalar::to_f64(&w).is_finite() {
+                return Err(err(format!("{what}, weight"), &w));
+            }
+            if w == Rational::ZERO {
+                return Ok(());
+            }
+            for (k, c) in h.iter().skip(1).enumerate() {
+                let x = c.clone() / w.clone();
+                if !Scalar::to_f64(&x).is_finite() {
+                    let name = axis.get(k).copied().unwrap_or("?");
+                    return Err(err(format!("{what}, coordinate {name}"), &x));
+                }
+            }
+            Ok(())
+        };
+        for (k, c) in self.curves.iter().enumerate() {
+            if let Some(x) = c.knots().iter().find(|x| !Scalar::to_f64(*x).is_finite()) {
+                return Err(err(format!("curve {k}, a knot"), x));
+            }
+            for (i, h) in c.control_points().enumerate() {
+                point(format!("curve {k}, control point {i}"), h)?;
+            }
+        }
+        for (k, p) in self.patches.iter().enumerate() {
+            let (du, dv) = p.degree();
+            for i in 0..=du {
+                for j in 0..=dv {
+                    if let Some(h) = p.get_control_point(i, j) {
+                        point(format!("patch {k}, control point ({i}, {j})"), h)?;
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
     /// The boundary representation of the patches ([`build_topology`]), computed once in
     /// [`exchange_object`].
     ///
@@ -1249,6 +1314,9 @@ pub fn write_step_with(objects: &[Object], opts: &StepOptions) -> Result<String,
         .iter()
         .map(exchange_object)
         .collect::<Result<Vec<_>, _>>()?;
+    for o in &exch {
+        o.check_f64_range("STEP")?;
+    }
     if let Some(o) = exch
         .iter()
         .find(|o| o.curves.is_empty() && o.patches.is_empty())

@@ -22,6 +22,7 @@
 //! recipes with the expected exit class in a header line (`# expect: exit N`); the CLI
 //! test `fuzz_corpus` replays the corpus ([`replay`]).
 
+pub mod float_check;
 pub mod gen;
 pub mod readers;
 
@@ -65,6 +66,9 @@ pub enum FindingKind {
     Timeout,
     /// A STEP or IGES reader panicked.
     ReaderPanic,
+    /// The exact and the `f64` build of a case disagree, or the `f64` path fails on data
+    /// of moderate size where the exact one builds ([`float_check`]).
+    FloatMismatch,
 }
 
 impl FindingKind {
@@ -76,6 +80,7 @@ impl FindingKind {
             FindingKind::Certificate => "certificate",
             FindingKind::Timeout => "timeout",
             FindingKind::ReaderPanic => "reader-panic",
+            FindingKind::FloatMismatch => "float-mismatch",
         }
     }
 }
@@ -150,6 +155,24 @@ fn first_line(s: &str) -> String {
 
 /// Runs a recipe text the way `rcagd build --format json,step,…,png` does, in memory.
 pub fn evaluate(file_name: &str, text: &str) -> Outcome {
+    evaluate_into(file_name, text, None)
+}
+
+/// [`evaluate`], with the objects built (when the build succeeded).
+pub fn evaluate_objects(
+    file_name: &str,
+    text: &str,
+) -> (Outcome, Option<Vec<crate::model::Object>>) {
+    let mut built = None;
+    let o = evaluate_into(file_name, text, Some(&mut built));
+    (o, built)
+}
+
+fn evaluate_into(
+    file_name: &str,
+    text: &str,
+    built: Option<&mut Option<Vec<crate::model::Object>>>,
+) -> Outcome {
     let fail = |exit: u8, stage: &str, message: String, finding: Option<FindingKind>| Outcome {
         exit,
         build_exit: exit,
@@ -239,6 +262,9 @@ pub fn evaluate(file_name: &str, text: &str) -> Outcome {
         );
     }
     let failing: Vec<String> = output::failures(&objects);
+    if let Some(b) = built {
+        *b = Some(objects.clone());
+    }
     if !failing.is_empty() {
         return Outcome {
             exit: 1,
@@ -595,6 +621,7 @@ pub fn run(opts: &Options) -> u8 {
     let mut findings: Vec<Finding> = Vec::new();
     let mut seen: BTreeMap<String, u64> = BTreeMap::new();
     let mut reader_runs = 0u64;
+    let mut float_runs = 0u64;
     let mut running = 0u32;
     let mut slowest = (Duration::ZERO, String::new());
     let mut stages: BTreeMap<String, u64> = BTreeMap::new();
@@ -609,13 +636,19 @@ pub fn run(opts: &Options) -> u8 {
             errln!("case {case} ({}):\n{text}", c.category);
         }
         let with_readers = rng.chance(1, 3);
+        // exact against f64 for half of the cases (those that build and whose ops have a
+        // float path)
+        let with_float = rng.chance(1, 2);
         let mut reader_rng = rng.clone();
         let t2 = text.clone();
         let started = Instant::now();
         // under the case's work budget (installed by `with_limit`): a case still working
         // at `limit` ends at its next checkpoint, so its thread does not run on
         let result = with_limit(limit, move || {
-            let o = evaluate("fuzz.toml", &t2);
+            let (o, exact) = evaluate_objects("fuzz.toml", &t2);
+            let float = exact
+                .filter(|_| with_float && o.build_exit == 0)
+                .and_then(|objs| float_check::check("fuzz.toml", &t2, &objs));
             let mut bad: Option<(FileKind, String, String)> = None;
             let mut n = 0u64;
             if with_readers && o.exit == 0 {
@@ -634,13 +667,13 @@ pub fn run(opts: &Options) -> u8 {
                     }
                 }
             }
-            (o, bad, n)
+            (o, bad, n, float)
         });
         let elapsed = started.elapsed();
         done += 1;
         if opts.verbose {
             match &result {
-                Some((o, _, _)) => errln!(
+                Some((o, _, _, _)) => errln!(
                     "  -> exit {} at {} ({:.2} s): {}",
                     o.exit,
                     o.stage,
@@ -652,14 +685,17 @@ pub fn run(opts: &Options) -> u8 {
         }
         let st = stats.entry(op.name).or_default();
         st.cases += 1;
-        let (outcome, reader_bad) = match result {
-            Some((o, bad, n)) => {
+        let (outcome, reader_bad, float_bad) = match result {
+            Some((o, bad, n, float)) => {
                 reader_runs += n;
-                (o, bad)
+                if with_float && o.build_exit == 0 {
+                    float_runs += 1;
+                }
+                (o, bad, float)
             }
             None => {
                 running += 1;
-                (Outcome::timeout(limit), None)
+                (Outcome::timeout(limit), None, None)
             }
         };
         if elapsed > slowest.0 && outcome.finding != Some(FindingKind::Timeout) {
@@ -687,6 +723,17 @@ pub fn run(opts: &Options) -> u8 {
                 file: None,
             });
         }
+        if let Some(msg) = float_bad {
+            new.push(Finding {
+                kind: FindingKind::FloatMismatch,
+                op: op.name.to_string(),
+                case,
+                category: c.category.clone(),
+                message: msg,
+                recipe: c.toml(),
+                file: None,
+            });
+        }
         if let Some((fk, file, msg)) = reader_bad {
             new.push(Finding {
                 kind: FindingKind::ReaderPanic,
@@ -706,7 +753,9 @@ pub fn run(opts: &Options) -> u8 {
             if *count > 1 {
                 continue;
             }
-            if f.file.is_none() && f.kind != FindingKind::Timeout {
+            if f.file.is_none()
+                && !matches!(f.kind, FindingKind::Timeout | FindingKind::FloatMismatch)
+            {
                 f.recipe = minimize(&c, f.kind, limit).toml();
             }
             errln!(
@@ -740,10 +789,11 @@ pub fn run(opts: &Options) -> u8 {
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "rcagd fuzz: {done} cases (seed {}) in {:.1} s, {} reader runs; slowest case {:.2} s ({})",
+        "rcagd fuzz: {done} cases (seed {}) in {:.1} s, {} reader runs, {} exact-vs-f64 comparisons tried; slowest case {:.2} s ({})",
         opts.seed,
         total.as_secs_f64(),
         reader_runs,
+        float_runs,
         slowest.0.as_secs_f64(),
         slowest.1
     );

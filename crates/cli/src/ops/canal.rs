@@ -764,8 +764,8 @@ const CANAL_BLEND_SPHERES: OpSpec = OpSpec {
         ParamSpec::required("radius1", ParamKind::Number, "radius of the second sphere"),
         ParamSpec::required("normal1", ParamKind::Point3, "normal of its contact plane; the spine direction arriving there"),
         ParamSpec::with_default("offset1", ParamKind::Number, "0", "h₁ of the second contact plane"),
-        ParamSpec::optional("lambda0", ParamKind::Number, "tangent magnitude at the start, ≠ 0 (default ≈ chord/|n₀|)"),
-        ParamSpec::optional("lambda1", ParamKind::Number, "tangent magnitude at the end, ≠ 0 (default ≈ chord/|n₁|)"),
+        ParamSpec::optional("lambda0", ParamKind::Number, "tangent magnitude at the start, ≠ 0 (default ≈ chord/|n₀|); a negative value reverses the spine's tangent there (the sphere family starts in the opposite direction): built when the patches stay pole-free, else refused at `lambda0` (weight not positive) — the rule of every canal blend"),
+        ParamSpec::optional("lambda1", ParamKind::Number, "tangent magnitude at the end, ≠ 0 (default ≈ chord/|n₁|); negative: reversed tangent, same rule as `lambda0`"),
     ],
     example: r#"[[object]]
 name = "blend_two_spheres"
@@ -848,8 +848,8 @@ const CANAL_BLEND_SPHERE_PLANE: OpSpec = OpSpec {
         ParamSpec::required("plane_offset", ParamKind::Number, "e of the plane n·y = e"),
         ParamSpec::required("circle_center", ParamKind::Point3, "centre of the contact circle, on the plane"),
         ParamSpec::required("circle_radius", ParamKind::Number, "radius of the contact circle, > 0"),
-        ParamSpec::optional("lambda0", ParamKind::Number, "tangent magnitude at the sphere (inverted space), ≠ 0"),
-        ParamSpec::optional("lambda1", ParamKind::Number, "tangent magnitude at the plane (inverted space), ≠ 0"),
+        ParamSpec::optional("lambda0", ParamKind::Number, "tangent magnitude at the sphere (inverted space), ≠ 0; a negative value reverses the inverted spine's tangent there (the sphere family starts in the opposite direction): built when the patches stay pole-free, else refused at `lambda0` (weight not positive) — the rule of `canal_blend_spheres`"),
+        ParamSpec::optional("lambda1", ParamKind::Number, "tangent magnitude at the plane (inverted space), ≠ 0; negative: reversed tangent, same rule as `lambda0`"),
     ],
     example: r#"[[object]]
 name = "blend_sphere_plane"

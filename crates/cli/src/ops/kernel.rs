@@ -183,7 +183,7 @@ const POINTS_DOC: &str =
 
 const BEZIER_CURVE: OpSpec = OpSpec {
     name: "bezier_curve",
-    summary: "a rational Bézier curve from its control points and weights",
+    summary: "a rational Bézier curve from its control points and weights; one control point, or all control points equal, is accepted: the object is a point (a constant curve or patch of the given degree; STEP and IGES refuse degree 0) — the one rule of bezier_curve, bezier_patch and quadric_curve_image",
     params: &INLINE_CURVE_PARAMS,
     example: r#"[[object]]
 name = "quarter_circle"
@@ -248,7 +248,7 @@ at = "1/3"
 
 const BEZIER_PATCH: OpSpec = OpSpec {
     name: "bezier_patch",
-    summary: "a rational tensor-product Bézier patch from its control net and weights",
+    summary: "a rational tensor-product Bézier patch from its control net and weights; one control point, or all control points equal, is accepted: the object is a point (a constant curve or patch of the given degree; STEP and IGES refuse degree 0) — the one rule of bezier_curve, bezier_patch and quadric_curve_image",
     params: &[
         ParamSpec::required(
             "net",

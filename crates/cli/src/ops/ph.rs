@@ -317,7 +317,14 @@ fn scale(a: &[Q; 3], s: &Q) -> [Q; 3] {
 }
 
 fn to_q(x: f64) -> Result<Q, OpError> {
-    Q::try_from(x).map_err(|_| OpError::new(format!("non-finite value {x} in an f64 result")))
+    Q::try_from(x).map_err(|_| {
+        OpError::new(
+            rcagd::ph::PhError::NonFinite {
+                what: format!("the value {x} of an f64 result"),
+            }
+            .to_string(),
+        )
+    })
 }
 
 /// The main curve object with the PH, arc-length and curvature certificates, plus the

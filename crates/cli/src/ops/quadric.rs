@@ -115,7 +115,7 @@ const CURVE_DOC: &str =
 
 const QUADRIC_CURVE_IMAGE: OpSpec = OpSpec {
     name: "quadric_curve_image",
-    summary: "the image of a rational Bézier curve of degree n under the generalized stereographic projection: a curve of degree 2n exactly on the quadric",
+    summary: "the image of a rational Bézier curve of degree n under the generalized stereographic projection: a curve of degree 2n exactly on the quadric; one control point, or all control points equal, is accepted: the object is a point (a constant curve or patch of the given degree; STEP and IGES refuse degree 0) — the one rule of bezier_curve, bezier_patch and quadric_curve_image",
     params: &[
         ParamSpec::required("points", ParamKind::Points, CURVE_DOC).degree(),
         ParamSpec::optional("weights", ParamKind::Numbers, "one weight per control point (default all 1)"),

@@ -77,3 +77,53 @@ fn max_seconds_is_documented_and_zero_means_no_budget_for_a_quick_recipe() {
         );
     }
 }
+
+/// A recipe that builds in about 0.25 s CPU and whose ten exporters take about 8 s CPU
+/// (test profile; exact boundary curves of the IGES and STEP writers, meshes; fuzz
+/// corpus `sphere_family_envelope-timeout-a083bd00fa6deeb5`).
+const SLOW_EXPORT: &str = r#"
+[[object]]
+name = "fz"
+op = "sphere_family_envelope"
+net = "hyperbolic"
+points = [[1, 0, 0, 0], [0, 0, 1, 0], [1, 0, 0, 1], [0, 1, 0, 0]]
+a = [[0], [0], [1]]
+b = [[0, 0, 1]]
+domain = ["1/4", 1, "1/4", 1]
+spheres = 2
+other_sheet = true
+combine = true
+"#;
+
+#[test]
+fn max_seconds_bounds_the_exporters_too_and_nothing_is_written() {
+    let dir = temp_dir("budget-export");
+    let recipe = write(&dir, "slow-export.toml", SLOW_EXPORT);
+    let out = dir.join("out");
+    let start = Instant::now();
+    let o = bin()
+        .arg("build")
+        .arg(&recipe)
+        .args([
+            "--max-seconds",
+            "3",
+            "--format",
+            "json,step,iges,obj,stl,ply,gltf,svg,exact,png",
+        ])
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    let took = start.elapsed();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("work limit exceeded: exporting \"fz\" as JSON, STEP, IGES, OBJ"),
+        "{err}"
+    );
+    assert!(err.contains("took more than 3 s"), "{err}");
+    assert!(err.contains("nothing was written"), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+    assert!(!out.exists(), "nothing may be written");
+    assert!(took < Duration::from_secs(60), "took {took:?}");
+}

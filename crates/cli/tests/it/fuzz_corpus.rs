@@ -66,3 +66,25 @@ fn the_fuzzer_is_deterministic_and_finds_nothing_in_a_small_batch() {
         assert!(o.finding.is_none(), "{}\n{:?}", a.toml(), o);
     }
 }
+
+/// The fuzzer's exact-against-f64 check (issue 19, item 4) on its first finding, fixed
+/// (`rcagd fuzz --seed 11`, case 736): a planar PH curve far from the origin
+/// (`start = [0, 2⁵³ + 1]`) failed its `f64` certificate `y' ≡ Im w²` by the rounding of
+/// its control points (residual 2 on points of size 9e15); the certificate's tolerance
+/// now includes that rounding. And a disagreement is reported.
+#[test]
+fn the_fuzzers_float_check_agrees_on_its_fixed_finding_and_reports_a_difference() {
+    use rcagd_cli::build::build_recipe;
+    use rcagd_cli::fuzz::float_check;
+    let text = "[[object]]\nname = \"fz\"\nop = \"ph_planar_curve\"\npreimage = [[1, 0], [1, 1]]\nstart = [0, 9007199254740993]\n";
+    let r = rcagd_cli::recipe::Recipe::parse("fz.toml", text, None).unwrap();
+    let exact = build_recipe(&r, |_| {}).unwrap();
+    assert_eq!(float_check::check("fz.toml", text, &exact), None);
+    // a recipe compared with another curve's exact objects disagrees
+    let near = text.replace("9007199254740993", "0");
+    let other = near.replace("[1, 1]]", "[1, 2]]");
+    let r2 = rcagd_cli::recipe::Recipe::parse("fz.toml", &other, None).unwrap();
+    let exact2 = build_recipe(&r2, |_| {}).unwrap();
+    let m = float_check::check("fz.toml", &near, &exact2).expect("a disagreement");
+    assert!(m.contains("exact and f64 disagree"), "{m}");
+}

@@ -199,20 +199,22 @@ pub fn pipe_along_spine(
         .pieces()
         .par_iter()
         .enumerate()
-        .map(|(k, p)| {
-            pipe_around_ph_checked(
-                &p.curve,
-                radius,
-                (&zero, &one),
-                orientation,
-                Method::Lowest,
-                false,
-            )
-            .map_err(|e| CanalError::SpinePiece {
-                index: k,
-                source: Box::new(e),
-            })
-        })
+        .map(rcagd_algebra::budget::inherit(
+            |(k, p): (usize, &crate::ph::approximation::ApproximationPiece)| {
+                pipe_around_ph_checked(
+                    &p.curve,
+                    radius,
+                    (&zero, &one),
+                    orientation,
+                    Method::Lowest,
+                    false,
+                )
+                .map_err(|e| CanalError::SpinePiece {
+                    index: k,
+                    source: Box::new(e),
+                })
+            },
+        ))
         .collect::<Vec<_>>()
         .into_iter()
         .collect::<Result<Vec<_>, _>>()?;

@@ -918,18 +918,20 @@ pub fn pipe_along_chain(
     let pieces = spines
         .par_iter()
         .enumerate()
-        .map(|(k, s)| {
-            pipe_exportable_checked(s, radius, (&zero, &one), orientation, false).map_err(|e| {
-                if spines.len() == 1 {
-                    e
-                } else {
-                    CanalError::SpinePiece {
-                        index: k,
-                        source: Box::new(e),
+        .map(rcagd_algebra::budget::inherit(
+            |(k, s): (usize, &BezierCurve<Rational>)| {
+                pipe_exportable_checked(s, radius, (&zero, &one), orientation, false).map_err(|e| {
+                    if spines.len() == 1 {
+                        e
+                    } else {
+                        CanalError::SpinePiece {
+                            index: k,
+                            source: Box::new(e),
+                        }
                     }
-                }
-            })
-        })
+                })
+            },
+        ))
         .collect::<Vec<_>>()
         .into_iter()
         .collect::<Result<Vec<_>, _>>()?;

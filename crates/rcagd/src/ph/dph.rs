@@ -44,10 +44,9 @@ impl<F: Scalar> DphData<F> {
     /// # Errors
     /// [`PhError::Irrational`] if a coefficient is not rational (non-finite `f64`).
     pub fn omega_exact(&self) -> Result<Poly<QuadExt>, PhError> {
-        let c = self
-            .c
-            .to_rational()
-            .ok_or_else(|| PhError::Irrational("c is not a finite rational".into()))?;
+        let c = self.c.to_rational().ok_or_else(|| PhError::NonFinite {
+            what: "the DPH constant c".into(),
+        })?;
         let s = sqrt_in_extension(&c)?;
         let coeffs = self
             .omega_tilde
@@ -56,7 +55,9 @@ impl<F: Scalar> DphData<F> {
             .map(|x| {
                 x.to_rational()
                     .map(|q| QuadExt::rational(q) * s.clone())
-                    .ok_or_else(|| PhError::Irrational("ω̃ has a non-finite coefficient".into()))
+                    .ok_or_else(|| PhError::NonFinite {
+                        what: "a coefficient of ω̃".into(),
+                    })
             })
             .collect::<Result<Vec<_>, _>>()?;
         Ok(Poly::new(coeffs))

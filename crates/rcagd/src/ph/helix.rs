@@ -78,9 +78,15 @@ impl<F: Scalar> PhPolyCurve<F> {
     /// The exact helix test: solve `a·r'(t) ≡ σ(t)` (docs/math/ph-curves.md, "Helix test and axis"; Besednjak (3.23)).
     ///
     /// # Errors
-    /// None at present (kept fallible for degenerate inputs).
+    /// [`PhError::NonFinite`] when an `f64` hodograph coefficient overflowed.
     pub fn helix_test(&self) -> Result<HelixTest<F>, PhError> {
         let d = self.hodograph();
+        super::util::check_finite(
+            || "the hodograph and parametric speed in f64 (from the curve's data)".into(),
+            d.iter()
+                .flat_map(|p| p.coeffs().iter())
+                .chain(self.sigma.coeffs()),
+        )?;
         let rows = d
             .iter()
             .map(|p| p.degree().map_or(0, |x| x + 1))

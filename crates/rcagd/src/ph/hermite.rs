@@ -190,8 +190,17 @@ impl<F: Scalar> HermiteData<F> {
     /// As [`Self::solve_exact`].
     pub fn solve_f64(&self) -> Result<HermiteSolution<f64>, PhError> {
         let data = self.map(|x| x.to_f64());
+        super::util::check_finite(
+            || "the Hermite data (p_s, d_s, p_f, d_f) in f64".into(),
+            data.p_s
+                .iter()
+                .chain(&data.d_s)
+                .chain(&data.p_f)
+                .chain(&data.d_f),
+        )?;
         check_data(&data)?;
         let m = (dot3(&data.d_s, &data.d_s) * dot3(&data.d_f, &data.d_f)).sqrt();
+        super::util::check_finite(|| "|d_s|·|d_f| (from d_s, d_f)".into(), [&m])?;
         solve_in(data, m)
     }
 
@@ -304,6 +313,10 @@ fn solve_in<K: Scalar>(data: HermiteData<K>, m: K) -> Result<HermiteSolution<K>,
         - &gpoly.scale(&(K::one() / kappa.clone())))
         .scale(&(K::one() / K::from_i64(10)));
     let quartic = &(&l * &l).scale(&kappa) - &gpoly;
+    super::util::check_finite(
+        || "the elimination quartic's coefficients (from the Hermite data)".into(),
+        quartic.coeffs(),
+    )?;
     if quartic.is_zero() {
         return Err(PhError::Degenerate(
             "the elimination quartic vanishes identically (a continuum of solutions)".into(),

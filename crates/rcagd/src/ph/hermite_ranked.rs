@@ -38,8 +38,9 @@ pub struct RankedInterpolant {
 }
 
 fn to_q(x: f64) -> Result<Rational, PhError> {
-    Rational::try_from(x)
-        .map_err(|_| PhError::OutOfRange(format!("non-finite value {x} in an f64 result")))
+    Rational::try_from(x).map_err(|_| PhError::NonFinite {
+        what: format!("the value {x} of an f64 interpolant (from the Hermite data)"),
+    })
 }
 
 fn prefixed(prefix: &str, certs: Vec<Certificate>) -> impl Iterator<Item = Certificate> + '_ {

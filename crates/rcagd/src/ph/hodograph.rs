@@ -425,7 +425,23 @@ pub fn solve_qiq<F: Scalar>(
             "Q i Q* = c needs c ≠ 0 (Lemma 2.1)".into(),
         ));
     }
-    let norm = sqrt_scalar(&dot3(c, c)).ok_or_else(|| {
+    super::util::check_finite(|| "c of Q i Q* = c in f64".into(), c.iter())?;
+    let norm = if F::EXACT {
+        None
+    } else {
+        // |c| without forming |c|² (which overflows from |c| ≈ 1.3e154 on)
+        let m = c.iter().map(|x| x.to_f64().abs()).fold(0.0, f64::max);
+        let r = c
+            .iter()
+            .map(|x| (x.to_f64() / m).powi(2))
+            .sum::<f64>()
+            .sqrt()
+            * m;
+        rcagd_algebra::Rational::try_from(r)
+            .ok()
+            .map(|r| F::from_rational(&r))
+    };
+    let norm = norm.or_else(|| sqrt_scalar(&dot3(c, c))).ok_or_else(|| {
         PhError::Irrational(format!(
             "|c| = √({}) is irrational",
             fmt_scalar(&dot3(c, c))

@@ -136,6 +136,20 @@ pub enum PhError {
     /// (docs/math/rrmf.md, "Deciding RRMF").
     #[error("not an RRMF curve: {0}")]
     NotRrmf(String),
+    /// An `f64` computation produced a non-finite intermediate (`±inf`, `NaN`): the input
+    /// is too large for `f64` (its products overflow near 1.8e308). Detected where the
+    /// floating-point solvers produce their intermediates (Hermite, planar Hermite, helix,
+    /// splines), never
+    /// raised for exact scalars. `what` names the intermediate and the input it comes
+    /// from. The message starts with "f64 overflow" (the CLI says "input too large for
+    /// f64" and names the parameter).
+    #[error(
+        "f64 overflow: {what} is not finite (the input is too large for f64; rescale the data)"
+    )]
+    NonFinite {
+        /// The intermediate that is not finite and the input it is computed from.
+        what: String,
+    },
     /// An algebraic failure underneath.
     #[error(transparent)]
     Algebra(#[from] AlgebraError),

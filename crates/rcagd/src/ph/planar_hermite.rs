@@ -67,6 +67,28 @@ pub struct PlanarHermiteSolution<F> {
 pub type PlanarHermiteResult =
     super::util::ExactOrFloat<PlanarHermiteSolution<Rational>, PlanarHermiteSolution<f64>>;
 
+/// The error of a complex square root that is not in `F`: irrational for exact `F`
+/// (solve in `f64`); for `f64` (where every root exists) an overflowed radicand.
+fn no_root<F: Scalar>(what: &str) -> PhError {
+    if F::EXACT {
+        PhError::Irrational(format!(
+            "{what} is not a Gaussian rational; use the f64 path"
+        ))
+    } else {
+        PhError::NonFinite {
+            what: format!("{what} (from the Hermite data)"),
+        }
+    }
+}
+
+/// [`PhError::NonFinite`] when an `f64` preimage coefficient overflowed.
+fn check_preimage<F: Scalar>(w: &[&C<F>; 3]) -> Result<(), PhError> {
+    super::util::check_finite(
+        || "the preimage (w0, w1, w2) computed from the Hermite data".into(),
+        w.iter().flat_map(|c| [&c.re, &c.im]),
+    )
+}
+
 fn cx<F: Scalar>(p: &[F; 2]) -> C<F> {
     C::new(p[0].clone(), p[1].clone())
 }
@@ -78,6 +100,14 @@ impl<F: Scalar> PlanarHermiteData<F> {
     }
 
     fn check(&self) -> Result<(), PhError> {
+        super::util::check_finite(
+            || "the Hermite data (p0, d0, p1, d1)".into(),
+            self.p0
+                .iter()
+                .chain(&self.d0)
+                .chain(&self.p1)
+                .chain(&self.d1),
+        )?;
         super::util::check_hermite_ends(&self.p0, &self.d0, &self.p1, &self.d1)
     }
 
@@ -87,7 +117,8 @@ impl<F: Scalar> PlanarHermiteData<F> {
     /// # Errors
     /// [`PhError::ZeroTangent`] for `d0 = 0` or `d1 = 0`, [`PhError::CoincidentEndPoints`]
     /// for `p0 = p1`, [`PhError::Irrational`] (exact `F`) for an irrational root,
-    /// [`PhError::OutOfRange`] for non-finite data.
+    /// [`PhError::OutOfRange`] for non-finite data; [`PhError::NonFinite`] (`f64`) when
+    /// the data are finite but an intermediate overflows.
     pub fn solve(&self) -> Result<PlanarHermiteSolution<F>, PhError> {
         self.check()?;
         let mut interpolants = Vec::with_capacity(4);
@@ -121,11 +152,7 @@ impl<F: Scalar> PlanarHermiteData<F> {
     }
 
     fn branch(&self, end_sign: i8, root_sign: i8) -> Result<PlanarHermiteInterpolant<F>, PhError> {
-        let irr = |what: &str| {
-            PhError::Irrational(format!(
-                "{what} is not a Gaussian rational; use the f64 path"
-            ))
-        };
+        let irr = no_root::<F>;
         let d0 = cx(&self.d0);
         let d1 = cx(&self.d1);
         let dp = cx(&self.p1) - cx(&self.p0);
@@ -139,6 +166,7 @@ impl<F: Scalar> PlanarHermiteData<F> {
         let root = complex_sqrt(&c).ok_or_else(|| irr("√(120Δp − 15(d0 + d1) + 10 w0 w2)"))?;
         let r = if root_sign > 0 { root } else { -root };
         let w1 = (r - (w0.clone() + w2.clone()).scale(&f(3))).scale(&(F::one() / f(4)));
+        check_preimage(&[&w0, &w1, &w2])?;
         let curve = PlanarPhCurve::new(vec![w0, w1, w2], self.p0.clone())?;
         // an interpolant through a cusp (σ vanishes on [0, 1]) is still an interpolant:
         // its energy diverges and its rotation index is not computed (+∞ for both), so it
@@ -163,11 +191,7 @@ impl<F: Scalar> PlanarHermiteData<F> {
     /// As [`Self::solve`].
     pub fn quintic_preimages(&self) -> Result<Vec<[C<F>; 3]>, PhError> {
         self.check()?;
-        let irr = |what: &str| {
-            PhError::Irrational(format!(
-                "{what} is not a Gaussian rational; use the f64 path"
-            ))
-        };
+        let irr = no_root::<F>;
         let d0 = cx(&self.d0);
         let d1 = cx(&self.d1);
         let dp = cx(&self.p1) - cx(&self.p0);
@@ -183,6 +207,7 @@ impl<F: Scalar> PlanarHermiteData<F> {
             let m = (w0.clone() + w2.clone()).scale(&f(3));
             for r in [root.clone(), -root] {
                 let w1 = (r - m.clone()).scale(&quarter);
+                check_preimage(&[&w0, &w1, &w2])?;
                 out.push([w0.clone(), w1, w2.clone()]);
             }
         }

@@ -16,10 +16,12 @@ impl PlanarPhCurve<f64> {
     /// The exact PH curve of the rounded preimage, starting at `p0` (module docs).
     ///
     /// # Errors
-    /// [`PhError::OutOfRange`] for a non-finite coefficient; as [`PlanarPhCurve::new`].
+    /// [`PhError::NonFinite`] for a non-finite coefficient; as [`PlanarPhCurve::new`].
     pub fn rounded(&self, p0: &[Rational; 2]) -> Result<PlanarPhCurve<Rational>, PhError> {
         let rat = |x: f64| {
-            Rational::try_from(x).map_err(|_| PhError::OutOfRange("non-finite f64 result".into()))
+            Rational::try_from(x).map_err(|_| PhError::NonFinite {
+                what: format!("the f64 preimage coefficient {x}"),
+            })
         };
         let w = self
             .preimage_coefficients()

@@ -165,7 +165,9 @@ fn rotation_f64<F: Scalar>(curve: &PhCurve<F>) -> Result<(Poly<F>, Poly<F>), PhE
             .map(|c| {
                 Rational::try_from(*c)
                     .map(|r| F::from_rational(&r))
-                    .map_err(|_| PhError::OutOfRange("non-finite coefficient".into()))
+                    .map_err(|_| PhError::NonFinite {
+                        what: format!("the f64 preimage coefficient {c}"),
+                    })
             })
             .collect::<Result<Vec<_>, _>>()?;
         Ok(Poly::new(c))

@@ -278,7 +278,9 @@ impl RrmfHermiteData {
 /// of `v`: short exact rationals for the made-exact coefficients.
 fn short_rational(v: f64, tol: f64) -> Result<Rational, PhError> {
     if !v.is_finite() {
-        return Err(PhError::OutOfRange("non-finite value".into()));
+        return Err(PhError::NonFinite {
+            what: format!("the value {v} of the f64 RRMF Hermite solve"),
+        });
     }
     let bound = tol * v.abs().max(1.0);
     let (mut h0, mut h1, mut k0, mut k1) = (0i128, 1i128, 1i128, 0i128);
@@ -303,7 +305,9 @@ fn short_rational(v: f64, tol: f64) -> Result<Rational, PhError> {
         }
         x = 1.0 / frac;
     }
-    Rational::try_from(v).map_err(|_| PhError::OutOfRange("non-finite value".into()))
+    Rational::try_from(v).map_err(|_| PhError::NonFinite {
+        what: format!("the value {v} of the f64 RRMF Hermite solve"),
+    })
 }
 
 /// Solves the 4 × 4 system `J x = b` by Gaussian elimination with partial pivoting.

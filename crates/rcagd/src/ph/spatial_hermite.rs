@@ -150,6 +150,18 @@ impl<F: Scalar> SpatialHermiteData<F> {
         super::util::check_hermite_ends(&self.p0, &self.d0, &self.p1, &self.d1)
     }
 
+    /// [`PhError::NonFinite`] when the data (converted to `f64`) are not finite.
+    fn check_finite(&self) -> Result<(), PhError> {
+        super::util::check_finite(
+            || "the Hermite data (p0, d0, p1, d1) in f64".into(),
+            self.p0
+                .iter()
+                .chain(&self.d0)
+                .chain(&self.p1)
+                .chain(&self.d1),
+        )
+    }
+
     /// The interpolant with free angles `φ_0`, `φ_2` given as `(cos φ, sin φ)`.
     ///
     /// # Errors
@@ -203,8 +215,9 @@ impl<F: Scalar> SpatialHermiteData<F> {
         phi0: f64,
         phi2: f64,
     ) -> Result<SpatialHermiteQuintic<f64>, PhError> {
-        self.to_f64()
-            .interpolant((phi0.cos(), phi0.sin()), (phi2.cos(), phi2.sin()))
+        let d = self.to_f64();
+        d.check_finite()?;
+        d.interpolant((phi0.cos(), phi0.sin()), (phi2.cos(), phi2.sin()))
     }
 
     /// The least bending energy `f64` interpolant: the best of `φ_0, φ_2 ∈ {−π/2, 0, π/2, π}`,
@@ -219,6 +232,7 @@ impl<F: Scalar> SpatialHermiteData<F> {
     pub fn default_f64(&self) -> Result<SpatialHermiteQuintic<f64>, PhError> {
         use core::f64::consts::FRAC_PI_2;
         let d = self.to_f64();
+        d.check_finite()?;
         let eval = |a: f64, b: f64| d.build((a.cos(), a.sin()), (b.cos(), b.sin()));
         let angles = [-FRAC_PI_2, 0.0, FRAC_PI_2, 2.0 * FRAC_PI_2];
         let mut best: Option<(f64, f64, SpatialHermiteQuintic<f64>)> = None;

@@ -226,8 +226,9 @@ impl<F: Scalar> PhQuinticSpline<F> {
     /// The C2 PH quintic spline through `points` with the given end conditions.
     ///
     /// # Errors
-    /// [`PhError::Degenerate`] for fewer than 2 points (3 for a closed spline) or
-    /// non-finite data; [`PhError::CoincidentEndPoints`] if two consecutive points
+    /// [`PhError::Degenerate`] for fewer than 2 points (3 for a closed spline);
+    /// [`PhError::NonFinite`] for data or a Newton solution beyond `f64`'s range;
+    /// [`PhError::CoincidentEndPoints`] if two consecutive points
     /// coincide; [`PhError::ZeroTangent`] for a zero end derivative;
     /// [`PhError::NoRealSolution`] if Newton–Raphson does not converge (50 iterations).
     pub fn interpolate(points: &[[F; 2]], ends: &SplineEnds<F>) -> Result<Self, PhError> {
@@ -254,7 +255,9 @@ impl<F: Scalar> PhQuinticSpline<F> {
             .map(|p| cz(p[0].to_f64(), p[1].to_f64()))
             .collect();
         if pf.iter().any(|p| !p.re.is_finite() || !p.im.is_finite()) {
-            return Err(PhError::Degenerate("non-finite spline points".into()));
+            return Err(PhError::NonFinite {
+                what: "the spline points in f64".into(),
+            });
         }
         for (i, w) in pts.windows(2).enumerate() {
             if w[0] == w[1] {
@@ -356,7 +359,9 @@ impl<F: Scalar> PhQuinticSpline<F> {
         }
         // round the solution into F
         let conv = |x: f64| -> Result<F, PhError> {
-            from_f64(x).ok_or_else(|| PhError::Degenerate("non-finite spline solution".into()))
+            from_f64(x).ok_or_else(|| PhError::NonFinite {
+                what: "the spline's Newton solution (from the points and end conditions)".into(),
+            })
         };
         let z: Vec<C<F>> = zf
             .iter()

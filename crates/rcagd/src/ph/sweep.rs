@@ -97,7 +97,7 @@ pub fn check_sweep_regularity<F: Scalar>(
 /// # Errors
 /// [`PhError::DegreeMismatch`] if there are fewer than 2 profile points or the weights do
 /// not match them; [`PhError::OutOfRange`] for a weight `≤ 0`; [`PhError::Degenerate`] if
-/// the frame's denominator `d` vanishes on `[0, 1]` (a singular point of the curve, where
+/// all profile points are equal (a point profile sweeps a curve), or if the frame's denominator `d` vanishes on `[0, 1]` (a singular point of the curve, where
 /// no split gives positive weights), or if the profile reaches the curve's radius of
 /// curvature ([`check_sweep_regularity`]); [`PhError::Geom`] from the patch constructor.
 pub fn sweep_profile<F: Scalar>(
@@ -123,6 +123,13 @@ pub fn sweep_profile<F: Scalar>(
             "profile weight {j} is {} but every weight must be > 0",
             fmt_scalar(&weights[j])
         )));
+    }
+    if profile.iter().all(|p| *p == profile[0]) {
+        return Err(PhError::Degenerate(
+            "all profile control points are equal: the profile is a point, so the sweep \
+             would be a curve (a translate of the spine), not a surface"
+                .into(),
+        ));
     }
     let r = rmf.curve.position();
     let rd: [Poly<F>; 3] = [&r[0] * &rmf.den, &r[1] * &rmf.den, &r[2] * &rmf.den];

@@ -20,6 +20,22 @@ pub(crate) type PV3<F> = [Poly<F>; 3];
 // ------------------------------------------------------------------ scalars
 
 /// `C(n, k)` in `F`.
+/// [`PhError::NonFinite`] naming `what` when an `f64` intermediate is not finite (an
+/// overflow of the floating-point path); always `Ok` for exact scalars.
+///
+/// # Errors
+/// [`PhError::NonFinite`] for a non-finite value among `values`.
+pub(crate) fn check_finite<'a, F: Scalar + 'a>(
+    what: impl FnOnce() -> String,
+    values: impl IntoIterator<Item = &'a F>,
+) -> Result<(), super::PhError> {
+    if F::EXACT || values.into_iter().all(|x| x.to_f64().is_finite()) {
+        Ok(())
+    } else {
+        Err(super::PhError::NonFinite { what: what() })
+    }
+}
+
 pub(crate) fn binom<F: Scalar>(n: usize, k: usize) -> F {
     if k > n {
         return F::zero();

@@ -1,6 +1,7 @@
 //! The integration tests of `rcagd`, in one test binary (one link instead of one per file;
 //! see docs/ARCHITECTURE.md, "Tests").
 
+mod budget_rayon;
 mod canal_cyclographic;
 mod canal_hypersurface;
 mod canal_krasauskas_ext;
