@@ -6,7 +6,7 @@
 
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
-use crate::value::ParamKind;
+use crate::value::{ParamKind, Value};
 use rcagd::cyclide::spheres::certify_three_spheres;
 use rcagd::cyclide::{blend_cones, fitting_contact_sphere, from_three_spheres, DualPencil, DupinCyclide};
 use rcagd::cyclographic::OrientedSphere;
@@ -174,6 +174,7 @@ const CYCLIDE_BLEND: OpSpec = OpSpec {
         ParamSpec::required("direction2", ParamKind::Point, "d₂ = (a₂, δ₂) of cone 2"),
         ParamSpec::optional("point2", ParamKind::Point, "instead of `sphere2`: any sphere (m, r) of cone 2 (a point of its line); P₂ is then computed to fit P₁ (equal tangent lengths; for parallel axes the sphere level with P₁)"),
         ParamSpec::with_default("side2", ParamKind::Number, "1", "with `point2` and meeting axes: +1 or −1, which of the two fitting spheres of cone 2 (on either side of the axes' intersection)"),
+        ParamSpec::with_default("arc", ParamKind::Choice(&["blend", "complement"]), "\"blend\"", "which band of the cyclide between the two contact circles: the blend, or the complementary arc (the rest of the same cyclide, through the other side of the contact spheres)"),
     ],
     example: r#"[[object]]
 name = "elbow_blend"
@@ -211,7 +212,11 @@ fn build_blend(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         }
     };
     let blend = blend_cones(p1, d1, p2, d2).map_err(|e| OpError::param(blame, e.to_string()))?;
-    let patches = blend.patches().map_err(|e| OpError::new(e.to_string()))?;
+    let patches = match args.get("arc") {
+        Some(Value::Str(a)) if a == "complement" => blend.complement_patches(),
+        _ => blend.patches(),
+    }
+    .map_err(|e| OpError::new(e.to_string()))?;
     let mut certs = blend.certify();
     let (patches, wcert) = super::canal::positive_pieces(patches, Some("sphere2"))?;
     certs.push(wcert);

@@ -290,6 +290,58 @@ impl<F: Scalar> CyclideBlend<F> {
         }
     }
 
+    /// The patches of the complementary band: the rest of the same cyclide between the two
+    /// contact circles (the first family's parameter over the complement of the blend's
+    /// interval, through `t = ∞`: `t = 1/τ` there), four pieces in `s` per interval. With
+    /// [`CyclideBlend::patches`] it covers the whole cyclide; it is tangent to the two
+    /// cones along the same circles (from the other side of the contact spheres).
+    ///
+    /// # Errors
+    /// As [`DupinCyclide::band_patches`].
+    pub fn complement_patches(&self) -> Result<Vec<BezierPatch<F>>, CyclideError> {
+        let (z, one) = (F::zero(), F::one());
+        let m1 = -one.clone();
+        let cy = &self.cyclide;
+        // (reversed, a, b): t ∈ [a, b], or τ ∈ [a, b] with t = 1/τ
+        let mut pieces: Vec<(bool, F, F)> = Vec::new();
+        match &self.t2 {
+            // the blend is t ∈ [0, ∞]
+            None => {
+                pieces.push((false, m1.clone(), z.clone()));
+                pieces.push((true, m1, z));
+            }
+            Some(t2) if *t2 > z && *t2 <= one => {
+                if *t2 < one {
+                    pieces.push((false, t2.clone(), one.clone()));
+                }
+                pieces.push((true, m1.clone(), z.clone()));
+                pieces.push((true, z.clone(), one));
+                pieces.push((false, m1, z));
+            }
+            Some(t2) if *t2 > z => {
+                pieces.push((true, m1.clone(), one.clone() / t2.clone()));
+                pieces.push((false, m1, z));
+            }
+            Some(t2) if *t2 >= m1 => {
+                pieces.push((false, z.clone(), one.clone()));
+                pieces.push((true, m1.clone(), z));
+                pieces.push((true, F::zero(), one));
+                if *t2 > m1 {
+                    pieces.push((false, m1, t2.clone()));
+                }
+            }
+            Some(t2) => {
+                pieces.push((false, z, one.clone()));
+                pieces.push((true, one.clone() / t2.clone(), one));
+            }
+        }
+        let mut out = Vec::new();
+        for (rev, a, b) in pieces {
+            out.extend(cy.band_patches(rev, &a, &b)?);
+        }
+        Ok(out)
+    }
+
     /// Certificates of tangency along both contact circles, as identities in `s`: the
     /// circle lies on the contact sphere `Pᵢ` (`|x − mᵢ|² = rᵢ²`), and the tangent planes of
     /// the blend there contain the line of cone `i` (`n·mᵢ − n·x + rᵢ = 0` and

@@ -562,6 +562,19 @@ fn blends_between_cones_and_cylinders() {
         let s = xy.clone() + z.clone() * z + qi(4) - qi(1);
         assert_eq!(s.clone() * s, qi(16) * xy);
     }
+    // the complementary arc: the rest of the torus between the same circles (t ∈ [0, 1]
+    // and t = 1/τ, τ ∈ [−1, 0], [0, 1]), on the same torus
+    let comp = cyl.complement_patches().expect("complement");
+    assert_eq!(comp.len(), 12);
+    for p in &comp {
+        for (a, b) in [(q(1, 3), q(3, 4)), (qi(0), qi(0)), (qi(1), q(1, 2))] {
+            let pt = p.eval(&a, &b).expect("finite");
+            let (dx, dy, z) = (pt[0].clone() - qi(2), pt[1].clone() - qi(2), pt[2].clone());
+            let xy = dx.clone() * dx + dy.clone() * dy;
+            let s = xy.clone() + z.clone() * z + qi(4) - qi(1);
+            assert_eq!(s.clone() * s, qi(16) * xy);
+        }
+    }
     // two cones: lines through S = (0, 0, 0, 1) with directions (1, 0, 0, 1/2), (0, 1, 0, 1/2)
     let cone = blend_cones(
         v4([(2, 1), (0, 1), (0, 1), (2, 1)]),
@@ -587,6 +600,13 @@ fn blends_between_cones_and_cylinders() {
     assert_all_hold(&par.certify());
     assert_eq!(par.t2, None);
     assert_eq!(par.patches().expect("patches").len(), 8);
+    let comp = par.complement_patches().expect("complement");
+    assert_eq!(comp.len(), 8);
+    for p in &comp {
+        let pt = p.eval(&q(1, 3), &q(3, 4)).expect("finite");
+        let pt: [Q; 3] = core::array::from_fn(|i| pt[i].clone());
+        assert_eq!(par.cyclide.implicit_value(&pt), qi(0));
+    }
     // skew axes
     let e = blend_cones(
         v4([(2, 1), (0, 1), (0, 1), (1, 1)]),
