@@ -114,7 +114,7 @@ fn ratfn<T: OpScalar>(args: &OpArgs, num: &'static str, den: &'static str) -> Re
         Some(g) => poly_from_grid(&g)?,
         None => poly_io::mpoly_constant(2, Q::from(1)),
     };
-    RatFn::new(in_t(&n), in_t(&d)).map_err(|e| OpError::param(den, e.to_string()))
+    RatFn::new(poly_io::mpoly_in(&n), poly_io::mpoly_in(&d)).map_err(|e| OpError::param(den, e.to_string()))
 }
 
 /// `N` polynomials in `t` from a grid of `N` rows of power coefficients (`rows` names them
@@ -143,11 +143,6 @@ fn n_polys<const N: usize>(
 /// Three polynomials in `t` from a grid of three rows of power coefficients.
 fn three_polys(args: &OpArgs, param: &'static str) -> Result<[RatFn<Q>; 3], OpError> {
     n_polys(args, param, "x, y, z")
-}
-
-/// An exact polynomial in `T`.
-fn in_t<T: OpScalar>(p: &MPolyQ) -> rcagd_algebra::mpoly::MPoly<T> {
-    p.map(arith::of)
 }
 
 fn domain<T: OpScalar>(args: &OpArgs) -> Result<Domain<T>, OpError> {
@@ -337,10 +332,10 @@ distances = ["1/2"]
     build: build_support::<Rational>,
 };
 
-fn opt_poly<T: OpScalar>(args: &OpArgs, param: &'static str, default: MPolyQ) -> Result<rcagd_algebra::mpoly::MPoly<T>, OpError> {
+fn opt_poly<T: OpScalar>(args: &OpArgs, param: &'static str, default: MPolyQ) -> Result<poly_io::MPolyIn<T>, OpError> {
     match args.opt_grid(param)? {
-        Some(g) => Ok(in_t(&poly_from_grid(&g)?)),
-        None => Ok(in_t(&default)),
+        Some(g) => Ok(poly_io::mpoly_in(&poly_from_grid(&g)?)),
+        None => Ok(poly_io::mpoly_in(&default)),
     }
 }
 
