@@ -44,6 +44,9 @@ def stub_block(rcagd):
             if p.name == "name":
                 args.append("*, name: str = ...")
                 continue
+            if p.name == "float":
+                args.append("float: bool = ...")
+                continue
             t = TYPES.get(types[p.name], "str")
             if p.default is inspect.Parameter.empty:
                 args.append(f"{p.name}: {t}")

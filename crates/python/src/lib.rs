@@ -277,12 +277,21 @@ impl Object {
 /// Builds a recipe (TOML or JSON text; `file_name` chooses the format by its extension,
 /// else it is sniffed) with the CLI's machinery: the same ops, checks and messages as
 /// `rcagd build`. Relative file parameters are taken relative to `file_name`'s directory.
+/// `float = true` builds as `rcagd build --float` ([`rcagd_cli::build::Arithmetic::Float`]:
+/// the ops' `f64` instantiation, tolerance certificates, objects marked
+/// `arithmetic = "f64"`; an op without a float path is an error).
 #[pyfunction]
-fn build(py: Python<'_>, text: &str, file_name: &str) -> PyResult<Vec<Object>> {
+#[pyo3(signature = (text, file_name, float = false))]
+fn build(py: Python<'_>, text: &str, file_name: &str, float: bool) -> PyResult<Vec<Object>> {
     let recipe = rcagd_cli::recipe::Recipe::parse(file_name, text, None)
         .map_err(|d| value_error(rcagd_cli::source::render_all(&d).trim_end()))?;
+    let arithmetic = if float {
+        rcagd_cli::build::Arithmetic::Float
+    } else {
+        rcagd_cli::build::Arithmetic::Exact
+    };
     let objects = py
-        .detach(|| rcagd_cli::build::build_recipe(&recipe, |_| {}))
+        .detach(|| rcagd_cli::build::build_recipe_with(&recipe, arithmetic, |_| {}))
         .map_err(|d| value_error(rcagd_cli::source::render_all(&d).trim_end()))?;
     objects.into_iter().map(Object::new).collect()
 }

@@ -23,8 +23,9 @@ def test_every_op_is_a_function_with_its_parameters():
         wanted = [n + "_" if keyword.iskeyword(n) else n
                   for n, _, _, _ in spec["params"]]
         if getattr(f, "__signature__", None) is not None:
-            # generated: exactly the op's parameters and the object's name
-            assert sorted(sig) == sorted(wanted + ["name"]), (name, list(sig), wanted)
+            # generated: exactly the op's parameters, the object's name and `float`
+            # (build in f64, `rcagd build --float`)
+            assert sorted(sig) == sorted(wanted + ["name", "float"]), (name, list(sig), wanted)
         else:
             # hand-written: every parameter reachable, by name or through **options
             extra = any(p.kind == p.VAR_KEYWORD for p in sig.values())

@@ -168,10 +168,10 @@ const MAX_SPLITS: (usize, usize) = rcagd::canal::EXPORT_SPLITS;
 /// all weights are positive ([`split_patches_adaptive`]), and certifies the result: all
 /// weights positive ⇒ the weight function has no zero on the patches (no pole, no base
 /// point).
-pub(super) fn positive_pieces(
-    patches: Vec<BezierPatch<Rational>>,
+pub(super) fn positive_pieces<T: Scalar>(
+    patches: Vec<BezierPatch<T>>,
     blame: Option<&'static str>,
-) -> Result<(Vec<BezierPatch<Rational>>, Certificate), OpError> {
+) -> Result<(Vec<BezierPatch<T>>, Certificate), OpError> {
     let split = split_patches_adaptive(patches, SignRule::Positive, MAX_SPLITS)
         .map_err(|e| OpError::new(e.to_string()))?;
     let (out, bad) = (split.pieces, split.failed);
@@ -193,7 +193,7 @@ pub(super) fn positive_pieces(
     }
     let cert = Certificate::holds(
         format!("every Bernstein weight of the {n} patches is > 0 (the weight has no zero: no pole, no base point)"),
-        true,
+        T::EXACT,
     );
     Ok((out, cert))
 }
@@ -1003,11 +1003,12 @@ op = "torus"
 major_radius = 2
 minor_radius = "1/2"
 "#,
-    build: build_torus,
+    build: build_torus::<Rational>,
 };
 
-fn build_torus(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let c = point3(args, "center")?;
+/// `torus` in `T` (one builder for the exact op and the float path).
+pub(crate) fn build_torus<T: super::arith::OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c = point3(args, "center")?.each_ref().map(super::arith::of::<T>);
     let big = args.number("major_radius")?;
     let rho = args.number("minor_radius")?;
     if big <= Rational::zero() {
@@ -1026,7 +1027,7 @@ fn build_torus(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     // the torus is the Dupin cyclide of the untilted pe circle (s = 0): spine circle of
     // radius R, constant radius ρ; one global parametrization, so the 16 patches share
     // their edges exactly and the surface is one closed shell
-    let cy = rcagd::cyclide::DupinCyclide::tilted(c, big, rho, Rational::zero()).map_err(|e| OpError::new(e.to_string()))?;
+    let cy = rcagd::cyclide::DupinCyclide::tilted(c, super::arith::of::<T>(&big), super::arith::of::<T>(&rho), T::zero()).map_err(|e| OpError::new(e.to_string()))?;
     let patches = cy.covering_patches().map_err(|e| OpError::new(e.to_string()))?;
     super::cyclide::cyclide_object(args, &cy, patches, Vec::new())
 }
@@ -1047,14 +1048,15 @@ rho = 2
 r0 = 3
 s = "1/3"
 "#,
-    build: build_dupin_canal,
+    build: build_dupin_canal::<Rational>,
 };
 
-fn build_dupin_canal(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let c = point3(args, "center")?;
-    let rho = args.number("rho")?;
-    let r0 = args.number("r0")?;
-    let s = args.number("s")?;
+/// `dupin_canal` in `T`.
+pub(crate) fn build_dupin_canal<T: super::arith::OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c = point3(args, "center")?.each_ref().map(super::arith::of::<T>);
+    let rho = super::arith::number::<T>(args, "rho")?;
+    let r0 = super::arith::number::<T>(args, "r0")?;
+    let s = super::arith::number::<T>(args, "s")?;
     let cy = rcagd::cyclide::DupinCyclide::tilted(c, rho, r0, s).map_err(|e| match e {
         rcagd::cyclide::CyclideError::IsotropicTangents(m) => OpError::param("s", m),
         rcagd::cyclide::CyclideError::ZeroRadius(m) => OpError::param("rho", m),

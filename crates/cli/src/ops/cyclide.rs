@@ -4,6 +4,7 @@
 //! The ring, horn and spindle cyclides arrive as 16 biquadratic patches covering the whole
 //! surface; the parabolic one (unbounded) on a parameter box.
 
+use super::arith::{self, OpScalar};
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::{ParamKind, Value};
@@ -24,37 +25,36 @@ pub const OPS: &[OpSpec] = &[
 ];
 
 
-fn vec4(args: &OpArgs, param: &'static str) -> Result<[Rational; 4], OpError> {
-    let p = args.point(param)?;
-    <[Rational; 4]>::try_from(p).map_err(|_| OpError::param(param, format!("`{param}` must be a vector of R^{{3,1}}: [x, y, z, r]")))
+fn vec4<T: OpScalar>(args: &OpArgs, param: &'static str) -> Result<[T; 4], OpError> {
+    arith::point(args, param, &format!("`{param}` must be a vector of R^{{3,1}}: [x, y, z, r]"))
 }
 
-fn range(args: &OpArgs, param: &'static str) -> Result<(Rational, Rational), OpError> {
+fn range<T: OpScalar>(args: &OpArgs, param: &'static str) -> Result<(T, T), OpError> {
     let v = args.opt_numbers(param)?.unwrap_or_default();
     match <[Rational; 2]>::try_from(v) {
-        Ok([a, b]) if a < b => Ok((a, b)),
+        Ok([a, b]) if a < b => Ok((arith::of(&a), arith::of(&b))),
         _ => Err(OpError::param(param, format!("`{param}` must be an interval [a, b] with a < b"))),
     }
 }
 
 /// The object of a cyclide: its covering (or boxed) patches with positive weights, every
 /// certificate (surface, offset, pencil), and its type as a value.
-pub(super) fn cyclide_object(
+pub(super) fn cyclide_object<T: OpScalar>(
     args: &OpArgs,
-    cy: &DupinCyclide<Rational>,
-    patches: Vec<BezierPatch<Rational>>,
+    cy: &DupinCyclide<T>,
+    patches: Vec<BezierPatch<T>>,
     mut certs: Vec<Certificate>,
 ) -> Result<Vec<Object>, OpError> {
     certs.extend(cy.certify());
     let pencil = DualPencil::of(cy).map_err(|e| OpError::new(e.to_string()))?;
     certs.extend(pencil.certify(cy));
     if let Some(d) = args.opt_number("offset")? {
-        certs.extend(cy.certify_offset(&d).map_err(|e| OpError::param("offset", e.to_string()))?);
+        certs.extend(cy.certify_offset(&arith::of::<T>(&d)).map_err(|e| OpError::param("offset", e.to_string()))?);
     }
     let (patches, wcert) = super::canal::positive_pieces(patches, None)?;
     certs.push(wcert);
     let kind = NamedQuantity::new("kind", "the type of the Dupin cyclide (ring, horn, spindle, parabolic)", Quantity::Text(cy.kind().name().into()));
-    Ok(vec![args.object(Geometry::Patches(patches), certs).with_values(vec![kind])])
+    Ok(vec![arith::object_with::<T>(args, Geometry::Patches(arith::exact_patches(patches)?), certs, vec![kind])])
 }
 
 const DUPIN_CYCLIDE: OpSpec = OpSpec {
@@ -75,13 +75,14 @@ u = [1, 0, 0, 0]
 v = [0, "5/4", 0, "3/4"]
 rho = 4
 "#,
-    build: build_dupin_cyclide,
+    build: build_dupin_cyclide::<Rational>,
 };
 
-fn build_dupin_cyclide(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let c = vec4(args, "center")?;
+/// `dupin_cyclide` in `T` (one builder for the exact op and the float path).
+pub(crate) fn build_dupin_cyclide<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c = vec4::<T>(args, "center")?;
     let (u, v) = (vec4(args, "u")?, vec4(args, "v")?);
-    let rho = args.number("rho")?;
+    let rho = arith::number::<T>(args, "rho")?;
     let cy = DupinCyclide::from_pe_circle(c, u, v, rho).map_err(|e| OpError::new(e.to_string()))?;
     let patches = cy.covering_patches().map_err(|e| OpError::new(e.to_string()))?;
     cyclide_object(args, &cy, patches, Vec::new())
@@ -103,10 +104,11 @@ op = "dupin_cyclide_spheres"
 centers = [[0, 0, 0], [4, 0, 0], [0, 4, 0]]
 radii = [1, 1, 1]
 "#,
-    build: build_spheres,
+    build: build_spheres::<Rational>,
 };
 
-fn build_spheres(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `dupin_cyclide_spheres` in `T` (one builder for the exact op and the float path).
+pub(crate) fn build_spheres<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let centers = args.points("centers")?;
     let radii = args.opt_numbers("radii")?.unwrap_or_default();
     if centers.len() != 3 || centers.iter().any(|c| c.len() != 3) {
@@ -115,13 +117,13 @@ fn build_spheres(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     if radii.len() != 3 {
         return Err(OpError::param("radii", "give exactly three radii"));
     }
-    let spheres: [OrientedSphere<Rational>; 3] = core::array::from_fn(|i| {
-        OrientedSphere::new(core::array::from_fn(|k| centers[i][k].clone()), radii[i].clone())
+    let spheres: [OrientedSphere<T>; 3] = core::array::from_fn(|i| {
+        OrientedSphere::new(core::array::from_fn(|k| arith::of(&centers[i][k])), arith::of(&radii[i]))
     });
     let cy = from_three_spheres(&spheres).map_err(|e| OpError::param("radii", e.to_string()))?;
     let patches = if cy.conic().is_parabola() {
-        let (t0, t1) = range(args, "t")?;
-        let (s0, s1) = range(args, "s")?;
+        let (t0, t1) = range::<T>(args, "t")?;
+        let (s0, s1) = range::<T>(args, "s")?;
         vec![cy.patch((&t0, &t1), (&s0, &s1)).map_err(|e| OpError::new(e.to_string()))?]
     } else {
         cy.covering_patches().map_err(|e| OpError::new(e.to_string()))?
@@ -150,14 +152,15 @@ n = [0, "3/5", "4/5", 1]
 t = [-2, 2]
 s = [-1, 1]
 "#,
-    build: build_parabolic,
+    build: build_parabolic::<Rational>,
 };
 
-fn build_parabolic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let c = vec4(args, "vertex")?;
+/// `dupin_cyclide_parabolic` in `T`.
+pub(crate) fn build_parabolic<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c = vec4::<T>(args, "vertex")?;
     let (u, n) = (vec4(args, "u")?, vec4(args, "n")?);
-    let (t0, t1) = range(args, "t")?;
-    let (s0, s1) = range(args, "s")?;
+    let (t0, t1) = range::<T>(args, "t")?;
+    let (s0, s1) = range::<T>(args, "s")?;
     let cy = DupinCyclide::from_pe_parabola(c, u, n).map_err(|e| OpError::new(e.to_string()))?;
     let patch = cy.patch((&t0, &t1), (&s0, &s1)).map_err(|e| OpError::new(e.to_string()))?;
     cyclide_object(args, &cy, vec![patch], Vec::new())
@@ -184,11 +187,12 @@ direction1 = [1, 0, 0, 0]
 sphere2 = [0, 2, 0, 1]
 direction2 = [0, 1, 0, 0]
 "#,
-    build: build_blend,
+    build: build_blend::<Rational>,
 };
 
-fn build_blend(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let (p1, d1) = (vec4(args, "sphere1")?, vec4(args, "direction1")?);
+/// `cyclide_blend` in `T`.
+pub(crate) fn build_blend<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let (p1, d1) = (vec4::<T>(args, "sphere1")?, vec4(args, "direction1")?);
     let d2 = vec4(args, "direction2")?;
     let (p2, blame) = match (args.opt_point("sphere2")?, args.opt_point("point2")?) {
         (Some(_), Some(_)) => {
@@ -225,5 +229,5 @@ fn build_blend(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         "the type of the blending Dupin cyclide",
         Quantity::Text(blend.cyclide.kind().name().into()),
     );
-    Ok(vec![args.object(Geometry::Patches(patches), certs).with_values(vec![kind])])
+    Ok(vec![arith::object_with::<T>(args, Geometry::Patches(arith::exact_patches(patches)?), certs, vec![kind])])
 }

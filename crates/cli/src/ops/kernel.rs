@@ -2,11 +2,13 @@
 //! `rcagd::cylinder`), and inline rational Bézier curves and patches given by their
 //! control points.
 
+use super::arith::{self, OpScalar};
 use super::{prefixed, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
 use num_traits::{One, Zero};
 use rcagd_algebra::rational::format_rational;
+use rcagd_algebra::format_scalar;
 use rcagd_algebra::{Certificate, Rational};
 use rcagd::{full_circle, CircleArcs, Certified, CylinderPatch};
 use rcagd_geom::certify::curves_agree;
@@ -64,7 +66,7 @@ radius = 5
 from = [5, 0]
 to = [3, 4]
 "#,
-    build: build_circle_arc,
+    build: build_circle_arc::<Rational>,
 };
 
 const CIRCLE: OpSpec = OpSpec {
@@ -77,7 +79,7 @@ op = "circle"
 center = [0, 0]
 radius = 1
 "#,
-    build: build_circle,
+    build: build_circle::<Rational>,
 };
 
 const CYLINDER_PATCH: OpSpec = OpSpec {
@@ -100,42 +102,42 @@ to = [0, 2]
 z0 = 0
 z1 = 3
 "#,
-    build: build_cylinder_patch,
+    build: build_cylinder_patch::<Rational>,
 };
 
-/// A declared `Point2` parameter as an array.
-fn point2(args: &OpArgs, param: &'static str) -> Result<[Rational; 2], OpError> {
-    let p = args.point(param)?;
-    <[Rational; 2]>::try_from(p).map_err(|_| {
-        OpError::param(param, format!("internal error: `{param}` is not a 2D point"))
-    })
+/// A declared `Point2` parameter as an array in `T`.
+fn point2<T: OpScalar>(args: &OpArgs, param: &'static str) -> Result<[T; 2], OpError> {
+    arith::point(args, param, &format!("internal error: `{param}` is not a 2D point"))
 }
 
-fn build_circle_arc(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let arcs = CircleArcs::new(
+fn arcs<T: OpScalar>(args: &OpArgs, clockwise: bool) -> Result<CircleArcs<T>, OpError> {
+    Ok(CircleArcs::new(
         point2(args, "center")?,
-        args.number("radius")?,
+        arith::number(args, "radius")?,
         point2(args, "from")?,
         point2(args, "to")?,
-        args.bool("clockwise")?,
-    )?;
+        clockwise,
+    )?)
+}
+
+/// `circle_arc` in `T` (one builder for the exact op and the float path).
+pub(crate) fn build_circle_arc<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let arcs = arcs::<T>(args, args.bool("clockwise")?)?;
     let certs = arcs.certify();
-    let mut curves = arcs.into_curves();
-    let geometry = if curves.len() == 1 {
-        Geometry::Curve(curves.remove(0))
-    } else {
-        Geometry::Curves(curves)
-    };
-    Ok(vec![args.object(geometry, certs)])
+    let geometry = arith::curves(arcs.into_curves())?;
+    Ok(vec![arith::object::<T>(args, geometry, certs)])
 }
 
-fn build_circle(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let circle = full_circle(point2(args, "center")?, args.number("radius")?)?;
+/// `circle` in `T`.
+pub(crate) fn build_circle<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let circle = full_circle(point2::<T>(args, "center")?, arith::number(args, "radius")?)?;
     let certs = circle.certify();
-    Ok(vec![args.object(Geometry::Curves(circle.into_curves()), certs)])
+    let curves = arith::exact_curves(circle.into_curves())?;
+    Ok(vec![arith::object::<T>(args, Geometry::Curves(curves), certs)])
 }
 
-fn build_cylinder_patch(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `cylinder_patch` in `T`.
+pub(crate) fn build_cylinder_patch<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let z0 = args.number("z0")?;
     let z1 = args.number("z1")?;
     if z0 >= z1 {
@@ -148,13 +150,8 @@ fn build_cylinder_patch(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             ),
         ));
     }
-    let arcs = CircleArcs::new(
-        point2(args, "center")?,
-        args.number("radius")?,
-        point2(args, "from")?,
-        point2(args, "to")?,
-        false,
-    )?;
+    let arcs = arcs::<T>(args, false)?;
+    let (z0, z1) = (arith::of::<T>(&z0), arith::of::<T>(&z1));
     let many = arcs.pieces().len() > 1;
     let mut certs = Vec::new();
     if many {
@@ -170,12 +167,7 @@ fn build_cylinder_patch(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         }
         patches.push(p.into_patch());
     }
-    let geometry = if patches.len() == 1 {
-        Geometry::Patch(patches.remove(0))
-    } else {
-        Geometry::Patches(patches)
-    };
-    Ok(vec![args.object(geometry, certs)])
+    Ok(vec![arith::object::<T>(args, arith::patches(patches)?, certs)])
 }
 
 const POINTS_DOC: &str =
@@ -191,7 +183,7 @@ op = "bezier_curve"
 points = [[1, 0], [1, 1], [0, 1]]
 weights = [1, 1, 2]
 "#,
-    build: build_bezier_curve,
+    build: build_bezier_curve::<Rational>,
 };
 
 const INLINE_CURVE_PARAMS: [ParamSpec; 3] = [
@@ -225,7 +217,7 @@ points = [[1, 0], [1, 1], [0, 1]]
 weights = [1, 1, 2]
 by = 1
 "#,
-    build: build_degree_elevate,
+    build: build_degree_elevate::<Rational>,
 };
 
 const SUBDIVIDE: OpSpec = OpSpec {
@@ -243,7 +235,7 @@ op = "subdivide"
 points = [[0, 0], [1, 2], [3, 2], [4, 0]]
 at = "1/3"
 "#,
-    build: build_subdivide,
+    build: build_subdivide::<Rational>,
 };
 
 const BEZIER_PATCH: OpSpec = OpSpec {
@@ -277,7 +269,7 @@ net = [
 ]
 weights = [[1, 1, 1], [1, 2, 1], [1, 1, 1]]
 "#,
-    build: build_bezier_patch,
+    build: build_bezier_patch::<Rational>,
 };
 
 /// The homogeneous point `(w, w·p)` of a Euclidean point `p` with weight `w ≠ 0`.
@@ -340,50 +332,62 @@ pub(super) fn homogeneous_points(
         .collect())
 }
 
-/// The certificate that a patch has no pole on `[0, 1]²`: weights of one sign, or (mixed
-/// signs) pieces of one sign after at most 5 + 5 bisections
-/// ([`rcagd_geom::weight_sign::split_patches_adaptive`]); otherwise an input error on
-/// `param`.
-fn patch_pole_certificate(patch: &BezierPatch<Rational>, param: &'static str) -> Result<Certificate, OpError> {
-    rcagd_geom::weight_sign::patch_pole_free(patch).ok_or_else(|| {
+/// The certificate that a patch has no pole on `[0, 1]²` ([`OpScalar::patch_pole_free`]:
+/// weights of one sign, or (mixed signs, exact) pieces of one sign after at most 5 + 5
+/// bisections ([`rcagd_geom::weight_sign::split_patches_adaptive`]); otherwise an input
+/// error on `param`.
+fn patch_pole_certificate<T: OpScalar>(patch: &BezierPatch<T>, param: &'static str) -> Result<Certificate, OpError> {
+    T::patch_pole_free(patch).ok_or_else(|| {
         OpError::param(
             param,
-            "weights of mixed sign whose weight function Σ wᵢⱼ Bᵢ Bⱼ could not be shown to be non-zero on [0, 1]² (5 bisections per direction): the patch passes through or near points at infinity",
+            if T::EXACT {
+                "weights of mixed sign whose weight function Σ wᵢⱼ Bᵢ Bⱼ could not be shown to be non-zero on [0, 1]² (5 bisections per direction): the patch passes through or near points at infinity"
+            } else {
+                arith::MIXED_SIGNS_IN_F64
+            },
         )
     })
 }
 
-/// The inline curve of the `points` / `weights` / `homogeneous` parameters.
-fn inline_curve(args: &OpArgs) -> Result<BezierCurve<Rational>, OpError> {
+/// The inline curve of the `points` / `weights` / `homogeneous` parameters (the products
+/// `w·x` are formed exactly, then converted to `T` once).
+fn inline_curve<T: OpScalar>(args: &OpArgs) -> Result<BezierCurve<T>, OpError> {
     let hom = homogeneous_points(
         args.points("points")?,
         args.opt_numbers("weights")?,
         args.bool("homogeneous")?,
         |i| format!("control point {i}"),
     )?;
+    let hom: Vec<Vec<T>> = hom.iter().map(|p| arith::all_of(p)).collect();
     BezierCurve::from_homogeneous(hom).map_err(|e| OpError::param("points", e.to_string()))
 }
 
 /// The inline curve and its certificate of having no pole on `[0, 1]`
 /// ([`rcagd_geom::weight_sign::curve_pole_free`]: the same rule for every op that takes
-/// a user's weights); a weight function with a zero there is an input error.
-fn inline_curve_pole_free(args: &OpArgs) -> Result<(BezierCurve<Rational>, Certificate), OpError> {
-    let curve = inline_curve(args)?;
+/// a user's weights; mixed signs are refused in `f64`); a weight function with a zero
+/// there is an input error.
+fn inline_curve_pole_free<T: OpScalar>(args: &OpArgs) -> Result<(BezierCurve<T>, Certificate), OpError> {
+    let curve = inline_curve::<T>(args)?;
     let param = if args.bool("homogeneous")? { "points" } else { "weights" };
-    let cert = rcagd_geom::weight_sign::curve_pole_free(&curve).map_err(|e| OpError::param(param, e.to_string()))?;
+    let cert = T::curve_pole_free(&curve).map_err(|e| match e {
+        Some(zeros) => OpError::param(param, zeros.to_string()),
+        None => OpError::param(param, arith::MIXED_SIGNS_IN_F64),
+    })?;
     Ok((curve, cert))
 }
 
-fn build_bezier_curve(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let (curve, cert) = inline_curve_pole_free(args)?;
-    Ok(vec![args.object(Geometry::Curve(curve), vec![cert])])
+/// `bezier_curve` in `T`.
+pub(crate) fn build_bezier_curve<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let (curve, cert) = inline_curve_pole_free::<T>(args)?;
+    Ok(vec![arith::object::<T>(args, Geometry::Curve(T::exact_curve(curve)?), vec![cert])])
 }
 
 /// The largest degree increase of `degree_elevate`.
 const MAX_ELEVATION: i64 = 32;
 
-fn build_degree_elevate(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let (curve, pole_cert) = inline_curve_pole_free(args)?;
+/// `degree_elevate` in `T`.
+pub(crate) fn build_degree_elevate<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let (curve, pole_cert) = inline_curve_pole_free::<T>(args)?;
     let by = args.int("by")?;
     let r = usize::try_from(by)
         .ok()
@@ -397,11 +401,12 @@ fn build_degree_elevate(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let elevated = curve.elevate(r);
     let mut certs = vec![curves_agree(&curve, &elevated)?];
     certs.push(pole_cert);
-    Ok(vec![args.object(Geometry::Curve(elevated), certs)])
+    Ok(vec![arith::object::<T>(args, Geometry::Curve(T::exact_curve(elevated)?), certs)])
 }
 
-fn build_subdivide(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let (curve, pole_cert) = inline_curve_pole_free(args)?;
+/// `subdivide` in `T`.
+pub(crate) fn build_subdivide<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let (curve, pole_cert) = inline_curve_pole_free::<T>(args)?;
     let at = args.number("at")?;
     if at <= Rational::zero() || at >= Rational::one() {
         return Err(OpError::param(
@@ -409,30 +414,33 @@ fn build_subdivide(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             format!("the subdivision parameter must satisfy 0 < at < 1, got {}", format_rational(&at)),
         ));
     }
+    let at = arith::of::<T>(&at);
     let (left, right) = curve.subdivide(&at)?;
     // Cross-check de Casteljau against the blossom-based affine reparametrization.
     let mut certs = vec![pole_cert];
-    let restricted_left = curve.restrict(&Rational::zero(), &at)?;
-    let restricted_right = curve.restrict(&at, &Rational::one())?;
+    let restricted_left = curve.restrict(&T::zero(), &at)?;
+    let restricted_right = curve.restrict(&at, &T::one())?;
     certs.extend(prefixed(
-        &format!("left piece = P on [0, {}]: ", format_rational(&at)),
+        &format!("left piece = P on [0, {}]: ", format_scalar(&at)),
         vec![curves_agree(&left, &restricted_left)?],
     ));
     certs.extend(prefixed(
-        &format!("right piece = P on [{}, 1]: ", format_rational(&at)),
+        &format!("right piece = P on [{}, 1]: ", format_scalar(&at)),
         vec![curves_agree(&right, &restricted_right)?],
     ));
     let joined = left.control_points().last() == right.control_points().next();
     certs.push(Certificate::decide(
         "left(1) = right(0): the pieces join (equal homogeneous end points)",
         joined,
-        true,
+        T::EXACT,
         || "the end points differ".to_string(),
     ));
-    Ok(vec![args.object(Geometry::Curves(vec![left, right]), certs)])
+    let geometry = Geometry::Curves(arith::exact_curves(vec![left, right])?);
+    Ok(vec![arith::object::<T>(args, geometry, certs)])
 }
 
-fn build_bezier_patch(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `bezier_patch` in `T`.
+pub(crate) fn build_bezier_patch<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let net = args.net("net")?;
     let weights = args.opt_grid("weights")?;
     let homogeneous = args.bool("homogeneous")?;
@@ -451,7 +459,7 @@ fn build_bezier_patch(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let mut rows = Vec::with_capacity(net.len());
     for (i, row) in net.into_iter().enumerate() {
         let w = weights.as_ref().and_then(|w| w.get(i)).cloned();
-        rows.push(homogeneous_points(row, w, homogeneous, |j| {
+        let row = homogeneous_points(row, w, homogeneous, |j| {
             format!("control point ({i}, {j})")
         })
         .map_err(|mut e| {
@@ -459,10 +467,11 @@ fn build_bezier_patch(args: &OpArgs) -> Result<Vec<Object>, OpError> {
                 e.param = Some("net");
             }
             e
-        })?);
+        })?;
+        rows.push(row.iter().map(|p| arith::all_of::<T>(p)).collect::<Vec<_>>());
     }
     let patch = BezierPatch::from_homogeneous(rows).map_err(|e| OpError::param("net", e.to_string()))?;
     let param = if homogeneous { "net" } else { "weights" };
     let cert = patch_pole_certificate(&patch, param)?;
-    Ok(vec![args.object(Geometry::Patch(patch), vec![cert])])
+    Ok(vec![arith::object::<T>(args, Geometry::Patch(T::exact_patch(patch)?), vec![cert])])
 }

@@ -42,6 +42,7 @@ topics!(
     sweep
 );
 
+pub mod arith;
 pub mod describe;
 
 /// Prefixes every certificate's property with `prefix` (certificates of a part or an

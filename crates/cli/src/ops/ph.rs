@@ -10,6 +10,7 @@
 //! arc-length-uniform parameters). Each extra object holds the curve itself as its
 //! first piece, so that its picture shows the curve with the frame, comb or marks.
 
+use super::arith::{self, OpScalar};
 use super::{poly_io, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
@@ -115,7 +116,7 @@ samples = 5
 comb = true
 feed = 8
 "#,
-    build: build_ph_curve,
+    build: build_ph_curve::<Rational>,
 };
 
 const PH_HELIX: OpSpec = OpSpec {
@@ -166,7 +167,7 @@ b1 = [0, 1]
 f = [1, 2, 2, 1]
 g = [1, 2, 3, 3]
 "#,
-    build: build_ph_helix,
+    build: build_ph_helix::<Rational>,
 };
 
 const PH_DPH_SEPTIC: OpSpec = OpSpec {
@@ -243,16 +244,14 @@ fn qi(n: i64) -> Q {
     Q::from(n)
 }
 
-fn point3(args: &OpArgs, param: &'static str) -> Result<[Q; 3], OpError> {
-    let p = args.point(param)?;
-    <[Q; 3]>::try_from(p)
-        .map_err(|_| OpError::param(param, format!("internal error: `{param}` is not a 3D point")))
+fn point3<T: OpScalar>(args: &OpArgs, param: &'static str) -> Result<[T; 3], OpError> {
+    arith::point(args, param, &format!("internal error: `{param}` is not a 3D point"))
 }
 
-fn complex(args: &OpArgs, param: &'static str) -> Result<Complex<Q>, OpError> {
+fn complex<T: OpScalar>(args: &OpArgs, param: &'static str) -> Result<Complex<T>, OpError> {
     let p = args.point(param)?;
     match <[Q; 2]>::try_from(p) {
-        Ok([re, im]) => Ok(Complex::new(re, im)),
+        Ok([re, im]) => Ok(Complex::new(arith::of(&re), arith::of(&im))),
         Err(_) => Err(OpError::param(
             param,
             format!("internal error: `{param}` is not a complex number [re, im]"),
@@ -260,12 +259,12 @@ fn complex(args: &OpArgs, param: &'static str) -> Result<Complex<Q>, OpError> {
     }
 }
 
-fn complexes(args: &OpArgs, param: &'static str) -> Result<Vec<Complex<Q>>, OpError> {
+fn complexes<T: OpScalar>(args: &OpArgs, param: &'static str) -> Result<Vec<Complex<T>>, OpError> {
     args.points(param)?
         .into_iter()
         .enumerate()
         .map(|(k, p)| match <[Q; 2]>::try_from(p) {
-            Ok([re, im]) => Ok(Complex::new(re, im)),
+            Ok([re, im]) => Ok(Complex::new(arith::of(&re), arith::of(&im))),
             Err(p) => Err(OpError::param(
                 param,
                 format!(
@@ -278,12 +277,12 @@ fn complexes(args: &OpArgs, param: &'static str) -> Result<Vec<Complex<Q>>, OpEr
 }
 
 /// The quaternion coefficients `A_k = [u, v, p, q]` of the parameter `quaternions`.
-pub(super) fn quaternions(args: &OpArgs) -> Result<Vec<Quaternion<Q>>, OpError> {
+pub(super) fn quaternions<T: OpScalar>(args: &OpArgs) -> Result<Vec<Quaternion<T>>, OpError> {
     args.points("quaternions")?
         .into_iter()
         .enumerate()
         .map(|(k, p)| match <[Q; 4]>::try_from(p) {
-            Ok([u, v, p, q]) => Ok(Quaternion::new(u, v, p, q)),
+            Ok([u, v, p, q]) => Ok(Quaternion::new(arith::of(&u), arith::of(&v), arith::of(&p), arith::of(&q))),
             Err(p) => Err(OpError::param(
                 "quaternions",
                 format!(
@@ -295,8 +294,8 @@ pub(super) fn quaternions(args: &OpArgs) -> Result<Vec<Quaternion<Q>>, OpError> 
         .collect()
 }
 
-fn numbers(args: &OpArgs, param: &'static str) -> Result<Vec<Q>, OpError> {
-    args.opt_numbers(param)?.ok_or_else(|| {
+fn numbers<T: OpScalar>(args: &OpArgs, param: &'static str) -> Result<Vec<T>, OpError> {
+    args.opt_numbers(param)?.map(|v| arith::all_of(&v)).ok_or_else(|| {
         OpError::param(
             param,
             format!("internal error: `{param}` has no value"),
@@ -347,21 +346,34 @@ pub(crate) fn add_curve_certificates<F: rcagd_algebra::Scalar>(
     }
 }
 
-fn curve_objects(
+/// The curve object (in `T`) and, for an exact curve, the display objects.
+fn curve_objects<T: OpScalar>(
     args: &OpArgs,
-    curve: &PhCurve<Q>,
+    curve: &PhCurve<T>,
     mut certs: Vec<Certificate>,
 ) -> Result<Vec<Object>, OpError> {
+    if !T::EXACT && (args.string("frame")? != "none" || args.bool("comb")? || args.int("feed")? != 0) {
+        return Err(OpError::new(
+            "the display objects (frame, comb, feed) have no float path: build them without --float",
+        ));
+    }
     let pc = curve.to_poly_curve();
     add_curve_certificates(&mut certs, curve);
-    let bez = curve.to_bezier()?;
+    let bez = T::exact_curve(curve.to_bezier()?)?;
     // the arc length the certificates speak of, as a value (exact: σ is a polynomial)
     let values = vec![NamedQuantity::new(
         "arc_length",
-        "∫₀¹ σ dt (σ = |A|², exact)",
-        Quantity::Rational(pc.arc_length()),
+        if T::EXACT { "∫₀¹ σ dt (σ = |A|², exact)" } else { "∫₀¹ σ dt (f64)" },
+        T::quantity(pc.arc_length()),
     )];
-    let mut out = vec![args.object(Geometry::Curve(bez.clone()), certs).with_values(values)];
+    let mut out = vec![arith::object_with::<T>(args, Geometry::Curve(bez.clone()), certs, values)];
+    // the display objects are exact only (refused in f64 above)
+    let (Some(curve), Ok(pc)) = (
+        arith::same_ref::<_, PhCurve<Q>>(curve),
+        arith::same::<_, PhPolyCurve<Q>>(pc),
+    ) else {
+        return Ok(out);
+    };
     let samples = args.int("samples")?;
     if !(2..=200).contains(&samples) {
         return Err(OpError::param(
@@ -564,8 +576,10 @@ fn shape_certificates(curve: &PhCurve<Q>) -> Result<Vec<Certificate>, OpError> {
 
 // ------------------------------------------------------------------ builds
 
-fn build_ph_curve(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let start = point3(args, "start")?;
+/// `ph_curve` in `T` (one builder for the exact op and the float path; the display
+/// objects are exact only).
+pub(crate) fn build_ph_curve<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let start = point3::<T>(args, "start")?;
     let quats = args.get("quaternions").is_some();
     let hopf = args.get("alpha").is_some() || args.get("beta").is_some();
     let curve = match (quats, hopf) {
@@ -593,16 +607,17 @@ fn build_ph_curve(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     curve_objects(args, &curve, Vec::new())
 }
 
-fn build_ph_helix(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `ph_helix` in `T` (one builder for the exact op and the float path).
+pub(crate) fn build_ph_helix<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let seed = LineCircle::new(
-        complex(args, "a0")?,
+        complex::<T>(args, "a0")?,
         complex(args, "a1")?,
         complex(args, "b0")?,
         complex(args, "b1")?,
     )?;
-    let f = numbers(args, "f")?;
-    let g = numbers(args, "g")?;
-    let w = complexes(args, "w")?;
+    let f = numbers::<T>(args, "f")?;
+    let g = numbers::<T>(args, "g")?;
+    let w = complexes::<T>(args, "w")?;
     let curve = seed.helix(&f, &g, &w, point3(args, "start")?)?;
     let mut certs = seed.certify_helix_construction(&curve, &f, &g, &w)?;
     let pc = curve.to_poly_curve();

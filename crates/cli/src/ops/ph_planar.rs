@@ -7,6 +7,7 @@
 //! exact PH curve of the preimage rounded to rationals: its PH certificates are exact,
 //! and the interpolation conditions are checked to a tolerance (reported, `f64`).
 
+use super::arith::{self, OpScalar};
 use super::{prefixed, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
@@ -46,7 +47,7 @@ op = "ph_planar_curve"
 preimage = [[1, 0], [1, 1]]
 start = [0, 0]
 "#,
-    build: build_curve,
+    build: build_curve::<Rational>,
 };
 
 const PH_PLANAR_OFFSET: OpSpec = OpSpec {
@@ -67,7 +68,7 @@ op = "ph_planar_offset"
 preimage = [[1, 0], [1, 1]]
 distance = "-1/4"
 "#,
-    build: build_offset,
+    build: build_offset::<Rational>,
 };
 
 const PH_PLANAR_HERMITE: OpSpec = OpSpec {
@@ -117,7 +118,7 @@ op = "ph_planar_spline"
 points = [[0, 0], [1, 1], [2, 0], [3, 1], [4, 0]]
 ends = "natural"
 "#,
-    build: build_spline,
+    build: build_spline::<Rational>,
 };
 
 const PH_SPATIAL_HERMITE: OpSpec = OpSpec {
@@ -162,34 +163,41 @@ fn arg3(args: &OpArgs, param: &'static str) -> Result<[Rational; 3], OpError> {
         .map_err(|_| OpError::param(param, format!("`{param}` needs a point [x, y, z]")))
 }
 
-fn planar_curve(args: &OpArgs) -> Result<PlanarPhCurve<Rational>, OpError> {
+fn planar_curve<T: OpScalar>(args: &OpArgs) -> Result<PlanarPhCurve<T>, OpError> {
     let w = args
         .points("preimage")?
         .iter()
-        .map(|p| point2(p, "preimage").map(|[a, b]| Complex::new(a, b)))
+        .map(|p| point2(p, "preimage").map(|[a, b]| Complex::new(arith::of(&a), arith::of(&b))))
         .collect::<Result<Vec<_>, _>>()?;
-    Ok(PlanarPhCurve::new(w, arg2(args, "start")?)?)
+    Ok(PlanarPhCurve::new(w, arg2(args, "start")?.each_ref().map(arith::of))?)
 }
 
-fn build_curve(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let c = planar_curve(args)?;
+/// `ph_planar_curve` in `T` (one builder for the exact op and the float path).
+pub(crate) fn build_curve<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c = planar_curve::<T>(args)?;
     let certs = c.certify();
     let values = vec![NamedQuantity::new(
         "arc_length",
-        "∫₀¹ |w|² dt (exact)",
-        Quantity::Rational(c.arc_length()),
+        if T::EXACT { "∫₀¹ |w|² dt (exact)" } else { "∫₀¹ |w|² dt (f64)" },
+        T::quantity(c.arc_length()),
     )];
-    Ok(vec![args
-        .object(Geometry::Curve(c.to_bezier()?), certs)
-        .with_values(values)])
+    Ok(vec![arith::object_with::<T>(args, Geometry::Curve(T::exact_curve(c.to_bezier()?)?), certs, values)])
 }
 
-fn build_offset(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let c = planar_curve(args)?;
-    let off = c.offset(&args.number("distance")?)?;
+/// `ph_planar_offset` in `T`.
+pub(crate) fn build_offset<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c = planar_curve::<T>(args)?;
+    let off = c.offset(&arith::number(args, "distance")?)?;
     // the offset's weight is σ = |w|² ≥ 0: a zero of w on [0, 1] (a cusp of the curve,
-    // σ = 0) is a pole of the offset; the one rule for weights decides it exactly
-    let pole_free = rcagd_geom::weight_sign::curve_pole_free(&off.curve).map_err(|e| {
+    // σ = 0) is a pole of the offset; the one rule for weights decides it exactly (in
+    // f64 only weights of one sign are accepted)
+    let pole_free = T::curve_pole_free(&off.curve).map_err(|e| {
+        let Some(e) = e else {
+            return OpError::param(
+                "preimage",
+                "the offset's weights σ = |w|² are not all of one sign (a cusp of the curve on or near [0, 1]): the float path does not decide whether σ has a zero; build without --float",
+            );
+        };
         let at: Vec<String> = e
             .zeros
             .iter()
@@ -212,7 +220,7 @@ fn build_offset(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let mut certs = prefixed("base: ", c.certify());
     certs.extend(off.certify());
     certs.push(pole_free);
-    Ok(vec![args.object(Geometry::Curve(off.curve), certs)])
+    Ok(vec![arith::object::<T>(args, Geometry::Curve(T::exact_curve(off.curve)?), certs)])
 }
 
 fn rat(x: f64) -> Result<Rational, OpError> {
@@ -321,11 +329,13 @@ fn tag<F>(k: usize, c: &PlanarHermiteInterpolant<F>) -> String {
     )
 }
 
-fn build_spline(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `ph_planar_spline` in `T` (one builder for the exact op and the float path).
+pub(crate) fn build_spline<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let in_t = |p: [Rational; 2]| p.each_ref().map(arith::of::<T>);
     let pts = args
         .points("points")?
         .iter()
-        .map(|p| point2(p, "points"))
+        .map(|p| point2(p, "points").map(in_t))
         .collect::<Result<Vec<_>, _>>()?;
     let ends = match args.string("ends")? {
         "closed" => SplineEnds::Closed,
@@ -336,7 +346,7 @@ fn build_spline(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             let d1 = args
                 .opt_point("d1")?
                 .ok_or_else(|| OpError::param("d1", "ends = \"derivatives\" needs d1"))?;
-            SplineEnds::Derivatives(point2(&d0, "d0")?, point2(&d1, "d1")?)
+            SplineEnds::Derivatives(in_t(point2(&d0, "d0")?), in_t(point2(&d1, "d1")?))
         }
         _ => SplineEnds::Natural,
     };
@@ -347,7 +357,7 @@ fn build_spline(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         .iter()
         .map(|c| c.to_bezier())
         .collect::<Result<Vec<_>, _>>()?;
-    Ok(vec![args.object(Geometry::Curves(curves), certs)])
+    Ok(vec![arith::object::<T>(args, Geometry::Curves(arith::exact_curves(curves)?), certs)])
 }
 
 fn spatial_float(

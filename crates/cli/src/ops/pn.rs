@@ -12,6 +12,7 @@
 //! that names the parameter point.
 
 use super::poly_io::{self, MPolyQ};
+use super::arith::{self, OpScalar};
 use super::{prefixed, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::{ParamKind, Value};
@@ -107,13 +108,13 @@ fn poly_from_list(list: &[Q]) -> Result<MPolyQ, OpError> {
 }
 
 /// The rational function `numerator/denominator` of two grid parameters.
-fn ratfn(args: &OpArgs, num: &'static str, den: &'static str) -> Result<RatFn<Q>, OpError> {
+fn ratfn<T: OpScalar>(args: &OpArgs, num: &'static str, den: &'static str) -> Result<RatFn<T>, OpError> {
     let n = poly_from_grid(&args.opt_grid(num)?.unwrap_or_default())?;
     let d = match args.opt_grid(den)? {
         Some(g) => poly_from_grid(&g)?,
         None => poly_io::mpoly_constant(2, Q::from(1)),
     };
-    RatFn::new(n, d).map_err(|e| OpError::param(den, e.to_string()))
+    RatFn::new(poly_io::mpoly_in(&n), poly_io::mpoly_in(&d)).map_err(|e| OpError::param(den, e.to_string()))
 }
 
 /// `N` polynomials in `t` from a grid of `N` rows of power coefficients (`rows` names them
@@ -144,7 +145,7 @@ fn three_polys(args: &OpArgs, param: &'static str) -> Result<[RatFn<Q>; 3], OpEr
     n_polys(args, param, "x, y, z")
 }
 
-fn domain(args: &OpArgs) -> Result<Domain<Q>, OpError> {
+fn domain<T: OpScalar>(args: &OpArgs) -> Result<Domain<T>, OpError> {
     let d = args.opt_numbers("domain")?.unwrap_or_default();
     if d.len() != 4 {
         return Err(OpError::param(
@@ -152,7 +153,7 @@ fn domain(args: &OpArgs) -> Result<Domain<Q>, OpError> {
             format!("give four numbers [u0, u1, v0, v1], got {}", d.len()),
         ));
     }
-    Domain::new(d[0].clone(), d[1].clone(), d[2].clone(), d[3].clone())
+    Domain::new(arith::of(&d[0]), arith::of(&d[1]), arith::of(&d[2]), arith::of(&d[3]))
         .map_err(|e| OpError::param("domain", e.to_string()))
 }
 
@@ -167,16 +168,17 @@ fn blame(param: &'static str) -> impl Fn(PnError) -> OpError {
 
 /// The object of `surface` on `dom` (certified and checked regular, errors blamed on
 /// `param`) followed by one object per offset distance (errors blamed on `distances`).
-fn surface_objects(
+fn surface_objects<T: OpScalar>(
     args: &OpArgs,
-    surface: &PnSurface<Q>,
-    dom: &Domain<Q>,
+    surface: &PnSurface<T>,
+    dom: &Domain<T>,
     certs: Vec<Certificate>,
     param: &'static str,
 ) -> Result<Vec<Object>, OpError> {
-    surface_objects_in(args, surface, dom, certs, param, &|p| {
-        Ok(Geometry::Patch(p.clone()))
-    })
+    let objs = surface_objects_in(args, surface, dom, certs, param, &|p| {
+        Ok(Geometry::Patch(T::exact_patch(p.clone())?))
+    })?;
+    Ok(objs.into_iter().map(T::finish).collect())
 }
 
 /// [`surface_objects`] in any scalar (the float path, `crate::float`, builds the same
@@ -233,7 +235,7 @@ fn negative_orientation(args: &OpArgs) -> bool {
 }
 
 /// `surface` with the orientation the `orientation` parameter asks for.
-fn oriented(args: &OpArgs, surface: &PnSurface<Q>) -> PnSurface<Q> {
+fn oriented<T: Scalar>(args: &OpArgs, surface: &PnSurface<T>) -> PnSurface<T> {
     if negative_orientation(args) {
         surface.opposite()
     } else {
@@ -282,11 +284,12 @@ coefficients = [[1, 0, "1/2"], [0, -1, 0], [0, 0, 0], ["1/3", 0, 0]]
 domain = [0, "1/2", 0, "1/2"]
 distances = ["1/4", "-1/4"]
 "#,
-    build: build_graph,
+    build: build_graph::<Rational>,
 };
 
-fn build_graph(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let f = ratfn(args, "coefficients", "denominator")?;
+/// `pn_graph` in `T` (one builder for the exact op and the float path).
+pub(crate) fn build_graph<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let f = ratfn::<T>(args, "coefficients", "denominator")?;
     let surface = IsotropicSurface::graph(&f)
         .to_pn_surface()
         .map_err(blame("coefficients"))?;
@@ -326,18 +329,19 @@ support = [[2, 0], [0, 0], [0, 1]]
 domain = [0, "1/2", 0, "1/2"]
 distances = ["1/2"]
 "#,
-    build: build_support,
+    build: build_support::<Rational>,
 };
 
-fn opt_poly(args: &OpArgs, param: &'static str, default: MPolyQ) -> Result<MPolyQ, OpError> {
+fn opt_poly<T: OpScalar>(args: &OpArgs, param: &'static str, default: MPolyQ) -> Result<poly_io::MPolyIn<T>, OpError> {
     match args.opt_grid(param)? {
-        Some(g) => poly_from_grid(&g),
-        None => Ok(default),
+        Some(g) => Ok(poly_io::mpoly_in(&poly_from_grid(&g)?)),
+        None => Ok(poly_io::mpoly_in(&default)),
     }
 }
 
-fn build_support(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let h = ratfn(args, "support", "support_denominator")?;
+/// `pn_support` in `T`.
+pub(crate) fn build_support<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let h = ratfn::<T>(args, "support", "support_denominator")?;
     let a = opt_poly(args, "a", poly_io::mpoly_var(2, 0))?;
     let b = opt_poly(args, "b", poly_io::mpoly_var(2, 1))?;
     let c = opt_poly(args, "c", poly_io::mpoly_constant(2, Q::from(1)))?;
@@ -1154,15 +1158,14 @@ v = [1, 0]
 start = [2, 0]
 distances = ["1/2"]
 "#,
-    build: build_revolution,
+    build: build_revolution::<Rational>,
 };
 
-fn build_revolution(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let u = args.opt_numbers("u")?.unwrap_or_default();
-    let v = args.opt_numbers("v")?.unwrap_or_default();
-    let start = args.point("start")?;
-    let start: [Q; 2] = <[Q; 2]>::try_from(start)
-        .map_err(|_| OpError::param("start", "the start point needs two coordinates"))?;
+/// `pn_revolution` in `T`.
+pub(crate) fn build_revolution<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let u = arith::all_of::<T>(&args.opt_numbers("u")?.unwrap_or_default());
+    let v = arith::all_of::<T>(&args.opt_numbers("v")?.unwrap_or_default());
+    let start: [T; 2] = arith::point(args, "start", "the start point needs two coordinates")?;
     let profile = PnCurve::from_ph_preimage(&u, &v, start).map_err(blame("v"))?;
     let surface = surface_of_revolution(&profile).map_err(blame("u"))?;
     let certs = prefixed("profile: ", profile.certify());

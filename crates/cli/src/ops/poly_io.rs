@@ -24,6 +24,15 @@ pub type PolyT = Poly<Q>;
 /// A multivariate polynomial over `Q`.
 pub type MPolyQ = MPoly<Q>;
 
+/// A polynomial in the scalar `T` of a generic op builder ([`super::arith::OpScalar`]).
+pub type MPolyIn<T> = MPoly<T>;
+
+/// An exact polynomial of the recipe in `T` (the identity's values for `Rational`, the
+/// nearest `f64`s for the float path).
+pub fn mpoly_in<T: rcagd_algebra::Scalar>(p: &MPolyQ) -> MPolyIn<T> {
+    p.map(T::from_rational)
+}
+
 /// A `4×4` matrix of polynomials in `t` over `Q`.
 pub type PolyMatrix4 = [[Poly<Q>; 4]; 4];
 

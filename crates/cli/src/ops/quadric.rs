@@ -9,6 +9,7 @@
 //! rational normal form `B∘N_{a,e}`), `coefficients` (the named quadric's numbers),
 //! `matrix` (a symmetric 4×4 matrix, with `quadric = "matrix"`) and `rational_point`.
 
+use super::arith::{self, OpScalar};
 use super::{prefixed, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
@@ -135,7 +136,7 @@ name = "delta_of_a_cubic"
 op = "quadric_curve_image"
 points = [[0, 0, 0], [1, 2, 0], [2, -1, 1], [3, 1, 2]]
 "#,
-    build: build_curve_image,
+    build: build_curve_image::<Rational>,
 };
 
 const QUADRIC_PATCH_IMAGE: OpSpec = OpSpec {
@@ -170,7 +171,7 @@ net = [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, "1/2"]]]
 quadric = "ellipsoid"
 coefficients = [3, 2, 1]
 "#,
-    build: build_patch_image,
+    build: build_patch_image::<Rational>,
 };
 
 const QUADRIC_MIQUEL_PATCH: OpSpec = OpSpec {
@@ -223,15 +224,18 @@ const SPHERE_COVER: OpSpec = OpSpec {
 name = "unit_sphere_cover"
 op = "sphere_cover"
 "#,
-    build: build_sphere_cover,
+    build: build_sphere_cover::<Rational>,
 };
 
 /// A projection chosen from the quadric parameters, with the certificates of the
 /// projection itself (empty for Jüttler's δ and ψ, which the image certificates cover).
-pub(super) struct Target {
-    pub(super) proj: Box<dyn GeneralizedProjection<Rational>>,
+pub(super) struct TargetIn<T> {
+    pub(super) proj: Box<dyn GeneralizedProjection<T>>,
     pub(super) certs: Vec<Certificate>,
 }
+
+/// The exact [`TargetIn`].
+pub(super) type Target = TargetIn<Rational>;
 
 /// Which parameter to blame for an error of the quadric itself.
 fn quadric_param(args: &OpArgs) -> &'static str {
@@ -260,6 +264,25 @@ pub(super) fn hom(p: &[Rational], param: &'static str, what: &str) -> Result<Hom
 }
 
 pub(super) fn target(args: &OpArgs) -> Result<Target, OpError> {
+    target_in(args)
+}
+
+/// The quadric with its matrix and rational point in `T`. The quadric and its rational
+/// point are found exactly (a rational point of a quadratic form over ℚ is exact-only
+/// algebra); for `f64` the projection is then set up from the rounded matrix and point.
+fn in_scalar<T: OpScalar>(q: Quadric<Rational>, blame: &'static str) -> Result<Quadric<T>, OpError> {
+    arith::same::<_, Quadric<T>>(q).or_else(|q| {
+        let c = q.rational_point().map_err(|e| OpError::param(blame, e.to_string()))?;
+        let rows: Vec<Vec<T>> = q.matrix().iter().map(|r| arith::all_of(r)).collect();
+        Quadric::from_rows(&rows)
+            .and_then(|x| x.with_point(c.map(|x| arith::of(&x))))
+            .map(|x| x.named(q.name()))
+            .map_err(|e| OpError::param(blame, e.to_string()))
+    })
+}
+
+/// [`target`] in `T` (see [`in_scalar`]).
+pub(super) fn target_in<T: OpScalar>(args: &OpArgs) -> Result<TargetIn<T>, OpError> {
     let name = args.string("quadric")?;
     let coefficients = args.opt_numbers("coefficients")?.unwrap_or_default();
     let matrix = args.opt_grid("matrix")?;
@@ -283,13 +306,13 @@ pub(super) fn target(args: &OpArgs) -> Result<Target, OpError> {
     if point.is_none() {
         match name {
             "unit_sphere" if coefficients.is_empty() => {
-                return Ok(Target {
+                return Ok(TargetIn {
                     proj: Box::new(Delta),
                     certs: Vec::new(),
                 })
             }
             "hyperbolic_paraboloid_xy" | "seed_paraboloid" if coefficients.is_empty() => {
-                return Ok(Target {
+                return Ok(TargetIn {
                     proj: Box::new(Psi),
                     certs: Vec::new(),
                 })
@@ -313,6 +336,7 @@ pub(super) fn target(args: &OpArgs) -> Result<Target, OpError> {
             .map_err(|e| OpError::param("rational_point", e.to_string()))?,
         None => quadric,
     };
+    let quadric = in_scalar::<T>(quadric, blame)?;
     let proj = quadric.projection().map_err(|e| {
         let param = match e {
             QuadricError::Exceptional { .. } if args.get("rational_point").is_some() => {
@@ -323,7 +347,7 @@ pub(super) fn target(args: &OpArgs) -> Result<Target, OpError> {
         OpError::param(param, e.to_string())
     })?;
     let certs = prefixed("projection: ", proj.certify());
-    Ok(Target {
+    Ok(TargetIn {
         proj: Box::new(proj),
         certs,
     })
@@ -515,8 +539,14 @@ pub(super) fn control_points(
     super::kernel::homogeneous_points(points, weights, homogeneous, label)
 }
 
-fn build_curve_image(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let t = target(args)?;
+/// Exact homogeneous control points in `T`.
+fn in_t<T: OpScalar>(hom: Vec<Vec<Rational>>) -> Vec<Vec<T>> {
+    hom.iter().map(|p| arith::all_of(p)).collect()
+}
+
+/// `quadric_curve_image` in `T` (one builder for the exact op and the float path).
+pub(crate) fn build_curve_image<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let t = target_in::<T>(args)?;
     let hom = control_points(
         args.points("points")?,
         args.opt_numbers("weights")?,
@@ -524,17 +554,18 @@ fn build_curve_image(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         "points",
         |i| format!("control point {i}"),
     )?;
-    let curve = BezierCurve::from_homogeneous(hom).map_err(|e| OpError::param("points", e.to_string()))?;
+    let curve = BezierCurve::from_homogeneous(in_t::<T>(hom)).map_err(|e| OpError::param("points", e.to_string()))?;
     let img = curve_image(t.proj.as_ref(), &curve).map_err(|e| located(e, "points"))?;
     let mut certs = t.certs;
     certs.extend(img.certify());
     let (geometry, extra) = exportable_curve(img.into_image(), &t.proj.quadric())?;
     certs.extend(extra);
-    Ok(vec![args.object(geometry, certs)])
+    Ok(vec![arith::object::<T>(args, geometry, certs)])
 }
 
-fn build_patch_image(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let t = target(args)?;
+/// `quadric_patch_image` in `T`.
+pub(crate) fn build_patch_image<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let t = target_in::<T>(args)?;
     let net = args.net("net")?;
     let weights = args.opt_grid("weights")?;
     let homogeneous = args.bool("homogeneous")?;
@@ -550,7 +581,7 @@ fn build_patch_image(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let mut rows = Vec::with_capacity(net.len());
     for (i, row) in net.into_iter().enumerate() {
         let w = weights.as_ref().and_then(|w| w.get(i)).cloned();
-        rows.push(control_points(row, w, homogeneous, "net", |j| format!("control point ({i}, {j})"))?);
+        rows.push(in_t::<T>(control_points(row, w, homogeneous, "net", |j| format!("control point ({i}, {j})"))?));
     }
     let patch = BezierPatch::from_homogeneous(rows).map_err(|e| OpError::param("net", e.to_string()))?;
     let img = patch_image(t.proj.as_ref(), &patch).map_err(|e| located(e, "net"))?;
@@ -558,7 +589,7 @@ fn build_patch_image(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     certs.extend(img.certify());
     let (geometry, extra) = exportable_patch(img.into_image(), &t.proj.quadric())?;
     certs.extend(extra);
-    Ok(vec![args.object(geometry, certs)])
+    Ok(vec![arith::object::<T>(args, geometry, certs)])
 }
 
 /// Exactly four homogeneous points from a `Points` parameter.
@@ -619,7 +650,8 @@ fn build_miquel_patch(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     Ok(vec![args.object(geometry, certs)])
 }
 
-fn build_sphere_cover(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `sphere_cover` in `T`.
+pub(crate) fn build_sphere_cover<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let c = args.point("center")?;
     let r = args.point("radii")?;
     let (Ok(c), Ok(r)) = (<[Rational; 3]>::try_from(c), <[Rational; 3]>::try_from(r)) else {
@@ -631,9 +663,11 @@ fn build_sphere_cover(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             format!("the semi-axis {} is {}: it must be non-zero", ["a", "b", "c"][i], format_rational(&r[i])),
         ));
     }
-    let cover = sphere_cover(c, r).map_err(|e| OpError::param("radii", e.to_string()))?;
+    let cover = sphere_cover(c.each_ref().map(arith::of::<T>), r.each_ref().map(arith::of::<T>))
+        .map_err(|e| OpError::param("radii", e.to_string()))?;
     let certs = cover.certify();
-    Ok(vec![args.object(Geometry::Patches(cover.into_patches()), certs)])
+    let patches = arith::exact_patches(cover.into_patches())?;
+    Ok(vec![arith::object::<T>(args, Geometry::Patches(patches), certs)])
 }
 
 /// `true` if the weights (every `stride`-th coordinate) are all > 0 or all < 0 (an
@@ -644,33 +678,35 @@ fn one_sign(coords: &[Rational], stride: usize) -> bool {
 
 /// The curve, or its pieces with weights of one sign and their certificates
 /// ([`rcagd::quadric::exportable::exportable_curve`]).
-pub(super) fn exportable_curve(
-    curve: BezierCurve<Rational>,
-    q: &rcagd::quadric::Mat4<Rational>,
+pub(super) fn exportable_curve<T: OpScalar>(
+    curve: BezierCurve<T>,
+    q: &rcagd::quadric::Mat4<T>,
 ) -> Result<(Geometry, Vec<Certificate>), OpError> {
-    let mut e = rcagd::quadric::exportable::exportable_curve(curve, q)?;
-    let geometry = match e.pieces.len() {
-        1 => match e.pieces.pop() {
+    let e = rcagd::quadric::exportable::exportable_curve(curve, q)?;
+    let mut pieces = arith::exact_curves(e.pieces)?;
+    let geometry = match pieces.len() {
+        1 => match pieces.pop() {
             Some(c) => Geometry::Curve(c),
             None => Geometry::Curves(Vec::new()),
         },
-        _ => Geometry::Curves(e.pieces),
+        _ => Geometry::Curves(pieces),
     };
     Ok((geometry, e.certificates))
 }
 
 /// As [`exportable_curve`] for a patch ([`rcagd::quadric::exportable::exportable_patch`]).
-pub(super) fn exportable_patch(
-    patch: BezierPatch<Rational>,
-    q: &rcagd::quadric::Mat4<Rational>,
+pub(super) fn exportable_patch<T: OpScalar>(
+    patch: BezierPatch<T>,
+    q: &rcagd::quadric::Mat4<T>,
 ) -> Result<(Geometry, Vec<Certificate>), OpError> {
-    let mut e = rcagd::quadric::exportable::exportable_patch(patch, q)?;
-    let geometry = match e.pieces.len() {
-        1 => match e.pieces.pop() {
+    let e = rcagd::quadric::exportable::exportable_patch(patch, q)?;
+    let mut pieces = arith::exact_patches(e.pieces)?;
+    let geometry = match pieces.len() {
+        1 => match pieces.pop() {
             Some(p) => Geometry::Patch(p),
             None => Geometry::Patches(Vec::new()),
         },
-        _ => Geometry::Patches(e.pieces),
+        _ => Geometry::Patches(pieces),
     };
     Ok((geometry, e.certificates))
 }

@@ -30,6 +30,8 @@ const KNOWN_TOLERANCE_DEFECTS: &[(&[&str], &str)] = &[(
         "torus",
         "dupin_canal",
         "dupin_cyclide",
+        "dupin_cyclide_spheres",
+        "cyclide_blend",
         "dupin_cyclide_parabolic",
     ],
     "det(λC + μΩ)",
@@ -246,12 +248,13 @@ fn agree_or_split(what: &str, exact: &[Object], float: &[Object]) -> Result<(), 
     }
 }
 
-/// The display parameters of `ph_curve` (frames, combs, feeds: extra objects that have
-/// no float path and are refused by it) are dropped, so the curve itself is compared.
+/// The display parameters of `ph_curve` and `ph_helix` (frames, combs, feeds: extra
+/// objects that have no float path and are refused by it) are dropped, so the curve
+/// itself is compared.
 fn without_display_objects(r: &Recipe) -> Recipe {
     let mut r = r.clone();
     for o in &mut r.objects {
-        if o.op == "ph_curve" {
+        if o.op == "ph_curve" || o.op == "ph_helix" {
             o.params.retain(|e| {
                 !["frame", "comb", "feed", "samples", "frame_length"].contains(&e.key.as_str())
             });
@@ -560,6 +563,62 @@ proptest! {
             if let Ok(f) = build(&src, Arithmetic::Float) {
                 agree("ph_planar_offset", &e, &f).map_err(TestCaseError::fail)?;
             }
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Polynomial helices from random line/circle seeds with random reparametrizations
+    /// f/g (positive g) and multipliers w (session 13: the f64 construction certificate
+    /// αβ' − α'β ≡ (f'g − fg')(a0b1 − a1b0)w² is scaled by its terms' magnitudes).
+    #[test]
+    fn ph_helices_agree(
+        seed in pts(2, 4..=4), f in proptest::collection::vec(q(), 2..=3),
+        g in proptest::collection::vec(pos(), 3), w in pts(2, 1..=2), start in pt(3),
+    ) {
+        let g = &g[..f.len()];
+        let body = format!(
+            "a0 = {}\na1 = {}\nb0 = {}\nb1 = {}\nf = [{}]\ng = [{}]\nw = [{}]\nstart = {start}\n",
+            seed[0], seed[1], seed[2], seed[3], f.join(", "), g.join(", "), w.join(", ")
+        );
+        let src = obj("ph_helix", &body);
+        // degenerate seeds (a0b1 = a1b0), constant f/g, straight lines: input errors
+        if let Ok(e) = build(&src, Arithmetic::Exact) {
+            let f = build(&src, Arithmetic::Float).map_err(TestCaseError::fail)?;
+            agree("ph_helix", &e, &f).map_err(TestCaseError::fail)?;
+        }
+    }
+
+    /// C2 PH quintic splines through random points (natural and closed ends).
+    #[test]
+    fn ph_planar_splines_agree(p in pts(2, 3..=5), closed in any::<bool>()) {
+        let ends = if closed { "closed" } else { "natural" };
+        let src = obj("ph_planar_spline", &format!("points = [{}]\nends = \"{ends}\"\n", p.join(", ")));
+        // coincident consecutive points, Newton–Raphson without convergence: input errors
+        if let Ok(e) = build(&src, Arithmetic::Exact) {
+            let f = build(&src, Arithmetic::Float).map_err(TestCaseError::fail)?;
+            agree("ph_planar_spline", &e, &f).map_err(TestCaseError::fail)?;
+        }
+    }
+
+    /// Cyclides through three random oriented spheres, and cyclide blends of random cones
+    /// (the second contact sphere fitted to a random sphere of cone 2).
+    #[test]
+    fn cyclides_of_spheres_and_blends_agree(
+        c in pts(3, 3..=3), r in proptest::collection::vec(q(), 3),
+        p1 in pt(4), d1 in pt(4), d2 in pt(4), q2 in pt(4),
+    ) {
+        let src = obj("dupin_cyclide_spheres", &format!("centers = [{}]\nradii = [{}]\n", c.join(", "), r.join(", ")));
+        if let Ok(e) = build(&src, Arithmetic::Exact) {
+            let f = build(&src, Arithmetic::Float).map_err(TestCaseError::fail)?;
+            agree_or_split("dupin_cyclide_spheres", &e, &f).map_err(TestCaseError::fail)?;
+        }
+        let src = obj("cyclide_blend", &format!("sphere1 = {p1}\ndirection1 = {d1}\ndirection2 = {d2}\npoint2 = {q2}\n"));
+        if let Ok(e) = build(&src, Arithmetic::Exact) {
+            let f = build(&src, Arithmetic::Float).map_err(TestCaseError::fail)?;
+            agree_or_split("cyclide_blend", &e, &f).map_err(TestCaseError::fail)?;
         }
     }
 }

@@ -462,9 +462,15 @@ def _step_to_ocp_shape(data):
 # --------------------------------------------------------------------------------------
 
 
-def build(recipe):
+def build(recipe, float=False):
     """Builds a recipe with the same machinery as ``rcagd build`` and returns its
     objects (:class:`Object`), in the recipe's order.
+
+    ``float=True`` builds as ``rcagd build --float``: the ops' ``f64`` instantiation
+    (control points are the exact binary values of ``f64`` results, certificates are
+    tolerance checks with ``exact = False``, every object has the value
+    ``arithmetic = "f64"``); an op without a float path raises ``ValueError`` (``rcagd
+    ops NAME`` says which ops have one).
 
     ``recipe``: a TOML or JSON text, a path (``str`` or ``os.PathLike``) of a ``.toml``
     or ``.json`` file, or a dict ``{"object": [{"name": …, "op": …, …}, …]}`` (a single
@@ -477,20 +483,20 @@ def build(recipe):
         recipe = {"object": list(recipe)}
     if isinstance(recipe, dict):
         text = _json.dumps(_param(recipe))
-        raws = _rcagd.build(text, "<recipe>.json")
+        raws = _rcagd.build(text, "<recipe>.json", float)
     elif isinstance(recipe, _os.PathLike) or (
         isinstance(recipe, str) and "\n" not in recipe and _os.path.isfile(recipe)
     ):
         path = _os.fspath(recipe)
         with open(path, "rb") as f:
             text = f.read().decode("utf-8", errors="strict")
-        raws = _rcagd.build(text, path)
+        raws = _rcagd.build(text, path, float)
     elif isinstance(recipe, str):
         if "\n" not in recipe and recipe.strip().lower().endswith((".toml", ".json")):
             raise ValueError(
                 f"no recipe file {recipe!r} (a recipe text has at least one line break)"
             )
-        raws = _rcagd.build(recipe, "<recipe>")
+        raws = _rcagd.build(recipe, "<recipe>", float)
     else:
         raise ValueError(
             f"a recipe is a TOML/JSON string, a path or a dict, not {type(recipe).__name__}"
@@ -498,17 +504,17 @@ def build(recipe):
     return [Object(r) for r in raws]
 
 
-def op(op_name, name=None, **params):
+def op(op_name, name=None, float=False, **params):
     """Builds one object with the op ``op_name`` (any op of ``rcagd ops``); parameters
     as keyword arguments (``from_`` for ``from``; ``None`` leaves a parameter out).
     Returns the object called ``name`` (default: the op name), the op's other results
-    in its ``extras``."""
+    in its ``extras``. ``float=True``: built in ``f64`` (see :func:`build`)."""
     name = name or op_name
     entry = {"name": name, "op": op_name}
     for k, v in params.items():
         if v is not None:
             entry[k[:-1] if k.endswith("_") else k] = v
-    objs = build({"object": [entry]})
+    objs = build({"object": [entry]}, float=float)
     main = next((o for o in objs if o.name == name), objs[0])
     main.extras = {o.name: o for o in objs if o is not main}
     return main
@@ -840,7 +846,8 @@ def _op_function(op_name, summary, params):
               default=P.empty if req == "required" else None)
             for pn, (_, _, req, _) in zip(py, ordered)
         ]
-        + [P("name", P.KEYWORD_ONLY, default=op_name)]
+        + [P("name", P.KEYWORD_ONLY, default=op_name),
+           P("float", P.KEYWORD_ONLY, default=False)]
     )
 
     def function(*args, **kwargs):
@@ -848,12 +855,14 @@ def _op_function(op_name, summary, params):
         bound.apply_defaults()
         values = dict(bound.arguments)
         name = values.pop("name")
-        return op(op_name, name, **values)
+        in_f64 = values.pop("float")
+        return op(op_name, name, in_f64, **values)
 
     lines = [summary, "", "Parameters (as in ``rcagd ops " + op_name + "``):"]
     for pn, (_, kind, req, doc) in zip(py, ordered):
         lines.append(f"    {pn}: {kind}, {req}. {doc}")
     lines.append("    name: the object's name (default: the op name).")
+    lines.append("    float: build in f64 as ``rcagd build --float`` (ops with a float path only).")
     lines.append("")
     lines.append("Returns the object called ``name``; the op's other results are in its "
                  "``extras``. Errors are ``ValueError`` with the op's message.")

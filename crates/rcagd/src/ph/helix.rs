@@ -599,20 +599,43 @@ impl<F: Scalar> LineCircle<F> {
         let mut certs = curve.certify();
         let d = &curve.proportionality() - &self.predicted_proportionality(f, g, w);
         let (re, im) = (d.map(|c| c.re.clone()), d.map(|c| c.im.clone()));
-        certs.push(identity_cert(
+        // f64: each residual coefficient against the sizes of the terms that cancel in it
+        // (not the residual's own size: it is the cancelled difference)
+        let scale = self.helix_magnitude(curve, f, g, w);
+        certs.push(identity_cert_within(
             "Re(αβ' − α'β − (f'g − fg')(a0b1 − a1b0)w²) ≡ 0 (Besednjak §6.2)",
             &re,
             &Poly::zero(),
+            &scale,
         ));
-        certs.push(identity_cert(
+        certs.push(identity_cert_within(
             "Im(αβ' − α'β − (f'g − fg')(a0b1 − a1b0)w²) ≡ 0 (Besednjak §6.2)",
             &im,
             &Poly::zero(),
+            &scale,
         ));
         let pc = curve.to_poly_curve();
         let t = pc.helix_test()?;
         certs.extend(pc.certify_helix_test(&t));
         Ok(certs)
+    }
+
+    /// Coefficientwise bounds of the terms of `αβ' − α'β − (f'g − fg')(a_0b_1 − a_1b_0)w²`
+    /// in power form, `|α||β'| + |α'||β| + (|f'||g| + |f||g'|)·|a_0b_1 − a_1b_0|·|w|²`
+    /// (each factor by [`abs_power_from_bernstein`], complex parts by `|re| + |im|`): the
+    /// scale of the `f64` residual of [`Self::certify_helix_construction`].
+    fn helix_magnitude(&self, curve: &PhCurve<F>, f: &[F], g: &[F], w: &[Complex<F>]) -> Vec<f64> {
+        let cabs = |c: &Complex<F>| c.re.to_f64().abs() + c.im.to_f64().abs();
+        let (a, b) = curve.hopf_coefficients();
+        let a = abs_power_from_bernstein(&a.iter().map(cabs).collect::<Vec<_>>());
+        let b = abs_power_from_bernstein(&b.iter().map(cabs).collect::<Vec<_>>());
+        let lhs = &(&a * &b.derivative()) + &(&a.derivative() * &b);
+        let fm = abs_power_from_bernstein(&f.iter().map(|x| x.to_f64().abs()).collect::<Vec<_>>());
+        let gm = abs_power_from_bernstein(&g.iter().map(|x| x.to_f64().abs()).collect::<Vec<_>>());
+        let wm = abs_power_from_bernstein(&w.iter().map(cabs).collect::<Vec<_>>());
+        let h = &(&fm.derivative() * &gm) + &(&fm * &gm.derivative());
+        let rhs = &(&h * &(&wm * &wm)) * &Poly::constant(cabs(&self.determinant()));
+        (&lhs + &rhs).coeffs().to_vec()
     }
 
     /// The predicted proportionality polynomial `(f'g − fg')(a_0b_1 − a_1b_0)w²`.
@@ -649,4 +672,23 @@ fn axis_magnitude<F: Scalar>(a: &[F; 3], d: &[Poly<F>; 3], sigma: &Poly<F>) -> V
                 + sigma.coeff(k).to_f64().abs()
         })
         .collect()
+}
+
+/// Coefficientwise bounds of the power form of `Σᵢ bᵢ Bᵢⁿ(t)` from `|bᵢ|`: coefficient `k`
+/// is `Σ_{i ≤ k} |bᵢ| C(n, i) C(n − i, k − i)` (the power coefficients of `Bᵢⁿ` are
+/// `(−1)^{k−i} C(n, i) C(n − i, k − i)`), so every term of a product of such polynomials
+/// is bounded by the product of these (non-negative) bounds.
+fn abs_power_from_bernstein(b: &[f64]) -> Poly<f64> {
+    let n = b.len().saturating_sub(1);
+    let binom = |n: usize, k: usize| -> f64 {
+        (0..k).fold(1.0, |acc, j| acc * (n - j) as f64 / (j + 1) as f64)
+    };
+    let coeffs = (0..=n)
+        .map(|k| {
+            (0..=k)
+                .map(|i| b[i] * binom(n, i) * binom(n - i, k - i))
+                .sum::<f64>()
+        })
+        .collect::<Vec<_>>();
+    Poly::new(if b.is_empty() { Vec::new() } else { coeffs })
 }
