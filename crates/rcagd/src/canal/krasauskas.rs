@@ -179,11 +179,14 @@ impl<F: Scalar> Pencil<F> {
 
     /// Divides all four entries by their common factor (exact scalars).
     fn remove_content(&mut self) {
-        let g = self
-            .a
-            .iter()
-            .chain(self.b.iter())
-            .fold(CPoly::<F>::zero(), |acc, p| acc.gcd(p));
+        // the gcd stops at a constant (the usual case: no common factor)
+        let mut g = CPoly::<F>::zero();
+        for p in self.a.iter().chain(self.b.iter()) {
+            g = g.gcd(p);
+            if g.degree() == Some(0) {
+                return;
+            }
+        }
         if g.degree().is_some_and(|d| d > 0) {
             if let (Ok(a0), Ok(a1), Ok(b0), Ok(b1)) = (
                 self.a[0].div_exact(&g),
@@ -287,9 +290,15 @@ impl<F: Scalar> Pencil<F> {
         let mut rows: Vec<Vec<F>> = Vec::new();
         let mut rhs: Vec<F> = Vec::new();
         let mut cols: Vec<[CPoly<F>; 2]> = Vec::new();
+        // tⁱ b mod σ = t·(tⁱ⁻¹ b mod σ) mod σ: each column from the one before
+        let t = Poly::monomial(Complex::one(), 1);
         for i in 0..=e {
-            let ti = Poly::monomial(Complex::one(), i);
-            let (Ok(r0), Ok(r1)) = (rem(&(&ti * &self.b[0])), rem(&(&ti * &self.b[1]))) else {
+            let next = match cols.last() {
+                None => (rem(&self.b[0]), rem(&self.b[1])),
+                Some([c0, c1]) if i > 0 => (rem(&(&t * c0)), rem(&(&t * c1))),
+                Some(_) => return false,
+            };
+            let (Ok(r0), Ok(r1)) = next else {
                 return false;
             };
             cols.push([r0, r1]);
