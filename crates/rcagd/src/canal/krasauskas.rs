@@ -39,7 +39,9 @@
 //! 3. the combination of both seed operations: for an irreducible factor `σ` of
 //!    `det(a, b)` over the coefficient field (with `i`), a real `ρ` of degree
 //!    `≤ deg a − deg b` with `σ | a + ρb` (a linear system over the field), then
-//!    `(a, b) ← ((a + ρb)/σ, σ̄b)`.
+//!    `(a, b) ← ((a + ρb)/σ, σ̄b)`; the factors are tried lowest degree first, within a
+//!    degree in a fixed order of their coefficients (so the pencil reached depends on the
+//!    factors of `det(a, b)`, not on the order a factorization lists them in).
 //!
 //! **What it reaches.** Gruber Satz 2 states the degree `(k + n, 2)`,
 //! `n = 2 max(k − 1, 2k − 2 − Σ⌈pᵢ/2⌉)` ([`super::krasauskas_bound`]), over `C`: the
@@ -82,6 +84,22 @@ use rcagd_algebra::{Complex, Poly, QuadExt, Rational, Scalar};
 use std::sync::Mutex;
 
 type CPoly<F> = Poly<Complex<F>>;
+
+/// A total order of polynomials over `F(i)` of equal degree: lexicographic in the
+/// coefficients from the constant one up, each compared by its real, then its imaginary
+/// part (`F` is ordered: `Q` or `Q(√d)` with `d > 0`).
+fn canonical_cmp<F: Scalar>(f: &CPoly<F>, g: &CPoly<F>) -> std::cmp::Ordering {
+    f.coeffs()
+        .iter()
+        .zip(g.coeffs())
+        .map(|(x, y)| {
+            x.re.partial_cmp(&y.re)
+                .unwrap_or(std::cmp::Ordering::Equal)
+                .then_with(|| x.im.partial_cmp(&y.im).unwrap_or(std::cmp::Ordering::Equal))
+        })
+        .find(|o| o.is_ne())
+        .unwrap_or(std::cmp::Ordering::Equal)
+}
 
 /// A real pencil `a + u b` in `C²` (module docs) and its reduction history.
 #[derive(Debug, Clone, PartialEq)]
@@ -161,11 +179,14 @@ impl<F: Scalar> Pencil<F> {
 
     /// Divides all four entries by their common factor (exact scalars).
     fn remove_content(&mut self) {
-        let g = self
-            .a
-            .iter()
-            .chain(self.b.iter())
-            .fold(CPoly::<F>::zero(), |acc, p| acc.gcd(p));
+        // the gcd stops at a constant (the usual case: no common factor)
+        let mut g = CPoly::<F>::zero();
+        for p in self.a.iter().chain(self.b.iter()) {
+            g = g.gcd(p);
+            if g.degree() == Some(0) {
+                return;
+            }
+        }
         if g.degree().is_some_and(|d| d > 0) {
             if let (Ok(a0), Ok(a1), Ok(b0), Ok(b1)) = (
                 self.a[0].div_exact(&g),
@@ -269,9 +290,15 @@ impl<F: Scalar> Pencil<F> {
         let mut rows: Vec<Vec<F>> = Vec::new();
         let mut rhs: Vec<F> = Vec::new();
         let mut cols: Vec<[CPoly<F>; 2]> = Vec::new();
+        // tⁱ b mod σ = t·(tⁱ⁻¹ b mod σ) mod σ: each column from the one before
+        let t = Poly::monomial(Complex::one(), 1);
         for i in 0..=e {
-            let ti = Poly::monomial(Complex::one(), i);
-            let (Ok(r0), Ok(r1)) = (rem(&(&ti * &self.b[0])), rem(&(&ti * &self.b[1]))) else {
+            let next = match cols.last() {
+                None => (rem(&self.b[0]), rem(&self.b[1])),
+                Some([c0, c1]) if i > 0 => (rem(&(&t * c0)), rem(&(&t * c1))),
+                Some(_) => return false,
+            };
+            let (Ok(r0), Ok(r1)) = next else {
                 return false;
             };
             cols.push([r0, r1]);
@@ -342,7 +369,13 @@ impl<F: Scalar> Pencil<F> {
             let l = self.det();
             let mut done = false;
             let mut fs = factors(&l);
-            fs.sort_by_key(|f| f.degree().unwrap_or(0));
+            // lowest degree first; within a degree in a canonical order (so the pencil found
+            // depends on the factors, not on the order a factorization returns them in)
+            fs.sort_by(|f, g| {
+                f.degree()
+                    .cmp(&g.degree())
+                    .then_with(|| canonical_cmp(f, g))
+            });
             for f in &fs {
                 if self.shift_and_divide(f) {
                     done = true;
@@ -519,7 +552,7 @@ pub(crate) fn envelope_of_pencil<F: Scalar>(
 /// [`FactorMemo::gaussian_factors`]; this is its reference in the tests.)
 #[cfg_attr(not(test), allow(dead_code))]
 pub(crate) fn gaussian_factors_of(l: &CPoly<Rational>) -> Vec<CPoly<Rational>> {
-    gaussian_factors_with(l, &|f| super::factor::factor_gaussian(f).ok())
+    gaussian_factors_with(l, &|f| super::factor::factor_gaussian_q_first(f).ok())
 }
 
 /// Irreducible factors over `Q(i)`.
@@ -555,7 +588,8 @@ fn gaussian_factors_with(
 /// [`super::exportable`] builds every frame × method × interval): the factors over `Q(i)`
 /// of `det(a, b)` ([`gaussian_factors_of`], keyed by the monic `det`: the monic factors of
 /// `c·l` and `l` are the same), the factorizations over `Q(i)` of the square-free factors
-/// of its norm, the Gaussian split of `D` ([`super::sum_of_squares::gaussian_split`]) and
+/// of its norm and of their irreducible factors over `Q`
+/// ([`rcagd_algebra::factor::factor_gaussian_with`]), the Gaussian split of `D` ([`super::sum_of_squares::gaussian_split`]) and
 /// the reality checks of the family ([`CanalSpine::check_real_envelope`]). Every entry is
 /// the value of a pure function of its key, so a search with the memo makes the same
 /// choices as one without; it may be shared by threads (a lookup that misses computes
@@ -564,6 +598,7 @@ fn gaussian_factors_with(
 pub(crate) struct FactorMemo {
     dets: Table<CPoly<Rational>, GaussFactors>,
     norms: Table<Poly<Rational>, Option<GaussFactors>>,
+    irreducibles: Table<Poly<Rational>, Option<GaussFactors>>,
     splits: Table<Poly<Rational>, GaussianSplit>,
     real: Table<RealKey, ()>,
     /// Remember nothing (the reference of the tests).
@@ -638,7 +673,21 @@ impl FactorMemo {
         if let Some(v) = self.get(&self.norms, f) {
             return v;
         }
-        let v = super::factor::factor_gaussian(f).ok();
+        let v = if self.off {
+            super::factor::factor_gaussian_q_first(f).ok()
+        } else {
+            // the split over Q(i) of each Q-irreducible factor once per search: the norms
+            // of the different det(a, b) share most of their factors
+            super::factor::factor_gaussian_with(f, &|g| {
+                if let Some(v) = self.get(&self.irreducibles, g) {
+                    return v.ok_or(super::factor::FactorError::NoGoodPrime);
+                }
+                let v = super::factor::factor_gaussian_irreducible(g);
+                self.irreducibles.put(g.clone(), v.clone().ok());
+                v
+            })
+            .ok()
+        };
         self.norms.put(f.clone(), v.clone());
         v
     }
