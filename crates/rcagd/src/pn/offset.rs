@@ -143,18 +143,26 @@ impl<F: Scalar> Certified for PnOffset<F> {
         let b = self.base.point_polys();
         let o = self.surface.point_polys();
         let n = self.base.normal_polys();
-        let (ba, oa, na) = (
-            b.each_ref().map(abs_mpoly),
-            o.each_ref().map(abs_mpoly),
-            n.each_ref().map(abs_mpoly),
-        );
+        // magnitudes only for f64 (an exact residual must vanish)
+        let mags = (!F::EXACT).then(|| {
+            (
+                b.each_ref().map(abs_mpoly),
+                o.each_ref().map(abs_mpoly),
+                n.each_ref().map(abs_mpoly),
+            )
+        });
         let dabs = self.distance.to_f64().abs();
         for (i, name) in [(1usize, "x"), (2, "y"), (3, "z")] {
             let lhs = &(&(&o[i] * &b[0]) - &(&b[i] * &o[0])) * &n[0];
             let rhs = (&(&b[0] * &o[0]) * &n[i]).scale(&self.distance);
             // the terms' magnitudes: (|O_i||B₀| + |B_i||O₀|)|N₀| + |d||B₀||O₀||N_i|
-            let mag = &(&(&(&oa[i] * &ba[0]) + &(&ba[i] * &oa[0])) * &na[0])
-                + &(&(&ba[0] * &oa[0]) * &na[i]).scale(&dabs);
+            let mag = match &mags {
+                Some((ba, oa, na)) => {
+                    &(&(&(&oa[i] * &ba[0]) + &(&ba[i] * &oa[0])) * &na[0])
+                        + &(&(&ba[0] * &oa[0]) * &na[i]).scale(&dabs)
+                }
+                None => MPoly::zero(o[i].nvars()),
+            };
             out.push(identity_cert_within(
                 &format!(
                     "offset point at distance {} along the unit normal ({name}): (x_d − x) ≡ d·n",
