@@ -176,7 +176,8 @@ impl<F: Scalar> PnModel<F> {
     /// [`PnError::ModelingData`] for data the scheme cannot match: a normal `(0, 0, 1)`
     /// (no isotropic image; rotate the frame), two data with the same isotropic parameter
     /// point (equal normals), an index out of range, a degenerate triangle, an edge shared
-    /// by more than two triangles, or an interior edge that the segment between the two
+    /// by more than two triangles, a datum that is a vertex of no triangle, or an interior
+    /// edge that the segment between the two
     /// centroids does not cross inside (the Powell–Sabin split fails).
     pub fn interpolate(
         data: &[HermiteDatum<F>],
@@ -238,6 +239,11 @@ impl<F: Scalar> PnModel<F> {
             } else {
                 [t[0], t[2], t[1]]
             });
+        }
+        if let Some(i) = (0..data.len()).find(|i| !triangles.iter().any(|t| t.contains(i))) {
+            return Err(PnError::ModelingData(format!(
+                "datum {i} is a vertex of no triangle: every datum must be a vertex of the triangulation (the surface could not interpolate it)"
+            )));
         }
         let centroid = |t: &[usize; 3]| -> [F; 2] {
             let third = F::from_ratio(1, 3);
