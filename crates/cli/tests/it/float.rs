@@ -263,6 +263,46 @@ fn without_display_objects(r: &Recipe) -> Recipe {
     r
 }
 
+/// Gallery objects whose `f64` build is another parametrization of the same surface (an
+/// open finding, docs/plans/float.md): `three_spheres_on_a_pe_hyperbola` has a norm ratio
+/// `ab` that is not a square over Q, so the exact build parametrizes the conjugate pe
+/// hyperbola through a rational point, while in `f64` every positive number is a square and
+/// the build takes the rational-directions construction. Their control points differ; the
+/// `f64` build must still succeed with the same objects and degrees, its certificates hold
+/// (or be a known tolerance defect) and be marked inexact.
+const KNOWN_REPARAMETRIZED: &[(&str, &str)] = &[(
+    "three_spheres_on_a_pe_hyperbola",
+    "ab not a square: exact ratio circle, f64 takes the square-ratio construction",
+)];
+
+fn check_reparametrized(what: &str, r: &Recipe) {
+    let e = build_recipe_with(r, Arithmetic::Exact, |_| {})
+        .unwrap_or_else(|d| panic!("{what} (exact): {}", d[0]));
+    let f = build_recipe_with(r, Arithmetic::Float, |_| {})
+        .unwrap_or_else(|d| panic!("{what} (f64): {}", d[0]));
+    assert_eq!(e.len(), f.len(), "{what}: object counts");
+    for (a, b) in e.iter().zip(&f) {
+        assert_eq!(
+            a.degree_summary(),
+            b.degree_summary(),
+            "{what} ({})",
+            a.name
+        );
+        let bad = b.certificates.iter().find(|c| {
+            c.exact
+                || (!c.holds
+                    && !KNOWN_TOLERANCE_DEFECTS.iter().any(|(ops, prop)| {
+                        ops.contains(&b.op.as_str()) && c.property.starts_with(prop)
+                    }))
+        });
+        assert!(
+            bad.is_none(),
+            "{what} ({}): float certificate {bad:?}",
+            b.name
+        );
+    }
+}
+
 /// Builds a parsed recipe exactly and in `f64` and compares.
 fn check_recipe(what: &str, r: &Recipe) {
     let r = without_display_objects(r);
@@ -313,7 +353,14 @@ fn gallery_objects_with_a_float_path_agree() {
                 file: r.file.clone(),
                 objects: vec![obj.clone()],
             };
-            check_recipe(&obj.name, &one);
+            if KNOWN_REPARAMETRIZED
+                .iter()
+                .any(|(name, _)| *name == obj.name)
+            {
+                check_reparametrized(&obj.name, &one);
+            } else {
+                check_recipe(&obj.name, &one);
+            }
             n += 1;
         }
     }
