@@ -56,6 +56,7 @@ macro_rules! errln {
 pub mod build;
 pub mod closure;
 pub mod float;
+pub mod float_agreement;
 pub mod fuzz;
 pub mod gallery;
 pub mod limits;

@@ -1,16 +1,8 @@
 //! Exact against `f64` (issue 19, item 4): a fuzz case that builds exactly and whose ops
 //! all have a float path ([`crate::float`], `rcagd build --float`) is built again in
-//! `f64` and the two results are compared by the rule of the float path's tests
-//! (`crates/cli/tests/it/float.rs`, `agree_or_split`):
-//!
-//! * the same objects (names, kinds) with the same degrees, every homogeneous control
-//!   point coordinate within [`REL`] of the object's largest coordinate after both pieces
-//!   are divided by their weight at the index of the exact piece's largest weight (a
-//!   rational curve is defined up to a common factor), and every `f64` certificate
-//!   holding and marked inexact; or
-//! * a different split (the same objects and bidegrees, another number of pieces: an
-//!   exact sign test whose `0` is a rounding residue `±ε` in `f64`) whose `f64`
-//!   certificates all hold.
+//! `f64` and the two results are compared by the rule of the float path's tests,
+//! [`crate::float_agreement::agree_or_split`], with the tolerance [`REL`] (looser than
+//! the tests' 1e-12: generated data reach the ops' limits of size and degree).
 //!
 //! The `f64` build failing where the exact one succeeds is a finding only when every
 //! input number is of moderate size (within `10^±`[`SMALL_ORDER`]): beyond that the
@@ -21,9 +13,10 @@
 //! compared.
 
 use crate::build::{build_recipe_with, Arithmetic};
+use crate::float_agreement::agree_or_split;
 use crate::model::Object;
 use crate::recipe::{Format, Recipe};
-use rcagd_algebra::{Rational, Scalar};
+use rcagd_algebra::Rational;
 
 /// The agreement demanded of `f64` and exact control points, relative to the object's
 /// largest coordinate.
@@ -32,19 +25,6 @@ pub const REL: f64 = 1e-9;
 /// Input numbers within `10^±SMALL_ORDER` are "of moderate size": the `f64` path must
 /// build what the exact path builds.
 pub const SMALL_ORDER: f64 = 6.0;
-
-/// Certificates of the `f64` path whose tolerance is known to be scaled by the cancelled
-/// result rather than by the size of the terms (docs/plans/float.md; the same list as
-/// the float tests'): they may fail on agreeing control points by rounding alone.
-const KNOWN_TOLERANCE_DEFECTS: &[(&[&str], &str)] = &[(
-    &[
-        "torus",
-        "dupin_canal",
-        "dupin_cyclide",
-        "dupin_cyclide_parabolic",
-    ],
-    "det(λC + μΩ)",
-)];
 
 /// Whether every object of the recipe text has an op with a float path (and no display
 /// parameter that the float path refuses).
@@ -58,134 +38,6 @@ pub fn comparable(recipe: &Recipe) -> bool {
                             .contains(&e.key.as_str())
                     }))
         })
-}
-
-/// Every homogeneous coordinate of every piece as `f64`, with the stride of each piece.
-fn coords(o: &Object) -> Vec<(usize, Vec<f64>)> {
-    let mut out = Vec::new();
-    for c in o.geometry.curves() {
-        out.push((c.dim() + 1, c.coords().iter().map(Scalar::to_f64).collect()));
-    }
-    for p in o.geometry.patches() {
-        out.push((p.dim() + 1, p.coords().iter().map(Scalar::to_f64).collect()));
-    }
-    out
-}
-
-/// Divides both pieces by their weight at the index of the exact piece's largest |weight|.
-fn normalize(exact: &mut [f64], float: &mut [f64], stride: usize) {
-    let stride = stride.max(1);
-    let k = (0..exact.len() / stride)
-        .max_by(|&a, &b| exact[a * stride].abs().total_cmp(&exact[b * stride].abs()))
-        .unwrap_or(0);
-    let (we, wf) = (
-        exact.get(k * stride).copied().unwrap_or(1.0),
-        float.get(k * stride).copied().unwrap_or(1.0),
-    );
-    if we != 0.0 && wf != 0.0 {
-        exact.iter_mut().for_each(|x| *x /= we);
-        float.iter_mut().for_each(|x| *x /= wf);
-    }
-}
-
-fn exempt(op: &str, c: &rcagd_algebra::Certificate) -> bool {
-    KNOWN_TOLERANCE_DEFECTS
-        .iter()
-        .any(|(ops, prop)| ops.contains(&op) && c.property.starts_with(prop))
-}
-
-/// The objects agree piece by piece (see the module docs).
-///
-/// # Errors
-/// The first difference.
-pub fn agree(exact: &[Object], float: &[Object]) -> Result<(), String> {
-    if exact.len() != float.len() {
-        return Err(format!(
-            "{} exact objects, {} in f64",
-            exact.len(),
-            float.len()
-        ));
-    }
-    for (e, f) in exact.iter().zip(float) {
-        if e.name != f.name || e.kind() != f.kind() || e.degree_summary() != f.degree_summary() {
-            return Err(format!(
-                "exact {:?} {} {}, f64 {:?} {} {}",
-                e.name,
-                e.kind(),
-                e.degree_summary(),
-                f.name,
-                f.kind(),
-                f.degree_summary()
-            ));
-        }
-        let (mut ce, mut cf) = (coords(e), coords(f));
-        if ce.len() != cf.len() {
-            return Err(format!("{:?}: piece counts differ", e.name));
-        }
-        for ((stride, a), (_, b)) in ce.iter_mut().zip(cf.iter_mut()) {
-            if a.len() != b.len() {
-                return Err(format!("{:?}: pieces of different sizes", e.name));
-            }
-            normalize(a, b, *stride);
-        }
-        let scale = ce
-            .iter()
-            .flat_map(|(_, v)| v.iter())
-            .fold(0.0f64, |m, x| m.max(x.abs()))
-            .max(f64::MIN_POSITIVE);
-        for (k, ((_, a), (_, b))) in ce.iter().zip(&cf).enumerate() {
-            for (i, (x, y)) in a.iter().zip(b).enumerate() {
-                if (x - y).abs() > REL * scale || (x - y).is_nan() {
-                    return Err(format!(
-                        "{:?}: piece {k} coordinate {i}: exact {x:e}, f64 {y:e}, |Δ|/scale = {:e}",
-                        e.name,
-                        (x - y).abs() / scale
-                    ));
-                }
-            }
-        }
-        if let Some(c) = f
-            .certificates
-            .iter()
-            .find(|c| c.exact || (!c.holds && !exempt(&f.op, c)))
-        {
-            return Err(format!("{:?}: f64 certificate {c}", f.name));
-        }
-    }
-    Ok(())
-}
-
-/// [`agree`], or a different split with the same objects and bidegrees whose `f64`
-/// certificates hold.
-///
-/// # Errors
-/// The difference (and the failing `f64` certificate of a different split).
-pub fn agree_or_split(exact: &[Object], float: &[Object]) -> Result<(), String> {
-    let Err(m) = agree(exact, float) else {
-        return Ok(());
-    };
-    let shape = |o: &Object| {
-        let d = o.degree_summary();
-        let rest = d.split_once(' ').map_or(d.clone(), |(_, r)| r.to_string());
-        (o.name.clone(), o.kind().to_string(), rest)
-    };
-    let same_up_to_split =
-        exact.len() == float.len() && exact.iter().zip(float).all(|(e, f)| shape(e) == shape(f));
-    let counts_differ = exact
-        .iter()
-        .zip(float)
-        .any(|(e, f)| e.degree_summary() != f.degree_summary());
-    if !(counts_differ && same_up_to_split) {
-        return Err(m);
-    }
-    match float.iter().find_map(|o| {
-        o.certificates
-            .iter()
-            .find(|c| !c.holds && !exempt(&o.op, c))
-    }) {
-        Some(c) => Err(format!("{m}; and an f64 certificate fails: {c}")),
-        None => Ok(()),
-    }
 }
 
 /// Whether every non-zero input number of the recipe lies within `10^±SMALL_ORDER`.
@@ -228,7 +80,7 @@ pub fn check(file_name: &str, text: &str, exact: &[Object]) -> Option<String> {
         return None;
     }
     match build_recipe_with(&recipe, Arithmetic::Float, |_| {}) {
-        Ok(float) => agree_or_split(exact, &float)
+        Ok(float) => agree_or_split(exact, &float, REL)
             .err()
             .map(|m| format!("exact and f64 disagree: {m}")),
         Err(d) => {

@@ -6,9 +6,9 @@
 
 use crate::common::bin;
 use proptest::prelude::*;
-use rcagd_algebra::Rational;
 use rcagd_cli::build::{build_recipe_with, Arithmetic};
 use rcagd_cli::float::{self, FLOAT_OPS};
+use rcagd_cli::float_agreement;
 use rcagd_cli::model::Object;
 use rcagd_cli::recipe::Recipe;
 use rcagd_io::quantity::Quantity;
@@ -16,156 +16,21 @@ use rcagd_io::quantity::Quantity;
 /// The agreement demanded of float and exact control points (issue 20).
 const REL: f64 = 1e-12;
 
-/// Library `f64` certificates whose tolerance is scaled by the *cancelled* result
-/// instead of the size of the terms that cancel (known defects, docs/plans/float.md):
-/// they may fail on exact-agreeing control points by rounding alone. Only these, and
-/// only for these ops, are exempt from holding (they must still be marked inexact).
-///
-/// * `DualPencil::certify` (`rcagd::cyclide::pencil`): det(λC + Ω) is compared with
-///   κλ(1 − ρ²λ)² to 10⁻⁹ of its own largest coefficient, but it is formed from 4×4
-///   products of entries of size |c|² + r², whose rounding (e.g. 6·10⁻⁴ for a centre
-///   at distance 27 and ρ = 27) exceeds that.
-const KNOWN_TOLERANCE_DEFECTS: &[(&[&str], &str)] = &[(
-    &[
-        "torus",
-        "dupin_canal",
-        "dupin_cyclide",
-        "dupin_cyclide_spheres",
-        "cyclide_blend",
-        "dupin_cyclide_parabolic",
-    ],
-    "det(λC + μΩ)",
-)];
-
 fn build(src: &str, arithmetic: Arithmetic) -> Result<Vec<Object>, String> {
     let r = Recipe::parse("r.toml", src, None).map_err(|d| d[0].to_string())?;
     build_recipe_with(&r, arithmetic, |_| {}).map_err(|d| d[0].to_string())
 }
 
-/// Every homogeneous coordinate of every piece, in order, as `f64`, with the stride
-/// (dimension + 1) of each piece.
-fn coords(o: &Object) -> Vec<(usize, Vec<f64>)> {
-    let mut out = Vec::new();
-    for c in o.geometry.curves() {
-        out.push((
-            c.dim() + 1,
-            c.coords().iter().map(Rational::to_f64_lossy).collect(),
-        ));
-    }
-    for p in o.geometry.patches() {
-        out.push((
-            p.dim() + 1,
-            p.coords().iter().map(Rational::to_f64_lossy).collect(),
-        ));
-    }
-    out
-}
-
-/// A rational curve or patch is defined up to a common factor of its homogeneous
-/// coordinates, and the exact ops may divide one out (a content, a balancing power of
-/// 2) where the `f64` builder does not. Both pieces are therefore divided by their
-/// weight at the index where the exact piece's |weight| is largest (the same index for
-/// both); that is the only normalization before the comparison.
-fn normalize(exact: &mut [f64], float: &mut [f64], stride: usize) {
-    let k = (0..exact.len() / stride.max(1))
-        .max_by(|&a, &b| exact[a * stride].abs().total_cmp(&exact[b * stride].abs()))
-        .unwrap_or(0);
-    let (we, wf) = (exact[k * stride], float[k * stride]);
-    if we != 0.0 && wf != 0.0 {
-        exact.iter_mut().for_each(|x| *x /= we);
-        float.iter_mut().for_each(|x| *x /= wf);
-    }
-}
-
-trait Lossy {
-    fn to_f64_lossy(&self) -> f64;
-}
-impl Lossy for Rational {
-    fn to_f64_lossy(&self) -> f64 {
-        self.to_f64().value()
-    }
-}
-
-/// Float and exact objects agree: same names, kinds and degrees; every control point
-/// coordinate within `REL` of the object's largest |coordinate|; all float certificates
-/// hold and are marked inexact; every float object is marked `arithmetic = "f64"`.
-/// The same objects (names, kinds) with the same bidegrees, the number of pieces aside
-/// (`"N patches of bidegree (p, q)"`).
-fn same_up_to_split(exact: &[Object], float: &[Object]) -> bool {
-    let shape = |o: &Object| {
-        let d = o.degree_summary();
-        let rest = d.split_once(' ').map_or(d.clone(), |(_, r)| r.to_string());
-        (o.name.clone(), o.kind().to_string(), rest)
-    };
-    exact.len() == float.len() && exact.iter().zip(float).all(|(e, f)| shape(e) == shape(f))
-}
-
+/// Float and exact objects agree by the one rule of [`float_agreement::agree`] at `REL`;
+/// besides, every float object has certificates and is marked `arithmetic = "f64"`.
 fn agree(what: &str, exact: &[Object], float: &[Object]) -> Result<(), String> {
-    if exact.len() != float.len() {
-        return Err(format!(
-            "{what}: {} exact objects, {} float",
-            exact.len(),
-            float.len()
-        ));
-    }
-    for (e, f) in exact.iter().zip(float) {
-        if e.name != f.name || e.kind() != f.kind() || e.degree_summary() != f.degree_summary() {
-            return Err(format!(
-                "{what}: {} {} {} vs {} {} {}",
-                e.name,
-                e.kind(),
-                e.degree_summary(),
-                f.name,
-                f.kind(),
-                f.degree_summary()
-            ));
-        }
-        let (mut ce, mut cf) = (coords(e), coords(f));
-        if ce.len() != cf.len() {
-            return Err(format!("{what}: piece counts differ"));
-        }
-        for ((stride, a), (_, b)) in ce.iter_mut().zip(cf.iter_mut()) {
-            if a.len() != b.len() {
-                return Err(format!("{what}: pieces of different sizes"));
-            }
-            normalize(a, b, *stride);
-        }
-        let (ce, cf): (Vec<Vec<f64>>, Vec<Vec<f64>>) = (
-            ce.into_iter().map(|(_, v)| v).collect(),
-            cf.into_iter().map(|(_, v)| v).collect(),
-        );
-        let scale = ce
-            .iter()
-            .flatten()
-            .fold(0.0f64, |m, x| m.max(x.abs()))
-            .max(f64::MIN_POSITIVE);
-        let slack = power_form_slack(e);
-        for (k, (a, b)) in ce.iter().zip(&cf).enumerate() {
-            if a.len() != b.len() {
-                return Err(format!("{what}: piece {k} has different sizes"));
-            }
-            for (i, (x, y)) in a.iter().zip(b).enumerate() {
-                if (x - y).abs() > REL * scale + slack {
-                    return Err(format!(
-                        "{what} ({}): piece {k} coordinate {i}: exact {x}, f64 {y}, |Δ|/scale = {:e}",
-                        e.name,
-                        (x - y).abs() / scale
-                    ));
-                }
-            }
-        }
-        let exempt = |c: &rcagd_algebra::Certificate| {
-            KNOWN_TOLERANCE_DEFECTS
-                .iter()
-                .any(|(ops, prop)| ops.contains(&f.op.as_str()) && c.property.starts_with(prop))
-        };
-        if let Some(c) = f
-            .certificates
-            .iter()
-            .find(|c| c.exact || (!c.holds && !exempt(c)))
-        {
-            return Err(format!("{what} ({}): float certificate {c}", f.name));
-        }
+    float_agreement::agree(exact, float, REL).map_err(|m| format!("{what}: {m}"))?;
+    marked(what, float)
+}
+
+/// Every float object has certificates and says `arithmetic = "f64"`.
+fn marked(what: &str, float: &[Object]) -> Result<(), String> {
+    for f in float {
         if f.certificates.is_empty() {
             return Err(format!("{what} ({}): no certificates", f.name));
         }
@@ -180,72 +45,19 @@ fn agree(what: &str, exact: &[Object], float: &[Object]) -> Result<(), String> {
     Ok(())
 }
 
-/// The rounding an op that builds its control points through the power basis may add
-/// beyond `REL`: `ph_planar_offset` converts the base curve's control points to power
-/// form, multiplies (σ·x + d·y′, σ·y − d·x′) and converts the degree-`n = 4m + 1`
-/// result back to Bernstein form (`BezierCurve::from_coordinate_polys`). Each step
-/// rounds in proportion to the power coefficients, which for Bernstein coefficients of
-/// size `B` reach `2ⁿ·B`; the bound is `16·(n + 1)·ε·S`, `S` the largest `Σⱼ |aⱼ|` of a
-/// coordinate's exact power coefficients. Every other op: 0 (only `REL` applies).
-fn power_form_slack(e: &Object) -> f64 {
-    if e.op != "ph_planar_offset" {
-        return 0.0;
-    }
-    let mut slack = 0.0f64;
-    for c in e.geometry.curves() {
-        let n = c.degree() as f64;
-        // in the units of the comparison (see `normalize`)
-        let w = c
-            .weights()
-            .iter()
-            .map(|x| x.to_f64_lossy().abs())
-            .fold(0.0, f64::max);
-        if w == 0.0 {
-            continue;
-        }
-        for p in c.coordinate_polys() {
-            let s: f64 = p.coeffs().iter().map(|a| a.to_f64_lossy().abs()).sum();
-            slack = slack.max(16.0 * (n + 1.0) * f64::EPSILON * s / w);
-        }
-    }
-    slack
-}
-
 fn check(what: &str, src: &str) -> Result<(), String> {
     let exact = build(src, Arithmetic::Exact)?;
     let float = build(src, Arithmetic::Float)?;
     agree_or_split(what, &exact, &float)
 }
 
-/// As [`agree`]; but where only the number of pieces differs, the same objects and degrees
-/// and holding f64 certificates are required. Where an op cuts its result into pieces by an
-/// exact sign or threshold test (the positive-weight split of a patch, the subdivision of
-/// an arc by its turn), a value that is 0 exactly is a rounding residue ±ε in f64 and the
-/// cut may differ; then the control points cannot be compared piece by piece. Findings of
+/// As [`agree`], or a different split ([`float_agreement::agree_or_split`]). Findings of
 /// the property tests (session 12, docs/plans/float.md): `dupin_canal` (center 0,
 /// rho = 20/3, r0 = 0, s = −4/6: 20 exact, 18 f64 patches) and `circle_arc` (centre
 /// (5, 0), radius 5, parameters 2/5 → −3/7: 3 exact, 4 f64 pieces).
 fn agree_or_split(what: &str, exact: &[Object], float: &[Object]) -> Result<(), String> {
-    match agree(what, exact, float) {
-        Ok(()) => Ok(()),
-        Err(m) => {
-            let counts_differ = exact
-                .iter()
-                .zip(float)
-                .any(|(e, f)| e.degree_summary() != f.degree_summary());
-            if !(counts_differ && same_up_to_split(exact, float)) {
-                return Err(m);
-            }
-            match float
-                .iter()
-                .flat_map(|o| o.certificates.iter())
-                .find(|c| !c.holds)
-            {
-                Some(c) => Err(format!("{m}; and an f64 certificate fails: {c}")),
-                None => Ok(()),
-            }
-        }
-    }
+    float_agreement::agree_or_split(exact, float, REL).map_err(|m| format!("{what}: {m}"))?;
+    marked(what, float)
 }
 
 /// The display parameters of `ph_curve` and `ph_helix` (frames, combs, feeds: extra
@@ -288,13 +100,7 @@ fn check_reparametrized(what: &str, r: &Recipe) {
             "{what} ({})",
             a.name
         );
-        let bad = b.certificates.iter().find(|c| {
-            c.exact
-                || (!c.holds
-                    && !KNOWN_TOLERANCE_DEFECTS.iter().any(|(ops, prop)| {
-                        ops.contains(&b.op.as_str()) && c.property.starts_with(prop)
-                    }))
-        });
+        let bad = float_agreement::bad_certificate(b);
         assert!(
             bad.is_none(),
             "{what} ({}): float certificate {bad:?}",

@@ -19,6 +19,7 @@ mod limits;
 mod messages;
 mod ndim;
 mod pipes;
+mod python_stubs;
 mod quadric_ops;
 mod queries;
 mod sphere_family_ops;

@@ -728,13 +728,14 @@ def canal_blend_spheres(center0, radius0, normal0, center1, radius1, normal1, of
 
 
 def cyclide_blend(sphere1, direction1, direction2, sphere2=None, point2=None, side2=1,
-                  name="cyclide_blend"):
+                  arc="blend", name="cyclide_blend"):
     """A Dupin cyclide blend between two cones or cylinders of revolution with
     intersecting or parallel axes, tangent to both along the circles where the spheres
     P₁ = ``sphere1``, P₂ touch them (M. Peternell, *Rational Parametrizations for
-    Envelopes of Quadric Families*, §3.8). Spheres and directions are ``[x, y, z, r]``."""
+    Envelopes of Quadric Families*, §3.8). Spheres and directions are ``[x, y, z, r]``.
+    ``arc="complement"`` gives the rest of the same cyclide instead of the blend."""
     return op("cyclide_blend", name, sphere1=sphere1, direction1=direction1,
-              sphere2=sphere2, direction2=direction2, point2=point2, side2=side2)
+              sphere2=sphere2, direction2=direction2, point2=point2, side2=side2, arc=arc)
 
 
 def torus(major_radius, minor_radius, center=(0, 0, 0), name="torus"):
