@@ -167,6 +167,11 @@ pub const FLOAT_OPS: &[FloatOp] = &[
         note: "a preimage with a zero on [0, 1] (offset weights not all positive) is refused",
     },
     FloatOp {
+        name: "ph_planar_hermite",
+        build: ops::ph_planar::build_hermite::<f64>,
+        note: "the four interpolants in f64 with tolerance certificates (the exact op rounds an f64 solution to rationals and certifies the rounded curves exactly when a square root is irrational)",
+    },
+    FloatOp {
         name: "ph_planar_spline",
         build: ops::ph_planar::build_spline::<f64>,
         note: "",
@@ -180,7 +185,6 @@ pub const NO_FLOAT_PATH: &[(&str, &str)] = &[
     ("quadric_miquel_patch", "not yet written (it chooses among sign flips by exact weight signs)"),
     ("ph_hermite", "exact-only algebra: the interpolants live in a quadratic field Q(√d) and are enclosed and rounded to rationals exactly"),
     ("ph_dph_septic", "exact-only algebra: exact real roots of the z-polynomial"),
-    ("ph_planar_hermite", "exact-only algebra: the branches live in quadratic fields"),
     ("ph_spatial_hermite", "exact-only algebra: the branches live in quadratic fields"),
     ("pipe", "exact-only algebra: the op searches the splittings of |m′|² as sums of two squares over Q (Gaussian factorizations, every frame and method) and keeps the smallest with positive weights; an f64 pipe (`rcagd::canal::pipe_around_ph::<f64>`) would be a different parametrization, so it is not offered as the same construction"),
     ("pipe_ph", "exact-only algebra: as `pipe`, a search over exact splittings of |m′|² = σ² and their Gaussian factors"),

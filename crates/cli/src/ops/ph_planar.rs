@@ -95,7 +95,7 @@ p1 = ["2/15", "2/3"]
 d1 = [0, 2]
 select = "all"
 "#,
-    build: build_hermite,
+    build: build_hermite::<Rational>,
 };
 
 const PH_PLANAR_SPLINE: OpSpec = OpSpec {
@@ -235,7 +235,12 @@ fn round_planar(c: &PlanarPhCurve<f64>, p0: &[Rational; 2]) -> Result<PlanarPhCu
     })
 }
 
-fn build_hermite(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `ph_planar_hermite` in `T`: the exact op solves in the quadratic fields the branches
+/// live in when their square roots are rational, else in `f64` and rounds the control
+/// points to rationals with exact certificates of the rounded curves
+/// ([`PlanarHermiteData::solve_auto`]); the float path solves in `f64` and keeps the
+/// `f64` curves with their tolerance certificates ([`PlanarHermiteData::solve_f64`]).
+pub(crate) fn build_hermite<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let data = PlanarHermiteData::new(
         arg2(args, "p0")?,
         arg2(args, "d0")?,
@@ -246,7 +251,12 @@ fn build_hermite(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let mut curves = Vec::new();
     let mut certs = Vec::new();
     let keep = |best: bool| all || best;
-    let values = match data.solve_auto()? {
+    let result = if T::EXACT {
+        data.solve_auto()?
+    } else {
+        PlanarHermiteResult::Float(Box::new(data.solve_f64()?))
+    };
+    let values = match result {
         PlanarHermiteResult::Exact(s) => {
             for (k, c) in s.interpolants.iter().enumerate() {
                 if !keep(c.best) {
@@ -273,10 +283,20 @@ fn build_hermite(args: &OpArgs) -> Result<Vec<Object>, OpError> {
                     continue;
                 }
                 let tag = tag(k, c);
-                let exact = round_planar(&c.curve, &data.p0)?;
-                certs.extend(prefixed(&tag, exact.certify()));
-                certs.push(exact.rounded_hermite_certificate(&data));
-                curves.push(exact.to_bezier()?);
+                if T::EXACT {
+                    let exact = round_planar(&c.curve, &data.p0)?;
+                    certs.extend(prefixed(&tag, exact.certify()));
+                    certs.push(exact.rounded_hermite_certificate(&data));
+                    curves.push(exact.to_bezier()?);
+                } else {
+                    let one = rcagd::ph::PlanarHermiteSolution {
+                        data: s.data.clone(),
+                        interpolants: vec![c.clone()],
+                        exact: false,
+                    };
+                    certs.extend(prefixed(&tag, one.certify()));
+                    curves.push(f64::exact_curve(c.curve.to_bezier()?)?);
+                }
             }
             let branches = planar_hermite_branches(&s);
             for b in &branches {
@@ -290,7 +310,9 @@ fn build_hermite(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     } else {
         Geometry::Curves(curves)
     };
-    Ok(vec![args.object(geometry, certs).with_values(values)])
+    Ok(vec![T::finish(
+        args.object(geometry, certs).with_values(values),
+    )])
 }
 
 /// The values of the four interpolants: the elimination quadratic of `w₁`, its

@@ -456,6 +456,26 @@ proptest! {
         }
     }
 
+    /// Planar PH quintic Hermite interpolants of random data, all four (session 14): the
+    /// exact op's curves (exact square roots, or an `f64` solution rounded to rationals)
+    /// against the float path's `f64` curves.
+    #[test]
+    fn ph_planar_hermites_agree(p in pts(2, 2..=2), d in pts(2, 2..=2)) {
+        let src = obj(
+            "ph_planar_hermite",
+            &format!("p0 = {}
+d0 = {}
+p1 = {}
+d1 = {}
+select = \"all\"\n", p[0], d[0], p[1], d[1]),
+        );
+        // coincident points, zero tangents: input errors
+        if let Ok(e) = build(&src, Arithmetic::Exact) {
+            let f = build(&src, Arithmetic::Float).map_err(TestCaseError::fail)?;
+            agree("ph_planar_hermite", &e, &f).map_err(TestCaseError::fail)?;
+        }
+    }
+
     /// Cyclides through three random oriented spheres, and cyclide blends of random cones
     /// (the second contact sphere fitted to a random sphere of cone 2).
     #[test]
