@@ -375,45 +375,26 @@ impl<F: Scalar> DualPencil<F> {
 /// Permanent of a square matrix of polynomials (the cofactor expansion of
 /// [`det_poly`] without signs; 5×5 here).
 fn permanent_poly(m: &[Vec<Poly<f64>>]) -> Poly<f64> {
-    let n = m.len();
-    if n == 0 {
-        return Poly::constant(1.0);
-    }
-    let mut acc = Poly::zero();
-    for (j, a) in m[0].iter().enumerate() {
-        if a.is_zero() {
-            continue;
-        }
-        let minor: Vec<Vec<Poly<f64>>> = m[1..]
-            .iter()
-            .map(|row| {
-                row.iter()
-                    .enumerate()
-                    .filter(|(k, _)| *k != j)
-                    .map(|(_, x)| x.clone())
-                    .collect()
-            })
-            .collect();
-        acc = &acc + &(a * &permanent_poly(&minor));
-    }
-    acc
+    cofactor_expansion(m, false)
 }
 
 /// Determinant of a square matrix of polynomials (cofactor expansion; 5×5 here).
 fn det_poly<F: Scalar>(m: &[Vec<Poly<F>>]) -> Poly<F> {
-    let n = m.len();
-    if n == 0 {
+    cofactor_expansion(m, true)
+}
+
+/// The cofactor expansion along the first row: the determinant when `signed`, else the
+/// permanent.
+fn cofactor_expansion<F: Scalar>(m: &[Vec<Poly<F>>], signed: bool) -> Poly<F> {
+    let Some((first, rest)) = m.split_first() else {
         return Poly::constant(F::one());
-    }
-    if n == 1 {
-        return m[0].first().cloned().unwrap_or_else(Poly::zero);
-    }
+    };
     let mut acc = Poly::zero();
-    for (j, a) in m[0].iter().enumerate() {
+    for (j, a) in first.iter().enumerate() {
         if a.is_zero() {
             continue;
         }
-        let minor: Vec<Vec<Poly<F>>> = m[1..]
+        let minor: Vec<Vec<Poly<F>>> = rest
             .iter()
             .map(|row| {
                 row.iter()
@@ -423,11 +404,11 @@ fn det_poly<F: Scalar>(m: &[Vec<Poly<F>>]) -> Poly<F> {
                     .collect()
             })
             .collect();
-        let term = a * &det_poly(&minor);
-        acc = if j % 2 == 0 {
-            &acc + &term
-        } else {
+        let term = a * &cofactor_expansion(&minor, signed);
+        acc = if signed && j % 2 == 1 {
             &acc - &term
+        } else {
+            &acc + &term
         };
     }
     acc

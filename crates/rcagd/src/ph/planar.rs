@@ -346,16 +346,7 @@ impl<F: Scalar> PlanarPhCurve<F> {
             16.0 * f64::from(deg.max(1)) * 2f64.powi(deg) * m * f64::EPSILON / TOL
         };
         let within = |property: &str, lhs: &Poly<F>, rhs: &Poly<F>, extra: f64| {
-            let diff = lhs - rhs;
-            let scale = poly_scale(lhs).max(poly_scale(rhs)).max(1.0) + extra;
-            let ok = if F::EXACT {
-                diff.is_zero()
-            } else {
-                poly_scale(&diff) <= TOL * scale
-            };
-            Certificate::decide(property, ok, F::EXACT, || {
-                format!("largest residual coefficient {:e}", poly_scale(&diff))
-            })
+            identity_cert_with_slack(property, lhs, rhs, extra)
         };
         let mut certs = vec![
             within(
@@ -504,8 +495,19 @@ pub(crate) fn identity_cert<F: Scalar>(
     lhs: &Poly<F>,
     rhs: &Poly<F>,
 ) -> Certificate {
+    identity_cert_with_slack(property, lhs, rhs, 0.0)
+}
+
+/// [`identity_cert`] with `extra` added to the `f64` scale (the rounding of the terms
+/// that formed `lhs`, where it exceeds the size of `lhs` and `rhs`).
+pub(crate) fn identity_cert_with_slack<F: Scalar>(
+    property: impl Into<String>,
+    lhs: &Poly<F>,
+    rhs: &Poly<F>,
+    extra: f64,
+) -> Certificate {
     let diff = lhs - rhs;
-    let scale = poly_scale(lhs).max(poly_scale(rhs)).max(1.0);
+    let scale = poly_scale(lhs).max(poly_scale(rhs)).max(1.0) + extra;
     let ok = if F::EXACT {
         diff.is_zero()
     } else {
