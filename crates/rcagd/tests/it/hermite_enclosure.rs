@@ -22,12 +22,7 @@ fn tol() -> (Q, Q) {
 /// 1.2735954, 89.576305) lie within their printed precision, and the `f64` pipeline agrees.
 #[test]
 fn example_9_1_energies_are_enclosed() {
-    let data = HermiteData::new(
-        [qi(0), qi(0), qi(0)],
-        [qi(1), qi(0), qi(1)],
-        [qi(1), qi(1), qi(1)],
-        [qi(0), qi(1), qi(1)],
-    );
+    let data = crate::seed001_examples::example_9_1_data();
     let sol = data.solve_exact().expect("solutions");
     assert_eq!(sol.interpolants.len(), 4);
     let (tp, te) = tol();

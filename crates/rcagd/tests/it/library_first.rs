@@ -24,20 +24,12 @@ fn point() -> impl Strategy<Value = [Q; 3]> {
 fn f(x: &Q) -> f64 {
     Scalar::to_f64(x)
 }
-fn qi(n: i64) -> Q {
-    Q::from(n)
-}
 
 /// Besednjak Example 9.1: four interpolants ranked by energy, every certificate holds, the
 /// first is the least-energy one and its control points meet the Hermite data.
 #[test]
 fn example_9_1_ranked_interpolants() {
-    let data = HermiteData::new(
-        [qi(0), qi(0), qi(0)],
-        [qi(1), qi(0), qi(1)],
-        [qi(1), qi(1), qi(1)],
-        [qi(0), qi(1), qi(1)],
-    );
+    let data = crate::seed001_examples::example_9_1_data();
     let sol = data.solve_exact().expect("solutions");
     let ranked = sol
         .ranked_interpolants(&data, &pow2(-80), &pow2(-40))

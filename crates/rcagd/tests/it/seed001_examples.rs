@@ -850,18 +850,25 @@ fn examples_8_8_and_8_9_h4_w0() {
 
 // ------------------------------------------------------------------ chapter 9
 
+/// The data of Besednjak's Example 9.1 (`p_s = 0`, `d_s = (1,0,1)`, `p_f = (1,1,1)`,
+/// `d_f = (0,1,1)`), shared by the tests of the Hermite solver, its enclosures and the
+/// library-first API.
+pub(crate) fn example_9_1_data() -> HermiteData<Q> {
+    HermiteData::new(
+        origin(),
+        [qi(1), qi(0), qi(1)],
+        [qi(1), qi(1), qi(1)],
+        [qi(0), qi(1), qi(1)],
+    )
+}
+
 /// Besednjak Example 9.1: `p_s = 0`, `d_s = (1,0,1)`, `p_f = (1,1,1)`, `d_f = (0,1,1)`.
 /// Four real roots, two admissible, four interpolants; values as printed (docs/math/ph-curves.md:
 /// "All claims hold"); the printed axis of the ξ₂ pair is the opposite vector with
 /// ψ = 148.728°, equivalent to ours (ψ = 31.2717°).
 #[test]
 fn example_9_1_hermite() {
-    let data = HermiteData::new(
-        origin(),
-        [qi(1), qi(0), qi(1)],
-        [qi(1), qi(1), qi(1)],
-        [qi(0), qi(1), qi(1)],
-    );
+    let data = example_9_1_data();
     let sol = data.solve_exact().expect("solutions");
     assert!(
         sol.m.is_rational(),
