@@ -617,37 +617,65 @@ impl<R: Ring> Ring for MPoly<R> {
     }
 }
 
+impl<R: Ring> MPoly<R> {
+    /// The polynomial as text, highest exponent vector first, terms joined by `" + "`:
+    /// variable `i` written `var(i)` (with `^d` for a power `d > 1`), the factors of a
+    /// monomial joined by `times`, a coefficient written `coefficient(c, alone)` (`alone`:
+    /// the constant term) and left out where it is 1 in front of a monomial; `"0"` for the
+    /// zero polynomial.
+    pub fn format_with(
+        &self,
+        var: impl Fn(usize) -> String,
+        times: &str,
+        coefficient: impl Fn(&R, bool) -> String,
+    ) -> String {
+        if self.terms.is_empty() {
+            return "0".into();
+        }
+        self.terms
+            .iter()
+            .rev()
+            .map(|(e, c)| {
+                let mono: Vec<String> = e
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, &d)| d > 0)
+                    .map(|(i, &d)| {
+                        if d == 1 {
+                            var(i)
+                        } else {
+                            format!("{}^{d}", var(i))
+                        }
+                    })
+                    .collect();
+                if mono.is_empty() {
+                    coefficient(c, true)
+                } else if c.is_one() {
+                    mono.join(times)
+                } else {
+                    format!("{}{times}{}", coefficient(c, false), mono.join(times))
+                }
+            })
+            .collect::<Vec<_>>()
+            .join(" + ")
+    }
+}
+
 impl<R: Ring + fmt::Display> fmt::Display for MPoly<R> {
     /// `c·x0^2·x1 + …`, highest exponent vector first; `0` for the zero polynomial.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.terms.is_empty() {
-            return write!(f, "0");
-        }
-        for (k, (e, c)) in self.terms.iter().rev().enumerate() {
-            if k > 0 {
-                write!(f, " + ")?;
-            }
-            let mono: Vec<String> = e
-                .iter()
-                .enumerate()
-                .filter(|(_, &d)| d > 0)
-                .map(|(i, &d)| {
-                    if d == 1 {
-                        format!("x{i}")
-                    } else {
-                        format!("x{i}^{d}")
-                    }
-                })
-                .collect();
-            if mono.is_empty() {
-                write!(f, "{c}")?;
-            } else if c.is_one() {
-                write!(f, "{}", mono.join("*"))?;
-            } else {
-                write!(f, "({c})*{}", mono.join("*"))?;
-            }
-        }
-        Ok(())
+        let text = self.format_with(
+            |i| format!("x{i}"),
+            "*",
+            |c, alone| {
+                if alone {
+                    format!("{c}")
+                } else {
+                    format!("({c})")
+                }
+            },
+        );
+        f.write_str(&text)
     }
 }
 
@@ -807,5 +835,22 @@ mod tests {
         assert_eq!(format!("{}", M::zero(2)), "0");
         let s = format!("{}", circle());
         assert!(s.contains("x0^2") && s.contains("x1^2"), "{s}");
+        // 3·x0²·x1 + x1 − 2/5, highest exponent vector first
+        let p = M::from_terms(
+            2,
+            vec![
+                (vec![0, 0], q(-2) / q(5)),
+                (vec![0, 1], q(1)),
+                (vec![2, 1], q(3)),
+            ],
+        )
+        .unwrap();
+        assert_eq!(format!("{p}"), "(3)*x0^2*x1 + x1 + -2/5");
+        let styled = p.format_with(
+            |i| ["s", "t"][i].to_string(),
+            "·",
+            |c, alone| if alone { format!("[{c}]") } else { c.to_string() },
+        );
+        assert_eq!(styled, "3·s^2·t + t + [-2/5]");
     }
 }

@@ -296,36 +296,9 @@ pub fn rational_poly(p: &Poly<QuadExt>) -> Option<Poly<Q>> {
         .map(Poly::new)
 }
 
-/// `c·y1^a·y2^b + …` (highest exponents first).
+/// `c·y1^a·y2^b + …` (highest exponents first; [`MPoly::format_with`]).
 pub fn format_mpoly(p: &MPoly<Q>) -> String {
-    let mut terms: Vec<(Vec<u32>, Q)> = p.terms().map(|(e, c)| (e.to_vec(), c.clone())).collect();
-    if terms.is_empty() {
-        return "0".into();
-    }
-    terms.sort_by(|a, b| b.0.cmp(&a.0));
-    terms
-        .iter()
-        .map(|(e, c)| {
-            let mono: Vec<String> = e
-                .iter()
-                .enumerate()
-                .filter(|(_, &d)| d > 0)
-                .map(|(i, &d)| {
-                    if d == 1 {
-                        format!("y{}", i + 1)
-                    } else {
-                        format!("y{}^{d}", i + 1)
-                    }
-                })
-                .collect();
-            match (mono.is_empty(), num_traits::One::is_one(c)) {
-                (true, _) => format_rational(c),
-                (false, true) => mono.join("·"),
-                (false, false) => format!("{}·{}", format_rational(c), mono.join("·")),
-            }
-        })
-        .collect::<Vec<_>>()
-        .join(" + ")
+    p.format_with(|i| format!("y{}", i + 1), "·", |c, _| format_rational(c))
         .replace("+ -", "− ")
 }
 
