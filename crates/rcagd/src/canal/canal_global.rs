@@ -561,6 +561,19 @@ pub fn check_canal_embedded(
     spine: &CanalSpine<Rational>,
     domain: (&Rational, &Rational),
 ) -> Result<Certificate, CanalError> {
+    check_canal_embedded_within(spine, domain, (CANAL_GLOBAL_DEPTH, CANAL_GLOBAL_BOXES))
+}
+
+/// [`check_canal_embedded`] with other limits `(halvings, boxes)` of the subdivision.
+///
+/// # Errors
+/// As [`check_canal_embedded`].
+pub fn check_canal_embedded_within(
+    spine: &CanalSpine<Rational>,
+    domain: (&Rational, &Rational),
+    limits: (u32, usize),
+) -> Result<Certificate, CanalError> {
+    let (max_depth, max_boxes) = limits;
     let (a, b) = domain;
     spine.check_real_envelope(Some((a, b)))?;
     super::regularity::check_canal_regularity(spine, (a, b))?;
@@ -602,7 +615,7 @@ pub fn check_canal_embedded(
                 });
             }
         }
-        if level >= CANAL_GLOBAL_DEPTH || boxes + queue.len() + 4 > CANAL_GLOBAL_BOXES {
+        if level >= max_depth || boxes + queue.len() + 4 > max_boxes {
             return Err(CanalError::CanalPartsNotApart {
                 first: search.interval(level, i),
                 second: search.interval(level, j),

@@ -76,7 +76,10 @@ pub use blend::{
     blend_sphere_plane, blend_sphere_plane_f64, blend_spheres, blend_spheres_f64, BlendEnd,
     BlendSpine, PlaneEnd, SphereBlend, SpherePlaneBlend,
 };
-pub use canal_global::{check_canal_embedded, discs_meet, CANAL_GLOBAL_BOXES, CANAL_GLOBAL_DEPTH};
+pub use canal_global::{
+    check_canal_embedded, check_canal_embedded_within, discs_meet, CANAL_GLOBAL_BOXES,
+    CANAL_GLOBAL_DEPTH,
+};
 pub use cyclographic_param::{canal_surface_rational, CyclographicCanal, RationalCanal};
 pub use envelope::{
     canal_surface, canal_surface_approx, canal_surface_f64, canal_surface_with_split,

@@ -3,7 +3,9 @@
 //! docs/math/pipes.md#canal-global).
 
 use proptest::prelude::*;
-use rcagd::canal::{check_canal_embedded, check_pipe_embedded, CanalError, CanalSpine};
+use rcagd::canal::{
+    check_canal_embedded, check_canal_embedded_within, check_pipe_embedded, CanalError, CanalSpine,
+};
 use rcagd::ph::PhCurve;
 use rcagd_algebra::quaternion::Quaternion;
 use rcagd_algebra::{parse_rational, Poly, Rational, Scalar};
@@ -177,6 +179,33 @@ fn embedded_canal_of_varying_radius_is_certified() {
     assert!(c.holds && c.exact, "{c:?}");
 }
 
+/// The work is bounded: with too few halvings or boxes the answer is "undecided", naming a
+/// box, never a hang or a guess.
+#[test]
+fn limits_give_an_undecided_error_naming_the_box() {
+    let r = poly(&[q(1, 10), q(0, 1), q(1, 40)]);
+    let s = lifted_loop(r);
+    let (a, b) = (q(-3, 2), q(3, 2));
+    for limits in [(2, 40_000), (12, 20)] {
+        match check_canal_embedded_within(&s, (&a, &b), limits) {
+            Err(CanalError::CanalPartsNotApart {
+                first,
+                second,
+                boxes,
+            }) => {
+                assert!(
+                    first.starts_with('[') && second.ends_with(']'),
+                    "{first} {second}"
+                );
+                assert!(boxes <= limits.1, "{boxes}");
+            }
+            other => panic!("{limits:?}: {other:?}"),
+        }
+    }
+    // the default limits decide it
+    assert!(check_canal_embedded_within(&s, (&a, &b), (12, 40_000)).is_ok());
+}
+
 #[test]
 fn canal_whose_far_parts_come_too_close_is_refused_with_the_intervals() {
     // r = (1 + t²/4)/4: at t = ±1 the spheres have radius 5/16, the points are 2/5 apart
@@ -305,7 +334,9 @@ proptest! {
         if rcagd::canal::check_canal_regularity(&s, (&a, &b)).is_err() {
             return Ok(());
         }
-        match check_canal_embedded(&s, (&a, &b)) {
+        let outcome = check_canal_embedded(&s, (&a, &b));
+        eprintln!("lifted loop ε = {e}/40, r = {r0}/40 + {slope}/80 s: {:?}", outcome.as_ref().map(|_| "certified"));
+        match outcome {
             Ok(cert) => {
                 prop_assert!(cert.holds && cert.exact);
                 assert_sampled_discs_apart(&s, &a, &b, 16);
