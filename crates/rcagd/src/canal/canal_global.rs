@@ -48,9 +48,9 @@ use std::collections::{HashMap, VecDeque};
 use std::rc::Rc;
 
 /// Most halvings of the parameter interval in [`check_canal_embedded`].
-pub const CANAL_GLOBAL_DEPTH: u32 = 12;
+pub const CANAL_GLOBAL_DEPTH: u32 = 16;
 /// Most boxes of parameter pairs [`check_canal_embedded`] examines.
-pub const CANAL_GLOBAL_BOXES: usize = 40_000;
+pub const CANAL_GLOBAL_BOXES: usize = 20_000;
 
 type P = Poly<Rational>;
 
