@@ -127,7 +127,9 @@ fn canal_err(e: CanalError, spine_param: &'static str, radius_param: &'static st
     match &e {
         CanalError::NoRealEnvelope { .. }
         | CanalError::ZeroRadius
-        | CanalError::SingularCanal { .. } => OpError::param(radius_param, e.to_string()),
+        | CanalError::SingularCanal { .. }
+        | CanalError::CanalSelfIntersects { .. }
+        | CanalError::CanalPartsNotApart { .. } => OpError::param(radius_param, e.to_string()),
         CanalError::DegenerateSpine(_) => OpError::param(spine_param, e.to_string()),
         _ => OpError::new(e.to_string()),
     }
@@ -476,7 +478,7 @@ const ORIENTATION: ParamSpec = ParamSpec::with_default(
 
 const CANAL_SURFACE: OpSpec = OpSpec {
     name: "canal_surface",
-    summary: "the rational canal surface (envelope of spheres) of a rational spine and a polynomial radius on t ∈ [0, 1], exact over Q, by Peternell–Pottmann (Gruber §2.1) or Krasauskas' reduced pencil (§2.4), by default whichever exports with fewer control points",
+    summary: "the rational canal surface (envelope of spheres) of a rational spine and a polynomial radius on t ∈ [0, 1], exact over Q, by Peternell–Pottmann (Gruber §2.1) or Krasauskas' reduced pencil (§2.4), by default whichever exports with fewer control points; no local self-intersection and that no two characteristic discs meet (no global self-intersection) are certified exactly",
     params: &[
         ParamSpec::required("points", ParamKind::Points, "control points [x, y, z] of the spine m(t), t ∈ [0, 1]").degree(),
         ParamSpec::optional("weights", ParamKind::Numbers, "spine weights (default all 1)"),
@@ -596,9 +598,7 @@ fn build_canal_surface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         e => canal_err(e, "points", "radius"),
     })?;
     match built {
-        RationalCanal::Spine(s, regular) => {
-            Ok(vec![canal_object(args, &s, regular.into_iter().collect())?])
-        }
+        RationalCanal::Spine(s, regular) => Ok(vec![canal_object(args, &s, regular)?]),
         RationalCanal::Cyclographic(c) => Ok(vec![args.object(
             Geometry::Patches(c.patches().to_vec()),
             c.certify(),

@@ -44,9 +44,10 @@ use rcagd_geom::BezierPatch;
 #[derive(Debug, Clone)]
 pub enum RationalCanal {
     /// Peternell–Pottmann or Krasauskas, over `Q` ([`canal_surface_pole_free`]), with the
-    /// certificate of no local self-intersection on the domain of the options
-    /// ([`super::check_canal_regularity`]; `None` without a domain).
-    Spine(Box<CanalSurface<Rational>>, Option<Certificate>),
+    /// certificates of no local self-intersection ([`super::check_canal_regularity`]) and
+    /// of no global one ([`super::check_canal_embedded`]) on the domain of the options
+    /// (none without a domain).
+    Spine(Box<CanalSurface<Rational>>, Vec<Certificate>),
     /// `Γ(s, t)` on a rectangle of Ω(s, t) (module docs).
     Cyclographic(Box<CyclographicCanal>),
 }
@@ -184,12 +185,15 @@ impl Certified for CyclographicCanal {
 /// parametrization `Γ(s, t)` on `cyclographic_domain = [s₀, s₁, t₀, t₁]` (module docs).
 ///
 /// A surface in the spine parameter is checked for local self-intersections on the domain of
-/// `options` ([`super::check_canal_regularity`]), `Γ` on its rectangle
+/// `options` ([`super::check_canal_regularity`]) and for global ones (no two characteristic
+/// discs meet, [`super::check_canal_embedded`]), `Γ` for local ones on its rectangle
 /// ([`super::check_cyclographic_regularity`]).
 ///
 /// # Errors
 /// The errors of [`canal_surface_pole_free`]; [`CanalError::SingularCanal`] where the
 /// surface in the spine parameter intersects itself locally on the domain of `options`;
+/// [`CanalError::CanalSelfIntersects`] where two of its characteristic discs meet
+/// (globally), [`CanalError::CanalPartsNotApart`] where that is undecided;
 /// [`CanalError::SingularCyclographic`] where `Γ` is singular on the rectangle;
 /// [`CanalError::IrrationalSplit`] when the
 /// spine-parameter constructions need `Q(√d)` and `Γ` does not apply (degree > 2 or a
@@ -203,10 +207,13 @@ pub fn canal_surface_rational(
 ) -> Result<RationalCanal, CanalError> {
     let radicand = match canal_surface_pole_free(spine, options)? {
         CanalBuild::Rational(s) => {
-            // no local self-intersection on the spine domain (decided exactly)
+            // no local and no global self-intersection on the spine domain (decided exactly)
             let regular = match &options.domain {
-                Some((a, b)) => Some(super::regularity::check_canal_regularity(spine, (a, b))?),
-                None => None,
+                Some((a, b)) => vec![
+                    super::regularity::check_canal_regularity(spine, (a, b))?,
+                    super::canal_global::check_canal_embedded(spine, (a, b))?,
+                ],
+                None => Vec::new(),
             };
             return Ok(RationalCanal::Spine(Box::new(s), regular));
         }

@@ -28,6 +28,8 @@
 //! * [`blend`]: canal-surface blends between two spheres (or a sphere and a plane) with
 //!   prescribed contact circles.
 //!
+//! * [`canal_global`]: the global check of any canal surface (no two characteristic discs
+//!   meet), by exact subdivision of parameter pairs;
 //! * [`cyclographic_param`]: the cyclographic parametrization `Γ(s, t)` (Gruber §2.3) of a
 //!   quadratic family as the rational fallback when the spine-parameter constructions need
 //!   `Q(√d)` ([`canal_surface_rational`]);
@@ -55,6 +57,7 @@ pub mod approximate_pipe;
 pub mod bipoly;
 pub mod blend;
 pub mod blend_charts;
+pub mod canal_global;
 pub mod cyclographic_param;
 pub mod envelope;
 pub mod exportable;
@@ -72,6 +75,10 @@ pub use bipoly::BiPoly;
 pub use blend::{
     blend_sphere_plane, blend_sphere_plane_f64, blend_spheres, blend_spheres_f64, BlendEnd,
     BlendSpine, PlaneEnd, SphereBlend, SpherePlaneBlend,
+};
+pub use canal_global::{
+    check_canal_embedded, check_canal_embedded_within, discs_meet, CANAL_GLOBAL_BOXES,
+    CANAL_GLOBAL_DEPTH,
 };
 pub use cyclographic_param::{canal_surface_rational, CyclographicCanal, RationalCanal};
 pub use envelope::{
@@ -227,6 +234,30 @@ pub enum CanalError {
         to: String,
         /// A rational parameter inside the interval.
         witness: String,
+    },
+    /// Two characteristic circles of a canal surface (any radius) bound discs that meet: the
+    /// surface intersects itself ([`canal_global::check_canal_embedded`], exact witness).
+    #[error("the canal surface intersects itself: the characteristic circles over t in {first} and over t in {second} come too close — the discs they bound meet at t = {t} and t = {s} (decided exactly, docs/math/pipes.md#canal-global); change the radius or the spine, or shrink the domain")]
+    CanalSelfIntersects {
+        /// The first parameter interval.
+        first: String,
+        /// The second parameter interval.
+        second: String,
+        /// A parameter in `first` (exact rational).
+        t: String,
+        /// A parameter in `second` whose disc meets the disc at `t` (exact rational).
+        s: String,
+    },
+    /// The characteristic discs over two parameter intervals could be shown neither disjoint
+    /// nor meeting within the subdivision limits ([`canal_global::check_canal_embedded`]).
+    #[error("the parts of the canal surface over t in {first} and over t in {second} could not be shown apart: after {boxes} boxes of exact subdivision their characteristic discs are neither shown disjoint nor found to meet (undecided: they nearly touch there, docs/math/pipes.md#canal-global)")]
+    CanalPartsNotApart {
+        /// The first parameter interval.
+        first: String,
+        /// The second parameter interval.
+        second: String,
+        /// How many boxes were examined.
+        boxes: usize,
     },
     /// The cyclographic parametrization `Γ(s, t)` of a canal surface is singular at a point
     /// of its rectangle ([`regularity::check_cyclographic_regularity`]).

@@ -3,6 +3,7 @@
 
 mod budget_rayon;
 mod canal_cyclographic;
+mod canal_global;
 mod canal_hypersurface;
 mod canal_krasauskas_ext;
 mod canal_props;
