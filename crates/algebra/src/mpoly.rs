@@ -849,7 +849,13 @@ mod tests {
         let styled = p.format_with(
             |i| ["s", "t"][i].to_string(),
             "·",
-            |c, alone| if alone { format!("[{c}]") } else { c.to_string() },
+            |c, alone| {
+                if alone {
+                    format!("[{c}]")
+                } else {
+                    c.to_string()
+                }
+            },
         );
         assert_eq!(styled, "3·s^2·t + t + [-2/5]");
     }

@@ -157,6 +157,11 @@ pub const FLOAT_OPS: &[FloatOp] = &[
         note: "the curve only: the display objects (`frame`, `comb`, `feed`) are refused; `arc_length` is an f64 value",
     },
     FloatOp {
+        name: "ph_hermite",
+        build: ops::ph::build_ph_hermite_f64,
+        note: "roots by Sturm sequences in f64, interpolants ranked by their f64 bending energy, f64 certificates (the exact op encloses every interpolant from its exact root over Q(|d_s||d_f|))",
+    },
+    FloatOp {
         name: "ph_planar_curve",
         build: ops::ph_planar::build_curve::<f64>,
         note: "`arc_length` is an f64 value",
@@ -183,7 +188,6 @@ pub const FLOAT_OPS: &[FloatOp] = &[
 pub const NO_FLOAT_PATH: &[(&str, &str)] = &[
     ("quadric_interpolate", "not yet written (the interpolation solves a linear system over Q and picks a rational point; an f64 version needs its own pivoting rule)"),
     ("quadric_miquel_patch", "not yet written (it chooses among sign flips by exact weight signs)"),
-    ("ph_hermite", "exact-only algebra: the interpolants live in a quadratic field Q(√d) and are enclosed and rounded to rationals exactly"),
     ("ph_dph_septic", "exact-only algebra: exact real roots of the z-polynomial"),
     ("ph_spatial_hermite", "exact-only algebra: the branches live in quadratic fields"),
     ("pipe", "exact-only algebra: the op searches the splittings of |m′|² as sums of two squares over Q (Gaussian factorizations, every frame and method) and keeps the smallest with positive weights; an f64 pipe (`rcagd::canal::pipe_around_ph::<f64>`) would be a different parametrization, so it is not offered as the same construction"),

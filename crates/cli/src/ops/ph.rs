@@ -720,6 +720,69 @@ fn build_ph_hermite(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     Ok(out)
 }
 
+/// `ph_hermite` in `f64` (the float path, `rcagd build --float`): the same algorithm with
+/// roots by Sturm sequences in floating point ([`HermiteData::solve_f64`]), the
+/// interpolants ranked by their `f64` bending energy and named as by the exact op
+/// (`NAME`, `NAME_2`, `NAME_3_min`, …), each with its `f64` certificates (the root
+/// certificates on the first). The exact op works in `Q(|d_s||d_f|)` and encloses every
+/// interpolant from its exact root; no such proof is made here.
+pub(crate) fn build_ph_hermite_f64(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let data = HermiteData::<Q>::new(
+        point3(args, "p_s")?,
+        point3(args, "d_s")?,
+        point3(args, "p_f")?,
+        point3(args, "d_f")?,
+    );
+    let sol = data.solve_f64()?;
+    let certs = sol.certify();
+    let mut order: Vec<usize> = (0..sol.interpolants.len()).collect();
+    order.sort_by(|a, b| {
+        let e = |i: &usize| sol.interpolants.get(*i).map_or(f64::NAN, |s| s.bending_energy);
+        e(a).total_cmp(&e(b))
+    });
+    let mut out = Vec::with_capacity(order.len());
+    for (k, &i) in order.iter().enumerate() {
+        let s = sol
+            .interpolants
+            .get(i)
+            .ok_or_else(|| OpError::new("internal error: an interpolant out of range"))?;
+        let prefix = format!("interpolant {i}");
+        let mut own: Vec<Certificate> = certs
+            .iter()
+            .filter(|c| {
+                c.property.starts_with(&format!("{prefix}:"))
+                    || c.property.starts_with(&format!("{prefix} "))
+            })
+            .cloned()
+            .collect();
+        if k == 0 {
+            own.extend(
+                certs
+                    .iter()
+                    .filter(|c| !c.property.starts_with("interpolant "))
+                    .cloned(),
+            );
+        }
+        let bez = f64::exact_curve(s.curve.to_bezier()?)?;
+        let name = match (k, s.least_energy) {
+            (0, _) => args.name().to_string(),
+            (_, true) => format!("{}_{}_min", args.name(), k + 1),
+            (_, false) => format!("{}_{}", args.name(), k + 1),
+        };
+        let mut values = hermite_interpolant_values(s, None, k + 1, false);
+        if k == 0 {
+            values.push(NamedQuantity::new(
+                "interpolants",
+                "number of interpolating helical quintics",
+                Quantity::Integer(sol.interpolants.len() as i64),
+            ));
+        }
+        let o = named(args, name, Geometry::Curve(bez), own).with_values(values);
+        out.push(<f64 as OpScalar>::finish(o));
+    }
+    Ok(out)
+}
+
 /// The values of the whole Hermite problem (on the least-energy object): the elimination
 /// quartic, its real roots (exact, or with an exact isolating interval), counts.
 fn hermite_problem_values(sol: &HermiteSolution<QuadExt>) -> Vec<NamedQuantity> {

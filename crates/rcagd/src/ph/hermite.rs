@@ -546,6 +546,10 @@ impl<K: Scalar> HermiteSolution<K> {
         let mut certs = Vec::new();
         let chain = sturm_chain(&self.quartic);
         for (i, r) in self.roots.iter().enumerate() {
+            if !K::EXACT {
+                certs.push(f64_root_certificate(i, &self.quartic, r));
+                continue;
+            }
             let count = if r.exact.is_some() {
                 1
             } else {
@@ -601,6 +605,32 @@ impl<K: Scalar> HermiteSolution<K> {
         }
         certs
     }
+}
+
+/// The `f64` root certificate: a Sturm count evaluated in floating point is not
+/// reliable (its sequence's signs near a root are rounding), so in `f64` the root `i` is
+/// certified by a sign change of `Q` at the ends of its interval, or by `|Q(s)|` within
+/// rounding of its terms, `|Q(s)| ≤ 10⁻⁹ Σ|q_k||s|^k` (an even-multiplicity root has no
+/// sign change).
+fn f64_root_certificate<K: Scalar>(i: usize, quartic: &Poly<K>, r: &HermiteRoot<K>) -> Certificate {
+    let coeffs: Vec<f64> = quartic.coeffs().iter().map(Scalar::to_f64).collect();
+    let eval = |x: f64| coeffs.iter().rev().fold(0.0, |acc, c| acc * x + c);
+    let size = |x: f64| {
+        coeffs
+            .iter()
+            .rev()
+            .fold(0.0, |acc, c| acc * x.abs() + c.abs())
+    };
+    let (lo, hi) = (r.lo.to_f64(), r.hi.to_f64());
+    let (a, b, at) = (eval(lo), eval(hi), eval(r.s));
+    let change = a * b <= 0.0;
+    let small = at.abs() <= 1e-9 * size(r.s);
+    Certificate::decide(
+        format!("root {i}: the quartic Q(s) has a real root in its interval (f64: a sign change at its ends, or |Q(s)| within rounding of its terms)"),
+        change || small,
+        false,
+        || format!("Q(lo) = {a:e}, Q(hi) = {b:e}, Q(s) = {at:e}"),
+    )
 }
 
 impl<K: Scalar> crate::Certified for HermiteSolution<K> {
