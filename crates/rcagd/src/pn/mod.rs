@@ -38,6 +38,7 @@
 //! `x_d − x ≡ d n`; exact polynomial identities over `Rational`.
 
 pub mod developable;
+pub mod focal;
 pub mod hypercyclide;
 pub mod isotropic;
 pub mod modeling;
