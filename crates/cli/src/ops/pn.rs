@@ -1463,6 +1463,13 @@ fn build_hypercyclide(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     hypercyclide_objects(args, &h)
 }
 
+const REPARAMETRIZE: ParamSpec = ParamSpec::with_default(
+    "reparametrize",
+    ParamKind::Choice(&["none", "quadric"]),
+    "\"none\"",
+    "\"quadric\": if Δ is not a square but its odd part δ has degree 1 or 2, reparametrize (u, v) by the stereographic projection of the quadric w² = δ(u, v) from a rational point (docs/math/hypercyclides.md#non-square-delta); the domain is then in the new parameters",
+);
+
 const CYCLOGRAPHIC_SURFACE: OpSpec = OpSpec {
     name: "cyclographic_surface",
     summary: "the cyclographic image of a rational 2-surface s(u, v) = (m; r) of R⁴ (Peternell §3.9, Lemma 3.5): one sheet of the envelope of its cycles, rational when Δ is a square (one sheet for a γ-surface), as a PN surface",
@@ -1478,6 +1485,7 @@ const CYCLOGRAPHIC_SURFACE: OpSpec = OpSpec {
             "1",
             "which sheet of the image: 1 or 2 (a γ-surface has only sheet 1)",
         ),
+        REPARAMETRIZE,
         DOMAIN,
         OFFSET,
         ORIENTATION,
@@ -1525,8 +1533,14 @@ fn cyclographic_sheet(args: &OpArgs) -> Result<(CyclographicImage, usize), OpErr
         Some(d) => poly_from_grid(&d)?,
         None => poly_io::mpoly_constant(2, Q::from(1)),
     };
-    let img = CyclographicImage::new([g("x")?, g("y")?, g("z")?, g("r")?], w)
-        .map_err(blame("r"))?;
+    let s = [g("x")?, g("y")?, g("z")?, g("r")?];
+    let img = if args.string("reparametrize")? == "quadric" {
+        CyclographicImage::reparametrized(s, w)
+            .map_err(blame("reparametrize"))?
+            .0
+    } else {
+        CyclographicImage::new(s, w).map_err(blame("r"))?
+    };
     let k = args.int("sheet")?;
     let i = usize::try_from(k - 1)
         .ok()
@@ -1558,6 +1572,7 @@ const CYCLOGRAPHIC_SECTION: OpSpec = OpSpec {
             "1",
             "which sheet of the image: 1 or 2 (a γ-surface has only sheet 1)",
         ),
+        REPARAMETRIZE,
         ParamSpec::required(
             "hyperplane",
             ParamKind::Numbers,
