@@ -884,6 +884,49 @@ mod focal_surfaces_and_sections {
         assert!(matches!(e, Err(PnError::InvalidInput(_))), "{e:?}");
     }
 
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(8))]
+        /// Random separable graphs `F = f(u) + g(v)` (`f, g` cubics with random exact
+        /// coefficients; rational principal radii): both focal sheets certify exactly, every
+        /// radius is a root of the offsets' regularity quadratic at `δ = −r` (independent),
+        /// and a random hyperplane section of `Γ(φ)` certifies exactly.
+        #[test]
+        fn random_separable_graphs_have_certified_focal_sheets_and_sections(
+            c in proptest::array::uniform4(-4i64..5),
+            h in proptest::array::uniform5(-3i64..4),
+        ) {
+            let cube = |x: &MPoly<Q>| &(x * x) * x;
+            let f = &(&(&cube(&u()).scale(&q(c[0], 6)) + &(&u() * &u()).scale(&q(c[1], 2)))
+                + &cube(&v()).scale(&q(c[2], 6)))
+                + &(&v() * &v()).scale(&q(c[3], 2));
+            let s = IsotropicSurface::graph_poly(f).to_pn_surface().expect("PN");
+            match FocalSurfaces::new(&s) {
+                Ok(foc) => {
+                    for cert in foc.certify() {
+                        proptest::prop_assert!(cert.holds && cert.exact, "{}", cert);
+                    }
+                    let (a, b) = (q(2, 3), q(-3, 5));
+                    for sh in foc.sheets() {
+                        if let Some(r) = sh.radius(&a, &b) {
+                            proptest::prop_assert!(is_principal_radius(&s, &a, &b, &r));
+                        }
+                    }
+                }
+                // F quadratic with equal coefficients is a sphere's graph or a plane
+                Err(e) => proptest::prop_assert!(
+                    c[0] == 0 && c[2] == 0 && c[1] == c[3],
+                    "{e:?}"
+                ),
+            }
+            let hq: [Q; 5] = std::array::from_fn(|i| q(h[i], 1));
+            if let Ok(sec) = GammaSection::new(&s, hq) {
+                for cert in sec.certify() {
+                    proptest::prop_assert!(cert.holds && cert.exact, "{}", cert);
+                }
+            }
+        }
+    }
+
     /// A surface whose principal radii are irrational: `D` is not a square, a named error.
     #[test]
     fn irrational_principal_radii_are_a_named_error() {
