@@ -18,6 +18,7 @@ use crate::model::{Geometry, Object};
 use crate::value::{ParamKind, Value};
 use rcagd::laguerre::LaguerreMap;
 use rcagd::pn::developable::DevelopablePn;
+use rcagd::pn::focal::{FocalSurfaces, GammaSection};
 use rcagd::pn::hypercyclide::{QuadricPn, CyclographicImage, Hypercyclide, PeSimilarity, RegularQuadric};
 use rcagd::pn::modeling::{HermiteDatum, PnModel};
 use rcagd::laguerre::Cycle;
@@ -58,6 +59,8 @@ pub const OPS: &[OpSpec] = &[
     PN_TWO_SHEET,
     HYPERCYCLIDE,
     CYCLOGRAPHIC_SURFACE,
+    CYCLOGRAPHIC_SECTION,
+    PN_FOCAL_SURFACE,
     PN_LAGUERRE,
     PN_ANTICAUSTIC,
     PN_PLANAR,
@@ -1460,6 +1463,13 @@ fn build_hypercyclide(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     hypercyclide_objects(args, &h)
 }
 
+const REPARAMETRIZE: ParamSpec = ParamSpec::with_default(
+    "reparametrize",
+    ParamKind::Choice(&["none", "quadric"]),
+    "\"none\"",
+    "\"quadric\": if Δ is not a square but its odd part δ has degree 1 or 2, reparametrize (u, v) by the stereographic projection of the quadric w² = δ(u, v) from a rational point (docs/math/hypercyclides.md#non-square-delta); the domain is then in the new parameters",
+);
+
 const CYCLOGRAPHIC_SURFACE: OpSpec = OpSpec {
     name: "cyclographic_surface",
     summary: "the cyclographic image of a rational 2-surface s(u, v) = (m; r) of R⁴ (Peternell §3.9, Lemma 3.5): one sheet of the envelope of its cycles, rational when Δ is a square (one sheet for a γ-surface), as a PN surface",
@@ -1475,6 +1485,7 @@ const CYCLOGRAPHIC_SURFACE: OpSpec = OpSpec {
             "1",
             "which sheet of the image: 1 or 2 (a γ-surface has only sheet 1)",
         ),
+        REPARAMETRIZE,
         DOMAIN,
         OFFSET,
         ORIENTATION,
@@ -1496,28 +1507,8 @@ domain = [-1, 1, -1, 1]
 };
 
 fn build_cyclographic_surface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let g = |p: &'static str| -> Result<MPolyQ, OpError> {
-        poly_from_grid(&args.opt_grid(p)?.unwrap_or_default())
-    };
-    let w = match args.opt_grid("denominator")? {
-        Some(d) => poly_from_grid(&d)?,
-        None => poly_io::mpoly_constant(2, Q::from(1)),
-    };
-    let img = CyclographicImage::new([g("x")?, g("y")?, g("z")?, g("r")?], w)
-        .map_err(blame("r"))?;
-    let k = args.int("sheet")?;
-    let sheet = usize::try_from(k - 1)
-        .ok()
-        .and_then(|i| img.sheets().get(i))
-        .ok_or_else(|| {
-            OpError::param(
-                "sheet",
-                format!(
-                    "the image has {} sheet(s) (a γ-surface has one), got sheet {k}",
-                    img.sheets().len()
-                ),
-            )
-        })?;
+    let (img, k) = cyclographic_sheet(args)?;
+    let sheet = img.sheets().get(k).ok_or_else(|| OpError::param("sheet", "no such sheet"))?;
     let mut certs = img.image_certificates(sheet);
     if let Some(d) = main_offset(args)? {
         certs.extend(img.image_certificates(sheet.offset(d).surface()));
@@ -1530,6 +1521,178 @@ fn build_cyclographic_surface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         }
     }
     Ok(objs)
+}
+
+/// The cyclographic image of the `cyclographic_surface` / `cyclographic_section`
+/// parameters and the index of the sheet asked for.
+fn cyclographic_sheet(args: &OpArgs) -> Result<(CyclographicImage, usize), OpError> {
+    let g = |p: &'static str| -> Result<MPolyQ, OpError> {
+        poly_from_grid(&args.opt_grid(p)?.unwrap_or_default())
+    };
+    let w = match args.opt_grid("denominator")? {
+        Some(d) => poly_from_grid(&d)?,
+        None => poly_io::mpoly_constant(2, Q::from(1)),
+    };
+    let s = [g("x")?, g("y")?, g("z")?, g("r")?];
+    let img = if args.string("reparametrize")? == "quadric" {
+        CyclographicImage::reparametrized(s, w)
+            .map_err(blame("reparametrize"))?
+            .0
+    } else {
+        CyclographicImage::new(s, w).map_err(blame("r"))?
+    };
+    let k = args.int("sheet")?;
+    let i = usize::try_from(k - 1)
+        .ok()
+        .filter(|i| *i < img.sheets().len())
+        .ok_or_else(|| {
+            OpError::param(
+                "sheet",
+                format!(
+                    "the image has {} sheet(s) (a γ-surface has one), got sheet {k}",
+                    img.sheets().len()
+                ),
+            )
+        })?;
+    Ok((img, i))
+}
+
+const CYCLOGRAPHIC_SECTION: OpSpec = OpSpec {
+    name: "cyclographic_section",
+    summary: "the section Γ(φ) ∩ π of the γ-hypersurface of the cyclographic image of a rational 2-surface s(u, v) = (m; r) of R⁴ by a hyperplane π of R⁴ (Peternell §3.9): the cycle of π in oriented contact with each surface element, drawn by its top view; for π ∥ R³ (y₄ = c) the top view is the offset at distance −c",
+    params: &[
+        ParamSpec::required("x", ParamKind::Grid, "power coefficients c[i][j] of u^i v^j of the numerator of m₁").degree(),
+        ParamSpec::required("y", ParamKind::Grid, "numerator of m₂ (same layout)"),
+        ParamSpec::required("z", ParamKind::Grid, "numerator of m₃ (same layout)"),
+        ParamSpec::required("r", ParamKind::Grid, "numerator of the radius r (same layout)"),
+        DENOMINATOR,
+        ParamSpec::with_default(
+            "sheet",
+            ParamKind::Int,
+            "1",
+            "which sheet of the image: 1 or 2 (a γ-surface has only sheet 1)",
+        ),
+        REPARAMETRIZE,
+        ParamSpec::required(
+            "hyperplane",
+            ParamKind::Numbers,
+            "π: h₀ + h₁y₁ + h₂y₂ + h₃y₃ + h₄y₄ = 0 as [h₀, h₁, h₂, h₃, h₄]; [−c, 0, 0, 0, 1] is y₄ = c",
+        ),
+        DOMAIN,
+    ],
+    example: r#"[[object]]
+name = "cyclographic_section_offset"
+op = "cyclographic_section"
+# the second sheet of the spheres (u, v, −ρ; ρ), ρ = (u² + v²)/4 + 2, cut by y₄ = −1/2:
+# the top view is its offset at distance 1/2
+x = [[0, 0], [1, 0]]
+y = [[0, 1]]
+z = [[-2, 0, "-1/4"], [0, 0, 0], ["-1/4", 0, 0]]
+r = [[2, 0, "1/4"], [0, 0, 0], ["1/4", 0, 0]]
+sheet = 2
+hyperplane = ["1/2", 0, 0, 0, 1]
+domain = [-1, 1, -1, 1]
+"#,
+    build: build_cyclographic_section,
+};
+
+fn build_cyclographic_section(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let (img, k) = cyclographic_sheet(args)?;
+    let sheet = img.sheets().get(k).ok_or_else(|| OpError::param("sheet", "no such sheet"))?;
+    let h = args.opt_numbers("hyperplane")?.unwrap_or_default();
+    let h: [Q; 5] = <[Q; 5]>::try_from(h).map_err(|h| {
+        OpError::param(
+            "hyperplane",
+            format!("give five numbers [h₀, h₁, h₂, h₃, h₄], got {}", h.len()),
+        )
+    })?;
+    let sec = GammaSection::new(sheet, h).map_err(blame("hyperplane"))?;
+    let dom: Domain<Q> = domain(args)?;
+    let mut certs = prefixed("image sheet: ", sheet.certify());
+    certs.extend(img.image_certificates(sheet));
+    certs.extend(sec.certify());
+    let patch = sec.top_view_patch(&dom).map_err(blame("domain"))?;
+    Ok(vec![args.object(Geometry::Patch(patch), certs)])
+}
+
+const PN_FOCAL_SURFACE: OpSpec = OpSpec {
+    name: "pn_focal_surface",
+    summary: "a focal sheet (locus of principal curvature centres) of the PN surface of a graph F(u, v) of the isotropic model, rational when the principal radii are (D = B² − 4AC a square; e.g. F_uv ≡ 0); or, with output = \"image\", the cyclographic image of that family's curvature spheres — a γ-surface of R⁴ (Peternell §3.9) — which is the PN surface again",
+    params: &[
+        COEFFICIENTS,
+        DENOMINATOR,
+        ParamSpec::with_default(
+            "sheet",
+            ParamKind::Int,
+            "1",
+            "which focal sheet: 1 or 2 (a sphere or a developable has only sheet 1)",
+        ),
+        ParamSpec::with_default(
+            "output",
+            ParamKind::Choice(&["focal", "image"]),
+            "\"focal\"",
+            "\"focal\": the focal sheet; \"image\": the cyclographic image of the sheet's curvature-sphere γ-surface",
+        ),
+        DOMAIN,
+        OFFSET,
+        ORIENTATION,
+        DISTANCES,
+    ],
+    example: r#"[[object]]
+name = "pn_focal_sheet_cubic"
+op = "pn_focal_surface"
+# F = u³/6 + v²/2: principal radii rational (F_uv ≡ 0); sheet 1 belongs to the
+# eigenvalue u of the Hessian, a genuine surface
+coefficients = [[0, 0, "1/2"], [0, 0, 0], [0, 0, 0], ["1/6", 0, 0]]
+domain = ["1/2", 1, 0, "1/2"]
+"#,
+    build: build_pn_focal_surface,
+};
+
+fn build_pn_focal_surface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let f: RatFn<Q> = ratfn(args, "coefficients", "denominator")?;
+    let surface = IsotropicSurface::graph(&f)
+        .to_pn_surface()
+        .map_err(blame("coefficients"))?;
+    let foc = FocalSurfaces::new(&surface).map_err(blame("coefficients"))?;
+    let k = args.int("sheet")?;
+    let sheet = usize::try_from(k - 1)
+        .ok()
+        .and_then(|i| foc.sheets().get(i))
+        .ok_or_else(|| {
+            OpError::param(
+                "sheet",
+                format!("the surface has {} focal sheet(s), got sheet {k}", foc.sheets().len()),
+            )
+        })?;
+    let mut certs = prefixed("PN surface: ", surface.certify());
+    certs.extend(foc.sheet_certificates(sheet));
+    certs.push(foc.gamma_certificate(sheet));
+    let dom: Domain<Q> = domain(args)?;
+    if args.string("output")? == "image" {
+        let (cycles, w) = sheet.cycles();
+        let img = CyclographicImage::new(cycles, w).map_err(blame("sheet"))?;
+        let image = img
+            .sheets()
+            .first()
+            .ok_or_else(|| OpError::param("sheet", "the γ-surface has no image sheet"))?;
+        certs.extend(img.image_certificates(image));
+        certs.push(Certificate::decide(
+            "the curvature-sphere cycles form a γ-surface: their cyclographic image has one sheet",
+            img.is_gamma_surface(),
+            true,
+            || format!("{} sheets", img.sheets().len()),
+        ));
+        return surface_objects(args, &oriented(args, image), &dom, certs, "domain");
+    }
+    if !sheet.is_surface() {
+        return Err(OpError::param(
+            "sheet",
+            format!("focal sheet {k} degenerates to a curve or a point (f_u × f_v ≡ 0, e.g. a Dupin cyclide's focal conic); it is not exported as a patch"),
+        ));
+    }
+    let patch = sheet.patch(&dom).map_err(blame("domain"))?;
+    Ok(vec![args.object(Geometry::Patch(patch), certs)])
 }
 
 // ---------------------------------------------------------------------------------

@@ -1243,6 +1243,198 @@ impl CyclographicImage {
     }
 }
 
+/// The part of odd multiplicity `δ` of `p ∈ Q[u, v]`: `p = δ·g²` with `δ` squarefree and
+/// `g ∈ Q[u, v]` (the constant of `δ` chosen so that `p/δ` is a square); by successive
+/// radicals `rad(x) = x/gcd(x, x_u, x_v)` (characteristic 0). `None` if a division fails
+/// (it cannot for exact input) or `p ≡ 0`.
+pub fn odd_part(p: &MPoly<Q>) -> Option<MPoly<Q>> {
+    use super::poly::{div_exact, gcd2};
+    if p.is_zero() {
+        return None;
+    }
+    let one = MPoly::constant(2, q(1));
+    let is_const = |x: &MPoly<Q>| x.total_degree().unwrap_or(0) == 0;
+    let rad = |x: &MPoly<Q>| -> Option<MPoly<Q>> {
+        if is_const(x) {
+            return Some(one.clone());
+        }
+        let g = gcd2(&gcd2(x, &x.partial(0)), &x.partial(1));
+        div_exact(x, &g)
+    };
+    let mut cur = p.clone();
+    let mut r = rad(&cur)?;
+    let mut delta = one.clone();
+    let mut k = 0usize;
+    while !is_const(&cur) && k < 64 {
+        let next = div_exact(&cur, &r)?;
+        let r_next = rad(&next)?;
+        let t = div_exact(&r, &r_next)?;
+        if k.is_multiple_of(2) {
+            delta = &delta * &t;
+        }
+        cur = next;
+        r = r_next;
+        k += 1;
+    }
+    let quot = div_exact(p, &delta)?;
+    let lc = quot.terms().last().map(|(_, c)| c.clone())?;
+    let delta = delta.scale(&lc);
+    let quot = div_exact(p, &delta)?;
+    mpoly_sqrt(&quot).map(|_| delta)
+}
+
+/// A reparametrization `(u, v) = (U, V)/D(p, q)` of the plane that makes a squarefree
+/// `δ` of total degree 1 or 2 a square: the stereographic projection of the quadric
+/// `w² = δ(u, v)` from a rational point `(u₀, v₀, w₀)`, `w₀ ≠ 0` (the lines
+/// `(u₀ + λp, v₀ + λq, w₀ + λ)`, `λ = (2w₀ − L(p, q))/(H(p, q) − 1)` with `L` the linear
+/// and `H` the quadratic part of `δ` at the point; docs/math/hypercyclides.md#non-square-delta).
+/// The point is searched among `u₀, v₀ = a/b`, `|a| ≤ 8`, `1 ≤ b ≤ 4`; `None` if there
+/// is none there.
+pub fn quadric_reparametrization(delta: &MPoly<Q>) -> Option<[MPoly<Q>; 3]> {
+    let deg = delta.total_degree()?;
+    if !(1..=2).contains(&deg) {
+        return None;
+    }
+    let gcd = |mut a: i64, mut b: i64| {
+        while b != 0 {
+            (a, b) = (b, a % b);
+        }
+        a.abs()
+    };
+    let mut pairs: Vec<(i64, i64)> = (1..=4i64)
+        .flat_map(|b| (-8..=8i64).map(move |a| (a, b)))
+        .filter(|&(a, b)| gcd(a, b) == 1)
+        .collect();
+    pairs.sort_by_key(|&(a, b)| (a.abs() + b, b));
+    let cands: Vec<Q> = pairs
+        .into_iter()
+        .map(|(a, b)| Q::from_ratio(a, b))
+        .collect();
+    let (pv, qv) = (MPoly::<Q>::var(2, 0), MPoly::<Q>::var(2, 1));
+    for u0 in &cands {
+        for v0 in &cands {
+            let val = delta.eval(&[u0.clone(), v0.clone()]).ok()?;
+            if val.is_zero() {
+                continue;
+            }
+            let Some(w0) = scalar_sqrt(&val) else {
+                continue;
+            };
+            // δ(u₀ + λp, v₀ + λq) = δ₀ + λL + λ²H
+            let shifted = super::poly::compose(
+                delta,
+                &[
+                    &pv + &MPoly::constant(2, u0.clone()),
+                    &qv + &MPoly::constant(2, v0.clone()),
+                ],
+            );
+            let lin = MPoly::from_terms(
+                2,
+                shifted
+                    .terms()
+                    .filter(|(e, _)| e.iter().sum::<u32>() == 1)
+                    .map(|(e, c)| (e.to_vec(), c.clone()))
+                    .collect(),
+            )
+            .ok()?;
+            let quad = MPoly::from_terms(
+                2,
+                shifted
+                    .terms()
+                    .filter(|(e, _)| e.iter().sum::<u32>() == 2)
+                    .map(|(e, c)| (e.to_vec(), c.clone()))
+                    .collect(),
+            )
+            .ok()?;
+            let d = &quad - &MPoly::constant(2, q(1));
+            let num = &MPoly::constant(2, &w0 * &q(2)) - &lin;
+            let u = &d.scale(u0) + &(&pv * &num);
+            let v = &d.scale(v0) + &(&qv * &num);
+            return Some([u, v, d]);
+        }
+    }
+    None
+}
+
+impl CyclographicImage {
+    /// The image of `s = S/w` after the reparametrization of
+    /// [`quadric_reparametrization`] when `Δ` is not a square but its odd part `δ`
+    /// ([`odd_part`]) has total degree 1 or 2 (docs/math/hypercyclides.md#non-square-delta):
+    /// the image of `s((U, V)/D)` in the new parameters `(p, q)`, returned with `(U, V, D)`.
+    /// A square `Δ` needs no reparametrization (`(U, V, D) = (u, v, 1)`).
+    ///
+    /// # Errors
+    /// [`PnError::NoRationalPoint`] naming what is missing: `δ` a non-square constant
+    /// (the sheets are conjugate over `Q(√δ)`), `δ` of degree ≥ 3 (a double plane, not a
+    /// quadric), or no rational point of the quadric `w² = δ` found; as [`Self::new`].
+    pub fn reparametrized(s: [MPoly<Q>; 4], w: MPoly<Q>) -> Result<(Self, [MPoly<Q>; 3]), PnError> {
+        let e = match Self::new(s.clone(), w.clone()) {
+            Ok(img) => {
+                return Ok((
+                    img,
+                    [MPoly::var(2, 0), MPoly::var(2, 1), MPoly::constant(2, q(1))],
+                ))
+            }
+            Err(PnError::NoRationalPoint(m)) => m,
+            Err(e) => return Err(e),
+        };
+        let delta = Self::delta_of(&s, &w);
+        let odd = odd_part(&delta).ok_or_else(|| PnError::NoRationalPoint(e.clone()))?;
+        let deg = odd.total_degree().unwrap_or(0);
+        let psi = match deg {
+            0 => {
+                return Err(PnError::NoRationalPoint(format!(
+                    "{e}; its odd part is the non-square constant {}: the sheets are conjugate over Q(√{}) and no reparametrization makes Δ a square",
+                    format_scalar(&odd.coeff(&[0, 0])),
+                    format_scalar(&odd.coeff(&[0, 0]))
+                )))
+            }
+            1 | 2 => quadric_reparametrization(&odd).ok_or_else(|| {
+                PnError::NoRationalPoint(format!(
+                    "{e}; its odd part δ has degree {deg}, but no rational point of the quadric w² = δ(u, v) was found among u, v = a/b, |a| ≤ 8, b ≤ 4 (the stereographic projection from one would make Δ a square)"
+                ))
+            })?,
+            _ => {
+                return Err(PnError::NoRationalPoint(format!(
+                    "{e}; its odd part δ has degree {deg} ≥ 3: a rational sheet needs a rational parametrization of the double plane w² = δ(u, v), which the library does not construct (docs/math/hypercyclides.md#non-square-delta)"
+                )))
+            }
+        };
+        let m = s
+            .iter()
+            .chain(std::iter::once(&w))
+            .filter_map(|p| p.total_degree())
+            .max()
+            .unwrap_or(0) as u32;
+        let sub = |p: &MPoly<Q>| -> MPoly<Q> {
+            let mut acc = MPoly::zero(2);
+            for (ex, c) in p.terms() {
+                let i = ex.first().copied().unwrap_or(0);
+                let j = ex.get(1).copied().unwrap_or(0);
+                let t = &(&psi[0].pow(i) * &psi[1].pow(j)) * &psi[2].pow(m - i - j);
+                acc = &acc + &t.scale(c);
+            }
+            acc
+        };
+        let s2: [MPoly<Q>; 4] = std::array::from_fn(|k| sub(&s[k]));
+        let img = Self::new(s2, sub(&w))?;
+        Ok((img, psi))
+    }
+
+    /// `Δ` of [`Self::new`] for `s = S/w`.
+    fn delta_of(s: &[MPoly<Q>; 4], w: &MPoly<Q>) -> MPoly<Q> {
+        let der = |p: &MPoly<Q>, i: usize| &(&p.partial(i) * w) - &(p * &w.partial(i));
+        let a: [MPoly<Q>; 4] = std::array::from_fn(|k| der(&s[k], 0));
+        let b: [MPoly<Q>; 4] = std::array::from_fn(|k| der(&s[k], 1));
+        let g11 = dot3(&a[..3], &a[..3]);
+        let g12 = dot3(&a[..3], &b[..3]);
+        let g22 = dot3(&b[..3], &b[..3]);
+        let det = &(&g11 * &g22) - &(&g12 * &g12);
+        let (a4, b4) = (&a[3], &b[3]);
+        &det - &(&(&(&(a4 * a4) * &g22) - &(&(a4 * b4) * &g12).scale(&q(2))) + &(&(b4 * b4) * &g11))
+    }
+}
+
 impl Certified for CyclographicImage {
     /// PN identities and the image certificates of every sheet.
     fn certify(&self) -> Vec<Certificate> {

@@ -29,6 +29,9 @@
 //! * [`modeling`]: the modeling scheme of §4.4: Hermite data (points with oriented
 //!   planes) → gradient data in `I³` → C¹ Powell–Sabin quadratic spline → piecewise
 //!   parabolic Dupin cyclides;
+//! * [`focal`]: the focal surfaces of a PN surface (its curvature-sphere γ-surfaces,
+//!   Peternell §3.9) and the sections `Γ(φ) ∩ π` of its γ-hypersurface (offsets for
+//!   `π ∥ R³`);
 //! * [`planar`]: the planar case — rational PH (PN) curves from the isotropic model of
 //!   the plane, their offsets, and the agreement with [`crate::ph`].
 //!
@@ -38,6 +41,7 @@
 //! `x_d − x ≡ d n`; exact polynomial identities over `Rational`.
 
 pub mod developable;
+pub mod focal;
 pub mod hypercyclide;
 pub mod isotropic;
 pub mod modeling;

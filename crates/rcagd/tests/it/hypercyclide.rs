@@ -410,6 +410,71 @@ mod surfaces_of_r4 {
         assert!(matches!(e, Err(PnError::InvalidInput(_))));
     }
 
+    /// A non-square `Δ` whose odd part `δ` is quadratic is made a square by the
+    /// stereographic projection of the quadric `w² = δ(u, v)`
+    /// (docs/math/hypercyclides.md#non-square-delta): the spheres `(u, v, 0; ρ)`,
+    /// `ρ = (u² + v²)/4 + 1` (`Δ = 1 − (u² + v²)/4`) get two rational sheets, mirror images
+    /// in `z = 0` (the centres lie in that plane) and on the spheres of their cycles; the
+    /// elliptic paraboloid `z = u² + 2v²` (`Δ = 1 + 4u² + 16v²`) becomes a PN surface on
+    /// `z = x² + 2y²`. A constant non-square odd part (`ρ = (u + v)/2`, `Δ = 1/2`) and a
+    /// quartic one (`z = u³ + v`, `Δ = 2 + 9u⁴`) are named errors saying why.
+    #[test]
+    fn non_square_delta_of_degree_two_is_made_a_square_by_reparametrization() {
+        let rho = &(&(&u() * &u()) + &(&v() * &v())).scale(&q(1, 4)) + &k(1);
+        let s = [u(), v(), MPoly::zero(2), rho.clone()];
+        let e = CyclographicImage::new(s.clone(), k(1));
+        assert!(matches!(e, Err(PnError::NoRationalPoint(_))), "{e:?}");
+        let (img, psi) = CyclographicImage::reparametrized(s, k(1)).expect("quadric δ");
+        assert_eq!(img.sheets().len(), 2);
+        assert_exact(&img.certify());
+        for (a, b) in [(q(1, 3), q(1, 5)), (q(-2, 7), q(3, 4))] {
+            let x: Vec<[Q; 3]> = img
+                .sheets()
+                .iter()
+                .map(|sh| sh.eval(&a, &b).expect("defined"))
+                .collect();
+            assert_eq!(x[0][0], x[1][0]);
+            assert_eq!(x[0][1], x[1][1]);
+            assert_eq!(x[0][2], -x[1][2].clone());
+            assert!(!x[0][2].is_zero());
+            let d = psi[2].eval(&[a.clone(), b.clone()]).expect("eval");
+            let uu = psi[0].eval(&[a.clone(), b.clone()]).expect("eval") / d.clone();
+            let vv = psi[1].eval(&[a.clone(), b.clone()]).expect("eval") / d;
+            let r = rho.eval(&[uu.clone(), vv.clone()]).expect("eval");
+            for p in &x {
+                let dist2 =
+                    (&p[0] - &uu) * (&p[0] - &uu) + (&p[1] - &vv) * (&p[1] - &vv) + &p[2] * &p[2];
+                assert_eq!(dist2, &r * &r, "on the sphere of the cycle");
+            }
+        }
+        // the elliptic paraboloid z = u² + 2v² as the image of its points (r ≡ 0)
+        let z = &(&u() * &u()) + &(&v() * &v()).scale(&q(2, 1));
+        let (img, _) = CyclographicImage::reparametrized([u(), v(), z, MPoly::zero(2)], k(1))
+            .expect("quadric δ");
+        assert_exact(&img.certify());
+        for sh in img.sheets() {
+            let x = sh.eval(&q(1, 2), &q(-1, 3)).expect("defined");
+            assert_eq!(&x[0] * &x[0] + (&x[1] * &x[1]) * q(2, 1), x[2]);
+        }
+        // named errors: constant and quartic odd parts
+        let e = CyclographicImage::reparametrized(
+            [u(), v(), MPoly::zero(2), (&u() + &v()).scale(&q(1, 2))],
+            k(1),
+        );
+        assert!(
+            matches!(&e, Err(PnError::NoRationalPoint(m)) if m.contains("non-square constant")),
+            "{e:?}"
+        );
+        let e = CyclographicImage::reparametrized(
+            [u(), v(), &(&(&u() * &u()) * &u()) + &v(), MPoly::zero(2)],
+            k(1),
+        );
+        assert!(
+            matches!(&e, Err(PnError::NoRationalPoint(m)) if m.contains("degree 4")),
+            "{e:?}"
+        );
+    }
+
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(8))]
         /// Random quadratic radius functions ρ(u, v) of spheres (u, v, −ρ; ρ) touching the
@@ -634,4 +699,244 @@ fn two_sheet_real_parameters_cover_a_wedge_of_both_sheets() {
         }
     }
     assert!(inside[0] > 10 && inside[1] > 10, "{inside:?}");
+}
+
+mod focal_surfaces_and_sections {
+    //! Focal surfaces of PN surfaces, the γ-surfaces of their curvature spheres and the
+    //! sections Γ(φ) ∩ π (Peternell §3.9, Lemma 3.5; docs/math/hypercyclides.md#focal-surfaces).
+    use super::{assert_exact, q, Q};
+    use rcagd::pn::focal::{FocalSurfaces, GammaSection};
+    use rcagd::pn::hypercyclide::CyclographicImage;
+    use rcagd::pn::offset::principal_radii_at;
+    use rcagd::pn::{IsotropicSurface, PnError, PnSurface};
+    use rcagd::Certified;
+    use rcagd_algebra::mpoly::MPoly;
+
+    fn u() -> MPoly<Q> {
+        MPoly::var(2, 0)
+    }
+    fn v() -> MPoly<Q> {
+        MPoly::var(2, 1)
+    }
+
+    /// The independent check of a principal radius `r` at `(a, b)`: the offset at
+    /// distance `−r` is singular there (the quadratic `R(δ)` of the offsets' regularity
+    /// determinant, computed from the offset surfaces, vanishes at `δ = −r`).
+    fn is_principal_radius(s: &PnSurface<Q>, a: &Q, b: &Q, r: &Q) -> bool {
+        let c = principal_radii_at(s, a, b);
+        let d = -r.clone();
+        (&c[0] + &(&c[1] * &d)) + &(&(&c[2] * &d) * &d) == Q::from(0)
+    }
+
+    /// The parabolic Dupin cyclide `F = αu² + βv²` of the isotropic model: its focal
+    /// sheets degenerate to the two focal parabolas, and the curvature spheres are the
+    /// ones the isotropic model predicts independently — the isotropic sphere
+    /// `y₃ = αS + 2(β − α)v₀v + (α − β)v₀²` osculating `F` along `v = v₀` is the cycle
+    /// `m = (0, 2(α − β)v₀, −α − (β − α)v₀²)`, `r = −α + (β − α)v₀²` (Peternell (3.12)),
+    /// and symmetrically for the other family.
+    #[test]
+    fn focal_sheets_of_a_parabolic_dupin_cyclide_are_its_focal_parabolas() {
+        let (al, be) = (q(1, 2), q(-1, 1));
+        let s = IsotropicSurface::parabolic_dupin_cyclide(al.clone(), be.clone())
+            .to_pn_surface()
+            .expect("PN");
+        let f = FocalSurfaces::new(&s).expect("rational focal sheets");
+        assert_eq!(f.sheets().len(), 2);
+        assert_exact(&f.certify());
+        for sh in f.sheets() {
+            assert!(
+                !sh.is_surface(),
+                "the focal sets of a Dupin cyclide are curves"
+            );
+            assert_exact(&[f.gamma_certificate(sh)]);
+        }
+        for (u0, v0) in [(q(1, 3), q(2, 1)), (q(-3, 2), q(1, 5))] {
+            let fam1 = (
+                [
+                    Q::from(0),
+                    q(2, 1) * (&al - &be) * v0.clone(),
+                    -al.clone() - (&be - &al) * &v0 * &v0,
+                ],
+                -al.clone() + (&be - &al) * &v0 * &v0,
+            );
+            let fam2 = (
+                [
+                    q(2, 1) * (&be - &al) * u0.clone(),
+                    Q::from(0),
+                    -be.clone() - (&al - &be) * &u0 * &u0,
+                ],
+                -be.clone() + (&al - &be) * &u0 * &u0,
+            );
+            let got: Vec<([Q; 3], Q)> = f
+                .sheets()
+                .iter()
+                .map(|sh| {
+                    (
+                        sh.point(&u0, &v0).expect("defined"),
+                        sh.radius(&u0, &v0).expect("defined"),
+                    )
+                })
+                .collect();
+            assert!(got.contains(&fam1), "{got:?} vs {fam1:?}");
+            assert!(got.contains(&fam2), "{got:?} vs {fam2:?}");
+            for (_, r) in &got {
+                assert!(is_principal_radius(&s, &u0, &v0, r));
+            }
+        }
+    }
+
+    /// A rational, non-degenerate γ-surface of `R⁴` with its cyclographic image: the
+    /// curvature spheres of one family of the PN surface of `F = u³/6 + v²/2`
+    /// (`F_uv ≡ 0`: the eigenvalues `u`, `1` of the Hessian are rational, so are the
+    /// principal radii). The cycles form a γ-surface (Δ ≡ 0, exactly) that is a genuine
+    /// surface (its top view, a focal sheet, is a surface); `CyclographicImage` of it has
+    /// one sheet, which is the PN surface again (points and normals), non-degenerate; and
+    /// that sheet's focal surfaces contain the γ-surface's top view (Peternell §3.9).
+    #[test]
+    fn a_non_degenerate_gamma_surface_and_its_cyclographic_image() {
+        let f = &(&(&u() * &u()) * &u()).scale(&q(1, 6)) + &(&v() * &v()).scale(&q(1, 2));
+        let s = IsotropicSurface::graph_poly(f).to_pn_surface().expect("PN");
+        let foc = FocalSurfaces::new(&s).expect("rational principal radii");
+        assert_eq!(foc.sheets().len(), 2);
+        assert_exact(&foc.certify());
+        let sheet = foc
+            .sheets()
+            .iter()
+            .find(|sh| sh.is_surface())
+            .expect("a non-degenerate focal sheet");
+        assert_exact(&[foc.gamma_certificate(sheet)]);
+        let (cyc, w) = sheet.cycles();
+        let img = CyclographicImage::new(cyc, w).expect("γ-surface");
+        assert!(img.is_gamma_surface());
+        assert_exact(&img.certify());
+        let im = &img.sheets()[0];
+        assert!(!im.point_map_degenerate(), "a genuine image surface");
+        for (a, b) in [(q(1, 2), q(1, 3)), (q(-2, 1), q(3, 4)), (q(5, 7), q(-1, 1))] {
+            assert_eq!(
+                im.eval(&a, &b).expect("defined"),
+                s.eval(&a, &b).expect("defined")
+            );
+            assert_eq!(
+                im.normal_at(&a, &b).expect("defined"),
+                s.normal_at(&a, &b).expect("defined")
+            );
+            let r = sheet.radius(&a, &b).expect("defined");
+            assert!(is_principal_radius(&s, &a, &b, &r));
+        }
+        let back = FocalSurfaces::new(im).expect("rational");
+        let (a, b) = (q(1, 2), q(1, 3));
+        let p = sheet.point(&a, &b).expect("defined");
+        assert!(back
+            .sheets()
+            .iter()
+            .any(|sh| sh.point(&a, &b).as_ref() == Some(&p)));
+    }
+
+    /// `Γ(φ) ∩ π`: for `π: y₄ = c` the top view is the offset at `−c` (certified against
+    /// `PnSurface::offset`); a tilted hyperplane gives a section on `π` and on `Γ(φ)`; a
+    /// hyperplane containing every γ-line is a named error.
+    #[test]
+    fn sections_of_the_gamma_hypersurface() {
+        let f = &(&(&u() * &u()) * &u()).scale(&q(1, 6)) + &(&v() * &v()).scale(&q(1, 2));
+        let s = IsotropicSurface::graph_poly(f).to_pn_surface().expect("PN");
+        let c = q(1, 2);
+        let sec = GammaSection::new(
+            &s,
+            [-c.clone(), Q::from(0), Q::from(0), Q::from(0), Q::from(1)],
+        )
+        .expect("section");
+        assert_eq!(sec.offset_distance(), Some(-c.clone()));
+        assert_exact(&sec.certify());
+        let off = s.offset(-c.clone());
+        let (a, b) = (q(1, 3), q(-2, 1));
+        let y = sec.eval(&a, &b).expect("defined");
+        assert_eq!(y[3], c);
+        assert_eq!(
+            [y[0].clone(), y[1].clone(), y[2].clone()],
+            off.surface().eval(&a, &b).expect("defined")
+        );
+        let tilted = [q(1, 1), q(1, 2), Q::from(0), q(-1, 3), q(2, 1)];
+        let sec = GammaSection::new(&s, tilted.clone()).expect("section");
+        assert_eq!(sec.offset_distance(), None);
+        assert_exact(&sec.certify());
+        let y = sec.eval(&a, &b).expect("defined");
+        let on = &(&tilted[0] + &(&tilted[1] * &y[0]))
+            + &(&(&tilted[3] * &y[2]) + &(&tilted[4] * &y[3]));
+        assert_eq!(on, Q::from(0));
+        // the plane z = 0 (unit normal (0, 0, 1)) and π: y₃ + y₄ = 0, which contains
+        // every γ-line (x − t e₃; t) of the plane
+        let plane = PnSurface::from_point_normal(
+            [MPoly::constant(2, Q::from(1)), u(), v(), MPoly::zero(2)],
+            [
+                MPoly::constant(2, Q::from(1)),
+                MPoly::zero(2),
+                MPoly::zero(2),
+                MPoly::constant(2, Q::from(1)),
+            ],
+        )
+        .expect("plane");
+        let e = GammaSection::new(
+            &plane,
+            [Q::from(0), Q::from(0), Q::from(0), Q::from(1), Q::from(1)],
+        );
+        assert!(matches!(e, Err(PnError::InvalidInput(_))), "{e:?}");
+        let e = FocalSurfaces::new(&plane);
+        assert!(matches!(e, Err(PnError::InvalidInput(_))), "{e:?}");
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(8))]
+        /// Random separable graphs `F = f(u) + g(v)` (`f, g` cubics with random exact
+        /// coefficients; rational principal radii): both focal sheets certify exactly, every
+        /// radius is a root of the offsets' regularity quadratic at `δ = −r` (independent),
+        /// and a random hyperplane section of `Γ(φ)` certifies exactly.
+        #[test]
+        fn random_separable_graphs_have_certified_focal_sheets_and_sections(
+            c in proptest::array::uniform4(-4i64..5),
+            h in proptest::array::uniform5(-3i64..4),
+        ) {
+            let cube = |x: &MPoly<Q>| &(x * x) * x;
+            let f = &(&(&cube(&u()).scale(&q(c[0], 6)) + &(&u() * &u()).scale(&q(c[1], 2)))
+                + &cube(&v()).scale(&q(c[2], 6)))
+                + &(&v() * &v()).scale(&q(c[3], 2));
+            let s = IsotropicSurface::graph_poly(f).to_pn_surface().expect("PN");
+            match FocalSurfaces::new(&s) {
+                Ok(foc) => {
+                    for cert in foc.certify() {
+                        proptest::prop_assert!(cert.holds && cert.exact, "{}", cert);
+                    }
+                    let (a, b) = (q(2, 3), q(-3, 5));
+                    for sh in foc.sheets() {
+                        if let Some(r) = sh.radius(&a, &b) {
+                            proptest::prop_assert!(is_principal_radius(&s, &a, &b, &r));
+                        }
+                    }
+                }
+                // F quadratic with equal coefficients is a sphere's graph or a plane
+                Err(e) => proptest::prop_assert!(
+                    c[0] == 0 && c[2] == 0 && c[1] == c[3],
+                    "{e:?}"
+                ),
+            }
+            let hq: [Q; 5] = std::array::from_fn(|i| q(h[i], 1));
+            if let Ok(sec) = GammaSection::new(&s, hq) {
+                for cert in sec.certify() {
+                    proptest::prop_assert!(cert.holds && cert.exact, "{}", cert);
+                }
+            }
+        }
+    }
+
+    /// A surface whose principal radii are irrational: `D` is not a square, a named error.
+    #[test]
+    fn irrational_principal_radii_are_a_named_error() {
+        // F = u²v/2 + v³/6: Hessian ((v, u), (u, v)) has eigenvalues v ± u — rational;
+        // F = u³/6 + u v²/2 + v²: eigenvalues of ((u, v), (v, u + 2)) are irrational
+        let f = &(&(&(&u() * &u()) * &u()).scale(&q(1, 6))
+            + &(&(&u() * &v()) * &v()).scale(&q(1, 2)))
+            + &(&v() * &v());
+        let s = IsotropicSurface::graph_poly(f).to_pn_surface().expect("PN");
+        let e = FocalSurfaces::new(&s);
+        assert!(matches!(e, Err(PnError::NoRationalPoint(_))), "{e:?}");
+    }
 }
