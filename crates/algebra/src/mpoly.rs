@@ -744,18 +744,24 @@ fn mul_generic<R: Ring>(a: &MPoly<R>, b: &MPoly<R>) -> MPoly<R> {
 /// The coefficients of `p` as integers over one common denominator `L` (the least
 /// common multiple of the denominators): `p = (Σ Aₑ xᵉ)/L`.
 fn integer_coefficients(p: &MPoly<Rational>) -> (Vec<dashu_int::IBig>, dashu_int::UBig) {
+    integers_over_common_denominator(p.terms.values())
+}
+
+/// The integers `Aᵢ` and the common denominator `L` (least common multiple of the
+/// denominators) with `cᵢ = Aᵢ/L`.
+fn integers_over_common_denominator<'a>(
+    cs: impl Iterator<Item = &'a Rational> + Clone,
+) -> (Vec<dashu_int::IBig>, dashu_int::UBig) {
     use dashu_int::{IBig, UBig};
     let mut l = UBig::ONE;
-    for c in p.terms.values() {
+    for c in cs.clone() {
         let d = c.denominator();
         if d != &UBig::ONE && d != &l {
             let g = dashu_base::Gcd::gcd(&l, d);
             l = &l / &g * d;
         }
     }
-    let ints = p
-        .terms
-        .values()
+    let ints = cs
         .map(|c| {
             let d = c.denominator();
             if d == &l {
@@ -766,6 +772,36 @@ fn integer_coefficients(p: &MPoly<Rational>) -> (Vec<dashu_int::IBig>, dashu_int
         })
         .collect();
     (ints, l)
+}
+
+/// The product of two dense univariate coefficient vectors over `ℚ` (constant term
+/// first), fraction-free like [`mul_rational`]: integer convolution over the two common
+/// denominators, one reduction per result coefficient.
+pub(crate) fn poly_mul_rational(a: &[Rational], b: &[Rational]) -> Vec<Rational> {
+    use dashu_int::IBig;
+    let (ia, la) = integers_over_common_denominator(a.iter());
+    let (ib, lb) = integers_over_common_denominator(b.iter());
+    let mut out = vec![IBig::ZERO; (a.len() + b.len()).saturating_sub(1)];
+    for (i, x) in ia.iter().enumerate() {
+        if x == &IBig::ZERO {
+            continue;
+        }
+        crate::budget::checkpoint();
+        for (j, y) in ib.iter().enumerate() {
+            out[i + j] += x * y;
+        }
+    }
+    let den = la * lb;
+    let one = den == dashu_int::UBig::ONE;
+    out.into_iter()
+        .map(|c| {
+            if one {
+                Rational::from(c)
+            } else {
+                Rational::from_parts(c, den.clone())
+            }
+        })
+        .collect()
 }
 
 /// The product of two polynomials over `ℚ`, fraction-free: `(A/L)(B/M) = (AB)/(LM)` with
@@ -1269,6 +1305,30 @@ mod tests {
         let mut z = a.clone();
         z -= &a;
         assert!(z.is_zero());
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+        /// The fraction-free univariate product equals the convolution in `ℚ`.
+        #[test]
+        fn univariate_fraction_free_product_is_the_convolution(
+            a in proptest::collection::vec((-20i64..21, 1i64..30), 1..8),
+            b in proptest::collection::vec((-20i64..21, 1i64..30), 1..8),
+        ) {
+            let qa: Vec<Rational> = a.iter().map(|&(p, d)| Rational::from_parts_signed(p.into(), d.into())).collect();
+            let qb: Vec<Rational> = b.iter().map(|&(p, d)| Rational::from_parts_signed(p.into(), d.into())).collect();
+            let mut want = vec![Rational::ZERO; qa.len() + qb.len() - 1];
+            for (i, x) in qa.iter().enumerate() {
+                for (j, y) in qb.iter().enumerate() {
+                    want[i + j] += x * y;
+                }
+            }
+            proptest::prop_assert_eq!(poly_mul_rational(&qa, &qb), want.clone());
+            proptest::prop_assert_eq!(
+                (&Poly::new(qa.clone()) * &Poly::new(qb.clone())).coeffs().to_vec(),
+                Poly::new(want).coeffs().to_vec()
+            );
+        }
     }
 
     proptest::proptest! {

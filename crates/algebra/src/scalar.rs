@@ -43,6 +43,13 @@ pub trait Ring:
     ) -> Option<crate::mpoly::MPoly<Self>> {
         None
     }
+
+    /// The coefficient vector of the product of two univariate polynomials (non-empty
+    /// coefficient vectors, constant term first) when the ring has a faster exact way
+    /// than the generic sum of coefficient products (the default, `None`).
+    fn poly_mul(_a: &[Self], _b: &[Self]) -> Option<Vec<Self>> {
+        None
+    }
 }
 
 /// `xᵏ` in any ring, by repeated squaring (`x⁰ = 1`).
@@ -149,6 +156,9 @@ impl Ring for Rational {
         b: &crate::mpoly::MPoly<Self>,
     ) -> Option<crate::mpoly::MPoly<Self>> {
         Some(crate::mpoly::mul_rational(a, b))
+    }
+    fn poly_mul(a: &[Self], b: &[Self]) -> Option<Vec<Self>> {
+        Some(crate::mpoly::poly_mul_rational(a, b))
     }
 }
 impl Field for Rational {

@@ -603,6 +603,9 @@ pub(crate) fn sign_on_domain<F: Scalar>(
     let tol = if F::EXACT { 0.0 } else { 1e-9 * scale };
     let is_pos = |x: &F| x.to_f64() > tol && (!F::EXACT || *x > F::zero());
     let is_neg = |x: &F| x.to_f64() < -tol && (!F::EXACT || *x < F::zero());
+    // exact scalars in `u, v` only: the power coefficients in `ℚ` (row-major in `u`) and
+    // the bidegree, for the fraction-free Bernstein signs
+    let exact = F::EXACT.then(|| exact_power_coefficients(p)).flatten();
     let mut stack = vec![domain.clone()];
     let mut pos: Option<[F; 2]> = None;
     let mut neg: Option<[F; 2]> = None;
@@ -624,12 +627,29 @@ pub(crate) fn sign_on_domain<F: Scalar>(
                 return Sign::Changes(a.clone(), b.clone());
             }
         }
-        let local = to_local(p, &d);
-        let (m, n) = bidegree(&local);
-        let Ok(b) = tensor_bernstein(&local, m, n) else {
-            return Sign::Undecided(d.point(&F::from_ratio(1, 2), &F::from_ratio(1, 2)));
+        let decided = match &exact {
+            // exact: the signs of positive multiples of the Bernstein coefficients,
+            // fraction-free (`rcagd_algebra::bernstein::tensor_bernstein_sign`)
+            Some((power, mn)) => {
+                let q = |x: &F| x.to_rational().unwrap_or_default();
+                let (u0, v0) = (q(&d.u.0), q(&d.v.0));
+                let (du, dv) = (q(&d.u.1) - u0.clone(), q(&d.v.1) - v0.clone());
+                let Ok(sign) = bernstein::tensor_bernstein_sign(power, *mn, (&u0, &du), (&v0, &dv))
+                else {
+                    return Sign::Undecided(d.point(&F::from_ratio(1, 2), &F::from_ratio(1, 2)));
+                };
+                sign.is_some()
+            }
+            None => {
+                let local = to_local(p, &d);
+                let (m, n) = bidegree(&local);
+                let Ok(b) = tensor_bernstein(&local, m, n) else {
+                    return Sign::Undecided(d.point(&F::from_ratio(1, 2), &F::from_ratio(1, 2)));
+                };
+                b.iter().all(is_pos) || b.iter().all(is_neg)
+            }
         };
-        if b.iter().all(is_pos) || b.iter().all(is_neg) {
+        if decided {
             continue;
         }
         if processed + stack.len() + 4 > budget {
@@ -642,6 +662,25 @@ pub(crate) fn sign_on_domain<F: Scalar>(
     } else {
         Sign::Positive
     }
+}
+
+/// The power coefficients in `ℚ` of a polynomial in `u, v` only (row-major in `u`, the
+/// bidegree's `(m + 1)(n + 1)` entries) and its bidegree; `None` if another variable occurs
+/// or a coefficient is not rational.
+fn exact_power_coefficients<F: Scalar>(
+    p: &MPoly<F>,
+) -> Option<(Vec<rcagd_algebra::Rational>, (usize, usize))> {
+    let (m, n) = bidegree(p);
+    let mut power = vec![rcagd_algebra::Rational::ZERO; (m + 1) * (n + 1)];
+    for (e, c) in p.terms() {
+        if e.iter().skip(2).any(|&k| k != 0) {
+            return None;
+        }
+        let i = e.first().copied().unwrap_or(0) as usize;
+        let j = e.get(1).copied().unwrap_or(0) as usize;
+        *power.get_mut(i * (n + 1) + j)? = c.to_rational()?;
+    }
+    Some((power, (m, n)))
 }
 
 /// The certificate `p ≡ 0` (every coefficient zero; for `f64` below `10⁻⁹ · scale`).
