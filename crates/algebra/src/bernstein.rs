@@ -561,6 +561,146 @@ fn binomials_int(n: usize) -> Vec<dashu_int::UBig> {
     row
 }
 
+/// `p(a + h·x)` for the power coefficients `p` of one line of `c` (entries
+/// `c[start + i·stride]`, `i = 0, …, deg`), fraction-free: with `D` the common denominator
+/// of `a` and `h`, `A = aD`, `H = hD`, the line becomes the coefficients of
+/// `Dᵈᵉᵍ·p(a + h x) = Σᵢ (pᵢ Dᵈᵉᵍ⁻ⁱ)(A + H x)ⁱ`: Horner's Taylor shift by the integer `A`,
+/// then the scaling by `Hⁱ` (integers only; the positive factor `Dᵈᵉᵍ`).
+fn shift_line_int(
+    c: &mut [dashu_int::IBig],
+    start: usize,
+    stride: usize,
+    deg: usize,
+    a: &crate::rational::Rational,
+    h: &crate::rational::Rational,
+) {
+    use dashu_int::IBig;
+    let g = dashu_base::Gcd::gcd(a.denominator(), h.denominator());
+    let d = a.denominator() / &g * h.denominator();
+    let big_a = a.numerator() * IBig::from(&d / a.denominator());
+    let big_h = h.numerator() * IBig::from(&d / h.denominator());
+    let d = IBig::from(d);
+    let idx = |i: usize| start + i * stride;
+    let mut dp = IBig::ONE;
+    for i in (0..=deg).rev() {
+        c[idx(i)] *= &dp;
+        if i > 0 {
+            dp *= &d;
+        }
+    }
+    for k in 0..deg {
+        crate::budget::checkpoint();
+        for i in (k..deg).rev() {
+            let next = &big_a * &c[idx(i + 1)];
+            c[idx(i)] += next;
+        }
+    }
+    let mut hp = IBig::ONE;
+    for i in 0..=deg {
+        c[idx(i)] *= &hp;
+        hp *= &big_h;
+    }
+}
+
+/// The Bernstein coefficients of degree `deg` of one line of power coefficients, times the
+/// positive integer `deg!`: `deg!·bᵣ = Σ_{i ≤ r} C(r, i)·i!·(deg − i)!·aᵢ` (from
+/// `bᵣ = Σ_{i ≤ r} C(r, i)/C(deg, i)·aᵢ`; Farin, *Curves and Surfaces for CAGD*, 5th ed.,
+/// §5.7, the power-to-Bernstein conversion).
+fn bernstein_line_int(c: &mut [dashu_int::IBig], start: usize, stride: usize, deg: usize) {
+    use dashu_int::IBig;
+    let mut fact = vec![IBig::ONE; deg + 1];
+    for i in 1..=deg {
+        fact[i] = &fact[i - 1] * IBig::from(i);
+    }
+    let a: Vec<IBig> = (0..=deg)
+        .map(|i| &c[start + i * stride] * &fact[i] * &fact[deg - i])
+        .collect();
+    for r in 0..=deg {
+        let row = binomials_int(r);
+        let mut acc = IBig::ZERO;
+        for (i, cri) in row.iter().enumerate() {
+            acc += IBig::from(cri.clone()) * &a[i];
+        }
+        c[start + r * stride] = acc;
+    }
+}
+
+/// Positive multiples of the tensor Bernstein coefficients of bidegree `(m, n)` (row-major
+/// in `s`) of `p(u₀ + s·Δu, v₀ + t·Δv)` on `[0, 1]²`, for `p = Σ power[i(n+1) + j] uⁱvʲ`
+/// over `ℚ`, computed fraction-free (one common multiple `λ > 0` for all of them, so
+/// their signs are the signs of the Bernstein coefficients): the coefficients over one
+/// common denominator, the Taylor shifts of the columns and rows in integers
+/// (`shift_line_int`), the conversions to Bernstein form times `m!`, `n!`
+/// (`bernstein_line_int`). Integer products and sums only — no gcd per operation.
+///
+/// # Errors
+/// [`AlgebraError::InvalidArgument`] if `power` does not have `(m + 1)(n + 1)` entries.
+pub fn tensor_bernstein_scaled(
+    power: &[crate::rational::Rational],
+    (m, n): (usize, usize),
+    (u0, du): (&crate::rational::Rational, &crate::rational::Rational),
+    (v0, dv): (&crate::rational::Rational, &crate::rational::Rational),
+) -> Result<Vec<dashu_int::IBig>, AlgebraError> {
+    use dashu_int::{IBig, UBig};
+    if power.len() != (m + 1) * (n + 1) {
+        return Err(AlgebraError::InvalidArgument(format!(
+            "tensor_bernstein_scaled: {} coefficients for bidegree ({m}, {n})",
+            power.len()
+        )));
+    }
+    let mut l = UBig::ONE;
+    for x in power {
+        let d = x.denominator();
+        if d != &UBig::ONE && d != &l {
+            let g = dashu_base::Gcd::gcd(&l, d);
+            l = &l / &g * d;
+        }
+    }
+    let mut c: Vec<IBig> = power
+        .iter()
+        .map(|x| x.numerator() * IBig::from(&l / x.denominator()))
+        .collect();
+    let w = n + 1;
+    for j in 0..=n {
+        shift_line_int(&mut c, j, w, m, u0, du);
+    }
+    for i in 0..=m {
+        shift_line_int(&mut c, i * w, 1, n, v0, dv);
+    }
+    for j in 0..=n {
+        bernstein_line_int(&mut c, j, w, m);
+    }
+    for i in 0..=m {
+        bernstein_line_int(&mut c, i * w, 1, n);
+    }
+    Ok(c)
+}
+
+/// The common sign of the tensor Bernstein coefficients of bidegree `(m, n)` of
+/// `p(u₀ + s·Δu, v₀ + t·Δv)` on `[0, 1]²` (see [`tensor_bernstein_scaled`]):
+/// `Some(Greater)` if all are positive, `Some(Less)` if all are negative, else `None`.
+/// All positive implies `p > 0` on the rectangle (Bernstein coefficients enclose the
+/// range: Farin, *Curves and Surfaces for CAGD*, 5th ed., §5.2, convex hull property).
+///
+/// # Errors
+/// As [`tensor_bernstein_scaled`].
+pub fn tensor_bernstein_sign(
+    power: &[crate::rational::Rational],
+    mn: (usize, usize),
+    u: (&crate::rational::Rational, &crate::rational::Rational),
+    v: (&crate::rational::Rational, &crate::rational::Rational),
+) -> Result<Option<core::cmp::Ordering>, AlgebraError> {
+    let b = tensor_bernstein_scaled(power, mn, u, v)?;
+    let zero = dashu_int::IBig::ZERO;
+    Ok(if b.iter().all(|x| x > &zero) {
+        Some(core::cmp::Ordering::Greater)
+    } else if b.iter().all(|x| x < &zero) {
+        Some(core::cmp::Ordering::Less)
+    } else {
+        None
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -749,5 +889,77 @@ mod fraction_free_tests {
             }
         }
         assert!(product_tensor_scalar(&[Rational::from(1)], (1, 0), &[], (0, 0)).is_err());
+    }
+
+    fn q(p: i64, d: i64) -> Rational {
+        Rational::from_ratio(p, d)
+    }
+
+    /// `p(a + h s)`, `p(·, b + k t)` and the Bernstein forms in `ℚ` (the reference of the
+    /// fraction-free `tensor_bernstein_scaled`).
+    fn tensor_bernstein_rational(
+        power: &[Rational],
+        (m, n): (usize, usize),
+        u: (&Rational, &Rational),
+        v: (&Rational, &Rational),
+    ) -> Vec<Rational> {
+        let w = n + 1;
+        let mut c = power.to_vec();
+        let shift = |line: Vec<Rational>, (a, h): (&Rational, &Rational), deg: usize| {
+            let s = Poly::new(line).compose(&Poly::new(vec![a.clone(), h.clone()]));
+            (0..=deg)
+                .map(|i| s.coeffs().get(i).cloned().unwrap_or(Rational::ZERO))
+                .collect::<Vec<_>>()
+        };
+        for j in 0..=n {
+            let col = shift((0..=m).map(|i| c[i * w + j].clone()).collect(), u, m);
+            for (i, x) in col.into_iter().enumerate() {
+                c[i * w + j] = x;
+            }
+        }
+        for i in 0..=m {
+            let row = shift(c[i * w..(i + 1) * w].to_vec(), v, n);
+            c[i * w..(i + 1) * w].clone_from_slice(&row);
+        }
+        let mut rows = Vec::new();
+        for row in c.chunks(w) {
+            rows.extend(to_bernstein_blocks(row, 1, n).expect("degree n"));
+        }
+        to_bernstein_blocks(&rows, w, m).expect("degree m")
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+        /// The fraction-free tensor Bernstein coefficients are one positive multiple of the
+        /// rational ones (so the same signs), on random rectangles.
+        #[test]
+        fn scaled_tensor_bernstein_is_a_positive_multiple(
+            m in 0usize..4,
+            n in 0usize..4,
+            raw in proptest::collection::vec((-9i64..10, 1i64..6), 16),
+            u in (-5i64..6, 1i64..5, 1i64..7, 1i64..5),
+            v in (-5i64..6, 1i64..5, 1i64..7, 1i64..5),
+        ) {
+            let power: Vec<Rational> = raw[..(m + 1) * (n + 1)].iter().map(|&(p, d)| q(p, d)).collect();
+            let (u0, du) = (q(u.0, u.1), q(u.2, u.3));
+            let (v0, dv) = (q(v.0, v.1), q(v.2, v.3));
+            let got = tensor_bernstein_scaled(&power, (m, n), (&u0, &du), (&v0, &dv)).expect("lengths");
+            let want = tensor_bernstein_rational(&power, (m, n), (&u0, &du), (&v0, &dv));
+            proptest::prop_assert_eq!(got.len(), want.len());
+            let lambda = got
+                .iter()
+                .zip(&want)
+                .find(|(_, w)| !w.is_zero())
+                .map(|(g, w)| Rational::from(g.clone()) / w.clone());
+            match lambda {
+                None => proptest::prop_assert!(got.iter().all(|g| g == &dashu_int::IBig::ZERO)),
+                Some(l) => {
+                    proptest::prop_assert!(l > Rational::ZERO);
+                    for (g, w) in got.iter().zip(&want) {
+                        proptest::prop_assert_eq!(Rational::from(g.clone()), l.clone() * w.clone());
+                    }
+                }
+            }
+        }
     }
 }

@@ -290,25 +290,49 @@ impl Neg for Interval {
 impl Mul for Interval {
     type Output = Interval;
     fn mul(self, rhs: Interval) -> Interval {
-        let p = [
-            &self.lo * &rhs.lo,
-            &self.lo * &rhs.hi,
-            &self.hi * &rhs.lo,
-            &self.hi * &rhs.hi,
-        ];
-        let mut lo = &p[0];
-        let mut hi = &p[0];
-        for x in &p[1..] {
-            if x < lo {
-                lo = x;
+        &self * &rhs
+    }
+}
+
+impl Mul<&Interval> for &Interval {
+    type Output = Interval;
+    /// The hull of the four end point products, computed by the signs of the end points
+    /// (Moore, *Interval Analysis*, 1966, §2.2, the nine cases): two products unless both
+    /// factors contain zero in their interior, the same end points as the four-product
+    /// hull.
+    fn mul(self, rhs: &Interval) -> Interval {
+        let (a, b) = (self, rhs);
+        let z = IBig::ZERO;
+        let (a_nonneg, a_nonpos) = (a.lo >= z, a.hi <= z);
+        let (b_nonneg, b_nonpos) = (b.lo >= z, b.hi <= z);
+        let (lo, hi) = if a_nonneg {
+            if b_nonneg {
+                (&a.lo * &b.lo, &a.hi * &b.hi)
+            } else if b_nonpos {
+                (&a.hi * &b.lo, &a.lo * &b.hi)
+            } else {
+                (&a.hi * &b.lo, &a.hi * &b.hi)
             }
-            if x > hi {
-                hi = x;
+        } else if a_nonpos {
+            if b_nonneg {
+                (&a.lo * &b.hi, &a.hi * &b.lo)
+            } else if b_nonpos {
+                (&a.hi * &b.hi, &a.lo * &b.lo)
+            } else {
+                (&a.lo * &b.hi, &a.lo * &b.lo)
             }
-        }
+        } else if b_nonneg {
+            (&a.lo * &b.hi, &a.hi * &b.hi)
+        } else if b_nonpos {
+            (&a.hi * &b.lo, &a.lo * &b.lo)
+        } else {
+            let (p, q) = (&a.lo * &b.hi, &a.hi * &b.lo);
+            let (r, s) = (&a.lo * &b.lo, &a.hi * &b.hi);
+            (p.min(q), r.max(s))
+        };
         Interval {
-            lo: shr_down(lo),
-            hi: shr_up(hi),
+            lo: shr_down(&lo),
+            hi: shr_up(&hi),
         }
     }
 }
@@ -363,6 +387,18 @@ impl Ring for Interval {
             hi: v,
         }
     }
+    /// The product of coefficient vectors with the interval products taken by reference
+    /// (no copies of the end points).
+    fn poly_mul(a: &[Self], b: &[Self]) -> Option<Vec<Self>> {
+        let mut out = vec![Interval::zero(); (a.len() + b.len()).saturating_sub(1)];
+        for (i, x) in a.iter().enumerate() {
+            crate::budget::checkpoint();
+            for (j, y) in b.iter().enumerate() {
+                out[i + j] += x * y;
+            }
+        }
+        Some(out)
+    }
 }
 
 #[cfg(test)]
@@ -408,6 +444,33 @@ mod tests {
         assert!(r.contains(&q(2, 1)) && r.contains(&q(3, 1)));
         assert_eq!(c.sign(), Some(Ordering::Greater));
         assert_eq!(a.sign(), None);
+    }
+
+    /// The hull of the four end point products (the definition the sign cases of `Mul`
+    /// implement), rounded outward.
+    fn hull_of_four(a: &Interval, b: &Interval) -> Interval {
+        let p = [&a.lo * &b.lo, &a.lo * &b.hi, &a.hi * &b.lo, &a.hi * &b.hi];
+        let lo = p.iter().min().expect("four");
+        let hi = p.iter().max().expect("four");
+        Interval {
+            lo: shr_down(lo),
+            hi: shr_up(hi),
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+        /// The sign cases give exactly the hull of the four end point products, for end
+        /// points of every sign (zero included).
+        #[test]
+        fn sign_cases_equal_the_hull_of_four_products(
+            a in (-6i64..7, 0i64..7, 1i64..5),
+            b in (-6i64..7, 0i64..7, 1i64..5),
+        ) {
+            let mk = |(lo, w, d): (i64, i64, i64)| Interval::new(&q(lo, d), &q(lo + w, d)).expect("lo ≤ hi");
+            let (x, y) = (mk(a), mk(b));
+            proptest::prop_assert_eq!(x.clone() * y.clone(), hull_of_four(&x, &y));
+        }
     }
 
     #[test]

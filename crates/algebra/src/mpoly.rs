@@ -128,6 +128,35 @@ impl<R: Ring> MPoly<R> {
         }
     }
 
+    /// Adds `c·xᵉ` for a borrowed exponent vector `e` (length `nvars`): the key is
+    /// allocated only when the monomial is new.
+    fn add_term_ref(&mut self, e: &[u32], c: R) {
+        if c.is_zero() {
+            return;
+        }
+        match self.terms.get_mut(e) {
+            Some(v) => {
+                *v += c;
+                if v.is_zero() {
+                    self.terms.remove(e);
+                }
+            }
+            None => {
+                self.terms.insert(e.to_vec(), c);
+            }
+        }
+    }
+
+    /// The polynomial of terms given in ascending order of their (distinct) exponent
+    /// vectors of length `nvars`; zero coefficients are dropped (one bulk build of the
+    /// map instead of a search per term).
+    fn from_sorted_terms(nvars: usize, terms: impl IntoIterator<Item = (Vec<u32>, R)>) -> Self {
+        MPoly {
+            nvars,
+            terms: terms.into_iter().filter(|(_, c)| !c.is_zero()).collect(),
+        }
+    }
+
     /// The number of variables.
     pub fn nvars(&self) -> usize {
         self.nvars
@@ -219,26 +248,29 @@ impl<R: Ring> MPoly<R> {
 
     /// The partial derivative `∂/∂xᵢ` (zero if `i ≥ nvars`).
     pub fn partial(&self, i: usize) -> Self {
-        let mut p = MPoly::zero(self.nvars);
-        for (e, c) in &self.terms {
-            let Some(&k) = e.get(i) else { continue };
+        // lowering xᵢ's exponent by one keeps the lexicographic order of the terms with xᵢ
+        let terms = self.terms.iter().filter_map(|(e, c)| {
+            let k = *e.get(i)?;
             if k == 0 {
-                continue;
+                return None;
             }
             let mut f = e.clone();
             f[i] = k - 1;
-            p.add_term(f, R::from_i64(i64::from(k)) * c.clone());
-        }
-        p
+            Some((f, R::from_i64(i64::from(k)) * c.clone()))
+        });
+        MPoly::from_sorted_terms(self.nvars, terms)
     }
 
     /// Multiplies every coefficient by `c` on the right.
     pub fn scale(&self, c: &R) -> Self {
-        let mut p = MPoly::zero(self.nvars);
-        for (e, a) in &self.terms {
-            p.add_term(e.clone(), a.clone() * c.clone());
+        if c.is_zero() {
+            return MPoly::zero(self.nvars);
         }
-        p
+        let terms = self
+            .terms
+            .iter()
+            .map(|(e, a)| (e.clone(), a.clone() * c.clone()));
+        MPoly::from_sorted_terms(self.nvars, terms)
     }
 
     /// `selfᵏ` (`self⁰ = 1`), by repeated squaring.
@@ -260,11 +292,10 @@ impl<R: Ring> MPoly<R> {
 
     /// Applies `f` to every coefficient (zero images are dropped).
     pub fn map<S: Ring>(&self, f: impl Fn(&R) -> S) -> MPoly<S> {
-        let mut p = MPoly::zero(self.nvars);
-        for (e, c) in &self.terms {
-            p.add_term(e.clone(), f(c));
-        }
-        p
+        MPoly::from_sorted_terms(
+            self.nvars,
+            self.terms.iter().map(|(e, c)| (e.clone(), f(c))),
+        )
     }
 
     /// The univariate polynomial `p(x₀(t), …, x_{n−1}(t))`.
@@ -511,37 +542,322 @@ impl<R: Ring> PartialEq for MPoly<R> {
 impl<R: Ring> Add for &MPoly<R> {
     type Output = MPoly<R>;
     fn add(self, rhs: &MPoly<R>) -> MPoly<R> {
-        let n = self.nvars.max(rhs.nvars);
-        let mut out = self.padded(n).into_owned();
-        for (e, c) in &rhs.terms {
-            out.add_term(add_exps(e, &[], n), c.clone());
-        }
-        out
+        merge_add(self, rhs, false)
     }
 }
 impl<R: Ring> Sub for &MPoly<R> {
     type Output = MPoly<R>;
     fn sub(self, rhs: &MPoly<R>) -> MPoly<R> {
-        let n = self.nvars.max(rhs.nvars);
-        let mut out = self.padded(n).into_owned();
-        for (e, c) in &rhs.terms {
-            out.add_term(add_exps(e, &[], n), -c.clone());
-        }
-        out
+        merge_add(self, rhs, true)
     }
 }
+
+/// The lexicographic order of two exponent vectors padded with zeros to equal length.
+fn cmp_padded(a: &[u32], b: &[u32]) -> core::cmp::Ordering {
+    let n = a.len().max(b.len());
+    (0..n)
+        .map(|i| {
+            let x = a.get(i).copied().unwrap_or(0);
+            let y = b.get(i).copied().unwrap_or(0);
+            x.cmp(&y)
+        })
+        .find(|o| o.is_ne())
+        .unwrap_or(core::cmp::Ordering::Equal)
+}
+
+/// `a + b` (or `a − b` with `negate`) by one merge of the two ordered term lists.
+fn merge_add<R: Ring>(a: &MPoly<R>, b: &MPoly<R>, negate: bool) -> MPoly<R> {
+    use core::cmp::Ordering;
+    let n = a.nvars.max(b.nvars);
+    let key = |e: &Vec<u32>| {
+        if e.len() == n {
+            e.clone()
+        } else {
+            add_exps(e, &[], n)
+        }
+    };
+    let sign = |c: &R| if negate { -c.clone() } else { c.clone() };
+    let mut out = Vec::with_capacity(a.terms.len() + b.terms.len());
+    let mut ia = a.terms.iter().peekable();
+    let mut ib = b.terms.iter().peekable();
+    loop {
+        let ord = match (ia.peek(), ib.peek()) {
+            (Some((ea, _)), Some((eb, _))) => cmp_padded(ea, eb),
+            (Some(_), None) => Ordering::Less,
+            (None, Some(_)) => Ordering::Greater,
+            (None, None) => break,
+        };
+        match (ord, ia.peek(), ib.peek()) {
+            (Ordering::Less, Some(&(e, c)), _) => {
+                out.push((key(e), c.clone()));
+                ia.next();
+            }
+            (Ordering::Greater, _, Some(&(e, c))) => {
+                out.push((key(e), sign(c)));
+                ib.next();
+            }
+            (Ordering::Equal, Some(&(e, c)), Some(&(_, d))) => {
+                let v = if negate {
+                    c.clone() - d.clone()
+                } else {
+                    c.clone() + d.clone()
+                };
+                out.push((key(e), v));
+                ia.next();
+                ib.next();
+            }
+            _ => break,
+        }
+    }
+    MPoly::from_sorted_terms(n, out)
+}
+
+/// The exponent vectors of a product laid out densely: result degree `dᵢ` per variable,
+/// index `Σ eᵢ·strideᵢ` with `x₀` most significant, so ascending indices are ascending
+/// lexicographic exponent vectors, and the index of `e + f` is the sum of the indices.
+struct DenseLayout {
+    dims: Vec<usize>,
+    strides: Vec<usize>,
+    size: usize,
+}
+
+impl DenseLayout {
+    /// The layout of the products of `a`'s and `b`'s exponent vectors in `n` variables,
+    /// if its size is at most `4·|a|·|b| + 64` (else a sparse accumulation is cheaper).
+    fn new(a: &[&[u32]], b: &[&[u32]], n: usize) -> Option<Self> {
+        let deg = |v: &[&[u32]], i: usize| v.iter().map(|e| e.get(i).copied().unwrap_or(0)).max();
+        let limit = a
+            .len()
+            .saturating_mul(b.len())
+            .saturating_mul(4)
+            .saturating_add(64);
+        let mut dims = vec![0usize; n];
+        let mut size = 1usize;
+        for (i, d) in dims.iter_mut().enumerate() {
+            let di = usize::try_from(deg(a, i)?)
+                .ok()?
+                .checked_add(usize::try_from(deg(b, i)?).ok()?)?
+                .checked_add(1)?;
+            *d = di;
+            size = size.checked_mul(di)?;
+            if size > limit {
+                return None;
+            }
+        }
+        let mut strides = vec![1usize; n];
+        for i in (0..n.saturating_sub(1)).rev() {
+            strides[i] = strides[i + 1] * dims[i + 1];
+        }
+        Some(DenseLayout {
+            dims,
+            strides,
+            size,
+        })
+    }
+
+    fn index(&self, e: &[u32]) -> usize {
+        e.iter()
+            .zip(&self.strides)
+            .map(|(&k, s)| k as usize * s)
+            .sum()
+    }
+
+    fn exponents(&self, mut idx: usize) -> Vec<u32> {
+        let mut e = vec![0u32; self.dims.len()];
+        for i in (0..self.dims.len()).rev() {
+            // each digit is below its dimension, which came from a sum of u32 exponents + 1
+            e[i] = u32::try_from(idx % self.dims[i]).unwrap_or(u32::MAX);
+            idx /= self.dims[i];
+        }
+        e
+    }
+}
+
+/// The terms of `Σᵢⱼ (term i of a)(term j of b)`: `add(acc, i, j)` adds the product of
+/// the coefficients `i` of `a` and `j` of `b` into the accumulator `acc` of their
+/// monomial; the result's terms in ascending order, zero sums dropped. A dense array
+/// when the exponents are dense enough ([`DenseLayout`]), else an ordered map.
+fn accumulate_product<T: Clone>(
+    a: &[&[u32]],
+    b: &[&[u32]],
+    n: usize,
+    zero: T,
+    mut add: impl FnMut(&mut T, usize, usize),
+    is_zero: impl Fn(&T) -> bool,
+) -> Vec<(Vec<u32>, T)> {
+    if let Some(layout) = DenseLayout::new(a, b, n) {
+        let ib: Vec<usize> = b.iter().map(|e| layout.index(e)).collect();
+        let mut acc = vec![zero; layout.size];
+        for (i, ea) in a.iter().enumerate() {
+            crate::budget::checkpoint();
+            let base = layout.index(ea);
+            for (j, &k) in ib.iter().enumerate() {
+                add(&mut acc[base + k], i, j);
+            }
+        }
+        return acc
+            .into_iter()
+            .enumerate()
+            .filter(|(_, c)| !is_zero(c))
+            .map(|(k, c)| (layout.exponents(k), c))
+            .collect();
+    }
+    let mut acc: BTreeMap<Vec<u32>, T> = BTreeMap::new();
+    let mut buf = vec![0u32; n];
+    for (i, ea) in a.iter().enumerate() {
+        crate::budget::checkpoint();
+        for (j, eb) in b.iter().enumerate() {
+            for (t, x) in buf.iter_mut().enumerate() {
+                let p = ea.get(t).copied().unwrap_or(0);
+                let q = eb.get(t).copied().unwrap_or(0);
+                *x = p.saturating_add(q);
+            }
+            match acc.get_mut(buf.as_slice()) {
+                Some(c) => add(c, i, j),
+                None => {
+                    let mut c = zero.clone();
+                    add(&mut c, i, j);
+                    acc.insert(buf.clone(), c);
+                }
+            }
+        }
+    }
+    acc.into_iter().filter(|(_, c)| !is_zero(c)).collect()
+}
+
+/// The generic product: coefficients multiplied and summed in `R`.
+fn mul_generic<R: Ring>(a: &MPoly<R>, b: &MPoly<R>) -> MPoly<R> {
+    let n = a.nvars.max(b.nvars);
+    let (ae, ac): (Vec<&[u32]>, Vec<&R>) = a.terms.iter().map(|(e, c)| (e.as_slice(), c)).unzip();
+    let (be, bc): (Vec<&[u32]>, Vec<&R>) = b.terms.iter().map(|(e, c)| (e.as_slice(), c)).unzip();
+    let terms = accumulate_product(
+        &ae,
+        &be,
+        n,
+        R::zero(),
+        |acc, i, j| *acc += ac[i].clone() * bc[j].clone(),
+        |c| c.is_zero(),
+    );
+    MPoly::from_sorted_terms(n, terms)
+}
+
+/// The coefficients of `p` as integers over one common denominator `L` (the least
+/// common multiple of the denominators): `p = (Σ Aₑ xᵉ)/L`.
+fn integer_coefficients(p: &MPoly<Rational>) -> (Vec<dashu_int::IBig>, dashu_int::UBig) {
+    integers_over_common_denominator(p.terms.values())
+}
+
+/// The integers `Aᵢ` and the common denominator `L` (least common multiple of the
+/// denominators) with `cᵢ = Aᵢ/L`.
+fn integers_over_common_denominator<'a>(
+    cs: impl Iterator<Item = &'a Rational> + Clone,
+) -> (Vec<dashu_int::IBig>, dashu_int::UBig) {
+    use dashu_int::{IBig, UBig};
+    let mut l = UBig::ONE;
+    for c in cs.clone() {
+        let d = c.denominator();
+        if d != &UBig::ONE && d != &l {
+            let g = dashu_base::Gcd::gcd(&l, d);
+            l = &l / &g * d;
+        }
+    }
+    let ints = cs
+        .map(|c| {
+            let d = c.denominator();
+            if d == &l {
+                c.numerator().clone()
+            } else {
+                c.numerator() * IBig::from(&l / d)
+            }
+        })
+        .collect();
+    (ints, l)
+}
+
+/// The product of two dense univariate coefficient vectors over `ℚ` (constant term
+/// first), fraction-free like [`mul_rational`]: integer convolution over the two common
+/// denominators, one reduction per result coefficient.
+pub(crate) fn poly_mul_rational(a: &[Rational], b: &[Rational]) -> Vec<Rational> {
+    use dashu_int::IBig;
+    let (ia, la) = integers_over_common_denominator(a.iter());
+    let (ib, lb) = integers_over_common_denominator(b.iter());
+    let mut out = vec![IBig::ZERO; (a.len() + b.len()).saturating_sub(1)];
+    for (i, x) in ia.iter().enumerate() {
+        if x == &IBig::ZERO {
+            continue;
+        }
+        crate::budget::checkpoint();
+        for (j, y) in ib.iter().enumerate() {
+            out[i + j] += x * y;
+        }
+    }
+    let den = la * lb;
+    let one = den == dashu_int::UBig::ONE;
+    out.into_iter()
+        .map(|c| {
+            if one {
+                Rational::from(c)
+            } else {
+                Rational::from_parts(c, den.clone())
+            }
+        })
+        .collect()
+}
+
+/// The product of two polynomials over `ℚ`, fraction-free: `(A/L)(B/M) = (AB)/(LM)` with
+/// the integer coefficient vectors `A`, `B` over one common denominator per factor
+/// ([`integer_coefficients`]), products and sums of integers only, and one reduction per
+/// result coefficient (instead of a gcd per product and per sum). Exact: the same
+/// polynomial as the term-by-term product.
+pub(crate) fn mul_rational(a: &MPoly<Rational>, b: &MPoly<Rational>) -> MPoly<Rational> {
+    use dashu_int::IBig;
+    let n = a.nvars.max(b.nvars);
+    let (ia, la) = integer_coefficients(a);
+    let (ib, lb) = integer_coefficients(b);
+    let ae: Vec<&[u32]> = a.terms.keys().map(Vec::as_slice).collect();
+    let be: Vec<&[u32]> = b.terms.keys().map(Vec::as_slice).collect();
+    let terms = accumulate_product(
+        &ae,
+        &be,
+        n,
+        IBig::ZERO,
+        |acc, i, j| *acc += &ia[i] * &ib[j],
+        |c| c == &IBig::ZERO,
+    );
+    let den = la * lb;
+    let one = den == dashu_int::UBig::ONE;
+    MPoly::from_sorted_terms(
+        n,
+        terms.into_iter().map(|(e, c)| {
+            let q = if one {
+                Rational::from(c)
+            } else {
+                Rational::from_parts(c, den.clone())
+            };
+            (e, q)
+        }),
+    )
+}
+
 impl<R: Ring> Mul for &MPoly<R> {
     type Output = MPoly<R>;
     fn mul(self, rhs: &MPoly<R>) -> MPoly<R> {
         let n = self.nvars.max(rhs.nvars);
-        let mut out = MPoly::zero(n);
-        for (ea, a) in &self.terms {
-            crate::budget::checkpoint();
-            for (eb, b) in &rhs.terms {
-                out.add_term(add_exps(ea, eb, n), a.clone() * b.clone());
-            }
+        if self.terms.is_empty() || rhs.terms.is_empty() {
+            return MPoly::zero(n);
         }
-        out
+        // a monomial factor shifts every exponent vector: the order is kept
+        if self.terms.len() == 1 || rhs.terms.len() == 1 {
+            crate::budget::checkpoint();
+            let mut out = Vec::with_capacity(self.terms.len().max(rhs.terms.len()));
+            for (ea, a) in &self.terms {
+                for (eb, b) in &rhs.terms {
+                    out.push((add_exps(ea, eb, n), a.clone() * b.clone()));
+                }
+            }
+            return MPoly::from_sorted_terms(n, out);
+        }
+        R::mpoly_mul(self, rhs).unwrap_or_else(|| mul_generic(self, rhs))
     }
 }
 impl<R: Ring> Neg for &MPoly<R> {
@@ -559,14 +875,16 @@ impl<R: Ring> Neg for &MPoly<R> {
 }
 impl<R: Ring> Add for MPoly<R> {
     type Output = MPoly<R>;
-    fn add(self, rhs: MPoly<R>) -> MPoly<R> {
-        &self + &rhs
+    fn add(mut self, rhs: MPoly<R>) -> MPoly<R> {
+        self += rhs;
+        self
     }
 }
 impl<R: Ring> Sub for MPoly<R> {
     type Output = MPoly<R>;
-    fn sub(self, rhs: MPoly<R>) -> MPoly<R> {
-        &self - &rhs
+    fn sub(mut self, rhs: MPoly<R>) -> MPoly<R> {
+        self -= rhs;
+        self
     }
 }
 impl<R: Ring> Mul for MPoly<R> {
@@ -581,14 +899,47 @@ impl<R: Ring> Neg for MPoly<R> {
         -&self
     }
 }
+
+impl<R: Ring> MPoly<R> {
+    /// `self += sign·rhs` in place when `rhs` is small against `self` (a search per term
+    /// of `rhs`), else by a merge.
+    fn add_assign_signed(&mut self, rhs: &MPoly<R>, negate: bool) {
+        if rhs.terms.len().saturating_mul(4) > self.terms.len() {
+            *self = merge_add(self, rhs, negate);
+            return;
+        }
+        let n = self.nvars.max(rhs.nvars);
+        if n > self.nvars {
+            *self = self.padded(n).into_owned();
+        }
+        for (e, c) in &rhs.terms {
+            let c = if negate { -c.clone() } else { c.clone() };
+            if e.len() == n {
+                self.add_term_ref(e, c);
+            } else {
+                self.add_term(add_exps(e, &[], n), c);
+            }
+        }
+    }
+}
 impl<R: Ring> AddAssign for MPoly<R> {
     fn add_assign(&mut self, rhs: MPoly<R>) {
-        *self = &*self + &rhs;
+        self.add_assign_signed(&rhs, false);
     }
 }
 impl<R: Ring> SubAssign for MPoly<R> {
     fn sub_assign(&mut self, rhs: MPoly<R>) {
-        *self = &*self - &rhs;
+        self.add_assign_signed(&rhs, true);
+    }
+}
+impl<R: Ring> AddAssign<&MPoly<R>> for MPoly<R> {
+    fn add_assign(&mut self, rhs: &MPoly<R>) {
+        self.add_assign_signed(rhs, false);
+    }
+}
+impl<R: Ring> SubAssign<&MPoly<R>> for MPoly<R> {
+    fn sub_assign(&mut self, rhs: &MPoly<R>) {
+        self.add_assign_signed(rhs, true);
     }
 }
 impl<R: Ring> MulAssign for MPoly<R> {
@@ -858,5 +1209,203 @@ mod tests {
             },
         );
         assert_eq!(styled, "3·s^2·t + t + [-2/5]");
+    }
+
+    /// The product by its definition, `Σ (a_e b_f) x^{e+f}` term by term into a map
+    /// (the reference for the fraction-free, dense and sparse products).
+    fn naive_mul<R: Ring>(a: &MPoly<R>, b: &MPoly<R>) -> MPoly<R> {
+        let n = a.nvars().max(b.nvars());
+        let mut out = MPoly::zero(n);
+        for (ea, x) in a.terms() {
+            for (eb, y) in b.terms() {
+                out.add_term(add_exps(ea, eb, n), x.clone() * y.clone());
+            }
+        }
+        out
+    }
+
+    /// The sum `a + s·b` term by term (the reference for the merged sum and the in-place
+    /// sums).
+    fn naive_add<R: Ring>(a: &MPoly<R>, b: &MPoly<R>, s: i64) -> MPoly<R> {
+        let n = a.nvars().max(b.nvars());
+        let mut out = MPoly::zero(n);
+        for (e, c) in a.terms().chain([]) {
+            out.add_term(add_exps(e, &[], n), c.clone());
+        }
+        for (e, c) in b.terms() {
+            out.add_term(add_exps(e, &[], n), R::from_i64(s) * c.clone());
+        }
+        out
+    }
+
+    fn from_list(nvars: usize, terms: &[(Vec<u32>, i64, i64)]) -> M {
+        M::from_terms(
+            nvars,
+            terms
+                .iter()
+                .map(|(e, p, d)| {
+                    (
+                        e[..nvars].to_vec(),
+                        Rational::from_parts_signed((*p).into(), (*d).into()),
+                    )
+                })
+                .collect(),
+        )
+        .expect("lengths")
+    }
+
+    fn same_terms<R: Ring>(a: &MPoly<R>, b: &MPoly<R>) -> bool {
+        a.nvars() == b.nvars() && a.terms().eq(b.terms())
+    }
+
+    #[test]
+    fn products_agree_with_the_definition_on_dense_sparse_and_monomial_factors() {
+        // dense (bivariate), sparse (exponents far apart: the ordered-map path), a
+        // monomial factor, a factor with fewer variables, and an integer-only product
+        let dense = from_list(
+            2,
+            &[
+                (vec![0, 0], 1, 3),
+                (vec![1, 2], -5, 7),
+                (vec![2, 1], 2, 9),
+                (vec![3, 0], 1, 1),
+            ],
+        );
+        let dense2 = from_list(
+            2,
+            &[(vec![0, 1], 3, 4), (vec![1, 0], -1, 6), (vec![2, 2], 7, 1)],
+        );
+        let sparse = from_list(
+            3,
+            &[
+                (vec![0, 0, 0], 1, 2),
+                (vec![900, 0, 3], 3, 5),
+                (vec![0, 700, 1], -2, 3),
+            ],
+        );
+        let sparse2 = from_list(
+            3,
+            &[
+                (vec![5, 0, 0], 1, 7),
+                (vec![0, 800, 0], -1, 1),
+                (vec![1, 1, 600], 4, 9),
+            ],
+        );
+        let mono = from_list(2, &[(vec![3, 1], -2, 5)]);
+        let uni = from_list(1, &[(vec![0], 1, 2), (vec![4], -3, 1)]);
+        let int = from_list(2, &[(vec![0, 0], 3, 1), (vec![1, 1], -4, 1)]);
+        let cases = [
+            (&dense, &dense2),
+            (&sparse, &sparse2),
+            (&dense, &sparse),
+            (&mono, &dense),
+            (&dense2, &mono),
+            (&uni, &dense),
+            (&dense, &uni),
+            (&int, &int),
+            (&dense, &M::zero(2)),
+        ];
+        for (a, b) in cases {
+            let r = naive_mul(a, b);
+            assert!(same_terms(&(a * b), &r), "{a} · {b}");
+            assert!(same_terms(&mul_generic(a, b), &r), "generic {a} · {b}");
+            let fa = a.map(|c| c.to_f64().value());
+            let fb = b.map(|c| c.to_f64().value());
+            let fr = naive_mul(&fa, &fb);
+            let got = &fa * &fb;
+            assert_eq!(got.num_terms(), fr.num_terms());
+            for ((e1, c1), (e2, c2)) in got.terms().zip(fr.terms()) {
+                assert_eq!(e1, e2);
+                assert!((c1 - c2).abs() <= 1e-12 * c2.abs().max(1.0));
+            }
+        }
+        // cancellation to zero in the fraction-free sum: (x + 1)(x − 1) = x² − 1
+        let x = M::var(1, 0);
+        let one = M::constant(1, q(1));
+        assert_eq!(&(&x + &one) * &(&x - &one), &(&x * &x) - &one);
+    }
+
+    #[test]
+    fn sums_agree_with_the_definition_by_merge_and_in_place() {
+        let a = from_list(
+            2,
+            &[(vec![0, 0], 1, 3), (vec![1, 2], -5, 7), (vec![2, 1], 2, 9)],
+        );
+        let b = from_list(2, &[(vec![1, 2], 5, 7), (vec![0, 1], 1, 2)]);
+        let c = from_list(3, &[(vec![0, 0, 1], 1, 1), (vec![2, 1, 0], -2, 9)]);
+        let big = &(&a * &a) * &a;
+        for (x, y) in [
+            (&a, &b),
+            (&b, &a),
+            (&a, &c),
+            (&c, &a),
+            (&big, &b),
+            (&a, &a),
+            (&b, &big),
+        ] {
+            assert!(same_terms(&(x + y), &naive_add(x, y, 1)), "{x} + {y}");
+            assert!(same_terms(&(x - y), &naive_add(x, y, -1)), "{x} − {y}");
+            let mut s = x.clone();
+            s += y;
+            assert!(same_terms(&s, &naive_add(x, y, 1)), "{x} += {y}");
+            let mut d = x.clone();
+            d -= y.clone();
+            assert!(same_terms(&d, &naive_add(x, y, -1)), "{x} −= {y}");
+        }
+        assert!((&a - &a).is_zero());
+        let mut z = a.clone();
+        z -= &a;
+        assert!(z.is_zero());
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+        /// The fraction-free univariate product equals the convolution in `ℚ`.
+        #[test]
+        fn univariate_fraction_free_product_is_the_convolution(
+            a in proptest::collection::vec((-20i64..21, 1i64..30), 1..8),
+            b in proptest::collection::vec((-20i64..21, 1i64..30), 1..8),
+        ) {
+            let qa: Vec<Rational> = a.iter().map(|&(p, d)| Rational::from_parts_signed(p.into(), d.into())).collect();
+            let qb: Vec<Rational> = b.iter().map(|&(p, d)| Rational::from_parts_signed(p.into(), d.into())).collect();
+            let mut want = vec![Rational::ZERO; qa.len() + qb.len() - 1];
+            for (i, x) in qa.iter().enumerate() {
+                for (j, y) in qb.iter().enumerate() {
+                    want[i + j] += x * y;
+                }
+            }
+            proptest::prop_assert_eq!(poly_mul_rational(&qa, &qb), want.clone());
+            proptest::prop_assert_eq!(
+                (&Poly::new(qa.clone()) * &Poly::new(qb.clone())).coeffs().to_vec(),
+                Poly::new(want).coeffs().to_vec()
+            );
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+        /// The product (fraction-free for ℚ, dense or sparse) and the sums equal their
+        /// term-by-term definitions on random polynomials in up to three variables.
+        #[test]
+        fn random_products_and_sums_agree_with_the_definition(
+            ta in proptest::collection::vec((proptest::collection::vec(0u32..5, 3), -9i64..10, 1i64..13), 0..9),
+            tb in proptest::collection::vec((proptest::collection::vec(0u32..5, 3), -9i64..10, 1i64..13), 0..9),
+            na in 1usize..4,
+            nb in 1usize..4,
+            spread in proptest::bool::ANY,
+        ) {
+            let stretch = |t: &Vec<(Vec<u32>, i64, i64)>| -> Vec<(Vec<u32>, i64, i64)> {
+                t.iter().map(|(e, p, d)| (e.iter().map(|k| if spread { k * 97 } else { *k }).collect(), *p, *d)).collect()
+            };
+            let a = from_list(na, &stretch(&ta));
+            let b = from_list(nb, &stretch(&tb));
+            proptest::prop_assert!(same_terms(&(&a * &b), &naive_mul(&a, &b)));
+            proptest::prop_assert!(same_terms(&(&a + &b), &naive_add(&a, &b, 1)));
+            proptest::prop_assert!(same_terms(&(&a - &b), &naive_add(&a, &b, -1)));
+            let mut s = a.clone();
+            s -= &b;
+            proptest::prop_assert!(same_terms(&s, &naive_add(&a, &b, -1)));
+            proptest::prop_assert!(same_terms(&a.scale(&q(-3)), &naive_add(&M::zero(na), &a, -3)));
+        }
     }
 }

@@ -271,6 +271,9 @@ impl<R: Ring> Mul for &Poly<R> {
         if self.is_zero() || rhs.is_zero() {
             return Poly::zero();
         }
+        if let Some(out) = R::poly_mul(&self.coeffs, &rhs.coeffs) {
+            return Poly::new(out);
+        }
         let mut out = vec![R::zero(); self.coeffs.len() + rhs.coeffs.len() - 1];
         for (i, a) in self.coeffs.iter().enumerate() {
             if a.is_zero() {

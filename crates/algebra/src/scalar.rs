@@ -32,6 +32,24 @@ pub trait Ring:
 {
     /// The image of an integer.
     fn from_i64(n: i64) -> Self;
+
+    /// The product of two sparse polynomials over this ring when the ring has a faster
+    /// exact way than summing the coefficient products in `Self` (the default, `None`,
+    /// uses that generic product of [`crate::mpoly::MPoly`]). [`Rational`] multiplies
+    /// integer numerators over one common denominator per factor.
+    fn mpoly_mul(
+        _a: &crate::mpoly::MPoly<Self>,
+        _b: &crate::mpoly::MPoly<Self>,
+    ) -> Option<crate::mpoly::MPoly<Self>> {
+        None
+    }
+
+    /// The coefficient vector of the product of two univariate polynomials (non-empty
+    /// coefficient vectors, constant term first) when the ring has a faster exact way
+    /// than the generic sum of coefficient products (the default, `None`).
+    fn poly_mul(_a: &[Self], _b: &[Self]) -> Option<Vec<Self>> {
+        None
+    }
 }
 
 /// `xᵏ` in any ring, by repeated squaring (`x⁰ = 1`).
@@ -132,6 +150,15 @@ impl Scalar for f64 {
 impl Ring for Rational {
     fn from_i64(n: i64) -> Self {
         Rational::from(n)
+    }
+    fn mpoly_mul(
+        a: &crate::mpoly::MPoly<Self>,
+        b: &crate::mpoly::MPoly<Self>,
+    ) -> Option<crate::mpoly::MPoly<Self>> {
+        Some(crate::mpoly::mul_rational(a, b))
+    }
+    fn poly_mul(a: &[Self], b: &[Self]) -> Option<Vec<Self>> {
+        Some(crate::mpoly::poly_mul_rational(a, b))
     }
 }
 impl Field for Rational {

@@ -487,7 +487,8 @@ impl<F: Scalar> PnModel<F> {
     /// [`PnError::Singular`] naming the piece and a parameter point where `x_u × x_v = 0`.
     pub fn check_regular(&self) -> Result<(), PnError> {
         for (k, p) in self.pieces.iter().enumerate() {
-            let reg = compose(&p.surface.regularity_poly(), &p.collapse_map());
+            let at = p.surface.regularity_poly();
+            let reg = compose(&at, &p.collapse_map());
             // the collapse map's Jacobian vanishes only on s = 0; R itself must not vanish:
             // test R∘map on [1/64, 1] × [0, 1] and at the collapsed vertex separately
             let dom = Domain::new(F::from_ratio(1, 64), F::one(), F::zero(), F::one())?;
@@ -496,7 +497,6 @@ impl<F: Scalar> PnModel<F> {
                 &dom,
                 &format!("piece {k}: singular point (x_u × x_v = 0)"),
             )?;
-            let at = p.surface.regularity_poly();
             let val = super::poly::pad_eval(&at, &p.vertices[0]).unwrap_or_else(F::zero);
             if val.is_zero() {
                 return Err(PnError::Singular {

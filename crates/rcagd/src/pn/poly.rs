@@ -181,25 +181,69 @@ pub(crate) fn det4<F: Scalar>(m: [&[MPoly<F>; 4]; 4]) -> MPoly<F> {
     acc
 }
 
-/// The substitution `p(q₀, …, q_{n−1})` (`qs.len() ≥ nvars(p)`).
+/// The substitution `p(q₀, …, q_{n−1})` (`qs.len() ≥ nvars(p)`; the zero polynomial if a
+/// variable without substitute occurs), by Horner's rule in `q₀` whose coefficients are
+/// evaluated by Horner's rule in `q₁`, and so on: `p = Σₖ q₀ᵏ pₖ(q₁, …)` is
+/// `(…(p_K q₀^{K−K'} + p_{K'}) q₀^{K'−K''} + …)`, so only products by powers of the
+/// (small) substitutes occur, never products of two large powers.
 pub(crate) fn compose<F: Scalar>(p: &MPoly<F>, qs: &[MPoly<F>]) -> MPoly<F> {
-    let mut cache: std::collections::BTreeMap<(usize, u32), MPoly<F>> = Default::default();
-    let mut acc = MPoly::zero(qs.first().map_or(2, |q| q.nvars()));
-    for (e, c) in p.terms() {
-        let mut t = MPoly::constant(2, c.clone());
-        for (i, &k) in e.iter().enumerate() {
-            if k == 0 {
-                continue;
-            }
-            let Some(q) = qs.get(i) else {
-                return MPoly::zero(2);
-            };
-            let pw = cache.entry((i, k)).or_insert_with(|| q.pow(k)).clone();
-            t = &t * &pw;
-        }
-        acc = &acc + &t;
+    let nv = qs.first().map_or(2, |q| q.nvars()).max(2);
+    let terms: Vec<(&[u32], &F)> = p.terms().collect();
+    let missing = terms
+        .iter()
+        .any(|(e, _)| e.iter().enumerate().any(|(i, &k)| k != 0 && i >= qs.len()));
+    if missing {
+        return MPoly::zero(2);
     }
-    acc
+    horner(&terms, 0, qs, nv)
+}
+
+/// Terms `(exponent vector, coefficient)` of a polynomial, borrowed.
+type Terms<'a, F> = [(&'a [u32], &'a F)];
+
+/// `Σ c ∏_{i ≥ var} qᵢ^{eᵢ}` over `terms` (lexicographically ascending exponent vectors
+/// that agree below `var`), by Horner's rule in `q_var` (see [`compose`]).
+fn horner<F: Scalar>(terms: &Terms<'_, F>, var: usize, qs: &[MPoly<F>], nv: usize) -> MPoly<F> {
+    let exp = |e: &[u32]| e.get(var).copied().unwrap_or(0);
+    if terms
+        .iter()
+        .all(|(e, _)| e.iter().skip(var).all(|&k| k == 0))
+    {
+        // no further variable occurs: the sum of the coefficients
+        let c = terms
+            .iter()
+            .fold(F::zero(), |acc, (_, c)| acc + (*c).clone());
+        return MPoly::constant(nv, c);
+    }
+    // `compose` checked that every occurring variable has its substitute
+    let Some(q) = qs.get(var) else {
+        return MPoly::zero(nv);
+    };
+    if terms.iter().all(|(e, _)| exp(e) == 0) {
+        return horner(terms, var + 1, qs, nv);
+    }
+    // the terms grouped by their exponent of x_var (contiguous in lexicographic order)
+    let mut groups: Vec<(u32, &Terms<'_, F>)> = Vec::new();
+    let mut start = 0;
+    for i in 1..=terms.len() {
+        if i == terms.len() || exp(terms[i].0) != exp(terms[start].0) {
+            groups.push((exp(terms[start].0), &terms[start..i]));
+            start = i;
+        }
+    }
+    let mut acc = MPoly::zero(nv);
+    let mut prev: Option<u32> = None;
+    for (k, g) in groups.iter().rev() {
+        if let Some(pk) = prev {
+            acc = &acc * &q.pow(pk - k);
+        }
+        acc += horner(g, var + 1, qs, nv);
+        prev = Some(*k);
+    }
+    match prev {
+        Some(k) if k > 0 => &acc * &q.pow(k),
+        _ => acc,
+    }
 }
 
 /// The exact quotient `p/d` if `d` divides `p` (lexicographic division; over `f64` a
@@ -233,8 +277,8 @@ pub(crate) fn div_exact<F: Scalar>(p: &MPoly<F>, d: &MPoly<F>) -> Option<MPoly<F
         }
         let e: Vec<u32> = le.iter().zip(&lde).map(|(a, b)| a - b).collect();
         let t = MPoly::monomial(nv, &e, lc / ldc.clone());
-        r = &r - &(&t * d);
-        q = &q + &t;
+        r -= &t * d;
+        q += t;
     }
     Some(q)
 }
@@ -559,6 +603,9 @@ pub(crate) fn sign_on_domain<F: Scalar>(
     let tol = if F::EXACT { 0.0 } else { 1e-9 * scale };
     let is_pos = |x: &F| x.to_f64() > tol && (!F::EXACT || *x > F::zero());
     let is_neg = |x: &F| x.to_f64() < -tol && (!F::EXACT || *x < F::zero());
+    // exact scalars in `u, v` only: the power coefficients in `ℚ` (row-major in `u`) and
+    // the bidegree, for the fraction-free Bernstein signs
+    let exact = F::EXACT.then(|| exact_power_coefficients(p)).flatten();
     let mut stack = vec![domain.clone()];
     let mut pos: Option<[F; 2]> = None;
     let mut neg: Option<[F; 2]> = None;
@@ -580,12 +627,29 @@ pub(crate) fn sign_on_domain<F: Scalar>(
                 return Sign::Changes(a.clone(), b.clone());
             }
         }
-        let local = to_local(p, &d);
-        let (m, n) = bidegree(&local);
-        let Ok(b) = tensor_bernstein(&local, m, n) else {
-            return Sign::Undecided(d.point(&F::from_ratio(1, 2), &F::from_ratio(1, 2)));
+        let decided = match &exact {
+            // exact: the signs of positive multiples of the Bernstein coefficients,
+            // fraction-free (`rcagd_algebra::bernstein::tensor_bernstein_sign`)
+            Some((power, mn)) => {
+                let q = |x: &F| x.to_rational().unwrap_or_default();
+                let (u0, v0) = (q(&d.u.0), q(&d.v.0));
+                let (du, dv) = (q(&d.u.1) - u0.clone(), q(&d.v.1) - v0.clone());
+                let Ok(sign) = bernstein::tensor_bernstein_sign(power, *mn, (&u0, &du), (&v0, &dv))
+                else {
+                    return Sign::Undecided(d.point(&F::from_ratio(1, 2), &F::from_ratio(1, 2)));
+                };
+                sign.is_some()
+            }
+            None => {
+                let local = to_local(p, &d);
+                let (m, n) = bidegree(&local);
+                let Ok(b) = tensor_bernstein(&local, m, n) else {
+                    return Sign::Undecided(d.point(&F::from_ratio(1, 2), &F::from_ratio(1, 2)));
+                };
+                b.iter().all(is_pos) || b.iter().all(is_neg)
+            }
         };
-        if b.iter().all(is_pos) || b.iter().all(is_neg) {
+        if decided {
             continue;
         }
         if processed + stack.len() + 4 > budget {
@@ -598,6 +662,25 @@ pub(crate) fn sign_on_domain<F: Scalar>(
     } else {
         Sign::Positive
     }
+}
+
+/// The power coefficients in `ℚ` of a polynomial in `u, v` only (row-major in `u`, the
+/// bidegree's `(m + 1)(n + 1)` entries) and its bidegree; `None` if another variable occurs
+/// or a coefficient is not rational.
+fn exact_power_coefficients<F: Scalar>(
+    p: &MPoly<F>,
+) -> Option<(Vec<rcagd_algebra::Rational>, (usize, usize))> {
+    let (m, n) = bidegree(p);
+    let mut power = vec![rcagd_algebra::Rational::ZERO; (m + 1) * (n + 1)];
+    for (e, c) in p.terms() {
+        if e.iter().skip(2).any(|&k| k != 0) {
+            return None;
+        }
+        let i = e.first().copied().unwrap_or(0) as usize;
+        let j = e.get(1).copied().unwrap_or(0) as usize;
+        *power.get_mut(i * (n + 1) + j)? = c.to_rational()?;
+    }
+    Some((power, (m, n)))
 }
 
 /// The certificate `p ≡ 0` (every coefficient zero; for `f64` below `10⁻⁹ · scale`).
@@ -681,6 +764,49 @@ mod tests {
     }
     fn v() -> MPoly<Q> {
         var(1)
+    }
+
+    /// The substitution by its definition, `Σ c ∏ qᵢ^{eᵢ}` (the reference for the Horner
+    /// scheme of [`compose`]).
+    fn compose_by_definition(p: &MPoly<Q>, qs: &[MPoly<Q>]) -> MPoly<Q> {
+        let mut acc = MPoly::zero(2);
+        for (e, c) in p.terms() {
+            let mut t = MPoly::constant(2, c.clone());
+            for (i, &k) in e.iter().enumerate() {
+                t = &t * &qs[i].pow(k);
+            }
+            acc = &acc + &t;
+        }
+        acc
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(32))]
+        /// Horner's `compose` equals the substitution term by term, for random bivariate
+        /// polynomials and random substitutes of degree ≤ 2 (in two variables).
+        #[test]
+        fn compose_by_horner_equals_the_definition(
+            tp in proptest::collection::vec((0u32..5, 0u32..5, -9i64..10, 1i64..7), 0..10),
+            tq in proptest::collection::vec((0u32..3, 0u32..3, -5i64..6, 1i64..5), 0..8),
+            tr in proptest::collection::vec((0u32..3, 0u32..3, -5i64..6, 1i64..5), 0..8),
+        ) {
+            let mk = |t: &Vec<(u32, u32, i64, i64)>| {
+                MPoly::from_terms(2, t.iter().map(|(a, b, n, d)| (vec![*a, *b], q(*n, *d))).collect())
+                    .expect("two exponents")
+            };
+            let (p, qu, qv) = (mk(&tp), mk(&tq), mk(&tr));
+            let qs = [qu, qv];
+            proptest::prop_assert_eq!(compose(&p, &qs), compose_by_definition(&p, &qs));
+        }
+    }
+
+    /// A variable without substitute gives zero; a constant stays a constant.
+    #[test]
+    fn compose_without_substitute_and_of_constants() {
+        let p = &(&u() * &v()) + &int(3);
+        assert!(compose(&p, &[var(1)]).is_zero());
+        assert_eq!(compose(&int::<Q>(7), &[]), int(7));
+        assert_eq!(compose(&p, &[int(2), int(5)]), int(13));
     }
 
     /// The Taylor-shift `to_local` equals the composition with `(a + h s, b + k t)`.
