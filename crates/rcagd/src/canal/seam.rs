@@ -29,9 +29,9 @@ use rcagd_geom::{BezierCurve, BezierPatch};
 use std::collections::HashMap;
 
 /// The most bisections of a ring in `t` when it is tiled with positive weights.
-const MAX_T_SPLITS: usize = 6;
-/// The most bisections of each quarter of the circle in `u` (the same for every ring).
-const MAX_U_SPLITS: usize = 3;
+const MAX_T_SPLITS: usize = 5;
+/// The most `u`-cells of the tiling (the same cells for every ring; four to start with).
+const MAX_U_CELLS: usize = 64;
 
 /// A 2×2 matrix `[[α, β], [γ, δ]]`: the Möbius map `u ↦ (αu + β)/(γu + δ)`.
 type Mat = [[Rational; 2]; 2];
@@ -181,22 +181,49 @@ fn blend(a_map: &Mat, b_map: &Mat, a: &Rational, b: &Rational) -> [[Poly<Rationa
     })
 }
 
+/// `true` if `a` and `b` are the same Möbius map (proportional matrices).
+fn same_map(a: &Mat, b: &Mat) -> bool {
+    let (fa, fb): (Vec<&Rational>, Vec<&Rational>) =
+        (a.iter().flatten().collect(), b.iter().flatten().collect());
+    let Some(k) = fb.iter().position(|x| !x.is_zero()) else {
+        return false;
+    };
+    let l = fa[k].clone() / fb[k].clone();
+    fa.iter()
+        .zip(&fb)
+        .all(|(x, y)| **x == l.clone() * (*y).clone())
+}
+
+/// A positive rational `c ≈ √(|det a| / |det b|)` (a power of 2 of it, at least).
+fn balance(a: &Mat, b: &Mat) -> Rational {
+    let d = |m: &Mat| {
+        Scalar::to_f64(&(m[0][0].clone() * m[1][1].clone() - m[0][1].clone() * m[1][0].clone()))
+            .abs()
+    };
+    let r = (d(a) / d(b)).sqrt();
+    if !r.is_finite() || r <= 0.0 {
+        return Rational::ONE;
+    }
+    // the nearest power of two (exact, positive)
+    let e = r.log2().round().clamp(-60.0, 60.0) as i32;
+    if e >= 0 {
+        Rational::from(1i64 << e)
+    } else {
+        Rational::from_ratio(1, 1i64 << (-e))
+    }
+}
+
 fn det(m: &[[Poly<Rational>; 2]; 2]) -> Poly<Rational> {
     &(&m[0][0] * &m[1][1]) - &(&m[0][1] * &m[1][0])
 }
 
 /// The four quarters of the circle: `u ∈ [−1, 0], [0, 1]` and, in the chart `u = 1/v`,
-/// `v ∈ [−1, 0], [0, 1]`, each cut into `2^ku` equal parts.
-fn u_cells(ku: usize) -> Vec<(bool, Rational, Rational)> {
-    let n = 1i64 << ku;
+/// `v ∈ [−1, 0], [0, 1]` (chart flag, start, end).
+fn quarters() -> Vec<(bool, Rational, Rational)> {
     let mut out = Vec::new();
     for chart in [false, true] {
-        for k in -n..n {
-            out.push((
-                chart,
-                Rational::from_ratio(k, n),
-                Rational::from_ratio(k + 1, n),
-            ));
+        for k in -1..1 {
+            out.push((chart, Rational::from(k), Rational::from(k + 1)));
         }
     }
     out
@@ -218,48 +245,88 @@ fn one_signed(p: BezierPatch<Rational>) -> Option<BezierPatch<Rational>> {
     }
 }
 
-/// The patches of one `t`-column `[t₀, t₁]` over every cell in `u`, or `None` if a weight
-/// is not positive.
+/// The patches of one `t`-column `[t₀, t₁]` over every cell in `u`, or the indices of the
+/// cells whose weights are not all of one sign.
 fn column(
     charts: &[[BiPoly<Rational>; 4]; 2],
     t: (&Rational, &Rational),
     cells: &[(bool, Rational, Rational)],
-) -> Result<Option<Vec<BezierPatch<Rational>>>, CanalError> {
+) -> Result<Result<Vec<BezierPatch<Rational>>, Vec<usize>>, CanalError> {
     let mut out = Vec::with_capacity(cells.len());
-    for (chart, u0, u1) in cells {
+    let mut bad = Vec::new();
+    for (k, (chart, u0, u1)) in cells.iter().enumerate() {
         rcagd_algebra::budget::checkpoint();
         let x = &charts[usize::from(*chart)];
         match one_signed(patch_of(x, t, (u0, u1))?) {
             Some(p) => out.push(p),
-            None => return Ok(None),
+            None => bad.push(k),
         }
     }
-    Ok(Some(out))
+    Ok(if bad.is_empty() { Ok(out) } else { Err(bad) })
 }
 
-/// The ring on `[a, b]` tiled into `t`-columns (bisected where a weight is not positive, at
-/// most [`MAX_T_SPLITS`] deep) times the `u`-cells; `None` if that is not enough.
+/// The ring on `[a, b]` tiled into `t`-columns (bisected where a weight is not of one
+/// sign, at most [`MAX_T_SPLITS`] deep) times the `u`-cells; else the cells that still
+/// fail at that depth.
 fn tile_ring(
     x: &[BiPoly<Rational>; 4],
     (a, b): (&Rational, &Rational),
     cells: &[(bool, Rational, Rational)],
-) -> Result<Option<Vec<BezierPatch<Rational>>>, CanalError> {
+) -> Result<Result<Vec<BezierPatch<Rational>>, Vec<usize>>, CanalError> {
     let charts = [x.clone(), core::array::from_fn(|k| x[k].reverse_u(2))];
     let mut out = Vec::new();
     let mut stack = vec![(a.clone(), b.clone(), 0usize)];
     // depth-first, the left half first: the columns come out in parameter order
     while let Some((t0, t1, depth)) = stack.pop() {
         match column(&charts, (&t0, &t1), cells)? {
-            Some(ps) => out.extend(ps),
-            None if depth < MAX_T_SPLITS => {
+            Ok(ps) => out.extend(ps),
+            Err(_) if depth < MAX_T_SPLITS => {
                 let m = (t0.clone() + t1.clone()) / Rational::from(2);
                 stack.push((m.clone(), t1, depth + 1));
                 stack.push((t0, m, depth + 1));
             }
-            None => return Ok(None),
+            Err(bad) => return Ok(Err(bad)),
         }
     }
-    Ok(Some(out))
+    Ok(Ok(out))
+}
+
+/// Every ring tiled over one common list of `u`-cells: the four quarters, a cell bisected
+/// (for every ring) where some ring's column still fails after [`MAX_T_SPLITS`]
+/// bisections in `t`, up to [`MAX_U_CELLS`] cells; `None` if that is not enough.
+fn tile_rings(
+    rings: &[([BiPoly<Rational>; 4], Rational, Rational)],
+) -> Result<Option<Vec<Vec<BezierPatch<Rational>>>>, CanalError> {
+    let mut cells = quarters();
+    while cells.len() <= MAX_U_CELLS {
+        let mut all = Vec::with_capacity(rings.len());
+        let mut bad: Vec<usize> = Vec::new();
+        for (x, a, b) in rings {
+            match tile_ring(x, (a, b), &cells)? {
+                Ok(ps) => all.push(ps),
+                Err(cs) => {
+                    bad = cs;
+                    break;
+                }
+            }
+        }
+        if bad.is_empty() {
+            return Ok(Some(all));
+        }
+        // bisect the failing cells (in u, for every ring), keeping the cells in order
+        let mut next = Vec::with_capacity(cells.len() + bad.len());
+        for (k, (chart, u0, u1)) in cells.into_iter().enumerate() {
+            if bad.contains(&k) {
+                let m = (u0.clone() + u1.clone()) / Rational::from(2);
+                next.push((chart, u0, m.clone()));
+                next.push((chart, m, u1));
+            } else {
+                next.push((chart, u0, u1));
+            }
+        }
+        cells = next;
+    }
+    Ok(None)
 }
 
 /// A boundary curve up to orientation and a constant factor: the control points divided
@@ -315,7 +382,7 @@ pub fn closed_shell_certificate(patches: &[BezierPatch<Rational>]) -> Certificat
 /// # Errors
 /// [`CanalError::InvalidArgument`] if a ring is reparametrized in `t`, two neighbouring
 /// rings do not share their circle, the blend of the last ring degenerates, or no tiling
-/// within [`MAX_T_SPLITS`] and [`MAX_U_SPLITS`] has positive weights.
+/// within [`MAX_T_SPLITS`] bisections and [`MAX_U_CELLS`] cells has positive weights.
 pub(crate) fn close_rings(chain: &mut [ExportableCanal]) -> Result<Vec<Certificate>, CanalError> {
     let mut rings: Vec<&mut ExportPiece> =
         chain.iter_mut().flat_map(|c| c.pieces.iter_mut()).collect();
@@ -342,6 +409,7 @@ pub(crate) fn close_rings(chain: &mut [ExportableCanal]) -> Result<Vec<Certifica
     // the end circle of the ring before, as reparametrized
     let mut prev_end: Option<[BiPoly<Rational>; 4]> = None;
     for (j, ring) in rings.iter_mut().enumerate() {
+        let mut blended = false;
         let (a, b) = ring.interval.clone();
         let x = ring.surface.homogeneous().clone();
         let start = match &prev_end {
@@ -361,19 +429,32 @@ pub(crate) fn close_rings(chain: &mut [ExportableCanal]) -> Result<Vec<Certifica
                     format_scalar(&b)
                 ))
             })?;
-            let minus: Mat = core::array::from_fn(|i| core::array::from_fn(|k| -end[i][k].clone()));
-            let mut chosen = None;
-            for e in [end, minus] {
-                let m = blend(&start, &e, &a, &b);
-                let d = det(&m);
-                if !d.is_zero() && count_real_roots_in(&d, &a, &b)? == 0 {
-                    chosen = Some(m);
-                    break;
+            if same_map(&start, &end) {
+                // no holonomy: one constant map matches both ends
+                (start != identity).then(|| constant(&start))
+            } else {
+                // B scaled to |det B| ≈ |det A| (any positive factor is the same map; this
+                // one keeps the path of maps away from degenerate ones), either sign
+                let c = balance(&start, &end);
+                let plus: Mat = core::array::from_fn(|i| {
+                    core::array::from_fn(|k| c.clone() * end[i][k].clone())
+                });
+                let minus: Mat =
+                    core::array::from_fn(|i| core::array::from_fn(|k| -plus[i][k].clone()));
+                let mut chosen = None;
+                for e in [plus, minus] {
+                    let m = blend(&start, &e, &a, &b);
+                    let d = det(&m);
+                    if !d.is_zero() && count_real_roots_in(&d, &a, &b)? == 0 {
+                        chosen = Some(m);
+                        break;
+                    }
                 }
+                blended = true;
+                Some(chosen.ok_or_else(|| {
+                    err("the Möbius maps at the two ends of the last ring cannot be joined (the seam reverses the circle)".into())
+                })?)
             }
-            Some(chosen.ok_or_else(|| {
-                err("the Möbius maps at the two ends of the last ring cannot be joined (the seam reverses the circle)".into())
-            })?)
         } else if start == identity {
             None
         } else {
@@ -382,30 +463,24 @@ pub(crate) fn close_rings(chain: &mut [ExportableCanal]) -> Result<Vec<Certifica
         if let Some(m) = map {
             let xt: [BiPoly<Rational>; 4] = core::array::from_fn(|k| substitute(&x[k], &m));
             ring.surface = ring.surface.with_homogeneous(xt);
-            ring.seam_blend = j + 1 == n;
+            ring.seam_blend = blended;
         }
         prev_end = Some(circle(ring.surface.homogeneous(), &b));
     }
-    // the tiling: one set of u-cells for every ring, t-columns per ring
-    let mut tiled: Option<Vec<Vec<BezierPatch<Rational>>>> = None;
-    for ku in 0..=MAX_U_SPLITS {
-        let cells = u_cells(ku);
-        let mut all = Vec::with_capacity(n);
-        for ring in rings.iter() {
-            let (a, b) = &ring.interval;
-            match tile_ring(ring.surface.homogeneous(), (a, b), &cells)? {
-                Some(ps) => all.push(ps),
-                None => break,
-            }
-        }
-        if all.len() == n {
-            tiled = Some(all);
-            break;
-        }
-    }
-    let tiled = tiled.ok_or_else(|| {
+    // the tiling: one list of u-cells for every ring, t-columns per ring
+    let xs: Vec<([BiPoly<Rational>; 4], Rational, Rational)> = rings
+        .iter()
+        .map(|r| {
+            (
+                r.surface.homogeneous().clone(),
+                r.interval.0.clone(),
+                r.interval.1.clone(),
+            )
+        })
+        .collect();
+    let tiled = tile_rings(&xs)?.ok_or_else(|| {
         err(format!(
-            "no tiling with positive weights within {MAX_T_SPLITS} bisections in t and {MAX_U_SPLITS} in u"
+            "no tiling with positive weights within {MAX_T_SPLITS} bisections in t and {MAX_U_CELLS} cells in u"
         ))
     })?;
     for (ring, ps) in rings.iter_mut().zip(tiled) {
@@ -467,6 +542,85 @@ mod tests {
         // a circle of radius 2 is another circle
         let big = [c(&[1, 0, 1]), c(&[2, 0, -2]), c(&[0, 4]), c(&[0])];
         assert!(mobius_between(&big, &s).is_none());
+    }
+
+    /// The planar quartic loop `(0, 0), (2, 0), (0, 4), (−2, 0), (0, 0)` (`G¹` at the
+    /// seam: both end tangents point along `+x`).
+    fn quartic_loop() -> BezierCurve<Rational> {
+        let pts: Vec<Vec<Rational>> = [[0, 0], [2, 0], [0, 4], [-2, 0], [0, 0]]
+            .iter()
+            .map(|p| vec![q(p[0]), q(p[1]), q(0)])
+            .collect();
+        BezierCurve::from_points(&pts).expect("quartic")
+    }
+
+    fn seam_certificates(certs: &[Certificate]) -> Vec<&Certificate> {
+        certs
+            .iter()
+            .filter(|c| {
+                c.property.starts_with("the seams are exact")
+                    || c.property.starts_with("the pipe is closed")
+            })
+            .collect()
+    }
+
+    /// One spine closed with `G¹`: the pipe's rings meet along identical circles, the
+    /// closing one included, and every boundary curve is shared; the seam certificates
+    /// are the ones of this module, and they would fail for the pipe with a ring missing.
+    #[test]
+    fn a_pipe_around_a_closed_quartic_is_closed() {
+        use crate::Certified;
+        let spine = vec![quartic_loop()];
+        assert!(super::super::chain_is_g1_closed(&spine));
+        let r = Rational::from_ratio(1, 20);
+        let pipe = super::super::pipe_along_chain(&spine, &r, super::super::Orientation::Positive)
+            .expect("pipe");
+        let certs = pipe.certify();
+        assert!(Certificate::all_hold(&certs), "{certs:#?}");
+        let seam = seam_certificates(&certs);
+        assert_eq!(seam.len(), 2, "{certs:#?}");
+        let patches = pipe.patches();
+        assert!(closed_shell_certificate(&patches).holds);
+        // the first and last t-columns of patches touch along the seam; without the last
+        // column the shell is open
+        let rings: Vec<&ExportPiece> = pipe.pieces().iter().flat_map(|c| c.pieces()).collect();
+        let last = rings.last().expect("a ring");
+        let cells = quarters().len();
+        assert!(last.patches.len() >= cells);
+        let open = &patches[..patches.len() - cells];
+        assert!(!closed_shell_certificate(open).holds);
+    }
+
+    /// The same loop as two spine pieces (split at `t = 1/3`): at least two rings, aligned
+    /// by constant Möbius maps, and the seam blended; the same certificates hold.
+    #[test]
+    fn a_closed_chain_of_two_pieces_is_closed() {
+        use crate::Certified;
+        let (a, b) = quartic_loop()
+            .subdivide(&Rational::from_ratio(1, 3))
+            .expect("split");
+        let spine = vec![a, b];
+        assert!(super::super::chain_is_g1_closed(&spine));
+        let r = Rational::from_ratio(1, 20);
+        let pipe = super::super::pipe_along_chain(&spine, &r, super::super::Orientation::Positive)
+            .expect("pipe");
+        let certs = pipe.certify();
+        assert!(Certificate::all_hold(&certs), "{certs:#?}");
+        assert_eq!(seam_certificates(&certs).len(), 2);
+        let rings: Vec<&ExportPiece> = pipe.pieces().iter().flat_map(|c| c.pieces()).collect();
+        assert!(rings.len() >= 2);
+        eprintln!(
+            "{} rings, {} patches, seam blended: {}",
+            rings.len(),
+            pipe.patches().len(),
+            rings.iter().any(|r| r.seam_blend)
+        );
+        // an open piece of the loop is not closed and gets no seam certificates
+        let open =
+            super::super::pipe_along_chain(&spine[..1], &r, super::super::Orientation::Positive)
+                .expect("open pipe");
+        assert!(seam_certificates(&open.certify()).is_empty());
+        assert!(!closed_shell_certificate(&open.patches()).holds);
     }
 
     #[test]
