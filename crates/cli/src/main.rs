@@ -50,6 +50,11 @@ enum Command {
         /// names of examples/recipes without extension; repeatable or comma-separated).
         #[arg(long, value_delimiter = ',', value_name = "RECIPE")]
         only: Vec<String>,
+        /// Work budget of one object's construction, and of the export phase (all
+        /// files rendered), in seconds (0: none); over it: "work limit exceeded",
+        /// nothing written.
+        #[arg(long, value_name = "N", default_value_t = rcagd_cli::limits::DEFAULT_SECONDS)]
+        max_seconds: u64,
     },
     /// Build the objects of a recipe (TOML or JSON).
     ///
@@ -132,7 +137,19 @@ fn main() -> ExitCode {
         }
     };
     let code = match cli.command {
-        Command::Gallery { out, quiet, only } => gallery::run(&out, quiet, &only),
+        Command::Gallery {
+            out,
+            quiet,
+            only,
+            max_seconds,
+        } => {
+            rcagd_cli::limits::Limits {
+                seconds: max_seconds,
+                ..rcagd_cli::limits::Limits::default()
+            }
+            .install();
+            gallery::run(&out, quiet, &only)
+        }
         Command::Build {
             recipe,
             out,
