@@ -1,7 +1,8 @@
 //! `rcagd`: exact rational curves and surfaces with certificates.
 //!
-//! * `rcagd gallery [--out DIR] [--quiet] [--only RECIPE,…]` — build every embedded default recipe,
-//!   write JSON/STEP/IGES/OBJ/SVG/PNG and the exact sidecar per object, `report.json` and `index.html`;
+//! * `rcagd gallery [--out DIR] [--quiet] [--only RECIPE,…] [--max-seconds N]` — build every
+//!   embedded default recipe, write JSON/STEP/IGES/OBJ/SVG/PNG and the exact sidecar per object,
+//!   `report.json` and `index.html` (each construction, and the export phase, under the budget);
 //! * `rcagd build RECIPE [--out DIR] [--format json|step|iges|exact|obj|stl|ply|gltf|svg|png]…`
 //!   `[--max-recipe-bytes N] [--max-objects N] [--max-digits N] [--max-degree N] [--max-points N]`
 //!   `[--max-samples N] [--max-magnitude N] [--max-seconds N] [--progress] [--float]` — build a

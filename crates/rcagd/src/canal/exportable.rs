@@ -996,8 +996,19 @@ pub fn pipe_along_chain(
         .collect::<Result<Vec<_>, CanalError>>()?;
     joins.push(check_chain_embedded(&chain)?);
     if closed {
-        // after the global check (a closed spine that meets itself is refused first)
-        joins.extend(super::seam::close_rings(&mut pieces)?);
+        // after the global check (a closed spine that meets itself is refused first); if
+        // the seam cannot be closed (no tiling with positive weights within the limits),
+        // the pipe stays as built: exact and certified, with open seams (the CLI's closure
+        // check reports them)
+        let mut closing = pieces.clone();
+        match super::seam::close_rings(&mut closing) {
+            Ok(certs) => {
+                pieces = closing;
+                joins.extend(certs);
+            }
+            Err(CanalError::InvalidArgument(_)) => {}
+            Err(e) => return Err(e),
+        }
     }
     Ok(PipeChain {
         pieces,
