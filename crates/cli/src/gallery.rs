@@ -278,12 +278,15 @@ pub fn write_all_within(
     Ok(export_errors)
 }
 
+/// Files in memory: (name, contents).
+type Files = Vec<(String, Vec<u8>)>;
+
 /// Every file of the gallery rendered in memory (per object and format, the combined
 /// files, `report.json`, `index.html`), and the export errors.
 fn render_all(
     objects: &[Object],
     tick: &(impl Fn(&str) + Sync),
-) -> Result<(Vec<(String, Vec<u8>)>, Vec<String>), String> {
+) -> Result<(Files, Vec<String>), String> {
     // Rendering (tessellation, rasterisation, exact export) is the expensive part: one
     // object per task, in parallel, under the caller's budget; the files are collected in
     // order.
