@@ -98,15 +98,26 @@ mod tests {
         let w = annotate(&mut sphere[0]).expect("a warning");
         assert!(w.contains("does not close") && w.contains("open"), "{w}");
         assert!(sphere[0].values.iter().any(|v| v.name == "closure_warning"));
-        // a pipe around a closed spine should close: `pipe` refuses it today (its
-        // self-intersection check sees the discs at t = 0 and t = 1 meet), so only the
-        // rule is checked here; an open spine need not close
+        // a pipe around a spine closed with G¹ should close, and does (its seam is
+        // closed exactly, rcagd::canal::seam); an open spine need not close
         let open = build(
             "[[object]]\nname = \"q\"\nop = \"pipe\"\npoints = [[0, 0, 0], [4, 0, 0], [4, 4, 0]]\nradius = \"1/20\"\n",
         );
         assert_eq!(should_close(&open[0]), None);
-        let mut closed = open[0].clone();
-        closed.params["points"] = serde_json::json!([[0, 0, 0], [4, 0, 0], [4, 4, 0], [0, 0, 0]]);
-        assert_eq!(should_close(&closed), Some("a pipe around a closed spine"));
+        let closed = build(
+            "[[object]]\nname = \"c\"\nop = \"pipe\"\npoints = [[0, 0, 0], [3, 0, 0], [1, 4, 0], [-1, 0, 0], [0, 0, 0]]\nradius = \"1/8\"\n",
+        );
+        assert_eq!(
+            should_close(&closed[0]),
+            Some("a pipe around a closed spine")
+        );
+        assert_eq!(closure_warning(&closed[0]), None);
+        // with one patch of the seam removed it is reported again
+        let mut cut = closed[0].clone();
+        let Geometry::Patches(p) = &mut cut.geometry else {
+            panic!("patches expected");
+        };
+        p.pop();
+        assert!(closure_warning(&cut).is_some_and(|w| w.contains("does not close")));
     }
 }

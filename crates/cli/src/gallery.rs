@@ -243,22 +243,60 @@ fn progress_bar(quiet: bool) -> ProgressBar {
 /// and renamed into place only when all were written; if a write fails, the
 /// temporaries are removed and `out` is as it was (old files of the same names intact).
 ///
+/// The rendering runs under the work budget of `--max-seconds`
+/// ([`crate::limits::Limits::work_limit`], the export phase's own budget, after the
+/// constructions'), as `rcagd build --out` ([`crate::build::export_within_budget`]).
+///
 /// # Errors
-/// A file-system error (the directory or a file cannot be written), naming the path.
+/// A file-system error (the directory or a file cannot be written), naming the path;
+/// "work limit exceeded: exporting … nothing was written" when the rendering outlasts
+/// the budget.
 pub fn write_all(
     out: &Path,
     objects: &[Object],
     tick: impl Fn(&str) + Sync,
 ) -> Result<Vec<String>, String> {
+    let limit = crate::limits::Limits::current().work_limit();
+    write_all_within(out, objects, limit, tick)
+}
+
+/// [`write_all`] with the work budget `limit` (`None`: unbounded) for rendering every
+/// file; over the budget nothing is written.
+///
+/// # Errors
+/// As [`write_all`].
+pub fn write_all_within(
+    out: &Path,
+    objects: &[Object],
+    limit: Option<std::time::Duration>,
+    tick: impl Fn(&str) + Sync,
+) -> Result<Vec<String>, String> {
+    let _budget = limit.map(rcagd_algebra::budget::install);
+    let (files, export_errors) = rcagd_algebra::budget::catch(|| render_all(objects, &tick))
+        .map_err(|e| crate::limits::export_work_limit_message(objects, FORMATS, e))??;
+    output::write_files_atomically(out, &files)?;
+    Ok(export_errors)
+}
+
+/// Files in memory: (name, contents).
+type Files = Vec<(String, Vec<u8>)>;
+
+/// Every file of the gallery rendered in memory (per object and format, the combined
+/// files, `report.json`, `index.html`), and the export errors.
+fn render_all(
+    objects: &[Object],
+    tick: &(impl Fn(&str) + Sync),
+) -> Result<(Files, Vec<String>), String> {
     // Rendering (tessellation, rasterisation, exact export) is the expensive part: one
-    // object per task, in parallel; the files are collected in order.
+    // object per task, in parallel, under the caller's budget; the files are collected in
+    // order.
     let rendered: Vec<Vec<_>> = objects
         .par_iter()
-        .map(|o| {
-            let r = FORMATS.iter().map(|&f| (f, output::render(o, f))).collect();
+        .map(rcagd_algebra::budget::inherit(|o: &Object| {
+            let r: Vec<_> = FORMATS.iter().map(|&f| (f, output::render(o, f))).collect();
             tick(&o.name);
             r
-        })
+        }))
         .collect();
     let mut export_errors = Vec::new();
     let mut entries = Vec::with_capacity(objects.len());
@@ -309,8 +347,7 @@ pub fn write_all(
         "index.html".into(),
         rcagd_io::report::report_html_with(&entries, &links).into_bytes(),
     ));
-    output::write_files_atomically(out, &files)?;
-    Ok(export_errors)
+    Ok((files, export_errors))
 }
 
 /// The stem of the files holding every object: [`ALL_STEM`]`.step`, `.igs` and
@@ -462,5 +499,58 @@ pub fn run(out: &Path, quiet: bool, only: &[String]) -> u8 {
         EXIT_OK
     } else {
         EXIT_FAIL
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::time::Duration;
+
+    fn objects(src: &str) -> Vec<Object> {
+        let r = Recipe::parse("r.toml", src, Some(Format::Toml)).expect("recipe");
+        crate::build::build_recipe(&r, |_| {}).expect("builds")
+    }
+
+    /// The gallery's export phase runs under its own work budget: an object whose
+    /// exporters take seconds (fuzz corpus `sphere_family_envelope-timeout-a083bd00fa6deeb5`:
+    /// builds in about 0.25 s CPU, its exporters take about 8 s) ends with the named
+    /// error and nothing is written; a small object is written under the same budget.
+    #[test]
+    fn the_export_phase_has_a_budget_and_writes_nothing_over_it() {
+        let slow = objects(
+            "[[object]]\nname = \"fz\"\nop = \"sphere_family_envelope\"\nnet = \"hyperbolic\"\n\
+             points = [[1, 0, 0, 0], [0, 0, 1, 0], [1, 0, 0, 1], [0, 1, 0, 0]]\n\
+             a = [[0], [0], [1]]\nb = [[0, 0, 1]]\ndomain = [\"1/4\", 1, \"1/4\", 1]\n\
+             spheres = 2\nother_sheet = true\ncombine = true\n",
+        );
+        let dir = std::env::temp_dir().join(format!("rcagd-gallery-budget-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).expect("dir");
+        let limit = Some(Duration::from_millis(300));
+        let start = std::time::Instant::now();
+        let e = write_all_within(&dir, &slow, limit, |_| {}).expect_err("over the budget");
+        assert!(
+            e.contains("work limit exceeded: exporting \"fz\" as JSON, STEP"),
+            "{e}"
+        );
+        assert!(e.contains("nothing was written"), "{e}");
+        assert!(
+            start.elapsed() < Duration::from_secs(30),
+            "{:?}",
+            start.elapsed()
+        );
+        assert_eq!(
+            std::fs::read_dir(&dir).expect("dir").count(),
+            0,
+            "nothing written"
+        );
+        let small = objects(
+            "[[object]]\nname = \"c\"\nop = \"bezier_curve\"\npoints = [[0, 0], [1, 2], [3, 1]]\n",
+        );
+        let errors = write_all_within(&dir, &small, limit, |_| {}).expect("written");
+        assert!(errors.is_empty(), "{errors:?}");
+        assert!(dir.join("c.step").exists() && dir.join("report.json").exists());
+        let _ = std::fs::remove_dir_all(&dir);
     }
 }

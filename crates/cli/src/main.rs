@@ -1,7 +1,8 @@
 //! `rcagd`: exact rational curves and surfaces with certificates.
 //!
-//! * `rcagd gallery [--out DIR] [--quiet] [--only RECIPE,…]` — build every embedded default recipe,
-//!   write JSON/STEP/IGES/OBJ/SVG/PNG and the exact sidecar per object, `report.json` and `index.html`;
+//! * `rcagd gallery [--out DIR] [--quiet] [--only RECIPE,…] [--max-seconds N]` — build every
+//!   embedded default recipe, write JSON/STEP/IGES/OBJ/SVG/PNG and the exact sidecar per object,
+//!   `report.json` and `index.html` (each construction, and the export phase, under the budget);
 //! * `rcagd build RECIPE [--out DIR] [--format json|step|iges|exact|obj|stl|ply|gltf|svg|png]…`
 //!   `[--max-recipe-bytes N] [--max-objects N] [--max-digits N] [--max-degree N] [--max-points N]`
 //!   `[--max-samples N] [--max-magnitude N] [--max-seconds N] [--progress] [--float]` — build a
@@ -50,6 +51,11 @@ enum Command {
         /// names of examples/recipes without extension; repeatable or comma-separated).
         #[arg(long, value_delimiter = ',', value_name = "RECIPE")]
         only: Vec<String>,
+        /// Work budget of one object's construction, and of the export phase (all
+        /// files rendered), in seconds (0: none); over it: "work limit exceeded",
+        /// nothing written.
+        #[arg(long, value_name = "N", default_value_t = rcagd_cli::limits::DEFAULT_SECONDS)]
+        max_seconds: u64,
     },
     /// Build the objects of a recipe (TOML or JSON).
     ///
@@ -132,7 +138,19 @@ fn main() -> ExitCode {
         }
     };
     let code = match cli.command {
-        Command::Gallery { out, quiet, only } => gallery::run(&out, quiet, &only),
+        Command::Gallery {
+            out,
+            quiet,
+            only,
+            max_seconds,
+        } => {
+            rcagd_cli::limits::Limits {
+                seconds: max_seconds,
+                ..rcagd_cli::limits::Limits::default()
+            }
+            .install();
+            gallery::run(&out, quiet, &only)
+        }
         Command::Build {
             recipe,
             out,

@@ -1006,6 +1006,13 @@ impl<F: Scalar> CanalSurface<F> {
         })
     }
 
+    /// The same family and split with the homogeneous coordinates `x` instead: a
+    /// reparametrization of this surface (the seam of a closed pipe,
+    /// [`super::seam`]); [`Certified::certify`] decides the canal identities for `x`.
+    pub(crate) fn with_homogeneous(&self, x: [BiPoly<F>; 4]) -> Self {
+        CanalSurface { x, ..self.clone() }
+    }
+
     /// The parameter domain `[a, b]` requested at construction (`None`: all of `R`).
     pub fn domain(&self) -> Option<&(Rational, Rational)> {
         self.domain.as_ref()

@@ -90,10 +90,14 @@ impl std::fmt::Display for Frame {
 /// Bézier patches with positive weights.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ExportPiece {
-    interval: (Rational, Rational),
-    surface: CanalSurface<Rational>,
-    frame: Frame,
-    patches: Vec<BezierPatch<Rational>>,
+    pub(super) interval: (Rational, Rational),
+    pub(super) surface: CanalSurface<Rational>,
+    pub(super) frame: Frame,
+    pub(super) patches: Vec<BezierPatch<Rational>>,
+    /// `true` when the surface was reparametrized in `u` by a Möbius map that varies
+    /// linearly with `t` to close the seam of a closed pipe ([`super::seam`]): its
+    /// `t`-degree is that of the construction plus 2.
+    pub(super) seam_blend: bool,
 }
 
 impl ExportPiece {
@@ -127,7 +131,7 @@ impl ExportPiece {
 /// docs), with the number of candidates tried.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ExportableCanal {
-    pieces: Vec<ExportPiece>,
+    pub(super) pieces: Vec<ExportPiece>,
     tried: usize,
     exporting: usize,
     regularity: Vec<Certificate>,
@@ -227,6 +231,13 @@ pub fn positive_weight_certificate(patches: &[BezierPatch<Rational>]) -> Certifi
 /// pencil of degree `n` gives `deg_t ≤ 2n + k` (`k` the degree of the family, `P` its
 /// derivative numerators), and `deg_u ≤ 2` (the characteristic circles are conics).
 pub fn degree_certificate(s: &CanalSurface<Rational>) -> Certificate {
+    degree_certificate_plus(s, 0)
+}
+
+/// [`degree_certificate`] for a surface reparametrized in `u` by a Möbius map whose
+/// coefficients are polynomials of degree `extra / 2` in `t` (the seam of a closed pipe,
+/// [`super::seam`]): the bound in `t` grows by `extra`.
+pub(super) fn degree_certificate_plus(s: &CanalSurface<Rational>, extra: usize) -> Certificate {
     let (dt, du) = s.degree();
     let k = s.spine().degree();
     let dp = s
@@ -256,8 +267,18 @@ pub fn degree_certificate(s: &CanalSurface<Rational>) -> Certificate {
             format!("; construction: Krasauskas pencil, degree {initial_degree} reduced to {reduced_degree} in {steps} steps (Gruber 2008, (2.36))"),
         ),
     };
+    let (bound, seam) = if extra > 0 {
+        (
+            bound + extra,
+            format!(
+                " (+{extra} in t: the seam's Möbius blend in u, docs/math/pipes.md#closed-pipes)"
+            ),
+        )
+    } else {
+        (bound, String::new())
+    };
     Certificate::decide(
-        format!("bidegree (deg_t, deg_u) = ({dt}, {du}) ≤ ({bound}, 2) of the construction{kras}{method}"),
+        format!("bidegree (deg_t, deg_u) = ({dt}, {du}) ≤ ({bound}, 2) of the construction{seam}{kras}{method}"),
         du <= 2 && dt <= bound,
         true,
         || format!("({dt}, {du})"),
@@ -283,7 +304,10 @@ impl Certified for ExportableCanal {
                 String::new()
             };
             let mut certs = p.surface.certify();
-            certs.push(degree_certificate(&p.surface));
+            certs.push(degree_certificate_plus(
+                &p.surface,
+                if p.seam_blend { 2 } else { 0 },
+            ));
             certs.push(positive_weight_certificate(&p.patches));
             out.extend(certs.into_iter().map(|mut c| {
                 c.property = format!("{prefix}{}", c.property);
@@ -483,6 +507,7 @@ fn candidates_on(
                 surface: s,
                 frame,
                 patches,
+                seam_blend: false,
             });
             break;
         }
@@ -855,14 +880,28 @@ impl Certified for PipeChain {
     }
 }
 
+/// `true` if the chain is closed with a `G¹` seam: the last piece ends where the first
+/// starts, with the same tangent direction (a corner is two ends whose discs meet).
+pub fn chain_is_g1_closed(spines: &[BezierCurve<Rational>]) -> bool {
+    let (Some(first), Some(last)) = (spines.first(), spines.last()) else {
+        return false;
+    };
+    let Some([pe, ps, te, ts]) = joint_tangents(last, first) else {
+        return false;
+    };
+    let (cross, dot) = cross_dot(&te, &ts);
+    pe == ps && cross.iter().all(Rational::is_zero) && dot > Rational::ZERO
+}
+
 fn join_certificates(
     k: usize,
+    next: usize,
     a: &BezierCurve<Rational>,
     b: &BezierCurve<Rational>,
 ) -> Vec<Certificate> {
     let Some([pe, ps, te, ts]) = joint_tangents(a, b) else {
         return vec![Certificate::fails(
-            format!("spine pieces {k} and {} meet (G⁰)", k + 1),
+            format!("spine pieces {k} and {next} meet (G⁰)"),
             "an end control point has weight 0",
             true,
         )];
@@ -870,9 +909,7 @@ fn join_certificates(
     let gap: Vec<Rational> = (0..3).map(|i| ps[i].clone() - pe[i].clone()).collect();
     let g0 = Certificate::decide(
         format!(
-            "spine pieces {k} and {} meet: end point of piece {k} = start point of piece {} (G⁰)",
-            k + 1,
-            k + 1
+            "spine pieces {k} and {next} meet: end point of piece {k} = start point of piece {next} (G⁰)"
         ),
         gap.iter().all(Rational::is_zero),
         true,
@@ -888,7 +925,7 @@ fn join_certificates(
     // end tangent ∝ p_n − p_{n−1}, start tangent ∝ p_1 − p_0 (positive weights)
     let (cross, dot) = cross_dot(&te, &ts);
     let g1 = Certificate::decide(
-        format!("spine pieces {k} and {} have the same tangent direction at the joint (G¹: the pipes share the characteristic circle there)", k + 1),
+        format!("spine pieces {k} and {next} have the same tangent direction at the joint (G¹: the pipes share the characteristic circle there)"),
         cross.iter().all(Rational::is_zero) && dot > Rational::ZERO,
         true,
         || format!("end tangent ∝ ({}, {}, {}), start tangent ∝ ({}, {}, {})", format_scalar(&te[0]), format_scalar(&te[1]), format_scalar(&te[2]), format_scalar(&ts[0]), format_scalar(&ts[1]), format_scalar(&ts[2])),
@@ -915,7 +952,7 @@ pub fn pipe_along_chain(
     let (zero, one) = (Rational::ZERO, Rational::ONE);
     // the pieces are independent: built in parallel, kept in order (the first failing
     // piece's error is reported)
-    let pieces = spines
+    let mut pieces = spines
         .par_iter()
         .enumerate()
         .map(rcagd_algebra::budget::inherit(
@@ -938,8 +975,15 @@ pub fn pipe_along_chain(
     let mut joins: Vec<Certificate> = spines
         .windows(2)
         .enumerate()
-        .flat_map(|(k, w)| join_certificates(k, &w[0], &w[1]))
+        .flat_map(|(k, w)| join_certificates(k, k + 1, &w[0], &w[1]))
         .collect();
+    let closed = chain_is_g1_closed(spines);
+    if closed {
+        // the seam: the last piece joins the first (certified like the other joints)
+        if let (Some(first), Some(last)) = (spines.first(), spines.last()) {
+            joins.extend(join_certificates(spines.len() - 1, 0, last, first));
+        }
+    }
     // after the pieces (whose local regularity the global check assumes)
     let chain = spines
         .iter()
@@ -951,6 +995,21 @@ pub fn pipe_along_chain(
         })
         .collect::<Result<Vec<_>, CanalError>>()?;
     joins.push(check_chain_embedded(&chain)?);
+    if closed {
+        // after the global check (a closed spine that meets itself is refused first); if
+        // the seam cannot be closed (no tiling with positive weights within the limits),
+        // the pipe stays as built: exact and certified, with open seams (the CLI's closure
+        // check reports them)
+        let mut closing = pieces.clone();
+        match super::seam::close_rings(&mut closing) {
+            Ok(certs) => {
+                pieces = closing;
+                joins.extend(certs);
+            }
+            Err(CanalError::InvalidArgument(_)) => {}
+            Err(e) => return Err(e),
+        }
+    }
     Ok(PipeChain {
         pieces,
         joins,

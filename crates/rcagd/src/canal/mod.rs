@@ -67,6 +67,7 @@ pub mod krasauskas;
 pub mod normal_field;
 pub mod pipe;
 pub mod regularity;
+pub mod seam;
 pub mod self_intersection;
 pub mod sum_of_squares;
 
@@ -87,9 +88,9 @@ pub use envelope::{
     Construction, KrasauskasBound, Method, Orientation, QuadraticCanal,
 };
 pub use exportable::{
-    canal_surface_exportable, check_ph_chain_embedded, degree_certificate, pipe_along_chain,
-    pipe_around_ph_exportable, pipe_around_ph_with, pipe_exportable, positive_weight_certificate,
-    ExportPiece, ExportableCanal, Frame, PipeChain,
+    canal_surface_exportable, chain_is_g1_closed, check_ph_chain_embedded, degree_certificate,
+    pipe_along_chain, pipe_around_ph_exportable, pipe_around_ph_with, pipe_exportable,
+    positive_weight_certificate, ExportPiece, ExportableCanal, Frame, PipeChain,
 };
 pub use frame::{
     canal_surface_pole_free, pipe_around_ph_pole_free, pole_free_direction, EXPORT_SPLITS,

@@ -1019,7 +1019,19 @@ fn bi_primitive<F: Scalar>(c: &[Poly<F>]) -> Vec<Poly<F>> {
         .collect()
 }
 
-/// The pseudo-remainder of `a` by `b` in `v` (coefficients in `Q[u]`).
+/// Reads the clock now (not every [`rcagd_algebra::budget::STRIDE`]-th time) and ends the
+/// computation when the work budget is spent: for loops whose single steps can take long
+/// (products of polynomials whose coefficients have grown to thousands of digits).
+fn checkpoint_now() {
+    if let Err(e) = rcagd_algebra::budget::check() {
+        std::panic::resume_unwind(Box::new(e));
+    }
+}
+
+/// The pseudo-remainder of `a` by `b` in `v` (coefficients in `Q[u]`). The coefficients
+/// of a pseudo-remainder sequence can grow to many thousand digits, so the budget's
+/// clock is read before every product of coefficients (issue 19: a fuzz case ran many
+/// seconds past its budget here).
 fn bi_prem<F: Scalar>(a: &[Poly<F>], b: &[Poly<F>]) -> Vec<Poly<F>> {
     let n = b.len() - 1;
     let lc = b[n].clone();
@@ -1028,8 +1040,15 @@ fn bi_prem<F: Scalar>(a: &[Poly<F>], b: &[Poly<F>]) -> Vec<Poly<F>> {
         let d = r.len() - 1;
         let c = r[d].clone();
         let shift = d - n;
-        let mut next: Vec<Poly<F>> = r.iter().map(|x| &lc * x).collect();
+        let mut next: Vec<Poly<F>> = r
+            .iter()
+            .map(|x| {
+                checkpoint_now();
+                &lc * x
+            })
+            .collect();
         for (k, bk) in b.iter().enumerate() {
+            checkpoint_now();
             next[k + shift] = &next[k + shift] - &(&c * bk);
         }
         next.pop();
