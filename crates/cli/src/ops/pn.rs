@@ -1463,6 +1463,26 @@ fn build_hypercyclide(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     hypercyclide_objects(args, &h)
 }
 
+/// The parameters `x, y, z, r` of a rational 2-surface `(m; r)` of R⁴ (numerators in power form).
+const SURFACE_X: ParamSpec = ParamSpec::required(
+    "x",
+    ParamKind::Grid,
+    "power coefficients c[i][j] of u^i v^j of the numerator of m₁",
+)
+.degree();
+const SURFACE_Y: ParamSpec =
+    ParamSpec::required("y", ParamKind::Grid, "numerator of m₂ (same layout)");
+const SURFACE_Z: ParamSpec =
+    ParamSpec::required("z", ParamKind::Grid, "numerator of m₃ (same layout)");
+const SURFACE_R: ParamSpec =
+    ParamSpec::required("r", ParamKind::Grid, "numerator of the radius r (same layout)");
+const SHEET: ParamSpec = ParamSpec::with_default(
+    "sheet",
+    ParamKind::Int,
+    "1",
+    "which sheet of the image: 1 or 2 (a γ-surface has only sheet 1)",
+);
+
 const REPARAMETRIZE: ParamSpec = ParamSpec::with_default(
     "reparametrize",
     ParamKind::Choice(&["none", "quadric"]),
@@ -1474,17 +1494,12 @@ const CYCLOGRAPHIC_SURFACE: OpSpec = OpSpec {
     name: "cyclographic_surface",
     summary: "the cyclographic image of a rational 2-surface s(u, v) = (m; r) of R⁴ (Peternell §3.9, Lemma 3.5): one sheet of the envelope of its cycles, rational when Δ is a square (one sheet for a γ-surface), as a PN surface",
     params: &[
-        ParamSpec::required("x", ParamKind::Grid, "power coefficients c[i][j] of u^i v^j of the numerator of m₁").degree(),
-        ParamSpec::required("y", ParamKind::Grid, "numerator of m₂ (same layout)"),
-        ParamSpec::required("z", ParamKind::Grid, "numerator of m₃ (same layout)"),
-        ParamSpec::required("r", ParamKind::Grid, "numerator of the radius r (same layout)"),
+        SURFACE_X,
+        SURFACE_Y,
+        SURFACE_Z,
+        SURFACE_R,
         DENOMINATOR,
-        ParamSpec::with_default(
-            "sheet",
-            ParamKind::Int,
-            "1",
-            "which sheet of the image: 1 or 2 (a γ-surface has only sheet 1)",
-        ),
+        SHEET,
         REPARAMETRIZE,
         DOMAIN,
         OFFSET,
@@ -1561,17 +1576,12 @@ const CYCLOGRAPHIC_SECTION: OpSpec = OpSpec {
     name: "cyclographic_section",
     summary: "the section Γ(φ) ∩ π of the γ-hypersurface of the cyclographic image of a rational 2-surface s(u, v) = (m; r) of R⁴ by a hyperplane π of R⁴ (Peternell §3.9): the cycle of π in oriented contact with each surface element, drawn by its top view; for π ∥ R³ (y₄ = c) the top view is the offset at distance −c",
     params: &[
-        ParamSpec::required("x", ParamKind::Grid, "power coefficients c[i][j] of u^i v^j of the numerator of m₁").degree(),
-        ParamSpec::required("y", ParamKind::Grid, "numerator of m₂ (same layout)"),
-        ParamSpec::required("z", ParamKind::Grid, "numerator of m₃ (same layout)"),
-        ParamSpec::required("r", ParamKind::Grid, "numerator of the radius r (same layout)"),
+        SURFACE_X,
+        SURFACE_Y,
+        SURFACE_Z,
+        SURFACE_R,
         DENOMINATOR,
-        ParamSpec::with_default(
-            "sheet",
-            ParamKind::Int,
-            "1",
-            "which sheet of the image: 1 or 2 (a γ-surface has only sheet 1)",
-        ),
+        SHEET,
         REPARAMETRIZE,
         ParamSpec::required(
             "hyperplane",

@@ -40,6 +40,7 @@
 //! witness refuses the surface). Limits [`CANAL_GLOBAL_DEPTH`] halvings and
 //! [`CANAL_GLOBAL_BOXES`] boxes: then the answer is "undecided", an error naming the box.
 
+use super::regularity::{cross, dot};
 use super::{CanalError, CanalSpine};
 use crate::error::format_scalar;
 use rcagd_algebra::bernstein::{subdivide_blocks, to_bernstein_blocks};
@@ -53,18 +54,6 @@ pub const CANAL_GLOBAL_DEPTH: u32 = 16;
 pub const CANAL_GLOBAL_BOXES: usize = 20_000;
 
 type P = Poly<Rational>;
-
-fn cross(a: &[P; 3], b: &[P; 3]) -> [P; 3] {
-    [
-        &(&a[1] * &b[2]) - &(&a[2] * &b[1]),
-        &(&a[2] * &b[0]) - &(&a[0] * &b[2]),
-        &(&a[0] * &b[1]) - &(&a[1] * &b[0]),
-    ]
-}
-
-fn dot(a: &[P; 3], b: &[P; 3]) -> P {
-    &(&(&a[0] * &b[0]) + &(&a[1] * &b[1])) + &(&a[2] * &b[2])
-}
 
 // Indices of the polynomials of `Polys::all` (one Bernstein block per interval).
 const I_W: usize = 0;

@@ -48,7 +48,8 @@ use rcagd_algebra::{Certificate, Poly, Rational, Scalar};
 
 type P = Poly<Rational>;
 
-fn cross(a: &[P; 3], b: &[P; 3]) -> [P; 3] {
+/// `a × b` of polynomial vectors.
+pub(super) fn cross(a: &[P; 3], b: &[P; 3]) -> [P; 3] {
     [
         &(&a[1] * &b[2]) - &(&a[2] * &b[1]),
         &(&a[2] * &b[0]) - &(&a[0] * &b[2]),
@@ -56,7 +57,8 @@ fn cross(a: &[P; 3], b: &[P; 3]) -> [P; 3] {
     ]
 }
 
-fn dot(a: &[P; 3], b: &[P; 3]) -> P {
+/// `a · b` of polynomial vectors.
+pub(super) fn dot(a: &[P; 3], b: &[P; 3]) -> P {
     &(&(&a[0] * &b[0]) + &(&a[1] * &b[1])) + &(&a[2] * &b[2])
 }
 

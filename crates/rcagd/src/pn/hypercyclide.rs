@@ -1328,24 +1328,19 @@ pub fn quadric_reparametrization(delta: &MPoly<Q>) -> Option<[MPoly<Q>; 3]> {
                     &qv + &MPoly::constant(2, v0.clone()),
                 ],
             );
-            let lin = MPoly::from_terms(
-                2,
-                shifted
-                    .terms()
-                    .filter(|(e, _)| e.iter().sum::<u32>() == 1)
-                    .map(|(e, c)| (e.to_vec(), c.clone()))
-                    .collect(),
-            )
-            .ok()?;
-            let quad = MPoly::from_terms(
-                2,
-                shifted
-                    .terms()
-                    .filter(|(e, _)| e.iter().sum::<u32>() == 2)
-                    .map(|(e, c)| (e.to_vec(), c.clone()))
-                    .collect(),
-            )
-            .ok()?;
+            let part = |degree: u32| {
+                MPoly::from_terms(
+                    2,
+                    shifted
+                        .terms()
+                        .filter(|(e, _)| e.iter().sum::<u32>() == degree)
+                        .map(|(e, c)| (e.to_vec(), c.clone()))
+                        .collect(),
+                )
+                .ok()
+            };
+            let lin = part(1)?;
+            let quad = part(2)?;
             let d = &quad - &MPoly::constant(2, q(1));
             let num = &MPoly::constant(2, &w0 * &q(2)) - &lin;
             let u = &d.scale(u0) + &(&pv * &num);
