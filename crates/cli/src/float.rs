@@ -32,6 +32,11 @@ use rcagd_algebra::Scalar;
 use rcagd_geom::{BezierCurve, BezierPatch};
 use rcagd_io::quantity::{NamedQuantity, Quantity};
 
+/// The refusal of `ph_curve`'s and `ph_helix`'s display objects by the float path (the
+/// fuzzer's exact-against-`f64` check tells this refusal from a failure by it).
+pub const DISPLAY_OBJECTS_REFUSED: &str =
+    "the display objects (frame, comb, feed) have no float path: build them without --float";
+
 /// The name of the value that says which arithmetic built an object.
 pub const ARITHMETIC: &str = "arithmetic";
 

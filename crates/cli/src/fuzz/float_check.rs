@@ -32,7 +32,7 @@ pub fn comparable(recipe: &Recipe) -> bool {
     !recipe.objects.is_empty()
         && recipe.objects.iter().all(|o| {
             crate::float::has_float_path(&o.op)
-                && !(o.op == "ph_curve"
+                && !((o.op == "ph_curve" || o.op == "ph_helix")
                     && o.params.iter().any(|e| {
                         ["frame", "comb", "feed", "samples", "frame_length"]
                             .contains(&e.key.as_str())
@@ -91,9 +91,11 @@ pub fn check(file_name: &str, text: &str, exact: &[Object]) -> Option<String> {
                 .join("; ");
             // the case's budget ended the f64 build, or the float path refuses what it
             // does not decide by design ("the float path does not decide whether the
-            // weight function has a zero; build without --float"): not a disagreement
+            // weight function has a zero; build without --float") or does not build
+            // (display objects): not a disagreement
             if m.contains(super::WORK_LIMIT)
                 || m.contains("the float path does not")
+                || m.contains(crate::float::DISPLAY_OBJECTS_REFUSED)
                 || !small_magnitude(&recipe)
             {
                 None
@@ -104,5 +106,43 @@ pub fn check(file_name: &str, text: &str, exact: &[Object]) -> Option<String> {
                 ))
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const HELIX_WITH_FEED: &str =
+        include_str!("../../tests/fuzz-corpus/ph_helix-float-mismatch-display-feed.toml");
+
+    /// The finding of the CI batch (seed 20261203, case 105): a `ph_helix` with `feed`
+    /// builds exactly, and the float path refuses its display objects by design; neither
+    /// the exclusion in [`comparable`] nor the refusal's message is a disagreement.
+    #[test]
+    fn the_refusal_of_display_objects_is_not_a_disagreement() {
+        let recipe = Recipe::parse("fuzz.toml", HELIX_WITH_FEED, Some(Format::Toml)).unwrap();
+        let exact = build_recipe_with(&recipe, Arithmetic::Exact, |_| {}).unwrap();
+        assert!(!comparable(&recipe));
+        assert_eq!(check("fuzz.toml", HELIX_WITH_FEED, &exact), None);
+        // the float build itself ends with the documented refusal
+        let err = build_recipe_with(&recipe, Arithmetic::Float, |_| {}).unwrap_err();
+        assert!(
+            err[0]
+                .message
+                .contains(crate::float::DISPLAY_OBJECTS_REFUSED),
+            "{}",
+            err[0].message
+        );
+        // the curve alone is compared, and agrees
+        let curve_only = HELIX_WITH_FEED
+            .lines()
+            .filter(|l| !l.starts_with("feed") && !l.starts_with("frame_length"))
+            .collect::<Vec<_>>()
+            .join("\n");
+        let r2 = Recipe::parse("fuzz.toml", &curve_only, Some(Format::Toml)).unwrap();
+        assert!(comparable(&r2));
+        let exact2 = build_recipe_with(&r2, Arithmetic::Exact, |_| {}).unwrap();
+        assert_eq!(check("fuzz.toml", &curve_only, &exact2), None);
     }
 }

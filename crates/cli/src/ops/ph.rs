@@ -354,7 +354,7 @@ fn curve_objects<T: OpScalar>(
 ) -> Result<Vec<Object>, OpError> {
     if !T::EXACT && (args.string("frame")? != "none" || args.bool("comb")? || args.int("feed")? != 0) {
         return Err(OpError::new(
-            "the display objects (frame, comb, feed) have no float path: build them without --float",
+            crate::float::DISPLAY_OBJECTS_REFUSED,
         ));
     }
     let pc = curve.to_poly_curve();
