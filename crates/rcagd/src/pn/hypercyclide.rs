@@ -1127,6 +1127,44 @@ pub struct CyclographicImage {
     sheets: Vec<PnSurface<Q>>,
 }
 
+/// The first-order data of `s = S/w` that [`CyclographicImage::new`] and its
+/// reparametrization share: the numerators `a = S_u w − S w_u`, `b = S_v w − S w_v` of the
+/// partial derivatives, the Gram entries `G₁₁, G₁₂, G₂₂` of their R³ parts, `det G`, and
+/// `Δ = det G − (a₄²G₂₂ − 2a₄b₄G₁₂ + b₄²G₁₁)`.
+struct FirstOrder {
+    a: [MPoly<Q>; 4],
+    b: [MPoly<Q>; 4],
+    g11: MPoly<Q>,
+    g12: MPoly<Q>,
+    g22: MPoly<Q>,
+    det: MPoly<Q>,
+    delta: MPoly<Q>,
+}
+
+impl FirstOrder {
+    fn of(s: &[MPoly<Q>; 4], w: &MPoly<Q>) -> Self {
+        let der = |p: &MPoly<Q>, i: usize| &(&p.partial(i) * w) - &(p * &w.partial(i));
+        let a: [MPoly<Q>; 4] = std::array::from_fn(|k| der(&s[k], 0));
+        let b: [MPoly<Q>; 4] = std::array::from_fn(|k| der(&s[k], 1));
+        let g11 = dot3(&a[..3], &a[..3]);
+        let g12 = dot3(&a[..3], &b[..3]);
+        let g22 = dot3(&b[..3], &b[..3]);
+        let det = &(&g11 * &g22) - &(&g12 * &g12);
+        let (a4, b4) = (&a[3], &b[3]);
+        let delta = &det
+            - &(&(&(&(a4 * a4) * &g22) - &(&(a4 * b4) * &g12).scale(&q(2))) + &(&(b4 * b4) * &g11));
+        FirstOrder {
+            a,
+            b,
+            g11,
+            g12,
+            g22,
+            det,
+            delta,
+        }
+    }
+}
+
 impl CyclographicImage {
     /// The image of `s = (S₁, S₂, S₃, S₄)/w` (polynomials in `(u, v)`).
     ///
@@ -1140,21 +1178,21 @@ impl CyclographicImage {
                 "the surface of R⁴ needs a non-zero denominator w(u, v)".into(),
             ));
         }
-        let der = |p: &MPoly<Q>, i: usize| &(&p.partial(i) * &w) - &(p * &w.partial(i));
-        let a: [MPoly<Q>; 4] = std::array::from_fn(|k| der(&s[k], 0));
-        let b: [MPoly<Q>; 4] = std::array::from_fn(|k| der(&s[k], 1));
-        let g11 = dot3(&a[..3], &a[..3]);
-        let g12 = dot3(&a[..3], &b[..3]);
-        let g22 = dot3(&b[..3], &b[..3]);
-        let det = &(&g11 * &g22) - &(&g12 * &g12);
+        let FirstOrder {
+            a,
+            b,
+            g11,
+            g12,
+            g22,
+            det,
+            delta,
+        } = FirstOrder::of(&s, &w);
         if det.is_zero() {
             return Err(PnError::InvalidInput(
                 "the centres m(u, v) of the cycles do not span a surface (m_u × m_v ≡ 0)".into(),
             ));
         }
         let (a4, b4) = (&a[3], &b[3]);
-        let delta = &det
-            - &(&(&(&(a4 * a4) * &g22) - &(&(a4 * b4) * &g12).scale(&q(2))) + &(&(b4 * b4) * &g11));
         let ca = &(&(-a4) * &g22) + &(b4 * &g12);
         let cb = &(&(-b4) * &g11) + &(a4 * &g12);
         let base: [MPoly<Q>; 3] = std::array::from_fn(|k| &(&ca * &a[k]) + &(&cb * &b[k]));
@@ -1373,7 +1411,7 @@ impl CyclographicImage {
             Err(PnError::NoRationalPoint(m)) => m,
             Err(e) => return Err(e),
         };
-        let delta = Self::delta_of(&s, &w);
+        let delta = FirstOrder::of(&s, &w).delta;
         let odd = odd_part(&delta).ok_or_else(|| PnError::NoRationalPoint(e.clone()))?;
         let deg = odd.total_degree().unwrap_or(0);
         let psi = match deg {
@@ -1414,19 +1452,6 @@ impl CyclographicImage {
         let s2: [MPoly<Q>; 4] = std::array::from_fn(|k| sub(&s[k]));
         let img = Self::new(s2, sub(&w))?;
         Ok((img, psi))
-    }
-
-    /// `Δ` of [`Self::new`] for `s = S/w`.
-    fn delta_of(s: &[MPoly<Q>; 4], w: &MPoly<Q>) -> MPoly<Q> {
-        let der = |p: &MPoly<Q>, i: usize| &(&p.partial(i) * w) - &(p * &w.partial(i));
-        let a: [MPoly<Q>; 4] = std::array::from_fn(|k| der(&s[k], 0));
-        let b: [MPoly<Q>; 4] = std::array::from_fn(|k| der(&s[k], 1));
-        let g11 = dot3(&a[..3], &a[..3]);
-        let g12 = dot3(&a[..3], &b[..3]);
-        let g22 = dot3(&b[..3], &b[..3]);
-        let det = &(&g11 * &g22) - &(&g12 * &g12);
-        let (a4, b4) = (&a[3], &b[3]);
-        &det - &(&(&(&(a4 * a4) * &g22) - &(&(a4 * b4) * &g12).scale(&q(2))) + &(&(b4 * b4) * &g11))
     }
 }
 
