@@ -262,13 +262,7 @@ pub(crate) fn build_hermite<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, O
                 if !keep(c.best) {
                     continue;
                 }
-                let tag = tag(k, c);
-                let one = rcagd::ph::PlanarHermiteSolution {
-                    data: s.data.clone(),
-                    interpolants: vec![c.clone()],
-                    exact: true,
-                };
-                certs.extend(prefixed(&tag, one.certify()));
+                certs.extend(prefixed(&tag(k, c), only(&s, c).certify()));
                 curves.push(c.curve.to_bezier()?);
             }
             let branches = planar_hermite_branches(&s);
@@ -289,12 +283,7 @@ pub(crate) fn build_hermite<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, O
                     certs.push(exact.rounded_hermite_certificate(&data));
                     curves.push(exact.to_bezier()?);
                 } else {
-                    let one = rcagd::ph::PlanarHermiteSolution {
-                        data: s.data.clone(),
-                        interpolants: vec![c.clone()],
-                        exact: false,
-                    };
-                    certs.extend(prefixed(&tag, one.certify()));
+                    certs.extend(prefixed(&tag, only(&s, c).certify()));
                     curves.push(f64::exact_curve(c.curve.to_bezier()?)?);
                 }
             }
@@ -313,6 +302,18 @@ pub(crate) fn build_hermite<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, O
     Ok(vec![T::finish(
         args.object(geometry, certs).with_values(values),
     )])
+}
+
+/// The solution `s` reduced to its interpolant `c` (to certify one interpolant alone).
+fn only<F: Scalar>(
+    s: &rcagd::ph::PlanarHermiteSolution<F>,
+    c: &PlanarHermiteInterpolant<F>,
+) -> rcagd::ph::PlanarHermiteSolution<F> {
+    rcagd::ph::PlanarHermiteSolution {
+        data: s.data.clone(),
+        interpolants: vec![c.clone()],
+        exact: s.exact,
+    }
 }
 
 /// The values of the four interpolants: the elimination quadratic of `w₁`, its
