@@ -37,6 +37,14 @@ use rcagd_io::quantity::{NamedQuantity, Quantity};
 pub const DISPLAY_OBJECTS_REFUSED: &str =
     "the display objects (frame, comb, feed) have no float path: build them without --float";
 
+/// Whether `key` of an object of op `op` asks for display objects that the float path
+/// refuses ([`DISPLAY_OBJECTS_REFUSED`]): the frames, combs and feed marks of `ph_curve`
+/// and `ph_helix` and their sampling parameters.
+pub fn is_display_param(op: &str, key: &str) -> bool {
+    (op == "ph_curve" || op == "ph_helix")
+        && ["frame", "comb", "feed", "samples", "frame_length"].contains(&key)
+}
+
 /// The name of the value that says which arithmetic built an object.
 pub const ARITHMETIC: &str = "arithmetic";
 

@@ -32,11 +32,10 @@ pub fn comparable(recipe: &Recipe) -> bool {
     !recipe.objects.is_empty()
         && recipe.objects.iter().all(|o| {
             crate::float::has_float_path(&o.op)
-                && !((o.op == "ph_curve" || o.op == "ph_helix")
-                    && o.params.iter().any(|e| {
-                        ["frame", "comb", "feed", "samples", "frame_length"]
-                            .contains(&e.key.as_str())
-                    }))
+                && !o
+                    .params
+                    .iter()
+                    .any(|e| crate::float::is_display_param(&o.op, &e.key))
         })
 }
 

@@ -71,11 +71,8 @@ fn agree_or_split(what: &str, exact: &[Object], float: &[Object]) -> Result<(), 
 fn without_display_objects(r: &Recipe) -> Recipe {
     let mut r = r.clone();
     for o in &mut r.objects {
-        if o.op == "ph_curve" || o.op == "ph_helix" {
-            o.params.retain(|e| {
-                !["frame", "comb", "feed", "samples", "frame_length"].contains(&e.key.as_str())
-            });
-        }
+        let op = o.op.clone();
+        o.params.retain(|e| !float::is_display_param(&op, &e.key));
     }
     r
 }
