@@ -12,7 +12,10 @@ use rcagd_io::quantity::{NamedQuantity, Quantity};
 /// Why the object's op says it is closed, or `None` when it need not be.
 ///
 /// `sphere_cover` and `torus` are closed surfaces by construction; a `pipe` whose spine
-/// (given by `points`) ends where it starts is a closed tube.
+/// (given by `points` or by `spine_file`) ends where it starts with the same tangent
+/// direction is a closed tube (the op's value `spine_closed`, decided exactly by
+/// `rcagd::canal::chain_is_g1_closed`; a spine closed with only `G⁰` has a corner and
+/// gives a tube with two ends).
 pub fn should_close(o: &Object) -> Option<&'static str> {
     if !matches!(o.geometry, Geometry::Patch(_) | Geometry::Patches(_)) {
         return None;
@@ -20,11 +23,11 @@ pub fn should_close(o: &Object) -> Option<&'static str> {
     match o.op.as_str() {
         "sphere_cover" => Some("a cover of a whole sphere or ellipsoid"),
         "torus" => Some("a whole torus"),
-        "pipe" => {
-            let pts = o.params.get("points")?.as_array()?;
-            let (first, last) = (pts.first()?, pts.last()?);
-            (pts.len() > 1 && first == last).then_some("a pipe around a closed spine")
-        }
+        "pipe" => o
+            .values
+            .iter()
+            .any(|v| v.name == crate::ops::canal::SPINE_CLOSED && v.value == Quantity::Bool(true))
+            .then_some("a pipe around a closed spine"),
         _ => None,
     }
 }
@@ -119,5 +122,51 @@ mod tests {
         };
         p.pop();
         assert!(closure_warning(&cut).is_some_and(|w| w.contains("does not close")));
+    }
+
+    #[test]
+    fn a_pipe_around_a_closed_spine_file_should_close() {
+        // the same G¹-closed quartic loop as a spine file (rcagd JSON, homogeneous
+        // [w, wx, wy, wz]): the rule no longer depends on how the spine was given
+        let dir = std::env::temp_dir().join(format!("rcagd-closure-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let spine = dir.join("loop.json");
+        std::fs::write(
+            &spine,
+            r#"{"kind": "curve", "control_points": [[1, 0, 0, 0], [1, 3, 0, 0], [1, 1, 4, 0], [1, -1, 0, 0], [1, 0, 0, 0]]}"#,
+        )
+        .unwrap();
+        let recipe = format!(
+            "[[object]]\nname = \"f\"\nop = \"pipe\"\nspine_file = {:?}\nradius = \"1/8\"\n",
+            spine.display().to_string()
+        );
+        let from_file = build(&recipe);
+        std::fs::remove_dir_all(&dir).unwrap();
+        assert_eq!(
+            should_close(&from_file[0]),
+            Some("a pipe around a closed spine")
+        );
+        assert_eq!(closure_warning(&from_file[0]), None);
+        // a loop closed with G⁰ only (end tangent (2, 1, 0) against start tangent
+        // (3, 0, 0)) is not a closed tube: its end discs meet, and the op refuses it
+        let r = Recipe::parse(
+            "r.toml",
+            "[[object]]\nname = \"k\"\nop = \"pipe\"\npoints = [[0, 0, 0], [3, 0, 0], [1, 4, 0], [-2, -1, 0], [0, 0, 0]]\nradius = \"1/100\"\n",
+            None,
+        )
+        .unwrap();
+        let err = crate::build::build_recipe(&r, |_| {}).unwrap_err();
+        assert!(format!("{err:?}").contains("intersects itself"), "{err:?}");
+        // an open spine says so
+        let open = build(
+            "[[object]]\nname = \"q\"\nop = \"pipe\"\npoints = [[0, 0, 0], [4, 0, 0], [4, 4, 0]]\nradius = \"1/20\"\n",
+        );
+        assert!(
+            open[0]
+                .values
+                .iter()
+                .any(|v| v.name == crate::ops::canal::SPINE_CLOSED
+                    && v.value == Quantity::Bool(false))
+        );
     }
 }

@@ -742,8 +742,20 @@ fn build_pipe(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             }
             e => pipe_err(e, spine_param),
         })?;
-    Ok(vec![args.object(Geometry::Patches(pipe.patches()), pipe.certify())])
+    // whether the spine closes with G¹ (a closed tube), decided exactly by the library;
+    // the closure check (crate::closure) reads it for both `points` and `spine_file`
+    let closed = rcagd::canal::chain_is_g1_closed(&spines);
+    Ok(vec![args
+        .object(Geometry::Patches(pipe.patches()), pipe.certify())
+        .with_values(vec![rcagd_io::quantity::NamedQuantity::new(
+            SPINE_CLOSED,
+            "the spine ends where it starts with the same tangent direction (G¹): the pipe is a closed tube",
+            rcagd_io::quantity::Quantity::Bool(closed),
+        )])])
 }
+
+/// The name of the `pipe` op's value saying whether its spine is `G¹`-closed.
+pub const SPINE_CLOSED: &str = "spine_closed";
 
 const BLEND_PARAMS_SPHERE0: [ParamSpec; 4] = [
     ParamSpec::required("center0", ParamKind::Point3, "centre of the first sphere"),
