@@ -2,7 +2,7 @@
 //! "Measurements"): the torus recipe, and the same 1000 × 1000 grid of the sphere cover's first patch that
 //! `rcagd.sphere_cover().evaluate_grid(t, t)` evaluates, by the library call itself.
 //!
-//! `cargo run --profile pywheel -p rcagd-python --example grid_timing`
+//! `cargo run --profile pywheel -p rcagd-python --features timing --example grid_timing`
 //! (the wheel's profile, so both sides run the same optimized code).
 
 use std::time::Instant;

@@ -1,6 +1,6 @@
 """The Python side of the overhead measurement (docs/plans/python.md, "Measurements"):
 a small construction per call, and the 10⁶-point grid against the Rust call
-(`cargo run --profile pywheel -p rcagd-python --example grid_timing`)."""
+(`cargo run --profile pywheel -p rcagd-python --features timing --example grid_timing`)."""
 
 import time
 from fractions import Fraction
