@@ -706,35 +706,3 @@ pub fn generate_with(rng: &mut Rng, op: &OpSpec, seeds: &[Vec<(String, V)>], hug
         category,
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_generator_is_deterministic_and_every_op_has_a_seed() {
-        for op in crate::ops::all() {
-            let s = seeds(op);
-            assert!(!s.is_empty(), "{} has no seed", op.name);
-            let a = generate(&mut Rng::for_case(7, 3), op, &s);
-            let b = generate(&mut Rng::for_case(7, 3), op, &s);
-            assert_eq!(a, b);
-        }
-    }
-
-    #[test]
-    fn rendered_recipes_parse() {
-        let op = crate::ops::find("bezier_curve").unwrap();
-        let s = seeds(op);
-        for c in 0..200 {
-            let case = generate(&mut Rng::for_case(1, c), op, &s);
-            if case.category.starts_with("valid") {
-                assert!(
-                    Recipe::parse("x.toml", &case.toml(), None).is_ok(),
-                    "{}",
-                    case.toml()
-                );
-            }
-        }
-    }
-}

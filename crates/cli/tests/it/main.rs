@@ -24,3 +24,4 @@ mod quadric_ops;
 mod queries;
 mod sphere_family_ops;
 mod sweep_ops;
+mod unit;
