@@ -839,6 +839,144 @@ pub(crate) fn mul_rational(a: &MPoly<Rational>, b: &MPoly<Rational>) -> MPoly<Ra
     )
 }
 
+/// Word-size primes (the six largest below 2⁶¹) for the modular coprimality tests.
+const COPRIME_TEST_PRIMES: [u64; 6] = [
+    2_305_843_009_213_693_951,
+    2_305_843_009_213_693_921,
+    2_305_843_009_213_693_907,
+    2_305_843_009_213_693_723,
+    2_305_843_009_213_693_693,
+    2_305_843_009_213_693_669,
+];
+
+fn mul_mod(a: u64, b: u64, p: u64) -> u64 {
+    ((u128::from(a) * u128::from(b)) % u128::from(p)) as u64
+}
+
+fn pow_mod(mut a: u64, mut e: u64, p: u64) -> u64 {
+    let mut r = 1 % p;
+    while e > 0 {
+        if e & 1 == 1 {
+            r = mul_mod(r, a, p);
+        }
+        a = mul_mod(a, a, p);
+        e >>= 1;
+    }
+    r
+}
+
+/// `a⁻¹ mod p` (Fermat, `p` prime, `a ≢ 0`).
+fn inv_mod(a: u64, p: u64) -> u64 {
+    pow_mod(a, p - 2, p)
+}
+
+/// The residue of `q` modulo the prime `p`; `None` if `p` divides the denominator.
+fn rational_mod(q: &Rational, p: u64) -> Option<u64> {
+    use dashu_int::{IBig, UBig};
+    let pb = UBig::from(p);
+    let d = u64::try_from(q.denominator() % &pb).ok()?;
+    if d == 0 {
+        return None;
+    }
+    let n = q.numerator() % IBig::from(p);
+    let n = i128::try_from(n).ok()?;
+    let n = n.rem_euclid(i128::from(p)) as u64;
+    Some(mul_mod(n, inv_mod(d, p), p))
+}
+
+/// The images modulo `p` of rational coefficients (constant term first); `None` if `p`
+/// divides a denominator or the last (leading) coefficient.
+fn images_mod(c: &[Rational], p: u64) -> Option<Vec<u64>> {
+    let v = c
+        .iter()
+        .map(|x| rational_mod(x, p))
+        .collect::<Option<Vec<_>>>()?;
+    (v.last().is_some_and(|&l| l != 0)).then_some(v)
+}
+
+/// The degree of the greatest common divisor of two univariate polynomials over `𝔽_p`
+/// (constant term first, leading coefficients non-zero), by Euclid's algorithm.
+fn gcd_degree_mod(mut a: Vec<u64>, mut b: Vec<u64>, p: u64) -> usize {
+    let trim = |v: &mut Vec<u64>| {
+        while v.last() == Some(&0) {
+            v.pop();
+        }
+    };
+    trim(&mut a);
+    trim(&mut b);
+    if a.len() < b.len() {
+        std::mem::swap(&mut a, &mut b);
+    }
+    while !b.is_empty() {
+        crate::budget::checkpoint();
+        // a ← a mod b
+        let inv = inv_mod(b[b.len() - 1], p);
+        while a.len() >= b.len() {
+            let Some(&lead) = a.last() else { break };
+            let f = mul_mod(lead, inv, p);
+            let shift = a.len() - b.len();
+            for (k, &bk) in b.iter().enumerate() {
+                let t = mul_mod(f, bk, p);
+                a[k + shift] = (a[k + shift] + p - t) % p;
+            }
+            a.pop();
+            trim(&mut a);
+        }
+        std::mem::swap(&mut a, &mut b);
+    }
+    a.len().saturating_sub(1)
+}
+
+/// `true` if the non-zero polynomials `a`, `b ∈ ℚ[x]` (coefficients, constant term
+/// first, leading coefficient non-zero) are **proven** coprime by their images modulo a
+/// word-size prime `p` that divides no denominator and neither leading coefficient:
+/// then the primitive integer multiples keep their degrees modulo `p`, and the image of
+/// their gcd (Gauss's lemma: a divisor over `ℤ` whose leading coefficient divides both
+/// leading coefficients) divides both images with its degree, so
+/// `deg gcd_ℚ(a, b) ≤ deg gcd_𝔽ₚ(ā, b̄)` (Geddes, Czapor, Labahn, *Algorithms for
+/// Computer Algebra*, 1992, §7.4, Lemma 7.3). `false` means "not proven" (a common
+/// factor, or an unlucky prime): the caller computes the gcd exactly.
+pub fn coprime_by_modular_image(a: &[Rational], b: &[Rational]) -> bool {
+    for &p in &COPRIME_TEST_PRIMES[..3] {
+        if let (Some(x), Some(y)) = (images_mod(a, p), images_mod(b, p)) {
+            return gcd_degree_mod(x, y, p) == 0;
+        }
+    }
+    false
+}
+
+/// `true` if the non-zero polynomials `a = Σⱼ aⱼ(x₀) x₁ʲ`, `b = Σⱼ bⱼ(x₀) x₁ʲ` of
+/// `ℚ[x₀][x₁]` (`a[j]` the coefficients of `aⱼ`, constant term first; the last `aⱼ`, `bⱼ`
+/// non-zero) are **proven** to have a greatest common divisor of degree 0 in `x₁` (a
+/// polynomial in `x₀` alone): by their images under `x₀ ↦ t`, modulo a prime `p`, for a
+/// `t` where neither leading coefficient `a_last(t)`, `b_last(t)` vanishes modulo `p`
+/// (the image of a common divisor keeps its degree in `x₁` and divides both images;
+/// Geddes, Czapor, Labahn 1992, §7.4). `false` means "not proven".
+pub fn coprime_in_last_variable_by_modular_image(a: &[Vec<Rational>], b: &[Vec<Rational>]) -> bool {
+    let eval = |c: &[Rational], t: u64, p: u64| -> Option<u64> {
+        let mut acc = 0u64;
+        for x in c.iter().rev() {
+            acc = (mul_mod(acc, t, p) + rational_mod(x, p)?) % p;
+        }
+        Some(acc)
+    };
+    let image = |c: &[Vec<Rational>], t: u64, p: u64| -> Option<Vec<u64>> {
+        let v = c
+            .iter()
+            .map(|x| eval(x, t, p))
+            .collect::<Option<Vec<_>>>()?;
+        (v.last().is_some_and(|&l| l != 0)).then_some(v)
+    };
+    for &p in &COPRIME_TEST_PRIMES[..3] {
+        for t in [1_000_003u64, 7_919, 104_729] {
+            if let (Some(x), Some(y)) = (image(a, t, p), image(b, t, p)) {
+                return gcd_degree_mod(x, y, p) == 0;
+            }
+        }
+    }
+    false
+}
+
 impl<R: Ring> Mul for &MPoly<R> {
     type Output = MPoly<R>;
     fn mul(self, rhs: &MPoly<R>) -> MPoly<R> {
