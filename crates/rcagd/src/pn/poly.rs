@@ -250,6 +250,14 @@ fn horner<F: Scalar>(terms: &Terms<'_, F>, var: usize, qs: &[MPoly<F>], nv: usiz
 /// remainder below `10⁻⁹` of the coefficients counts as zero). `None` if `d` does not
 /// divide `p` or `d` is zero.
 pub(crate) fn div_exact<F: Scalar>(p: &MPoly<F>, d: &MPoly<F>) -> Option<MPoly<F>> {
+    if F::EXACT {
+        // rational coefficients: the fraction-free division of the library (the same
+        // quotient)
+        if let (Some(pq), Some(dq)) = (rational_mpoly(p), rational_mpoly(d)) {
+            let q = rcagd_algebra::mpoly::div_exact_rational(&pq, &dq, 2)?;
+            return Some(q.map(F::from_rational));
+        }
+    }
     let nv = p.nvars().max(d.nvars()).max(2);
     let (lde, ldc) = d.terms().last().map(|(e, c)| (pad(e, nv), c.clone()))?;
     if p.is_zero() {
@@ -281,6 +289,15 @@ pub(crate) fn div_exact<F: Scalar>(p: &MPoly<F>, d: &MPoly<F>) -> Option<MPoly<F
         q += t;
     }
     Some(q)
+}
+
+/// `p` with its coefficients in `ℚ` (`None` if one is not rational).
+fn rational_mpoly<F: Scalar>(p: &MPoly<F>) -> Option<MPoly<Rational>> {
+    let terms = p
+        .terms()
+        .map(|(e, c)| Some((e.to_vec(), c.to_rational()?)))
+        .collect::<Option<Vec<_>>>()?;
+    MPoly::from_terms(p.nvars(), terms).ok()
 }
 
 fn pad(e: &[u32], n: usize) -> Vec<u32> {
