@@ -871,11 +871,9 @@ pub fn div_exact_rational(
     };
     let (pi, lp) = integer_coefficients(p);
     let (mut di, ld) = integer_coefficients(d);
-    let cont = di
-        .iter()
-        .fold(UBig::ZERO, |g, x| {
-            dashu_base::Gcd::gcd(&g, &dashu_base::UnsignedAbs::unsigned_abs(x))
-        });
+    let cont = di.iter().fold(UBig::ZERO, |g, x| {
+        dashu_base::Gcd::gcd(&g, &dashu_base::UnsignedAbs::unsigned_abs(x))
+    });
     if cont != UBig::ONE {
         let c = IBig::from(cont.clone());
         for x in di.iter_mut() {
@@ -889,7 +887,10 @@ pub fn div_exact_rational(
     let dims: Vec<usize> = (0..nv)
         .map(|i| pe.iter().map(|e| e[i] as usize).max().unwrap_or(0) + 1)
         .collect();
-    if de.iter().any(|e| e.iter().zip(&dims).any(|(&k, &m)| k as usize >= m)) {
+    if de
+        .iter()
+        .any(|e| e.iter().zip(&dims).any(|(&k, &m)| k as usize >= m))
+    {
         return None;
     }
     let dmax: Vec<usize> = (0..nv)
@@ -904,7 +905,8 @@ pub fn div_exact_rational(
             for i in (0..nv.saturating_sub(1)).rev() {
                 strides[i] = strides[i + 1] * dims[i + 1];
             }
-            let index = |e: &[u32]| -> usize { e.iter().zip(&strides).map(|(&k, s)| k as usize * s).sum() };
+            let index =
+                |e: &[u32]| -> usize { e.iter().zip(&strides).map(|(&k, s)| k as usize * s).sum() };
             let mut r = vec![IBig::ZERO; size];
             for (e, c) in pe.iter().zip(pi) {
                 r[index(e)] = c;
@@ -932,8 +934,7 @@ pub fn div_exact_rational(
                 let q: Vec<u32> = e.iter().zip(&lde).map(|(a, b)| a - b).collect();
                 // every monomial of q·d stays in p's degree box when d | p (degrees in
                 // each variable add up); outside it, d ∤ p
-                if q
-                    .iter()
+                if q.iter()
                     .zip(&dmax)
                     .zip(&dims)
                     .any(|((&a, &b), &m)| a as usize + b >= m)
@@ -991,6 +992,191 @@ pub fn div_exact_rational(
         quot.into_iter()
             .map(|(e, q)| (e, Rational::from_parts(q * &num, den.clone()))),
     ))
+}
+
+/// `p(P₀ + s·(e₁ + t·e₂))` as a polynomial in `(s, t)` for a bivariate `p` over `ℚ`
+/// (`None` if `p` has other variables than `x₀`, `x₁`): the composition with the map
+/// `(s, t) ↦ P₀ + s e₁ + st e₂` that collapses the edge `s = 0` of the unit square to
+/// `P₀` (a triangle's parametrization), **fraction-free**. With one common denominator
+/// `K` of `P₀` and `e₁, e₂` (`P₀ = A/K`, `s(e₁ + t e₂) = s λ(t)/K` with integer linear
+/// `λ`) and `p = Σ cᵢⱼ uⁱvʲ = (Σ Cᵢⱼ uⁱvʲ)/L`:
+/// `L Kᵈ p(P₀ + s λ/K) = P̃(A + sλ)` for `P̃ = Σ Cᵢⱼ K^{d−i−j} XⁱYʲ`, `d = m + n`. The
+/// integer Taylor shift `S(x, y) = P̃(A + (x, y))` (Horner's shifts of the columns and
+/// rows) and, for each homogeneous part `S_k` of `S`, `h_k(t) = S_k(λ_x(t), λ_y(t))` by
+/// Horner's rule in `λ_x` give `p(P₀ + s ℓ(t)) = Σ_k sᵏ h_k(t)/(L Kᵈ)`: integer products
+/// and sums only, one reduction per result coefficient. The same polynomial as the
+/// substitution.
+pub fn compose_fan_rational(
+    p: &MPoly<Rational>,
+    p0: &[Rational; 2],
+    e1: &[Rational; 2],
+    e2: &[Rational; 2],
+) -> Option<MPoly<Rational>> {
+    use dashu_int::IBig;
+    if p.nvars > 2 && p.terms.keys().any(|e| e[2..].iter().any(|&k| k != 0)) {
+        return None;
+    }
+    if p.is_zero() {
+        return Some(MPoly::zero(2));
+    }
+    let deg = |i: usize| {
+        p.terms
+            .keys()
+            .map(|e| e.get(i).copied().unwrap_or(0) as usize)
+            .max()
+            .unwrap_or(0)
+    };
+    let (m, n) = (deg(0), deg(1));
+    let d = m + n;
+    let (ci, l) = integer_coefficients(p);
+    // one common denominator K of P₀, e₁, e₂
+    let pts = [&p0[0], &p0[1], &e1[0], &e1[1], &e2[0], &e2[1]];
+    let (ints, k) = integers_over_common_denominator(pts.into_iter());
+    let kk = IBig::from(k.clone());
+    let kpow: Vec<IBig> = std::iter::successors(Some(IBig::ONE), |x| Some(x * &kk))
+        .take(d + 1)
+        .collect();
+    // P̃ dense: c[i][j] = C_ij K^{d−i−j}
+    let mut c = vec![vec![IBig::ZERO; n + 1]; m + 1];
+    for (e, x) in p.terms.keys().zip(ci) {
+        let (i, j) = (
+            e.first().copied().unwrap_or(0) as usize,
+            e.get(1).copied().unwrap_or(0) as usize,
+        );
+        c[i][j] = x * &kpow[d - i - j];
+    }
+    // S(x, y) = P̃(A_u + x, A_v + y): Horner's Taylor shifts
+    let shift = |v: &mut [IBig], a: &IBig| {
+        let deg = v.len().saturating_sub(1);
+        if a == &IBig::ZERO {
+            return;
+        }
+        for r in 0..deg {
+            crate::budget::checkpoint();
+            for i in (r..deg).rev() {
+                let next = &v[i + 1] * a;
+                v[i] += next;
+            }
+        }
+    };
+    for j in 0..=n {
+        let mut col: Vec<IBig> = c.iter().map(|row| row[j].clone()).collect();
+        shift(&mut col, &ints[0]);
+        for (row, x) in c.iter_mut().zip(col) {
+            row[j] = x;
+        }
+    }
+    for row in c.iter_mut() {
+        shift(row, &ints[1]);
+    }
+    // λ_x = E1x + t E2x, λ_y = E1y + t E2y (integers over K)
+    let (lx, ly) = ([&ints[2], &ints[4]], [&ints[3], &ints[5]]);
+    let times_linear = |acc: &[IBig], a: &IBig, b: &IBig| -> Vec<IBig> {
+        let mut next = vec![IBig::ZERO; acc.len() + 1];
+        for (q, x) in acc.iter().enumerate() {
+            if x == &IBig::ZERO {
+                continue;
+            }
+            next[q] += x * a;
+            next[q + 1] += x * b;
+        }
+        next
+    };
+    let mut ly_pow: Vec<Vec<IBig>> = vec![vec![IBig::ONE]];
+    for j in 1..=n {
+        let next = times_linear(&ly_pow[j - 1], ly[0], ly[1]);
+        ly_pow.push(next);
+    }
+    let den = l * k.pow(d);
+    let mut terms: Vec<(Vec<u32>, Rational)> = Vec::new();
+    for kdeg in 0..=d {
+        crate::budget::checkpoint();
+        let (lo, hi) = (kdeg.saturating_sub(n), kdeg.min(m));
+        let mut acc: Vec<IBig> = Vec::new();
+        for i in (lo..=hi).rev() {
+            if !acc.is_empty() {
+                acc = times_linear(&acc, lx[0], lx[1]);
+            }
+            let cij = &c[i][kdeg - i];
+            if cij != &IBig::ZERO {
+                let pw = &ly_pow[kdeg - i];
+                if acc.len() < pw.len() {
+                    acc.resize(pw.len(), IBig::ZERO);
+                }
+                for (q, y) in pw.iter().enumerate() {
+                    acc[q] += cij * y;
+                }
+            }
+        }
+        for _ in 0..lo {
+            if acc.is_empty() {
+                break;
+            }
+            acc = times_linear(&acc, lx[0], lx[1]);
+        }
+        for (q, x) in acc.into_iter().enumerate() {
+            if x != IBig::ZERO {
+                let e = vec![u32::try_from(kdeg).ok()?, u32::try_from(q).ok()?];
+                terms.push((e, Rational::from_parts(x, den.clone())));
+            }
+        }
+    }
+    Some(MPoly::from_sorted_terms(2, terms))
+}
+
+/// Exact signs of a bivariate polynomial `p = Σ cᵢⱼ uⁱvʲ` over `ℚ` at rational points,
+/// fraction-free: `p = (Σ Cᵢⱼ uⁱvʲ)/L` with integers `Cᵢⱼ` (one common denominator
+/// `L > 0`), and at `u = a/b`, `v = c/e` (`b, e > 0`) the sign of `p` is the sign of the
+/// integer `L bᵐ eⁿ p(a/b, c/e) = Σᵢ aⁱ bᵐ⁻ⁱ Σⱼ Cᵢⱼ cʲ eⁿ⁻ʲ` (homogeneous Horner's rule):
+/// integer products and sums only, no gcd.
+#[derive(Debug, Clone)]
+pub struct BivariateSigns {
+    c: Vec<dashu_int::IBig>,
+    m: usize,
+    n: usize,
+}
+
+impl BivariateSigns {
+    /// From the power coefficients `power[i(n + 1) + j] = cᵢⱼ` of bidegree `(m, n)`
+    /// (`None` if the length is not `(m + 1)(n + 1)`).
+    pub fn new(power: &[Rational], m: usize, n: usize) -> Option<Self> {
+        if power.len() != (m + 1).checked_mul(n + 1)? {
+            return None;
+        }
+        let (c, _) = integers_over_common_denominator(power.iter());
+        Some(BivariateSigns { c, m, n })
+    }
+
+    /// The sign of `p(u, v)`.
+    pub fn sign_at(&self, u: &Rational, v: &Rational) -> core::cmp::Ordering {
+        use dashu_int::IBig;
+        let (a, b) = (u.numerator(), IBig::from(u.denominator().clone()));
+        let (c, e) = (v.numerator(), IBig::from(v.denominator().clone()));
+        // Σⱼ Cᵢⱼ cʲ eⁿ⁻ʲ for each row, then Σᵢ rowᵢ aⁱ bᵐ⁻ⁱ, both by homogeneous Horner
+        let homogeneous = |coef: &mut dyn Iterator<Item = IBig>, x: &IBig, y: &IBig| -> IBig {
+            // coefficients from the highest power of x down: acc ← acc·x + cₖ·y^{deg−k}
+            let mut acc = IBig::ZERO;
+            let mut ypow = IBig::ONE;
+            for (k, ck) in coef.enumerate() {
+                if k == 0 {
+                    acc = ck;
+                } else {
+                    ypow *= y;
+                    acc = acc * x + ck * &ypow;
+                }
+            }
+            acc
+        };
+        let rows: Vec<IBig> = (0..=self.m)
+            .rev()
+            .map(|i| {
+                let row = &self.c[i * (self.n + 1)..(i + 1) * (self.n + 1)];
+                homogeneous(&mut row.iter().rev().cloned(), c, &e)
+            })
+            .collect();
+        let total = homogeneous(&mut rows.into_iter(), a, &b);
+        total.cmp(&IBig::ZERO)
+    }
 }
 
 /// Word-size primes (the six largest below 2⁶¹) for the modular coprimality tests.
@@ -1698,6 +1884,35 @@ mod tests {
             s -= &b;
             proptest::prop_assert!(same_terms(&s, &naive_add(&a, &b, -1)));
             proptest::prop_assert!(same_terms(&a.scale(&q(-3)), &naive_add(&M::zero(na), &a, -3)));
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+        /// The fraction-free signs equal the signs of the rational values, at random
+        /// points and at roots of the polynomial (a factor `(u − a)` built in).
+        #[test]
+        fn fraction_free_signs_are_the_signs_of_the_values(
+            c in proptest::collection::vec((-9i64..10, 1i64..13), 12),
+            (un, ud, vn, vd) in (-20i64..21, 1i64..9, -20i64..21, 1i64..9),
+            root in proptest::bool::ANY,
+        ) {
+            let (m, n) = (2usize, 3usize);
+            let mut power: Vec<Rational> = c.iter().map(|(p, d)| Rational::from_parts_signed((*p).into(), (*d).into())).collect();
+            let u = Rational::from_parts_signed(un.into(), ud.into());
+            let v = Rational::from_parts_signed(vn.into(), vd.into());
+            if root {
+                // make p(u, v) = 0 by adjusting the constant term
+                let val: Rational = (0..=m).flat_map(|i| (0..=n).map(move |j| (i, j)))
+                    .map(|(i, j)| power[i * (n + 1) + j].clone() * ring_pow(&u, i) * ring_pow(&v, j))
+                    .fold(Rational::ZERO, |a, b| a + b);
+                power[0] = power[0].clone() - val;
+            }
+            let val: Rational = (0..=m).flat_map(|i| (0..=n).map(move |j| (i, j)))
+                .map(|(i, j)| power[i * (n + 1) + j].clone() * ring_pow(&u, i) * ring_pow(&v, j))
+                .fold(Rational::ZERO, |a, b| a + b);
+            let sg = BivariateSigns::new(&power, m, n).expect("(m + 1)(n + 1) coefficients");
+            proptest::prop_assert_eq!(sg.sign_at(&u, &v), val.cmp(&Rational::ZERO));
         }
     }
 
