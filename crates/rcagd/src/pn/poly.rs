@@ -1367,9 +1367,10 @@ pub(crate) fn gcd2<F: Scalar>(p: &MPoly<F>, q: &MPoly<F>) -> MPoly<F> {
     }
     let (a, b) = (to_bi(p), to_bi(q));
     let (ca, cb) = (bi_content(&a), bi_content(&b));
-    let cont = if ca.degree().unwrap_or(0) == 0 || cb.degree().unwrap_or(0) == 0 {
-        Poly::constant(F::one())
-    } else if proven_coprime(&ca, &cb) {
+    let cont = if ca.degree().unwrap_or(0) == 0
+        || cb.degree().unwrap_or(0) == 0
+        || proven_coprime(&ca, &cb)
+    {
         Poly::constant(F::one())
     } else {
         ca.gcd(&cb)
