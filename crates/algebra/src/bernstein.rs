@@ -605,24 +605,37 @@ fn shift_line_int(
 /// The Bernstein coefficients of degree `deg` of one line of power coefficients, times the
 /// positive integer `deg!`: `deg!·bᵣ = Σ_{i ≤ r} C(r, i)·i!·(deg − i)!·aᵢ` (from
 /// `bᵣ = Σ_{i ≤ r} C(r, i)/C(deg, i)·aᵢ`; Farin, *Curves and Surfaces for CAGD*, 5th ed.,
-/// §5.7, the power-to-Bernstein conversion).
-fn bernstein_line_int(c: &mut [dashu_int::IBig], start: usize, stride: usize, deg: usize) {
+/// §5.7, the power-to-Bernstein conversion). `weights[i] = i!·(deg − i)!` (computed once
+/// per degree by the caller); the sums `Σ_{i ≤ r} C(r, i)·xᵢ` by `deg` passes of prefix
+/// sums (pass `k` adds `x_{r−1}` to `x_r` for `r = deg, …, k`), which leave
+/// `Σ_{i ≤ r} C(r, i) xᵢ` in `x_r` (Pascal's rule) — additions only, the same integers.
+fn bernstein_line_int(
+    c: &mut [dashu_int::IBig],
+    start: usize,
+    stride: usize,
+    deg: usize,
+    weights: &[dashu_int::IBig],
+) {
+    let idx = |i: usize| start + i * stride;
+    for (i, w) in weights.iter().enumerate().take(deg + 1) {
+        c[idx(i)] *= w;
+    }
+    for pass in 1..=deg {
+        for r in (pass..=deg).rev() {
+            let prev = c[idx(r - 1)].clone();
+            c[idx(r)] += prev;
+        }
+    }
+}
+
+/// `i!·(deg − i)!` for `i = 0, …, deg` (the weights of [`bernstein_line_int`]).
+fn factorial_weights(deg: usize) -> Vec<dashu_int::IBig> {
     use dashu_int::IBig;
     let mut fact = vec![IBig::ONE; deg + 1];
     for i in 1..=deg {
         fact[i] = &fact[i - 1] * IBig::from(i);
     }
-    let a: Vec<IBig> = (0..=deg)
-        .map(|i| &c[start + i * stride] * &fact[i] * &fact[deg - i])
-        .collect();
-    for r in 0..=deg {
-        let row = binomials_int(r);
-        let mut acc = IBig::ZERO;
-        for (i, cri) in row.iter().enumerate() {
-            acc += IBig::from(cri.clone()) * &a[i];
-        }
-        c[start + r * stride] = acc;
-    }
+    (0..=deg).map(|i| &fact[i] * &fact[deg - i]).collect()
 }
 
 /// Positive multiples of the tensor Bernstein coefficients of bidegree `(m, n)` (row-major
@@ -667,11 +680,12 @@ pub fn tensor_bernstein_scaled(
     for i in 0..=m {
         shift_line_int(&mut c, i * w, 1, n, v0, dv);
     }
+    let (wm, wn) = (factorial_weights(m), factorial_weights(n));
     for j in 0..=n {
-        bernstein_line_int(&mut c, j, w, m);
+        bernstein_line_int(&mut c, j, w, m, &wm);
     }
     for i in 0..=m {
-        bernstein_line_int(&mut c, i * w, 1, n);
+        bernstein_line_int(&mut c, i * w, 1, n, &wn);
     }
     Ok(c)
 }

@@ -839,6 +839,484 @@ pub(crate) fn mul_rational(a: &MPoly<Rational>, b: &MPoly<Rational>) -> MPoly<Ra
     )
 }
 
+/// The exact quotient `p/d` over `ℚ` if `d` divides `p` (`None` if it does not, or `d` is
+/// zero), with `max(nvars(p), nvars(d), min_vars)` variables: the same polynomial as the
+/// lexicographic division in `ℚ[x]` (leading term = largest exponent vector), computed
+/// **fraction-free**. With `p = P/L_p`, `d = c·D/L_d` (`P`, `D` integer coefficient
+/// vectors over common denominators, `c` the content of `c·D`, `D` primitive), Gauss's
+/// lemma makes `Q = P/D` an integer polynomial whenever `d | p`, so the division runs on
+/// integers: each quotient coefficient is an exact integer quotient of leading
+/// coefficients (a non-exact one proves `d ∤ p`), the remainder is updated by integer
+/// products, and `p/d = Q·L_d/(c·L_p)` takes one reduction per coefficient (Geddes,
+/// Czapor, Labahn, *Algorithms for Computer Algebra*, 1992, §2.8 on Gauss's lemma, §2.9
+/// on the multivariate division). The remainder lives in a dense array over `p`'s degree
+/// box when that box has at most `64·|p| + 4096` entries, else in an ordered map.
+pub fn div_exact_rational(
+    p: &MPoly<Rational>,
+    d: &MPoly<Rational>,
+    min_vars: usize,
+) -> Option<MPoly<Rational>> {
+    use dashu_int::{IBig, UBig};
+    let nv = p.nvars.max(d.nvars).max(min_vars);
+    if d.is_zero() {
+        return None;
+    }
+    if p.is_zero() {
+        return Some(MPoly::zero(nv));
+    }
+    let pad = |e: &[u32]| -> Vec<u32> {
+        let mut v = e.to_vec();
+        v.resize(nv, 0);
+        v
+    };
+    let (pi, lp) = integer_coefficients(p);
+    let (mut di, ld) = integer_coefficients(d);
+    let cont = di.iter().fold(UBig::ZERO, |g, x| {
+        dashu_base::Gcd::gcd(&g, &dashu_base::UnsignedAbs::unsigned_abs(x))
+    });
+    if cont != UBig::ONE {
+        let c = IBig::from(cont.clone());
+        for x in di.iter_mut() {
+            *x = &*x / &c;
+        }
+    }
+    let de: Vec<Vec<u32>> = d.terms.keys().map(|e| pad(e)).collect();
+    let pe: Vec<Vec<u32>> = p.terms.keys().map(|e| pad(e)).collect();
+    let (lde, ldc) = (de.last()?.clone(), di.last()?.clone());
+    // the degree box of p; d must fit in it
+    let dims: Vec<usize> = (0..nv)
+        .map(|i| pe.iter().map(|e| e[i] as usize).max().unwrap_or(0) + 1)
+        .collect();
+    if de
+        .iter()
+        .any(|e| e.iter().zip(&dims).any(|(&k, &m)| k as usize >= m))
+    {
+        return None;
+    }
+    let dmax: Vec<usize> = (0..nv)
+        .map(|i| de.iter().map(|e| e[i] as usize).max().unwrap_or(0))
+        .collect();
+    let size = dims.iter().try_fold(1usize, |a, &m| a.checked_mul(m));
+    let limit = pe.len().saturating_mul(64).saturating_add(4096);
+    let mut quot: Vec<(Vec<u32>, IBig)> = Vec::new();
+    match size {
+        Some(size) if size <= limit => {
+            let mut strides = vec![1usize; nv];
+            for i in (0..nv.saturating_sub(1)).rev() {
+                strides[i] = strides[i + 1] * dims[i + 1];
+            }
+            let index =
+                |e: &[u32]| -> usize { e.iter().zip(&strides).map(|(&k, s)| k as usize * s).sum() };
+            let mut r = vec![IBig::ZERO; size];
+            for (e, c) in pe.iter().zip(pi) {
+                r[index(e)] = c;
+            }
+            let di_idx: Vec<usize> = de.iter().map(|e| index(e)).collect();
+            let ld_idx = index(&lde);
+            let mut top = size;
+            while let Some(i) = (0..top).rev().find(|&i| r[i] != IBig::ZERO) {
+                crate::budget::checkpoint();
+                top = i + 1;
+                // the exponent vector of index i
+                let mut e = vec![0u32; nv];
+                let mut rest = i;
+                for k in (0..nv).rev() {
+                    e[k] = u32::try_from(rest % dims[k]).ok()?;
+                    rest /= dims[k];
+                }
+                if e.iter().zip(&lde).any(|(a, b)| a < b) {
+                    return None;
+                }
+                let (t, rem) = (&r[i] / &ldc, &r[i] % &ldc);
+                if rem != IBig::ZERO {
+                    return None;
+                }
+                let q: Vec<u32> = e.iter().zip(&lde).map(|(a, b)| a - b).collect();
+                // every monomial of q·d stays in p's degree box when d | p (degrees in
+                // each variable add up); outside it, d ∤ p
+                if q.iter()
+                    .zip(&dmax)
+                    .zip(&dims)
+                    .any(|((&a, &b), &m)| a as usize + b >= m)
+                {
+                    return None;
+                }
+                let shift = i - ld_idx;
+                for (&k, c) in di_idx.iter().zip(&di) {
+                    r[k + shift] -= &t * c;
+                }
+                quot.push((q, t));
+            }
+        }
+        _ => {
+            let mut r: BTreeMap<Vec<u32>, IBig> = pe.into_iter().zip(pi).collect();
+            let mut buf = vec![0u32; nv];
+            while let Some((e, c)) = r.pop_last() {
+                crate::budget::checkpoint();
+                if e.iter().zip(&lde).any(|(a, b)| a < b) {
+                    return None;
+                }
+                let (t, rem) = (&c / &ldc, &c % &ldc);
+                if rem != IBig::ZERO {
+                    return None;
+                }
+                let q: Vec<u32> = e.iter().zip(&lde).map(|(a, b)| a - b).collect();
+                // all terms of t·xᵠ·D but the leading one (which cancels c)
+                for (f, dc) in de.iter().zip(&di).rev().skip(1) {
+                    for (k, x) in buf.iter_mut().enumerate() {
+                        *x = f[k] + q[k];
+                    }
+                    let v = &t * dc;
+                    match r.get_mut(buf.as_slice()) {
+                        Some(x) => {
+                            *x -= v;
+                            if *x == IBig::ZERO {
+                                r.remove(buf.as_slice());
+                            }
+                        }
+                        None => {
+                            r.insert(buf.clone(), -v);
+                        }
+                    }
+                }
+                quot.push((q, t));
+            }
+        }
+    }
+    // p/d = Q·L_d/(c·L_p)
+    let num = IBig::from(ld);
+    let den = lp * cont;
+    quot.reverse();
+    Some(MPoly::from_sorted_terms(
+        nv,
+        quot.into_iter()
+            .map(|(e, q)| (e, Rational::from_parts(q * &num, den.clone()))),
+    ))
+}
+
+/// `p(P₀ + s·(e₁ + t·e₂))` as a polynomial in `(s, t)` for a bivariate `p` over `ℚ`
+/// (`None` if `p` has other variables than `x₀`, `x₁`): the composition with the map
+/// `(s, t) ↦ P₀ + s e₁ + st e₂` that collapses the edge `s = 0` of the unit square to
+/// `P₀` (a triangle's parametrization), **fraction-free**. With one common denominator
+/// `K` of `P₀` and `e₁, e₂` (`P₀ = A/K`, `s(e₁ + t e₂) = s λ(t)/K` with integer linear
+/// `λ`) and `p = Σ cᵢⱼ uⁱvʲ = (Σ Cᵢⱼ uⁱvʲ)/L`:
+/// `L Kᵈ p(P₀ + s λ/K) = P̃(A + sλ)` for `P̃ = Σ Cᵢⱼ K^{d−i−j} XⁱYʲ`, `d = m + n`. The
+/// integer Taylor shift `S(x, y) = P̃(A + (x, y))` (Horner's shifts of the columns and
+/// rows) and, for each homogeneous part `S_k` of `S`, `h_k(t) = S_k(λ_x(t), λ_y(t))` by
+/// Horner's rule in `λ_x` give `p(P₀ + s ℓ(t)) = Σ_k sᵏ h_k(t)/(L Kᵈ)`: integer products
+/// and sums only, one reduction per result coefficient. The same polynomial as the
+/// substitution.
+pub fn compose_fan_rational(
+    p: &MPoly<Rational>,
+    p0: &[Rational; 2],
+    e1: &[Rational; 2],
+    e2: &[Rational; 2],
+) -> Option<MPoly<Rational>> {
+    use dashu_int::IBig;
+    if p.nvars > 2 && p.terms.keys().any(|e| e[2..].iter().any(|&k| k != 0)) {
+        return None;
+    }
+    if p.is_zero() {
+        return Some(MPoly::zero(2));
+    }
+    let deg = |i: usize| {
+        p.terms
+            .keys()
+            .map(|e| e.get(i).copied().unwrap_or(0) as usize)
+            .max()
+            .unwrap_or(0)
+    };
+    let (m, n) = (deg(0), deg(1));
+    let d = m + n;
+    let (ci, l) = integer_coefficients(p);
+    // one common denominator K of P₀, e₁, e₂
+    let pts = [&p0[0], &p0[1], &e1[0], &e1[1], &e2[0], &e2[1]];
+    let (ints, k) = integers_over_common_denominator(pts.into_iter());
+    let kk = IBig::from(k.clone());
+    let kpow: Vec<IBig> = std::iter::successors(Some(IBig::ONE), |x| Some(x * &kk))
+        .take(d + 1)
+        .collect();
+    // P̃ dense: c[i][j] = C_ij K^{d−i−j}
+    let mut c = vec![vec![IBig::ZERO; n + 1]; m + 1];
+    for (e, x) in p.terms.keys().zip(ci) {
+        let (i, j) = (
+            e.first().copied().unwrap_or(0) as usize,
+            e.get(1).copied().unwrap_or(0) as usize,
+        );
+        c[i][j] = x * &kpow[d - i - j];
+    }
+    // S(x, y) = P̃(A_u + x, A_v + y): Horner's Taylor shifts
+    let shift = |v: &mut [IBig], a: &IBig| {
+        let deg = v.len().saturating_sub(1);
+        if a == &IBig::ZERO {
+            return;
+        }
+        for r in 0..deg {
+            crate::budget::checkpoint();
+            for i in (r..deg).rev() {
+                let next = &v[i + 1] * a;
+                v[i] += next;
+            }
+        }
+    };
+    for j in 0..=n {
+        let mut col: Vec<IBig> = c.iter().map(|row| row[j].clone()).collect();
+        shift(&mut col, &ints[0]);
+        for (row, x) in c.iter_mut().zip(col) {
+            row[j] = x;
+        }
+    }
+    for row in c.iter_mut() {
+        shift(row, &ints[1]);
+    }
+    // λ_x = E1x + t E2x, λ_y = E1y + t E2y (integers over K)
+    let (lx, ly) = ([&ints[2], &ints[4]], [&ints[3], &ints[5]]);
+    let times_linear = |acc: &[IBig], a: &IBig, b: &IBig| -> Vec<IBig> {
+        let mut next = vec![IBig::ZERO; acc.len() + 1];
+        for (q, x) in acc.iter().enumerate() {
+            if x == &IBig::ZERO {
+                continue;
+            }
+            next[q] += x * a;
+            next[q + 1] += x * b;
+        }
+        next
+    };
+    let mut ly_pow: Vec<Vec<IBig>> = vec![vec![IBig::ONE]];
+    for j in 1..=n {
+        let next = times_linear(&ly_pow[j - 1], ly[0], ly[1]);
+        ly_pow.push(next);
+    }
+    let den = l * k.pow(d);
+    let mut terms: Vec<(Vec<u32>, Rational)> = Vec::new();
+    for kdeg in 0..=d {
+        crate::budget::checkpoint();
+        let (lo, hi) = (kdeg.saturating_sub(n), kdeg.min(m));
+        let mut acc: Vec<IBig> = Vec::new();
+        for i in (lo..=hi).rev() {
+            if !acc.is_empty() {
+                acc = times_linear(&acc, lx[0], lx[1]);
+            }
+            let cij = &c[i][kdeg - i];
+            if cij != &IBig::ZERO {
+                let pw = &ly_pow[kdeg - i];
+                if acc.len() < pw.len() {
+                    acc.resize(pw.len(), IBig::ZERO);
+                }
+                for (q, y) in pw.iter().enumerate() {
+                    acc[q] += cij * y;
+                }
+            }
+        }
+        for _ in 0..lo {
+            if acc.is_empty() {
+                break;
+            }
+            acc = times_linear(&acc, lx[0], lx[1]);
+        }
+        for (q, x) in acc.into_iter().enumerate() {
+            if x != IBig::ZERO {
+                let e = vec![u32::try_from(kdeg).ok()?, u32::try_from(q).ok()?];
+                terms.push((e, Rational::from_parts(x, den.clone())));
+            }
+        }
+    }
+    Some(MPoly::from_sorted_terms(2, terms))
+}
+
+/// Exact signs of a bivariate polynomial `p = Σ cᵢⱼ uⁱvʲ` over `ℚ` at rational points,
+/// fraction-free: `p = (Σ Cᵢⱼ uⁱvʲ)/L` with integers `Cᵢⱼ` (one common denominator
+/// `L > 0`), and at `u = a/b`, `v = c/e` (`b, e > 0`) the sign of `p` is the sign of the
+/// integer `L bᵐ eⁿ p(a/b, c/e) = Σᵢ aⁱ bᵐ⁻ⁱ Σⱼ Cᵢⱼ cʲ eⁿ⁻ʲ` (homogeneous Horner's rule):
+/// integer products and sums only, no gcd.
+#[derive(Debug, Clone)]
+pub struct BivariateSigns {
+    c: Vec<dashu_int::IBig>,
+    m: usize,
+    n: usize,
+}
+
+impl BivariateSigns {
+    /// From the power coefficients `power[i(n + 1) + j] = cᵢⱼ` of bidegree `(m, n)`
+    /// (`None` if the length is not `(m + 1)(n + 1)`).
+    pub fn new(power: &[Rational], m: usize, n: usize) -> Option<Self> {
+        if power.len() != (m + 1).checked_mul(n + 1)? {
+            return None;
+        }
+        let (c, _) = integers_over_common_denominator(power.iter());
+        Some(BivariateSigns { c, m, n })
+    }
+
+    /// The sign of `p(u, v)`.
+    pub fn sign_at(&self, u: &Rational, v: &Rational) -> core::cmp::Ordering {
+        use dashu_int::IBig;
+        let (a, b) = (u.numerator(), IBig::from(u.denominator().clone()));
+        let (c, e) = (v.numerator(), IBig::from(v.denominator().clone()));
+        // Σⱼ Cᵢⱼ cʲ eⁿ⁻ʲ for each row, then Σᵢ rowᵢ aⁱ bᵐ⁻ⁱ, both by homogeneous Horner
+        let homogeneous = |coef: &mut dyn Iterator<Item = IBig>, x: &IBig, y: &IBig| -> IBig {
+            // coefficients from the highest power of x down: acc ← acc·x + cₖ·y^{deg−k}
+            let mut acc = IBig::ZERO;
+            let mut ypow = IBig::ONE;
+            for (k, ck) in coef.enumerate() {
+                if k == 0 {
+                    acc = ck;
+                } else {
+                    ypow *= y;
+                    acc = acc * x + ck * &ypow;
+                }
+            }
+            acc
+        };
+        let rows: Vec<IBig> = (0..=self.m)
+            .rev()
+            .map(|i| {
+                let row = &self.c[i * (self.n + 1)..(i + 1) * (self.n + 1)];
+                homogeneous(&mut row.iter().rev().cloned(), c, &e)
+            })
+            .collect();
+        let total = homogeneous(&mut rows.into_iter(), a, &b);
+        total.cmp(&IBig::ZERO)
+    }
+}
+
+/// Word-size primes (the six largest below 2⁶¹) for the modular coprimality tests.
+const COPRIME_TEST_PRIMES: [u64; 6] = [
+    2_305_843_009_213_693_951,
+    2_305_843_009_213_693_921,
+    2_305_843_009_213_693_907,
+    2_305_843_009_213_693_723,
+    2_305_843_009_213_693_693,
+    2_305_843_009_213_693_669,
+];
+
+fn mul_mod(a: u64, b: u64, p: u64) -> u64 {
+    ((u128::from(a) * u128::from(b)) % u128::from(p)) as u64
+}
+
+fn pow_mod(mut a: u64, mut e: u64, p: u64) -> u64 {
+    let mut r = 1 % p;
+    while e > 0 {
+        if e & 1 == 1 {
+            r = mul_mod(r, a, p);
+        }
+        a = mul_mod(a, a, p);
+        e >>= 1;
+    }
+    r
+}
+
+/// `a⁻¹ mod p` (Fermat, `p` prime, `a ≢ 0`).
+fn inv_mod(a: u64, p: u64) -> u64 {
+    pow_mod(a, p - 2, p)
+}
+
+/// The residue of `q` modulo the prime `p`; `None` if `p` divides the denominator.
+fn rational_mod(q: &Rational, p: u64) -> Option<u64> {
+    use dashu_int::{IBig, UBig};
+    let pb = UBig::from(p);
+    let d = u64::try_from(q.denominator() % &pb).ok()?;
+    if d == 0 {
+        return None;
+    }
+    let n = q.numerator() % IBig::from(p);
+    let n = i128::try_from(n).ok()?;
+    let n = n.rem_euclid(i128::from(p)) as u64;
+    Some(mul_mod(n, inv_mod(d, p), p))
+}
+
+/// The images modulo `p` of rational coefficients (constant term first); `None` if `p`
+/// divides a denominator or the last (leading) coefficient.
+fn images_mod(c: &[Rational], p: u64) -> Option<Vec<u64>> {
+    let v = c
+        .iter()
+        .map(|x| rational_mod(x, p))
+        .collect::<Option<Vec<_>>>()?;
+    (v.last().is_some_and(|&l| l != 0)).then_some(v)
+}
+
+/// The degree of the greatest common divisor of two univariate polynomials over `𝔽_p`
+/// (constant term first, leading coefficients non-zero), by Euclid's algorithm.
+fn gcd_degree_mod(mut a: Vec<u64>, mut b: Vec<u64>, p: u64) -> usize {
+    let trim = |v: &mut Vec<u64>| {
+        while v.last() == Some(&0) {
+            v.pop();
+        }
+    };
+    trim(&mut a);
+    trim(&mut b);
+    if a.len() < b.len() {
+        std::mem::swap(&mut a, &mut b);
+    }
+    while !b.is_empty() {
+        crate::budget::checkpoint();
+        // a ← a mod b
+        let inv = inv_mod(b[b.len() - 1], p);
+        while a.len() >= b.len() {
+            let Some(&lead) = a.last() else { break };
+            let f = mul_mod(lead, inv, p);
+            let shift = a.len() - b.len();
+            for (k, &bk) in b.iter().enumerate() {
+                let t = mul_mod(f, bk, p);
+                a[k + shift] = (a[k + shift] + p - t) % p;
+            }
+            a.pop();
+            trim(&mut a);
+        }
+        std::mem::swap(&mut a, &mut b);
+    }
+    a.len().saturating_sub(1)
+}
+
+/// `true` if the non-zero polynomials `a`, `b ∈ ℚ[x]` (coefficients, constant term
+/// first, leading coefficient non-zero) are **proven** coprime by their images modulo a
+/// word-size prime `p` that divides no denominator and neither leading coefficient:
+/// then the primitive integer multiples keep their degrees modulo `p`, and the image of
+/// their gcd (Gauss's lemma: a divisor over `ℤ` whose leading coefficient divides both
+/// leading coefficients) divides both images with its degree, so
+/// `deg gcd_ℚ(a, b) ≤ deg gcd_𝔽ₚ(ā, b̄)` (Geddes, Czapor, Labahn, *Algorithms for
+/// Computer Algebra*, 1992, §7.4, Lemma 7.3). `false` means "not proven" (a common
+/// factor, or an unlucky prime): the caller computes the gcd exactly.
+pub fn coprime_by_modular_image(a: &[Rational], b: &[Rational]) -> bool {
+    for &p in &COPRIME_TEST_PRIMES[..3] {
+        if let (Some(x), Some(y)) = (images_mod(a, p), images_mod(b, p)) {
+            return gcd_degree_mod(x, y, p) == 0;
+        }
+    }
+    false
+}
+
+/// `true` if the non-zero polynomials `a = Σⱼ aⱼ(x₀) x₁ʲ`, `b = Σⱼ bⱼ(x₀) x₁ʲ` of
+/// `ℚ[x₀][x₁]` (`a[j]` the coefficients of `aⱼ`, constant term first; the last `aⱼ`, `bⱼ`
+/// non-zero) are **proven** to have a greatest common divisor of degree 0 in `x₁` (a
+/// polynomial in `x₀` alone): by their images under `x₀ ↦ t`, modulo a prime `p`, for a
+/// `t` where neither leading coefficient `a_last(t)`, `b_last(t)` vanishes modulo `p`
+/// (the image of a common divisor keeps its degree in `x₁` and divides both images;
+/// Geddes, Czapor, Labahn 1992, §7.4). `false` means "not proven".
+pub fn coprime_in_last_variable_by_modular_image(a: &[Vec<Rational>], b: &[Vec<Rational>]) -> bool {
+    let eval = |c: &[Rational], t: u64, p: u64| -> Option<u64> {
+        let mut acc = 0u64;
+        for x in c.iter().rev() {
+            acc = (mul_mod(acc, t, p) + rational_mod(x, p)?) % p;
+        }
+        Some(acc)
+    };
+    let image = |c: &[Vec<Rational>], t: u64, p: u64| -> Option<Vec<u64>> {
+        let v = c
+            .iter()
+            .map(|x| eval(x, t, p))
+            .collect::<Option<Vec<_>>>()?;
+        (v.last().is_some_and(|&l| l != 0)).then_some(v)
+    };
+    for &p in &COPRIME_TEST_PRIMES[..3] {
+        for t in [1_000_003u64, 7_919, 104_729] {
+            if let (Some(x), Some(y)) = (image(a, t, p), image(b, t, p)) {
+                return gcd_degree_mod(x, y, p) == 0;
+            }
+        }
+    }
+    false
+}
+
 impl<R: Ring> Mul for &MPoly<R> {
     type Output = MPoly<R>;
     fn mul(self, rhs: &MPoly<R>) -> MPoly<R> {
@@ -1406,6 +1884,88 @@ mod tests {
             s -= &b;
             proptest::prop_assert!(same_terms(&s, &naive_add(&a, &b, -1)));
             proptest::prop_assert!(same_terms(&a.scale(&q(-3)), &naive_add(&M::zero(na), &a, -3)));
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+        /// The fraction-free signs equal the signs of the rational values, at random
+        /// points and at roots of the polynomial (a factor `(u − a)` built in).
+        #[test]
+        fn fraction_free_signs_are_the_signs_of_the_values(
+            c in proptest::collection::vec((-9i64..10, 1i64..13), 12),
+            (un, ud, vn, vd) in (-20i64..21, 1i64..9, -20i64..21, 1i64..9),
+            root in proptest::bool::ANY,
+        ) {
+            let (m, n) = (2usize, 3usize);
+            let mut power: Vec<Rational> = c.iter().map(|(p, d)| Rational::from_parts_signed((*p).into(), (*d).into())).collect();
+            let u = Rational::from_parts_signed(un.into(), ud.into());
+            let v = Rational::from_parts_signed(vn.into(), vd.into());
+            if root {
+                // make p(u, v) = 0 by adjusting the constant term
+                let val: Rational = (0..=m).flat_map(|i| (0..=n).map(move |j| (i, j)))
+                    .map(|(i, j)| power[i * (n + 1) + j].clone() * ring_pow(&u, i) * ring_pow(&v, j))
+                    .fold(Rational::ZERO, |a, b| a + b);
+                power[0] = power[0].clone() - val;
+            }
+            let val: Rational = (0..=m).flat_map(|i| (0..=n).map(move |j| (i, j)))
+                .map(|(i, j)| power[i * (n + 1) + j].clone() * ring_pow(&u, i) * ring_pow(&v, j))
+                .fold(Rational::ZERO, |a, b| a + b);
+            let sg = BivariateSigns::new(&power, m, n).expect("(m + 1)(n + 1) coefficients");
+            proptest::prop_assert_eq!(sg.sign_at(&u, &v), val.cmp(&Rational::ZERO));
+        }
+    }
+
+    /// The lexicographic exact division in `ℚ` term by term (the definition).
+    fn naive_div_exact(p: &M, d: &M, min_vars: usize) -> Option<M> {
+        let nv = p.nvars().max(d.nvars()).max(min_vars);
+        let pad = |e: &[u32]| {
+            let mut v = e.to_vec();
+            v.resize(nv, 0);
+            v
+        };
+        let (lde, ldc) = d.terms().last().map(|(e, c)| (pad(e), c.clone()))?;
+        let mut r = p.clone();
+        let mut quot = M::zero(nv);
+        while let Some((le, lc)) = r.terms().last().map(|(e, c)| (pad(e), c.clone())) {
+            if le.iter().zip(&lde).any(|(a, b)| a < b) {
+                return None;
+            }
+            let e: Vec<u32> = le.iter().zip(&lde).map(|(a, b)| a - b).collect();
+            let t = M::monomial(nv, &e, lc / ldc.clone());
+            r = &r - &naive_mul(&t, d);
+            quot = &quot + &t;
+        }
+        Some(quot)
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+        /// The fraction-free exact division (dense or sparse remainder) returns the
+        /// quotient of the definition for products `d·q` (and `d·q + r` with a random
+        /// `r`, usually not divisible: then both return `None`), in up to three variables.
+        #[test]
+        fn fraction_free_exact_division_agrees_with_the_definition(
+            td in proptest::collection::vec((proptest::collection::vec(0u32..4, 3), -9i64..10, 1i64..13), 1..6),
+            tq in proptest::collection::vec((proptest::collection::vec(0u32..4, 3), -9i64..10, 1i64..13), 0..6),
+            tr in proptest::collection::vec((proptest::collection::vec(0u32..4, 3), -9i64..10, 1i64..13), 0..3),
+            n in 1usize..4,
+            spread in proptest::bool::ANY,
+        ) {
+            let stretch = |t: &Vec<(Vec<u32>, i64, i64)>| -> Vec<(Vec<u32>, i64, i64)> {
+                t.iter().map(|(e, p, d)| (e.iter().map(|k| if spread { k * 97 } else { *k }).collect(), *p, *d)).collect()
+            };
+            let d = from_list(n, &stretch(&td));
+            let quo = from_list(n, &stretch(&tq));
+            let r = from_list(n, &stretch(&tr));
+            let p = &d * &quo;
+            let got = div_exact_rational(&p, &d, 2);
+            proptest::prop_assert_eq!(got.clone(), naive_div_exact(&p, &d, 2));
+            if !d.is_zero() {
+                proptest::prop_assert_eq!(got, Some(quo));
+            }
+            let p2 = &p + &r;
+            proptest::prop_assert_eq!(div_exact_rational(&p2, &d, 2), naive_div_exact(&p2, &d, 2));
         }
     }
 }

@@ -880,10 +880,27 @@ impl<F: Scalar> Hypercyclide<F> {
         let fd = self.phi_dual();
         let ff = |i: usize, j: usize| F::from_rational(&fd[i][j]);
         let mut quad = MPoly::zero(2);
-        for i in 0..5 {
-            for j in 0..5 {
-                if !fd[i][j].is_zero() {
-                    quad = &quad + &(&g[i] * &g[j]).scale(&ff(i, j));
+        if F::EXACT {
+            // Σᵢ φ′ᵢᵢ gᵢ² + Σ_{i<j} (φ′ᵢⱼ + φ′ⱼᵢ) gᵢgⱼ: the same polynomial with 15 products
+            // instead of 25 (for f64 the sum below, whose rounding depends on the order)
+            for i in 0..5 {
+                for j in i..5 {
+                    let c = if i == j {
+                        fd[i][i].clone()
+                    } else {
+                        &fd[i][j] + &fd[j][i]
+                    };
+                    if !c.is_zero() {
+                        quad += &(&g[i] * &g[j]).scale(&F::from_rational(&c));
+                    }
+                }
+            }
+        } else {
+            for i in 0..5 {
+                for j in 0..5 {
+                    if !fd[i][j].is_zero() {
+                        quad = &quad + &(&g[i] * &g[j]).scale(&ff(i, j));
+                    }
                 }
             }
         }

@@ -25,7 +25,7 @@
 //! identities of every piece.
 
 use super::isotropic::IsotropicSurface;
-use super::poly::{compose, int, patch_of, var, Domain};
+use super::poly::{compose, compose_fan, int, patch_of, var, Domain};
 use super::surface::{check_nonzero, PnSurface};
 use super::PnError;
 use crate::error::{format_point, format_scalar};
@@ -105,6 +105,20 @@ pub struct PnPiece<F> {
 impl<F: Scalar> PnPiece<F> {
     /// The collapsed parametrization `(s, t) ↦ P₀ + s(P₁ − P₀) + st(P₂ − P₁)` of the
     /// micro-triangle (degenerate edge `s = 0` at `P₀`).
+    /// `p` composed with [`Self::collapse_map`]: for exact scalars by [`compose_fan`]
+    /// with `e₁ = P₁ − P₀`, `e₂ = P₂ − P₁` (the same polynomial); for `f64` (whose
+    /// rounding depends on the order of the operations) and for polynomials in other
+    /// variables by [`compose`].
+    fn collapsed(&self, p: &MPoly<F>) -> MPoly<F> {
+        if !F::EXACT {
+            return compose(p, &self.collapse_map());
+        }
+        let [p0, p1, p2] = &self.vertices;
+        let e1 = [p1[0].clone() - p0[0].clone(), p1[1].clone() - p0[1].clone()];
+        let e2 = [p2[0].clone() - p1[0].clone(), p2[1].clone() - p1[1].clone()];
+        compose_fan(p, p0, &e1, &e2).unwrap_or_else(|| compose(p, &self.collapse_map()))
+    }
+
     fn collapse_map(&self) -> [MPoly<F>; 2] {
         let [p0, p1, p2] = &self.vertices;
         let (s, t) = (var::<F>(0), var::<F>(1));
@@ -121,12 +135,11 @@ impl<F: Scalar> PnPiece<F> {
     /// # Errors
     /// Only geometry-layer failures.
     pub fn patch(&self) -> Result<BezierPatch<F>, PnError> {
-        let map = self.collapse_map();
         let coords: Vec<MPoly<F>> = self
             .surface
             .point_polys()
             .iter()
-            .map(|p| compose(p, &map))
+            .map(|p| self.collapsed(p))
             .collect();
         patch_of(&coords, &Domain::unit())
     }
@@ -488,7 +501,7 @@ impl<F: Scalar> PnModel<F> {
     pub fn check_regular(&self) -> Result<(), PnError> {
         for (k, p) in self.pieces.iter().enumerate() {
             let at = p.surface.regularity_poly();
-            let reg = compose(&at, &p.collapse_map());
+            let reg = p.collapsed(&at);
             // the collapse map's Jacobian vanishes only on s = 0; R itself must not vanish:
             // test R∘map on [1/64, 1] × [0, 1] and at the collapsed vertex separately
             let dom = Domain::new(F::from_ratio(1, 64), F::one(), F::zero(), F::one())?;

@@ -157,9 +157,65 @@ pub(crate) fn det3<F: Scalar>(m: [&[MPoly<F>; 3]; 3]) -> MPoly<F> {
     dot3(m[0], &cross3(m[1], m[2]))
 }
 
-/// The determinant of a 4×4 matrix of polynomials (rows), by Laplace expansion along the
-/// first row.
+/// The determinant of a 4×4 matrix of polynomials (rows). For exact scalars by Laplace's
+/// expansion along the first two rows, `det = Σ_{k<l} (−1)^{k+l+1} A_{kl} B_{k'l'}` with
+/// the 2×2 minors `A_{kl}` of rows 0, 1 and `B_{k'l'}` of rows 2, 3 on the complementary
+/// columns (27 products at most instead of 40, fewer with zero entries; the same
+/// polynomial); for `f64` (whose rounding depends on the order) along the first row.
 pub(crate) fn det4<F: Scalar>(m: [&[MPoly<F>; 4]; 4]) -> MPoly<F> {
+    if F::EXACT {
+        return det4_by_two_rows(m);
+    }
+    det4_by_first_row(m)
+}
+
+/// `a·d − b·c`, skipping zero products.
+fn minor2<F: Scalar>(a: &MPoly<F>, b: &MPoly<F>, c: &MPoly<F>, d: &MPoly<F>) -> MPoly<F> {
+    let ad = if a.is_zero() || d.is_zero() {
+        MPoly::zero(2)
+    } else {
+        a * d
+    };
+    if b.is_zero() || c.is_zero() {
+        return ad;
+    }
+    &ad - &(b * c)
+}
+
+/// [`det4`] by Laplace's expansion along rows 0 and 1 (2×2 minors).
+fn det4_by_two_rows<F: Scalar>(m: [&[MPoly<F>; 4]; 4]) -> MPoly<F> {
+    // column pairs (k, l), their complements (k', l') and the signs (−1)^{k+l+1} > 0
+    const PAIRS: [[usize; 4]; 6] = [
+        [0, 1, 2, 3],
+        [0, 2, 1, 3],
+        [0, 3, 1, 2],
+        [1, 2, 0, 3],
+        [1, 3, 0, 2],
+        [2, 3, 0, 1],
+    ];
+    const PLUS: [bool; 6] = [true, false, true, true, false, true];
+    let mut acc = MPoly::zero(2);
+    for ([k, l, kk, ll], plus) in PAIRS.into_iter().zip(PLUS) {
+        let a = minor2(&m[0][k], &m[0][l], &m[1][k], &m[1][l]);
+        if a.is_zero() {
+            continue;
+        }
+        let b = minor2(&m[2][kk], &m[2][ll], &m[3][kk], &m[3][ll]);
+        if b.is_zero() {
+            continue;
+        }
+        let t = &a * &b;
+        if plus {
+            acc += &t;
+        } else {
+            acc -= &t;
+        }
+    }
+    acc
+}
+
+/// [`det4`] by Laplace's expansion along the first row.
+fn det4_by_first_row<F: Scalar>(m: [&[MPoly<F>; 4]; 4]) -> MPoly<F> {
     let mut acc = MPoly::zero(2);
     for c in 0..4 {
         if m[0][c].is_zero() {
@@ -250,6 +306,14 @@ fn horner<F: Scalar>(terms: &Terms<'_, F>, var: usize, qs: &[MPoly<F>], nv: usiz
 /// remainder below `10⁻⁹` of the coefficients counts as zero). `None` if `d` does not
 /// divide `p` or `d` is zero.
 pub(crate) fn div_exact<F: Scalar>(p: &MPoly<F>, d: &MPoly<F>) -> Option<MPoly<F>> {
+    if F::EXACT {
+        // rational coefficients: the fraction-free division of the library (the same
+        // quotient)
+        if let (Some(pq), Some(dq)) = (rational_mpoly(p), rational_mpoly(d)) {
+            let q = rcagd_algebra::mpoly::div_exact_rational(&pq, &dq, 2)?;
+            return Some(q.map(F::from_rational));
+        }
+    }
     let nv = p.nvars().max(d.nvars()).max(2);
     let (lde, ldc) = d.terms().last().map(|(e, c)| (pad(e, nv), c.clone()))?;
     if p.is_zero() {
@@ -281,6 +345,15 @@ pub(crate) fn div_exact<F: Scalar>(p: &MPoly<F>, d: &MPoly<F>) -> Option<MPoly<F
         q += t;
     }
     Some(q)
+}
+
+/// `p` with its coefficients in `ℚ` (`None` if one is not rational).
+fn rational_mpoly<F: Scalar>(p: &MPoly<F>) -> Option<MPoly<Rational>> {
+    let terms = p
+        .terms()
+        .map(|(e, c)| Some((e.to_vec(), c.to_rational()?)))
+        .collect::<Option<Vec<_>>>()?;
+    MPoly::from_terms(p.nvars(), terms).ok()
 }
 
 fn pad(e: &[u32], n: usize) -> Vec<u32> {
@@ -476,12 +549,98 @@ fn taylor_shift<F: Scalar>(c: &mut [F], a: &F, h: &F) {
     }
 }
 
-/// [`to_local`] for a polynomial in `u, v` only, by Taylor shifts: each column
-/// `Σᵢ cᵢ uⁱ` becomes `Σᵢ cᵢ (a + h s)ⁱ` by the Horner shift `cᵢ += a·cᵢ₊₁` (descending,
-/// `O(m²)` operations) and the scaling `cᵢ ← hⁱ cᵢ`, then the same for the rows in `v`.
-/// The general composition multiplies powers of `a + h s` as polynomials, far slower for
-/// big coefficients. `None` for other variables (the caller composes).
-fn affine_shift_2<F: Scalar>(p: &MPoly<F>, d: &Domain<F>) -> Option<MPoly<F>> {
+/// `p(P₀ + s·(e₁ + t·e₂))` as a polynomial in `(s, t)`, for `p` in `u, v` only (`None`
+/// otherwise: the caller composes). The same polynomial as [`compose`] with the map
+/// `(s, t) ↦ P₀ + s e₁ + st e₂` (the collapse map of a triangle), computed as: the Taylor
+/// shift `S(x, y) = p(P₀ + (x, y))` ([`shifted_dense`]), then for each homogeneous part
+/// `S_k(x, y) = Σᵢ cᵢ xⁱ yᵏ⁻ⁱ` of `S` the univariate `h_k(t) = S_k(ℓ_x(t), ℓ_y(t))` with the
+/// linear `ℓ = e₁ + t e₂` by Horner's rule in `ℓ_x` (`acc ← acc·ℓ_x + cᵢ ℓ_yᵏ⁻ⁱ`), so that
+/// `p(P₀ + s ℓ(t)) = Σ_k sᵏ h_k(t)`: `O(d³)` scalar operations for total degree `d`, no
+/// products of bivariate polynomials.
+pub(crate) fn compose_fan<F: Scalar>(
+    p: &MPoly<F>,
+    p0: &[F; 2],
+    e1: &[F; 2],
+    e2: &[F; 2],
+) -> Option<MPoly<F>> {
+    if F::EXACT {
+        // rational data: fraction-free in the library (the same polynomial)
+        let r = |x: &[F; 2]| Some([x[0].to_rational()?, x[1].to_rational()?]);
+        if let (Some(pq), Some(a), Some(b), Some(c)) = (rational_mpoly(p), r(p0), r(e1), r(e2)) {
+            let out = rcagd_algebra::mpoly::compose_fan_rational(&pq, &a, &b, &c)?;
+            return Some(out.map(F::from_rational));
+        }
+    }
+    let c = shifted_dense(p, (&p0[0], &F::one()), (&p0[1], &F::one()))?;
+    let m = c.len().saturating_sub(1);
+    let n = c.first().map_or(0, |r| r.len().saturating_sub(1));
+    // ℓ_y(t)ʲ, j ≤ n (constant term first)
+    let ly = [e1[1].clone(), e2[1].clone()];
+    let mut ly_pow: Vec<Vec<F>> = vec![vec![F::one()]];
+    for j in 1..=n {
+        let prev = &ly_pow[j - 1];
+        let mut next = vec![F::zero(); j + 1];
+        for (k, x) in prev.iter().enumerate() {
+            next[k] += x.clone() * ly[0].clone();
+            next[k + 1] += x.clone() * ly[1].clone();
+        }
+        ly_pow.push(next);
+    }
+    let lx = [e1[0].clone(), e2[0].clone()];
+    let mut terms: Vec<(Vec<u32>, F)> = Vec::new();
+    for k in 0..=m + n {
+        rcagd_algebra::budget::checkpoint();
+        // i from min(k, m) down to max(0, k − n): acc ← acc·ℓ_x + c_{i, k−i} ℓ_y^{k−i}
+        let hi = k.min(m);
+        let lo = k.saturating_sub(n);
+        let mut acc: Vec<F> = Vec::new();
+        for i in (lo..=hi).rev() {
+            if !acc.is_empty() {
+                let mut next = vec![F::zero(); acc.len() + 1];
+                for (q, x) in acc.iter().enumerate() {
+                    if x.is_zero() {
+                        continue;
+                    }
+                    next[q] += x.clone() * lx[0].clone();
+                    next[q + 1] += x.clone() * lx[1].clone();
+                }
+                acc = next;
+            }
+            let cij = &c[i][k - i];
+            if !cij.is_zero() {
+                let pw = &ly_pow[k - i];
+                if acc.len() < pw.len() {
+                    acc.resize(pw.len(), F::zero());
+                }
+                for (q, y) in pw.iter().enumerate() {
+                    acc[q] += cij.clone() * y.clone();
+                }
+            }
+        }
+        // multiply by ℓ_x^lo (the parts with i < lo do not exist)
+        for _ in 0..lo {
+            if acc.is_empty() {
+                break;
+            }
+            let mut next = vec![F::zero(); acc.len() + 1];
+            for (q, x) in acc.iter().enumerate() {
+                next[q] += x.clone() * lx[0].clone();
+                next[q + 1] += x.clone() * lx[1].clone();
+            }
+            acc = next;
+        }
+        for (q, x) in acc.into_iter().enumerate() {
+            if !x.is_zero() {
+                terms.push((vec![k as u32, q as u32], x));
+            }
+        }
+    }
+    MPoly::from_terms(2, terms).ok()
+}
+
+/// The dense coefficients `c[i][j]` of `p(a_u + h_u x, a_v + h_v y)` for `p` in `u, v`
+/// only (`None` otherwise), by the Taylor shifts of [`affine_shift_2`].
+fn shifted_dense<F: Scalar>(p: &MPoly<F>, u: (&F, &F), v: (&F, &F)) -> Option<Vec<Vec<F>>> {
     if p.nvars() != 2 {
         return None;
     }
@@ -491,18 +650,27 @@ fn affine_shift_2<F: Scalar>(p: &MPoly<F>, d: &Domain<F>) -> Option<MPoly<F>> {
     for (e, x) in p.terms() {
         c[e[0] as usize][e[1] as usize] = x.clone();
     }
-    let (au, hu) = (d.u.0.clone(), d.u.1.clone() - d.u.0.clone());
-    let (av, hv) = (d.v.0.clone(), d.v.1.clone() - d.v.0.clone());
     for j in 0..=n {
         let mut col: Vec<F> = c.iter().map(|row| row[j].clone()).collect();
-        taylor_shift(&mut col, &au, &hu);
+        taylor_shift(&mut col, u.0, u.1);
         for (row, x) in c.iter_mut().zip(col) {
             row[j] = x;
         }
     }
     for row in c.iter_mut() {
-        taylor_shift(row, &av, &hv);
+        taylor_shift(row, v.0, v.1);
     }
+    Some(c)
+}
+
+/// [`to_local`] for a polynomial in `u, v` only, by Taylor shifts: each column
+/// `Σᵢ cᵢ uⁱ` becomes `Σᵢ cᵢ (a + h s)ⁱ` by the Horner shift `cᵢ += a·cᵢ₊₁` (descending,
+/// `O(m²)` operations) and the scaling `cᵢ ← hⁱ cᵢ`, then the same for the rows in `v`.
+/// The general composition multiplies powers of `a + h s` as polynomials, far slower for
+/// big coefficients. `None` for other variables (the caller composes).
+fn affine_shift_2<F: Scalar>(p: &MPoly<F>, d: &Domain<F>) -> Option<MPoly<F>> {
+    let (hu, hv) = (d.u.1.clone() - d.u.0.clone(), d.v.1.clone() - d.v.0.clone());
+    let c = shifted_dense(p, (&d.u.0, &hu), (&d.v.0, &hv))?;
     let terms = c
         .into_iter()
         .enumerate()
@@ -606,6 +774,20 @@ pub(crate) fn sign_on_domain<F: Scalar>(
     // exact scalars in `u, v` only: the power coefficients in `ℚ` (row-major in `u`) and
     // the bidegree, for the fraction-free Bernstein signs
     let exact = F::EXACT.then(|| exact_power_coefficients(p)).flatten();
+    // exact corner signs from the integer form (no rational evaluation)
+    let signs = exact
+        .as_ref()
+        .and_then(|(power, (m, n))| rcagd_algebra::mpoly::BivariateSigns::new(power, *m, *n));
+    let corner_value = |c: &[F; 2]| -> F {
+        if let (Some(sg), Some(u), Some(v)) = (&signs, c[0].to_rational(), c[1].to_rational()) {
+            return match sg.sign_at(&u, &v) {
+                core::cmp::Ordering::Greater => F::one(),
+                core::cmp::Ordering::Less => -F::one(),
+                core::cmp::Ordering::Equal => F::zero(),
+            };
+        }
+        pad_eval(p, c).unwrap_or_else(F::zero)
+    };
     let mut stack = vec![domain.clone()];
     let mut pos: Option<[F; 2]> = None;
     let mut neg: Option<[F; 2]> = None;
@@ -614,7 +796,7 @@ pub(crate) fn sign_on_domain<F: Scalar>(
         processed += 1;
         // corner values first: an exact zero or a sign change is a witness
         for c in d.corners() {
-            let val = pad_eval(p, &c).unwrap_or_else(F::zero);
+            let val = corner_value(&c);
             if !is_pos(&val) && !is_neg(&val) {
                 return Sign::ZeroAt(c);
             }
@@ -797,6 +979,52 @@ mod tests {
             let (p, qu, qv) = (mk(&tp), mk(&tq), mk(&tr));
             let qs = [qu, qv];
             proptest::prop_assert_eq!(compose(&p, &qs), compose_by_definition(&p, &qs));
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(32))]
+        /// `compose_fan` equals the composition with the collapse map
+        /// `(s, t) ↦ P₀ + s e₁ + st e₂`, for random polynomials and points (zero
+        /// components included).
+        #[test]
+        fn compose_fan_equals_the_composition_with_the_collapse_map(
+            tp in proptest::collection::vec((0u32..6, 0u32..5, -9i64..10, 1i64..7), 0..12),
+            pts in proptest::collection::vec((-4i64..5, 1i64..4), 6),
+        ) {
+            let p = MPoly::from_terms(2, tp.iter().map(|(a, b, n, d)| (vec![*a, *b], q(*n, *d))).collect())
+                .expect("two exponents");
+            let r: Vec<Q> = pts.iter().map(|(n, d)| q(*n, *d)).collect();
+            let (p0, e1, e2) = ([r[0].clone(), r[1].clone()], [r[2].clone(), r[3].clone()], [r[4].clone(), r[5].clone()]);
+            let (s, t) = (var::<Q>(0), var::<Q>(1));
+            let st = &s * &t;
+            let map: Vec<MPoly<Q>> = (0..2)
+                .map(|k| &(&cst(p0[k].clone()) + &s.scale(&e1[k])) + &st.scale(&e2[k]))
+                .collect();
+            proptest::prop_assert_eq!(compose_fan(&p, &p0, &e1, &e2), Some(compose_by_definition(&p, &map)));
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(32))]
+        /// The determinant by 2×2 minors equals the expansion along the first row, for
+        /// random 4×4 matrices of polynomials (zero entries included).
+        #[test]
+        fn det4_by_minors_equals_the_first_row_expansion(
+            entries in proptest::collection::vec(
+                proptest::collection::vec((0u32..3, 0u32..3, -4i64..5, 1i64..4), 0..4), 16),
+        ) {
+            let e: Vec<MPoly<Q>> = entries
+                .iter()
+                .map(|t| MPoly::from_terms(2, t.iter().map(|(a, b, n, d)| (vec![*a, *b], q(*n, *d))).collect())
+                    .expect("two exponents"))
+                .collect();
+            let row = |r: usize| -> [MPoly<Q>; 4] { std::array::from_fn(|c| e[4 * r + c].clone()) };
+            let (r0, r1, r2, r3) = (row(0), row(1), row(2), row(3));
+            proptest::prop_assert_eq!(
+                det4_by_two_rows([&r0, &r1, &r2, &r3]),
+                det4_by_first_row([&r0, &r1, &r2, &r3])
+            );
         }
     }
 
@@ -1005,18 +1233,79 @@ fn from_bi<F: Scalar>(c: &[Poly<F>]) -> MPoly<F> {
     MPoly::from_terms(2, terms).unwrap_or_else(|_| MPoly::zero(2))
 }
 
+/// The coefficients of a polynomial over an exact field as rationals (`None` otherwise).
+fn rational_coeffs<F: Scalar>(p: &Poly<F>) -> Option<Vec<Rational>> {
+    p.coeffs().iter().map(Scalar::to_rational).collect()
+}
+
+/// `true` if the non-zero `a`, `b` are proven coprime by a modular image
+/// ([`rcagd_algebra::mpoly::coprime_by_modular_image`]; exact scalars only).
+fn proven_coprime<F: Scalar>(a: &Poly<F>, b: &Poly<F>) -> bool {
+    if !F::EXACT {
+        return false;
+    }
+    match (rational_coeffs(a), rational_coeffs(b)) {
+        (Some(x), Some(y)) => rcagd_algebra::mpoly::coprime_by_modular_image(&x, &y),
+        _ => false,
+    }
+}
+
+/// The monic gcd of the coefficients (the content in `Q[u]`; zero if all are zero). The
+/// same polynomial as the fold `gcd(…gcd(gcd(0, c₀), c₁)…)`, computed lowest degree
+/// first and ended as soon as it is 1: a constant coefficient, a modular image proving
+/// two coefficients coprime, or an exact gcd of degree 0.
 fn bi_content<F: Scalar>(c: &[Poly<F>]) -> Poly<F> {
-    c.iter().fold(Poly::zero(), |g, p| g.gcd(p))
+    let mut nz: Vec<&Poly<F>> = c.iter().filter(|p| !p.is_zero()).collect();
+    nz.sort_by_key(|p| p.degree().unwrap_or(0));
+    let Some(first) = nz.first() else {
+        return Poly::zero();
+    };
+    if first.degree().unwrap_or(0) == 0 {
+        return Poly::constant(F::one());
+    }
+    let mut g = Poly::zero().gcd(first);
+    for p in &nz[1..] {
+        if proven_coprime(&g, p) {
+            return Poly::constant(F::one());
+        }
+        g = g.gcd(p);
+        if g.degree().unwrap_or(0) == 0 {
+            return Poly::constant(F::one());
+        }
+    }
+    g
 }
 
 fn bi_primitive<F: Scalar>(c: &[Poly<F>]) -> Vec<Poly<F>> {
-    let g = bi_content(c);
-    if g.is_zero() {
+    primitive_by(c, &bi_content(c))
+}
+
+/// The coefficients divided by their content `g` (from [`bi_content`]).
+fn primitive_by<F: Scalar>(c: &[Poly<F>], g: &Poly<F>) -> Vec<Poly<F>> {
+    if g.is_zero() || (g.degree() == Some(0) && g.coeffs().first().is_some_and(|x| *x == F::one()))
+    {
         return c.to_vec();
     }
     c.iter()
-        .map(|p| p.div_exact(&g).unwrap_or_else(|_| p.clone()))
+        .map(|p| p.div_exact(g).unwrap_or_else(|_| p.clone()))
         .collect()
+}
+
+/// `true` if `a`, `b` (as from [`to_bi`], non-empty) are proven to have no common factor
+/// of positive degree in `v` by a modular image
+/// ([`rcagd_algebra::mpoly::coprime_in_last_variable_by_modular_image`]; exact scalars).
+fn proven_coprime_in_v<F: Scalar>(a: &[Poly<F>], b: &[Poly<F>]) -> bool {
+    if !F::EXACT || a.is_empty() || b.is_empty() {
+        return false;
+    }
+    let conv =
+        |c: &[Poly<F>]| -> Option<Vec<Vec<Rational>>> { c.iter().map(rational_coeffs).collect() };
+    match (conv(a), conv(b)) {
+        (Some(x), Some(y)) => {
+            rcagd_algebra::mpoly::coprime_in_last_variable_by_modular_image(&x, &y)
+        }
+        _ => false,
+    }
 }
 
 /// Reads the clock now (not every [`rcagd_algebra::budget::STRIDE`]-th time) and ends the
@@ -1067,6 +1356,10 @@ pub(crate) fn gcd2<F: Scalar>(p: &MPoly<F>, q: &MPoly<F>) -> MPoly<F> {
     if !F::EXACT {
         return int(1);
     }
+    if p.total_degree() == Some(0) || q.total_degree() == Some(0) {
+        // a non-zero constant: a unit
+        return int(1);
+    }
     if p.is_zero() {
         return q.clone();
     }
@@ -1074,8 +1367,22 @@ pub(crate) fn gcd2<F: Scalar>(p: &MPoly<F>, q: &MPoly<F>) -> MPoly<F> {
         return p.clone();
     }
     let (a, b) = (to_bi(p), to_bi(q));
-    let cont = bi_content(&a).gcd(&bi_content(&b));
-    let (mut a, mut b) = (bi_primitive(&a), bi_primitive(&b));
+    let (ca, cb) = (bi_content(&a), bi_content(&b));
+    let cont = if ca.degree().unwrap_or(0) == 0
+        || cb.degree().unwrap_or(0) == 0
+        || proven_coprime(&ca, &cb)
+    {
+        Poly::constant(F::one())
+    } else {
+        ca.gcd(&cb)
+    };
+    // no common factor of positive degree in v (the usual case), proven by a modular
+    // image: the gcd is the content's (the pseudo-remainder sequence would end with a
+    // constant in v)
+    if proven_coprime_in_v(&a, &b) {
+        return from_bi(&[cont]);
+    }
+    let (mut a, mut b) = (primitive_by(&a, &ca), primitive_by(&b, &cb));
     if a.len() < b.len() {
         std::mem::swap(&mut a, &mut b);
     }
@@ -1123,6 +1430,74 @@ pub(crate) fn cancel_gcd<F: Scalar>(polys: &mut [MPoly<F>]) -> MPoly<F> {
 mod gcd_tests {
     use super::*;
     use rcagd_algebra::Rational;
+
+    fn q(n: i64, d: i64) -> Rational {
+        Rational::from_ratio(n, d)
+    }
+
+    /// The gcd of the old definition: contents by the fold `gcd(…gcd(0, c₀)…, cₙ)`, the
+    /// primitive pseudo-remainder sequence in `v` without modular shortcuts.
+    fn gcd2_by_definition(p: &MPoly<Rational>, q: &MPoly<Rational>) -> MPoly<Rational> {
+        let content = |c: &[Poly<Rational>]| c.iter().fold(Poly::zero(), |g, p| g.gcd(p));
+        let primitive = |c: &[Poly<Rational>]| -> Vec<Poly<Rational>> {
+            let g = content(c);
+            c.iter()
+                .map(|p| p.div_exact(&g).expect("the content divides"))
+                .collect()
+        };
+        if p.is_zero() {
+            return q.clone();
+        }
+        if q.is_zero() {
+            return p.clone();
+        }
+        let (a, b) = (to_bi(p), to_bi(q));
+        let cont = content(&a).gcd(&content(&b));
+        let (mut a, mut b) = (primitive(&a), primitive(&b));
+        if a.len() < b.len() {
+            std::mem::swap(&mut a, &mut b);
+        }
+        let pp = loop {
+            if b.is_empty() {
+                break a;
+            }
+            if b.len() == 1 {
+                break vec![Poly::constant(Rational::ONE)];
+            }
+            let r = bi_prem(&a, &b);
+            if r.is_empty() {
+                break b;
+            }
+            a = b;
+            b = primitive(&r);
+        };
+        from_bi(&pp.iter().map(|c| c * &cont).collect::<Vec<_>>())
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(32))]
+        /// `gcd2` (contents lowest degree first with early ends, modular coprimality
+        /// proofs) is the same polynomial as the plain definition, for products with a
+        /// random common factor (of positive degree or a polynomial in `u` alone) and
+        /// random coprime parts.
+        #[test]
+        fn gcd2_equals_the_definition(
+            tg in proptest::collection::vec((0u32..3, 0u32..3, -5i64..6, 1i64..4), 0..5),
+            ta in proptest::collection::vec((0u32..3, 0u32..3, -5i64..6, 1i64..4), 1..5),
+            tb in proptest::collection::vec((0u32..3, 0u32..3, -5i64..6, 1i64..4), 1..5),
+            only_u in proptest::bool::ANY,
+        ) {
+            let mk = |t: &Vec<(u32, u32, i64, i64)>, u_only: bool| {
+                MPoly::from_terms(2, t.iter().map(|(a, b, n, d)| (vec![*a, if u_only { 0 } else { *b }], q(*n, *d))).collect())
+                    .expect("two exponents")
+            };
+            let g = &mk(&tg, only_u) + &int(1);
+            let (a, b) = (mk(&ta, false), mk(&tb, false));
+            let (p, r) = (&g * &a, &g * &b);
+            proptest::prop_assert_eq!(gcd2(&p, &r), gcd2_by_definition(&p, &r));
+            proptest::prop_assert_eq!(gcd2(&a, &b), gcd2_by_definition(&a, &b));
+        }
+    }
 
     #[test]
     fn bivariate_gcd() {
