@@ -114,6 +114,23 @@ pub const FLOAT_OPS: &[FloatOp] = &[
         build: ops::quadric::build_sphere_cover::<f64>,
         note: "",
     },
+    // session 15, floatgeo: line geometry, canal blends, sphere families, conic surfaces,
+    // n-dimensional ops, RRMF sweeps, quadric interpolation
+    FloatOp {
+        name: "line_through_points",
+        build: ops::canal::build_line_through_points::<f64>,
+        note: "",
+    },
+    FloatOp {
+        name: "line_of_planes",
+        build: ops::canal::build_line_of_planes::<f64>,
+        note: "",
+    },
+    FloatOp {
+        name: "regulus",
+        build: ops::canal::build_regulus::<f64>,
+        note: "",
+    },
     FloatOp {
         name: "torus",
         build: ops::canal::build_torus::<f64>,
@@ -132,7 +149,7 @@ pub const FLOAT_OPS: &[FloatOp] = &[
     FloatOp {
         name: "dupin_cyclide_spheres",
         build: ops::cyclide::build_spheres::<f64>,
-        note: "the type of the pe conic through the three cycles (circle, hyperbola, parabola) is decided in f64",
+        note: "the construction's exact-only decisions (the type of the pe conic through the three cycles, whether norm ratios are squares over Q, the rational point of a conic, which Gram entries are 0) are taken on the exact input (rcagd::cyclide::three_spheres_route); the construction runs in f64 with them",
     },
     FloatOp {
         name: "cyclide_blend",

@@ -3,9 +3,7 @@
 //! Prop. 3.1 and 3.2), and the conjugate conic of the second family of enveloped spheres
 //! (our derivation: docs/math/cyclides.md#two-families).
 
-use super::pe::{
-    add, negligible, pe, pe_row, power_of_two_near_sqrt, scale, size, sub,
-};
+use super::pe::{add, negligible, pe, pe_row, power_of_two_near_sqrt, scale, size, sub};
 use super::route::Route;
 use super::CyclideError;
 use rcagd_algebra::conic_point::{rational_conic_point, TernaryOutcome};
@@ -521,11 +519,9 @@ pub(crate) fn parabola_frame_along<F: Scalar>(
         cands.push(add(a, b));
     }
     let first = route.index(|| cands.iter().position(|c| !negligible(&pe(c, c), s * s)))?;
-    let p0 = first
-        .and_then(|i| cands.get(i).cloned())
-        .ok_or_else(|| {
-            CyclideError::InvalidArgument("span(U, N)^⊥ has no spacelike vector".into())
-        })?;
+    let p0 = first.and_then(|i| cands.get(i).cloned()).ok_or_else(|| {
+        CyclideError::InvalidArgument("span(U, N)^⊥ has no spacelike vector".into())
+    })?;
     let pp = pe(&p0, &p0);
     let (p, q) = match route.sqrt(&pp)? {
         Some(root) if !root.is_zero() => (scale(&(F::one() / root), &p0), F::one()),
