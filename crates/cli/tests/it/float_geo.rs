@@ -64,7 +64,12 @@ fn obj(op: &str, body: &str) -> String {
 /// Each op of this file has a float path (its property test is below).
 #[test]
 fn the_session_15_ops_have_a_float_path() {
-    for name in ["line_through_points", "line_of_planes", "regulus"] {
+    for name in [
+        "line_through_points",
+        "line_of_planes",
+        "regulus",
+        "pn_hypersurface",
+    ] {
         assert!(float::has_float_path(name), "{name}");
     }
 }
@@ -83,5 +88,31 @@ proptest! {
         check(&obj("line_of_planes", &format!("u = {u}\nv = {v}\nextent = \"{}/{}\"\n", e.0, e.1)))?;
         let lines: Vec<String> = l.iter().map(|(a, b)| format!("[{a}, {b}]")).collect();
         check(&obj("regulus", &format!("lines = [{}]\n", lines.join(", "))))?;
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// `pn_hypersurface` of R⁴ with a random quadratic support function (numerator
+    /// terms in u₁, u₂, u₃), a random offset distance and a random picture domain.
+    #[test]
+    fn pn_hypersurfaces_agree(
+        terms in proptest::collection::vec((q(), 0u32..=2, 0u32..=2, 0u32..=1), 1..=4),
+        d in q(), s0 in 0i64..=3, t0 in 0i64..=3,
+    ) {
+        let support: Vec<String> = terms
+            .iter()
+            .map(|(c, a, b, e)| format!("[{c}, {a}, {b}, {e}]"))
+            .collect();
+        check(&obj(
+            "pn_hypersurface",
+            &format!(
+                "dimension = 4\nsupport = [{}]\nslice = [0, 0, \"1/2\"]\ndomain = [\"{s0}/4\", \"{}/4\", \"{t0}/4\", \"{}/4\"]\ndistances = [{d}]\n",
+                support.join(", "),
+                s0 + 1,
+                t0 + 1
+            ),
+        ))?;
     }
 }
