@@ -114,6 +114,23 @@ pub const FLOAT_OPS: &[FloatOp] = &[
         build: ops::quadric::build_sphere_cover::<f64>,
         note: "",
     },
+    // session 15, floatgeo: line geometry, canal blends, sphere families, conic surfaces,
+    // n-dimensional ops, RRMF sweeps, quadric interpolation
+    FloatOp {
+        name: "line_through_points",
+        build: ops::canal::build_line_through_points::<f64>,
+        note: "",
+    },
+    FloatOp {
+        name: "line_of_planes",
+        build: ops::canal::build_line_of_planes::<f64>,
+        note: "",
+    },
+    FloatOp {
+        name: "regulus",
+        build: ops::canal::build_regulus::<f64>,
+        note: "",
+    },
     FloatOp {
         name: "torus",
         build: ops::canal::build_torus::<f64>,
@@ -132,7 +149,7 @@ pub const FLOAT_OPS: &[FloatOp] = &[
     FloatOp {
         name: "dupin_cyclide_spheres",
         build: ops::cyclide::build_spheres::<f64>,
-        note: "the type of the pe conic through the three cycles (circle, hyperbola, parabola) is decided in f64",
+        note: "the construction's exact-only decisions (the type of the pe conic through the three cycles, whether norm ratios are squares over Q, the rational point of a conic, which Gram entries are 0) are taken on the exact input (rcagd::cyclide::three_spheres_route); the construction runs in f64 with them",
     },
     FloatOp {
         name: "cyclide_blend",
@@ -194,6 +211,12 @@ pub const FLOAT_OPS: &[FloatOp] = &[
         build: ops::ph_planar::build_spline::<f64>,
         note: "",
     },
+    // session 15, floatgeo: n-dimensional ops
+    FloatOp {
+        name: "pn_hypersurface",
+        build: ops::ndim::build_hypersurface::<f64>,
+        note: "the 3-D picture's pole-freeness (X₀ on the domain) is decided by f64 Bernstein signs; the `homogeneous_map` value holds the exact binary values of the f64 coefficients",
+    },
 ];
 
 /// Ops (or whole topics) without a float path, and why; an op listed by name takes
@@ -206,6 +229,7 @@ pub const NO_FLOAT_PATH: &[(&str, &str)] = &[
     ("pipe", "exact-only algebra: the op searches the splittings of |m′|² as sums of two squares over Q (Gaussian factorizations, every frame and method) and keeps the smallest with positive weights; an f64 pipe (`rcagd::canal::pipe_around_ph::<f64>`) would be a different parametrization, so it is not offered as the same construction"),
     ("pipe_ph", "exact-only algebra: as `pipe`, a search over exact splittings of |m′|² = σ² and their Gaussian factors"),
     ("canal_surface", "exact-only algebra: |ṁ|² − ṙ² must split as a sum of two squares over Q"),
+    ("hypercone_envelope", "tried and withdrawn (session 15): with the sum of two squares found exactly and the envelope built in f64, the offsets' 3-D pictures have a higher bidegree in f64 than exactly (e.g. (6, 13) against (4, 5)): the exact construction cancels a common factor that is not exactly common in f64"),
     ("pn_ellipsoid", "tried and withdrawn (session 12): the library's EllipsoidPn runs in f64, but its f64 regularity check (Bernstein signs of x_u × x_v) finds a singular point at the corner (1/4, 0) of the example's domain that the exact signs exclude"),
     ("conic_point", "exact-only algebra: a rational point of a conic over Q"),
     ("cyclographic_surface", "exact-only algebra: the sheets are square roots of a polynomial Δ taken exactly (and Δ made a square by a rational point of a quadric)"),

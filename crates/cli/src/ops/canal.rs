@@ -8,6 +8,7 @@
 //! field `Q(√d)` the op fails and says which field (the exchange model holds rational
 //! geometry only; `rcagd::canal` builds such surfaces over `Q(√d)` in the library).
 
+use super::arith::{self, OpScalar};
 use super::{poly_io, prefixed, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
@@ -25,7 +26,7 @@ use rcagd::ph::{PhCurve, PhError};
 use rcagd::Certified;
 use rcagd_algebra::quaternion::Quaternion;
 use rcagd_algebra::rational::format_rational;
-use rcagd_algebra::{Certificate, QuadExt, Rational, Scalar};
+use rcagd_algebra::{format_scalar, format_vector, Certificate, QuadExt, Rational, Scalar};
 use rcagd_geom::weight_sign::{split_patches_adaptive, SignRule};
 use rcagd_geom::{BezierCurve, BezierPatch};
 
@@ -49,10 +50,6 @@ pub const OPS: &[OpSpec] = &[
 // helpers
 // ----------------------------------------------------------------------------------------
 
-fn fmt_vec(v: &[Rational]) -> String {
-    let parts: Vec<String> = v.iter().map(format_rational).collect();
-    format!("({})", parts.join(", "))
-}
 
 fn point3(args: &OpArgs, param: &'static str) -> Result<[Rational; 3], OpError> {
     let p = args.point(param)?;
@@ -70,17 +67,17 @@ fn vec4(p: Vec<Rational>, param: &'static str, what: &str) -> Result<[Rational; 
 }
 
 /// The segment between two homogeneous points (a degree-1 rational Bézier curve).
-fn segment(p: &[Rational; 4], q: &[Rational; 4]) -> Result<BezierCurve<Rational>, OpError> {
+fn segment<T: Scalar>(p: &[T; 4], q: &[T; 4]) -> Result<BezierCurve<T>, OpError> {
     BezierCurve::from_homogeneous(vec![p.to_vec(), q.to_vec()])
         .map_err(|e| OpError::new(e.to_string()))
 }
 
-fn affine(p: &[Rational; 3]) -> [Rational; 4] {
-    [Rational::one(), p[0].clone(), p[1].clone(), p[2].clone()]
+fn affine<T: Scalar>(p: &[T; 3]) -> [T; 4] {
+    [T::one(), p[0].clone(), p[1].clone(), p[2].clone()]
 }
 
 /// Lines given as rows of two affine points `[[p, q], …]` (exactly `n` rows).
-fn lines_param(args: &OpArgs, param: &'static str, n: usize) -> Result<Vec<Line<Rational>>, OpError> {
+fn lines_param<T: Scalar>(args: &OpArgs, param: &'static str, n: usize) -> Result<Vec<Line<T>>, OpError> {
     let net = args.net(param)?;
     if net.len() != n || net.iter().any(|r| r.len() != 2) {
         return Err(OpError::param(
@@ -90,10 +87,10 @@ fn lines_param(args: &OpArgs, param: &'static str, n: usize) -> Result<Vec<Line<
     }
     let mut out = Vec::with_capacity(n);
     for (i, row) in net.iter().enumerate() {
-        let pts: Vec<[Rational; 3]> = row
+        let pts: Vec<[T; 3]> = row
             .iter()
             .map(|p| {
-                <[Rational; 3]>::try_from(p.clone()).map_err(|_| {
+                <[T; 3]>::try_from(arith::all_of::<T>(p)).map_err(|_| {
                     OpError::param(param, format!("line {i}: points must be [x, y, z]"))
                 })
             })
@@ -106,8 +103,9 @@ fn lines_param(args: &OpArgs, param: &'static str, n: usize) -> Result<Vec<Line<
 }
 
 /// The Plücker coordinates in a certificate's property (the "output" of a line op).
-fn line_certs(name: &str, l: &Line<Rational>) -> Vec<Certificate> {
-    let coords = fmt_vec(l.coords());
+fn line_certs<T: Scalar>(name: &str, l: &Line<T>) -> Vec<Certificate> {
+    let parts: Vec<String> = l.coords().iter().map(format_scalar).collect();
+    let coords = format!("({})", parts.join(", "));
     prefixed(&format!("{name} l = {coords}: "), l.certify())
 }
 
@@ -227,14 +225,20 @@ op = "line_through_points"
 p = [0, 1, 2]
 q = [3, -1, 1]
 "#,
-    build: build_line_through_points,
+    build: build_line_through_points::<Rational>,
 };
 
-fn build_line_through_points(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let (p, q) = (point3(args, "p")?, point3(args, "q")?);
+/// A point parameter `[x, y, z]` in `T`.
+fn point3_in<T: Scalar>(args: &OpArgs, param: &'static str) -> Result<[T; 3], OpError> {
+    arith::point(args, param, &format!("`{param}` must be a point [x, y, z]"))
+}
+
+/// `line_through_points` in `T` (one builder for the exact op and the float path).
+pub(crate) fn build_line_through_points<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let (p, q) = (point3_in::<T>(args, "p")?, point3_in::<T>(args, "q")?);
     let l = Line::from_affine_points(&p, &q).map_err(|e| OpError::param("q", e.to_string()))?;
     let curve = segment(&affine(&p), &affine(&q))?;
-    Ok(vec![args.object(Geometry::Curve(curve), line_certs("line", &l))])
+    Ok(vec![arith::object::<T>(args, arith::curves(vec![curve])?, line_certs("line", &l))])
 }
 
 const LINE_OF_PLANES: OpSpec = OpSpec {
@@ -252,16 +256,19 @@ u = [-1, 1, 0, 0]
 v = [-2, 0, 1, 1]
 extent = "1/2"
 "#,
-    build: build_line_of_planes,
+    build: build_line_of_planes::<Rational>,
 };
 
-fn build_line_of_planes(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `line_of_planes` in `T`.
+pub(crate) fn build_line_of_planes<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let u = vec4(args.point("u")?, "u", "a plane [u0, u1, u2, u3]")?;
     let v = vec4(args.point("v")?, "v", "a plane [v0, v1, v2, v3]")?;
     let extent = args.number("extent")?;
     if extent <= Rational::zero() {
         return Err(OpError::param("extent", "the extent must be positive"));
     }
+    let (u, v): ([T; 4], [T; 4]) = (u.each_ref().map(arith::of), v.each_ref().map(arith::of));
+    let extent: T = arith::of(&extent);
     let l = Line::from_planes(&u, &v).map_err(|e| OpError::param("v", e.to_string()))?;
     if l.is_at_infinity() {
         return Err(OpError::param(
@@ -271,27 +278,27 @@ fn build_line_of_planes(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     }
     let d = l.direction();
     let m = l.moment();
-    let dd = d.iter().fold(Rational::zero(), |a, x| a + x.clone() * x.clone());
+    let dd = d.iter().fold(T::zero(), |a, x| a + x.clone() * x.clone());
     // foot point F = (d × m)/|d|²
     let f = [
         (d[1].clone() * m[2].clone() - d[2].clone() * m[1].clone()) / dd.clone(),
         (d[2].clone() * m[0].clone() - d[0].clone() * m[2].clone()) / dd.clone(),
         (d[0].clone() * m[1].clone() - d[1].clone() * m[0].clone()) / dd,
     ];
-    let a: [Rational; 3] = core::array::from_fn(|i| f[i].clone() - extent.clone() * d[i].clone());
-    let b: [Rational; 3] = core::array::from_fn(|i| f[i].clone() + extent.clone() * d[i].clone());
+    let a: [T; 3] = core::array::from_fn(|i| f[i].clone() - extent.clone() * d[i].clone());
+    let b: [T; 3] = core::array::from_fn(|i| f[i].clone() + extent.clone() * d[i].clone());
     let mut certs = line_certs("line", &l);
     for (name, x) in [("F − e·d", &a), ("F + e·d", &b)] {
         let h = affine(x);
         certs.push(Certificate::decide(
             format!("segment end {name} lies on the line: M(l)·X = 0 (Gruber (1.7))"),
             l.contains_point(&h),
-            true,
-            || fmt_vec(x),
+            T::EXACT,
+            || format_vector(x),
         ));
     }
     let curve = segment(&affine(&a), &affine(&b))?;
-    Ok(vec![args.object(Geometry::Curve(curve), certs)])
+    Ok(vec![arith::object::<T>(args, arith::curves(vec![curve])?, certs)])
 }
 
 const COMMON_TRANSVERSALS: OpSpec = OpSpec {
@@ -352,7 +359,7 @@ fn transversal_segment(
 }
 
 fn build_common_transversals(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let lines = lines_param(args, "lines", 4)?;
+    let lines = lines_param::<Rational>(args, "lines", 4)?;
     let res = common_transversals([&lines[0], &lines[1], &lines[2], &lines[3]])
         .map_err(|e| OpError::param("lines", e.to_string()))?;
     let found: Vec<Line<Rational>> = match res {
@@ -433,21 +440,22 @@ lines = [
   [[-1, 1, 1], [1, 1, -1]],
 ]
 "#,
-    build: build_regulus,
+    build: build_regulus::<Rational>,
 };
 
-fn build_regulus(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `regulus` in `T`.
+pub(crate) fn build_regulus<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let net = args.net("lines")?;
-    let lines = lines_param(args, "lines", 3)?;
+    let lines = lines_param::<T>(args, "lines", 3)?;
     let reg = Regulus::from_lines(&lines[0], &lines[1], &lines[2])
         .map_err(|e| OpError::param("lines", e.to_string()))?;
     // P(s) on a between the given points; Q(s) = c ∩ plane(P(s), b), linear in s
-    let pa: Vec<[Rational; 4]> = net
+    let pa: Vec<[T; 4]> = net
         .first()
         .map(|r| {
             r.iter()
                 .map(|p| {
-                    let a: [Rational; 3] = core::array::from_fn(|k| p.get(k).cloned().unwrap_or_else(Rational::zero));
+                    let a: [T; 3] = core::array::from_fn(|k| p.get(k).map_or_else(T::zero, arith::of));
                     affine(&a)
                 })
                 .collect()
@@ -462,7 +470,7 @@ fn build_regulus(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     })?;
     let mut certs = prefixed("regulus: ", reg.certify());
     certs.extend(reg.segment_patch_certificates(&patch));
-    Ok(vec![args.object(Geometry::Patch(patch), certs)])
+    Ok(vec![arith::object::<T>(args, arith::patches(vec![patch])?, certs)])
 }
 
 // ----------------------------------------------------------------------------------------

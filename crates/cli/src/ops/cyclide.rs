@@ -9,7 +9,10 @@ use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::{ParamKind, Value};
 use rcagd::cyclide::spheres::certify_three_spheres;
-use rcagd::cyclide::{blend_cones, fitting_contact_sphere, from_three_spheres, DualPencil, DupinCyclide};
+use rcagd::cyclide::{
+    blend_cones, fitting_contact_sphere, from_three_spheres, from_three_spheres_along, three_spheres_route, DualPencil,
+    DupinCyclide,
+};
 use rcagd::cyclographic::OrientedSphere;
 use rcagd::Certified;
 use rcagd_algebra::{Certificate, Rational};
@@ -108,6 +111,10 @@ radii = [1, 1, 1]
 };
 
 /// `dupin_cyclide_spheres` in `T` (one builder for the exact op and the float path).
+/// The construction's exact-only decisions (is a norm ratio a square over ℚ, the rational
+/// point of a conic, which entries are 0: `rcagd::cyclide::Route`) are taken on the exact
+/// input; in `f64` the same construction then runs with those decisions, so it builds the
+/// exact parametrization up to rounding.
 pub(crate) fn build_spheres<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let centers = args.points("centers")?;
     let radii = args.opt_numbers("radii")?.unwrap_or_default();
@@ -117,10 +124,19 @@ pub(crate) fn build_spheres<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, O
     if radii.len() != 3 {
         return Err(OpError::param("radii", "give exactly three radii"));
     }
+    let exact: [OrientedSphere<Rational>; 3] = core::array::from_fn(|i| {
+        OrientedSphere::new(core::array::from_fn(|k| centers[i][k].clone()), radii[i].clone())
+    });
     let spheres: [OrientedSphere<T>; 3] = core::array::from_fn(|i| {
         OrientedSphere::new(core::array::from_fn(|k| arith::of(&centers[i][k])), arith::of(&radii[i]))
     });
-    let cy = from_three_spheres(&spheres).map_err(|e| OpError::param("radii", e.to_string()))?;
+    let blame = |e: rcagd::cyclide::CyclideError| OpError::param("radii", e.to_string());
+    let cy = if arith::same_ref::<_, [OrientedSphere<Rational>; 3]>(&spheres).is_some() {
+        from_three_spheres(&spheres).map_err(blame)?
+    } else {
+        let route = three_spheres_route(&exact).map_err(blame)?;
+        from_three_spheres_along(&spheres, &mut route.replay()).map_err(blame)?
+    };
     let patches = if cy.conic().is_parabola() {
         let (t0, t1) = range::<T>(args, "t")?;
         let (s0, s1) = range::<T>(args, "s")?;

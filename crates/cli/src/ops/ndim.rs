@@ -8,7 +8,8 @@
 //! running over `domain` and the others fixed at `slice`, projected orthogonally onto the
 //! coordinates `project` — an ordinary rational Bézier patch of `R³`.
 
-use super::poly_io::{self, MPolyQ};
+use super::arith::{self, OpScalar};
+use super::poly_io::{self, MPolyIn, MPolyQ};
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
@@ -17,7 +18,7 @@ use rcagd::ndim::{Anticaustic, HyperconeEnvelope, NdimError, PnHypersurface, Rul
 use rcagd::pn::{Domain, RatFn};
 use rcagd::Certified;
 use rcagd_algebra::rational::format_rational;
-use rcagd_algebra::Rational;
+use rcagd_algebra::{Rational, Scalar};
 use rcagd_io::quantity::{NamedQuantity, Quantity};
 
 type Q = Rational;
@@ -69,7 +70,15 @@ fn index(x: &Q, max: usize, param: &'static str) -> Result<usize, OpError> {
 }
 
 /// `(free, fixed, project, domain)` of a 3-D picture.
-type Picture = ([usize; 2], Vec<Q>, [usize; 3], Domain<Q>);
+type Picture<T = Q> = ([usize; 2], Vec<T>, [usize; 3], Domain<T>);
+
+/// [`picture`] in `T`.
+fn picture_in<T: Scalar>(args: &OpArgs, params: usize, n: usize) -> Result<Picture<T>, OpError> {
+    let (free, fixed, proj, dom) = picture(args, params, n)?;
+    let dom = Domain::new(arith::of(&dom.u.0), arith::of(&dom.u.1), arith::of(&dom.v.0), arith::of(&dom.v.1))
+        .map_err(|e| OpError::param("domain", e.to_string()))?;
+    Ok((free, arith::all_of(&fixed), proj, dom))
+}
 
 /// `(free, fixed, project, domain)` of the 3-D picture of a map with `params` parameters
 /// into `Rⁿ`.
@@ -149,12 +158,13 @@ project = [1, 2, 4]
 domain = [0, "1/2", 0, "1/2"]
 distances = ["1/4"]
 "#,
-    build: build_hypersurface,
+    build: build_hypersurface::<Rational>,
 };
 
 use poly_io::terms_mpoly as terms_poly;
 
-fn build_hypersurface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `pn_hypersurface` in `T` (one builder for the exact op and the float path).
+pub(crate) fn build_hypersurface<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let n = dimension(args)?;
     let p = n - 1;
     let num = terms_poly(&args.points("support")?, p, "support")?;
@@ -162,7 +172,8 @@ fn build_hypersurface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         Some(_) => terms_poly(&args.points("support_denominator")?, p, "support_denominator")?,
         None => poly_io::mpoly_constant(p, Q::ONE),
     };
-    let h = RatFn::new(num, den).map_err(|e| OpError::param("support_denominator", e.to_string()))?;
+    let h = RatFn::new(poly_io::mpoly_in::<T>(&num), poly_io::mpoly_in::<T>(&den))
+        .map_err(|e| OpError::param("support_denominator", e.to_string()))?;
     let a = if args.get("a").is_some() {
         let mut terms = Vec::new();
         for r in args.points("a")? {
@@ -177,25 +188,49 @@ fn build_hypersurface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         Some(_) => terms_poly(&args.points("c")?, p, "c")?,
         None => poly_io::mpoly_constant(p, Q::ONE),
     };
-    let surface = PnHypersurface::from_support(&a, &c, &h).map_err(blame("support"))?;
+    let a: Vec<MPolyIn<T>> = a.iter().map(poly_io::mpoly_in::<T>).collect();
+    let surface = PnHypersurface::from_support(&a, &poly_io::mpoly_in::<T>(&c), &h).map_err(blame("support"))?;
     let names: Vec<String> = (1..=p).map(|i| format!("u{i}")).collect();
     hypersurface_objects(args, &surface, surface.certify(), names)
 }
 
+/// The coefficients of `T` polynomials as exact numbers (an `f64` one: its exact binary
+/// value; a non-finite one is an error, as for control points).
+fn exact_polys<T: Scalar>(ps: &[MPolyIn<T>]) -> Result<Vec<MPolyQ>, OpError> {
+    let finite = core::cell::Cell::new(true);
+    let out: Vec<MPolyQ> = ps
+        .iter()
+        .map(|p| {
+            p.map(|c| {
+                c.to_rational().unwrap_or_else(|| {
+                    finite.set(false);
+                    Q::ZERO
+                })
+            })
+        })
+        .collect();
+    if finite.get() {
+        Ok(out)
+    } else {
+        Err(OpError::new(
+            "the f64 construction produced a non-finite coefficient (overflow or an ill-conditioned input); build it without --float",
+        ))
+    }
+}
+
 /// The object of a PN hypersurface (its picture and exact map) and one per offset distance.
-fn hypersurface_objects(
+fn hypersurface_objects<T: OpScalar>(
     args: &OpArgs,
-    surface: &PnHypersurface<Q>,
+    surface: &PnHypersurface<T>,
     certs: Vec<rcagd_algebra::Certificate>,
     names: Vec<String>,
 ) -> Result<Vec<Object>, OpError> {
     let n = surface.dim();
-    let (free, fixed, proj, dom) = picture(args, n - 1, n)?;
-    let object = |s: &PnHypersurface<Q>, certs, name: Option<String>| -> Result<Object, OpError> {
+    let (free, fixed, proj, dom) = picture_in::<T>(args, n - 1, n)?;
+    let object = |s: &PnHypersurface<T>, certs, name: Option<String>| -> Result<Object, OpError> {
         let patch = s.projected_slice(free, &fixed, proj, &dom).map_err(blame("domain"))?;
-        let mut o = args
-            .object(Geometry::Patch(patch), certs)
-            .with_values(vec![map_value(names.clone(), s.point_polys(), s.name())?]);
+        let map = map_value(names.clone(), &exact_polys(s.point_polys())?, s.name())?;
+        let mut o = arith::object_with::<T>(args, arith::patches(vec![patch])?, certs, vec![map]);
         if let Some(nm) = name {
             o.name = nm;
         }
@@ -203,7 +238,7 @@ fn hypersurface_objects(
     };
     let mut out = vec![object(surface, certs, None)?];
     for (k, d) in args.opt_numbers("distances")?.unwrap_or_default().iter().enumerate() {
-        let off = surface.offset(d).map_err(blame("distances"))?;
+        let off = surface.offset(&arith::of::<T>(d)).map_err(blame("distances"))?;
         let mut o = object(off.surface(), off.certify(), Some(format!("{}_offset{}", args.name(), k + 1)))?;
         if let Some(m) = o.params.as_object_mut() {
             m.insert("offset_distance".into(), serde_json::Value::String(format_rational(d)));
@@ -243,15 +278,30 @@ slice = [0, 0, "1/2"]
 project = [1, 2, 3]
 domain = ["1/4", "3/4", "1/4", "3/4"]
 "#,
-    build: build_hypercone,
+    build: build_hypercone::<Rational>,
 };
 
-fn build_hypercone(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `hypercone_envelope` in `T`. The sum of two squares `|M|² − R² = P₁² + P₂²` over `Q(t)`
+/// that the construction needs is found exactly (exact-only algebra on the input); in
+/// `f64` the envelope is then built from the rounded `P₁, P₂`.
+pub(crate) fn build_hypercone<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let m1 = polys_t(&args.opt_grid("center1")?.unwrap_or_default())?;
     let m2 = polys_t(&args.opt_grid("center2")?.unwrap_or_default())?;
     let r1 = poly_io::list_mpoly(&args.opt_numbers("radius1")?.unwrap_or_default(), 1)?;
     let r2 = poly_io::list_mpoly(&args.opt_numbers("radius2")?.unwrap_or_default(), 1)?;
-    let env = HyperconeEnvelope::new(m1, r1, m2, r2, None).map_err(blame("center2"))?;
+    let exact = HyperconeEnvelope::new(m1.clone(), r1.clone(), m2.clone(), r2.clone(), None)
+        .map_err(blame("center2"))?;
+    let env = match arith::same::<_, HyperconeEnvelope<T>>(exact) {
+        Ok(env) => env,
+        Err(exact) => {
+            let all = |v: &[MPolyQ]| v.iter().map(poly_io::mpoly_in::<T>).collect::<Vec<_>>();
+            let [p1, p2] = exact.p();
+            let rat = |p: &RatFn<Q>| RatFn { num: poly_io::mpoly_in::<T>(&p.num), den: poly_io::mpoly_in::<T>(&p.den) };
+            let p = if [p1, p2].iter().all(|p| p.num.is_zero()) { None } else { Some([rat(p1), rat(p2)]) };
+            HyperconeEnvelope::new(all(&m1), poly_io::mpoly_in(&r1), all(&m2), poly_io::mpoly_in(&r2), p)
+                .map_err(blame("center2"))?
+        }
+    };
     let n = env.surface().dim();
     let mut names = vec!["t".to_string()];
     names.extend((1..n - 1).map(|j| format!("u{j}")));

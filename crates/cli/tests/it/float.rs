@@ -77,17 +77,13 @@ fn without_display_objects(r: &Recipe) -> Recipe {
     r
 }
 
-/// Gallery objects whose `f64` build is another parametrization of the same surface (an
-/// open finding, docs/plans/float.md): `three_spheres_on_a_pe_hyperbola` has a norm ratio
-/// `ab` that is not a square over Q, so the exact build parametrizes the conjugate pe
-/// hyperbola through a rational point, while in `f64` every positive number is a square and
-/// the build takes the rational-directions construction. Their control points differ; the
-/// `f64` build must still succeed with the same objects and degrees, its certificates hold
-/// (or be a known tolerance defect) and be marked inexact.
-const KNOWN_REPARAMETRIZED: &[(&str, &str)] = &[(
-    "three_spheres_on_a_pe_hyperbola",
-    "ab not a square: exact ratio circle, f64 takes the square-ratio construction",
-)];
+/// Gallery objects whose `f64` build is another parametrization of the same surface:
+/// the same objects and degrees, holding inexact certificates, no control-point
+/// comparison. Empty since session 15: `three_spheres_on_a_pe_hyperbola` (norm ratio `ab`
+/// not a square over Q: the exact build parametrizes the conjugate pe hyperbola through a
+/// rational point, `f64` took the square-ratio construction) now agrees, because the float
+/// path replays the exact construction's decisions (`rcagd::cyclide::Route`).
+const KNOWN_REPARAMETRIZED: &[(&str, &str)] = &[];
 
 fn check_reparametrized(what: &str, r: &Recipe) {
     let e = build_recipe_with(r, Arithmetic::Exact, |_| {})
@@ -516,6 +512,57 @@ select = \"all\"\n", p[0], d[0], p[1], d[1]),
         if let Ok(e) = build(&src, Arithmetic::Exact) {
             let f = build(&src, Arithmetic::Float).map_err(TestCaseError::fail)?;
             agree_or_split("cyclide_blend", &e, &f).map_err(TestCaseError::fail)?;
+        }
+    }
+}
+
+/// The fuzzer's finding of session 14 (`rcagd fuzz --op dupin_cyclide_spheres --seed 14
+/// --cases 403`, cases 38, 137, 162, 166, 207 and 364): the exact op decides whether a
+/// norm ratio is a square over Q, which rational point a conic has and which Gram entries
+/// are 0; `f64` decided them by itself (every positive number a square, a rounding residue
+/// a pivot) and built another parametrization (five cases) or refused ("span(U, V)^⊥ is not
+/// a Lorentzian plane", case 364). The float path now replays the exact decisions
+/// (`rcagd::cyclide::three_spheres_route`): the control points agree at 1e-12.
+#[test]
+fn cyclides_of_the_fuzzers_three_spheres_agree() {
+    for (centers, radii) in [
+        ("[[0, 0, 0], [1, 0, 0], [0, 1, 0]]", "[0, 10, 10]"),
+        ("[[0, 0, -1], [4, 0, 0], [0, 4, 0]]", "[1, 1, 1]"),
+        (
+            "[[0, 0, 0], [1, 0, 0], [0, 1, 0]]",
+            "[1.0000000001, 10, 10]",
+        ),
+        ("[[0, 0, 0], [1, 0, 0], [0, 1, 0]]", "[-1, 10, 10]"),
+        ("[[0, 0, 1.0000000001], [4, 0, 0], [0, 4, 0]]", "[1, 1, 1]"),
+        ("[[0, 0, \"-39/5\"], [1, 0, 0], [0, 1, 0]]", "[0, 10, 10]"),
+    ] {
+        let src = obj(
+            "dupin_cyclide_spheres",
+            &format!("centers = {centers}\nradii = {radii}\n"),
+        );
+        let exact = build(&src, Arithmetic::Exact).unwrap_or_else(|e| panic!("{src}: {e}"));
+        let float = build(&src, Arithmetic::Float).unwrap_or_else(|e| panic!("{src}: {e}"));
+        agree(&src, &exact, &float).unwrap();
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    /// Three spheres with small integer centres and radii (the fuzzer's kind of input:
+    /// symmetric positions, norm ratios that are not squares, Gram entries that vanish
+    /// exactly): the float path builds the exact parametrization.
+    #[test]
+    fn cyclides_of_integer_spheres_agree(
+        c in proptest::collection::vec(proptest::collection::vec(-3i64..=3, 3), 3),
+        r in proptest::collection::vec(-3i64..=12, 3),
+    ) {
+        let fmt = |v: &[i64]| format!("[{}]", v.iter().map(i64::to_string).collect::<Vec<_>>().join(", "));
+        let centers = format!("[{}]", c.iter().map(|p| fmt(p)).collect::<Vec<_>>().join(", "));
+        let src = obj("dupin_cyclide_spheres", &format!("centers = {centers}\nradii = {}\n", fmt(&r)));
+        if let Ok(e) = build(&src, Arithmetic::Exact) {
+            let f = build(&src, Arithmetic::Float).map_err(|m| TestCaseError::fail(format!("{src}: {m}")))?;
+            agree_or_split(&src, &e, &f).map_err(TestCaseError::fail)?;
         }
     }
 }

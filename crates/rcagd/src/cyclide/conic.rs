@@ -3,9 +3,8 @@
 //! Prop. 3.1 and 3.2), and the conjugate conic of the second family of enveloped spheres
 //! (our derivation: docs/math/cyclides.md#two-families).
 
-use super::pe::{
-    add, negligible, pe, pe_row, power_of_two_near_sqrt, scale, size, sqrt_in_field, sub,
-};
+use super::pe::{add, negligible, pe, pe_row, power_of_two_near_sqrt, scale, size, sub};
+use super::route::Route;
 use super::CyclideError;
 use rcagd_algebra::conic_point::{rational_conic_point, TernaryOutcome};
 use rcagd_algebra::{format_scalar, format_vector, Matrix, Poly, Scalar};
@@ -314,15 +313,25 @@ impl<F: Scalar> PeConic<F> {
     /// the scalar field (cannot happen for exact input that passed validation: the
     /// discriminants are squares, docs/math/cyclides.md#rationality).
     pub fn conjugate(&self) -> Result<CycleCurve<F>, CyclideError> {
+        self.conjugate_along(&mut Route::free())
+    }
+
+    /// [`PeConic::conjugate`] taking the decisions of `route` (whether the isotropic
+    /// directions are rational, the rational point, the pivots; see [`Route`]).
+    ///
+    /// # Errors
+    /// As [`PeConic::conjugate`]; [`CyclideError::InvalidArgument`] if `route` was
+    /// recorded on another construction.
+    pub fn conjugate_along(&self, route: &mut Route) -> Result<CycleCurve<F>, CyclideError> {
         match self {
             PeConic::Circle {
                 center, u, v, rho, ..
             } => {
-                let (na, nb) = match null_pair(&[u.clone(), v.clone()]) {
+                let (na, nb) = match null_pair(&[u.clone(), v.clone()], route) {
                     Ok(pair) => pair,
                     // the isotropic directions need √k: parametrize through a rational point
                     Err(CyclideError::NotRational(why)) => {
-                        return hyperbola_through_point(center, u, v, rho, &why)
+                        return hyperbola_through_point(center, u, v, rho, &why, route)
                     }
                     Err(e) => return Err(e),
                 };
@@ -341,7 +350,7 @@ impl<F: Scalar> PeConic<F> {
                 })
             }
             PeConic::Parabola { vertex, u, n } => {
-                let (m, p, q) = parabola_frame(u, n)?;
+                let (m, p, q) = parabola_frame_along(u, n, route)?;
                 let c = add(vertex, &m);
                 let k = q / (F::from_i64(2) * pe(u, u));
                 Ok(CycleCurve {
@@ -369,12 +378,13 @@ fn hyperbola_through_point<F: Scalar>(
     v: &[F; 4],
     rho: &F,
     why: &str,
+    route: &mut Route,
 ) -> Result<CycleCurve<F>, CyclideError> {
-    let basis = pe_complement(&[u.clone(), v.clone()])?;
+    let basis = pe_complement_along(&[u.clone(), v.clone()], route)?;
     let [a0, b0] = <[[F; 4]; 2]>::try_from(basis)
         .map_err(|_| CyclideError::InvalidArgument("U and V are linearly dependent".into()))?;
     let sc = size(&a0).max(size(&b0)).max(1.0);
-    let (z1, z2) = if negligible(&pe(&a0, &a0), sc * sc) {
+    let (z1, z2) = if route.flag(|| negligible(&pe(&a0, &a0), sc * sc))? {
         let c = add(&a0, &b0);
         let cc = pe(&c, &c);
         (c.clone(), sub(&a0, &scale(&(pe(&a0, &c) / cc), &c)))
@@ -396,22 +406,20 @@ fn hyperbola_through_point<F: Scalar>(
         x.to_rational()
             .ok_or_else(|| not_rational("coefficients outside Q".into()))
     };
-    let (qa, qb, qm) = (q(&al)?, q(&be)?, q(&m)?);
-    let (x, y) = match rational_conic_point(&qa, &qb, &(-qm)) {
-        Ok(TernaryOutcome::Point([x, y, w])) if !w.is_zero() => (
-            F::from_rational(&(x / w.clone())),
-            F::from_rational(&(y / w)),
-        ),
-        Ok(TernaryOutcome::Point(_)) => {
-            return Err(not_rational("only a point at infinity".into()))
-        }
-        Ok(TernaryOutcome::NoPoint(place)) => {
-            return Err(not_rational(format!(
+    let (x, y) = route.point(|| {
+        let (qa, qb, qm) = (q(&al)?, q(&be)?, q(&m)?);
+        match rational_conic_point(&qa, &qb, &(-qm)) {
+            Ok(TernaryOutcome::Point([x, y, w])) if !w.is_zero() => Ok((
+                F::from_rational(&(x / w.clone())),
+                F::from_rational(&(y / w)),
+            )),
+            Ok(TernaryOutcome::Point(_)) => Err(not_rational("only a point at infinity".into())),
+            Ok(TernaryOutcome::NoPoint(place)) => Err(not_rational(format!(
                 "no rational point (none over {place})"
-            )))
+            ))),
+            Err(e) => Err(not_rational(format!("no rational point found ({e})"))),
         }
-        Err(e) => return Err(not_rational(format!("no rational point found ({e})"))),
-    };
+    })?;
     let p0: [F; 4] =
         core::array::from_fn(|i| x.clone() * z1[i].clone() + y.clone() * z2[i].clone());
     let lam = if be.is_zero() {
@@ -438,11 +446,14 @@ fn hyperbola_through_point<F: Scalar>(
     Ok(CycleCurve { w, p })
 }
 
-/// A basis of `{X : ⟨X, Aᵢ⟩ = 0 ∀i}`.
-pub(crate) fn pe_complement<F: Scalar>(a: &[[F; 4]]) -> Result<Vec<[F; 4]>, CyclideError> {
-    let m = Matrix::from_rows(a.iter().map(pe_row).collect())
-        .map_err(|e| CyclideError::InvalidArgument(e.to_string()))?;
-    m.null_space()
+/// A basis of `{X : ⟨X, Aᵢ⟩ = 0 ∀i}` (the pivot columns of `route`).
+pub(crate) fn pe_complement_along<F: Scalar>(
+    a: &[[F; 4]],
+    route: &mut Route,
+) -> Result<Vec<[F; 4]>, CyclideError> {
+    let rows: Vec<Vec<F>> = a.iter().map(pe_row).collect();
+    route
+        .null_space(&rows)?
         .into_iter()
         .map(|v| {
             <[F; 4]>::try_from(v)
@@ -454,24 +465,27 @@ pub(crate) fn pe_complement<F: Scalar>(a: &[[F; 4]]) -> Result<Vec<[F; 4]>, Cycl
 /// The two isotropic directions `N₊, N₋` of the Lorentzian plane `span(U, V)^⊥`; they are
 /// rational because its discriminant is `−1` times a square
 /// (docs/math/cyclides.md#rationality).
-pub(crate) fn null_pair<F: Scalar>(uv: &[[F; 4]; 2]) -> Result<([F; 4], [F; 4]), CyclideError> {
-    let basis = pe_complement(uv)?;
+pub(crate) fn null_pair<F: Scalar>(
+    uv: &[[F; 4]; 2],
+    route: &mut Route,
+) -> Result<([F; 4], [F; 4]), CyclideError> {
+    let basis = pe_complement_along(uv, route)?;
     let [a, b] = <[[F; 4]; 2]>::try_from(basis)
         .map_err(|_| CyclideError::InvalidArgument("U and V are linearly dependent".into()))?;
     let (g11, g12, g22) = (pe(&a, &a), pe(&a, &b), pe(&b, &b));
     let disc = g12.clone() * g12.clone() - g11.clone() * g22.clone();
     let sc = size(&a).max(size(&b)).max(1.0);
-    if disc <= F::zero() || negligible(&disc, sc.powi(4)) {
+    if route.flag(|| disc <= F::zero() || negligible(&disc, sc.powi(4)))? {
         return Err(CyclideError::InvalidArgument(format!(
             "span(U, V)^⊥ is not a Lorentzian plane (discriminant {})",
             format_scalar(&disc)
         )));
     }
-    if negligible(&g11, sc * sc) {
+    if route.flag(|| negligible(&g11, sc * sc))? {
         let nb = sub(&scale(&g22, &a), &scale(&(F::from_i64(2) * g12), &b));
         return Ok((a, nb));
     }
-    let root = sqrt_in_field(&disc).ok_or_else(|| {
+    let root = route.sqrt(&disc)?.ok_or_else(|| {
         CyclideError::NotRational(format!(
             "the isotropic directions of span(U, V)^⊥ need √{}",
             format_scalar(&disc)
@@ -489,20 +503,27 @@ pub(crate) fn parabola_frame<F: Scalar>(
     u: &[F; 4],
     n: &[F; 4],
 ) -> Result<([F; 4], [F; 4], F), CyclideError> {
-    let basis = pe_complement(&[u.clone(), n.clone()])?;
+    parabola_frame_along(u, n, &mut Route::free())
+}
+
+/// [`parabola_frame`] taking the decisions of `route`.
+pub(crate) fn parabola_frame_along<F: Scalar>(
+    u: &[F; 4],
+    n: &[F; 4],
+    route: &mut Route,
+) -> Result<([F; 4], [F; 4], F), CyclideError> {
+    let basis = pe_complement_along(&[u.clone(), n.clone()], route)?;
     let s = size(n).max(1.0);
     let mut cands = basis.clone();
     if let [a, b] = basis.as_slice() {
         cands.push(add(a, b));
     }
-    let p0 = cands
-        .into_iter()
-        .find(|c| !negligible(&pe(c, c), s * s))
-        .ok_or_else(|| {
-            CyclideError::InvalidArgument("span(U, N)^⊥ has no spacelike vector".into())
-        })?;
+    let first = route.index(|| cands.iter().position(|c| !negligible(&pe(c, c), s * s)))?;
+    let p0 = first.and_then(|i| cands.get(i).cloned()).ok_or_else(|| {
+        CyclideError::InvalidArgument("span(U, N)^⊥ has no spacelike vector".into())
+    })?;
     let pp = pe(&p0, &p0);
-    let (p, q) = match sqrt_in_field(&pp) {
+    let (p, q) = match route.sqrt(&pp)? {
         Some(root) if !root.is_zero() => (scale(&(F::one() / root), &p0), F::one()),
         _ => (p0, pp),
     };

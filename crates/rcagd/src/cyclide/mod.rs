@@ -21,13 +21,15 @@ pub mod conic;
 pub mod implicit;
 pub mod pe;
 pub mod pencil;
+pub mod route;
 pub mod spheres;
 pub mod surface;
 
 pub use blend::{blend_cones, fitting_contact_sphere, CyclideBlend};
 pub use conic::{CycleCurve, PeConic};
 pub use pencil::{DualPencil, PencilMember};
-pub use spheres::from_three_spheres;
+pub use route::Route;
+pub use spheres::{from_three_spheres, from_three_spheres_along, three_spheres_route};
 pub use surface::{CyclideKind, DupinCyclide};
 
 use thiserror::Error;

@@ -16,8 +16,8 @@
 //! The cyclide is the cyclographic image of each singular member: its oriented tangent
 //! planes `e₀ + n·x = 0` give the γ-hyperplanes `(e₀, n, 1)`, tangent to every member.
 
-use super::conic::{pe_complement, PeConic};
-use super::pe::{negligible, size};
+use super::conic::PeConic;
+use super::pe::{negligible, pe_row, size};
 use super::surface::DupinCyclide;
 use super::CyclideError;
 use crate::canal::bipoly::BiPoly;
@@ -82,6 +82,18 @@ fn omega<F: Scalar>() -> Vec<Vec<F>> {
         .collect()
 }
 
+/// A basis of `{X : ⟨X, Aᵢ⟩ = 0 ∀i}` (as `conic::pe_complement`, with the pivots of
+/// [`super::route::null_space_rounded`]).
+fn pe_complement_rounded<F: Scalar>(a: &[[F; 4]]) -> Result<Vec<[F; 4]>, CyclideError> {
+    let rows: Vec<Vec<F>> = a.iter().map(pe_row).collect();
+    super::route::null_space_rounded(&rows)
+        .into_iter()
+        .map(|v| {
+            <[F; 4]>::try_from(v).map_err(|_| CyclideError::InvalidArgument("kernel length".into()))
+        })
+        .collect()
+}
+
 /// Hyperplanes containing the plane `{P₀ + αA + βB}`: `X·(1, P₀) = 0`, `X'·A = X'·B = 0`
 /// (Euclidean dot products in hyperplane coordinates).
 fn plane_kernel<F: Scalar>(
@@ -95,9 +107,9 @@ fn plane_kernel<F: Scalar>(
         lift(a, F::zero()).to_vec(),
         lift(b, F::zero()).to_vec(),
     ];
-    let m = rcagd_algebra::Matrix::from_rows(rows)
-        .map_err(|e| CyclideError::InvalidArgument(e.to_string()))?;
-    m.null_space()
+    // in f64 a rounding residue of an exact 0 must not become a pivot (the kernel would
+    // be ill-conditioned): any basis of the kernel serves the certificate
+    super::route::null_space_rounded(&rows)
         .into_iter()
         .map(|v| {
             <[F; 5]>::try_from(v).map_err(|_| CyclideError::InvalidArgument("kernel length".into()))
@@ -133,7 +145,7 @@ impl<F: Scalar> DualPencil<F> {
                 let rr_d = rr.clone() * super::pe::pe(u, u);
                 let d = lin(&[(F::one(), &c), (rr_d.clone(), &om)]);
                 let ck = plane_kernel(center, u, v)?;
-                let comp = pe_complement(&[u.clone(), v.clone()])?;
+                let comp = pe_complement_rounded(&[u.clone(), v.clone()])?;
                 let dk = match comp.as_slice() {
                     [a, b] => plane_kernel(center, a, b)?,
                     _ => Vec::new(),

@@ -19,12 +19,13 @@
 //! envelops every sphere tangent to all three.
 
 use super::conic::{CycleCurve, PeConic};
-use super::pe::{negligible, pe, scale, size, sqrt_in_field, sub};
+use super::pe::{negligible, pe, scale, size, sub};
+use super::route::Route;
 use super::surface::DupinCyclide;
 use super::CyclideError;
 use crate::cyclographic::OrientedSphere;
 use rcagd_algebra::conic_point::{rational_conic_point, TernaryOutcome};
-use rcagd_algebra::{format_scalar, Certificate, Poly, Scalar};
+use rcagd_algebra::{format_scalar, Certificate, Poly, Rational, Scalar};
 use rcagd_geom::certify::polynomial_is_zero_scaled;
 
 /// The cyclide enveloping the spheres in oriented contact with the three oriented
@@ -40,6 +41,32 @@ use rcagd_geom::certify::polynomial_is_zero_scaled;
 pub fn from_three_spheres<F: Scalar>(
     spheres: &[OrientedSphere<F>; 3],
 ) -> Result<DupinCyclide<F>, CyclideError> {
+    from_three_spheres_along(spheres, &mut Route::free())
+}
+
+/// The decisions [`from_three_spheres`] takes on exact spheres (which plane case, which
+/// norm ratios are squares, which rational points, which pivots; [`Route`]), to build
+/// the same parametrization in another scalar with [`from_three_spheres_along`].
+///
+/// # Errors
+/// As [`from_three_spheres`].
+pub fn three_spheres_route(spheres: &[OrientedSphere<Rational>; 3]) -> Result<Route, CyclideError> {
+    let mut route = Route::record();
+    from_three_spheres_along(spheres, &mut route)?;
+    Ok(route.replay())
+}
+
+/// [`from_three_spheres`] taking the decisions of `route` ([`Route::free`]: its own;
+/// [`three_spheres_route`]: those of the exact construction, replayed — then an `f64`
+/// build is the exact parametrization up to rounding).
+///
+/// # Errors
+/// As [`from_three_spheres`]; [`CyclideError::InvalidArgument`] if `route` was recorded
+/// on another construction.
+pub fn from_three_spheres_along<F: Scalar>(
+    spheres: &[OrientedSphere<F>; 3],
+    route: &mut Route,
+) -> Result<DupinCyclide<F>, CyclideError> {
     let a: [[F; 4]; 3] = core::array::from_fn(|i| spheres[i].to_point());
     let b2 = sub(&a[1], &a[0]);
     let b3 = sub(&a[2], &a[0]);
@@ -47,23 +74,26 @@ pub fn from_three_spheres<F: Scalar>(
     let (g11, g12, g22) = (pe(&b2, &b2), pe(&b2, &b3), pe(&b3, &b3));
     let det = g11.clone() * g22.clone() - g12.clone() * g12.clone();
     // collinear: B₂ ∥ B₃ (all 2×2 minors vanish)
-    let collinear = (0..4).all(|i| {
-        (0..4).all(|j| {
-            negligible(
-                &(b2[i].clone() * b3[j].clone() - b2[j].clone() * b3[i].clone()),
-                sc * sc,
-            )
+    let collinear = route.flag(|| {
+        (0..4).all(|i| {
+            (0..4).all(|j| {
+                negligible(
+                    &(b2[i].clone() * b3[j].clone() - b2[j].clone() * b3[i].clone()),
+                    sc * sc,
+                )
+            })
         })
-    });
+    })?;
     if collinear {
         return Err(CyclideError::DegenerateSpheres(
             "the three cycles (centre, signed radius) are collinear in R^{3,1} (e.g. collinear centres with equal radii, or two equal spheres): the spheres tangent to all three form a one-parameter family whose envelope is not determined by them".into(),
         ));
     }
-    if negligible(&det, sc.powi(4)) {
-        return parabola_through(&a[0], &b2, &b3, [&g11, &g12, &g22], sc);
+    if route.flag(|| negligible(&det, sc.powi(4)))? {
+        return parabola_through(&a[0], &b2, &b3, [&g11, &g12, &g22], sc, route);
     }
-    if det > F::zero() && g11 <= F::zero() {
+    let lorentzian = route.flag(|| det < F::zero())?;
+    if !lorentzian && g11 <= F::zero() {
         return Err(CyclideError::DegenerateSpheres(format!(
             "the plane of the three cycles has a negative definite Gram matrix (g₁₁ = {}), impossible in R^{{3,1}}",
             format_scalar(&g11)
@@ -79,33 +109,32 @@ pub fn from_three_spheres<F: Scalar>(
     let c0: [F; 4] = core::array::from_fn(|i| a[0][i].clone() + y[i].clone());
     let w1 = sub(&a[0], &c0);
     let r = pe(&w1, &w1);
-    if det < F::zero() {
-        return hyperbola_case(c0, &b2, &b3, r, sc);
+    if lorentzian {
+        return hyperbola_case(c0, &b2, &b3, r, sc, route);
     }
     // Z ⟂ W₁ in the plane, then W₂ = Z √(R/⟨Z, Z⟩)
-    let pick = if negligible(
-        &(b2[0].clone() * w1[1].clone() - b2[1].clone() * w1[0].clone()),
-        sc * sc,
-    ) && (0..4).all(|i| {
-        (0..4).all(|j| {
-            negligible(
-                &(b2[i].clone() * w1[j].clone() - b2[j].clone() * w1[i].clone()),
-                sc * sc,
-            )
+    let pick = if route.flag(|| {
+        (0..4).all(|i| {
+            (0..4).all(|j| {
+                negligible(
+                    &(b2[i].clone() * w1[j].clone() - b2[j].clone() * w1[i].clone()),
+                    sc * sc,
+                )
+            })
         })
-    }) {
+    })? {
         &b3
     } else {
         &b2
     };
     let z = sub(pick, &scale(&(pe(pick, &w1) / r.clone()), &w1));
     let zz = pe(&z, &z);
-    let conic = match sqrt_in_field(&(r.clone() / zz.clone())) {
+    let conic = match route.sqrt(&(r.clone() / zz.clone()))? {
         Some(k) => PeConic::circle_scaled(c0, w1, scale(&k, &z))?,
         // ⟨Z, Z⟩/R not a square: C₀ + ((1 − k s²)W₁ + 2s Z)/(1 + k s²), k = ⟨Z, Z⟩/R
         None => PeConic::circle_ratio(c0, w1, z)?,
     };
-    DupinCyclide::from_conic(conic)
+    DupinCyclide::from_conic_along(conic, route)
 }
 
 /// The pseudo-Euclidean plane `T = span(B₂, B₃)`: the three cycles lie on the pe hyperbola
@@ -124,21 +153,22 @@ fn hyperbola_case<F: Scalar>(
     b3: &[F; 4],
     r: F,
     sc: f64,
+    route: &mut Route,
 ) -> Result<DupinCyclide<F>, CyclideError> {
-    if r >= F::zero() || negligible(&r, sc * sc) {
+    if route.flag(|| r >= F::zero() || negligible(&r, sc * sc))? {
         return Err(CyclideError::DegenerateSpheres(format!(
             "the three cycles lie on a pe hyperbola of spacelike radius (⟨A₁ − C₀, A₁ − C₀⟩ = {} ≥ 0 for its centre C₀): no real sphere is in oriented contact with all three",
             format_scalar(&r)
         )));
     }
-    let [z1, z2] = complement_basis(b2, b3, sc)?;
+    let [z1, z2] = complement_basis(b2, b3, sc, route)?;
     let a = pe(&z1, &z1);
     let b = pe(&z2, &z2);
     let n = -r;
     let ab = a.clone() * b.clone();
-    let (x, y) = match sqrt_in_field(&(n.clone() / a.clone())) {
+    let (x, y) = match route.sqrt(&(n.clone() / a.clone()))? {
         Some(k) => (k, F::zero()),
-        None => conic_point_of(&a, &b, &n)?,
+        None => route.point(|| conic_point_of(&a, &b, &n))?,
     };
     let w1: [F; 4] =
         core::array::from_fn(|i| x.clone() * z1[i].clone() + y.clone() * z2[i].clone());
@@ -146,7 +176,7 @@ fn hyperbola_case<F: Scalar>(
     let w1p: [F; 4] = core::array::from_fn(|i| {
         b.clone() * y.clone() * z1[i].clone() - a.clone() * x.clone() * z2[i].clone()
     });
-    let conic = match sqrt_in_field(&ab) {
+    let conic = match route.sqrt(&ab)? {
         Some(root_ab) if !root_ab.is_zero() => {
             let w2 = scale(&(F::one() / root_ab), &w1p);
             PeConic::circle_scaled(c0, w1, w2)?
@@ -154,7 +184,7 @@ fn hyperbola_case<F: Scalar>(
         // ab not a square: C₀ + ((1 − ab s²)W₁ + 2s W₁^⊥)/(1 + ab s²), still rational
         _ => PeConic::circle_ratio(c0, w1, w1p)?,
     };
-    DupinCyclide::from_conic(conic)
+    DupinCyclide::from_conic_along(conic, route)
 }
 
 /// A pe-orthogonal basis `z₁, z₂` of `T^⊥`, `T = span(B₂, B₃)` Lorentzian: the projections
@@ -164,6 +194,7 @@ fn complement_basis<F: Scalar>(
     b2: &[F; 4],
     b3: &[F; 4],
     sc: f64,
+    route: &mut Route,
 ) -> Result<[[F; 4]; 2], CyclideError> {
     let (g11, g12, g22) = (pe(b2, b2), pe(b2, b3), pe(b3, b3));
     let det = g11.clone() * g22.clone() - g12.clone() * g12.clone();
@@ -177,16 +208,20 @@ fn complement_basis<F: Scalar>(
         }
         x
     };
-    let longest = |v: Vec<[F; 4]>| {
-        v.into_iter().max_by(|x, y| {
-            pe(x, x)
-                .to_f64()
-                .partial_cmp(&pe(y, y).to_f64())
-                .unwrap_or(core::cmp::Ordering::Equal)
-        })
+    // the longest candidate (by the exact scalar's lengths when a route is recorded)
+    let longest = |v: &[[F; 4]], route: &mut Route| -> Result<Option<[F; 4]>, CyclideError> {
+        let i = route.index(|| {
+            (0..v.len()).max_by(|&x, &y| {
+                pe(&v[x], &v[x])
+                    .to_f64()
+                    .partial_cmp(&pe(&v[y], &v[y]).to_f64())
+                    .unwrap_or(core::cmp::Ordering::Equal)
+            })
+        })?;
+        Ok(i.and_then(|i| v.get(i).cloned()))
     };
     let all: Vec<[F; 4]> = (0..4).map(proj).collect();
-    let z1 = longest(all.clone())
+    let z1 = longest(&all, route)?
         .filter(|z| pe(z, z) > F::zero() && !negligible(&pe(z, z), 1e-6))
         .ok_or_else(|| {
             CyclideError::DegenerateSpheres(format!(
@@ -198,7 +233,7 @@ fn complement_basis<F: Scalar>(
         .iter()
         .map(|z| sub(z, &scale(&(pe(z, &z1) / a.clone()), &z1)))
         .collect();
-    let z2 = longest(rest)
+    let z2 = longest(&rest, route)?
         .filter(|z| pe(z, z) > F::zero() && !negligible(&pe(z, z), 1e-6))
         .ok_or_else(|| {
             CyclideError::DegenerateSpheres(
@@ -245,11 +280,12 @@ fn parabola_through<F: Scalar>(
     b3: &[F; 4],
     [g11, g12, g22]: [&F; 3],
     sc: f64,
+    route: &mut Route,
 ) -> Result<DupinCyclide<F>, CyclideError> {
     let sc2 = sc * sc;
-    let (n, u0) = if !negligible(g11, sc2) {
+    let (n, u0) = if !route.flag(|| negligible(g11, sc2))? {
         (sub(&scale(g12, b2), &scale(g11, b3)), b2.clone())
-    } else if !negligible(g22, sc2) {
+    } else if !route.flag(|| negligible(g22, sc2))? {
         (b2.clone(), b3.clone())
     } else {
         return Err(CyclideError::DegenerateSpheres(
@@ -294,7 +330,7 @@ fn parabola_through<F: Scalar>(
     let gamma = (x2 * y3 - x3 * y2) / d;
     let u = sub(&u0, &scale(&(-beta), &n));
     let nn = scale(&(F::from_i64(2) * gamma), &n);
-    let conic = match sqrt_in_field(&g) {
+    let conic = match route.sqrt(&g)? {
         Some(k) if !k.is_zero() => PeConic::parabola(
             a1.clone(),
             scale(&(F::one() / k), &u),
@@ -302,7 +338,7 @@ fn parabola_through<F: Scalar>(
         )?,
         _ => PeConic::parabola_scaled(a1.clone(), u, nn)?,
     };
-    DupinCyclide::from_conic(conic)
+    DupinCyclide::from_conic_along(conic, route)
 }
 
 /// `⟨W X − W A, W X − W A⟩` for the cycle curve `X = P/W` and a fixed cycle `A`: zero iff

@@ -133,8 +133,20 @@ impl<F: Scalar> DupinCyclide<F> {
     /// # Errors
     /// As [`PeConic::conjugate`].
     pub fn from_conic(conic: PeConic<F>) -> Result<Self, CyclideError> {
+        Self::from_conic_along(conic, &mut super::Route::free())
+    }
+
+    /// [`DupinCyclide::from_conic`] with the decisions of `route` for the conjugate conic
+    /// ([`PeConic::conjugate_along`]).
+    ///
+    /// # Errors
+    /// As [`PeConic::conjugate_along`].
+    pub fn from_conic_along(
+        conic: PeConic<F>,
+        route: &mut super::Route,
+    ) -> Result<Self, CyclideError> {
         let first = conic.curve();
-        let second = conic.conjugate()?;
+        let second = conic.conjugate_along(route)?;
         Ok(Self::from_families(conic, first, second))
     }
 
