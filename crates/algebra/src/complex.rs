@@ -254,8 +254,16 @@ impl<F: Ring> Ring for Complex<F> {
             (false, false) => {
                 let ac = pad(F::poly_mul(&ar, &br)?);
                 let bd = pad(F::poly_mul(&ai, &bi)?);
-                let sa: Vec<F> = ar.iter().zip(&ai).map(|(x, y)| x.clone() + y.clone()).collect();
-                let sb: Vec<F> = br.iter().zip(&bi).map(|(x, y)| x.clone() + y.clone()).collect();
+                let sa: Vec<F> = ar
+                    .iter()
+                    .zip(&ai)
+                    .map(|(x, y)| x.clone() + y.clone())
+                    .collect();
+                let sb: Vec<F> = br
+                    .iter()
+                    .zip(&bi)
+                    .map(|(x, y)| x.clone() + y.clone())
+                    .collect();
                 let s = pad(F::poly_mul(&sa, &sb)?);
                 let im = s
                     .into_iter()
@@ -469,5 +477,4 @@ mod tests {
             proptest::prop_assert_eq!(pa.gcd(&pb), pa.gcd_euclid(&pb));
         }
     }
-
 }

@@ -299,6 +299,33 @@ pub struct CanalSpine<F> {
     w: Poly<F>,
     m: [Poly<F>; 3],
     r: Poly<F>,
+    /// [`CanalSpine::derivative_numerators`] once computed (the fields never change after
+    /// construction: a value of the data, not part of it).
+    numerators: NumeratorCache<F>,
+}
+
+/// The derivative numerators of a [`CanalSpine`], computed on first use (the candidate
+/// search asks for them once per frame, method and split). Equal and printed as nothing:
+/// two spines with the same data are equal whether or not one has computed them.
+#[derive(Clone)]
+struct NumeratorCache<F>(std::sync::OnceLock<[Poly<F>; 4]>);
+
+impl<F> NumeratorCache<F> {
+    fn new() -> Self {
+        NumeratorCache(std::sync::OnceLock::new())
+    }
+}
+
+impl<F> PartialEq for NumeratorCache<F> {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+impl<F> std::fmt::Debug for NumeratorCache<F> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("…")
+    }
 }
 
 impl<F: Scalar> CanalSpine<F> {
@@ -312,7 +339,12 @@ impl<F: Scalar> CanalSpine<F> {
                 "the weight polynomial W vanishes identically".into(),
             ));
         }
-        Ok(CanalSpine { w, m, r })
+        Ok(CanalSpine {
+            w,
+            m,
+            r,
+            numerators: NumeratorCache::new(),
+        })
     }
 
     /// A polynomial spine `m(t)` with polynomial radius `r(t)` (`W = 1`).
@@ -321,6 +353,7 @@ impl<F: Scalar> CanalSpine<F> {
             w: Poly::constant(F::one()),
             m,
             r,
+            numerators: NumeratorCache::new(),
         }
     }
 
@@ -443,6 +476,7 @@ impl<F: Scalar> CanalSpine<F> {
             w: self.w.clone(),
             m: self.m.clone(),
             r: -&self.r,
+            numerators: NumeratorCache::new(),
         }
     }
 
@@ -481,6 +515,7 @@ impl<F: Scalar> CanalSpine<F> {
             w: self.w.map(f),
             m: [self.m[0].map(f), self.m[1].map(f), self.m[2].map(f)],
             r: self.r.map(f),
+            numerators: NumeratorCache::new(),
         }
     }
 
@@ -491,6 +526,14 @@ impl<F: Scalar> CanalSpine<F> {
     /// # Errors
     /// [`CanalError::DegenerateSpine`] if all four vanish (a constant sphere).
     pub fn derivative_numerators(&self) -> Result<[Poly<F>; 4], CanalError> {
+        if let Some(p) = self.numerators.0.get() {
+            return Ok(p.clone());
+        }
+        let p = self.derivative_numerators_uncached()?;
+        Ok(self.numerators.0.get_or_init(|| p).clone())
+    }
+
+    fn derivative_numerators_uncached(&self) -> Result<[Poly<F>; 4], CanalError> {
         let wd = self.w.derivative();
         let x = [&self.m[0], &self.m[1], &self.m[2], &self.r];
         let p: [Poly<F>; 4] =
