@@ -299,20 +299,24 @@ pub struct CanalSpine<F> {
     w: Poly<F>,
     m: [Poly<F>; 3],
     r: Poly<F>,
-    /// [`CanalSpine::derivative_numerators`] once computed (the fields never change after
+    /// [`CanalSpine::derivative_numerators`] and [`CanalSpine::discriminant`] once
+    /// computed (the fields never change after
     /// construction: a value of the data, not part of it).
     numerators: NumeratorCache<F>,
 }
 
-/// The derivative numerators of a [`CanalSpine`], computed on first use (the candidate
+/// The derivative numerators and the discriminant of a [`CanalSpine`], computed on first use (the candidate
 /// search asks for them once per frame, method and split). Equal and printed as nothing:
 /// two spines with the same data are equal whether or not one has computed them.
 #[derive(Clone)]
-struct NumeratorCache<F>(std::sync::OnceLock<[Poly<F>; 4]>);
+struct NumeratorCache<F>(
+    std::sync::OnceLock<[Poly<F>; 4]>,
+    std::sync::OnceLock<Poly<F>>,
+);
 
 impl<F> NumeratorCache<F> {
     fn new() -> Self {
-        NumeratorCache(std::sync::OnceLock::new())
+        NumeratorCache(std::sync::OnceLock::new(), std::sync::OnceLock::new())
     }
 }
 
@@ -563,8 +567,12 @@ impl<F: Scalar> CanalSpine<F> {
     /// # Errors
     /// As [`Self::derivative_numerators`].
     pub fn discriminant(&self) -> Result<Poly<F>, CanalError> {
+        if let Some(d) = self.numerators.1.get() {
+            return Ok(d.clone());
+        }
         let p = self.derivative_numerators()?;
-        Ok(&(&(&(&p[0] * &p[0]) + &(&p[1] * &p[1])) + &(&p[2] * &p[2])) - &(&p[3] * &p[3]))
+        let d = &(&(&(&p[0] * &p[0]) + &(&p[1] * &p[1])) + &(&p[2] * &p[2])) - &(&p[3] * &p[3]);
+        Ok(self.numerators.1.get_or_init(|| d).clone())
     }
 
     /// Checks that the envelope is real on the domain (`None`: all of `R`): `D ≥ 0` there.
