@@ -122,10 +122,34 @@ impl<F: Scalar> BiPoly<F> {
         BiPoly::new(self.c.iter().map(|p| -p).collect())
     }
 
-    /// `self · other`.
+    /// `self · other`. Over exact scalars by Kronecker substitution `u = t^K`,
+    /// `K = deg_t(self) + deg_t(other) + 1` (no two products of terms land on the same
+    /// power, so the coefficients of the univariate product are those of the bivariate one):
+    /// one univariate product, for `Q` fraction-free ([`rcagd_algebra::Ring::poly_mul`]).
     pub fn mul(&self, other: &BiPoly<F>) -> BiPoly<F> {
         if self.is_zero() || other.is_zero() {
             return BiPoly::zero();
+        }
+        if F::EXACT {
+            let k = self.degree_t().unwrap_or(0) + other.degree_t().unwrap_or(0) + 1;
+            let pack = |b: &BiPoly<F>| {
+                let mut v = vec![F::zero(); b.c.len() * k];
+                for (j, p) in b.c.iter().enumerate() {
+                    for (i, x) in p.coeffs().iter().enumerate() {
+                        if let Some(slot) = v.get_mut(j * k + i) {
+                            *slot = x.clone();
+                        }
+                    }
+                }
+                Poly::new(v)
+            };
+            let prod = &pack(self) * &pack(other);
+            return BiPoly::new(
+                prod.coeffs()
+                    .chunks(k)
+                    .map(|c| Poly::new(c.to_vec()))
+                    .collect(),
+            );
         }
         let mut out = vec![Poly::zero(); self.c.len() + other.c.len() - 1];
         for (i, a) in self.c.iter().enumerate() {
@@ -488,6 +512,15 @@ mod tests {
                 .bernstein_on_generic((&t0, &t1), (&u0, &u1), m, n)
                 .expect("degrees");
             proptest::prop_assert_eq!(fast, slow);
+            // the Kronecker product against the sum of products of the coefficients
+            let b2 = BiPoly::new(b.c.iter().rev().cloned().collect());
+            let mut naive = vec![Poly::zero(); (b.c.len() + b2.c.len()).saturating_sub(1)];
+            for (i, x) in b.c.iter().enumerate() {
+                for (j, y) in b2.c.iter().enumerate() {
+                    naive[i + j] = &naive[i + j] + &(x * y);
+                }
+            }
+            proptest::prop_assert_eq!(b.mul(&b2), BiPoly::new(naive));
             let want = b.eval(&t1, &u0).partial_cmp(&Rational::ZERO);
             proptest::prop_assert_eq!(b.sign_at(&t1, &u0), want);
         }

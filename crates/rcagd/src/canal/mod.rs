@@ -294,7 +294,7 @@ pub enum CanalError {
 /// The curve `k(t) = (m(t), r(t))` of the cyclographic model of a rational sphere family:
 /// homogeneous polynomials `(W, M₁, M₂, M₃, R)` with `m = M/W` and `r = R/W` (Gruber
 /// §2.2 (2.19)).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Clone, PartialEq)]
 pub struct CanalSpine<F> {
     w: Poly<F>,
     m: [Poly<F>; 3],
@@ -305,9 +305,20 @@ pub struct CanalSpine<F> {
     numerators: NumeratorCache<F>,
 }
 
+/// The data `(W, M, R)` only (the cache is not part of the value).
+impl<F: std::fmt::Debug> std::fmt::Debug for CanalSpine<F> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("CanalSpine")
+            .field("w", &self.w)
+            .field("m", &self.m)
+            .field("r", &self.r)
+            .finish()
+    }
+}
+
 /// The derivative numerators and the discriminant of a [`CanalSpine`], computed on first use (the candidate
-/// search asks for them once per frame, method and split). Equal and printed as nothing:
-/// two spines with the same data are equal whether or not one has computed them.
+/// search asks for them once per frame, method and split). Always equal: two spines with
+/// the same data are equal whether or not one has computed them.
 #[derive(Clone)]
 struct NumeratorCache<F>(
     std::sync::OnceLock<[Poly<F>; 4]>,
@@ -323,12 +334,6 @@ impl<F> NumeratorCache<F> {
 impl<F> PartialEq for NumeratorCache<F> {
     fn eq(&self, _: &Self) -> bool {
         true
-    }
-}
-
-impl<F> std::fmt::Debug for NumeratorCache<F> {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str("…")
     }
 }
 
