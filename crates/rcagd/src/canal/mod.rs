@@ -319,15 +319,22 @@ impl<F: std::fmt::Debug> std::fmt::Debug for CanalSpine<F> {
 /// The derivative numerators and the discriminant of a [`CanalSpine`], computed on first use (the candidate
 /// search asks for them once per frame, method and split). Always equal: two spines with
 /// the same data are equal whether or not one has computed them.
+/// Shared by clones (the data of a clone is the same, so are its numerators).
 #[derive(Clone)]
-struct NumeratorCache<F>(
-    std::sync::OnceLock<[Poly<F>; 4]>,
-    std::sync::OnceLock<Poly<F>>,
-);
+struct NumeratorCache<F>(std::sync::Arc<Derived<F>>);
+
+/// The numerators and the discriminant, each set at most once.
+struct Derived<F> {
+    numerators: std::sync::OnceLock<[Poly<F>; 4]>,
+    discriminant: std::sync::OnceLock<Poly<F>>,
+}
 
 impl<F> NumeratorCache<F> {
     fn new() -> Self {
-        NumeratorCache(std::sync::OnceLock::new(), std::sync::OnceLock::new())
+        NumeratorCache(std::sync::Arc::new(Derived {
+            numerators: std::sync::OnceLock::new(),
+            discriminant: std::sync::OnceLock::new(),
+        }))
     }
 }
 
@@ -535,11 +542,11 @@ impl<F: Scalar> CanalSpine<F> {
     /// # Errors
     /// [`CanalError::DegenerateSpine`] if all four vanish (a constant sphere).
     pub fn derivative_numerators(&self) -> Result<[Poly<F>; 4], CanalError> {
-        if let Some(p) = self.numerators.0.get() {
+        if let Some(p) = self.numerators.0.numerators.get() {
             return Ok(p.clone());
         }
         let p = self.derivative_numerators_uncached()?;
-        Ok(self.numerators.0.get_or_init(|| p).clone())
+        Ok(self.numerators.0.numerators.get_or_init(|| p).clone())
     }
 
     fn derivative_numerators_uncached(&self) -> Result<[Poly<F>; 4], CanalError> {
@@ -572,12 +579,12 @@ impl<F: Scalar> CanalSpine<F> {
     /// # Errors
     /// As [`Self::derivative_numerators`].
     pub fn discriminant(&self) -> Result<Poly<F>, CanalError> {
-        if let Some(d) = self.numerators.1.get() {
+        if let Some(d) = self.numerators.0.discriminant.get() {
             return Ok(d.clone());
         }
         let p = self.derivative_numerators()?;
         let d = &(&(&(&p[0] * &p[0]) + &(&p[1] * &p[1])) + &(&p[2] * &p[2])) - &(&p[3] * &p[3]);
-        Ok(self.numerators.1.get_or_init(|| d).clone())
+        Ok(self.numerators.0.discriminant.get_or_init(|| d).clone())
     }
 
     /// Checks that the envelope is real on the domain (`None`: all of `R`): `D ≥ 0` there.
