@@ -575,8 +575,7 @@ fn shift_line_int(
     h: &crate::rational::Rational,
 ) {
     use dashu_int::IBig;
-    let g = dashu_base::Gcd::gcd(a.denominator(), h.denominator());
-    let d = a.denominator() / &g * h.denominator();
+    let d = shift_denominator(a, h);
     let big_a = a.numerator() * IBig::from(&d / a.denominator());
     let big_h = h.numerator() * IBig::from(&d / h.denominator());
     let d = IBig::from(d);
@@ -654,6 +653,44 @@ pub fn tensor_bernstein_scaled(
     (u0, du): (&crate::rational::Rational, &crate::rational::Rational),
     (v0, dv): (&crate::rational::Rational, &crate::rational::Rational),
 ) -> Result<Vec<dashu_int::IBig>, AlgebraError> {
+    tensor_bernstein_with_multiple(power, (m, n), (u0, du), (v0, dv)).map(|(c, _)| c)
+}
+
+/// The exact tensor Bernstein coefficients of bidegree `(m, n)` (row-major in `s`) of
+/// `p(u₀ + s·Δu, v₀ + t·Δv)` on `[0, 1]²`: the integers of [`tensor_bernstein_scaled`]
+/// divided by their common multiple `λ = L·D_uᵐ·D_vⁿ·m!·n!` (`L` the common denominator of
+/// the coefficients, `D_u`, `D_v` those of the shifts), one reduction per coefficient.
+///
+/// # Errors
+/// As [`tensor_bernstein_scaled`].
+pub fn tensor_bernstein_exact(
+    power: &[crate::rational::Rational],
+    mn: (usize, usize),
+    u: (&crate::rational::Rational, &crate::rational::Rational),
+    v: (&crate::rational::Rational, &crate::rational::Rational),
+) -> Result<Vec<crate::rational::Rational>, AlgebraError> {
+    let (c, lambda) = tensor_bernstein_with_multiple(power, mn, u, v)?;
+    Ok(c.into_iter()
+        .map(|x| crate::rational::Rational::from_parts(x, lambda.clone()))
+        .collect())
+}
+
+/// The common denominator `D` of a shift `(a, h)` in [`shift_line_int`].
+fn shift_denominator(
+    a: &crate::rational::Rational,
+    h: &crate::rational::Rational,
+) -> dashu_int::UBig {
+    let g = dashu_base::Gcd::gcd(a.denominator(), h.denominator());
+    a.denominator() / &g * h.denominator()
+}
+
+/// [`tensor_bernstein_scaled`] and its multiple `λ` ([`tensor_bernstein_exact`]).
+fn tensor_bernstein_with_multiple(
+    power: &[crate::rational::Rational],
+    (m, n): (usize, usize),
+    (u0, du): (&crate::rational::Rational, &crate::rational::Rational),
+    (v0, dv): (&crate::rational::Rational, &crate::rational::Rational),
+) -> Result<(Vec<dashu_int::IBig>, dashu_int::UBig), AlgebraError> {
     use dashu_int::{IBig, UBig};
     if power.len() != (m + 1) * (n + 1) {
         return Err(AlgebraError::InvalidArgument(format!(
@@ -687,7 +724,67 @@ pub fn tensor_bernstein_scaled(
     for i in 0..=m {
         bernstein_line_int(&mut c, i * w, 1, n, &wn);
     }
-    Ok(c)
+    // λ = L·D_uᵐ·D_vⁿ·m!·n! (the shifts multiply by Dᵈᵉᵍ, the conversions by deg!)
+    let fact = |k: usize| (1..=k).fold(UBig::ONE, |f, i| f * UBig::from(i));
+    let lambda =
+        l * shift_denominator(u0, du).pow(m) * shift_denominator(v0, dv).pow(n) * fact(m) * fact(n);
+    Ok((c, lambda))
+}
+
+/// The sign of `p(u, v) = Σ power[i(n+1) + j] uⁱvʲ` at a rational point, fraction-free:
+/// with `L` the common denominator of the coefficients `power = C/L` and `u = a/b`,
+/// `v = c/d` (`b, d > 0`), the integer `L·bᵐ·dⁿ·p(u, v) = Σ Cᵢⱼ aⁱbᵐ⁻ⁱ cʲdⁿ⁻ʲ` (homogeneous
+/// Horner in both variables) has the sign of `p(u, v)`. Integer products and sums only.
+///
+/// # Errors
+/// [`AlgebraError::InvalidArgument`] if `power` does not have `(m + 1)(n + 1)` entries.
+pub fn tensor_sign_at(
+    power: &[crate::rational::Rational],
+    (m, n): (usize, usize),
+    u: &crate::rational::Rational,
+    v: &crate::rational::Rational,
+) -> Result<core::cmp::Ordering, AlgebraError> {
+    use dashu_int::{IBig, UBig};
+    if power.len() != (m + 1) * (n + 1) {
+        return Err(AlgebraError::InvalidArgument(format!(
+            "tensor_sign_at: {} coefficients for bidegree ({m}, {n})",
+            power.len()
+        )));
+    }
+    let mut l = UBig::ONE;
+    for x in power {
+        let d = x.denominator();
+        if d != &UBig::ONE && d != &l {
+            let g = dashu_base::Gcd::gcd(&l, d);
+            l = &l / &g * d;
+        }
+    }
+    let pows = |x: &UBig, k: usize| -> Vec<IBig> {
+        let mut out = vec![IBig::ONE];
+        for _ in 0..k {
+            let next = out
+                .last()
+                .map(|p| p * IBig::from(x.clone()))
+                .unwrap_or(IBig::ONE);
+            out.push(next);
+        }
+        out
+    };
+    let (bp, dp) = (pows(u.denominator(), m), pows(v.denominator(), n));
+    let (a, c) = (u.numerator(), v.numerator());
+    let mut acc = IBig::ZERO;
+    for j in (0..=n).rev() {
+        let mut h = IBig::ZERO;
+        for i in (0..=m).rev() {
+            let x = &power[i * (n + 1) + j];
+            h *= a;
+            if !x.is_zero() {
+                h += x.numerator() * IBig::from(&l / x.denominator()) * &bp[m - i];
+            }
+        }
+        acc = acc * c + h * &dp[n - j];
+    }
+    Ok(acc.cmp(&IBig::ZERO))
 }
 
 /// The common sign of the tensor Bernstein coefficients of bidegree `(m, n)` of
@@ -974,6 +1071,46 @@ mod fraction_free_tests {
                     }
                 }
             }
+        }
+
+        /// The fraction-free sign at a point is the sign of the rational value.
+        #[test]
+        fn tensor_sign_is_the_sign_of_the_value(
+            m in 0usize..5,
+            n in 0usize..4,
+            raw in proptest::collection::vec((-9i64..10, 1i64..9), 20),
+            at in (-9i64..10, 1i64..9, -9i64..10, 1i64..9),
+        ) {
+            let power: Vec<Rational> = raw[..(m + 1) * (n + 1)].iter().map(|&(p, d)| q(p, d)).collect();
+            let (u, v) = (q(at.0, at.1), q(at.2, at.3));
+            let mut value = Rational::ZERO;
+            for i in 0..=m {
+                for j in 0..=n {
+                    value += power[i * (n + 1) + j].clone()
+                        * crate::scalar::ring_pow(&u, i)
+                        * crate::scalar::ring_pow(&v, j);
+                }
+            }
+            let got = tensor_sign_at(&power, (m, n), &u, &v).expect("lengths");
+            proptest::prop_assert_eq!(got, value.partial_cmp(&Rational::ZERO).expect("ordered"));
+        }
+
+        /// The exact tensor Bernstein coefficients (the scaled integers over their multiple
+        /// `λ`) are those of the rational computation.
+        #[test]
+        fn exact_tensor_bernstein_is_the_rational_one(
+            m in 0usize..5,
+            n in 0usize..4,
+            raw in proptest::collection::vec((-9i64..10, 1i64..9), 20),
+            u in (-5i64..6, 1i64..9, 1i64..7, 1i64..9),
+            v in (-5i64..6, 1i64..9, 1i64..7, 1i64..9),
+        ) {
+            let power: Vec<Rational> = raw[..(m + 1) * (n + 1)].iter().map(|&(p, d)| q(p, d)).collect();
+            let (u0, du) = (q(u.0, u.1), q(u.2, u.3));
+            let (v0, dv) = (q(v.0, v.1), q(v.2, v.3));
+            let got = tensor_bernstein_exact(&power, (m, n), (&u0, &du), (&v0, &dv)).expect("lengths");
+            let want = tensor_bernstein_rational(&power, (m, n), (&u0, &du), (&v0, &dv));
+            proptest::prop_assert_eq!(got, want);
         }
     }
 }

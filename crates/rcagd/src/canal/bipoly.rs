@@ -3,9 +3,9 @@
 //! `u² + 1`, removal of common factors in `t` and in `u`, and conversion to tensor-product
 //! Bézier patches on any parameter rectangle.
 
-use rcagd_algebra::bernstein::to_bernstein;
+use rcagd_algebra::bernstein::{tensor_bernstein_exact, tensor_sign_at, to_bernstein};
 use rcagd_algebra::mpoly::MPoly;
-use rcagd_algebra::{AlgebraError, Poly, Scalar};
+use rcagd_algebra::{AlgebraError, Poly, Rational, Scalar};
 use rcagd_geom::{BezierPatch, GeomError};
 
 /// A polynomial `Σⱼ cⱼ(t) uʲ` in two variables (the first, `t`, inside the coefficients).
@@ -122,10 +122,34 @@ impl<F: Scalar> BiPoly<F> {
         BiPoly::new(self.c.iter().map(|p| -p).collect())
     }
 
-    /// `self · other`.
+    /// `self · other`. Over exact scalars by Kronecker substitution `u = t^K`,
+    /// `K = deg_t(self) + deg_t(other) + 1` (no two products of terms land on the same
+    /// power, so the coefficients of the univariate product are those of the bivariate one):
+    /// one univariate product, for `Q` fraction-free ([`rcagd_algebra::Ring::poly_mul`]).
     pub fn mul(&self, other: &BiPoly<F>) -> BiPoly<F> {
         if self.is_zero() || other.is_zero() {
             return BiPoly::zero();
+        }
+        if F::EXACT {
+            let k = self.degree_t().unwrap_or(0) + other.degree_t().unwrap_or(0) + 1;
+            let pack = |b: &BiPoly<F>| {
+                let mut v = vec![F::zero(); b.c.len() * k];
+                for (j, p) in b.c.iter().enumerate() {
+                    for (i, x) in p.coeffs().iter().enumerate() {
+                        if let Some(slot) = v.get_mut(j * k + i) {
+                            *slot = x.clone();
+                        }
+                    }
+                }
+                Poly::new(v)
+            };
+            let prod = &pack(self) * &pack(other);
+            return BiPoly::new(
+                prod.coeffs()
+                    .chunks(k)
+                    .map(|c| Poly::new(c.to_vec()))
+                    .collect(),
+            );
         }
         let mut out = vec![Poly::zero(); self.c.len() + other.c.len() - 1];
         for (i, a) in self.c.iter().enumerate() {
@@ -266,12 +290,83 @@ impl<F: Scalar> BiPoly<F> {
         BiPoly::new(self.c.iter().map(|p| p.map(f)).collect())
     }
 
+    /// The coefficients over `Q`, row-major `(m + 1) × (n + 1)` in the `t` index (`None`
+    /// when one is not rational or the bidegree exceeds `(m, n)`).
+    fn power_rational(&self, m: usize, n: usize) -> Option<Vec<Rational>> {
+        let mut power = vec![Rational::ZERO; (m + 1) * (n + 1)];
+        for (j, p) in self.c.iter().enumerate() {
+            for (i, x) in p.coeffs().iter().enumerate() {
+                if j > n || i > m {
+                    return None;
+                }
+                *power.get_mut(i * (n + 1) + j)? = x.to_rational()?;
+            }
+        }
+        Some(power)
+    }
+
+    /// The sign of the value at a rational point `(t, u)` (`None` for coefficients not in
+    /// `Q`), fraction-free ([`rcagd_algebra::bernstein::tensor_sign_at`]).
+    pub fn sign_at(&self, t: &Rational, u: &Rational) -> Option<std::cmp::Ordering> {
+        let (m, n) = (self.degree_t().unwrap_or(0), self.degree_u().unwrap_or(0));
+        let power = self.power_rational(m, n)?;
+        tensor_sign_at(&power, (m, n), t, u).ok()
+    }
+
+    /// [`Self::bernstein_on`] over `Q` (`None` when a coefficient or an end is not
+    /// rational): the power coefficients over one common denominator, Taylor shifts and
+    /// basis conversions in integers ([`rcagd_algebra::bernstein::tensor_bernstein_exact`];
+    /// Farin, *Curves and Surfaces for CAGD*, 5th ed., §5.7), then one division per
+    /// coefficient — the same values as the rational computation, without a gcd per
+    /// operation.
+    fn bernstein_on_rational(
+        &self,
+        (t0, t1): (&F, &F),
+        (u0, u1): (&F, &F),
+        m: usize,
+        n: usize,
+    ) -> Result<Option<Vec<F>>, AlgebraError> {
+        if self.degree_t().is_some_and(|d| d > m) || self.degree_u().is_some_and(|d| d > n) {
+            return Err(AlgebraError::InvalidArgument(format!(
+                "bernstein_on: bidegree ({:?}, {:?}) exceeds ({m}, {n})",
+                self.degree_t(),
+                self.degree_u()
+            )));
+        }
+        let q = |x: &F| x.to_rational();
+        let (Some(a), Some(b), Some(c), Some(d)) = (q(t0), q(t1), q(u0), q(u1)) else {
+            return Ok(None);
+        };
+        let Some(power) = self.power_rational(m, n) else {
+            return Ok(None);
+        };
+        let (dt, du) = (b - a.clone(), d - c.clone());
+        let out = tensor_bernstein_exact(&power, (m, n), (&a, &dt), (&c, &du))?;
+        Ok(Some(out.iter().map(F::from_rational).collect()))
+    }
+
     /// The tensor Bernstein coefficients of degree `(m, n)` on `[t₀, t₁] × [u₀, u₁]`
     /// (row-major in the `t` index).
     ///
     /// # Errors
     /// [`AlgebraError::InvalidArgument`] if a degree exceeds `(m, n)`.
     pub fn bernstein_on(
+        &self,
+        (t0, t1): (&F, &F),
+        (u0, u1): (&F, &F),
+        m: usize,
+        n: usize,
+    ) -> Result<Vec<F>, AlgebraError> {
+        if F::EXACT {
+            if let Some(c) = self.bernstein_on_rational((t0, t1), (u0, u1), m, n)? {
+                return Ok(c);
+            }
+        }
+        self.bernstein_on_generic((t0, t1), (u0, u1), m, n)
+    }
+
+    /// [`Self::bernstein_on`] by Taylor shifts and basis conversions in `F`.
+    fn bernstein_on_generic(
         &self,
         (t0, t1): (&F, &F),
         (u0, u1): (&F, &F),
@@ -381,5 +476,53 @@ mod tests {
         );
         assert_eq!(ab.transpose().transpose(), ab);
         assert_eq!(ab.reverse_u(3).reverse_u(3), ab);
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+
+        /// The fraction-free tensor Bernstein coefficients over `Q` are those of the
+        /// Taylor shifts in `Q` (also with degrees raised above the polynomial's).
+        #[test]
+        fn rational_bernstein_is_the_generic_one(
+            raw in proptest::collection::vec((-9i64..10, 1i64..9), 12),
+            dt in 0usize..4,
+            du in 0usize..3,
+            extra in (0usize..2, 0usize..2),
+            ends in (-4i64..5, 1i64..5, 1i64..9, 1i64..5),
+        ) {
+            let mut it = raw.iter().cycle();
+            let c: Vec<Poly<Rational>> = (0..=du)
+                .map(|_| {
+                    Poly::new(
+                        (0..=dt)
+                            .filter_map(|_| it.next())
+                            .map(|&(a, b)| Rational::from_ratio(a, b))
+                            .collect(),
+                    )
+                })
+                .collect();
+            let b = BiPoly::new(c);
+            let t0 = Rational::from_ratio(ends.0, ends.1);
+            let t1 = t0.clone() + Rational::from_ratio(ends.2, ends.3);
+            let (u0, u1) = (Rational::from_ratio(-1, ends.1), Rational::from_ratio(ends.2, 3));
+            let (m, n) = (dt + extra.0, du + extra.1);
+            let fast = b.bernstein_on((&t0, &t1), (&u0, &u1), m, n).expect("degrees");
+            let slow = b
+                .bernstein_on_generic((&t0, &t1), (&u0, &u1), m, n)
+                .expect("degrees");
+            proptest::prop_assert_eq!(fast, slow);
+            // the Kronecker product against the sum of products of the coefficients
+            let b2 = BiPoly::new(b.c.iter().rev().cloned().collect());
+            let mut naive = vec![Poly::zero(); (b.c.len() + b2.c.len()).saturating_sub(1)];
+            for (i, x) in b.c.iter().enumerate() {
+                for (j, y) in b2.c.iter().enumerate() {
+                    naive[i + j] = &naive[i + j] + &(x * y);
+                }
+            }
+            proptest::prop_assert_eq!(b.mul(&b2), BiPoly::new(naive));
+            let want = b.eval(&t1, &u0).partial_cmp(&Rational::ZERO);
+            proptest::prop_assert_eq!(b.sign_at(&t1, &u0), want);
+        }
     }
 }

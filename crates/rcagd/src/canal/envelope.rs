@@ -637,6 +637,7 @@ fn reparametrize<F: Scalar>(spine: &CanalSpine<F>, a: &F, b: &F) -> CanalSpine<F
         w: sub(&w),
         m: [sub(&m0), sub(&m1), sub(&m2)],
         r: sub(&r),
+        numerators: super::NumeratorCache::new(),
     }
 }
 

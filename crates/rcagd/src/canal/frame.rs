@@ -42,6 +42,28 @@ const MAX_HEIGHT: i64 = 17;
 /// The rational unit vectors `(a, b, c)/n` with `a² + b² + c² = n²`, `n ≤ 17`, all signs and
 /// permutations, ordered by `n` (the coordinate axes first).
 pub fn candidate_directions() -> Vec<[Rational; 3]> {
+    candidate_directions_cached()
+        .iter()
+        .map(|(e, _)| e.clone())
+        .collect()
+}
+
+/// [`candidate_directions`] with their `f64` values, computed once per process (a constant
+/// list).
+fn candidate_directions_cached() -> &'static [([Rational; 3], [f64; 3])] {
+    static LIST: std::sync::OnceLock<Vec<([Rational; 3], [f64; 3])>> = std::sync::OnceLock::new();
+    LIST.get_or_init(|| {
+        candidate_directions_uncached()
+            .into_iter()
+            .map(|e| {
+                let ef = e.clone().map(|x| Scalar::to_f64(&x));
+                (e, ef)
+            })
+            .collect()
+    })
+}
+
+fn candidate_directions_uncached() -> Vec<[Rational; 3]> {
     let mut out: Vec<[i64; 4]> = Vec::new();
     for n in 1..=MAX_HEIGHT {
         for a in 0..=n {
@@ -162,8 +184,8 @@ pub fn pole_free_directions(
         })
         .collect();
     let mut scored: Vec<(f64, [Rational; 3])> = Vec::new();
-    for e in candidate_directions() {
-        let ef = e.clone().map(|x| Scalar::to_f64(&x));
+    for (e, ef) in candidate_directions_cached() {
+        let (e, ef) = (e.clone(), *ef);
         let mut lo = f64::INFINITY;
         let mut sign = 0.0f64;
         let mut ok = true;

@@ -294,11 +294,54 @@ pub enum CanalError {
 /// The curve `k(t) = (m(t), r(t))` of the cyclographic model of a rational sphere family:
 /// homogeneous polynomials `(W, M₁, M₂, M₃, R)` with `m = M/W` and `r = R/W` (Gruber
 /// §2.2 (2.19)).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Clone, PartialEq)]
 pub struct CanalSpine<F> {
     w: Poly<F>,
     m: [Poly<F>; 3],
     r: Poly<F>,
+    /// [`CanalSpine::derivative_numerators`] and [`CanalSpine::discriminant`] once
+    /// computed (the fields never change after
+    /// construction: a value of the data, not part of it).
+    numerators: NumeratorCache<F>,
+}
+
+/// The data `(W, M, R)` only (the cache is not part of the value).
+impl<F: std::fmt::Debug> std::fmt::Debug for CanalSpine<F> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("CanalSpine")
+            .field("w", &self.w)
+            .field("m", &self.m)
+            .field("r", &self.r)
+            .finish()
+    }
+}
+
+/// The derivative numerators and the discriminant of a [`CanalSpine`], computed on first use (the candidate
+/// search asks for them once per frame, method and split). Always equal: two spines with
+/// the same data are equal whether or not one has computed them.
+/// Shared by clones (the data of a clone is the same, so are its numerators).
+#[derive(Clone)]
+struct NumeratorCache<F>(std::sync::Arc<Derived<F>>);
+
+/// The numerators and the discriminant, each set at most once.
+struct Derived<F> {
+    numerators: std::sync::OnceLock<[Poly<F>; 4]>,
+    discriminant: std::sync::OnceLock<Poly<F>>,
+}
+
+impl<F> NumeratorCache<F> {
+    fn new() -> Self {
+        NumeratorCache(std::sync::Arc::new(Derived {
+            numerators: std::sync::OnceLock::new(),
+            discriminant: std::sync::OnceLock::new(),
+        }))
+    }
+}
+
+impl<F> PartialEq for NumeratorCache<F> {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
 }
 
 impl<F: Scalar> CanalSpine<F> {
@@ -312,7 +355,12 @@ impl<F: Scalar> CanalSpine<F> {
                 "the weight polynomial W vanishes identically".into(),
             ));
         }
-        Ok(CanalSpine { w, m, r })
+        Ok(CanalSpine {
+            w,
+            m,
+            r,
+            numerators: NumeratorCache::new(),
+        })
     }
 
     /// A polynomial spine `m(t)` with polynomial radius `r(t)` (`W = 1`).
@@ -321,6 +369,7 @@ impl<F: Scalar> CanalSpine<F> {
             w: Poly::constant(F::one()),
             m,
             r,
+            numerators: NumeratorCache::new(),
         }
     }
 
@@ -443,6 +492,7 @@ impl<F: Scalar> CanalSpine<F> {
             w: self.w.clone(),
             m: self.m.clone(),
             r: -&self.r,
+            numerators: NumeratorCache::new(),
         }
     }
 
@@ -481,6 +531,7 @@ impl<F: Scalar> CanalSpine<F> {
             w: self.w.map(f),
             m: [self.m[0].map(f), self.m[1].map(f), self.m[2].map(f)],
             r: self.r.map(f),
+            numerators: NumeratorCache::new(),
         }
     }
 
@@ -491,6 +542,14 @@ impl<F: Scalar> CanalSpine<F> {
     /// # Errors
     /// [`CanalError::DegenerateSpine`] if all four vanish (a constant sphere).
     pub fn derivative_numerators(&self) -> Result<[Poly<F>; 4], CanalError> {
+        if let Some(p) = self.numerators.0.numerators.get() {
+            return Ok(p.clone());
+        }
+        let p = self.derivative_numerators_uncached()?;
+        Ok(self.numerators.0.numerators.get_or_init(|| p).clone())
+    }
+
+    fn derivative_numerators_uncached(&self) -> Result<[Poly<F>; 4], CanalError> {
         let wd = self.w.derivative();
         let x = [&self.m[0], &self.m[1], &self.m[2], &self.r];
         let p: [Poly<F>; 4] =
@@ -520,8 +579,12 @@ impl<F: Scalar> CanalSpine<F> {
     /// # Errors
     /// As [`Self::derivative_numerators`].
     pub fn discriminant(&self) -> Result<Poly<F>, CanalError> {
+        if let Some(d) = self.numerators.0.discriminant.get() {
+            return Ok(d.clone());
+        }
         let p = self.derivative_numerators()?;
-        Ok(&(&(&(&p[0] * &p[0]) + &(&p[1] * &p[1])) + &(&p[2] * &p[2])) - &(&p[3] * &p[3]))
+        let d = &(&(&(&p[0] * &p[0]) + &(&p[1] * &p[1])) + &(&p[2] * &p[2])) - &(&p[3] * &p[3]);
+        Ok(self.numerators.0.discriminant.get_or_init(|| d).clone())
     }
 
     /// Checks that the envelope is real on the domain (`None`: all of `R`): `D ≥ 0` there.

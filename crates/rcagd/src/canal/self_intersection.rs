@@ -1102,9 +1102,10 @@ impl Check<'_> {
             (&c.t.1, &c.s.0),
             (&c.t.1, &c.s.1),
         ];
+        // the signs only: fraction-free (the same signs as the rational values)
         corners.map(|(t, s)| {
-            p.eval(t, s)
-                .partial_cmp(&Rational::ZERO)
+            p.sign_at(t, s)
+                .or_else(|| p.eval(t, s).partial_cmp(&Rational::ZERO))
                 .unwrap_or(Ordering::Equal)
         })
     }
