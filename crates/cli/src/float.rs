@@ -159,6 +159,43 @@ pub const FLOAT_OPS: &[FloatOp] = &[
         build: ops::pn::build_revolution::<f64>,
         note: "regularity is decided by f64 Bernstein signs",
     },
+    // --- PN and line-congruence ops (session 15, floatpn) ---
+    FloatOp {
+        name: "pn_loft",
+        build: ops::pn::build_loft::<f64>,
+        note: "the strips are sampled and the §4.4 scheme solved in f64; regularity is decided by f64 Bernstein signs",
+    },
+    FloatOp {
+        name: "pn_ruled",
+        build: ops::pn::build_ruled::<f64>,
+        note: "the splitting p₁² + p₂² = |g|² is found on the exact input (a sum of two squares over Q: exact-only algebra), the envelope is built in f64",
+    },
+    FloatOp {
+        name: "pn_canal",
+        build: ops::pn::build_canal::<f64>,
+        note: "the splitting p₁² + p₂² = |m′|² − r′² is found on the exact input (a sum of two squares over Q: exact-only algebra), the envelope is built in f64",
+    },
+    FloatOp {
+        name: "pn_developable_edge",
+        build: ops::pn::build_developable_edge::<f64>,
+        note: "",
+    },
+    FloatOp {
+        name: "pn_anticaustic",
+        build: ops::pn::build_anticaustic::<f64>,
+        note: "regularity is decided by f64 Bernstein signs",
+    },
+    FloatOp {
+        name: "pn_planar",
+        build: ops::pn::build_planar::<f64>,
+        note: "regularity is decided by f64 Bernstein signs",
+    },
+    FloatOp {
+        name: "line_congruence_strips",
+        build: ops::line_congruence::build_strips::<f64>,
+        note: "the `reguli` type is refused (its strips divide out exact common factors: exact scalars only)",
+    },
+    // --- end of the PN and line-congruence ops ---
     FloatOp {
         name: "ph_curve",
         build: ops::ph::build_ph_curve::<f64>,
@@ -199,6 +236,20 @@ pub const FLOAT_OPS: &[FloatOp] = &[
 /// Ops (or whole topics) without a float path, and why; an op listed by name takes
 /// precedence over its topic. Ops in neither have no float builder yet.
 pub const NO_FLOAT_PATH: &[(&str, &str)] = &[
+    // --- PN and line-congruence ops (session 15, floatpn; each tried on its example and
+    // gallery objects with a generic builder, `float_pn::survey`) ---
+    ("pn_model", "tried and withdrawn (session 15): a cyclide piece whose last Bernstein row vanishes exactly is exported in bidegree (3, 2) over Q and (3, 3) in f64 (the gallery's pn_modeled_patch: 2 of 48 pieces), so the f64 build is another representation; pn_loft has a float path"),
+    ("pn_developable", "tried and withdrawn (session 15): the f64 build of the example is another parametrization of the rulings (same degrees, control points 1.25 apart relative to their size): the exact construction normalizes the plane coordinates and the ruling direction by exact gcds and contents over Q, which f64 does not reproduce; pn_developable_edge has a float path"),
+    ("pn_developable_motion", "tried and withdrawn (session 15): the exact construction cancels common polynomial factors of the moved planes (gcds over Q: exact-only algebra); in f64 they are not found and the example's envelope has bidegree (30, 4) instead of (8, 4)"),
+    ("pn_two_sheet_hyperboloid", "tried and withdrawn (session 15): common polynomial factors of the point and normal are cancelled over Q (exact-only algebra); in f64 they are not found and the example has bidegree (12, 4) instead of (8, 4)"),
+    ("pn_laguerre", "tried and withdrawn (session 15): common polynomial factors of the image are cancelled over Q (exact-only algebra); in f64 they are not found and the example (a boosted cyclide) has bidegree (6, 6) instead of (2, 2)"),
+    ("pn_cone_motion", "tried and withdrawn (session 15): the f64 regularity check (Bernstein signs of x_u × x_v) reports a singular point at the corner (1/4, 1/4) of the example's domain, which the exact signs exclude; besides, the splitting |m₁ − m₂|² − (r₁ − r₂)² = p₁² + p₂² is decided inside the library in the scalar, on rounded coefficients in f64"),
+    ("pn_cone_envelope", "exact-only algebra: the degree-reducing frame of §4.5.1 is searched over Q and the splitting |m₁ − m₂|² − (r₁ − r₂)² = p₁² + p₂² (a sum of two squares over Q) is decided inside the library, which takes no exact frame or splitting for an f64 construction"),
+    ("pn_ruled_cyclographic", "exact-only algebra: ⟨g, g⟩ = p₁² + p₂² (a sum of two squares over Q) is decided inside the library's construction, which takes no exact splitting; in f64 it would be decided on the rounded coefficients"),
+    ("pn_quadric", "the library's construction is exact (the double cover of the rulings and the splitting are decided over Q) and only converts the finished surface to the scalar: an f64 build would be the exact construction with f64 offsets, not a float path"),
+    ("hypercyclide", "as pn_quadric: the library builds the hypercyclide exactly (sums of two squares over Q) and only converts the finished surface to the scalar"),
+    ("line_congruence_parametrized", "not yet written: order and class are exact eliminations (queries on the exact input) and the focal sheets of a square discriminant are found over Q; the strips themselves have an f64 instantiation"),
+    // --- end of the PN and line-congruence ops ---
     ("quadric_interpolate", "not yet written (the interpolation solves a linear system over Q and picks a rational point; an f64 version needs its own pivoting rule)"),
     ("quadric_miquel_patch", "not yet written (it chooses among sign flips by exact weight signs)"),
     ("ph_dph_septic", "exact-only algebra: exact real roots of the z-polynomial"),

@@ -12,6 +12,7 @@ mod degenerate;
 mod docs;
 mod exchange_weights;
 mod float;
+mod float_pn;
 mod fuzz;
 mod fuzz_corpus;
 mod library_first;
