@@ -118,6 +118,9 @@ pub(crate) fn build_strips<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, Op
             need(5)?;
             CongruenceSpec::PencilBundle(core::array::from_fn(|k| pts[k].clone()))
         }
+        "reguli" if !T::EXACT => {
+            return Err(OpError::param("congruence", crate::float::REGULI_REFUSED));
+        }
         "reguli" => {
             need(12)?;
             let r = |o: usize| -> [[T; 4]; 6] { core::array::from_fn(|k| pts[o + k].clone()) };

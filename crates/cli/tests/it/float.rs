@@ -161,6 +161,13 @@ fn gallery_objects_with_a_float_path_agree() {
                 file: r.file.clone(),
                 objects: vec![obj.clone()],
             };
+            // a type the float path refuses by design (`line_congruence_strips`' reguli,
+            // `float::REGULI_REFUSED`): only that refusal is checked
+            if let Err(d) = build_recipe_with(&one, Arithmetic::Float, |_| {}) {
+                if d[0].message.contains(float::REGULI_REFUSED) {
+                    continue;
+                }
+            }
             if KNOWN_REPARAMETRIZED
                 .iter()
                 .any(|(name, _)| *name == obj.name)
@@ -225,7 +232,10 @@ pub(crate) fn pt(dim: usize) -> impl Strategy<Value = String> {
     proptest::collection::vec(q(), dim).prop_map(|v| format!("[{}]", v.join(", ")))
 }
 
-pub(crate) fn pts(dim: usize, n: std::ops::RangeInclusive<usize>) -> impl Strategy<Value = Vec<String>> {
+pub(crate) fn pts(
+    dim: usize,
+    n: std::ops::RangeInclusive<usize>,
+) -> impl Strategy<Value = Vec<String>> {
     proptest::collection::vec(pt(dim), n)
 }
 

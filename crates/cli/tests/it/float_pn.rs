@@ -1,15 +1,17 @@
 //! The float path of the PN and line-congruence ops (`rcagd build --float`, session 15):
-//! random exact recipes built exactly and in `f64` agree by the rule of
-//! [`rcagd_cli::float_agreement`] at `float::REL` (1e-12 relative), every `f64` certificate
-//! holds and is inexact, every float object is marked `arithmetic = "f64"`.
-
+//! random exact recipes of `pn_anticaustic`, `pn_planar` and `line_congruence_strips`
+//! built exactly and in `f64` agree by the rule of [`rcagd_cli::float_agreement`] at
+//! `float::REL` (1e-12 relative), every `f64` certificate holds and is inexact, every
+//! float object is marked `arithmetic = "f64"`. The other ops of the topic were tried with
+//! their generic builders ([`survey`], and property tests whose failing draws are quoted in
+//! `float::NO_FLOAT_PATH`) and withdrawn.
 //!
 //! Where the exact op refuses an input (developable, no splitting, singular on the
 //! domain, a cusp of an offset) the case is skipped. Where the float path refuses an input
 //! the exact op accepts, the refusal must be one of regularity decided by `f64` Bernstein
 //! signs ([`f64_refusal_is_a_sign`]); nothing else is compared then.
 
-use crate::float::{agree, build, obj, pt, q};
+use crate::float::{agree, build, obj, pos, pt, q};
 use proptest::prelude::*;
 use rcagd_cli::build::{build_recipe_with, Arithmetic};
 use rcagd_cli::recipe::Recipe;
@@ -36,38 +38,57 @@ const OPS: &[&str] = &[
 /// zero of the regularity polynomial within rounding of the domain: the float path may
 /// refuse what the exact signs accept, as for `pn_graph`).
 fn f64_refusal_is_a_sign(message: &str) -> bool {
-    ["not regular", "singular point", "cusp", "vanishes", "degenerat"]
-        .iter()
-        .any(|w| message.contains(w))
+    [
+        "not regular",
+        "singular point",
+        "cusp",
+        "vanishes",
+        "degenerat",
+    ]
+    .iter()
+    .any(|w| message.contains(w))
 }
 
 /// Builds `src` exactly; if the exact op accepts it, builds it in `f64` and compares
 /// ([`agree`]); an `f64` refusal must be a sign decision ([`f64_refusal_is_a_sign`]).
 fn compare(op: &str, src: &str) -> Result<(), TestCaseError> {
     let Ok(e) = build(src, Arithmetic::Exact) else {
-        if std::env::var_os("FLOATPN_TRACE").is_some() { eprintln!("TRACE {op}: exact refuses"); }
         return Ok(());
     };
-    if std::env::var_os("FLOATPN_TRACE").is_some() { eprintln!("TRACE {op}: compared {:?}", build(src, Arithmetic::Float).err()); }
     match build(src, Arithmetic::Float) {
         Ok(f) => agree(op, &e, &f).map_err(TestCaseError::fail),
         Err(m) if f64_refusal_is_a_sign(&m) => Ok(()),
-        Err(m) => Err(TestCaseError::fail(format!("{op}: the f64 build refuses what the exact one builds: {m}\n{src}"))),
+        Err(m) => Err(TestCaseError::fail(format!(
+            "{op}: the f64 build refuses what the exact one builds: {m}\n{src}"
+        ))),
     }
 }
 
-/// `n` random rows of power coefficients (at most `deg + 1` each).
+/// A grid of `n` random rows of power coefficients, each of the same random length
+/// (at most `deg + 1`: a grid is rectangular).
 fn rows(n: usize, deg: usize) -> impl Strategy<Value = String> {
-    proptest::collection::vec(proptest::collection::vec(q(), 1..=deg + 1), n).prop_map(|r| {
-        let r: Vec<String> = r.iter().map(|x| format!("[{}]", x.join(", "))).collect();
-        format!("[{}]", r.join(", "))
-    })
+    (1..=deg + 1)
+        .prop_flat_map(move |w| proptest::collection::vec(proptest::collection::vec(q(), w), n))
+        .prop_map(|r| {
+            let r: Vec<String> = r.iter().map(|x| format!("[{}]", x.join(", "))).collect();
+            format!("[{}]", r.join(", "))
+        })
+}
+
+/// A homogeneous point with a positive weight (so that the strips' points stay finite
+/// for non-negative parameters).
+fn weighted() -> impl Strategy<Value = String> {
+    (1i64..=4, pt(3)).prop_map(|(w, p)| format!("[{w}, {}]", &p[1..p.len() - 1]))
 }
 
 /// A random rectangle `[u0, u1, v0, v1]` in quarters.
 fn domain() -> impl Strategy<Value = String> {
     (-4i64..=3, 1i64..=4, -4i64..=3, 1i64..=4).prop_map(|(u0, du, v0, dv)| {
-        format!("[\"{u0}/4\", \"{}/4\", \"{v0}/4\", \"{}/4\"]", u0 + du, v0 + dv)
+        format!(
+            "[\"{u0}/4\", \"{}/4\", \"{v0}/4\", \"{}/4\"]",
+            u0 + du,
+            v0 + dv
+        )
     })
 }
 
@@ -78,38 +99,6 @@ fn distances() -> impl Strategy<Value = String> {
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(24))]
-
-    /// PN ruled surfaces l(t) + v g(t) (l of degree ≤ 2, g of degree ≤ 1, one row of g
-    /// zero half of the time so that |g|² often splits over Q) and canal surfaces (spine
-    /// of degree ≤ 2, radius of degree ≤ 1; a constant radius half of the time), with
-    /// offsets: the splitting p₁² + p₂² is found on the exact input by both paths.
-    #[test]
-    fn pn_ruled_and_canal_surfaces_agree(
-        l in rows(3, 2), g in proptest::collection::vec(proptest::collection::vec(q(), 1..=2), 3),
-        zero in 0usize..6, spine in rows(3, 2), radius in proptest::collection::vec(q(), 1..=2),
-        dom in domain(), dist in distances(),
-    ) {
-        let g: Vec<String> = g
-            .iter()
-            .enumerate()
-            .map(|(k, r)| if k == zero { "[0]".to_string() } else { format!("[{}]", r.join(", ")) })
-            .collect();
-        let body = format!("directrix = {l}\nruling = [{}]\ndomain = {dom}\ndistances = {dist}\n", g.join(", "));
-        compare("pn_ruled", &obj("pn_ruled", &body))?;
-        let radius = if zero % 2 == 0 { &radius[..1] } else { &radius[..] };
-        let body = format!("spine = {spine}\nradius = [{}]\ndomain = {dom}\ndistances = {dist}\n", radius.join(", "));
-        compare("pn_canal", &obj("pn_canal", &body))?;
-    }
-
-    /// Edges of regression of developables of random isotropic cubics y(t) over random
-    /// intervals, with the edges of their offsets.
-    #[test]
-    fn pn_developable_edges_agree(
-        curve in rows(3, 3), t0 in -8i64..=6, dt in 1i64..=4, dist in distances(),
-    ) {
-        let body = format!("curve = {curve}\ninterval = [\"{t0}/4\", \"{}/4\"]\ndistances = {dist}\n", t0 + dt);
-        compare("pn_developable_edge", &obj("pn_developable_edge", &body))?;
-    }
 
     /// Anticaustics of random polynomial mirrors (degree ≤ 2 in u and v) at random levels,
     /// and planar PH curves of random isotropic graphs F(t) (degree ≤ 3) with offsets.
@@ -127,51 +116,19 @@ proptest! {
         compare("pn_planar", &obj("pn_planar", &body))?;
     }
 
-    /// PN lofts between two latitude circles (quarter arcs) of random tori with their
-    /// normal fields: x = (R + r cos φ)(c, s, 0) + (0, 0, r sin φ), n = (cos φ (c, s), sin φ),
-    /// (cos φ, sin φ) = ((1 − a²), 2a)/(1 + a²), (c, s) = ((1 − t²), 2t)/(1 + t²).
-    #[test]
-    fn pn_lofts_agree(
-        big in 3i64..=12, small in 1i64..=2, a0 in -5i64..=5, a1 in -5i64..=5, den in 1i64..=6,
-        samples in 2i64..=5,
-    ) {
-        prop_assume!(a0 != a1);
-        let f = |p: i64, n: i64| format!("\"{p}/{n}\"");
-        let latitude = |a: i64| {
-            let (c, s, n) = (den * den - a * a, 2 * a * den, den * den + a * a);
-            let rho = big * n + small * c;
-            let z = small * s;
-            (
-                format!(
-                    "[[1, 0, 1], [{}, 0, {}], [0, {}, 0], [{}, 0, {}]]",
-                    f(rho, n), f(-rho, n), f(2 * rho, n), f(z, n), f(z, n)
-                ),
-                format!(
-                    "[[1, 0, 1], [{}, 0, {}], [0, {}, 0], [{}, 0, {}]]",
-                    f(c, n), f(-c, n), f(2 * c, n), f(s, n), f(s, n)
-                ),
-            )
-        };
-        let (c0, n0) = latitude(a0);
-        let (c1, n1) = latitude(a1);
-        let body = format!(
-            "curve0 = {c0}\nnormal0 = {n0}\ncurve1 = {c1}\nnormal1 = {n1}\nsamples = {samples}\n"
-        );
-        compare("pn_loft", &obj("pn_loft", &body))?;
-    }
-
-    /// Line nets (hyperbolic, elliptic, parabolic) of random axes, chords of random
-    /// twisted cubics and joins of random plane collineations, drawn as strips.
+    /// Line nets (hyperbolic, elliptic, parabolic) of random axes and chords of random
+    /// twisted cubics (positive weights, parameters ≥ 0: the strips stay finite), drawn
+    /// as strips.
     #[test]
     fn line_congruence_strips_agree(
-        kind in 0usize..5, p in proptest::collection::vec(pt(4), 6),
-        u0 in -4i64..=3, du in 1i64..=4, v in proptest::collection::vec(q(), 1..=3),
-        twist in q(), l1 in 1i64..=4,
+        kind in 0usize..4, p in proptest::collection::vec(weighted(), 4),
+        du in 1i64..=4, v in proptest::collection::vec(pos(), 1..=3),
+        twist in pos(), l1 in 1i64..=4,
     ) {
-        let (congruence, n) = [("hyperbolic", 4), ("elliptic", 4), ("parabolic", 4), ("cubic_chords", 4), ("collineation", 6)][kind];
+        let congruence = ["hyperbolic", "elliptic", "parabolic", "cubic_chords"][kind];
         let body = format!(
-            "congruence = \"{congruence}\"\npoints = [{}]\nu = [\"{u0}/4\", \"{}/4\"]\nv = [{}]\ntwist = {twist}\nlambda = [0, \"{l1}/4\"]\n",
-            p[..n].join(", "), u0 + du, v.join(", ")
+            "congruence = \"{congruence}\"\npoints = [{}]\nu = [0, \"{du}/4\"]\nv = [{}]\ntwist = {twist}\nlambda = [0, \"{l1}/4\"]\n",
+            p.join(", "), v.join(", ")
         );
         compare("line_congruence_strips", &obj("line_congruence_strips", &body))?;
     }
