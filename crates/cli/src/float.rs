@@ -49,6 +49,9 @@ pub fn is_display_param(op: &str, key: &str) -> bool {
 /// library's reguli strips divide out exact common factors: exact scalars only).
 pub const REGULI_REFUSED: &str = "the float path does not build the `reguli` congruence (its strips divide out exact common factors over Q): build it without --float";
 
+/// The refusal of `pn_planar` with a non-constant `denominator` by the float path.
+pub const RATIONAL_F_REFUSED: &str = "the float path does not build a rational F (a non-constant `denominator`): the exact op cancels common factors of the curve over Q, which f64 does not find (another representation of higher degree); build it without --float";
+
 /// The name of the value that says which arithmetic built an object.
 pub const ARITHMETIC: &str = "arithmetic";
 
@@ -172,7 +175,7 @@ pub const FLOAT_OPS: &[FloatOp] = &[
     FloatOp {
         name: "pn_planar",
         build: ops::pn::build_planar::<f64>,
-        note: "regularity is decided by f64 Bernstein signs",
+        note: "polynomial F only (a non-constant `denominator` is refused: common factors cancelled over Q are not found in f64); regularity is decided by f64 Bernstein signs",
     },
     FloatOp {
         name: "line_congruence_strips",
