@@ -435,8 +435,9 @@ impl<F: Scalar> Certified for PnCurve<F> {
     fn certify(&self) -> Vec<Certificate> {
         let [w, x1, x2] = &self.point;
         let [n0, n1, n2] = &self.normal;
-        // in f64 each residual coefficient is compared with the magnitude of its terms
-        // (`within`), so that cancellation in a side does not shrink the tolerance
+        // in f64 the product identities compare each residual coefficient with the
+        // magnitude of its terms (`within`), so that cancellation in a side does not
+        // shrink the tolerance
         let a = |p: &MPoly<F>| abs_mpoly(p);
         let mut out = vec![within(
             "planar PH: N₁² + N₂² ≡ N₀² (rational unit normal)",
@@ -444,10 +445,9 @@ impl<F: Scalar> Certified for PnCurve<F> {
             &(n0 * n0),
             || &(&(&a(n1) * &a(n1)) + &(&a(n2) * &a(n2))) + &(&a(n0) * &a(n0)),
         )];
+        // K is a quotient (an f64 division accepts a remainder): the sides' scale
         if let Some(k) = &self.cofactor {
-            out.push(within("planar PH: W ≡ N₀K", w, &(n0 * k), || {
-                &a(w) + &(&a(n0) * &a(k))
-            }));
+            out.push(identity_cert("planar PH: W ≡ N₀K", w, &(n0 * k)));
         }
         let wp = w.partial(0);
         let (x1p, x2p) = (x1.partial(0), x2.partial(0));
@@ -464,14 +464,10 @@ impl<F: Scalar> Certified for PnCurve<F> {
         ));
         let lhs = &(&self.support.num * n0) * w;
         let rhs = -(&self.support.den * &(&(n1 * x1) + &(n2 * x2)));
-        out.push(within(
+        out.push(identity_cert(
             "planar PH: x on its line: h + n·x ≡ 0",
             &lhs,
             &rhs,
-            || {
-                &(&(&a(&self.support.num) * &a(n0)) * &a(w))
-                    + &(&a(&self.support.den) * &(&(&a(n1) * &a(x1)) + &(&a(n2) * &a(x2))))
-            },
         ));
         out
     }

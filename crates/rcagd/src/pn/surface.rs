@@ -4,9 +4,8 @@
 
 use super::offset::PnOffset;
 use super::poly::{
-    self, abs_mpoly, cancel_common, cancel_gcd, det4, div_exact, dot3, gcd2, identity_cert,
-    identity_cert_within, mag, normalize_content, pad_eval, patch_of, sign_on_domain, zero_cert,
-    Domain, RatFn, Sign,
+    self, cancel_common, cancel_gcd, det4, div_exact, dot3, gcd2, identity_cert, mag,
+    normalize_content, pad_eval, patch_of, sign_on_domain, zero_cert, Domain, RatFn, Sign,
 };
 use super::PnError;
 use crate::error::{format_point, format_scalar};
@@ -505,17 +504,11 @@ impl<F: Scalar> PnSurface<F> {
         let nvec = &self.normal[1..];
         let mut out = vec![unit_normal_cert(&self.normal)];
         if let Some(k) = &self.cofactor {
-            let (property, rhs) = (
+            let mut c = identity_cert(
                 "W ≡ N₀·K (common denominator of point and offsets)",
-                &self.normal[0] * k,
+                w,
+                &(&self.normal[0] * k),
             );
-            // in f64 against the magnitude |W| + |N₀||K| of the terms of each coefficient
-            let mut c = if F::EXACT {
-                identity_cert(property, w, &rhs)
-            } else {
-                let mag = &abs_mpoly(w) + &(&abs_mpoly(&self.normal[0]) * &abs_mpoly(k));
-                identity_cert_within(property, w, &rhs, &mag)
-            };
             c.property = format!("{}: {}", self.name, c.property);
             out.push(c);
         }
