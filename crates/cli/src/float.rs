@@ -45,6 +45,13 @@ pub fn is_display_param(op: &str, key: &str) -> bool {
         && ["frame", "comb", "feed", "samples", "frame_length"].contains(&key)
 }
 
+/// The refusal of `line_congruence_strips`' `reguli` type by the float path (the
+/// library's reguli strips divide out exact common factors: exact scalars only).
+pub const REGULI_REFUSED: &str = "the float path does not build the `reguli` congruence (its strips divide out exact common factors over Q): build it without --float";
+
+/// The refusal of `pn_planar` with a non-constant `denominator` by the float path.
+pub const RATIONAL_F_REFUSED: &str = "the float path does not build a rational F (a non-constant `denominator`): the exact op cancels common factors of the curve over Q, which f64 does not find (another representation of higher degree); build it without --float";
+
 /// The name of the value that says which arithmetic built an object.
 pub const ARITHMETIC: &str = "arithmetic";
 
@@ -176,6 +183,23 @@ pub const FLOAT_OPS: &[FloatOp] = &[
         build: ops::pn::build_revolution::<f64>,
         note: "regularity is decided by f64 Bernstein signs",
     },
+    // --- PN and line-congruence ops (session 15, floatpn) ---
+    FloatOp {
+        name: "pn_anticaustic",
+        build: ops::pn::build_anticaustic::<f64>,
+        note: "regularity is decided by f64 Bernstein signs",
+    },
+    FloatOp {
+        name: "pn_planar",
+        build: ops::pn::build_planar::<f64>,
+        note: "polynomial F only (a non-constant `denominator` is refused: common factors cancelled over Q are not found in f64); regularity is decided by f64 Bernstein signs",
+    },
+    FloatOp {
+        name: "line_congruence_strips",
+        build: ops::line_congruence::build_strips::<f64>,
+        note: "the `reguli` type is refused (its strips divide out exact common factors over Q: exact scalars only)",
+    },
+    // --- end of the PN and line-congruence ops ---
     FloatOp {
         name: "ph_curve",
         build: ops::ph::build_ph_curve::<f64>,
@@ -222,6 +246,24 @@ pub const FLOAT_OPS: &[FloatOp] = &[
 /// Ops (or whole topics) without a float path, and why; an op listed by name takes
 /// precedence over its topic. Ops in neither have no float builder yet.
 pub const NO_FLOAT_PATH: &[(&str, &str)] = &[
+    // --- PN and line-congruence ops (session 15, floatpn; each tried on its example and
+    // gallery objects with a generic builder, `float_pn::survey`) ---
+    ("pn_model", "tried and withdrawn (session 15): a cyclide piece whose last Bernstein row vanishes exactly is exported in bidegree (3, 2) over Q and (3, 3) in f64 (the gallery's pn_modeled_patch: 2 of 48 pieces), so the f64 build is another representation"),
+    ("pn_loft", "tried and withdrawn (session 15): as pn_model, pieces whose last Bernstein rows vanish exactly are degree-reduced over Q and not in f64 (random draw: the torus R = 4, r = 1, latitudes a = 0 and −1 over den 2, samples = 2: 1 piece of bidegree (3, 2) and 2 of (2, 2) exactly, all (3, 3) in f64)"),
+    ("pn_developable", "tried and withdrawn (session 15): the f64 build of the example is another parametrization of the rulings (same degrees, control points 1.25 apart relative to their size): the exact construction normalizes the plane coordinates and the ruling direction by exact gcds and contents over Q, which f64 does not reproduce; pn_developable_edge has a float path"),
+    ("pn_developable_motion", "tried and withdrawn (session 15): the exact construction cancels common polynomial factors of the moved planes (gcds over Q: exact-only algebra); in f64 they are not found and the example's envelope has bidegree (30, 4) instead of (8, 4)"),
+    ("pn_two_sheet_hyperboloid", "tried and withdrawn (session 15): common polynomial factors of the point and normal are cancelled over Q (exact-only algebra); in f64 they are not found and the example has bidegree (12, 4) instead of (8, 4)"),
+    ("pn_laguerre", "tried and withdrawn (session 15): common polynomial factors of the image are cancelled over Q (exact-only algebra); in f64 they are not found and the example (a boosted cyclide) has bidegree (6, 6) instead of (2, 2)"),
+    ("pn_cone_motion", "tried and withdrawn (session 15): the f64 regularity check (Bernstein signs of x_u × x_v) reports a singular point at the corner (1/4, 1/4) of the example's domain, which the exact signs exclude; besides, the splitting |m₁ − m₂|² − (r₁ − r₂)² = p₁² + p₂² is decided inside the library in the scalar, on rounded coefficients in f64"),
+    ("pn_ruled", "tried and withdrawn (session 15; the splitting p₁² + p₂² = |g|² decided on the exact input, the envelope built in f64): the random draw directrix = [[0, 0], [0, 16/11], [-7/3, -15/7]], ruling = [[1/3, -35/3], [-13/3, 0], [0, 0]] differs from the exact build by 7.8e-10 relative (the 1e-12 of issue 20 not met; cause not analyzed)"),
+    ("pn_canal", "tried and withdrawn (session 15; the splitting p₁² + p₂² = |m′|² − r′² decided on the exact input, the envelope built in f64): the PN assembly cancels the gcd of the point and normal polynomials over Q only (a no-op in f64), and for the random draw spine = [[0, -1, 10], [0, 0, 4], [0, 0, 0]], radius = [1], domain = [3/4, 1, 0, 1/4] the f64 patch keeps the factor (a higher bidegree; in another draw (4, 3) instead of (4, 2)) and its points differ from the exact ones by 2.6e-8 relative at the corner (3/4, 0)"),
+    ("pn_developable_edge", "tried and withdrawn (session 15): the edge of an offset comes out of degree 9 in f64 and 7 over Q for curve = [[0, 8, 0, 0], [-2, 0, 0, -1], [0, 0, 0, -8/7]], distance -16/3 (common factors cancelled over Q are not found in f64)"),
+    ("pn_cone_envelope", "exact-only algebra: the degree-reducing frame of §4.5.1 is searched over Q and the splitting |m₁ − m₂|² − (r₁ − r₂)² = p₁² + p₂² (a sum of two squares over Q) is decided inside the library, which takes no exact frame or splitting for an f64 construction"),
+    ("pn_ruled_cyclographic", "exact-only algebra: ⟨g, g⟩ = p₁² + p₂² (a sum of two squares over Q) is decided inside the library's construction, which takes no exact splitting; in f64 it would be decided on the rounded coefficients"),
+    ("pn_quadric", "the library's construction is exact (the double cover of the rulings and the splitting are decided over Q) and only converts the finished surface to the scalar: an f64 build would be the exact construction with f64 offsets, not a float path"),
+    ("hypercyclide", "as pn_quadric: the library builds the hypercyclide exactly (sums of two squares over Q) and only converts the finished surface to the scalar"),
+    ("line_congruence_parametrized", "not yet written: order and class are exact eliminations (queries on the exact input) and the focal sheets of a square discriminant are found over Q; the strips themselves have an f64 instantiation"),
+    // --- end of the PN and line-congruence ops ---
     ("quadric_interpolate", "not yet written (the interpolation solves a linear system over Q and picks a rational point; an f64 version needs its own pivoting rule)"),
     ("quadric_miquel_patch", "not yet written (it chooses among sign flips by exact weight signs)"),
     ("ph_dph_septic", "exact-only algebra: exact real roots of the z-polynomial"),

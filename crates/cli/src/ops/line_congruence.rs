@@ -2,6 +2,7 @@
 //! ruled strips (`rcagd::lines::congruence_strips`; D. Gruber, "Rationale
 //! Parametrisierungen von Kugelhüllflächen", 2008, §1.1.6–1.1.8).
 
+use super::arith::{self, OpScalar};
 use super::poly_io::{self, MPolyQ};
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
@@ -60,25 +61,26 @@ points = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]
 u = [-1, 1]
 v = ["1/2", 1]
 "#,
-    build: build_strips,
+    build: build_strips::<Rational>,
 };
 
-fn four(param: &'static str, p: &[Rational]) -> Result<[Rational; 4], OpError> {
-    <[Rational; 4]>::try_from(p.to_vec()).map_err(|_| {
+fn four<T: OpScalar>(param: &'static str, p: &[Rational]) -> Result<[T; 4], OpError> {
+    <[T; 4]>::try_from(arith::all_of::<T>(p)).map_err(|_| {
         OpError::param(param, format!("a homogeneous point has four coordinates [x0, x1, x2, x3], got {}", p.len()))
     })
 }
 
-fn pair(param: &'static str, v: Option<Vec<Rational>>) -> Result<(Rational, Rational), OpError> {
+fn pair<T: OpScalar>(param: &'static str, v: Option<Vec<Rational>>) -> Result<(T, T), OpError> {
     let v = v.unwrap_or_default();
     match v.as_slice() {
-        [a, b] => Ok((a.clone(), b.clone())),
+        [a, b] => Ok((arith::of(a), arith::of(b))),
         _ => Err(OpError::param(param, format!("an interval has two numbers, got {}", v.len()))),
     }
 }
 
-fn build_strips(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let pts: Vec<[Rational; 4]> = args
+/// `line_congruence_strips` in `T`.
+pub(crate) fn build_strips<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let pts: Vec<[T; 4]> = args
         .points("points")?
         .iter()
         .map(|p| four("points", p))
@@ -116,13 +118,16 @@ fn build_strips(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             need(5)?;
             CongruenceSpec::PencilBundle(core::array::from_fn(|k| pts[k].clone()))
         }
+        "reguli" if !T::EXACT => {
+            return Err(OpError::param("congruence", crate::float::REGULI_REFUSED));
+        }
         "reguli" => {
             need(12)?;
-            let r = |o: usize| -> [[Rational; 4]; 6] { core::array::from_fn(|k| pts[o + k].clone()) };
+            let r = |o: usize| -> [[T; 4]; 6] { core::array::from_fn(|k| pts[o + k].clone()) };
             CongruenceSpec::Reguli(Box::new([r(0), r(6)]))
         }
         "ruled_tangents" => {
-            let ruling: Vec<[Rational; 4]> = args
+            let ruling: Vec<[T; 4]> = args
                 .get("ruling")
                 .map(|_| args.points("ruling"))
                 .transpose()?
@@ -130,11 +135,11 @@ fn build_strips(args: &OpArgs) -> Result<Vec<Object>, OpError> {
                 .iter()
                 .map(|p| four("ruling", p))
                 .collect::<Result<_, _>>()?;
-            CongruenceSpec::RuledSurfaceTangents(pts, ruling, args.number("t0")?)
+            CongruenceSpec::RuledSurfaceTangents(pts, ruling, arith::number(args, "t0")?)
         }
         _ => {
             need(2)?;
-            let curve: Vec<[Rational; 4]> = args
+            let curve: Vec<[T; 4]> = args
                 .get("curve")
                 .map(|_| args.points("curve"))
                 .transpose()?
@@ -147,11 +152,12 @@ fn build_strips(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     };
     let u = pair("u", args.opt_numbers("u")?)?;
     let lambda = pair("lambda", args.opt_numbers("lambda")?)?;
-    let v = args.opt_numbers("v")?.unwrap_or_default();
-    let twist = args.number("twist")?;
+    let v = arith::all_of::<T>(&args.opt_numbers("v")?.unwrap_or_default());
+    let twist: T = arith::number(args, "twist")?;
     let d = congruence_strips(&spec, u, &v, &twist, lambda)
         .map_err(|e| OpError::param("points", e.to_string()))?;
-    Ok(vec![args.object(Geometry::Patches(d.patches), d.certificates)])
+    let geometry = Geometry::Patches(arith::exact_patches(d.patches)?);
+    Ok(vec![arith::object::<T>(args, geometry, d.certificates)])
 }
 
 const LINE_CONGRUENCE_PARAMETRIZED: OpSpec = OpSpec {

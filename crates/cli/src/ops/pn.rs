@@ -148,6 +148,33 @@ fn three_polys(args: &OpArgs, param: &'static str) -> Result<[RatFn<Q>; 3], OpEr
     n_polys(args, param, "x, y, z")
 }
 
+/// An exact rational function of the input in `T`.
+fn ratfn_in<T: OpScalar>(f: &RatFn<Q>) -> RatFn<T> {
+    RatFn {
+        num: poly_io::mpoly_in(&f.num),
+        den: poly_io::mpoly_in(&f.den),
+    }
+}
+
+/// Exact rational functions of the input in `T`.
+fn ratfns_in<T: OpScalar, const N: usize>(f: &[RatFn<Q>; N]) -> [RatFn<T>; N] {
+    core::array::from_fn(|i| ratfn_in(&f[i]))
+}
+
+/// The splitting `p₁² + p₂²` of a cone-family envelope (Peternell Thm 4.5) as `T` needs
+/// it: `None` for exact scalars (the construction searches it over Q itself), the exact
+/// splitting of the exact input for `f64` — whether a polynomial is a sum of two squares
+/// over Q is exact-only algebra, so the float path decides it on the recipe's exact
+/// numbers (`exact` builds the exact envelope) and runs the construction in `f64` with it.
+fn exact_splitting<T: OpScalar>(
+    exact: impl FnOnce() -> Result<[RatFn<Q>; 2], OpError>,
+) -> Result<Option<[RatFn<T>; 2]>, OpError> {
+    if T::EXACT {
+        return Ok(None);
+    }
+    Ok(Some(ratfns_in(&exact()?)))
+}
+
 fn domain<T: OpScalar>(args: &OpArgs) -> Result<Domain<T>, OpError> {
     let d = args.opt_numbers("domain")?.unwrap_or_default();
     if d.len() != 4 {
@@ -384,11 +411,11 @@ points = [[0, 0, 0], ["-4/5", 0, "-2/5"], [0, "-2/5", "-1/5"], ["-3/4", "-1/4", 
 normals = [[0, 0, -1], ["4/5", 0, "-3/5"], [0, "4/5", "-3/5"], ["2/3", "2/3", "-1/3"]]
 triangles = [[0, 1, 3], [0, 3, 2]]
 "#,
-    build: build_model,
+    build: build_model::<Rational>,
 };
 
-fn point3(p: &[Q], param: &'static str, i: usize) -> Result<[Q; 3], OpError> {
-    <[Q; 3]>::try_from(p.to_vec()).map_err(|_| {
+fn point3<T: OpScalar>(p: &[Q], param: &'static str, i: usize) -> Result<[T; 3], OpError> {
+    <[T; 3]>::try_from(arith::all_of::<T>(p)).map_err(|_| {
         OpError::param(
             param,
             format!("entry {i} must have three coordinates, got {}", p.len()),
@@ -406,7 +433,8 @@ fn model_error(e: PnError) -> OpError {
     OpError::param(param, msg)
 }
 
-fn build_model(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `pn_model` in `T`.
+pub(crate) fn build_model<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let points = args.points("points")?;
     let normals = args.points("normals")?;
     if points.len() != normals.len() {
@@ -422,7 +450,7 @@ fn build_model(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let mut data = Vec::with_capacity(points.len());
     for (i, (p, n)) in points.iter().zip(&normals).enumerate() {
         data.push(
-            HermiteDatum::new(point3(p, "points", i)?, point3(n, "normals", i)?)
+            HermiteDatum::<T>::new(point3(p, "points", i)?, point3(n, "normals", i)?)
                 .map_err(|e| OpError::param("normals", format!("datum {i}: {e}")))?,
         );
     }
@@ -453,42 +481,44 @@ fn build_model(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 }
 
 /// The model's object (with its offsets, one object per distance).
-fn model_objects(
+fn model_objects<T: OpScalar>(
     args: &OpArgs,
-    model: &PnModel<Q>,
+    model: &PnModel<T>,
     param: &'static str,
 ) -> Result<Vec<Object>, OpError> {
-    let patches = |m: &PnModel<Q>| -> Result<Vec<_>, OpError> {
-        m.pieces()
+    let patches = |m: &PnModel<T>| -> Result<Vec<_>, OpError> {
+        let ps = m
+            .pieces()
             .iter()
             .map(|p| p.patch().map_err(|e| OpError::new(e.to_string())))
-            .collect()
+            .collect::<Result<Vec<_>, _>>()?;
+        arith::exact_patches(ps)
     };
     let mut certs = model.certify();
     certs.push(regularity_cert(model, param)?);
     let main = match main_offset(args)? {
         None => patches(model)?,
         Some(d) => {
-            let off = model.offset(d).map_err(blame("offset"))?;
+            let off = model.offset(arith::of(&d)).map_err(blame("offset"))?;
             certs.extend(prefixed("offset model: ", off.certify()));
             certs.push(regularity_cert(&off, "offset")?);
             patches(&off)?
         }
     };
-    let mut out = vec![args.object(Geometry::Patches(main), certs)];
+    let mut out = vec![arith::object::<T>(args, Geometry::Patches(main), certs)];
     for (k, d) in distances(args)?.into_iter().enumerate() {
-        let off = model.offset(d.clone()).map_err(blame("distances"))?;
+        let off = model.offset(arith::of(&d)).map_err(blame("distances"))?;
         let mut c = off.certify();
         c.push(regularity_cert(&off, "distances").map_err(|e| OpError {
             message: format!("distance {} (entry {k}): {}", format_rational(&d), e.message),
             param: e.param,
         })?);
-        out.push(offset_object(args, k, &d, Geometry::Patches(patches(&off)?), c));
+        out.push(T::finish(offset_object(args, k, &d, Geometry::Patches(patches(&off)?), c)));
     }
     Ok(out)
 }
 
-fn regularity_cert(model: &PnModel<Q>, param: &'static str) -> Result<Certificate, OpError> {
+fn regularity_cert<T: OpScalar>(model: &PnModel<T>, param: &'static str) -> Result<Certificate, OpError> {
     model.check_regular().map_err(|e| {
         OpError::param(
             param,
@@ -497,7 +527,7 @@ fn regularity_cert(model: &PnModel<Q>, param: &'static str) -> Result<Certificat
     })?;
     Ok(Certificate::holds(
         "every cyclide piece is regular on its micro-triangle (W ≠ 0, x_u × x_v ≠ 0)",
-        true,
+        T::EXACT,
     ))
 }
 
@@ -537,7 +567,7 @@ curve1 = [[1, 0, 1], ["14/5", 0, "-14/5"], [0, "28/5", 0], ["-3/5", 0, "-3/5"]]
 normal1 = [[1, 0, 1], ["4/5", 0, "-4/5"], [0, "8/5", 0], ["-3/5", 0, "-3/5"]]
 samples = 5
 "#,
-    build: build_loft,
+    build: build_loft::<Rational>,
 };
 
 /// A surface strip: a curve and its unit normal field, rational functions of `t`.
@@ -570,17 +600,24 @@ fn strip(
     Ok((rat(&c, curve)?, rat(&n, normal)?))
 }
 
-fn build_loft(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `pn_loft` in `T` (the strips are sampled in `T`).
+pub(crate) fn build_loft<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let count = args.int("samples")?;
     let n = usize::try_from(count)
         .ok()
         .filter(|n| (2..=32).contains(n))
         .ok_or_else(|| OpError::param("samples", format!("give 2 to 32 samples, got {count}")))?;
-    let params: Vec<Q> = (0..n)
-        .map(|k| Q::from(k as i64) / Q::from((n - 1) as i64))
+    let params: Vec<T> = (0..n)
+        .map(|k| arith::of(&(Q::from(k as i64) / Q::from((n - 1) as i64))))
         .collect();
     let (c0, n0) = strip(args, "curve0", "normal0")?;
     let (c1, n1) = strip(args, "curve1", "normal1")?;
+    let (c0, n0, c1, n1) = (
+        ratfns_in::<T, 3>(&c0),
+        ratfns_in::<T, 3>(&n0),
+        ratfns_in::<T, 3>(&c1),
+        ratfns_in::<T, 3>(&n1),
+    );
     let mut data = HermiteDatum::sample_strip(&c0, &n0, &params).map_err(blame("normal0"))?;
     data.extend(HermiteDatum::sample_strip(&c1, &n1, &params).map_err(blame("normal1"))?);
     let mut triangles = Vec::with_capacity(2 * (n - 1));
@@ -624,13 +661,18 @@ ruling = [[0, 0], [1, 0], [0, 1]]
 domain = ["1/4", 1, "1/4", 1]
 distances = ["1/4"]
 "#,
-    build: build_ruled,
+    build: build_ruled::<Rational>,
 };
 
-fn build_ruled(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `pn_ruled` in `T` (the splitting p₁² + p₂² = |g|² decided on the exact input).
+pub(crate) fn build_ruled<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let l = three_polys(args, "directrix")?;
     let g = three_polys(args, "ruling")?;
-    let ruled = RuledPn::new(l, g, None).map_err(blame("ruling"))?;
+    let p = exact_splitting::<T>(|| {
+        let exact = RuledPn::<Q>::new(l.clone(), g.clone(), None).map_err(blame("ruling"))?;
+        Ok(exact.envelope().p().clone())
+    })?;
+    let ruled = RuledPn::<T>::new(ratfns_in(&l), ratfns_in(&g), p).map_err(blame("ruling"))?;
     // every point on its ruling, tangent planes through both point families (l; 0), (l + g; 0)
     let mut certs = prefixed("ruled: ", ruled.on_ruling_certificates());
     certs.extend(prefixed("ruled: ", ruled.envelope().tangency_certificates()));
@@ -664,10 +706,11 @@ radius = ["1/2"]
 domain = [0, 1, 0, 1]
 distances = ["1/4"]
 "#,
-    build: build_canal,
+    build: build_canal::<Rational>,
 };
 
-fn build_canal(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `pn_canal` in `T` (the splitting p₁² + p₂² = |m′|² − r′² decided on the exact input).
+pub(crate) fn build_canal<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let m = three_polys(args, "spine")?;
     // the negative orientation envelopes the oriented family (m; −r), as the canal ops do:
     // the radius is read with the orientation's sign
@@ -679,9 +722,21 @@ fn build_canal(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     };
     let r = poly_from_list(&radius)?;
     let one = poly_io::mpoly_constant(2, Q::from(1));
-    let fam = CycleFamily::new([m[0].num.clone(), m[1].num.clone(), m[2].num.clone()], r, one)
-        .map_err(blame("spine"))?;
-    let canal = CanalPn::new(fam, None).map_err(blame("radius"))?;
+    let family = |r: &MPolyQ, one: &MPolyQ| {
+        CycleFamily::<T>::new(
+            [0, 1, 2].map(|i| poly_io::mpoly_in(&m[i].num)),
+            poly_io::mpoly_in(r),
+            poly_io::mpoly_in(one),
+        )
+        .map_err(blame("spine"))
+    };
+    let p = exact_splitting::<T>(|| {
+        let fam = CycleFamily::<Q>::new([0, 1, 2].map(|i| m[i].num.clone()), r.clone(), one.clone())
+            .map_err(blame("spine"))?;
+        let exact = CanalPn::new(fam, None).map_err(blame("radius"))?;
+        Ok(exact.envelope().p().clone())
+    })?;
+    let canal = CanalPn::new(family(&r, &one)?, p).map_err(blame("radius"))?;
     let certs = prefixed("canal: ", canal.on_spheres_certificates());
     surface_objects(args, canal.surface(), &domain(args)?, certs, "domain")
 }
@@ -838,11 +893,12 @@ curve = [[0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, "1/3"]]
 domain = [1, 2, -60, -4]
 distances = ["1/4"]
 "#,
-    build: build_developable,
+    build: build_developable::<Rational>,
 };
 
-fn build_developable(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let dev = developable_arg(args)?;
+/// `pn_developable` in `T`.
+pub(crate) fn build_developable<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let dev = developable_arg::<T>(args)?;
     let certs = prefixed("developable: ", dev.ruling_certificates());
     if matches!(args.get("form"), Some(Value::Str(f)) if f == "foot") {
         let foot = dev.foot_point_surface().map_err(blame("curve"))?;
@@ -852,10 +908,13 @@ fn build_developable(args: &OpArgs) -> Result<Vec<Object>, OpError> {
 }
 
 /// The developable of the `curve`/`denominator` parameters (shared by the developable ops).
-fn developable_arg(args: &OpArgs) -> Result<DevelopablePn<Q>, OpError> {
+fn developable_arg<T: OpScalar>(args: &OpArgs) -> Result<DevelopablePn<T>, OpError> {
     let c = three_polys(args, "curve")?;
     let den = poly_from_list(&args.opt_numbers("denominator")?.unwrap_or_else(|| vec![Q::from(1)]))?;
-    let [y1, y2, y3] = c.map(|ci| RatFn::new(ci.num, den.clone()).map_err(blame("denominator")));
+    let den = poly_io::mpoly_in::<T>(&den);
+    let [y1, y2, y3] = c.map(|ci| {
+        RatFn::new(poly_io::mpoly_in(&ci.num), den.clone()).map_err(blame("denominator"))
+    });
     DevelopablePn::from_isotropic_curve(&[y1?, y2?, y3?]).map_err(blame("curve"))
 }
 
@@ -893,21 +952,21 @@ curve = [[0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, "1/3"]]
 interval = [1, "3/2"]
 distances = ["1/4"]
 "#,
-    build: build_developable_edge,
+    build: build_developable_edge::<Rational>,
 };
 
-fn build_developable_edge(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let dev = developable_arg(args)?;
+/// `pn_developable_edge` in `T`.
+pub(crate) fn build_developable_edge<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let dev = developable_arg::<T>(args)?;
     let iv = args.opt_numbers("interval")?.unwrap_or_else(|| vec![Q::from(0), Q::from(1)]);
-    let [t0, t1]: [Q; 2] = <[Q; 2]>::try_from(iv)
-        .map_err(|_| OpError::param("interval", "give two numbers [t0, t1]"))?;
+    let [t0, t1]: [T; 2] = arith::array(&iv, "interval", "give two numbers [t0, t1]")?;
     let edge = dev.edge_of_regression().map_err(blame("curve"))?;
     let mut certs = prefixed("developable: ", dev.certify());
     certs.extend(edge.certify());
     let bez = edge.curve(&t0, &t1).map_err(blame("interval"))?;
-    let mut out = vec![args.object(Geometry::Curve(bez), certs)];
+    let mut out = vec![arith::object::<T>(args, Geometry::Curve(T::exact_curve(bez)?), certs)];
     for (k, d) in distances(args)?.into_iter().enumerate() {
-        let off = dev.offset_edge(d.clone()).map_err(blame("distances"))?;
+        let off = dev.offset_edge(arith::of(&d)).map_err(blame("distances"))?;
         let c = off.certify();
         let bez = off.curve(&t0, &t1).map_err(|e| {
             OpError::param(
@@ -915,7 +974,8 @@ fn build_developable_edge(args: &OpArgs) -> Result<Vec<Object>, OpError> {
                 format!("distance {} (entry {k}): {e}", format_rational(&d)),
             )
         })?;
-        out.push(offset_object(args, k, &d, Geometry::Curve(bez), c));
+        let geometry = Geometry::Curve(T::exact_curve(bez)?);
+        out.push(T::finish(offset_object(args, k, &d, geometry, c)));
     }
     Ok(out)
 }
@@ -951,12 +1011,13 @@ translation = [[0, "-1/4"], [0, 0], [0, 0]]
 domain = ["3/2", 4, "-6/5", "6/5"]
 distances = ["1/2"]
 "#,
-    build: build_developable_motion,
+    build: build_developable_motion::<Rational>,
 };
 
-fn build_developable_motion(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let dev = developable_arg(args)?;
-    let fam = laguerre_family(args)?;
+/// `pn_developable_motion` in `T`.
+pub(crate) fn build_developable_motion<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let dev = developable_arg::<T>(args)?;
+    let fam = laguerre_family::<T>(args)?;
     let env = DevelopableMotionEnvelope::new(&dev, &fam).map_err(blame("translation"))?;
     let mut certs = prefixed("developable: ", dev.certify());
     certs.extend(env.family().certificates());
@@ -983,12 +1044,12 @@ const LAGUERRE_FAMILY: ParamSpec = ParamSpec::optional(
 
 /// The family of the `family` parameter (any (4.21) family), else the screw family of the
 /// `axis` and `translation` parameters.
-fn laguerre_family(args: &OpArgs) -> Result<LaguerreFamily<Q>, OpError> {
+fn laguerre_family<T: OpScalar>(args: &OpArgs) -> Result<LaguerreFamily<T>, OpError> {
     if args.get("family").is_none() {
         return screw_family(args);
     }
     let rows: [RatFn<Q>; 21] = n_polys(args, "family", "w, a₁…a₄, A₁₁…A₄₄")?;
-    let p = |i: usize| rows[i].num.clone();
+    let p = |i: usize| poly_io::mpoly_in::<T>(&rows[i].num);
     LaguerreFamily::new(
         p(0),
         [p(1), p(2), p(3), p(4)],
@@ -998,7 +1059,7 @@ fn laguerre_family(args: &OpArgs) -> Result<LaguerreFamily<Q>, OpError> {
 }
 
 /// The screw family of the `axis` and `translation` parameters.
-fn screw_family(args: &OpArgs) -> Result<LaguerreFamily<Q>, OpError> {
+fn screw_family<T: OpScalar>(args: &OpArgs) -> Result<LaguerreFamily<T>, OpError> {
     if args.get("translation").is_none() {
         return Err(OpError::param(
             "translation",
@@ -1011,15 +1072,14 @@ fn screw_family(args: &OpArgs) -> Result<LaguerreFamily<Q>, OpError> {
         _ => 2,
     };
     let b = three_polys(args, "translation")?;
-    LaguerreFamily::screw_about(axis, [b[0].num.clone(), b[1].num.clone(), b[2].num.clone()])
+    LaguerreFamily::screw_about(axis, [0, 1, 2].map(|i| poly_io::mpoly_in(&b[i].num)))
         .map_err(blame("translation"))
 }
 
 /// A cycle `[m₁, m₂, m₃, r]` parameter.
-fn cycle_arg(args: &OpArgs, param: &'static str) -> Result<Cycle<Q>, OpError> {
+fn cycle_arg<T: OpScalar>(args: &OpArgs, param: &'static str) -> Result<Cycle<T>, OpError> {
     let p = args.opt_point(param)?.unwrap_or_default();
-    let [m1, m2, m3, r]: [Q; 4] = <[Q; 4]>::try_from(p)
-        .map_err(|_| OpError::param(param, "give a cycle [m1, m2, m3, r]"))?;
+    let [m1, m2, m3, r]: [T; 4] = arith::array(&p, param, "give a cycle [m1, m2, m3, r]")?;
     Cycle::new([m1, m2, m3], r).map_err(|e| OpError::param(param, e.to_string()))
 }
 
@@ -1062,13 +1122,14 @@ translation = [[0, 1, 0], [0, 0, "1/2"], [0, 0, 0]]
 domain = ["1/4", "3/4", "1/4", "3/4"]
 distances = ["1/4"]
 "#,
-    build: build_cone_motion,
+    build: build_cone_motion::<Rational>,
 };
 
-fn build_cone_motion(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let c1 = cycle_arg(args, "cycle1")?;
-    let c2 = cycle_arg(args, "cycle2")?;
-    let fam = laguerre_family(args)?;
+/// `pn_cone_motion` in `T`.
+pub(crate) fn build_cone_motion<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let c1 = cycle_arg::<T>(args, "cycle1")?;
+    let c2 = cycle_arg::<T>(args, "cycle2")?;
+    let fam = laguerre_family::<T>(args)?;
     let env = moved_cone_envelope(&c1, &c2, &fam).map_err(blame("cycle2"))?;
     let (f1, f2) = env.families();
     let mut certs = fam.certificates();
@@ -1368,29 +1429,30 @@ b = 13
 c = 3
 domain = ["3/2", 3, "1/4", 1]
 "#,
-    build: build_pn_two_sheet,
+    build: build_pn_two_sheet::<Rational>,
 };
 
-fn build_pn_two_sheet(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let h = TwoSheetPn::<Q>::new(args.number("a")?, args.number("b")?, args.number("c")?)
-        .map_err(blame("c"))?;
+/// `pn_two_sheet_hyperboloid` in `T`.
+pub(crate) fn build_pn_two_sheet<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let n = |k: &'static str| arith::number::<T>(args, k);
+    let h = TwoSheetPn::<T>::new(n("a")?, n("b")?, n("c")?).map_err(blame("c"))?;
     two_sheet_objects(args, &h)
 }
 
 /// The objects of the two-sheet hyperboloid's unirational PN parametrization with the
 /// tangency certificates on the base surface and on every offset.
-fn two_sheet_objects(args: &OpArgs, h: &TwoSheetPn<Q>) -> Result<Vec<Object>, OpError> {
+fn two_sheet_objects<T: OpScalar>(args: &OpArgs, h: &TwoSheetPn<T>) -> Result<Vec<Object>, OpError> {
     let s = oriented(args, h.surface());
     let mut certs = vec![h.quadric_certificate()];
     certs.extend(h.tangency_certificates(h.surface()));
     if let Some(d) = main_offset(args)? {
-        certs.extend(h.tangency_certificates(s.offset(d).surface()));
+        certs.extend(h.tangency_certificates(s.offset(arith::of(&d)).surface()));
     }
     let mut objs = surface_objects(args, &s, &domain(args)?, certs, "domain")?;
     for (k, d) in distances(args)?.into_iter().enumerate() {
         if let Some(o) = objs.get_mut(k + 1) {
             o.certificates
-                .extend(h.tangency_certificates(s.offset(d).surface()));
+                .extend(h.tangency_certificates(s.offset(arith::of(&d)).surface()));
         }
     }
     Ok(objs)
@@ -1754,27 +1816,27 @@ boost = "1/3"
 dilatation = "1/2"
 domain = [0, "1/2", 0, "1/2"]
 "#,
-    build: build_laguerre,
+    build: build_laguerre::<Rational>,
 };
 
-fn build_laguerre(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let f = ratfn(args, "coefficients", "denominator")?;
+/// `pn_laguerre` in `T`.
+pub(crate) fn build_laguerre<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let f = ratfn::<T>(args, "coefficients", "denominator")?;
     let base = IsotropicSurface::graph(&f)
         .to_pn_surface()
         .map_err(blame("coefficients"))?;
     let axis = usize::try_from(args.int("boost_axis")?)
         .map_err(|_| OpError::param("boost_axis", "the boost axis must be 0, 1 or 2"))?;
-    let t = args.point("translation")?;
-    let t: [Q; 3] = <[Q; 3]>::try_from(t)
-        .map_err(|_| OpError::param("translation", "the translation needs three coordinates"))?;
-    let map = LaguerreMap::similarity(args.number("scale")?)
+    let t: [T; 3] =
+        arith::point(args, "translation", "the translation needs three coordinates")?;
+    let map = LaguerreMap::similarity(arith::number::<T>(args, "scale")?)
         .map_err(|e| OpError::param("scale", e.to_string()))?
         .compose(
-            &LaguerreMap::boost(axis, args.number("boost")?)
+            &LaguerreMap::boost(axis, arith::number(args, "boost")?)
                 .map_err(|e| OpError::param("boost", e.to_string()))?,
         )
         .compose(&LaguerreMap::translation(t))
-        .compose(&LaguerreMap::dilatation(args.number("dilatation")?));
+        .compose(&LaguerreMap::dilatation(arith::number(args, "dilatation")?));
     let image = base.laguerre_image(&map).map_err(blame("boost"))?;
     let certs = prefixed("Laguerre map: ", map.certify());
     surface_objects(args, &oriented(args, &image), &domain(args)?, certs, "domain")
@@ -1811,10 +1873,11 @@ mirror = [[0, 0, 0, "-1/5"], [0, 1, 0, 0], ["1/3", 0, 0, 0]]
 level = -1
 domain = [0, "1/2", 0, "1/2"]
 "#,
-    build: build_anticaustic,
+    build: build_anticaustic::<Rational>,
 };
 
-fn build_anticaustic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `pn_anticaustic` in `T`.
+pub(crate) fn build_anticaustic<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let g = args.opt_grid("mirror")?.unwrap_or_default();
     let f = poly_from_grid(&g)?;
     let mirror = [
@@ -1822,8 +1885,9 @@ fn build_anticaustic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         poly_io::mpoly_var(2, 0),
         poly_io::mpoly_var(2, 1),
         f,
-    ];
-    let c = args.number("level")?;
+    ]
+    .map(|p| poly_io::mpoly_in::<T>(&p));
+    let c: T = arith::number(args, "level")?;
     let surface = anticaustic(&mirror, &c).map_err(blame("mirror"))?;
     let certs = prefixed("anticaustic: ", anticaustic_certificates(&mirror, &surface));
     surface_objects(args, &oriented(args, &surface), &domain(args)?, certs, "mirror")
@@ -1864,19 +1928,25 @@ function = ["1/2", -2, 0, 1]
 interval = [0, "1/2"]
 distances = ["1/10", "-1/10"]
 "#,
-    build: build_planar,
+    build: build_planar::<Rational>,
 };
 
-fn build_planar(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `pn_planar` in `T`.
+pub(crate) fn build_planar<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let num = poly_from_list(&args.opt_numbers("function")?.unwrap_or_default())?;
     let den = match args.opt_numbers("denominator")? {
+        // a rational F: the exact op cancels common factors of the point over Q, which
+        // f64 does not find (the fuzzer's finding: degree 5 in f64, 4 exact)
+        Some(d) if !T::EXACT && d.iter().skip(1).any(|c| !c.is_zero()) => {
+            return Err(OpError::param("denominator", crate::float::RATIONAL_F_REFUSED));
+        }
         Some(d) => poly_from_list(&d)?,
         None => poly_io::mpoly_constant(2, Q::from(1)),
     };
-    let f = RatFn::new(num, den).map_err(blame("denominator"))?;
+    let f = RatFn::<T>::new(poly_io::mpoly_in(&num), poly_io::mpoly_in(&den))
+        .map_err(blame("denominator"))?;
     let iv = args.opt_numbers("interval")?.unwrap_or_default();
-    let [t0, t1]: [Q; 2] = <[Q; 2]>::try_from(iv)
-        .map_err(|_| OpError::param("interval", "give two numbers [t0, t1]"))?;
+    let [t0, t1]: [T; 2] = arith::array(&iv, "interval", "give two numbers [t0, t1]")?;
     let curve = PnCurve::from_graph(&f).map_err(blame("function"))?;
     let curve = if negative_orientation(args) {
         curve.opposite()
@@ -1888,16 +1958,16 @@ fn build_planar(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let bez = match main_offset(args)? {
         None => curve.curve(&t0, &t1).map_err(blame("interval"))?,
         Some(d) => {
-            let off = curve.offset(d);
+            let off = curve.offset(arith::of(&d));
             certs.extend(off.certify());
             certs.extend(off.offset_certificates(&curve));
             certs.push(off.check_regular(&t0, &t1).map_err(blame("offset"))?);
             off.curve(&t0, &t1).map_err(blame("offset"))?
         }
     };
-    let mut out = vec![args.object(Geometry::Curve(bez), certs)];
+    let mut out = vec![arith::object::<T>(args, Geometry::Curve(T::exact_curve(bez)?), certs)];
     for (k, d) in distances(args)?.into_iter().enumerate() {
-        let off = curve.offset(d.clone());
+        let off = curve.offset(arith::of(&d));
         let mut c = off.certify();
         c.extend(off.offset_certificates(&curve));
         c.push(off.check_regular(&t0, &t1).map_err(|e| {
@@ -1907,7 +1977,8 @@ fn build_planar(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             )
         })?);
         let bez = off.curve(&t0, &t1).map_err(blame("interval"))?;
-        out.push(offset_object(args, k, &d, Geometry::Curve(bez), c));
+        let geometry = Geometry::Curve(T::exact_curve(bez)?);
+        out.push(T::finish(offset_object(args, k, &d, geometry, c)));
     }
     Ok(out)
 }

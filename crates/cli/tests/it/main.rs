@@ -13,6 +13,7 @@ mod docs;
 mod exchange_weights;
 mod float;
 mod float_geo;
+mod float_pn;
 mod fuzz;
 mod fuzz_corpus;
 mod library_first;

@@ -20,7 +20,10 @@
 //! [`crate::ph::PhCurve`] (Hopf form `α = u`, `β = v`, both real), with which
 //! [`PnCurve::from_ph_preimage`] agrees (tests).
 
-use super::poly::{cancel_common, identity_cert, int, normalize_content, pad_eval, var, RatFn};
+use super::poly::{
+    abs_mpoly, cancel_common, identity_cert, identity_cert_within, int, normalize_content,
+    pad_eval, var, RatFn,
+};
 use super::surface::PnSurface;
 use super::PnError;
 use crate::error::format_scalar;
@@ -397,22 +400,30 @@ impl<F: Scalar> PnCurve<F> {
         ))
     }
 
-    /// The certificates of an offset of `base` at distance `d`: `x_d − x ≡ d n`.
+    /// The certificates of an offset of `base` at distance `d`: `x_d − x ≡ d n`, i.e.
+    /// `(X_d W − X W_d)·N₀ ≡ d·W·W_d·N` componentwise (in `f64` each residual coefficient
+    /// is compared with the magnitude of the terms that make it up,
+    /// `(|X_d||W| + |X||W_d|)|N₀| + |d||W||W_d||N|`, not with the already cancelled
+    /// sides).
     pub fn offset_certificates(&self, base: &PnCurve<F>) -> Vec<Certificate> {
         let d = self.distance.clone() - base.distance.clone();
+        let (o, b, n) = (&self.point, &base.point, &base.normal);
         (1..3)
             .map(|i| {
-                let lhs = &(&(&self.point[i] * &base.point[0])
-                    - &(&base.point[i] * &self.point[0]))
-                    * &base.normal[0];
-                let rhs = (&(&base.point[0] * &self.point[0]) * &base.normal[i]).scale(&d);
-                identity_cert(
+                let lhs = &(&(&o[i] * &b[0]) - &(&b[i] * &o[0])) * &n[0];
+                let rhs = (&(&b[0] * &o[0]) * &n[i]).scale(&d);
+                within(
                     &format!(
                         "planar offset at distance {}: x_d − x ≡ d n (component {i})",
                         format_scalar(&d)
                     ),
                     &lhs,
                     &rhs,
+                    || {
+                        let a = |p: &MPoly<F>| abs_mpoly(p);
+                        &(&(&(&a(&o[i]) * &a(&b[0])) + &(&a(&b[i]) * &a(&o[0]))) * &a(&n[0]))
+                            + &(&(&a(&b[0]) * &a(&o[0])) * &a(&n[i])).scale(&d.to_f64().abs())
+                    },
                 )
             })
             .collect()
@@ -424,21 +435,32 @@ impl<F: Scalar> Certified for PnCurve<F> {
     fn certify(&self) -> Vec<Certificate> {
         let [w, x1, x2] = &self.point;
         let [n0, n1, n2] = &self.normal;
-        let mut out = vec![identity_cert(
+        // in f64 the product identities compare each residual coefficient with the
+        // magnitude of its terms (`within`), so that cancellation in a side does not
+        // shrink the tolerance
+        let a = |p: &MPoly<F>| abs_mpoly(p);
+        let mut out = vec![within(
             "planar PH: N₁² + N₂² ≡ N₀² (rational unit normal)",
             &(&(n1 * n1) + &(n2 * n2)),
             &(n0 * n0),
+            || &(&(&a(n1) * &a(n1)) + &(&a(n2) * &a(n2))) + &(&a(n0) * &a(n0)),
         )];
+        // K is a quotient (an f64 division accepts a remainder): the sides' scale
         if let Some(k) = &self.cofactor {
             out.push(identity_cert("planar PH: W ≡ N₀K", w, &(n0 * k)));
         }
         let wp = w.partial(0);
-        let t1 = &(&x1.partial(0) * w) - &(x1 * &wp);
-        let t2 = &(&x2.partial(0) * w) - &(x2 * &wp);
-        out.push(identity_cert(
+        let (x1p, x2p) = (x1.partial(0), x2.partial(0));
+        let t1 = &(&x1p * w) - &(x1 * &wp);
+        let t2 = &(&x2p * w) - &(x2 * &wp);
+        out.push(within(
             "planar PH: n ⟂ x': N·(X'W − XW') ≡ 0",
             &(n1 * &t1),
             &(-(n2 * &t2)),
+            || {
+                let t = |xp: &MPoly<F>, x: &MPoly<F>| &(&a(xp) * &a(w)) + &(&a(x) * &a(&wp));
+                &(&a(n1) * &t(&x1p, x1)) + &(&a(n2) * &t(&x2p, x2))
+            },
         ));
         let lhs = &(&self.support.num * n0) * w;
         let rhs = -(&self.support.den * &(&(n1 * x1) + &(n2 * x2)));
@@ -448,6 +470,21 @@ impl<F: Scalar> Certified for PnCurve<F> {
             &rhs,
         ));
         out
+    }
+}
+
+/// `lhs ≡ rhs`: exactly for exact scalars; in `f64` coefficientwise against the magnitude
+/// polynomial `magnitude()` of the terms ([`identity_cert_within`]).
+fn within<F: Scalar>(
+    property: &str,
+    lhs: &MPoly<F>,
+    rhs: &MPoly<F>,
+    magnitude: impl FnOnce() -> MPoly<f64>,
+) -> Certificate {
+    if F::EXACT {
+        identity_cert(property, lhs, rhs)
+    } else {
+        identity_cert_within(property, lhs, rhs, &magnitude())
     }
 }
 
