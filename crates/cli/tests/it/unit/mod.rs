@@ -7,6 +7,8 @@ mod fuzz_float_check;
 mod fuzz_gen;
 mod gallery;
 mod limits;
+mod ops_canal;
+mod ops_pn;
 mod ops_poly_io;
 mod recipe;
 mod recipe_json;
