@@ -31,6 +31,7 @@ pub mod pn;
 pub mod quadric;
 
 mod certs;
+mod pivot;
 
 pub use conic::{circle_arcs, full_circle, CircleArc, CircleArcs, FullCircle};
 pub use cylinder::{cylinder_patches, CylinderPatch};

@@ -254,18 +254,7 @@ impl Route {
 /// [`Matrix::null_space`]). For kernels a certificate only needs to be *some* basis of.
 pub(crate) fn null_space_rounded<F: Scalar>(rows: &[Vec<F>]) -> Vec<Vec<F>> {
     let cols = rows.first().map_or(0, Vec::len);
-    let scale = rows
-        .iter()
-        .flatten()
-        .map(|x| x.to_f64().abs())
-        .fold(0.0, f64::max);
-    let tiny = |x: &F| {
-        if F::EXACT {
-            x.is_zero()
-        } else {
-            x.to_f64().abs() <= 1e-10 * scale
-        }
-    };
+    let tiny = crate::pivot::pivot_zero_test(rows, 1e-10);
     let mut m: Vec<Vec<F>> = rows.to_vec();
     let mut pivots = Vec::new();
     let mut r = 0;

@@ -406,18 +406,7 @@ impl<F: Scalar> PnHypersurface<F> {
 /// The rank of a matrix of scalars (Gaussian elimination; `f64` pivots below `10⁻⁹` of the
 /// largest entry count as zero).
 fn numeric_rank<F: Scalar>(mut m: Vec<Vec<F>>) -> usize {
-    let big = m
-        .iter()
-        .flatten()
-        .map(|x| x.to_f64().abs())
-        .fold(0.0, f64::max);
-    let tiny = |x: &F| {
-        if F::EXACT {
-            x.is_zero()
-        } else {
-            x.to_f64().abs() <= 1e-9 * big
-        }
-    };
+    let tiny = crate::pivot::pivot_zero_test(&m, 1e-9);
     let cols = m.first().map_or(0, Vec::len);
     let mut r = 0;
     for c in 0..cols {
