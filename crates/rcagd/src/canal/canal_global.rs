@@ -520,7 +520,7 @@ impl PieceSearch {
 type Key = (usize, u64);
 
 /// Longest run of tiles Lemma A is tried on (longer runs cannot pass).
-const LEMMA_A_RUN: usize = 4;
+const LEMMA_A_RUN: usize = 8;
 
 /// The subdivision state of a chain of pieces (one piece for a single spine).
 struct Search {
@@ -834,10 +834,22 @@ pub fn check_canal_chain_embedded_within(
         })?;
     }
     let smooth: Vec<bool> = (0..n - 1)
-        .map(|k| joins_smoothly(&chain[k].0, &chain[k].1 .1, &chain[k + 1].0, &chain[k + 1].1 .0))
+        .map(|k| {
+            joins_smoothly(
+                &chain[k].0,
+                &chain[k].1 .1,
+                &chain[k + 1].0,
+                &chain[k + 1].1 .0,
+            )
+        })
         .collect();
     let closed = smooth.iter().all(|s| *s)
-        && joins_smoothly(&chain[n - 1].0, &chain[n - 1].1 .1, &chain[0].0, &chain[0].1 .0);
+        && joins_smoothly(
+            &chain[n - 1].0,
+            &chain[n - 1].1 .1,
+            &chain[0].0,
+            &chain[0].1 .0,
+        );
     // runs of smoothly joined pieces
     let mut runs: Vec<(usize, usize)> = Vec::new();
     let mut start = 0;
@@ -899,10 +911,17 @@ pub fn check_canal_chain_embedded_within(
             "t ∈ [{}, {}]{}",
             format_scalar(&chain[0].1 .0),
             format_scalar(&chain[0].1 .1),
-            if closed { ", a closed spine: t = a and t = b are one point" } else { "" }
+            if closed {
+                ", a closed spine: t = a and t = b are one point"
+            } else {
+                ""
+            }
         )
     } else {
-        format!("{n} spine pieces, {}", if closed { "closed" } else { "open" })
+        format!(
+            "{n} spine pieces, {}",
+            if closed { "closed" } else { "open" }
+        )
     };
     if runs.len() > 1 {
         let cut: Vec<String> = (0..n - 1)
@@ -994,7 +1013,8 @@ fn parameter_range(
                 }
             }
         }
-        let signed = cd.iter().all(|d| *d > Rational::ZERO) || cd.iter().all(|d| *d < Rational::ZERO);
+        let signed =
+            cd.iter().all(|d| *d > Rational::ZERO) || cd.iter().all(|d| *d < Rational::ZERO);
         let hull = signed.then(|| {
             let ratios: Vec<Rational> = cn
                 .iter()
@@ -1117,13 +1137,20 @@ pub fn check_cyclographic_embedded_within(
     );
     if lo == hi {
         return Ok(Certificate::holds(
-            format!("Γ on {rect_text} lies on one characteristic circle (p = {})", format_scalar(lo)),
+            format!(
+                "Γ on {rect_text} lies on one characteristic circle (p = {})",
+                format_scalar(lo)
+            ),
             true,
         ));
     }
     let margin = |boxes: usize| CanalError::CanalPartsNotApart {
         first: format!("[{}, {}]", format_scalar(lo), format_scalar(ilo)),
-        second: format!("[{}, {}] ({reached}; the margins may not be reached)", format_scalar(ihi), format_scalar(hi)),
+        second: format!(
+            "[{}, {}] ({reached}; the margins may not be reached)",
+            format_scalar(ihi),
+            format_scalar(hi)
+        ),
         boxes,
     };
     if spine
