@@ -39,6 +39,13 @@
 //! first; its centre pair is tested exactly for meeting discs first ([`discs_meet`]: an exact
 //! witness refuses the surface). Limits [`CANAL_GLOBAL_DEPTH`] halvings and
 //! [`CANAL_GLOBAL_BOXES`] boxes: then the answer is "undecided", an error naming the box.
+//!
+//! **Chains and closed spines** ([`check_canal_chain_embedded`]): boxes are pairs of dyadic
+//! intervals of any two pieces; Lemma A runs across a joint where the discs run on smoothly
+//! (the same sphere, tangent direction and `g`) and, on a closed chain, through the seam.
+//! **The cyclographic `Γ(s, t)`** ([`check_cyclographic_embedded`]): the discs over an
+//! enclosure of the spine parameters its rectangle reaches (docs/math/pipes.md#canal-global,
+//! "Chains and closed spines" and "On a rectangle of the cyclographic parametrization").
 
 use super::bipoly::BiPoly;
 use super::regularity::{cross, dot};
@@ -854,7 +861,7 @@ pub fn check_canal_chain_embedded_within(
     let mut runs: Vec<(usize, usize)> = Vec::new();
     let mut start = 0;
     for k in 0..n {
-        if k + 1 == n || !smooth[k] {
+        if smooth.get(k).is_none_or(|s| !*s) {
             runs.push((start, k));
             start = k + 1;
         }
@@ -875,8 +882,8 @@ pub fn check_canal_chain_embedded_within(
         match subdivide(&mut search, limits)? {
             Outcome::Certified(b, c) => {
                 total += b;
-                for i in 0..4 {
-                    counts[i] += c[i];
+                for (sum, x) in counts.iter_mut().zip(c) {
+                    *sum += x;
                 }
             }
             Outcome::Meet {
