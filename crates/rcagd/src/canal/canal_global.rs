@@ -1263,4 +1263,70 @@ mod tests {
         assert!(!discs_meet(&circle(q(199, 100)), &q(1, 2), &q(-2, 1)).expect("discs"));
         assert!(discs_meet(&circle(q(2, 1)), &q(1, 2), &q(-2, 1)).expect("discs"));
     }
+
+    #[test]
+    fn parameter_range_encloses_the_image_of_the_rectangle() {
+        // p = (s + t)/(1 + s²) on [−1, 2] × [0, 1]: p = (s + t)/(1 + s²) is largest at
+        // t = 1, s = √2 − 1 (value (1 + √2)/2 ≈ 1.2071) and least at s = −1, t = 0 (−1/2)
+        let num = BiPoly::new(vec![Poly::from_ints(&[0, 1]), Poly::from_ints(&[1])]);
+        let den = BiPoly::from_t(Poly::from_ints(&[1, 0, 1]));
+        let rect = [q(-1, 1), q(2, 1), q(0, 1), q(1, 1)];
+        let r = parameter_range(&num, &den, &rect).expect("range");
+        let (lo, hi) = (q(-1, 2), (1.0 + 2f64.sqrt()) / 2.0);
+        assert!(
+            r.outer.0 <= lo && r.inner.0 == lo,
+            "{:?}",
+            (&r.outer, &r.inner)
+        );
+        let (ihi, ohi) = (Scalar::to_f64(&r.inner.1), Scalar::to_f64(&r.outer.1));
+        assert!(ihi <= hi && hi <= ohi, "{ihi} {hi} {ohi}");
+        assert!(ohi - ihi < 1e-3, "{ihi} {ohi}");
+        // a denominator with a zero on the rectangle is refused
+        let den0 = BiPoly::from_t(Poly::from_ints(&[0, 1]));
+        assert!(parameter_range(&num, &den0, &rect).is_err());
+    }
+
+    #[test]
+    fn joints_run_on_smoothly_only_with_the_same_sphere_tangent_and_g() {
+        // two segments of the x-axis, r = 1 + t/4 then r = 5/4 + t/4: smooth at the joint;
+        // r = 5/4 + t/2 changes dr/dσ (so g); r = 1 + t/4 twice jumps
+        let line = |r: &[Rational]| {
+            CanalSpine::polynomial(
+                [Poly::from_ints(&[0, 1]), Poly::zero(), Poly::zero()],
+                Poly::new(r.to_vec()),
+            )
+        };
+        let first = line(&[q(1, 1), q(1, 4)]);
+        let shifted = |r: &[Rational]| {
+            CanalSpine::polynomial(
+                [Poly::from_ints(&[1, 1]), Poly::zero(), Poly::zero()],
+                Poly::new(r.to_vec()),
+            )
+        };
+        let (zero, one) = (q(0, 1), q(1, 1));
+        assert!(joins_smoothly(
+            &first,
+            &one,
+            &shifted(&[q(5, 4), q(1, 4)]),
+            &zero
+        ));
+        assert!(!joins_smoothly(
+            &first,
+            &one,
+            &shifted(&[q(5, 4), q(1, 2)]),
+            &zero
+        ));
+        assert!(!joins_smoothly(
+            &first,
+            &one,
+            &shifted(&[q(1, 1), q(1, 4)]),
+            &zero
+        ));
+        // the same line at twice the speed: the same g = r dr/dσ needs dr/dt doubled
+        let fast = CanalSpine::polynomial(
+            [Poly::from_ints(&[1, 2]), Poly::zero(), Poly::zero()],
+            Poly::new(vec![q(5, 4), q(1, 2)]),
+        );
+        assert!(joins_smoothly(&first, &one, &fast, &zero));
+    }
 }

@@ -475,6 +475,19 @@ fn closed_chains_wrap_around_and_rough_joints_are_named() {
     // three arcs: open, certified
     let c = check_canal_chain_embedded(&torus[..3]).expect("open");
     assert!(c.holds && c.property.contains("open"), "{}", c.property);
+    // one closed piece: the quintic loop (0, 0), (1, 0), (2, 2), (−2, 2), (−1, 0), (0, 0) leaves
+    // and returns to the origin along +x; as a pipe both checks see the seam
+    let loop5 = piece(&[(0, 0), (1, 0), (2, 2), (-2, 2), (-1, 0), (0, 0)], 1, None);
+    let pipe = CanalSpine::constant_radius(&loop5, &q(1, 20)).expect("spine");
+    let (zero, one) = (q(0, 1), q(1, 1));
+    let c = check_canal_embedded(&pipe, (&zero, &one)).expect("closed loop");
+    assert!(
+        c.holds && c.property.contains("closed spine"),
+        "{}",
+        c.property
+    );
+    let p = check_pipe_embedded(&pipe, (&zero, &one)).expect("closed loop as a pipe");
+    assert!(p.holds && p.property.contains("closed"), "{}", p.property);
     // r = 1/4 + t/8 jumps from 3/8 back to 1/4 at every joint: not smooth, checked run by run
     let jump = &Poly::from_ints(&[2, 1]).scale(&q(1, 8)) * &Poly::from_ints(&[1, 0, 1]);
     let rough = circle_arcs(&jump, 4);
