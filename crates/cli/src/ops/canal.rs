@@ -501,7 +501,7 @@ const CANAL_SURFACE: OpSpec = OpSpec {
         ParamSpec::optional(
             "cyclographic_domain",
             ParamKind::Numbers,
-            "[s0, s1, t0, t1]: when |ṁ|² − ṙ² splits only over Q(√d) and the family is polynomial of degree ≤ 2, the surface is built over Q by the cyclographic parametrization Γ(s, t) of Gruber §2.3 on this rectangle of Ω(s, t) = (2s, 2t, 1 − s² − t², 1 + s² + t²) (not a spine interval); no local self-intersection on the rectangle is certified exactly, a rectangle where the surface is singular is refused at a point of it",
+            "[s0, s1, t0, t1]: when |ṁ|² − ṙ² splits only over Q(√d) and the family is polynomial of degree ≤ 2, the surface is built over Q by the cyclographic parametrization Γ(s, t) of Gruber §2.3 on this rectangle of Ω(s, t) = (2s, 2t, 1 − s² − t², 1 + s² + t²) (not a spine interval); no local self-intersection on the rectangle is certified exactly, and no global one (no two characteristic discs over the spine parameters the rectangle reaches meet); a rectangle where the surface is singular is refused at a point of it, one whose far parts meet at the radius with the two spine-parameter intervals and an exact witness pair",
         ),
     ],
     example: r#"[[object]]

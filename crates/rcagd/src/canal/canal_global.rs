@@ -39,7 +39,15 @@
 //! first; its centre pair is tested exactly for meeting discs first ([`discs_meet`]: an exact
 //! witness refuses the surface). Limits [`CANAL_GLOBAL_DEPTH`] halvings and
 //! [`CANAL_GLOBAL_BOXES`] boxes: then the answer is "undecided", an error naming the box.
+//!
+//! **Chains and closed spines** ([`check_canal_chain_embedded`]): boxes are pairs of dyadic
+//! intervals of any two pieces; Lemma A runs across a joint where the discs run on smoothly
+//! (the same sphere, tangent direction and `g`) and, on a closed chain, through the seam.
+//! **The cyclographic `Γ(s, t)`** ([`check_cyclographic_embedded`]): the discs over an
+//! enclosure of the spine parameters its rectangle reaches (docs/math/pipes.md#canal-global,
+//! "Chains and closed spines" and "On a rectangle of the cyclographic parametrization").
 
+use super::bipoly::BiPoly;
 use super::regularity::{cross, dot};
 use super::{CanalError, CanalSpine};
 use crate::error::format_scalar;
@@ -453,25 +461,29 @@ fn pair_tests(ti: &Tile, tj: &Tile) -> Option<Settled> {
     None
 }
 
-/// The subdivision state: the polynomials and the tiles computed so far.
-struct Search {
+/// One spine piece of the subdivision: its polynomials and the tiles computed so far.
+struct PieceSearch {
+    /// The piece's index in the chain.
+    index: usize,
     a: Rational,
     width: Rational,
     polys: Vec<P>,
     tiles: HashMap<(u32, u64), Rc<Tile>>,
 }
 
-impl Search {
-    fn param(&self, level: u32, k: u64) -> Rational {
-        self.a.clone() + self.width.clone() * Rational::from(k) / Rational::from(1u64 << level)
+impl PieceSearch {
+    fn new(index: usize, spine: &CanalSpine<Rational>, a: &Rational, b: &Rational) -> PieceSearch {
+        PieceSearch {
+            index,
+            a: a.clone(),
+            width: b.clone() - a.clone(),
+            polys: polys(spine),
+            tiles: HashMap::new(),
+        }
     }
 
-    fn interval(&self, level: u32, k: u64) -> String {
-        format!(
-            "[{}, {}]",
-            format_scalar(&self.param(level, k)),
-            format_scalar(&self.param(level, k + 1))
-        )
+    fn param(&self, level: u32, k: u64) -> Rational {
+        self.a.clone() + self.width.clone() * Rational::from(k) / Rational::from(1u64 << level)
     }
 
     fn tile(&mut self, level: u32, k: u64) -> Rc<Tile> {
@@ -509,24 +521,221 @@ impl Search {
         // degree n ≥ every polynomial's degree: cannot fail
         to_bernstein_blocks(&power, COUNT, n).unwrap_or_default()
     }
+}
 
-    /// Tests the box `(level, i, j)`, `i ≤ j`.
-    fn settle(&mut self, level: u32, i: u64, j: u64) -> Option<Settled> {
-        if j > i {
-            let (ti, tj) = (self.tile(level, i), self.tile(level, j));
-            if let Some(s) = pair_tests(&ti, &tj) {
+/// A dyadic interval of one piece at the current level: `(piece, index)`.
+type Key = (usize, u64);
+
+/// Longest run of tiles Lemma A is tried on (longer runs cannot pass).
+const LEMMA_A_RUN: usize = 8;
+
+/// The subdivision state of a chain of pieces (one piece for a single spine).
+struct Search {
+    pieces: Vec<PieceSearch>,
+    /// `smooth[k]`: Lemma A runs across the joint of pieces `k` and `k + 1`.
+    smooth: Vec<bool>,
+    /// The end of the last piece is joined smoothly to the start of the first (a closed
+    /// spine: Lemma A runs across the seam).
+    closed: bool,
+    /// Name the piece in intervals (a chain of more than one piece).
+    named: bool,
+}
+
+impl Search {
+    fn interval(&self, level: u32, (p, k): Key) -> String {
+        let piece = &self.pieces[p];
+        let iv = format!(
+            "[{}, {}]",
+            format_scalar(&piece.param(level, k)),
+            format_scalar(&piece.param(level, k + 1))
+        );
+        if self.named {
+            format!("{iv} (spine piece {})", piece.index)
+        } else {
+            iv
+        }
+    }
+
+    fn centre(&self, level: u32, (p, k): Key) -> Rational {
+        let piece = &self.pieces[p];
+        (piece.param(level, k) + piece.param(level, k + 1)) * Rational::from_ratio(1, 2)
+    }
+
+    /// The tiles from `from` forward to `to` (through joints that are smooth, and through
+    /// the seam of a closed spine), `None` if longer than [`LEMMA_A_RUN`] or blocked.
+    fn run(&mut self, level: u32, from: Key, to: Key) -> Option<Vec<Rc<Tile>>> {
+        let per = 1u64 << level;
+        let mut cur = from;
+        let mut out = vec![self.pieces[cur.0].tile(level, cur.1)];
+        while cur != to {
+            if out.len() >= LEMMA_A_RUN {
+                return None;
+            }
+            cur = if cur.1 + 1 < per {
+                (cur.0, cur.1 + 1)
+            } else if cur.0 + 1 < self.pieces.len() {
+                if !self.smooth.get(cur.0).copied().unwrap_or(false) {
+                    return None;
+                }
+                (cur.0 + 1, 0)
+            } else if self.closed {
+                (0, 0)
+            } else {
+                return None;
+            };
+            out.push(self.pieces[cur.0].tile(level, cur.1));
+        }
+        Some(out)
+    }
+
+    /// Tests the box `x × y`, `x ≤ y` (lexicographic).
+    fn settle(&mut self, level: u32, x: Key, y: Key) -> Option<Settled> {
+        if x != y {
+            let (tx, ty) = (
+                self.pieces[x.0].tile(level, x.1),
+                self.pieces[y.0].tile(level, y.1),
+            );
+            if let Some(s) = pair_tests(&tx, &ty) {
                 return Some(s);
             }
         }
-        // Lemma A over the stretch (only short runs of tiles: longer ones cannot pass)
-        if j - i <= 3 {
-            let run: Vec<Rc<Tile>> = (i..=j).map(|k| self.tile(level, k)).collect();
+        // Lemma A over the stretch from x to y (and, on a closed spine, from y through the
+        // seam to x)
+        if let Some(run) = self.run(level, x, y) {
             if lemma_a(&run) {
                 return Some(Settled::LemmaA);
             }
         }
+        if self.closed && x != y {
+            if let Some(run) = self.run(level, y, x) {
+                if lemma_a(&run) {
+                    return Some(Settled::LemmaA);
+                }
+            }
+        }
         None
     }
+}
+
+/// The values at `t` that decide how two pieces join: `m`, `r²`, `A` and `RB/W`
+/// (`g = RB/(W|A|)`), `None` where `W = 0`.
+fn end_values(
+    spine: &CanalSpine<Rational>,
+    t: &Rational,
+) -> Option<([Rational; 3], Rational, [Rational; 3], Rational)> {
+    let w = spine.weight().eval(t);
+    if w.is_zero() {
+        return None;
+    }
+    let wd = spine.weight().derivative().eval(t);
+    let mp = spine.center_polys();
+    let a: [Rational; 3] = core::array::from_fn(|i| {
+        w.clone() * mp[i].derivative().eval(t) - wd.clone() * mp[i].eval(t)
+    });
+    let m: [Rational; 3] = core::array::from_fn(|i| mp[i].eval(t) / w.clone());
+    let rr = spine.radius_poly().eval(t);
+    let b = w.clone() * spine.radius_poly().derivative().eval(t) - wd * rr.clone();
+    let r = rr.clone() / w.clone();
+    Some((m, r.clone() * r, a, rr * b / w))
+}
+
+/// Whether the characteristic discs run on smoothly from `first` at `t` to `second` at `s`:
+/// the same sphere (`m`, `r²`), tangents in the same direction (`A(t) = λA(s)`, `λ > 0`)
+/// and the same `g = r dr/dσ` (`RB/W` at `t` equal to `λ·RB/W` at `s`) — what Lemma A needs
+/// to run across the joint (docs/math/pipes.md#canal-global, "Chains and closed spines").
+fn joins_smoothly(
+    first: &CanalSpine<Rational>,
+    t: &Rational,
+    second: &CanalSpine<Rational>,
+    s: &Rational,
+) -> bool {
+    let (Some((m1, r1, a1, g1)), Some((m2, r2, a2, g2))) =
+        (end_values(first, t), end_values(second, s))
+    else {
+        return false;
+    };
+    let aa2 = rdot(&a2, &a2);
+    if m1 != m2 || r1 != r2 || aa2.is_zero() || rcross(&a1, &a2).iter().any(|x| !x.is_zero()) {
+        return false;
+    }
+    let lambda = rdot(&a1, &a2) / aa2;
+    lambda > Rational::ZERO && g1 == lambda * g2
+}
+
+/// The result of one subdivision run.
+enum Outcome {
+    /// Every box settled: the number of boxes and how (by [`Settled`]).
+    Certified(usize, [usize; 4]),
+    /// The discs at the exact centre pair `(t, s)` of the box `first × second` meet.
+    Meet {
+        first: String,
+        second: String,
+        t: Rational,
+        s: Rational,
+    },
+    /// The box `first × second` is unsettled at the limits.
+    Undecided {
+        first: String,
+        second: String,
+        boxes: usize,
+    },
+}
+
+/// The breadth-first subdivision of the pairs of parameters of `search` (module docs).
+fn subdivide(search: &mut Search, limits: (u32, usize)) -> Result<Outcome, CanalError> {
+    let (max_depth, max_boxes) = limits;
+    let n = search.pieces.len();
+    let mut queue: VecDeque<(u32, Key, Key)> = VecDeque::new();
+    for p in 0..n {
+        for q in p..n {
+            queue.push_back((0, (p, 0), (q, 0)));
+        }
+    }
+    let mut counts = [0usize; 4];
+    let mut boxes = 0usize;
+    while let Some((level, x, y)) = queue.pop_front() {
+        rcagd_algebra::budget::checkpoint();
+        boxes += 1;
+        if let Some(how) = search.settle(level, x, y) {
+            counts[how as usize] += 1;
+            continue;
+        }
+        if x != y {
+            // an exact witness at the centre pair
+            let (t, s) = (search.centre(level, x), search.centre(level, y));
+            let pt = point(&search.pieces[x.0].polys, &t)?;
+            let ps = point(&search.pieces[y.0].polys, &s)?;
+            if discs_meet_at(&pt, &ps) {
+                return Ok(Outcome::Meet {
+                    first: search.interval(level, x),
+                    second: search.interval(level, y),
+                    t,
+                    s,
+                });
+            }
+        }
+        if level >= max_depth || boxes + queue.len() + 4 > max_boxes {
+            return Ok(Outcome::Undecided {
+                first: search.interval(level, x),
+                second: search.interval(level, y),
+                boxes,
+            });
+        }
+        let l = level + 1;
+        let (x0, x1) = ((x.0, 2 * x.1), (x.0, 2 * x.1 + 1));
+        let (y0, y1) = ((y.0, 2 * y.1), (y.0, 2 * y.1 + 1));
+        if x == y {
+            queue.extend([(l, x0, x0), (l, x0, x1), (l, x1, x1)]);
+        } else {
+            queue.extend([(l, x0, y0), (l, x0, y1), (l, x1, y0), (l, x1, y1)]);
+        }
+    }
+    Ok(Outcome::Certified(boxes, counts))
+}
+
+fn settled_text(boxes: usize, counts: [usize; 4]) -> String {
+    let [lemma, far, plane, chords] = counts;
+    format!("{boxes} boxes of parameter pairs examined, {lemma} settled by Lemma A with varying radius (κ_max(ρ_max + κ_max L(g_max + L/2)) + Q_max < 1 or Q_min − … > 1 over the stretch), {far} by |c(t) − c(s)| > ρ(t) + ρ(s), {plane} because a disc misses the other's plane, {chords} by disjoint chords on the line of the two planes; exact rational interval bounds from Bernstein coefficients (docs/math/pipes.md#canal-global)")
 }
 
 /// Decides exactly that the closed discs bounded by the characteristic circles of the canal
@@ -534,8 +743,9 @@ impl Search {
 /// (a union of these circles) has no self-intersection — and returns the certificate
 /// (module docs; docs/math/pipes.md#canal-global). Any radius: for a constant one it is the
 /// pipe's statement of [`super::check_pipe_embedded`] (normal discs of radius `|r|`), decided
-/// by other tests. The domain is an open arc of the spine (the discs at `a` and `b` count as
-/// distinct).
+/// by other tests. A spine whose discs at `a` and `b` coincide and run on smoothly (the same
+/// sphere, tangent direction and `r dr/dσ`) is closed: `a` and `b` are one parameter and
+/// Lemma A runs across the seam; otherwise the discs at `a` and `b` count as distinct.
 ///
 /// The local condition ([`super::check_canal_regularity`]) is checked first.
 ///
@@ -562,76 +772,438 @@ pub fn check_canal_embedded_within(
     domain: (&Rational, &Rational),
     limits: (u32, usize),
 ) -> Result<Certificate, CanalError> {
-    let (max_depth, max_boxes) = limits;
     let (a, b) = domain;
-    spine.check_real_envelope(Some((a, b)))?;
-    super::regularity::check_canal_regularity(spine, (a, b))?;
     if a == b {
+        spine.check_real_envelope(Some((a, b)))?;
+        super::regularity::check_canal_regularity(spine, (a, b))?;
         return Ok(Certificate::holds(
             format!("one characteristic circle (t = {})", format_scalar(a)),
             true,
         ));
     }
-    let polys = polys(spine);
-    let mut search = Search {
-        a: a.clone(),
-        width: b.clone() - a.clone(),
-        polys,
-        tiles: HashMap::new(),
-    };
-    let mut queue: VecDeque<(u32, u64, u64)> = VecDeque::from([(0, 0, 0)]);
-    let mut counts = [0usize; 4];
-    let mut boxes = 0usize;
-    let half = Rational::from_ratio(1, 2);
-    while let Some((level, i, j)) = queue.pop_front() {
-        rcagd_algebra::budget::checkpoint();
-        boxes += 1;
-        if let Some(how) = search.settle(level, i, j) {
-            counts[how as usize] += 1;
-            continue;
+    check_canal_chain_embedded_within(&[(spine.clone(), (a.clone(), b.clone()))], limits)
+}
+
+/// [`check_canal_embedded`] for a chain of pieces (each a canal family on its own domain
+/// `[a_k, b_k]`, `a_k < b_k`), joined end to start: no two characteristic discs at distinct
+/// points of the chain meet. Lemma A runs across a joint where the discs run on smoothly
+/// (the same sphere, tangent direction and `r dr/dσ`; then the discs of the two ends are one
+/// disc), and across the seam when the end of the last piece joins the start of the first
+/// so (a closed chain). A joint that is not smooth (a corner, a jump of the radius, a gap)
+/// cuts the chain into runs that are checked each on its own; pairs in different runs are
+/// not checked and the certificate then fails, saying so (as
+/// [`super::check_chain_embedded`] does for pipes).
+///
+/// # Errors
+/// As [`check_canal_embedded`] (the intervals name their piece);
+/// [`CanalError::InvalidArgument`] for an empty chain or an empty domain;
+/// [`CanalError::SpinePiece`] around the local errors of a piece.
+pub fn check_canal_chain_embedded(
+    chain: &[(CanalSpine<Rational>, (Rational, Rational))],
+) -> Result<Certificate, CanalError> {
+    check_canal_chain_embedded_within(chain, (CANAL_GLOBAL_DEPTH, CANAL_GLOBAL_BOXES))
+}
+
+/// [`check_canal_chain_embedded`] with other limits `(halvings, boxes)`.
+///
+/// # Errors
+/// As [`check_canal_chain_embedded`].
+pub fn check_canal_chain_embedded_within(
+    chain: &[(CanalSpine<Rational>, (Rational, Rational))],
+    limits: (u32, usize),
+) -> Result<Certificate, CanalError> {
+    let n = chain.len();
+    if n == 0 {
+        return Err(CanalError::InvalidArgument("no spine piece".into()));
+    }
+    for (k, (spine, (a, b))) in chain.iter().enumerate() {
+        if a >= b {
+            return Err(CanalError::InvalidArgument(format!(
+                "empty parameter interval [{}, {}]",
+                format_scalar(a),
+                format_scalar(b)
+            )));
         }
-        if j > i {
-            // an exact witness at the centre pair
-            let t = (search.param(level, i) + search.param(level, i + 1)) * half.clone();
-            let s = (search.param(level, j) + search.param(level, j + 1)) * half.clone();
-            let (pt, ps) = (point(&search.polys, &t)?, point(&search.polys, &s)?);
-            if discs_meet_at(&pt, &ps) {
-                return Err(CanalError::CanalSelfIntersects {
-                    first: search.interval(level, i),
-                    second: search.interval(level, j),
-                    t: format_scalar(&t),
-                    s: format_scalar(&s),
-                });
+        let local = || -> Result<(), CanalError> {
+            spine.check_real_envelope(Some((a, b)))?;
+            super::regularity::check_canal_regularity(spine, (a, b))?;
+            Ok(())
+        };
+        local().map_err(|e| {
+            if n > 1 {
+                CanalError::SpinePiece {
+                    index: k,
+                    source: Box::new(e),
+                }
+            } else {
+                e
             }
-        }
-        if level >= max_depth || boxes + queue.len() + 4 > max_boxes {
-            return Err(CanalError::CanalPartsNotApart {
-                first: search.interval(level, i),
-                second: search.interval(level, j),
-                boxes,
-            });
-        }
-        let (l, i2, j2) = (level + 1, 2 * i, 2 * j);
-        if i == j {
-            queue.extend([(l, i2, i2), (l, i2, i2 + 1), (l, i2 + 1, i2 + 1)]);
-        } else {
-            queue.extend([
-                (l, i2, j2),
-                (l, i2, j2 + 1),
-                (l, i2 + 1, j2),
-                (l, i2 + 1, j2 + 1),
-            ]);
+        })?;
+    }
+    let smooth: Vec<bool> = (0..n - 1)
+        .map(|k| {
+            joins_smoothly(
+                &chain[k].0,
+                &chain[k].1 .1,
+                &chain[k + 1].0,
+                &chain[k + 1].1 .0,
+            )
+        })
+        .collect();
+    let closed = smooth.iter().all(|s| *s)
+        && joins_smoothly(
+            &chain[n - 1].0,
+            &chain[n - 1].1 .1,
+            &chain[0].0,
+            &chain[0].1 .0,
+        );
+    // runs of smoothly joined pieces
+    let mut runs: Vec<(usize, usize)> = Vec::new();
+    let mut start = 0;
+    for k in 0..n {
+        if smooth.get(k).is_none_or(|s| !*s) {
+            runs.push((start, k));
+            start = k + 1;
         }
     }
-    let [lemma, far, plane, chords] = counts;
+    let mut total = 0usize;
+    let mut counts = [0usize; 4];
+    for &(first, last) in &runs {
+        let mut search = Search {
+            pieces: chain[first..=last]
+                .iter()
+                .enumerate()
+                .map(|(k, (s, (a, b)))| PieceSearch::new(first + k, s, a, b))
+                .collect(),
+            smooth: smooth[first..last].to_vec(),
+            closed: closed && runs.len() == 1,
+            named: n > 1,
+        };
+        match subdivide(&mut search, limits)? {
+            Outcome::Certified(b, c) => {
+                total += b;
+                for (sum, x) in counts.iter_mut().zip(c) {
+                    *sum += x;
+                }
+            }
+            Outcome::Meet {
+                first: f,
+                second,
+                t,
+                s,
+            } => {
+                return Err(CanalError::CanalSelfIntersects {
+                    first: f,
+                    second,
+                    t: format_scalar(&t),
+                    s: format_scalar(&s),
+                })
+            }
+            Outcome::Undecided {
+                first: f,
+                second,
+                boxes,
+            } => {
+                return Err(CanalError::CanalPartsNotApart {
+                    first: f,
+                    second,
+                    boxes: total + boxes,
+                })
+            }
+        }
+    }
+    let what = "the closed discs bounded by the characteristic circles at distinct points";
+    let domain = if n == 1 {
+        format!(
+            "t ∈ [{}, {}]{}",
+            format_scalar(&chain[0].1 .0),
+            format_scalar(&chain[0].1 .1),
+            if closed {
+                ", a closed spine: t = a and t = b are one point"
+            } else {
+                ""
+            }
+        )
+    } else {
+        format!(
+            "{n} spine pieces, {}",
+            if closed { "closed" } else { "open" }
+        )
+    };
+    if runs.len() > 1 {
+        let cut: Vec<String> = (0..n - 1)
+            .filter(|&k| !smooth[k])
+            .map(|k| format!("{k}/{}", k + 1))
+            .collect();
+        return Ok(Certificate::fails(
+            format!("{what} ({domain}) are pairwise disjoint (the canal surface has no self-intersection)"),
+            format!(
+                "checked within each smoothly joined run of pieces ({total} boxes), not between runs: the joints {} are not smooth (another sphere, tangent direction or r dr/dσ on the two sides, or a gap)",
+                cut.join(", ")
+            ),
+            true,
+        ));
+    }
     Ok(Certificate::holds(
         format!(
-            "the closed discs bounded by the characteristic circles at distinct t ∈ [{}, {}] are pairwise disjoint (the canal surface has no self-intersection): {boxes} boxes of parameter pairs examined, {lemma} settled by Lemma A with varying radius (κ_max(ρ_max + κ_max L(g_max + L/2)) + Q_max < 1 or Q_min − … > 1 over the stretch), {far} by |c(t) − c(s)| > ρ(t) + ρ(s), {plane} because a disc misses the other's plane, {chords} by disjoint chords on the line of the two planes; exact rational interval bounds from Bernstein coefficients (docs/math/pipes.md#canal-global)",
-            format_scalar(a),
-            format_scalar(b)
+            "{what} ({domain}) are pairwise disjoint (the canal surface has no self-intersection): {}",
+            settled_text(total, counts)
         ),
         true,
     ))
+}
+
+/// Most boxes [`parameter_range`] subdivides the rectangle into.
+const RANGE_BOXES: usize = 2048;
+
+/// Bounds of the spine parameter `p = N/Dn` over a rectangle of Ω(s, t): `inner` between
+/// exact values of `p` at points of the rectangle (so `inner ⊆ p(rectangle)`, an interval
+/// since the rectangle is connected and `Dn ≠ 0` there), `outer ⊇ p(rectangle)` with dyadic
+/// ends.
+struct ParamRange {
+    inner: (Rational, Rational),
+    outer: (Rational, Rational),
+    boxes: usize,
+}
+
+/// [`ParamRange`] by exact tensor Bernstein coefficients: on a box where those of `Dn` have
+/// one strict sign, `p` is a rational Bézier function with control values `N_k/Dn_k` and
+/// weights `Dn_k`, so it lies between the least and the largest `N_k/Dn_k` (convex hull); a
+/// corner coefficient is a value, so the corners' `N/Dn` are exact values of `p`. Boxes
+/// whose hull reaches farther than `(inner width)/2¹⁶` beyond the inner bounds are
+/// quartered, at most [`RANGE_BOXES`] boxes (docs/math/pipes.md#canal-global, "On a
+/// rectangle of the cyclographic parametrization").
+fn parameter_range(
+    num: &BiPoly<Rational>,
+    den: &BiPoly<Rational>,
+    rect: &[Rational; 4],
+) -> Result<ParamRange, CanalError> {
+    let m = num.degree_t().unwrap_or(0).max(den.degree_t().unwrap_or(0));
+    let n = num.degree_u().unwrap_or(0).max(den.degree_u().unwrap_or(0));
+    let value = |s: &Rational, t: &Rational| -> Result<Rational, CanalError> {
+        let d = den.eval(s, t);
+        if d.is_zero() {
+            return Err(CanalError::InvalidArgument(format!(
+                "the spine parameter p = N/Dn of Γ is infinite at (s, t) = ({}, {}) of the rectangle",
+                format_scalar(s),
+                format_scalar(t)
+            )));
+        }
+        Ok(num.eval(s, t) / d)
+    };
+    let corners = [
+        value(&rect[0], &rect[2])?,
+        value(&rect[0], &rect[3])?,
+        value(&rect[1], &rect[2])?,
+        value(&rect[1], &rect[3])?,
+    ];
+    let mut inner = Iv::hull(corners.iter());
+    let two = Rational::from(2);
+    let mut todo: VecDeque<[Rational; 4]> = VecDeque::from([rect.clone()]);
+    let mut done: Vec<Iv> = Vec::new();
+    let mut boxes = 0usize;
+    let mut tol: Option<Rational> = None;
+    while let Some(b) = todo.pop_front() {
+        rcagd_algebra::budget::checkpoint();
+        boxes += 1;
+        let [s0, s1, t0, t1] = &b;
+        let cn = num.bernstein_on((s0, s1), (t0, t1), m, n)?;
+        let cd = den.bernstein_on((s0, s1), (t0, t1), m, n)?;
+        for k in [0, n, m * (n + 1), m * (n + 1) + n] {
+            if let (Some(x), Some(d)) = (cn.get(k), cd.get(k)) {
+                if !d.is_zero() {
+                    let v = x.clone() / d.clone();
+                    inner = Iv {
+                        lo: rmin(&inner.lo, &v),
+                        hi: rmax(&inner.hi, &v),
+                    };
+                }
+            }
+        }
+        let signed =
+            cd.iter().all(|d| *d > Rational::ZERO) || cd.iter().all(|d| *d < Rational::ZERO);
+        let hull = signed.then(|| {
+            let ratios: Vec<Rational> = cn
+                .iter()
+                .zip(&cd)
+                .map(|(x, d)| x.clone() / d.clone())
+                .collect();
+            Iv::hull(ratios.iter())
+        });
+        let tol = tol
+            .get_or_insert_with(|| {
+                let w = inner.hi.clone() - inner.lo.clone();
+                let w = match (&hull, w.is_zero()) {
+                    (Some(h), true) => h.hi.clone() - h.lo.clone(),
+                    _ => w,
+                };
+                w / Rational::from(1u64 << 16)
+            })
+            .clone();
+        let fine = hull.as_ref().is_some_and(|h| {
+            h.lo >= inner.lo.clone() - tol.clone() && h.hi <= inner.hi.clone() + tol.clone()
+        });
+        if fine || (hull.is_some() && boxes + todo.len() + 4 > RANGE_BOXES) {
+            done.extend(hull);
+            continue;
+        }
+        if boxes + todo.len() + 4 > RANGE_BOXES {
+            return Err(CanalError::InvalidArgument(format!(
+                "the denominator Dn of the spine parameter p = N/Dn of Γ could not be shown of one sign on [{}, {}] × [{}, {}]",
+                format_scalar(&rect[0]),
+                format_scalar(&rect[1]),
+                format_scalar(&rect[2]),
+                format_scalar(&rect[3])
+            )));
+        }
+        let (sm, tm) = (
+            (s0.clone() + s1.clone()) / two.clone(),
+            (t0.clone() + t1.clone()) / two.clone(),
+        );
+        todo.extend([
+            [s0.clone(), sm.clone(), t0.clone(), tm.clone()],
+            [s0.clone(), sm.clone(), tm.clone(), t1.clone()],
+            [sm.clone(), s1.clone(), t0.clone(), tm.clone()],
+            [sm, s1.clone(), tm, t1.clone()],
+        ]);
+    }
+    let outer = done.iter().fold(inner.clone(), |acc, h| Iv {
+        lo: rmin(&acc.lo, &h.lo),
+        hi: rmax(&acc.hi, &h.hi),
+    });
+    // round outward to a dyadic grid about as fine as the tolerance
+    let width = Scalar::to_f64(&(outer.hi.clone() - outer.lo.clone())).max(1e-300);
+    let k = ((-(width / 65536.0).log2()).ceil()).clamp(0.0, 62.0) as u32;
+    let scale = Rational::from(1u64 << k);
+    let lo = Rational::from((outer.lo.clone() * scale.clone()).floor()) / scale.clone();
+    let hi = Rational::from((outer.hi.clone() * scale.clone()).ceil()) / scale;
+    Ok(ParamRange {
+        inner: (inner.lo, inner.hi),
+        outer: (lo, hi),
+        boxes,
+    })
+}
+
+/// Decides that the cyclographic canal surface `Γ(s, t)` of the polynomial family `spine`
+/// on the rectangle `rect = [s₀, s₁, t₀, t₁]` of Ω(s, t), with spine parameter
+/// `p = N(s, t)/Dn(s, t)` (`param = (N, Dn)`, `Dn ≠ 0` on the rectangle), has no global
+/// self-intersection, and returns the certificate (docs/math/pipes.md#canal-global, "On a
+/// rectangle of the cyclographic parametrization"). `Γ(s, t)` lies on the characteristic
+/// circle of `p(s, t)` in the direction `−w(s, t)` (the inverse stereographic image of
+/// `(s, t)`, one-to-one), so two points of the rectangle with the same `p` have distinct
+/// images, and with distinct `p` their images are distinct when the characteristic discs are
+/// pairwise disjoint over the interval `p(rectangle)`. That interval is enclosed by
+/// [`parameter_range`] (`inner ⊆ p(rectangle) ⊆ outer`) and the discs are checked on `outer`
+/// by the subdivision of [`check_canal_embedded`].
+///
+/// Assumes the local condition on the rectangle ([`super::check_cyclographic_regularity`],
+/// which [`super::canal_surface_rational`] checks first); the local condition on `outer` is
+/// checked again here.
+///
+/// # Errors
+/// [`CanalError::CanalSelfIntersects`] with an exact witness pair of spine parameters, both
+/// reached by the rectangle (within `inner`), whose discs meet;
+/// [`CanalError::CanalPartsNotApart`] (undecided) when the subdivision stops, when the
+/// witness lies in the thin margin `outer ∖ inner` that may not be reached, or when the
+/// local condition fails in that margin; [`CanalError::InvalidArgument`] where `Dn` is not
+/// shown of one sign on the rectangle.
+pub fn check_cyclographic_embedded(
+    spine: &CanalSpine<Rational>,
+    param: (&BiPoly<Rational>, &BiPoly<Rational>),
+    rect: &[Rational; 4],
+) -> Result<Certificate, CanalError> {
+    check_cyclographic_embedded_within(spine, param, rect, (CANAL_GLOBAL_DEPTH, CANAL_GLOBAL_BOXES))
+}
+
+/// [`check_cyclographic_embedded`] with other limits `(halvings, boxes)`.
+///
+/// # Errors
+/// As [`check_cyclographic_embedded`].
+pub fn check_cyclographic_embedded_within(
+    spine: &CanalSpine<Rational>,
+    param: (&BiPoly<Rational>, &BiPoly<Rational>),
+    rect: &[Rational; 4],
+    limits: (u32, usize),
+) -> Result<Certificate, CanalError> {
+    let range = parameter_range(param.0, param.1, rect)?;
+    let (lo, hi) = &range.outer;
+    let (ilo, ihi) = &range.inner;
+    let rect_text = format!(
+        "[{}, {}] × [{}, {}]",
+        format_scalar(&rect[0]),
+        format_scalar(&rect[1]),
+        format_scalar(&rect[2]),
+        format_scalar(&rect[3])
+    );
+    let reached = format!(
+        "the rectangle {rect_text} of Γ reaches the spine parameters p from ≈ {:.6} to ≈ {:.6}, all within [{}, {}]",
+        Scalar::to_f64(ilo),
+        Scalar::to_f64(ihi),
+        format_scalar(lo),
+        format_scalar(hi)
+    );
+    if lo == hi {
+        return Ok(Certificate::holds(
+            format!(
+                "Γ on {rect_text} lies on one characteristic circle (p = {})",
+                format_scalar(lo)
+            ),
+            true,
+        ));
+    }
+    let margin = |boxes: usize| CanalError::CanalPartsNotApart {
+        first: format!("[{}, {}]", format_scalar(lo), format_scalar(ilo)),
+        second: format!(
+            "[{}, {}] ({reached}; the margins may not be reached)",
+            format_scalar(ihi),
+            format_scalar(hi)
+        ),
+        boxes,
+    };
+    if spine
+        .check_real_envelope(Some((lo, hi)))
+        .and_then(|_| super::regularity::check_canal_regularity(spine, (lo, hi)).map(|_| ()))
+        .is_err()
+    {
+        return Err(margin(0));
+    }
+    let mut search = Search {
+        pieces: vec![PieceSearch::new(0, spine, lo, hi)],
+        smooth: Vec::new(),
+        closed: false,
+        named: false,
+    };
+    let inside = |x: &Rational| ilo <= x && x <= ihi;
+    match subdivide(&mut search, limits)? {
+        Outcome::Certified(boxes, counts) => Ok(Certificate::holds(
+            format!(
+                "Γ(s, t) has no self-intersection on {rect_text}: {reached} (exact values at points of the rectangle; Bernstein hulls of N/Dn, {} boxes); points of Γ with one p lie on one characteristic circle in distinct directions w(s, t) (stereographic, one-to-one), and the closed discs bounded by the characteristic circles at distinct p of [{}, {}] are pairwise disjoint: {}",
+                range.boxes,
+                format_scalar(lo),
+                format_scalar(hi),
+                settled_text(boxes, counts)
+            ),
+            true,
+        )),
+        Outcome::Meet { first, second, t, s } if inside(&t) && inside(&s) => {
+            Err(CanalError::CanalSelfIntersects {
+                first: format!("{first} (spine parameter p of Γ; {reached})"),
+                second,
+                t: format_scalar(&t),
+                s: format_scalar(&s),
+            })
+        }
+        Outcome::Meet { .. } => Err(margin(0)),
+        Outcome::Undecided {
+            first,
+            second,
+            boxes,
+        } => Err(CanalError::CanalPartsNotApart {
+            first: format!("{first} (spine parameter p of Γ; {reached})"),
+            second,
+            boxes,
+        }),
+    }
 }
 
 #[cfg(test)]
@@ -690,5 +1262,71 @@ mod tests {
         // t = 1/2 and its antipode t = −2
         assert!(!discs_meet(&circle(q(199, 100)), &q(1, 2), &q(-2, 1)).expect("discs"));
         assert!(discs_meet(&circle(q(2, 1)), &q(1, 2), &q(-2, 1)).expect("discs"));
+    }
+
+    #[test]
+    fn parameter_range_encloses_the_image_of_the_rectangle() {
+        // p = (s + t)/(1 + s²) on [−1, 2] × [0, 1]: p = (s + t)/(1 + s²) is largest at
+        // t = 1, s = √2 − 1 (value (1 + √2)/2 ≈ 1.2071) and least at s = −1, t = 0 (−1/2)
+        let num = BiPoly::new(vec![Poly::from_ints(&[0, 1]), Poly::from_ints(&[1])]);
+        let den = BiPoly::from_t(Poly::from_ints(&[1, 0, 1]));
+        let rect = [q(-1, 1), q(2, 1), q(0, 1), q(1, 1)];
+        let r = parameter_range(&num, &den, &rect).expect("range");
+        let (lo, hi) = (q(-1, 2), (1.0 + 2f64.sqrt()) / 2.0);
+        assert!(
+            r.outer.0 <= lo && r.inner.0 == lo,
+            "{:?}",
+            (&r.outer, &r.inner)
+        );
+        let (ihi, ohi) = (Scalar::to_f64(&r.inner.1), Scalar::to_f64(&r.outer.1));
+        assert!(ihi <= hi && hi <= ohi, "{ihi} {hi} {ohi}");
+        assert!(ohi - ihi < 1e-3, "{ihi} {ohi}");
+        // a denominator with a zero on the rectangle is refused
+        let den0 = BiPoly::from_t(Poly::from_ints(&[0, 1]));
+        assert!(parameter_range(&num, &den0, &rect).is_err());
+    }
+
+    #[test]
+    fn joints_run_on_smoothly_only_with_the_same_sphere_tangent_and_g() {
+        // two segments of the x-axis, r = 1 + t/4 then r = 5/4 + t/4: smooth at the joint;
+        // r = 5/4 + t/2 changes dr/dσ (so g); r = 1 + t/4 twice jumps
+        let line = |r: &[Rational]| {
+            CanalSpine::polynomial(
+                [Poly::from_ints(&[0, 1]), Poly::zero(), Poly::zero()],
+                Poly::new(r.to_vec()),
+            )
+        };
+        let first = line(&[q(1, 1), q(1, 4)]);
+        let shifted = |r: &[Rational]| {
+            CanalSpine::polynomial(
+                [Poly::from_ints(&[1, 1]), Poly::zero(), Poly::zero()],
+                Poly::new(r.to_vec()),
+            )
+        };
+        let (zero, one) = (q(0, 1), q(1, 1));
+        assert!(joins_smoothly(
+            &first,
+            &one,
+            &shifted(&[q(5, 4), q(1, 4)]),
+            &zero
+        ));
+        assert!(!joins_smoothly(
+            &first,
+            &one,
+            &shifted(&[q(5, 4), q(1, 2)]),
+            &zero
+        ));
+        assert!(!joins_smoothly(
+            &first,
+            &one,
+            &shifted(&[q(1, 1), q(1, 4)]),
+            &zero
+        ));
+        // the same line at twice the speed: the same g = r dr/dσ needs dr/dt doubled
+        let fast = CanalSpine::polynomial(
+            [Poly::from_ints(&[1, 2]), Poly::zero(), Poly::zero()],
+            Poly::new(vec![q(5, 4), q(1, 2)]),
+        );
+        assert!(joins_smoothly(&first, &one, &fast, &zero));
     }
 }

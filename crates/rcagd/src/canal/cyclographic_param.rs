@@ -64,6 +64,9 @@ pub struct CyclographicCanal {
     /// No local self-intersection on the rectangle
     /// ([`super::check_cyclographic_regularity`]).
     regular: Certificate,
+    /// No global self-intersection on the rectangle
+    /// ([`super::check_cyclographic_embedded`]).
+    embedded: Certificate,
 }
 
 /// `p'ⁿ P((ρp' + 1)/p')` for `P` of degree `≤ n`.
@@ -153,6 +156,7 @@ impl Certified for CyclographicCanal {
     fn certify(&self) -> Vec<Certificate> {
         let mut out = self.surface.certify();
         out.push(self.regular.clone());
+        out.push(self.embedded.clone());
         if let Some((rho, res)) = &self.mobius {
             out.push(Certificate::decide(
                 format!(
@@ -187,7 +191,9 @@ impl Certified for CyclographicCanal {
 /// A surface in the spine parameter is checked for local self-intersections on the domain of
 /// `options` ([`super::check_canal_regularity`]) and for global ones (no two characteristic
 /// discs meet, [`super::check_canal_embedded`]), `Γ` for local ones on its rectangle
-/// ([`super::check_cyclographic_regularity`]).
+/// ([`super::check_cyclographic_regularity`]) and for global ones (no two characteristic
+/// discs over the spine parameters the rectangle reaches meet,
+/// [`super::check_cyclographic_embedded`]).
 ///
 /// # Errors
 /// The errors of [`canal_surface_pole_free`]; [`CanalError::SingularCanal`] where the
@@ -195,6 +201,9 @@ impl Certified for CyclographicCanal {
 /// [`CanalError::CanalSelfIntersects`] where two of its characteristic discs meet
 /// (globally), [`CanalError::CanalPartsNotApart`] where that is undecided;
 /// [`CanalError::SingularCyclographic`] where `Γ` is singular on the rectangle;
+/// [`CanalError::CanalSelfIntersects`] or [`CanalError::CanalPartsNotApart`] where two
+/// characteristic discs over the spine parameters of the rectangle meet or could not be
+/// shown apart;
 /// [`CanalError::IrrationalSplit`] when the
 /// spine-parameter constructions need `Q(√d)` and `Γ` does not apply (degree > 2 or a
 /// non-constant weight); [`CanalError::CyclographicDomainNeeded`] when `Γ` applies but no
@@ -260,11 +269,14 @@ pub fn canal_surface_rational(
     let rect = [s0.clone(), s1.clone(), t0.clone(), t1.clone()];
     let regular =
         super::regularity::check_cyclographic_regularity(&family, surface.parameter(), &rect)?;
+    let embedded =
+        super::canal_global::check_cyclographic_embedded(&family, surface.parameter(), &rect)?;
     Ok(RationalCanal::Cyclographic(Box::new(CyclographicCanal {
         surface,
         radicand,
         patches: split.pieces,
         mobius,
         regular,
+        embedded,
     })))
 }

@@ -78,8 +78,9 @@ pub use blend::{
     BlendSpine, PlaneEnd, SphereBlend, SpherePlaneBlend,
 };
 pub use canal_global::{
-    check_canal_embedded, check_canal_embedded_within, discs_meet, CANAL_GLOBAL_BOXES,
-    CANAL_GLOBAL_DEPTH,
+    check_canal_chain_embedded, check_canal_chain_embedded_within, check_canal_embedded,
+    check_canal_embedded_within, check_cyclographic_embedded, check_cyclographic_embedded_within,
+    discs_meet, CANAL_GLOBAL_BOXES, CANAL_GLOBAL_DEPTH,
 };
 pub use cyclographic_param::{canal_surface_rational, CyclographicCanal, RationalCanal};
 pub use envelope::{
