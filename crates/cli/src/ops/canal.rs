@@ -127,6 +127,7 @@ fn canal_err(e: CanalError, spine_param: &'static str, radius_param: &'static st
         | CanalError::ZeroRadius
         | CanalError::SingularCanal { .. }
         | CanalError::CanalSelfIntersects { .. }
+        | CanalError::CyclographicDiscsMeet { .. }
         | CanalError::CanalPartsNotApart { .. } => OpError::param(radius_param, e.to_string()),
         CanalError::DegenerateSpine(_) => OpError::param(spine_param, e.to_string()),
         _ => OpError::new(e.to_string()),

@@ -1101,8 +1101,9 @@ fn parameter_range(
 /// checked again here.
 ///
 /// # Errors
-/// [`CanalError::CanalSelfIntersects`] with an exact witness pair of spine parameters, both
-/// reached by the rectangle (within `inner`), whose discs meet;
+/// [`CanalError::CyclographicDiscsMeet`] with an exact witness pair of spine parameters,
+/// both reached by the rectangle (within `inner`), whose discs meet (a sufficient test: `Γ`
+/// covers arcs of the circles only, so it may still be free of self-intersection);
 /// [`CanalError::CanalPartsNotApart`] (undecided) when the subdivision stops, when the
 /// witness lies in the thin margin `outer ∖ inner` that may not be reached, or when the
 /// local condition fails in that margin; [`CanalError::InvalidArgument`] where `Dn` is not
@@ -1186,8 +1187,8 @@ pub fn check_cyclographic_embedded_within(
             true,
         )),
         Outcome::Meet { first, second, t, s } if inside(&t) && inside(&s) => {
-            Err(CanalError::CanalSelfIntersects {
-                first: format!("{first} (spine parameter p of Γ; {reached})"),
+            Err(CanalError::CyclographicDiscsMeet {
+                first: format!("{first} ({reached})"),
                 second,
                 t: format_scalar(&t),
                 s: format_scalar(&s),

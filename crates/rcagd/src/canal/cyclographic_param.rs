@@ -201,7 +201,7 @@ impl Certified for CyclographicCanal {
 /// [`CanalError::CanalSelfIntersects`] where two of its characteristic discs meet
 /// (globally), [`CanalError::CanalPartsNotApart`] where that is undecided;
 /// [`CanalError::SingularCyclographic`] where `Γ` is singular on the rectangle;
-/// [`CanalError::CanalSelfIntersects`] or [`CanalError::CanalPartsNotApart`] where two
+/// [`CanalError::CyclographicDiscsMeet`] or [`CanalError::CanalPartsNotApart`] where two
 /// characteristic discs over the spine parameters of the rectangle meet or could not be
 /// shown apart;
 /// [`CanalError::IrrationalSplit`] when the

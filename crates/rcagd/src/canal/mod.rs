@@ -250,6 +250,22 @@ pub enum CanalError {
         /// A parameter in `second` whose disc meets the disc at `t` (exact rational).
         s: String,
     },
+    /// Two characteristic discs over spine parameters reached by the rectangle of the
+    /// cyclographic parametrization `Γ(s, t)` meet
+    /// ([`canal_global::check_cyclographic_embedded`], exact witness): the canal surface over
+    /// those spine parameters intersects itself. `Γ` covers arcs of these circles only, so it
+    /// is not certified — it may still be free of self-intersection on the rectangle.
+    #[error("Γ(s, t) cannot be certified free of self-intersection on its rectangle: the characteristic circles over the spine parameters p in {first} and p in {second} (both reached by the rectangle) bound discs that meet at p = {t} and p = {s} (decided exactly), so the full canal surface over these parameters intersects itself; Γ covers arcs of these circles only and may still miss the intersection (docs/math/pipes.md#canal-global-cyclographic) — shrink the rectangle, or change the radius or the spine")]
+    CyclographicDiscsMeet {
+        /// The first spine-parameter interval (with what the rectangle reaches).
+        first: String,
+        /// The second spine-parameter interval.
+        second: String,
+        /// A spine parameter in `first` (exact rational).
+        t: String,
+        /// A spine parameter in `second` whose disc meets the disc at `t` (exact rational).
+        s: String,
+    },
     /// The characteristic discs over two parameter intervals could be shown neither disjoint
     /// nor meeting within the subdivision limits ([`canal_global::check_canal_embedded`]).
     #[error("the parts of the canal surface over t in {first} and over t in {second} could not be shown apart: after {boxes} boxes of exact subdivision their characteristic discs are neither shown disjoint nor found to meet (undecided: they nearly touch there, docs/math/pipes.md#canal-global)")]

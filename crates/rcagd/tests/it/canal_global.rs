@@ -706,10 +706,10 @@ fn gamma_is_checked_for_global_self_intersection_on_its_rectangle() {
                 }
                 assert!(checked > 300, "{checked}");
             }
-            Err(e @ CanalError::CanalSelfIntersects { .. }) => {
+            Err(e @ CanalError::CyclographicDiscsMeet { .. }) => {
                 assert!(meets, "{e}");
                 eprintln!("{e}");
-                let CanalError::CanalSelfIntersects { t, s, .. } = &e else {
+                let CanalError::CyclographicDiscsMeet { t, s, .. } = &e else {
                     unreachable!()
                 };
                 let (t, s) = (parse_rational(t).expect("t"), parse_rational(s).expect("s"));
