@@ -405,9 +405,10 @@ impl Ring for Interval {
 /// its end points in round-to-nearest (IEEE 754, the only mode Rust uses) and then moves
 /// the lower end one `f64` down and the upper end one `f64` up. A correctly rounded result
 /// is within half a unit in the last place of the exact one, so the moved end points
-/// bracket it (IEEE 754-2008 §4.3; the standard technique of interval libraries without
-/// rounding-mode control, e.g. Rump, *INTLAB*, 1999, and Moore–Kearfott–Cloud,
-/// *Introduction to Interval Analysis*, 2009, §9.3). The enclosure property of [`Interval`]
+/// bracket it (IEEE 754-2008, §4.3 on roundTiesToEven; outward rounding as in Moore,
+/// Kearfott, Cloud, *Introduction to Interval Analysis*, SIAM 2009, on machine interval
+/// arithmetic, here by one `f64` step instead of a directed rounding mode, which Rust does
+/// not expose). The enclosure property of [`Interval`]
 /// holds: the result contains `x ∘ y` for all `x ∈ X`, `y ∈ Y`. Overflow gives infinite
 /// ends (still an enclosure); an operation on a non-finite end gives `[−∞, ∞]`, so a result
 /// with a non-finite end is only "not decided" ([`F64Interval::is_finite`]).
