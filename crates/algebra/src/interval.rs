@@ -401,6 +401,223 @@ impl Ring for Interval {
     }
 }
 
+/// A closed interval `[lo, hi]` of `f64`s with *outward rounding*: every operation computes
+/// its end points in round-to-nearest (IEEE 754, the only mode Rust uses) and then moves
+/// the lower end one `f64` down and the upper end one `f64` up. A correctly rounded result
+/// is within half a unit in the last place of the exact one, so the moved end points
+/// bracket it (IEEE 754-2008, §4.3 on roundTiesToEven; outward rounding as in Moore,
+/// Kearfott, Cloud, *Introduction to Interval Analysis*, SIAM 2009, on machine interval
+/// arithmetic, here by one `f64` step instead of a directed rounding mode, which Rust does
+/// not expose). The enclosure property of [`Interval`]
+/// holds: the result contains `x ∘ y` for all `x ∈ X`, `y ∈ Y`. Overflow gives infinite
+/// ends (still an enclosure); an operation on a non-finite end gives `[−∞, ∞]`, so a result
+/// with a non-finite end is only "not decided" ([`F64Interval::is_finite`]).
+///
+/// A cheap first pass for [`Interval`] computations: about a hundred times faster than the
+/// 256-bit fixed point, at a relative width of about `10⁻¹⁶` per operation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct F64Interval {
+    lo: f64,
+    hi: f64,
+}
+
+impl F64Interval {
+    /// Everything (the result of an operation on a non-finite end).
+    pub const ENTIRE: F64Interval = F64Interval {
+        lo: f64::NEG_INFINITY,
+        hi: f64::INFINITY,
+    };
+
+    /// The point `x` (exact: an `f64` is a rational number).
+    pub fn point(x: f64) -> Self {
+        F64Interval { lo: x, hi: x }
+    }
+
+    /// `[lo, hi]` for `lo ≤ hi` (both finite or infinite), else `None`.
+    pub fn new(lo: f64, hi: f64) -> Option<Self> {
+        (lo <= hi).then_some(F64Interval { lo, hi })
+    }
+
+    /// The nearest `f64` interval containing `x` (its end points rounded outward).
+    pub fn from_interval(x: &Interval) -> Self {
+        let (lo, hi) = x.to_f64_bounds();
+        F64Interval { lo, hi }
+    }
+
+    /// The exact enclosure as an [`Interval`] (rounded outward to its grid); `None` if an
+    /// end is not finite.
+    pub fn to_interval(&self) -> Option<Interval> {
+        let lo = Rational::try_from(self.lo).ok()?;
+        let hi = Rational::try_from(self.hi).ok()?;
+        Interval::new(&lo, &hi)
+    }
+
+    /// Lower end.
+    pub fn lo(&self) -> f64 {
+        self.lo
+    }
+
+    /// Upper end.
+    pub fn hi(&self) -> f64 {
+        self.hi
+    }
+
+    /// Both ends finite.
+    pub fn is_finite(&self) -> bool {
+        self.lo.is_finite() && self.hi.is_finite()
+    }
+
+    /// The midpoint, rounded (not an enclosure: for approximations).
+    pub fn mid(&self) -> f64 {
+        0.5 * self.lo + 0.5 * self.hi
+    }
+
+    /// An upper bound of `max(|lo|, |hi|)`.
+    pub fn mag(&self) -> f64 {
+        self.lo.abs().max(self.hi.abs())
+    }
+
+    /// The sign of every element, when it is the same for all (`Equal` only for `[0, 0]`).
+    pub fn sign(&self) -> Option<Ordering> {
+        if self.lo > 0.0 {
+            Some(Ordering::Greater)
+        } else if self.hi < 0.0 {
+            Some(Ordering::Less)
+        } else if self.lo == 0.0 && self.hi == 0.0 {
+            Some(Ordering::Equal)
+        } else {
+            None
+        }
+    }
+
+    /// The smallest interval containing both.
+    pub fn hull(&self, other: &F64Interval) -> F64Interval {
+        if !(self.is_finite() && other.is_finite()) {
+            return F64Interval::ENTIRE;
+        }
+        F64Interval {
+            lo: self.lo.min(other.lo),
+            hi: self.hi.max(other.hi),
+        }
+    }
+
+    /// `x/d` for every `x` of the interval and an `f64` `d > 0`; `[−∞, ∞]` otherwise.
+    pub fn div_positive(&self, d: f64) -> F64Interval {
+        if !(self.is_finite() && d.is_finite() && d > 0.0) {
+            return F64Interval::ENTIRE;
+        }
+        F64Interval {
+            lo: (self.lo / d).next_down(),
+            hi: (self.hi / d).next_up(),
+        }
+    }
+}
+
+/// The interval of a correctly rounded sum, difference or product: one `f64` outward.
+fn outward(lo: f64, hi: f64) -> F64Interval {
+    if lo.is_nan() || hi.is_nan() {
+        return F64Interval::ENTIRE;
+    }
+    F64Interval {
+        lo: lo.next_down(),
+        hi: hi.next_up(),
+    }
+}
+
+impl Add for F64Interval {
+    type Output = F64Interval;
+    fn add(self, rhs: F64Interval) -> F64Interval {
+        if !(self.is_finite() && rhs.is_finite()) {
+            return F64Interval::ENTIRE;
+        }
+        outward(self.lo + rhs.lo, self.hi + rhs.hi)
+    }
+}
+
+impl Sub for F64Interval {
+    type Output = F64Interval;
+    fn sub(self, rhs: F64Interval) -> F64Interval {
+        if !(self.is_finite() && rhs.is_finite()) {
+            return F64Interval::ENTIRE;
+        }
+        outward(self.lo - rhs.hi, self.hi - rhs.lo)
+    }
+}
+
+impl Neg for F64Interval {
+    type Output = F64Interval;
+    fn neg(self) -> F64Interval {
+        F64Interval {
+            lo: -self.hi,
+            hi: -self.lo,
+        }
+    }
+}
+
+impl Mul for F64Interval {
+    type Output = F64Interval;
+    /// The hull of the four end point products, each rounded outward.
+    fn mul(self, rhs: F64Interval) -> F64Interval {
+        if !(self.is_finite() && rhs.is_finite()) {
+            return F64Interval::ENTIRE;
+        }
+        let p = [
+            self.lo * rhs.lo,
+            self.lo * rhs.hi,
+            self.hi * rhs.lo,
+            self.hi * rhs.hi,
+        ];
+        let lo = p.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = p.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        outward(lo, hi)
+    }
+}
+
+impl AddAssign for F64Interval {
+    fn add_assign(&mut self, rhs: F64Interval) {
+        *self = *self + rhs;
+    }
+}
+
+impl SubAssign for F64Interval {
+    fn sub_assign(&mut self, rhs: F64Interval) {
+        *self = *self - rhs;
+    }
+}
+
+impl MulAssign for F64Interval {
+    fn mul_assign(&mut self, rhs: F64Interval) {
+        *self = *self * rhs;
+    }
+}
+
+impl Zero for F64Interval {
+    fn zero() -> Self {
+        F64Interval::point(0.0)
+    }
+    fn is_zero(&self) -> bool {
+        self.lo == 0.0 && self.hi == 0.0
+    }
+}
+
+impl One for F64Interval {
+    fn one() -> Self {
+        F64Interval::point(1.0)
+    }
+}
+
+impl Ring for F64Interval {
+    fn from_i64(n: i64) -> Self {
+        // exact below 2^53; otherwise the two neighbours of the rounded value
+        let x = n as f64;
+        if x.abs() < 9_007_199_254_740_992.0 {
+            F64Interval::point(x)
+        } else {
+            outward(x, x)
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -471,6 +688,77 @@ mod tests {
             let (x, y) = (mk(a), mk(b));
             proptest::prop_assert_eq!(x.clone() * y.clone(), hull_of_four(&x, &y));
         }
+    }
+
+    /// An `f64` of varied magnitude and sign (subnormals, zero and large exponents included).
+    fn any_f64() -> impl proptest::strategy::Strategy<Value = f64> {
+        use proptest::prelude::*;
+        prop_oneof![
+            (-1000i64..1000, -60i32..60).prop_map(|(m, e)| m as f64 * 2f64.powi(e)),
+            (-1e6f64..1e6).prop_map(|x| x),
+            (1u64..1000, any::<bool>()).prop_map(|(k, s)| {
+                let x = f64::from_bits(k); // subnormal
+                if s {
+                    -x
+                } else {
+                    x
+                }
+            }),
+            Just(0.0),
+        ]
+    }
+
+    fn q64(x: f64) -> Rational {
+        Rational::try_from(x).expect("finite")
+    }
+
+    /// `v ∈ i`, an infinite end unbounded (overflow).
+    fn f64_contains(i: &F64Interval, v: &Rational) -> bool {
+        let above_lo = i.lo() == f64::NEG_INFINITY || (i.lo().is_finite() && q64(i.lo()) <= *v);
+        let below_hi = i.hi() == f64::INFINITY || (i.hi().is_finite() && *v <= q64(i.hi()));
+        above_lo && below_hi
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+        /// Outward rounding: the exact sum, difference and product of every pair of end
+        /// points (and of an interior point) lie in the `f64` result, checked in exact
+        /// rationals; so do the quotients by a positive `f64`.
+        #[test]
+        fn f64_intervals_enclose_the_exact_results(
+            a in any_f64(), b in any_f64(), c in any_f64(), d in any_f64(),
+        ) {
+            let x = F64Interval::new(a.min(b), a.max(b)).expect("ordered");
+            let y = F64Interval::new(c.min(d), c.max(d)).expect("ordered");
+            let xs = [q64(x.lo()), q64(x.hi()), (q64(x.lo()) + q64(x.hi())) / Rational::from(2)];
+            let ys = [q64(y.lo()), q64(y.hi()), (q64(y.lo()) + q64(y.hi())) / Rational::from(2)];
+            let (s, t, p) = (x + y, x - y, x * y);
+            for u in &xs {
+                for v in &ys {
+                    proptest::prop_assert!(f64_contains(&s, &(u + v)));
+                    proptest::prop_assert!(f64_contains(&t, &(u - v)));
+                    proptest::prop_assert!(f64_contains(&p, &(u * v)));
+                }
+                let dv = c.abs().max(1e-300);
+                proptest::prop_assert!(f64_contains(&x.div_positive(dv), &(u / q64(dv))));
+            }
+        }
+    }
+
+    #[test]
+    fn f64_intervals_from_grid_intervals_and_back_enclose() {
+        let third = Interval::point(&q(1, 3));
+        let f = F64Interval::from_interval(&third);
+        assert!(f64_contains(&f, &q(1, 3)));
+        assert!(f.hi() - f.lo() <= 2.0 * f64::EPSILON);
+        let back = f.to_interval().expect("finite");
+        assert!(back.encloses(&third));
+        // overflow is an infinite end, never a false finite one
+        let big = F64Interval::point(f64::MAX);
+        let o = big * big;
+        assert!(!o.is_finite() && o.sign() == Some(Ordering::Greater));
+        assert!((o - o).lo() == f64::NEG_INFINITY && (o - o).hi() == f64::INFINITY);
+        assert!((o - o).to_interval().is_none());
     }
 
     #[test]

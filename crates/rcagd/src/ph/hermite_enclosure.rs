@@ -22,7 +22,15 @@
 //!    `∫_a^b f ∈ ∫_a^b p ± (b − a)·max|N − pσ⁵|/min σ⁵`; the sub-interval with the widest
 //!    enclosure is bisected until the total width is below the relative tolerance.
 //!    `σ` itself is the polynomial square root of `|r'|²` (`σ(0) = |d_s| > 0`), evaluated
-//!    from the low coefficients by the same interval arithmetic.
+//!    from the low coefficients by the same interval arithmetic. Each piece is enclosed
+//!    first in `f64` interval arithmetic with outward rounding
+//!    ([`rcagd_algebra::interval::F64Interval`]: every end point moved one `f64` outward
+//!    after each correctly rounded operation), from `f64` enclosures of the 256-bit
+//!    coefficients of `N` and `σ`; in 256-bit fixed point only where that pass cannot
+//!    prove `σ > 0`, and the whole quadrature again in 256-bit fixed point if the `f64`
+//!    roundings keep the total wider than the tolerance when the piece budget is spent.
+//!    Both are enclosures of the exact energy; the `f64` pass's end points are wider by
+//!    its roundings (≈ 10⁻¹⁶ relative per operation, far below the tolerance).
 //!
 //! Derivation and the error model: docs/math/ph-curves.md, "Guaranteed-accuracy Hermite
 //! interpolants".
@@ -33,7 +41,7 @@ use super::hermite::{
 use super::util::{add3, scale3};
 use super::PhError;
 use rcagd_algebra::bernstein::from_bernstein;
-use rcagd_algebra::interval::{pow2, Interval};
+use rcagd_algebra::interval::{pow2, F64Interval, Interval};
 use rcagd_algebra::{Certificate, Poly, QuadExt, Rational, Scalar};
 use std::cmp::Ordering;
 
@@ -395,8 +403,163 @@ fn enclose_piece(
     Some(e * iv(&(b - a)))
 }
 
+/// `p(a + h u)` by Horner's rule in the linear substitute (two interval products per
+/// coefficient and step).
+fn compose_linear(p: &[Interval], a: &Interval, h: &Interval) -> Vec<Interval> {
+    let mut r: Vec<Interval> = Vec::with_capacity(p.len());
+    for c in p.iter().rev() {
+        // r ← r·(a + h u) + c
+        r.push(Interval::zero());
+        for j in (0..r.len()).rev() {
+            let mut x = &r[j] * a;
+            if j > 0 {
+                x += &r[j - 1] * h;
+            }
+            r[j] = x;
+        }
+        r[0] += c.clone();
+    }
+    r
+}
+
+fn mul_f64(a: &[F64Interval], b: &[F64Interval]) -> Vec<F64Interval> {
+    let mut out = vec![F64Interval::zero(); (a.len() + b.len()).saturating_sub(1)];
+    for (i, x) in a.iter().enumerate() {
+        for (j, y) in b.iter().enumerate() {
+            out[i + j] += *x * *y;
+        }
+    }
+    out
+}
+
+/// [`range`] in `f64` interval arithmetic: Bernstein coefficients `c_j = a_j/C(n, j)`
+/// (binomials exact in `f64` for `n ≤ 56`), then prefix sums.
+fn range_f64(a: &[F64Interval]) -> F64Interval {
+    let n = a.len().saturating_sub(1);
+    if n > 56 {
+        return F64Interval::ENTIRE;
+    }
+    let mut binom = 1.0f64; // C(n, j), exact
+    let mut c: Vec<F64Interval> = Vec::with_capacity(n + 1);
+    for (j, aj) in a.iter().enumerate() {
+        c.push(aj.div_positive(binom));
+        binom = binom * (n - j) as f64 / (j + 1) as f64;
+    }
+    for r in 1..=n {
+        for k in (r..=n).rev() {
+            let prev = c[k - 1];
+            c[k] += prev;
+        }
+    }
+    c.iter().skip(1).fold(
+        c.first().copied().unwrap_or_else(F64Interval::zero),
+        |r, x| r.hull(x),
+    )
+}
+
+/// The first pass of [`enclose_piece`] in `f64` interval arithmetic with outward rounding
+/// ([`F64Interval`]): the same validated bound, the same Chebyshev interpolant, every
+/// operation of the remainder bound and the integral rounded outward, so the result is an
+/// enclosure of `∫_a^b N/σ⁵` as rigorous as the 256-bit one, only wider by the `f64`
+/// roundings (≈ 10⁻¹⁶ relative per operation). `None` where `σ` is not proven positive
+/// or a value is not finite (the caller then takes the 256-bit pass).
+fn enclose_piece_f64(
+    n: &Poly<Interval>,
+    sigma: &Poly<Interval>,
+    a: &Rational,
+    b: &Rational,
+) -> Option<Interval> {
+    // the piece ends are dyadic (bisections of [0, 1]): exact in f64 down to 2^−1074
+    let (af, bf) = (a.to_f64().value(), b.to_f64().value());
+    let hf = bf - af;
+    if Rational::try_from(af).ok()? != *a || Rational::try_from(hf).ok()? != b - a {
+        return None;
+    }
+    // The substitution t = a + h u in 256-bit fixed point (the power coefficients in t
+    // cancel on a short piece: in f64 their roundings would dominate the enclosure),
+    // then everything else in f64.
+    let (ai, hi) = (iv(a), iv(&(b - a)));
+    let to_f64 = |p: &Poly<Interval>| -> Vec<F64Interval> {
+        compose_linear(p.coeffs(), &ai, &hi)
+            .iter()
+            .map(F64Interval::from_interval)
+            .collect()
+    };
+    let nu = to_f64(n);
+    let su = to_f64(sigma);
+    let smin = range_f64(&su);
+    if smin.sign() != Some(Ordering::Greater) || !smin.is_finite() {
+        return None;
+    }
+    let s5 = {
+        let s2 = mul_f64(&su, &su);
+        mul_f64(&mul_f64(&s2, &s2), &su)
+    };
+    let nf: Vec<f64> = nu.iter().map(F64Interval::mid).collect();
+    let sf: Vec<f64> = su.iter().map(F64Interval::mid).collect();
+    let f = |u: f64| {
+        let s = eval_f64(&sf, u);
+        eval_f64(&nf, u) / (s * s * s * s * s)
+    };
+    let pc = chebyshev_fit(&f, 10);
+    if pc.iter().any(|c| !c.is_finite()) {
+        return None;
+    }
+    let p: Vec<F64Interval> = pc.iter().map(|c| F64Interval::point(*c)).collect();
+    let ps5 = mul_f64(&p, &s5);
+    let rem: Vec<F64Interval> = (0..nu.len().max(ps5.len()))
+        .map(|k| {
+            let x = nu.get(k).copied().unwrap_or_else(F64Interval::zero);
+            let y = ps5.get(k).copied().unwrap_or_else(F64Interval::zero);
+            x - y
+        })
+        .collect();
+    let r = range_f64(&rem);
+    if !r.is_finite() {
+        return None;
+    }
+    // a lower bound of smin⁵ (smin > 0) and an upper bound of r/smin⁵
+    let lo = F64Interval::point(smin.lo());
+    let smin5 = (lo * lo * lo * lo * lo).lo();
+    if smin5 <= 0.0 {
+        return None;
+    }
+    let bound = F64Interval::point(r.mag()).div_positive(smin5).hi();
+    let integral = p
+        .iter()
+        .enumerate()
+        .fold(F64Interval::zero(), |acc, (j, c)| {
+            acc + c.div_positive((j + 1) as f64)
+        });
+    let e = (integral + F64Interval::new(-bound, bound)?) * F64Interval::point(hf);
+    if !e.is_finite() {
+        return None;
+    }
+    e.to_interval()
+}
+
 /// Validated quadrature of `∫₀¹ |r'×r''|²/σ⁵` for the quintic with control-point boxes `pts`.
+///
+/// Two passes: each piece is first enclosed in `f64` interval arithmetic with outward
+/// rounding ([`enclose_piece_f64`]; where it cannot prove `σ > 0`, in 256-bit fixed point,
+/// [`enclose_piece`]). Only if the `f64` roundings keep the total wider than the relative
+/// tolerance when the piece budget is spent is the whole quadrature repeated in 256-bit
+/// fixed point. Both are enclosures of the exact energy; the first pass's end points are
+/// wider by the `f64` roundings.
 fn enclose_energy(pts: &[[Interval; 3]], rel_tol: &Rational) -> Result<(Interval, usize), PhError> {
+    let (num, sigma) = energy_integrand(pts)?;
+    let first = quadrature(rel_tol, |a, b| {
+        enclose_piece_f64(&num, &sigma, a, b).or_else(|| enclose_piece(&num, &sigma, a, b))
+    })?;
+    if first.0.width() <= rel_tol.clone() * first.0.mag() {
+        return Ok(first);
+    }
+    quadrature(rel_tol, |a, b| enclose_piece(&num, &sigma, a, b))
+}
+
+/// The numerator `N = |r'×r''|²` and `σ` (the square root of `|r'|²`) of the energy
+/// integrand `N/σ⁵` for the control-point boxes `pts`.
+fn energy_integrand(pts: &[[Interval; 3]]) -> Result<(Poly<Interval>, Poly<Interval>), PhError> {
     // hodograph r'(t) = 5 Σ Δp_i B⁴_i(t)
     let comp = |k: usize| -> Poly<Interval> {
         let b: Vec<Interval> = (0..5)
@@ -414,6 +577,16 @@ fn enclose_energy(pts: &[[Interval; 3]], rel_tol: &Rational) -> Result<(Interval
     let num = &(&(&cross[0] * &cross[0]) + &(&cross[1] * &cross[1])) + &(&cross[2] * &cross[2]);
     let sq = &(&(&d1[0] * &d1[0]) + &(&d1[1] * &d1[1])) + &(&d1[2] * &d1[2]);
     let sigma = sigma_from_square(&sq)?;
+    Ok((num, sigma))
+}
+
+/// The adaptive quadrature: `piece(a, b)` encloses `∫_a^b` (or `None` where `σ` is not
+/// proven positive); the widest piece is bisected until the total's relative width is at
+/// most `rel_tol` or the piece budget is spent.
+fn quadrature(
+    rel_tol: &Rational,
+    piece: impl Fn(&Rational, &Rational) -> Option<Interval>,
+) -> Result<(Interval, usize), PhError> {
     // Each piece's width is computed once, and the total kept as exact sums of the
     // pieces' ends (the enclosures are on one fixed-point grid, so the sums are exact):
     // an iteration costs one scan of cached widths instead of recomputing every width
@@ -425,7 +598,7 @@ fn enclose_energy(pts: &[[Interval; 3]], rel_tol: &Rational) -> Result<(Interval
         let a = Rational::from(i) / Rational::from(n0);
         let b = Rational::from(i + 1) / Rational::from(n0);
         set.push(Piece {
-            enclosure: enclose_piece(&num, &sigma, &a, &b),
+            enclosure: piece(&a, &b),
             a,
             b,
         });
@@ -456,7 +629,7 @@ fn enclose_energy(pts: &[[Interval; 3]], rel_tol: &Rational) -> Result<(Interval
         let mid = (&p.a + &p.b) / Rational::from(2);
         for (a, b) in [(p.a.clone(), mid.clone()), (mid, p.b.clone())] {
             set.push(Piece {
-                enclosure: enclose_piece(&num, &sigma, &a, &b),
+                enclosure: piece(&a, &b),
                 a,
                 b,
             });
@@ -612,5 +785,146 @@ impl EnclosedInterpolant {
                 || "the energy enclosure is not positive".into(),
             ),
         ]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn q(p: i64, d: i64) -> Rational {
+        Rational::from(p) / Rational::from(d)
+    }
+
+    /// An integrand with an exact rational integral: `N/σ⁵` with `N = g′σ − 4gσ′` is the
+    /// derivative of `g/σ⁴`, so `∫_a^b N/σ⁵ = g(b)/σ(b)⁴ − g(a)/σ(a)⁴` (an independent
+    /// check of the enclosures). `σ` has Bernstein coefficients in `[1, 4]`, so `σ ≥ 1` on
+    /// `[0, 1]`.
+    fn integrand(
+        g: &[i64],
+        sb: &[i64],
+        den: i64,
+    ) -> (
+        Poly<Rational>,
+        Poly<Rational>,
+        Poly<Interval>,
+        Poly<Interval>,
+    ) {
+        let g = Poly::new(g.iter().map(|c| q(*c, den)).collect());
+        let bern: Vec<Rational> = sb.iter().map(|c| q(*c, 2)).collect();
+        let s = from_bernstein(&bern);
+        let n = &(&g.derivative() * &s) - &(&(&g * &s.derivative()) * &Poly::new(vec![q(4, 1)]));
+        let (ni, si) = (n.map(Interval::point), s.map(Interval::point));
+        (g, s, ni, si)
+    }
+
+    fn exact_integral(
+        g: &Poly<Rational>,
+        s: &Poly<Rational>,
+        a: &Rational,
+        b: &Rational,
+    ) -> Rational {
+        let f = |t: &Rational| {
+            let st = s.eval(t);
+            let s2 = &st * &st;
+            g.eval(t) / (&s2 * &s2)
+        };
+        f(b) - f(a)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+        /// Both passes enclose the exact integral on random dyadic pieces, and the `f64`
+        /// pass decides every piece of a positive `σ`.
+        #[test]
+        fn piece_enclosures_contain_the_exact_integral(
+            g in proptest::collection::vec(-40i64..40, 1..7),
+            sb in proptest::collection::vec(2i64..9, 2..5),
+            den in 1i64..9,
+            k in 0i64..16,
+            level in 0u32..5,
+        ) {
+            let (g, s, ni, si) = integrand(&g, &sb, den);
+            let m = 1i64 << level;
+            let (k, m) = (k % m, m);
+            let (a, b) = (q(k, m), q(k + 1, m));
+            let exact = exact_integral(&g, &s, &a, &b);
+            let fast = enclose_piece_f64(&ni, &si, &a, &b);
+            let fast = fast.expect("σ ≥ 1: the f64 pass decides");
+            prop_assert!(fast.contains(&exact), "f64 pass {:?} misses {}", fast.to_f64_bounds(), exact.to_f64().value());
+            let slow = enclose_piece(&ni, &si, &a, &b).expect("σ ≥ 1");
+            prop_assert!(slow.contains(&exact));
+        }
+
+        /// The two-pass quadrature encloses the exact integral over `[0, 1]` to the
+        /// relative tolerance.
+        #[test]
+        fn quadrature_encloses_the_exact_integral(
+            g in proptest::collection::vec(-40i64..40, 2..7),
+            sb in proptest::collection::vec(1i64..9, 2..5),
+        ) {
+            let (g, s, ni, si) = integrand(&g, &sb, 3);
+            let exact = exact_integral(&g, &s, &Rational::ZERO, &Rational::ONE);
+            let tol = pow2(-30);
+            let (total, _) = quadrature(&tol, |a, b| {
+                enclose_piece_f64(&ni, &si, a, b).or_else(|| enclose_piece(&ni, &si, a, b))
+            })
+            .expect("σ ≥ 1/2");
+            prop_assert!(total.contains(&exact));
+            prop_assert!(total.width() <= tol * total.mag() + pow2(-200));
+        }
+    }
+
+    /// A planted error: the enclosure of a shifted integrand misses the exact value of the
+    /// original one (the check above can fail).
+    #[test]
+    fn a_wrong_integrand_is_not_enclosed() {
+        let (g, s, ni, si) = integrand(&[1, -3, 2, 5], &[2, 3, 5], 1);
+        let exact = exact_integral(&g, &s, &Rational::ZERO, &q(1, 2));
+        let shifted = &ni + &Poly::new(vec![Interval::point(&q(1, 1000))]);
+        let good = enclose_piece_f64(&ni, &si, &Rational::ZERO, &q(1, 2)).expect("decided");
+        let bad = enclose_piece_f64(&shifted, &si, &Rational::ZERO, &q(1, 2)).expect("decided");
+        assert!(good.contains(&exact));
+        assert!(
+            !bad.contains(&exact),
+            "{:?} {:?}",
+            good.to_f64_bounds(),
+            bad.to_f64_bounds()
+        );
+    }
+
+    /// Besednjak Example 9.1 (the gallery's `hermite_9_1`): the first pass reaches the
+    /// gallery's tolerance `2⁻⁴⁰` well within the piece budget, and its enclosure of each
+    /// energy meets the 256-bit one.
+    #[test]
+    fn example_9_1_first_pass_reaches_the_tolerance() {
+        use super::super::hermite::HermiteData;
+        let z = Rational::ZERO;
+        let o = Rational::ONE;
+        let data = HermiteData::new(
+            [z.clone(), z.clone(), z.clone()],
+            [o.clone(), z.clone(), o.clone()],
+            [o.clone(), o.clone(), o.clone()],
+            [z.clone(), o.clone(), o.clone()],
+        );
+        let sol = data.solve_exact().expect("solutions");
+        let tol = pow2(-40);
+        for i in 0..sol.interpolants.len() {
+            let e = sol.enclose(i, &pow2(-80), &tol).expect("enclosed");
+            let (num, sigma) = energy_integrand(&e.control_points).expect("σ(0) > 0");
+            let (fast, pieces) = quadrature(&tol, |a, b| {
+                enclose_piece_f64(&num, &sigma, a, b).or_else(|| enclose_piece(&num, &sigma, a, b))
+            })
+            .expect("first pass");
+            assert!(
+                fast.width() <= tol.clone() * fast.mag(),
+                "interpolant {i}: {pieces} pieces"
+            );
+            assert!(pieces < 1000, "interpolant {i}: {pieces} pieces");
+            let (slow, _) =
+                quadrature(&tol, |a, b| enclose_piece(&num, &sigma, a, b)).expect("256");
+            assert!(fast.lo() <= slow.hi() && slow.lo() <= fast.hi());
+        }
     }
 }
