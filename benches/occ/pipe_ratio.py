@@ -12,7 +12,9 @@ same machine state (the load of a shared machine changes within seconds):
   plane at the start along the same spine (rcagd's STEP of the ``ph_curve``, read once
   before the timing: the build from the curve in memory, as rcagd's starts from its curve
   in memory), ``N`` times per round, CPU time of this process per build
-  (``time.process_time_ns``, ``CLOCK_PROCESS_CPUTIME_ID``).
+  (``time.process_time_ns``, ``CLOCK_PROCESS_CPUTIME_ID``); and, for comparison with the
+  earlier tables, ``N`` builds that read the spine's STEP file inside the timing, as
+  ``benches/occ/bspline_pipe.py bench`` does.
 
 The first build of every round is a warm-up on both sides and is not counted. Reported per
 side and spine: the number of builds, median, minimum, quartiles and maximum of the CPU
@@ -74,11 +76,13 @@ def occ_pipe(curve, radius: float):
     return mk.Shape()
 
 
-def occ_round(curve, radius: float, n: int) -> tuple[list[float], list[float]]:
+def occ_round(curve, radius: float, n: int, path: str | None = None) -> tuple[list[float], list[float]]:
+    """``n`` builds (after one warm-up); with ``path`` the spine is read from that STEP file
+    inside every timed build, as ``benches/occ/bspline_pipe.py bench`` times it."""
     cpu, wall = [], []
     for _ in range(n + 1):
         c, w = time.process_time_ns(), time.perf_counter_ns()
-        occ_pipe(curve, radius)
+        occ_pipe(spine_curve(path) if path else curve, radius)
         cpu.append((time.process_time_ns() - c) / 1e6)
         wall.append((time.perf_counter_ns() - w) / 1e6)
     return cpu[1:], wall[1:]
@@ -112,13 +116,16 @@ def main() -> None:
     t0 = time.strftime("%H:%M:%S", time.gmtime())
     for name, which, step, radius in SPINES:
         curve = spine_curve(f"{spine_dir}/{step}")
-        cpu = {"OpenCascade": []} | {label: [] for label, _ in bins}
+        cpu = {"OpenCascade": [], "OpenCascade+read": []} | {label: [] for label, _ in bins}
         wall = {k: [] for k in cpu}
         round_ratio = {label: [] for label, _ in bins}
         for _ in range(rounds):
             oc, ow = occ_round(curve, radius, n)
             cpu["OpenCascade"] += oc
             wall["OpenCascade"] += ow
+            rc_, rw_ = occ_round(curve, radius, n, f"{spine_dir}/{step}")
+            cpu["OpenCascade+read"] += rc_
+            wall["OpenCascade+read"] += rw_
             for label, binary in bins:
                 rc, rw = rcagd_round(binary, which, n)
                 cpu[label] += rc
@@ -128,14 +135,19 @@ def main() -> None:
         print("| side | builds | CPU median ms | min | quartiles | max | wall median ms |")
         print("| --- | --- | --- | --- | --- | --- | --- |")
         for k, v in cpu.items():
-            side = "OpenCascade BRepOffsetAPI_MakePipe" if k == "OpenCascade" else f"rcagd {k}"
+            side = {
+                "OpenCascade": "OpenCascade BRepOffsetAPI_MakePipe (curve in memory)",
+                "OpenCascade+read": "OpenCascade, reading the spine's STEP file + MakePipe",
+            }.get(k, f"rcagd {k}")
             print(f"| {side} | {len(v)} | {stats(v)} | {statistics.median(wall[k]):.2f} |")
         occ = statistics.median(cpu["OpenCascade"])
+        occ_read = statistics.median(cpu["OpenCascade+read"])
         for label, _ in bins:
             rr = round_ratio[label]
-            print(f"ratio rcagd {label} / OpenCascade (CPU medians): "
+            print(f"ratio rcagd {label} / OpenCascade MakePipe (CPU medians): "
                   f"{statistics.median(cpu[label]) / occ:.1f}×; per round: median "
-                  f"{statistics.median(rr):.1f}×, range {min(rr):.1f}–{max(rr):.1f}×")
+                  f"{statistics.median(rr):.1f}×, range {min(rr):.1f}–{max(rr):.1f}×; "
+                  f"against read + MakePipe: {statistics.median(cpu[label]) / occ_read:.1f}×")
     load1 = open("/proc/loadavg").read().split()[0]
     t1 = time.strftime("%H:%M:%S", time.gmtime())
     print(f"\nrun {t0}–{t1} UTC, load (1 min) {load0} → {load1}")

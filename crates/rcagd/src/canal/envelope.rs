@@ -405,8 +405,7 @@ fn build_best<F: Scalar>(
 
 /// The irreducible factors of `det(a, b)` over the coefficient field with `i`, for step 3
 /// of the Krasauskas reduction ([`super::krasauskas`]).
-pub(crate) type Factors<'a, F> =
-    &'a dyn Fn(&Poly<rcagd_algebra::Complex<F>>) -> Vec<Poly<rcagd_algebra::Complex<F>>>;
+pub(crate) type Factors<'a, F> = &'a dyn krasauskas::FactorSource<F>;
 
 /// Builds `x(t, u)` from Krasauskas' reduced pencil for one axis choice over `Q`
 /// (factors over `Q(i)`, [`krasauskas::gaussian_factors_of`], through `memo`).
@@ -418,9 +417,7 @@ pub(crate) fn build_krasauskas(
     balance_at: &Rational,
     memo: &krasauskas::FactorMemo,
 ) -> Result<CanalSurface<Rational>, CanalError> {
-    build_krasauskas_with(spine, numerators, g, axis, balance_at, &|l| {
-        memo.gaussian_factors(l)
-    })
+    build_krasauskas_with(spine, numerators, g, axis, balance_at, memo)
 }
 
 /// Builds `x(t, u)` from Krasauskas' reduced pencil for one axis choice
@@ -696,7 +693,6 @@ pub(crate) fn canal_surface_memo(
     let (spine, reparam) = oriented_on_domain(spine, options, memo)?;
     let d = spine.discriminant()?;
     let split = memo.gaussian_split(&d)?;
-    let gaussian = |l: &Poly<rcagd_algebra::Complex<Rational>>| memo.gaussian_factors(l);
     // the Krasauskas pencil is balanced at the middle of the domain (s = 0 after the
     // reparametrization of a domain, t = 0 without one)
     let mid = match (&options.domain, &reparam) {
@@ -724,7 +720,7 @@ pub(crate) fn canal_surface_memo(
                 options.axis,
                 options.method,
                 &mid,
-                &gaussian,
+                memo,
             )
             .map(|mut s| {
                 s.reparametrized = reparam.clone();
@@ -742,7 +738,7 @@ pub(crate) fn canal_surface_memo(
                     options.axis,
                     options.method,
                     &mid,
-                    &factors,
+                    &krasauskas::FnFactors(&factors),
                 )
                 .map(|mut s| {
                     s.reparametrized = reparam.clone();
