@@ -914,9 +914,17 @@ mod tests {
     fn good_primes_of_square_free_polynomials() {
         // square-free: some prime of the list keeps it square-free of full degree
         assert!(has_good_prime(&p(&[5, 2, 1])));
-        assert!(has_good_prime(&product(&[p(&[1, 0, 1]), p(&[-2, 0, 1]), p(&[3, 1])])));
+        assert!(has_good_prime(&product(&[
+            p(&[1, 0, 1]),
+            p(&[-2, 0, 1]),
+            p(&[3, 1])
+        ])));
         // a square is a square modulo every prime; a zero polynomial has no prime
-        assert!(!has_good_prime(&product(&[p(&[1, 1]), p(&[1, 1]), p(&[2, 0, 1])])));
+        assert!(!has_good_prime(&product(&[
+            p(&[1, 1]),
+            p(&[1, 1]),
+            p(&[2, 0, 1])
+        ])));
         assert!(!has_good_prime(&Poly::zero()));
         // the leading coefficient 3·5·…·179 (every prime of the list) and a square-free
         // polynomial: no prime keeps the degree

@@ -815,6 +815,11 @@ impl FactorSource<Rational> for FactorMemo {
             return None;
         }
         let n = l.degree().filter(|&n| n > 0)?;
+        // a det seen before (in another frame or method: the monic det is the key)
+        let key = l.monic();
+        if let Some(v) = self.get(&self.dets, &key) {
+            return Some(v);
+        }
         // the candidates that divide l, with their multiplicities
         let mut found: Vec<(CPoly<Rational>, usize)> = Vec::new();
         let mut total = 0;
@@ -873,7 +878,10 @@ impl FactorSource<Rational> for FactorMemo {
         if !has_good_prime(&radical) {
             return None;
         }
-        Some(found.into_iter().map(|(h, _)| h).collect())
+        // the same list as `gaussian_factors` would store (as a set; the reduction sorts it)
+        let v: Vec<CPoly<Rational>> = found.into_iter().map(|(h, _)| h).collect();
+        self.dets.put(key, v.clone());
+        Some(v)
     }
 }
 
