@@ -3,6 +3,9 @@
 //!
 //! Run: `cargo bench -p rcagd-benches --bench pipe_profile --no-run`, then
 //! `perf record --call-graph dwarf target/release/deps/pipe_profile-… [issue] [runs]`.
+//! Prints the summary of the choice, the CPU time and the wall time of every run (the CPU
+//! time from `/proc/self/task/*/schedstat`, ns; read by `benches/occ/pipe_ratio.py`), and
+//! their median / mean.
 
 use rcagd::canal::{pipe_around_ph_exportable, Orientation};
 use rcagd::ph::PhCurve;
