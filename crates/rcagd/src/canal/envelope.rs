@@ -1086,11 +1086,7 @@ impl<F: Scalar> CanalSurface<F> {
     fn domain_patches_by<G: Scalar>(
         &self,
         x: &[BiPoly<G>],
-        patch: &dyn Fn(
-            &[BiPoly<G>],
-            (&G, &G),
-            (&G, &G),
-        ) -> Result<BezierPatch<G>, rcagd_geom::GeomError>,
+        patch: &ChartPatch<'_, G>,
     ) -> Result<Vec<BezierPatch<G>>, CanalError> {
         let (a, b) = self.domain.clone().ok_or_else(|| {
             CanalError::InvalidArgument("the surface has no parameter domain".into())
@@ -1131,6 +1127,11 @@ impl<F: Scalar> CanalSurface<F> {
         Ok(out)
     }
 }
+
+/// The patch of one chart's homogeneous coordinates on `[t₀, t₁] × [u₀, u₁]`
+/// ([`patch_of`], or the weight alone).
+type ChartPatch<'a, G> =
+    dyn Fn(&[BiPoly<G>], (&G, &G), (&G, &G)) -> Result<BezierPatch<G>, rcagd_geom::GeomError> + 'a;
 
 fn bi_cert<F: Scalar>(property: &str, b: &BiPoly<F>, scale: f64) -> Certificate {
     polynomial_is_zero_scaled(property, &b.all_coeffs(), scale)
