@@ -6,6 +6,11 @@
 # (benches/occ/bspline_pipe.py measures both surfaces through the same code).
 #
 #   bash benches/occ/pipe_compare.sh
+#
+# Its times are single measurements (OpenCascade: median of 7 builds that each read the
+# spine's STEP file; rcagd: the CPU time of the whole CLI process): for a ratio that is
+# stable under load use benches/occ/pipe_ratio.sh (both sides alternately, many builds,
+# OpenCascade with and without the file read).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cd "$root"

@@ -515,6 +515,31 @@ fn inv_mod_pk(a: &Rational, p: u64, k: u32) -> Rational {
     modulo(&x, &target)
 }
 
+/// Whether [`factor_squarefree_int`] finds a prime for the square-free `f ∈ Q[x]` and for
+/// every factor of it over `Z`: a prime `p` of its list with `p ∤ lc(f)` and `f mod p`
+/// square-free (for the primitive part of `f`). A factor `h` of `f` then has `p ∤ lc(h)`
+/// (`lc(h) | lc(f)`) and `h mod p` square-free (a divisor of a square-free polynomial), so
+/// [`factor_squarefree_int`] of `h` does not end in [`FactorError::NoGoodPrime`]; with
+/// `deg h ≤` [`MAX_MODULAR_FACTORS`] it does not end in
+/// [`FactorError::TooManyModularFactors`] either (at most `deg h` modular factors).
+pub fn has_good_prime(f: &Poly<Rational>) -> bool {
+    let f = primitive_int(f);
+    let Some(n) = f.degree() else {
+        return false;
+    };
+    if n <= 1 {
+        return true;
+    }
+    let lc = f.leading();
+    PRIMES.iter().any(|&p| {
+        if to_u64_mod(&lc, p) == 0 {
+            return false;
+        }
+        let fp = z_to_mp(&f.coeffs().to_vec(), p);
+        fp.len() == n + 1 && mp_gcd(&fp, &mp_derivative(&fp, p), p).len() == 1
+    })
+}
+
 /// The irreducible factors over `Z` of a square-free primitive `f ∈ Z[x]` with positive
 /// leading coefficient (each primitive with positive leading coefficient).
 ///
@@ -883,6 +908,33 @@ mod tests {
             .iter()
             .fold(GaussPoly::constant(Complex::one()), |a, b| &a * b);
         assert_eq!(prod, to_gauss(&p(&[1, 0, 0, 0, 1])));
+    }
+
+    #[test]
+    fn good_primes_of_square_free_polynomials() {
+        // square-free: some prime of the list keeps it square-free of full degree
+        assert!(has_good_prime(&p(&[5, 2, 1])));
+        assert!(has_good_prime(&product(&[
+            p(&[1, 0, 1]),
+            p(&[-2, 0, 1]),
+            p(&[3, 1])
+        ])));
+        // a square is a square modulo every prime; a zero polynomial has no prime
+        assert!(!has_good_prime(&product(&[
+            p(&[1, 1]),
+            p(&[1, 1]),
+            p(&[2, 0, 1])
+        ])));
+        assert!(!has_good_prime(&Poly::zero()));
+        // the leading coefficient 3·5·…·179 (every prime of the list) and a square-free
+        // polynomial: no prime keeps the degree
+        let lc = PRIMES.iter().fold(Rational::ONE, |a, &q| a * int(q as i64));
+        let f = Poly::new(vec![Rational::ONE, Rational::ZERO, lc]);
+        assert!(!has_good_prime(&f));
+        // and a factorization that finds a prime agrees: the factors multiply back
+        let g = product(&[p(&[1, 0, 1]), p(&[-2, 0, 1]), p(&[3, 1])]);
+        let fs = factor_squarefree_int(&primitive_int(&g)).expect("good prime");
+        assert_eq!(product(&fs).monic(), g.monic());
     }
 
     #[test]

@@ -405,8 +405,7 @@ fn build_best<F: Scalar>(
 
 /// The irreducible factors of `det(a, b)` over the coefficient field with `i`, for step 3
 /// of the Krasauskas reduction ([`super::krasauskas`]).
-pub(crate) type Factors<'a, F> =
-    &'a dyn Fn(&Poly<rcagd_algebra::Complex<F>>) -> Vec<Poly<rcagd_algebra::Complex<F>>>;
+pub(crate) type Factors<'a, F> = &'a dyn krasauskas::FactorSource<F>;
 
 /// Builds `x(t, u)` from Krasauskas' reduced pencil for one axis choice over `Q`
 /// (factors over `Q(i)`, [`krasauskas::gaussian_factors_of`], through `memo`).
@@ -418,9 +417,7 @@ pub(crate) fn build_krasauskas(
     balance_at: &Rational,
     memo: &krasauskas::FactorMemo,
 ) -> Result<CanalSurface<Rational>, CanalError> {
-    build_krasauskas_with(spine, numerators, g, axis, balance_at, &|l| {
-        memo.gaussian_factors(l)
-    })
+    build_krasauskas_with(spine, numerators, g, axis, balance_at, memo)
 }
 
 /// Builds `x(t, u)` from Krasauskas' reduced pencil for one axis choice
@@ -696,7 +693,6 @@ pub(crate) fn canal_surface_memo(
     let (spine, reparam) = oriented_on_domain(spine, options, memo)?;
     let d = spine.discriminant()?;
     let split = memo.gaussian_split(&d)?;
-    let gaussian = |l: &Poly<rcagd_algebra::Complex<Rational>>| memo.gaussian_factors(l);
     // the Krasauskas pencil is balanced at the middle of the domain (s = 0 after the
     // reparametrization of a domain, t = 0 without one)
     let mid = match (&options.domain, &reparam) {
@@ -724,7 +720,7 @@ pub(crate) fn canal_surface_memo(
                 options.axis,
                 options.method,
                 &mid,
-                &gaussian,
+                memo,
             )
             .map(|mut s| {
                 s.reparametrized = reparam.clone();
@@ -742,7 +738,7 @@ pub(crate) fn canal_surface_memo(
                     options.axis,
                     options.method,
                     &mid,
-                    &factors,
+                    &krasauskas::FnFactors(&factors),
                 )
                 .map(|mut s| {
                     s.reparametrized = reparam.clone();
@@ -1056,46 +1052,86 @@ impl<F: Scalar> CanalSurface<F> {
     /// # Errors
     /// [`CanalError::InvalidArgument`] without a domain; geometry failures.
     pub fn domain_patches(&self) -> Result<Vec<BezierPatch<F>>, CanalError> {
+        self.domain_patches_by(&self.x, &patch_of)
+    }
+
+    /// The weights of [`Self::domain_patches`] in `f64`: the same patches (same charts,
+    /// same bidegree, the weight computed by the same `f64` operations as in the patches of
+    /// `self.map_scalar(Scalar::to_f64)`), each as a patch of dimension 1 whose second
+    /// coordinate is `0` — all the candidate search needs to estimate the size of an export
+    /// (its positive-weight split looks at the weights only).
+    ///
+    /// # Errors
+    /// As [`Self::domain_patches`].
+    pub(crate) fn domain_weight_patches_f64(&self) -> Result<Vec<BezierPatch<f64>>, CanalError> {
+        let x: Vec<BiPoly<f64>> = self
+            .x
+            .iter()
+            .map(|c| c.map_scalar(Scalar::to_f64))
+            .collect();
+        self.domain_patches_by(&x, &|ch: &[BiPoly<f64>], t, u| {
+            // the bidegree of the whole chart, as `patch_of`
+            let (m, n) = bidegree(ch);
+            let w = ch
+                .first()
+                .ok_or_else(|| rcagd_geom::GeomError::Dimension("no weight".into()))?
+                .bernstein_on(t, u, m, n)?;
+            let coords: Vec<f64> = w.into_iter().flat_map(|x| [x, 0.0]).collect();
+            BezierPatch::from_flat(1, m, n, coords)
+        })
+    }
+
+    /// The patches of [`Self::domain_patches`] from the homogeneous coordinates `x` (`self.x`
+    /// or a conversion of it), each chart made into a patch by `patch`.
+    fn domain_patches_by<G: Scalar>(
+        &self,
+        x: &[BiPoly<G>],
+        patch: &ChartPatch<'_, G>,
+    ) -> Result<Vec<BezierPatch<G>>, CanalError> {
         let (a, b) = self.domain.clone().ok_or_else(|| {
             CanalError::InvalidArgument("the surface has no parameter domain".into())
         })?;
-        let (zero, one, m1) = (F::zero(), F::one(), -F::one());
+        let (zero, one, m1) = (G::zero(), G::one(), -G::one());
         let nu = self.degree().1;
-        let charts = |x: &[BiPoly<F>]| -> Vec<Vec<BiPoly<F>>> {
+        let charts = |x: &[BiPoly<G>]| -> Vec<Vec<BiPoly<G>>> {
             vec![x.to_vec(), x.iter().map(|c| c.reverse_u(nu)).collect()]
         };
         // Krasauskas builds: u ∈ [−1, 0] and [0, 1] per chart (the weight |a + u b|² is
         // balanced at u = 0, see `krasauskas::Pencil::balance_at`)
-        let u_ranges: Vec<(&F, &F)> = match self.construction {
+        let u_ranges: Vec<(&G, &G)> = match self.construction {
             Construction::Krasauskas { .. } => vec![(&m1, &zero), (&zero, &one)],
             Construction::PeternellPottmann => vec![(&m1, &one)],
         };
         let mut out = Vec::new();
         if self.reparametrized.is_some() {
             let nt = self.degree().0;
-            let rev: Vec<BiPoly<F>> = self
-                .x
+            let rev: Vec<BiPoly<G>> = x
                 .iter()
                 .map(|c| c.transpose().reverse_u(nt).transpose())
                 .collect();
-            for base in [self.x.to_vec(), rev] {
+            for base in [x.to_vec(), rev] {
                 for ch in charts(&base) {
                     for u in &u_ranges {
-                        out.push(patch_of(&ch, (&zero, &one), *u)?);
+                        out.push(patch(&ch, (&zero, &one), *u)?);
                     }
                 }
             }
         } else {
-            let (fa, fb) = (F::from_rational(&a), F::from_rational(&b));
-            for ch in charts(&self.x) {
+            let (fa, fb) = (G::from_rational(&a), G::from_rational(&b));
+            for ch in charts(x) {
                 for u in &u_ranges {
-                    out.push(patch_of(&ch, (&fa, &fb), *u)?);
+                    out.push(patch(&ch, (&fa, &fb), *u)?);
                 }
             }
         }
         Ok(out)
     }
 }
+
+/// The patch of one chart's homogeneous coordinates on `[t₀, t₁] × [u₀, u₁]`
+/// ([`patch_of`], or the weight alone).
+type ChartPatch<'a, G> =
+    dyn Fn(&[BiPoly<G>], (&G, &G), (&G, &G)) -> Result<BezierPatch<G>, rcagd_geom::GeomError> + 'a;
 
 fn bi_cert<F: Scalar>(property: &str, b: &BiPoly<F>, scale: f64) -> Certificate {
     polynomial_is_zero_scaled(property, &b.all_coeffs(), scale)

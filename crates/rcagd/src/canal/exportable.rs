@@ -360,6 +360,34 @@ fn exported_patches<F: Scalar>(s: &CanalSurface<F>) -> Option<Vec<BezierPatch<F>
     Some(split.pieces)
 }
 
+/// The number of control points of [`exported_patches`] of `s` in `f64`
+/// (`exported_patches(&s.map_scalar(Scalar::to_f64))`), from the weights alone
+/// ([`CanalSurface::domain_weight_patches_f64`]: the split into pieces with positive
+/// weights and the test against weights within rounding of zero look at the weights only,
+/// and a piece keeps the bidegree of its patch), or `None` where that gives `None`.
+fn exported_size_f64(s: &CanalSurface<Rational>) -> Option<usize> {
+    let patches: Vec<BezierPatch<f64>> = s
+        .domain_weight_patches_f64()
+        .ok()?
+        .into_iter()
+        .map(with_positive_corner)
+        .collect();
+    let split = split_patches_adaptive(patches, SignRule::Positive, EXPORT_SPLITS).ok()?;
+    if split.failed > 0 {
+        return None;
+    }
+    let ws: Vec<f64> = split
+        .pieces
+        .iter()
+        .flat_map(|p| p.coords().iter().step_by(p.dim() + 1).copied())
+        .collect();
+    let hi = ws.iter().copied().fold(0.0, f64::max);
+    if ws.iter().any(|w| *w <= 1e-12 * hi) {
+        return None;
+    }
+    Some(control_points_f64(&split.pieces))
+}
+
 /// What the candidates on one interval gave.
 struct IntervalResult {
     best: Option<ExportPiece>,
@@ -487,11 +515,11 @@ fn candidates_on(
                 continue;
             }
             // the size after the positive-weight split, estimated in f64 (exact below)
-            let Some(est) = exported_patches(&s.map_scalar(Scalar::to_f64)) else {
+            let Some(est) = exported_size_f64(&s) else {
                 continue;
             };
             let (dt, du) = s.degree();
-            let key = (control_points_f64(&est), dt + du);
+            let key = (est, dt + du);
             built_ok.push((key, order, s, frame.clone()));
             order += 1;
         }
@@ -1103,6 +1131,78 @@ mod tests {
             });
             let radius = Poly::constant(Rational::from_ratio(r, 40));
             memo_agrees(&CanalSpine::polynomial(m, radius), None);
+        }
+    }
+
+    /// [`exported_size_f64`] (weights only) against the size of [`exported_patches`] of
+    /// the whole surface in `f64`, for every frame axis and both methods on `[0, 1]` and on
+    /// `[0, 1/2]`: the same number of control points, or `None` for both.
+    fn weight_estimate_agrees(s: &CanalSpine<Rational>) -> usize {
+        let memo = FactorMemo::default();
+        let mut compared = 0;
+        for (a, b) in [(q(0), q(1)), (q(0), Rational::from_ratio(1, 2))] {
+            for axis in AxisChoice::all() {
+                for method in [Method::Krasauskas, Method::PeternellPottmann] {
+                    let opts = CanalOptions {
+                        axis: Some(axis),
+                        domain: Some((a.clone(), b.clone())),
+                        method,
+                        ..CanalOptions::default()
+                    };
+                    let Ok(CanalBuild::Rational(x)) = canal_surface_memo(s, &opts, &memo) else {
+                        continue;
+                    };
+                    let full = exported_patches(&x.map_scalar(Scalar::to_f64))
+                        .map(|p| control_points_f64(&p));
+                    assert_eq!(exported_size_f64(&x), full, "{axis:?} {method:?}");
+                    compared += 1;
+                }
+            }
+        }
+        compared
+    }
+
+    #[test]
+    fn weight_estimate_is_the_full_estimate_on_the_seed_pipes() {
+        for a in [
+            [[1, 0, 0, 0], [0, 1, 0, 1], [1, 0, 1, 0]],
+            [[1, 0, 0, 0], [1, 1, 0, 1], [0, 0, 1, 1]],
+        ] {
+            let a: Vec<Quaternion<Rational>> = a
+                .iter()
+                .map(|c| Quaternion::new(q(c[0]), q(c[1]), q(c[2]), q(c[3])))
+                .collect();
+            let c = PhCurve::new(a, [q(0), q(0), q(0)]).expect("ph");
+            let s = CanalSpine::polynomial(
+                c.position().clone(),
+                Poly::constant(Rational::from_ratio(1, 10)),
+            );
+            assert!(weight_estimate_agrees(&s) >= 8);
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(12))]
+
+        /// Pipes around random PH quintics and random cubics: the `f64` size estimate from
+        /// the weights alone is the one from the whole surface.
+        #[test]
+        fn weight_estimate_is_the_full_estimate_on_random_spines(
+            a in proptest::collection::vec(proptest::array::uniform4(-3i64..4), 3),
+            cubic in proptest::collection::vec(-4i64..5, 12),
+            r in 1i64..20,
+        ) {
+            let quats: Vec<Quaternion<Rational>> = a
+                .iter()
+                .map(|c| Quaternion::new(q(c[0]), q(c[1]), q(c[2]), q(c[3])))
+                .collect();
+            let radius = Poly::constant(Rational::from_ratio(r, 40));
+            if let Ok(c) = PhCurve::new(quats, [q(0), q(0), q(0)]) {
+                weight_estimate_agrees(&CanalSpine::polynomial(c.position().clone(), radius.clone()));
+            }
+            let m: [Poly<Rational>; 3] =
+                core::array::from_fn(|k| Poly::from_ints(&cubic[4 * k..4 * k + 4]));
+            weight_estimate_agrees(&CanalSpine::polynomial(m, radius));
         }
     }
 

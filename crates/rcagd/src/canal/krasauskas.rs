@@ -101,6 +101,36 @@ fn canonical_cmp<F: Scalar>(f: &CPoly<F>, g: &CPoly<F>) -> std::cmp::Ordering {
         .unwrap_or(std::cmp::Ordering::Equal)
 }
 
+/// The irreducible factors of `det(a, b)` over the coefficient field with `i`, for step 3
+/// of the reduction.
+pub(crate) trait FactorSource<F: Scalar> {
+    /// The irreducible factors of `l` (monic, without repetition) that the reduction tries;
+    /// an empty list disables step 3.
+    fn factors(&self, l: &CPoly<F>) -> Vec<CPoly<F>>;
+
+    /// [`Self::factors`] of `l` when every irreducible factor of `l` is among `candidates`
+    /// (monic irreducible polynomials), if that can be shown to be the same list without
+    /// factoring `l`; `None` otherwise (then [`Self::factors`] is used).
+    fn factors_among(&self, _l: &CPoly<F>, _candidates: &[CPoly<F>]) -> Option<Vec<CPoly<F>>> {
+        None
+    }
+
+    /// Whether [`Self::factors_among`] can answer (then the reduction collects the
+    /// candidates).
+    fn uses_candidates(&self) -> bool {
+        false
+    }
+}
+
+/// A factorization function as a [`FactorSource`] (no shortcut).
+pub(crate) struct FnFactors<'a, F>(pub &'a dyn Fn(&CPoly<F>) -> Vec<CPoly<F>>);
+
+impl<F: Scalar> FactorSource<F> for FnFactors<'_, F> {
+    fn factors(&self, l: &CPoly<F>) -> Vec<CPoly<F>> {
+        (self.0)(l)
+    }
+}
+
 /// A real pencil `a + u b` in `C²` (module docs) and its reduction history.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Pencil<F> {
@@ -351,9 +381,18 @@ impl<F: Scalar> Pencil<F> {
     }
 
     /// Applies the reduction steps (module docs) while they lower the degree;
-    /// `factors(l)` returns irreducible factors of `l = det(a, b)` over the coefficient field
-    /// (an empty list disables step 3).
-    pub fn reduce(&mut self, factors: &dyn Fn(&CPoly<F>) -> Vec<CPoly<F>>) {
+    /// `factors.factors(l)` returns irreducible factors of `l = det(a, b)` over the
+    /// coefficient field (an empty list disables step 3). `candidates` (if given) are monic
+    /// irreducible polynomials among which every irreducible factor of every `det(a, b)`
+    /// of the reduction lies, closed under conjugation (the factors of `det` of the first
+    /// pencil and their conjugates: every step multiplies `det` by a conjugate of what it
+    /// divides out, module docs); [`FactorSource::factors_among`] may then find the factors
+    /// without factoring.
+    pub(crate) fn reduce_with(
+        &mut self,
+        factors: &dyn FactorSource<F>,
+        candidates: Option<&[CPoly<F>]>,
+    ) {
         if !F::EXACT {
             return;
         }
@@ -368,7 +407,10 @@ impl<F: Scalar> Pencil<F> {
             }
             let l = self.det();
             let mut done = false;
-            let mut fs = factors(&l);
+            let mut fs = match candidates.and_then(|c| factors.factors_among(&l, c)) {
+                Some(fs) => fs,
+                None => factors.factors(&l),
+            };
             // lowest degree first; within a degree in a canonical order (so the pencil found
             // depends on the factors, not on the order a factorization returns them in)
             fs.sort_by(|f, g| {
@@ -398,6 +440,11 @@ impl<F: Scalar> Pencil<F> {
             self.remove_content();
         }
         self.swap_if_needed();
+    }
+
+    /// [`Self::reduce_with`] by a factorization function (no candidates).
+    pub fn reduce(&mut self, factors: &dyn Fn(&CPoly<F>) -> Vec<CPoly<F>>) {
+        self.reduce_with(&FnFactors(factors), None);
     }
 
     /// The homogeneous point `f_s(a + u b)` as four polynomials in `(t, u)` of degree 2 in
@@ -525,14 +572,28 @@ pub(crate) fn reduced_pencil<F: Scalar>(
     numerators: &[Poly<F>; 4],
     g: &[Poly<F>; 2],
     axis: super::AxisChoice,
-    factors: &dyn Fn(&CPoly<F>) -> Vec<CPoly<F>>,
+    factors: &dyn FactorSource<F>,
 ) -> Result<Pencil<F>, CanalError> {
     let alpha = axis.pole_polynomial(numerators);
     let (pa, pb) = axis.other_numerators(numerators);
     let beta = &cpoly(pa) + &times_i(&cpoly(pb));
     let w = &cpoly(&g[0]) + &times_i(&cpoly(&g[1]));
     let mut pencil = Pencil::initial(&alpha, &beta, &w)?;
-    pencil.reduce(factors);
+    // det of the first pencil = −2iαw (module docs): its irreducible factors are those of
+    // the real α and of w; with the conjugates of those of w they contain the factors of
+    // every later det(a, b)
+    let candidates = factors.uses_candidates().then(|| {
+        let mut c: Vec<CPoly<F>> = factors.factors(&cpoly(&alpha));
+        for h in factors.factors(&w) {
+            for h in [conj_poly(&h), h] {
+                if !c.contains(&h) {
+                    c.push(h);
+                }
+            }
+        }
+        c
+    });
+    pencil.reduce_with(factors, candidates.as_deref());
     Ok(pencil)
 }
 
@@ -724,6 +785,106 @@ impl FactorMemo {
     }
 }
 
+impl FactorSource<Rational> for FactorMemo {
+    fn factors(&self, l: &CPoly<Rational>) -> Vec<CPoly<Rational>> {
+        self.gaussian_factors(l)
+    }
+
+    fn uses_candidates(&self) -> bool {
+        !self.off
+    }
+
+    /// The factors of `l` among `candidates` (those that divide `l`), when they are all of
+    /// them (their degrees with multiplicity add up to `deg l`) and [`gaussian_factors_of`]
+    /// of `l` is known to find all of them too, so that both give the same list: every
+    /// square-free part of the norm `l l̄` has degree `≤`
+    /// [`rcagd_algebra::factor::MAX_MODULAR_FACTORS`] and the product of the irreducible
+    /// factors over `Q` of the norm has a good prime
+    /// ([`rcagd_algebra::factor::has_good_prime`]), so no factorization over `Q` of a part
+    /// gives up; and the split over `Q(i)` of each of those irreducible factors succeeded
+    /// where the candidates came from (a pure function of the factor). The memo without
+    /// memory (the tests' reference) always factors.
+    fn factors_among(
+        &self,
+        l: &CPoly<Rational>,
+        candidates: &[CPoly<Rational>],
+    ) -> Option<Vec<CPoly<Rational>>> {
+        use rcagd_algebra::complex::norm_sq_poly;
+        use rcagd_algebra::factor::{has_good_prime, MAX_MODULAR_FACTORS};
+        if self.off {
+            return None;
+        }
+        let n = l.degree().filter(|&n| n > 0)?;
+        // a det seen before (in another frame or method: the monic det is the key)
+        let key = l.monic();
+        if let Some(v) = self.get(&self.dets, &key) {
+            return Some(v);
+        }
+        // the candidates that divide l, with their multiplicities
+        let mut found: Vec<(CPoly<Rational>, usize)> = Vec::new();
+        let mut total = 0;
+        for h in candidates {
+            let d = h.degree().filter(|&d| d > 0)?;
+            if found.iter().any(|(f, _)| f == h) {
+                continue;
+            }
+            let mut q = l.clone();
+            let mut m = 0;
+            while let Ok((quo, rem)) = q.div_rem(h) {
+                if !rem.is_zero() {
+                    break;
+                }
+                q = quo;
+                m += 1;
+            }
+            if m > 0 {
+                total += m * d;
+                found.push((h.clone(), m));
+            }
+        }
+        if total != n {
+            return None;
+        }
+        // the irreducible factors g over Q of the norm with their multiplicities: a real h
+        // is g with multiplicity 2m, a complex h gives g = h h̄ (multiplicity m(h) + m(h̄))
+        let mut norm_factors: Vec<(Poly<Rational>, usize)> = Vec::new();
+        for (h, m) in &found {
+            let hc = conj_poly(h);
+            let (g, mult) = if &hc == h {
+                (re_im_polys(h).0, 2 * m)
+            } else {
+                let mc = found.iter().find(|(f, _)| f == &hc).map_or(0, |(_, k)| *k);
+                (norm_sq_poly(h), m + mc)
+            };
+            if !norm_factors.iter().any(|(f, _)| f == &g) {
+                norm_factors.push((g, mult));
+            }
+        }
+        // the degree of every square-free part (the product of the g of one multiplicity)
+        let mut parts: Vec<(usize, usize)> = Vec::new();
+        for (g, mult) in &norm_factors {
+            let d = g.degree().unwrap_or(0);
+            match parts.iter_mut().find(|(k, _)| k == mult) {
+                Some(p) => p.1 += d,
+                None => parts.push((*mult, d)),
+            }
+        }
+        if parts.iter().any(|&(_, d)| d > MAX_MODULAR_FACTORS) {
+            return None;
+        }
+        let radical = norm_factors
+            .iter()
+            .fold(Poly::constant(Rational::ONE), |acc, (g, _)| &acc * g);
+        if !has_good_prime(&radical) {
+            return None;
+        }
+        // the same list as `gaussian_factors` would store (as a set; the reduction sorts it)
+        let v: Vec<CPoly<Rational>> = found.into_iter().map(|(h, _)| h).collect();
+        self.dets.put(key, v.clone());
+        Some(v)
+    }
+}
+
 /// Irreducible factors over `K = Q(√d)(i)` of `l ∈ K[t]` that divide `l`
 /// ([`rcagd_algebra::factor_ext::factor_biquadratic`]: complete unless a factorization over
 /// `Q` gives up; then the factors over `Q(i)` and the `gcd`s with the `Q`-irreducible
@@ -739,6 +900,87 @@ pub(crate) fn biquadratic_factors_of(l: &CPoly<QuadExt>, d: &Rational) -> Vec<CP
 mod tests {
     use super::*;
     use crate::canal::AxisChoice;
+
+    fn sorted(mut v: Vec<CPoly<Rational>>) -> Vec<CPoly<Rational>> {
+        v.sort_by(|f, g| {
+            f.degree()
+                .cmp(&g.degree())
+                .then_with(|| canonical_cmp(f, g))
+        });
+        v
+    }
+
+    fn gauss(c: &[(i64, i64)]) -> CPoly<Rational> {
+        Poly::new(
+            c.iter()
+                .map(|&(re, im)| Complex::new(Rational::from(re), Rational::from(im)))
+                .collect(),
+        )
+    }
+
+    /// `l = h₁² h₂ h̄₁ h₃` and the candidates from the factors of `h₁`, `h₂`, `h₃` and their
+    /// conjugates: [`FactorSource::factors_among`] of the memo finds the factorization's
+    /// list (as a set), or declines.
+    fn among_agrees(h: [CPoly<Rational>; 3]) -> bool {
+        let memo = FactorMemo::default();
+        let l = &(&(&(&h[0] * &h[0]) * &h[1]) * &conj_poly(&h[0])) * &h[2];
+        let mut cands: Vec<CPoly<Rational>> = Vec::new();
+        for p in &h {
+            for f in gaussian_factors_of(p) {
+                for f in [conj_poly(&f), f] {
+                    if !cands.contains(&f) {
+                        cands.push(f);
+                    }
+                }
+            }
+        }
+        match memo.factors_among(&l, &cands) {
+            Some(v) => {
+                assert_eq!(sorted(v), sorted(gaussian_factors_of(&l)));
+                true
+            }
+            None => false,
+        }
+    }
+
+    #[test]
+    fn factors_among_candidates_are_the_factors() {
+        // (t − i)² (t² + 2)(t + i)(t + 1 + 2i)
+        assert!(among_agrees([
+            gauss(&[(0, -1), (1, 0)]),
+            gauss(&[(2, 0), (0, 0), (1, 0)]),
+            gauss(&[(1, 2), (1, 0)]),
+        ]));
+        // a candidate list that misses a factor: declined
+        let memo = FactorMemo::default();
+        let l = &gauss(&[(0, -1), (1, 0)]) * &gauss(&[(3, 0), (1, 0)]);
+        assert!(memo
+            .factors_among(&l, &[gauss(&[(0, -1), (1, 0)])])
+            .is_none());
+        // the reference memo never answers
+        assert!(FactorMemo::off()
+            .factors_among(&l, &gaussian_factors_of(&l))
+            .is_none());
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+
+        /// Random Gaussian polynomials of degree 1 to 3: the candidates' answer is the
+        /// factorization's whenever it answers.
+        #[test]
+        fn factors_among_agrees_with_the_factorization(
+            c in proptest::collection::vec((-4i64..5, -4i64..5), 9),
+            d in proptest::collection::vec(1usize..4, 3),
+        ) {
+            let h: [CPoly<Rational>; 3] = core::array::from_fn(|k| {
+                let mut v: Vec<(i64, i64)> = c[3 * k..3 * k + d[k]].to_vec();
+                v.push((1, 0));
+                gauss(&v)
+            });
+            among_agrees(h);
+        }
+    }
 
     #[test]
     fn pencil_is_isotropic_and_reduces() {
@@ -760,7 +1002,8 @@ mod tests {
             axis: 0,
             positive: true,
         };
-        let pencil = reduced_pencil(&p, &g, axis, &gaussian_factors_of).expect("pencil");
+        let pencil =
+            reduced_pencil(&p, &g, axis, &FnFactors(&gaussian_factors_of)).expect("pencil");
         assert!(pencil.degree() < pencil.initial_degree || pencil.degree() <= 1);
         // Bᵀ f_s ≡ 0
         let s = pencil.sphere_image();

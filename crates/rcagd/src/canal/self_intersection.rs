@@ -440,7 +440,20 @@ impl Piece {
 
 /// The Bernstein coefficients of `p` on `[c, d]` (of degree `deg p`).
 fn bernstein_on(p: &P, c: &Rational, d: &Rational) -> Result<Vec<Rational>, CanalError> {
-    let q = p.compose(&Poly::new(vec![c.clone(), d.clone() - c.clone()]));
+    let width = d.clone() - c.clone();
+    if let (Some(n), false) = (p.degree(), width.is_zero()) {
+        // the same coefficients fraction-free (integer Taylor shift, one reduction each);
+        // `p(c + s·(d − c))` keeps the degree of `p`
+        let zero = Rational::ZERO;
+        let one = Rational::ONE;
+        return Ok(rcagd_algebra::bernstein::tensor_bernstein_exact(
+            p.coeffs(),
+            (n, 0),
+            (c, &width),
+            (&zero, &one),
+        )?);
+    }
+    let q = p.compose(&Poly::new(vec![c.clone(), width]));
     let n = q.degree().unwrap_or(0);
     Ok(to_bernstein(&q, n)?)
 }
@@ -2017,6 +2030,29 @@ mod tests {
             decided += 1;
         }
         assert!(decided >= 5, "{decided}");
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+
+        /// The fraction-free Bernstein coefficients of `bernstein_on` are those of the Taylor
+        /// shift over `Q` (random polynomials of degree 0 to 9, random intervals, also empty
+        /// ones and the zero polynomial).
+        #[test]
+        fn bernstein_on_is_the_taylor_shift(
+            nums in proptest::collection::vec(-1_000i64..1_000, 0..10),
+            dens in proptest::collection::vec(1i64..50, 10),
+            (c0, c1, d0, d1) in (-20i64..20, 1i64..9, -20i64..20, 1i64..9),
+        ) {
+            let p = Poly::new(nums.iter().zip(&dens).map(|(&a, &b)| q(a, b)).collect());
+            let (c, d) = (q(c0, c1), q(d0, d1));
+            for (c, d) in [(&c, &d), (&c, &c)] {
+                let shifted = p.compose(&Poly::new(vec![c.clone(), d.clone() - c.clone()]));
+                let reference =
+                    to_bernstein(&shifted, shifted.degree().unwrap_or(0)).expect("bernstein");
+                prop_assert_eq!(bernstein_on(&p, c, d).expect("bernstein"), reference);
+            }
+        }
     }
 
     proptest! {
