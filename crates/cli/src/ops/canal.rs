@@ -26,7 +26,7 @@ use rcagd::ph::{PhCurve, PhError};
 use rcagd::Certified;
 use rcagd_algebra::quaternion::Quaternion;
 use rcagd_algebra::rational::format_rational;
-use rcagd_algebra::{format_scalar, format_vector, Certificate, Poly, QuadExt, Rational, Scalar};
+use rcagd_algebra::{format_scalar, format_vector, Certificate, QuadExt, Rational, Scalar};
 use rcagd_geom::weight_sign::{split_patches_adaptive, SignRule};
 use rcagd_geom::{BezierCurve, BezierPatch};
 
@@ -993,7 +993,7 @@ pub(crate) fn build_canal_normal_field<T: super::arith::OpScalar>(
             format!("four numbers [t0, t1, u0, u1], got {}", dom.len()),
         )
     })?;
-    let conv = |p: &Poly<Rational>| p.map(T::from_rational);
+    let conv = poly_io::poly_in::<T>;
     let [sx, sy, sz] = poly_io::coordinate_polys(&spine);
     let family = CanalSpine::polynomial(
         [conv(&sx), conv(&sy), conv(&sz)],

@@ -639,6 +639,7 @@ pub(crate) fn build_miquel_patch<T: OpScalar>(args: &OpArgs) -> Result<Vec<Objec
         }
         chosen.unwrap_or(p)
     };
+    let mut level = None;
     let (certs, p, q) = match arith::same::<_, BiquadraticPatch<T>>(p) {
         Ok(p) => {
             let q = arith::same::<_, rcagd::quadric::Mat4<T>>(t.proj.quadric())
@@ -646,6 +647,11 @@ pub(crate) fn build_miquel_patch<T: OpScalar>(args: &OpArgs) -> Result<Vec<Objec
             (t.certs, p, q)
         }
         Err(p) => {
+            let exact_q = t.proj.quadric();
+            let pieces = rcagd::quadric::exportable::exportable_patch(p.patch().clone(), &exact_q)?
+                .pieces
+                .len();
+            level = (0..=3u32).find(|l| 1usize << (2 * l) == pieces);
             // the bilinear preimage is the exact one: the chain's fibre bases are chosen by
             // zero tests over Q (δ: k0 − k3 ≠ 0), by magnitudes in f64, and fix the scale
             // of every bilinear corner (another scale: another parametrization)
@@ -660,7 +666,19 @@ pub(crate) fn build_miquel_patch<T: OpScalar>(args: &OpArgs) -> Result<Vec<Objec
     };
     let mut certs = certs;
     certs.extend(p.certify());
-    let (geometry, extra) = exportable_patch(p.patch().clone(), &q)?;
+    let (geometry, extra) = match level {
+        // the exact build's export split, replayed (a weight that is 0 over Q is ±ε in f64)
+        Some(level) => {
+            let e = rcagd::quadric::exportable::exportable_patch_at(p.patch().clone(), &q, level)?;
+            let mut pieces = arith::exact_patches(e.pieces)?;
+            let g = match pieces.len() {
+                1 => Geometry::Patch(pieces.remove(0)),
+                _ => Geometry::Patches(pieces),
+            };
+            (g, e.certificates)
+        }
+        None => exportable_patch(p.patch().clone(), &q)?,
+    };
     certs.extend(extra);
     Ok(vec![arith::object::<T>(args, geometry, certs)])
 }

@@ -17,7 +17,7 @@ use rcagd_io::quantity::{NamedQuantity, Quantity};
 use rcagd::ph::sweep::{profile_joints, sweep_profile};
 use rcagd::ph::PhCurve;
 use rcagd_algebra::quaternion::Quaternion;
-use rcagd_algebra::{Certificate, Poly, Rational, Scalar};
+use rcagd_algebra::{Certificate, Rational, Scalar};
 use rcagd_geom::BezierCurve;
 
 /// The ops of this topic.
@@ -232,17 +232,6 @@ fn solved<T: OpScalar>(args: &OpArgs) -> Result<Solved<T>, OpError> {
     Ok((rmf, certs, values))
 }
 
-/// A polynomial of `T` as an exact value (an `f64` one: its exact binary coefficients).
-fn poly_value<T: Scalar>(p: &Poly<T>) -> Result<Poly<Q>, OpError> {
-    let c: Option<Vec<Q>> = p.coeffs().iter().map(Scalar::to_rational).collect();
-    c.map(Poly::new).ok_or_else(|| {
-        OpError::new("the f64 construction produced a non-finite coefficient (overflow or an ill-conditioned input); build it without --float")
-    })
-}
-
-fn segment<T: Scalar>(a: &[T; 3], b: &[T; 3]) -> Result<BezierCurve<T>, OpError> {
-    Ok(BezierCurve::from_points(&[a.to_vec(), b.to_vec()])?)
-}
 
 /// A curve with its RMF, certificates and reported values.
 type Solved<T = Q> = (RationalRmf<T>, Vec<Certificate>, Vec<NamedQuantity>);
@@ -304,22 +293,26 @@ fn hermite(
     Ok((h.rmf, certs, values))
 }
 
+fn segment<T: Scalar>(a: &[T; 3], b: &[T; 3]) -> Result<BezierCurve<T>, OpError> {
+    Ok(BezierCurve::from_points(&[a.to_vec(), b.to_vec()])?)
+}
+
 pub(crate) fn build_ph_rrmf<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let (rmf, certs, mut values) = solved::<T>(args)?;
     values.push(NamedQuantity::new(
         "rotation_re",
         "a(t) of the rotation polynomial w = a + b i (Ã = A w; the RMF is the ERF turned by 2 arg w)",
-        Quantity::poly_t(poly_value(&rmf.rotation.0)?),
+        Quantity::poly_t(super::poly_io::poly_exact(&rmf.rotation.0)?),
     ));
     values.push(NamedQuantity::new(
         "rotation_im",
         "b(t) of w = a + b i",
-        Quantity::poly_t(poly_value(&rmf.rotation.1)?),
+        Quantity::poly_t(super::poly_io::poly_exact(&rmf.rotation.1)?),
     ));
     values.push(NamedQuantity::new(
         "frame_denominator",
         "the common denominator d(t) of f1 = F1/d, f2 = F2/d",
-        Quantity::poly_t(poly_value(&rmf.den)?),
+        Quantity::poly_t(super::poly_io::poly_exact(&rmf.den)?),
     ));
     let bez = rmf.curve.to_bezier()?;
     let samples = args.int("samples")?;

@@ -422,6 +422,13 @@ impl<F: Scalar> RationalRmf<F> {
     }
 
     /// `(t, f_1, f_2)` at `t` (unit vectors), `None` where `σ` or `d` vanishes.
+    ///
+    /// For `f64` the normal-plane vectors are evaluated as `Ã j Ã*/|Ã|²`, `Ã k Ã*/|Ã|²`
+    /// from `Ã(t) = A(t) w(t)` (`A(t)` by de Casteljau on the Bernstein coefficients), which
+    /// is `F_k(t)/d(t)` (`|Ã|² = σ|w|²`; [`Self::from_rotation`]) but does not evaluate the
+    /// power forms of `F_k` and `d`, whose coefficients may be much larger than the values
+    /// (Horner's rounding grows with `Σ|coefficients|`); where `|Ã(t)|²` is negligible, and
+    /// for exact scalars, `F_k(t)/d(t)`.
     pub fn eval(&self, t: &F) -> Option<[V3<F>; 3]> {
         let s = self.curve.speed().eval(t);
         let d = self.den.eval(t);
@@ -429,11 +436,47 @@ impl<F: Scalar> RationalRmf<F> {
             return None;
         }
         let h = peval(&self.curve.hodograph(), t);
+        if !F::EXACT {
+            if let Some([f1, f2]) = self.normal_vectors_at(t) {
+                return Some([scale3(&h, &(F::one() / s)), f1, f2]);
+            }
+        }
         Some([
             scale3(&h, &(F::one() / s)),
             scale3(&peval(&self.f1, t), &(F::one() / d.clone())),
             scale3(&peval(&self.f2, t), &(F::one() / d)),
         ])
+    }
+
+    /// `Ã j Ã*/|Ã|²` and `Ã k Ã*/|Ã|²` at `t` (see [`Self::eval`]); `None` where `|Ã(t)|²`
+    /// is negligible against `|A(t)|²|w(t)|²` computed from the sizes of their terms.
+    fn normal_vectors_at(&self, t: &F) -> Option<[V3<F>; 2]> {
+        let mut q: Vec<Quaternion<F>> = self.curve.coefficients().to_vec();
+        let u = F::one() - t.clone();
+        for r in 1..q.len() {
+            for i in 0..q.len() - r {
+                q[i] = q[i].scale(&u) + q[i + 1].scale(t);
+            }
+        }
+        let a = q.first()?.clone();
+        let w = Quaternion::new(
+            self.rotation.0.eval(t),
+            self.rotation.1.eval(t),
+            F::zero(),
+            F::zero(),
+        );
+        let at = a * w;
+        let n = at.norm_sq();
+        let size =
+            at.w.to_f64().abs() + at.x.to_f64().abs() + at.y.to_f64().abs() + at.z.to_f64().abs();
+        if !(n.to_f64() > 1e-12 * size * size) {
+            return None;
+        }
+        let v = |e: Quaternion<F>| {
+            let p = at.clone() * e * at.conj();
+            [p.x / n.clone(), p.y / n.clone(), p.z / n.clone()]
+        };
+        Some([v(Quaternion::j()), v(Quaternion::k())])
     }
 
     /// `cos θ`, `sin θ` of the angle from the ERF `(e_2, e_3)` to `(f_1, f_2)` at `t`:
