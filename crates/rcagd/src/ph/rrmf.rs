@@ -469,7 +469,8 @@ impl<F: Scalar> RationalRmf<F> {
         let n = at.norm_sq();
         let size =
             at.w.to_f64().abs() + at.x.to_f64().abs() + at.y.to_f64().abs() + at.z.to_f64().abs();
-        if !(n.to_f64() > 1e-12 * size * size) {
+        let nf = n.to_f64();
+        if nf.is_nan() || nf <= 1e-12 * size * size {
             return None;
         }
         let v = |e: Quaternion<F>| {
