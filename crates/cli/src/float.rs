@@ -241,6 +241,28 @@ pub const FLOAT_OPS: &[FloatOp] = &[
         build: ops::ndim::build_hypersurface::<f64>,
         note: "the 3-D picture's pole-freeness (X₀ on the domain) is decided by f64 Bernstein signs; the `homogeneous_map` value holds the exact binary values of the f64 coefficients",
     },
+    // --- session 16, floatrest: quadric, canal-blend, n-dim and RRMF ops ---
+    FloatOp {
+        name: "ph_rrmf",
+        build: ops::sweep::build_ph_rrmf::<f64>,
+        note: "the frame's exact-only decisions (the rotation polynomial w by Rothstein–Trager residues over Q(i), the common factor cancelled by a gcd over Q) are taken on the exact input (rcagd::ph::rrmf::RationalRmf::along) and the frame is computed in f64 with them; `hermite` data: the exact op's rounded interpolant, converted to f64",
+    },
+    FloatOp {
+        name: "sweep_rrmf",
+        build: ops::sweep::build_sweep_rrmf::<f64>,
+        note: "the frame's exact-only decisions (the rotation polynomial w, the common factor cancelled over Q) are taken on the exact input and the frame and sweep are computed in f64; the regularity ρκ < 1 is decided exactly on the exact binary values of the f64 curve",
+    },
+    FloatOp {
+        name: "canal_surface_normal_field",
+        build: ops::canal::build_canal_normal_field::<f64>,
+        note: "the unit field |N|² ≡ d² and ⟨N, ṁ⟩ + d ṙ ≡ 0 are checked to 10⁻⁹ of the largest coefficient in f64 (exactly over Q)",
+    },
+    FloatOp {
+        name: "quadric_miquel_patch",
+        build: ops::quadric::build_miquel_patch::<f64>,
+        note: "the bilinear preimage is the exact op's (the Miquel chain: its fibre bases are chosen by zero tests over Q and fix the scale of every bilinear corner; the closure and Miquel tests; the choice among the 8 sign flips by exact weight signs), as the quadric's rational point is; its biquadratic image and the certificates are built in f64",
+    },
+    // --- end of session 16, floatrest ---
 ];
 
 /// Ops (or whole topics) without a float path, and why; an op listed by name takes
@@ -264,8 +286,14 @@ pub const NO_FLOAT_PATH: &[(&str, &str)] = &[
     ("hypercyclide", "as pn_quadric: the library builds the hypercyclide exactly (sums of two squares over Q) and only converts the finished surface to the scalar"),
     ("line_congruence_parametrized", "not yet written: order and class are exact eliminations (queries on the exact input) and the focal sheets of a square discriminant are found over Q; the strips themselves have an f64 instantiation"),
     // --- end of the PN and line-congruence ops ---
-    ("quadric_interpolate", "not yet written (the interpolation solves a linear system over Q and picks a rational point; an f64 version needs its own pivoting rule)"),
-    ("quadric_miquel_patch", "not yet written (it chooses among sign flips by exact weight signs)"),
+    // --- session 16, floatrest: ops without a float path, and why ---
+    ("quadric_interpolate", "not yet written: the exact op decides exact-only questions on the input — the lowest preimage degree (the linear system of degree n − 1 has no admissible solution), the kernel basis of the interpolation system (RREF over Q: in f64 a rounding residue becomes a pivot, the session-15 cyclide finding) and which kernel member is admissible (exact tests); a float path must record the degree, the pivot columns and the member on the exact input and replay them (the `cyclide::route` way), which rcagd::quadric::interpolation does not take yet"),
+    ("canal_blend_spheres", "exact-only algebra: the blend surface is rcagd::canal::canal_surface_pole_free over Q, a search over the Gaussian factorizations of |ṁ|² − ṙ² (its splittings as sums of two squares over Q), frames and methods that keeps the first pole-free and smallest build — the search of `canal_surface` (no float path); the library's CanalSurface takes no recorded splitting, frame and method to replay in f64 (canal/envelope.rs, canal/frame.rs), and blend_spheres_f64 splits from f64 complex roots: another parametrization"),
+    ("canal_blend_sphere_plane", "exact-only algebra: a Möbius inversion of a sphere–sphere blend whose |ṁ|² − ṙ² must split as a sum of two squares over Q (the same search as `canal_blend_spheres`, refused when it needs Q(√d)); blend_sphere_plane_f64 splits from f64 complex roots, another parametrization"),
+    ("common_transversals", "not yet written: the pencil of lines meeting the four is the kernel of a 4 × 6 system, and in f64 `Matrix::null_space` may take a rounding residue as a pivot (another basis, hence another order of the two transversals); the discriminant's sign (one, two or a complex pair), whether the transversals are rational (the exact op refuses Q(√d)) and the farthest pair of meeting points (an exact comparison with ties) are exact decisions to be recorded on the exact input and replayed (rcagd::lines::regulus takes no route yet)"),
+    ("anticaustic_nd", "tried and withdrawn (session 16; the generic builder build_anticaustic::<f64> runs): the random draw dimension = 4, mirror x₄ = u₃ + u₁²u₂²u₃²/5 − 6u₁u₂u₃² + u₁²u₂² (terms [4, 1, 0, 0, 1], [4, 1/5, 2, 2, 2], [4, -6, 1, 1, 2], [4, 1, 2, 2, 0]), c = 0, slice = [0, 0, 1/4], domain = [0, 1/4, 0, 1/4], distances = [1] differs from the exact build by 1.26e-12 relative in its offset's picture (the 1e-12 of issue 20 not met); cause not analyzed (candidates: the f64 division by |m|² and Q₀ in cancel_common, which accepts a remainder, and the degree-6 offset slice's power-to-Bernstein conversion)"),
+    ("ruled_manifold_offset", "exact-only algebra: the unit normal of Theorem 5.2 comes from square tests of |v_a|², |v_b|² over Q(t) and a polynomial point of the conic X² + ΔY² − αZ² = 0 over Q(t) (rcagd_algebra::conic_point, Prop. 5.1), decided inside RuledManifold::offset on the coefficients converted to Q: in f64 they would be decided on rounded coefficients (a square over Q is no square after rounding); a float path needs the exact (λ_a, λ_b, w) passed to the f64 construction, which the library does not take yet"),
+    // --- end of session 16, floatrest ---
     ("ph_dph_septic", "exact-only algebra: exact real roots of the z-polynomial"),
     ("ph_spatial_hermite", "exact-only algebra: the branches live in quadratic fields"),
     ("pipe", "exact-only algebra: the op searches the splittings of |m′|² as sums of two squares over Q (Gaussian factorizations, every frame and method) and keeps the smallest with positive weights; an f64 pipe (`rcagd::canal::pipe_around_ph::<f64>`) would be a different parametrization, so it is not offered as the same construction"),

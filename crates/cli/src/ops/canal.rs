@@ -960,10 +960,16 @@ radius = [0, 1]
 normal = [[-1, 0, 0]]
 domain = ["1/4", 1, -1, 1]
 "#,
-    build: build_canal_normal_field,
+    build: build_canal_normal_field::<Rational>,
 };
 
-fn build_canal_normal_field(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `canal_surface_normal_field` in `T` (one builder for the exact op and the float path:
+/// the normal field is the user's, so the construction takes no exact-only decision; the
+/// axis of `e₁ = ṁ × a` is the first with a non-zero cross product, which is the same in
+/// `f64` because that product only permutes the exact input's coefficients).
+pub(crate) fn build_canal_normal_field<T: super::arith::OpScalar>(
+    args: &OpArgs,
+) -> Result<Vec<Object>, OpError> {
     let spine = args.points("spine")?;
     let normal = args.points("normal")?;
     for (name, pts) in [("spine", &spine), ("normal", &normal)] {
@@ -988,9 +994,15 @@ fn build_canal_normal_field(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             format!("four numbers [t0, t1, u0, u1], got {}", dom.len()),
         )
     })?;
-    let family = CanalSpine::polynomial(poly_io::coordinate_polys(&spine), poly_io::poly(radius));
-    let n = poly_io::coordinate_polys(&normal);
-    let d = poly_io::poly(den);
+    let conv = poly_io::poly_in::<T>;
+    let [sx, sy, sz] = poly_io::coordinate_polys(&spine);
+    let family = CanalSpine::polynomial(
+        [conv(&sx), conv(&sy), conv(&sz)],
+        conv(&poly_io::poly(radius)),
+    );
+    let [nx, ny, nz] = poly_io::coordinate_polys(&normal);
+    let n = [conv(&nx), conv(&ny), conv(&nz)];
+    let d = conv(&poly_io::poly(den));
     let built = rcagd::canal::canal_surface_from_normal_field(&family, &n, &d).map_err(|e| {
         let m = e.to_string();
         if m.contains("denominator") {
@@ -1001,13 +1013,18 @@ fn build_canal_normal_field(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             OpError::param("normal", m)
         }
     })?;
+    let of = |q: &Rational| T::from_rational(q);
     let patch = built
-        .patch((t0, t1), (u0, u1))
+        .patch((of(&t0), of(&t1)), (of(&u0), of(&u1)))
         .map_err(|e| OpError::param("domain", e.to_string()))?;
     let (patches, wcert) = positive_pieces(vec![patch], Some("domain"))?;
     let mut certs = built.certify();
     certs.push(wcert);
-    Ok(vec![args.object(Geometry::Patches(patches), certs)])
+    Ok(vec![super::arith::object::<T>(
+        args,
+        Geometry::Patches(super::arith::exact_patches(patches)?),
+        certs,
+    )])
 }
 
 const TORUS: OpSpec = OpSpec {

@@ -342,10 +342,11 @@ slice = [0, 0, "1/4"]
 domain = [0, "1/2", 0, "1/2"]
 distances = ["1/4"]
 "#,
-    build: build_anticaustic,
+    build: build_anticaustic::<Rational>,
 };
 
-fn build_anticaustic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `anticaustic_nd` in `T` (one builder for the exact op and the float path).
+pub(crate) fn build_anticaustic<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let n = dimension(args)?;
     let k = usize::try_from(args.int("mirror_dimension")?)
         .ok()
@@ -362,7 +363,8 @@ fn build_anticaustic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     }
     let mirror = poly_io::indexed_terms_mpolys(&terms, n + 1, k, "mirror")?;
     let c = args.opt_number("c")?.unwrap_or(Q::ZERO);
-    let ac = Anticaustic::new(mirror, k, c).map_err(blame("mirror"))?;
+    let mirror: Vec<MPolyIn<T>> = mirror.iter().map(poly_io::mpoly_in::<T>).collect();
+    let ac = Anticaustic::new(mirror, k, arith::of::<T>(&c)).map_err(blame("mirror"))?;
     let mut names: Vec<String> = (1..=k).map(|i| format!("u{i}")).collect();
     names.extend((1..n - k).map(|j| format!("v{j}")));
     hypersurface_objects(args, ac.surface(), ac.certify(), names)

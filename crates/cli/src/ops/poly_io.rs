@@ -33,6 +33,24 @@ pub fn mpoly_in<T: rcagd_algebra::Scalar>(p: &MPolyQ) -> MPolyIn<T> {
     p.map(T::from_rational)
 }
 
+/// An exact univariate polynomial of the recipe in `T` (as [`mpoly_in`]).
+pub fn poly_in<T: rcagd_algebra::Scalar>(p: &Poly<Q>) -> Poly<T> {
+    p.map(T::from_rational)
+}
+
+/// A computed polynomial of `T` as an exact value (an `f64` one: the exact binary values of
+/// its coefficients; a non-finite coefficient is an error, as for control points).
+pub fn poly_exact<T: rcagd_algebra::Scalar>(p: &Poly<T>) -> Result<Poly<Q>, OpError> {
+    let c: Option<Vec<Q>> = p
+        .coeffs()
+        .iter()
+        .map(rcagd_algebra::Scalar::to_rational)
+        .collect();
+    c.map(Poly::new).ok_or_else(|| {
+        OpError::new("the f64 construction produced a non-finite coefficient (overflow or an ill-conditioned input); build it without --float")
+    })
+}
+
 /// A `4×4` matrix of polynomials in `t` over `Q`.
 pub type PolyMatrix4 = [[Poly<Q>; 4]; 4];
 

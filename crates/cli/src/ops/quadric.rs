@@ -205,7 +205,7 @@ op = "quadric_miquel_patch"
 corners = [[0, 0, -1], [1, 0, 0], ["2/3", "2/3", "1/3"], [0, 1, 0]]
 circle_points = [["4/5", 0, "-3/5"], ["8/9", "4/9", "1/9"], ["4/9", "8/9", "1/9"], [0, "4/5", "-3/5"]]
 "#,
-    build: build_miquel_patch,
+    build: build_miquel_patch::<Rational>,
 };
 
 const SPHERE_COVER: OpSpec = OpSpec {
@@ -606,7 +606,15 @@ fn four(args: &OpArgs, param: &'static str, what: &str) -> Result<[Hom<Rational>
     <[Hom<Rational>; 4]>::try_from(v).map_err(|_| OpError::param(param, format!("give exactly 4 {what}")))
 }
 
-fn build_miquel_patch(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `quadric_miquel_patch` in `T` (one builder for the exact op and the float path).
+///
+/// `F(−x) = F(x)`: the bilinear corners may be negated without moving the image corners;
+/// the exact op picks, among the 8 sign choices, the first whose boundary arcs give
+/// weights of one sign (arcs under 180° on the quadric), else keeps the construction. That
+/// choice is an exact sign decision. In `f64` the bilinear preimage (corners, chain,
+/// closure and Miquel tests, sign choice) is the exact op's, taken on the exact input, and
+/// its biquadratic image and the certificates are built in `f64`.
+pub(crate) fn build_miquel_patch<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let t = target(args)?;
     let corners = four(args, "corners", "corners")?;
     let circle = four(args, "circle_points", "circle points")?;
@@ -614,26 +622,14 @@ fn build_miquel_patch(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     if weight.is_zero() {
         return Err(OpError::param("weight", "the weight must be non-zero"));
     }
-    let p = BiquadraticPatch::from_corners(t.proj.as_ref(), corners, circle, weight)
+    let p = BiquadraticPatch::from_corners(t.proj.as_ref(), corners.clone(), circle.clone(), weight.clone())
         .map_err(|e| located(e, "corners"))?;
-    // F(−x) = F(x): the corners may be negated without moving the image corners; this
-    // picks, among the 8 sign choices, the first whose boundary arcs give weights of one
-    // sign (arcs under 180° on the sphere), else keeps the construction as it is.
     let p = {
-        let [c00, c10, c11, c01] = p.bilinear().clone();
-        let neg = |c: &Hom<Rational>, f: bool| if f { c.clone().map(|x| -x) } else { c.clone() };
         let stride = p.patch().dim() + 1;
         let mut chosen = None;
         if !one_sign(p.patch().coords(), stride) {
             for flips in 1u8..8 {
-                let cand = BiquadraticPatch::from_bilinear(
-                    t.proj.as_ref(),
-                    c00.clone(),
-                    neg(&c10, flips & 1 != 0),
-                    neg(&c11, flips & 2 != 0),
-                    neg(&c01, flips & 4 != 0),
-                );
-                if let Ok(c) = cand {
+                if let Ok(c) = flipped(t.proj.as_ref(), &p, flips) {
                     if one_sign(c.patch().coords(), stride) {
                         chosen = Some(c);
                         break;
@@ -643,11 +639,66 @@ fn build_miquel_patch(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         }
         chosen.unwrap_or(p)
     };
-    let mut certs = t.certs;
+    let mut level = None;
+    let (certs, p, q) = match arith::same::<_, BiquadraticPatch<T>>(p) {
+        Ok(p) => {
+            let q = arith::same::<_, rcagd::quadric::Mat4<T>>(t.proj.quadric())
+                .map_err(|_| OpError::new("internal error: the exact quadric is not exact"))?;
+            (t.certs, p, q)
+        }
+        Err(p) => {
+            let exact_q = t.proj.quadric();
+            let pieces = rcagd::quadric::exportable::exportable_patch(p.patch().clone(), &exact_q)?
+                .pieces
+                .len();
+            level = (0..=3u32).find(|l| 1usize << (2 * l) == pieces);
+            // the bilinear preimage is the exact one: the chain's fibre bases are chosen by
+            // zero tests over Q (δ: k0 − k3 ≠ 0), by magnitudes in f64, and fix the scale
+            // of every bilinear corner (another scale: another parametrization)
+            let tt = target_in::<T>(args)?;
+            let hom_in = |h: &Hom<Rational>| -> Hom<T> { core::array::from_fn(|k| arith::of(&h[k])) };
+            let [c00, c10, c11, c01] = p.bilinear().each_ref().map(hom_in);
+            let pf = BiquadraticPatch::from_bilinear(tt.proj.as_ref(), c00, c10, c11, c01)
+                .map_err(|e| located(e, "corners"))?;
+            let q = tt.proj.quadric();
+            (tt.certs, pf, q)
+        }
+    };
+    let mut certs = certs;
     certs.extend(p.certify());
-    let (geometry, extra) = exportable_patch(p.patch().clone(), &t.proj.quadric())?;
+    let (geometry, extra) = match level {
+        // the exact build's export split, replayed (a weight that is 0 over Q is ±ε in f64)
+        Some(level) => {
+            let e = rcagd::quadric::exportable::exportable_patch_at(p.patch().clone(), &q, level)?;
+            let mut pieces = arith::exact_patches(e.pieces)?;
+            let g = match pieces.len() {
+                1 => Geometry::Patch(pieces.remove(0)),
+                _ => Geometry::Patches(pieces),
+            };
+            (g, e.certificates)
+        }
+        None => exportable_patch(p.patch().clone(), &q)?,
+    };
     certs.extend(extra);
-    Ok(vec![args.object(geometry, certs)])
+    Ok(vec![arith::object::<T>(args, geometry, certs)])
+}
+
+/// The patch of `p`'s bilinear corners with `c10`, `c11`, `c01` negated where bits 0, 1, 2
+/// of `flips` are set.
+fn flipped<T: OpScalar>(
+    proj: &dyn GeneralizedProjection<T>,
+    p: &BiquadraticPatch<T>,
+    flips: u8,
+) -> Result<BiquadraticPatch<T>, rcagd::quadric::QuadricError> {
+    let [c00, c10, c11, c01] = p.bilinear().clone();
+    let neg = |c: &Hom<T>, f: bool| if f { c.clone().map(|x| -x) } else { c.clone() };
+    BiquadraticPatch::from_bilinear(
+        proj,
+        c00,
+        neg(&c10, flips & 1 != 0),
+        neg(&c11, flips & 2 != 0),
+        neg(&c01, flips & 4 != 0),
+    )
 }
 
 /// `sphere_cover` in `T`.

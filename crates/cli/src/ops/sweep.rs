@@ -7,6 +7,7 @@
 //! and the free real `x` of the RRMF quintic generator (`A_2` solves
 //! `A_0 i A_2* + A_2 i A_0* = 2 A_1 i A_1*`).
 
+use super::arith::{self, of, OpScalar};
 use super::{OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
@@ -16,7 +17,7 @@ use rcagd_io::quantity::{NamedQuantity, Quantity};
 use rcagd::ph::sweep::{profile_joints, sweep_profile};
 use rcagd::ph::PhCurve;
 use rcagd_algebra::quaternion::Quaternion;
-use rcagd_algebra::{Certificate, Rational};
+use rcagd_algebra::{Certificate, Rational, Scalar};
 use rcagd_geom::BezierCurve;
 
 /// The ops of this topic.
@@ -84,7 +85,7 @@ a1 = [0, 1, 0, 1]
 x = 1
 samples = 7
 "#,
-    build: build_ph_rrmf,
+    build: build_ph_rrmf::<Rational>,
 };
 
 const SWEEP_RRMF: OpSpec = OpSpec {
@@ -116,12 +117,16 @@ x = 0
 profile = [[[1, 0], [1, "1/2"], [0, "1/2"]], [[0, "1/2"], [-1, "1/2"], [-1, 0]]]
 weights = [[1, 1, 2], [2, 1, 1]]
 "#,
-    build: build_sweep_rrmf,
+    build: build_sweep_rrmf::<Rational>,
 };
 
-fn quat(args: &OpArgs, p: Vec<Q>, param: &'static str) -> Result<Quaternion<Q>, OpError> {
+fn quat<T: Scalar>(
+    args: &OpArgs,
+    p: Vec<Q>,
+    param: &'static str,
+) -> Result<Quaternion<T>, OpError> {
     match <[Q; 4]>::try_from(p) {
-        Ok([w, x, y, z]) => Ok(Quaternion::new(w, x, y, z)),
+        Ok([w, x, y, z]) => Ok(Quaternion::new(of(&w), of(&x), of(&y), of(&z))),
         Err(p) => Err(OpError::param(
             param,
             format!(
@@ -133,11 +138,10 @@ fn quat(args: &OpArgs, p: Vec<Q>, param: &'static str) -> Result<Quaternion<Q>, 
     }
 }
 
-/// The curve of the shared parameters and whether it came from the quintic generator.
-fn curve(args: &OpArgs) -> Result<(PhCurve<Q>, bool), OpError> {
-    let start = args.point("start")?;
-    let start: [Q; 3] = <[Q; 3]>::try_from(start)
-        .map_err(|_| OpError::param("start", "internal error: `start` is not a 3D point"))?;
+/// The curve of the shared parameters in `T` and whether it came from the quintic
+/// generator.
+fn curve<T: Scalar>(args: &OpArgs) -> Result<(PhCurve<T>, bool), OpError> {
+    let start: [T; 3] = arith::point(args, "start", "internal error: `start` is not a 3D point")?;
     match (
         args.get("quaternions").is_some(),
         args.get("a0").is_some() || args.get("a1").is_some(),
@@ -156,7 +160,7 @@ fn curve(args: &OpArgs) -> Result<(PhCurve<Q>, bool), OpError> {
             };
             let a0 = quat(args, a0, "a0")?;
             let a1 = quat(args, a1, "a1")?;
-            let c = rrmf_quintic_class1(a0, a1, args.number("x")?, start)
+            let c = rrmf_quintic_class1(a0, a1, arith::number(args, "x")?, start)
                 .map_err(|e| OpError::param("a0", e.to_string()))?;
             Ok((c, true))
         }
@@ -170,27 +174,67 @@ fn curve(args: &OpArgs) -> Result<(PhCurve<Q>, bool), OpError> {
     }
 }
 
+/// The certificate of the quintic RRMF condition (exact for exact `T`, to `1e-12`
+/// relative in `f64`).
+fn quintic_cert<T: Scalar>(c: &PhCurve<T>) -> Result<Certificate, OpError> {
+    Ok(Certificate::decide(
+        "A_0 i A_2* + A_2 i A_0* ≡ 2 A_1 i A_1* (the quintic RRMF condition, docs/math/rrmf.md)",
+        is_rrmf_quintic_class1(c)?,
+        T::EXACT,
+        || "non-zero residual vector".into(),
+    ))
+}
+
 fn rmf_and_certs(args: &OpArgs) -> Result<(RationalRmf<Q>, Vec<Certificate>), OpError> {
-    let (c, generated) = curve(args)?;
+    let (c, generated) = curve::<Q>(args)?;
     let rmf = RationalRmf::new(&c)?;
     let mut certs = rmf.certify();
     if generated {
-        certs.push(Certificate::decide(
-            "A_0 i A_2* + A_2 i A_0* ≡ 2 A_1 i A_1* (the quintic RRMF condition, docs/math/rrmf.md)",
-            is_rrmf_quintic_class1(&c)?,
-            true,
-            || "non-zero residual vector".into(),
-        ));
+        certs.push(quintic_cert(&c)?);
     }
     Ok((rmf, certs))
 }
 
-fn segment(a: &[Q; 3], b: &[Q; 3]) -> Result<BezierCurve<Q>, OpError> {
-    Ok(BezierCurve::from_points(&[a.to_vec(), b.to_vec()])?)
+/// The curve, its RMF, certificates and values in `T`. The exact-only decisions of the
+/// frame (the rotation polynomial `w`: Rothstein–Trager residues over Q(i); the common
+/// factor `g` cancelled over Q) are taken on the exact input and replayed in `f64`
+/// ([`RationalRmf::along`]); the curve itself is built in `T` from the same parameters
+/// (the `hermite` interpolant: the exact op's rounded preimage, converted).
+fn solved<T: OpScalar>(args: &OpArgs) -> Result<Solved<T>, OpError> {
+    let hermite_data = args.get("hermite").is_some();
+    let (exact, certs, values) = if hermite_data {
+        hermite(args)?
+    } else {
+        let (rmf, certs) = rmf_and_certs(args)?;
+        (rmf, certs, Vec::new())
+    };
+    let exact = match arith::same::<RationalRmf<Q>, RationalRmf<T>>(exact) {
+        Ok(rmf) => return Ok((rmf, certs, values)),
+        Err(exact) => exact,
+    };
+    let (c, generated) = if hermite_data {
+        let e = &exact.curve;
+        let qs = e
+            .coefficients()
+            .iter()
+            .map(|a| Quaternion::new(of(&a.w), of(&a.x), of(&a.y), of(&a.z)))
+            .collect();
+        let s = e.start();
+        (PhCurve::new(qs, [of(&s[0]), of(&s[1]), of(&s[2])])?, true)
+    } else {
+        curve::<T>(args)?
+    };
+    let rmf = RationalRmf::along(&c, &exact)?;
+    let mut certs = rmf.certify();
+    if generated {
+        certs.push(quintic_cert(&c)?);
+    }
+    Ok((rmf, certs, values))
 }
 
+
 /// A curve with its RMF, certificates and reported values.
-type Solved = (RationalRmf<Q>, Vec<Certificate>, Vec<NamedQuantity>);
+type Solved<T = Q> = (RationalRmf<T>, Vec<Certificate>, Vec<NamedQuantity>);
 
 /// The interpolant of the `hermite` data, its certificates and values.
 fn hermite(
@@ -223,12 +267,7 @@ fn hermite(
         .solve()
         .map_err(|e| OpError::param("hermite", e.to_string()))?;
     let mut certs = h.rmf.certify();
-    certs.push(Certificate::decide(
-        "A_0 i A_2* + A_2 i A_0* ≡ 2 A_1 i A_1* (the quintic RRMF condition, docs/math/rrmf.md)",
-        is_rrmf_quintic_class1(&h.rmf.curve)?,
-        true,
-        || "non-zero residual vector".into(),
-    ));
+    certs.push(quintic_cert(&h.rmf.curve)?);
     let values = vec![
         NamedQuantity::new(
             "point_residual",
@@ -254,27 +293,26 @@ fn hermite(
     Ok((h.rmf, certs, values))
 }
 
-fn build_ph_rrmf(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let (rmf, certs, mut values) = if args.get("hermite").is_some() {
-        hermite(args)?
-    } else {
-        let (rmf, certs) = rmf_and_certs(args)?;
-        (rmf, certs, Vec::new())
-    };
+fn segment<T: Scalar>(a: &[T; 3], b: &[T; 3]) -> Result<BezierCurve<T>, OpError> {
+    Ok(BezierCurve::from_points(&[a.to_vec(), b.to_vec()])?)
+}
+
+pub(crate) fn build_ph_rrmf<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let (rmf, certs, mut values) = solved::<T>(args)?;
     values.push(NamedQuantity::new(
         "rotation_re",
         "a(t) of the rotation polynomial w = a + b i (Ã = A w; the RMF is the ERF turned by 2 arg w)",
-        Quantity::poly_t(rmf.rotation.0.clone()),
+        Quantity::poly_t(super::poly_io::poly_exact(&rmf.rotation.0)?),
     ));
     values.push(NamedQuantity::new(
         "rotation_im",
         "b(t) of w = a + b i",
-        Quantity::poly_t(rmf.rotation.1.clone()),
+        Quantity::poly_t(super::poly_io::poly_exact(&rmf.rotation.1)?),
     ));
     values.push(NamedQuantity::new(
         "frame_denominator",
         "the common denominator d(t) of f1 = F1/d, f2 = F2/d",
-        Quantity::poly_t(rmf.den.clone()),
+        Quantity::poly_t(super::poly_io::poly_exact(&rmf.den)?),
     ));
     let bez = rmf.curve.to_bezier()?;
     let samples = args.int("samples")?;
@@ -284,10 +322,10 @@ fn build_ph_rrmf(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             format!("samples must be in 2..=200, got {samples}"),
         ));
     }
-    let len = args.number("frame_length")?;
+    let len: T = arith::number(args, "frame_length")?;
     let mut segs = vec![bez.clone()];
     for k in 0..samples {
-        let t = Q::from(k) / Q::from(samples - 1);
+        let t = T::from_ratio(k, samples - 1);
         let Some(frame) = rmf.eval(&t) else { continue };
         let p = rmf.curve.eval(&t);
         for v in &frame {
@@ -299,15 +337,18 @@ fn build_ph_rrmf(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             segs.push(segment(&p, &tip)?);
         }
     }
-    let mut frame_obj = args.object(Geometry::Curves(segs), rmf.certify());
+    let segs = Geometry::Curves(arith::exact_curves(segs)?);
+    let mut frame_obj = arith::object::<T>(args, segs, rmf.certify());
     frame_obj.name = format!("{}_frame", args.name());
-    let mut main = args.object(Geometry::Curve(bez), certs);
-    main.values = values;
+    let main = arith::object_with::<T>(args, Geometry::Curve(T::exact_curve(bez)?), certs, values);
     Ok(vec![main, frame_obj])
 }
 
-fn build_sweep_rrmf(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let (rmf, mut certs) = rmf_and_certs(args)?;
+pub(crate) fn build_sweep_rrmf<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    if args.get("hermite").is_some() {
+        return Err(OpError::param("hermite", "`sweep_rrmf` takes no `hermite` data"));
+    }
+    let (rmf, mut certs, _) = solved::<T>(args)?;
     let net = args.net("profile")?;
     let weights = args.opt_grid("weights")?;
     if let Some(w) = &weights {
@@ -323,15 +364,11 @@ fn build_sweep_rrmf(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     for (k, piece) in net.iter().enumerate() {
         let pts = piece
             .iter()
-            .map(|p| {
-                <[Q; 2]>::try_from(p.clone()).map_err(|_| {
-                    OpError::param("profile", "profile control points are [x, y]")
-                })
-            })
+            .map(|p| arith::array::<T, 2>(p, "profile", "profile control points are [x, y]"))
             .collect::<Result<Vec<_>, _>>()?;
-        let ws = match &weights {
-            Some(w) => w[k].clone(),
-            None => vec![Q::from(1); pts.len()],
+        let ws: Vec<T> = match &weights {
+            Some(w) => arith::all_of(&w[k]),
+            None => vec![T::one(); pts.len()],
         };
         let s = sweep_profile(&rmf, &pts, &ws)
             .map_err(|e| OpError::param("profile", format!("profile piece {k}: {e}")))?;
@@ -357,5 +394,9 @@ fn build_sweep_rrmf(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         ));
     }
     certs.extend(joints);
-    Ok(vec![args.object(Geometry::Patches(patches), certs)])
+    Ok(vec![arith::object::<T>(
+        args,
+        Geometry::Patches(arith::exact_patches(patches)?),
+        certs,
+    )])
 }

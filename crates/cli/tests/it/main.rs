@@ -14,6 +14,7 @@ mod exchange_weights;
 mod float;
 mod float_geo;
 mod float_pn;
+mod float_rest;
 mod fuzz;
 mod fuzz_corpus;
 mod library_first;

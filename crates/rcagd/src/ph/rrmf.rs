@@ -358,16 +358,7 @@ impl<F: Scalar> RationalRmf<F> {
     /// The frame `(Ã j Ã*, Ã k Ã*)/(σ|w|²)` for a given `w = a + b i` (rotation-minimizing
     /// iff `N(A w) ≡ 0`, which [`Self::certify`] decides).
     pub fn from_rotation(curve: &PhCurve<F>, rotation: (Poly<F>, Poly<F>)) -> Self {
-        let (a, b) = &rotation;
-        let wq: Poly<Quaternion<F>> = Poly::new(
-            (0..a.coeffs().len().max(b.coeffs().len()))
-                .map(|k| Quaternion::new(a.coeff(k), b.coeff(k), F::zero(), F::zero()))
-                .collect(),
-        );
-        let at = &curve.preimage_poly() * &wq;
-        let mut f1 = quaternion::vector_polys(&quaternion::sandwich(&at, &Quaternion::j()));
-        let mut f2 = quaternion::vector_polys(&quaternion::sandwich(&at, &Quaternion::k()));
-        let mut den = &curve.speed() * &(&(a * a) + &(b * b));
+        let (mut f1, mut f2, mut den) = raw_frame(curve, &rotation);
         if F::EXACT {
             let mut g = den.clone();
             for c in f1.iter().chain(f2.iter()) {
@@ -393,7 +384,51 @@ impl<F: Scalar> RationalRmf<F> {
         }
     }
 
+    /// The frame of `curve` along the exact decisions of `exact`, the RMF of the same curve
+    /// over Q (for a float build, `curve` is the construction in `F` from the same input):
+    /// the rotation polynomial `w` ([`rmf_rotation`]: Rothstein–Trager residues and gcds
+    /// over Q(i)) and the common factor `g` of `σ|w|²`, `Ã j Ã*` and `Ã k Ã*` (a gcd over
+    /// Q) are exact-only decisions, taken on `exact` and converted to `F`; the frame
+    /// `(Ã j Ã*, Ã k Ã*, σ|w|²)` is computed in `F` and divided by `g` (the quotient of the
+    /// long division: exact for exact `F`, where the remainder is 0). `g` carries the sign
+    /// that makes `d(1/2) > 0` over Q, so no sign is decided in `F` either
+    /// (docs/math/rrmf.md, "The frame").
+    ///
+    /// # Errors
+    /// [`PhError::Degenerate`] if `exact`'s denominator does not divide its uncancelled
+    /// `σ|w|²` (it was not built from its curve by [`Self::new`] or [`Self::from_rotation`]);
+    /// [`PhError::Algebra`] from the division in `F`.
+    pub fn along(curve: &PhCurve<F>, exact: &RationalRmf<Rational>) -> Result<Self, PhError> {
+        let (_, _, raw_den) = raw_frame(&exact.curve, &exact.rotation);
+        let g = raw_den.div_exact(&exact.den).map_err(|_| {
+            PhError::Degenerate(
+                "the exact frame's denominator does not divide σ|w|² of its curve".into(),
+            )
+        })?;
+        let conv = |p: &Poly<Rational>| p.map(F::from_rational);
+        let rotation = (conv(&exact.rotation.0), conv(&exact.rotation.1));
+        let (f1, f2, den) = raw_frame(curve, &rotation);
+        let gf = conv(&g);
+        let div = |p: &Poly<F>| -> Result<Poly<F>, PhError> {
+            p.div_rem(&gf).map(|(q, _)| q).map_err(PhError::Algebra)
+        };
+        Ok(RationalRmf {
+            curve: curve.clone(),
+            rotation,
+            f1: [div(&f1[0])?, div(&f1[1])?, div(&f1[2])?],
+            f2: [div(&f2[0])?, div(&f2[1])?, div(&f2[2])?],
+            den: div(&den)?,
+        })
+    }
+
     /// `(t, f_1, f_2)` at `t` (unit vectors), `None` where `σ` or `d` vanishes.
+    ///
+    /// For `f64` the normal-plane vectors are evaluated as `Ã j Ã*/|Ã|²`, `Ã k Ã*/|Ã|²`
+    /// from `Ã(t) = A(t) w(t)` (`A(t)` by de Casteljau on the Bernstein coefficients), which
+    /// is `F_k(t)/d(t)` (`|Ã|² = σ|w|²`; [`Self::from_rotation`]) but does not evaluate the
+    /// power forms of `F_k` and `d`, whose coefficients may be much larger than the values
+    /// (Horner's rounding grows with `Σ|coefficients|`); where `|Ã(t)|²` is negligible, and
+    /// for exact scalars, `F_k(t)/d(t)`.
     pub fn eval(&self, t: &F) -> Option<[V3<F>; 3]> {
         let s = self.curve.speed().eval(t);
         let d = self.den.eval(t);
@@ -401,11 +436,48 @@ impl<F: Scalar> RationalRmf<F> {
             return None;
         }
         let h = peval(&self.curve.hodograph(), t);
+        if !F::EXACT {
+            if let Some([f1, f2]) = self.normal_vectors_at(t) {
+                return Some([scale3(&h, &(F::one() / s)), f1, f2]);
+            }
+        }
         Some([
             scale3(&h, &(F::one() / s)),
             scale3(&peval(&self.f1, t), &(F::one() / d.clone())),
             scale3(&peval(&self.f2, t), &(F::one() / d)),
         ])
+    }
+
+    /// `Ã j Ã*/|Ã|²` and `Ã k Ã*/|Ã|²` at `t` (see [`Self::eval`]); `None` where `|Ã(t)|²`
+    /// is negligible against `|A(t)|²|w(t)|²` computed from the sizes of their terms.
+    fn normal_vectors_at(&self, t: &F) -> Option<[V3<F>; 2]> {
+        let mut q: Vec<Quaternion<F>> = self.curve.coefficients().to_vec();
+        let u = F::one() - t.clone();
+        for r in 1..q.len() {
+            for i in 0..q.len() - r {
+                q[i] = q[i].scale(&u) + q[i + 1].scale(t);
+            }
+        }
+        let a = q.first()?.clone();
+        let w = Quaternion::new(
+            self.rotation.0.eval(t),
+            self.rotation.1.eval(t),
+            F::zero(),
+            F::zero(),
+        );
+        let at = a * w;
+        let n = at.norm_sq();
+        let size =
+            at.w.to_f64().abs() + at.x.to_f64().abs() + at.y.to_f64().abs() + at.z.to_f64().abs();
+        let nf = n.to_f64();
+        if nf.is_nan() || nf <= 1e-12 * size * size {
+            return None;
+        }
+        let v = |e: Quaternion<F>| {
+            let p = at.clone() * e * at.conj();
+            [p.x / n.clone(), p.y / n.clone(), p.z / n.clone()]
+        };
+        Some([v(Quaternion::j()), v(Quaternion::k())])
     }
 
     /// `cos θ`, `sin θ` of the angle from the ERF `(e_2, e_3)` to `(f_1, f_2)` at `t`:
@@ -503,6 +575,24 @@ impl<F: Scalar> RationalRmf<F> {
         ));
         certs
     }
+}
+
+/// The uncancelled frame `(Ã j Ã*, Ã k Ã*, σ|w|²)` of `Ã = A w`, `w = a + b i`.
+fn raw_frame<F: Scalar>(
+    curve: &PhCurve<F>,
+    rotation: &(Poly<F>, Poly<F>),
+) -> (PV3<F>, PV3<F>, Poly<F>) {
+    let (a, b) = rotation;
+    let wq: Poly<Quaternion<F>> = Poly::new(
+        (0..a.coeffs().len().max(b.coeffs().len()))
+            .map(|k| Quaternion::new(a.coeff(k), b.coeff(k), F::zero(), F::zero()))
+            .collect(),
+    );
+    let at = &curve.preimage_poly() * &wq;
+    let f1 = quaternion::vector_polys(&quaternion::sandwich(&at, &Quaternion::j()));
+    let f2 = quaternion::vector_polys(&quaternion::sandwich(&at, &Quaternion::k()));
+    let den = &curve.speed() * &(&(a * a) + &(b * b));
+    (f1, f2, den)
 }
 
 /// A certificate for `a·b ≡ 0`; for `f64` relative to the size of the products

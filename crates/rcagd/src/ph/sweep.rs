@@ -168,7 +168,11 @@ pub fn sweep_profile<F: Scalar>(
                 .collect()
         })
         .collect();
-    let regularity = check_sweep_regularity(&rmf.curve, profile)?;
+    let mut regularity = check_sweep_regularity(&rmf.curve, profile)?;
+    // for f64 the decision is exact about the binary values of the f64 curve, but it
+    // certifies an f64 construction, whose certificates are tolerance checks: not a proof
+    // about the exact input's sweep
+    regularity.exact &= F::EXACT;
     let patch = BezierPatch::from_homogeneous(net)?;
     let split = split_patches_adaptive(vec![patch.clone()], SignRule::Positive, (6, 0))?;
     if split.failed > 0 {
@@ -188,6 +192,25 @@ pub fn sweep_profile<F: Scalar>(
     })
 }
 
+/// The magnitude polynomial of the power form of a Bernstein polynomial with coefficient
+/// sizes `b`: coefficient `k` is `Σᵢ |bᵢ| C(n, i) C(n − i, k − i)`, the sum of the absolute
+/// terms of `Σᵢ bᵢ C(n, i) tⁱ (1 − t)ⁿ⁻ⁱ` at `tᵏ` (for [`identity_cert_within`]).
+fn abs_power_of_bernstein(b: &[f64]) -> Poly<f64> {
+    let n = b.len().saturating_sub(1);
+    let binom = |n: usize, k: usize| -> f64 {
+        (0..k).fold(1.0, |acc, j| acc * (n - j) as f64 / (j + 1) as f64)
+    };
+    Poly::new(
+        (0..b.len())
+            .map(|k| {
+                (0..=k)
+                    .map(|i| b[i] * binom(n, i) * binom(n - i, k - i))
+                    .sum::<f64>()
+            })
+            .collect(),
+    )
+}
+
 impl<F: Scalar> RmfSweep<F> {
     /// Certificates: the frame's ([`RationalRmf::certify`]); for every profile control
     /// point `j`, the column `G_j(t)` of the unsplit patch's homogeneous net satisfies
@@ -205,13 +228,21 @@ impl<F: Scalar> RmfSweep<F> {
         let mut dist_ok = true;
         let mut worst = String::new();
         for j in 0..=nu {
-            let col: Vec<Poly<F>> = (0..4)
+            let (_, nv) = self.patch.degree();
+            let bern: Vec<Vec<F>> = (0..4)
                 .map(|c| {
-                    let (_, nv) = self.patch.degree();
-                    let b: Vec<F> = (0..=nv)
+                    (0..=nv)
                         .map(|k| self.patch.control_point(j, k)[c].clone())
-                        .collect();
-                    bernstein::from_bernstein(&b)
+                        .collect()
+                })
+                .collect();
+            let col: Vec<Poly<F>> = bern.iter().map(|b| bernstein::from_bernstein(b)).collect();
+            // the power form's coefficients are cancelled sums of the Bernstein ones: bound
+            // them by the sums of the absolute terms
+            let abs_col: Vec<Poly<f64>> = bern
+                .iter()
+                .map(|b| {
+                    abs_power_of_bernstein(&b.iter().map(|x| x.to_f64().abs()).collect::<Vec<_>>())
                 })
                 .collect();
             let off: [Poly<F>; 3] = [
@@ -219,19 +250,45 @@ impl<F: Scalar> RmfSweep<F> {
                 &col[2] - &(&r[1] * &col[0]),
                 &col[3] - &(&r[2] * &col[0]),
             ];
-            let c1 = identity_cert("normal", &pdot(&off, &h), &Poly::zero());
+            // for f64, each residual coefficient is compared with the size of the terms
+            // that cancel in it (`offₖ = Gₖ − rₖG₀` cancels the curve point against the
+            // profile point's frame combination), not with the cancelled result
+            let abs_off: Vec<Poly<f64>> = (0..3)
+                .map(|c| &abs_col[c + 1] + &(&abs_poly(&r[c]) * &abs_col[0]))
+                .collect();
+            let normal_mag = (0..3).fold(Poly::zero(), |acc: Poly<f64>, c| {
+                &acc + &(&abs_off[c] * &abs_poly(&h[c]))
+            });
+            let c1 = identity_cert_within(
+                "normal",
+                &pdot(&off, &h),
+                &Poly::zero(),
+                normal_mag.coeffs(),
+            );
             let p = &self.profile[j];
             let w = &self.weights[j];
             let rr =
                 w.clone() * w.clone() * (p[0].clone() * p[0].clone() + p[1].clone() * p[1].clone());
-            let c2 = identity_cert("dist", &pdot(&off, &off), &d2.scale(&rr));
+            let dist_mag = (0..3).fold(abs_poly(&d2.scale(&rr)), |acc: Poly<f64>, c| {
+                &acc + &(&abs_off[c] * &abs_off[c])
+            });
+            let c2 =
+                identity_cert_within("dist", &pdot(&off, &off), &d2.scale(&rr), dist_mag.coeffs());
             if !c1.holds {
                 normal_ok = false;
-                worst = format!("profile point {j}");
+                worst = format!(
+                    "profile point {j}: {}; term magnitudes {:?}",
+                    c1.residual.as_deref().unwrap_or(""),
+                    normal_mag.coeffs()
+                );
             }
             if !c2.holds {
                 dist_ok = false;
-                worst = format!("profile point {j}");
+                worst = format!(
+                    "profile point {j}: {}; term magnitudes {:?}",
+                    c2.residual.as_deref().unwrap_or(""),
+                    dist_mag.coeffs()
+                );
             }
         }
         let exact = F::EXACT;

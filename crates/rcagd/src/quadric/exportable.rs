@@ -104,6 +104,53 @@ pub fn exportable_patch<F: Scalar>(
     }
 }
 
+/// As [`exportable_patch`] with the number of halvings `level` given instead of searched:
+/// the `2^level × 2^level` uniform sub-patches. For a float build, `level` is the exact
+/// build's (`log₄` of its piece count): whether a Bernstein weight is `0` or of the other
+/// sign is an exact sign test, a rounding residue `±ε` in `f64`, so the search could stop
+/// at another level.
+///
+/// # Errors
+/// [`GeomError::Parameter`] for `level > 3`; errors of [`BezierPatch::restrict`].
+pub fn exportable_patch_at<F: Scalar>(
+    patch: BezierPatch<F>,
+    q: &Mat4<F>,
+    level: u32,
+) -> Result<Exportable<BezierPatch<F>>, GeomError> {
+    if level > 3 {
+        return Err(GeomError::Parameter(format!(
+            "exportable_patch_at: level {level} > 3"
+        )));
+    }
+    if level == 0 {
+        return Ok(Exportable {
+            pieces: vec![patch],
+            certificates: Vec::new(),
+        });
+    }
+    let k = 1i64 << level;
+    let at = |i: i64| F::from_ratio(i, k);
+    let mut pieces = Vec::with_capacity((k * k) as usize);
+    for i in 0..k {
+        for j in 0..k {
+            pieces.push(patch.restrict(&at(i), &at(i + 1), &at(j), &at(j + 1))?);
+        }
+    }
+    let on = pieces
+        .iter()
+        .all(|p| certify_patch_on_quadric(p, q, "").holds);
+    let cert = Certificate::decide(
+        format!("split into {k}×{k} sub-patches (the exact build's split, export); every sub-patch lies on the quadric: Xᵀ Q X ≡ 0"),
+        on,
+        F::EXACT,
+        || "a sub-patch is off the quadric".to_string(),
+    );
+    Ok(Exportable {
+        pieces,
+        certificates: vec![cert],
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
