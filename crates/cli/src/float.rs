@@ -45,6 +45,10 @@ pub fn is_display_param(op: &str, key: &str) -> bool {
         && ["frame", "comb", "feed", "samples", "frame_length"].contains(&key)
 }
 
+/// The words of a float path's refusal of an input whose f64 build is not shown to agree
+/// with the exact one to 1e-12 (an open finding; the op's note names the inputs).
+pub const UNVERIFIED_REFUSED: &str = "has no float path yet (its f64 build is not shown to agree with the exact one to 1e-12): build it without --float";
+
 /// The refusal of `line_congruence_strips`' `reguli` type by the float path (the
 /// library's reguli strips divide out exact common factors: exact scalars only).
 pub const REGULI_REFUSED: &str = "the float path does not build the `reguli` congruence (its strips divide out exact common factors over Q): build it without --float";
@@ -200,6 +204,18 @@ pub const FLOAT_OPS: &[FloatOp] = &[
         note: "the `reguli` type is refused (its strips divide out exact common factors over Q: exact scalars only)",
     },
     // --- end of the PN and line-congruence ops ---
+    // --- session 16, floatsph: sphere families, conic surfaces, line congruences ---
+    FloatOp {
+        name: "sphere_family_envelope",
+        build: ops::sphere_family::build_envelope::<f64>,
+        note: "the common polynomial factors the construction divides out (gcds and trial divisions over Q) and its exact zero coefficients are decided on the exact input and replayed in f64 (rcagd::envelope::Reductions); elliptic nets, `other_sheet` and `spheres` are refused in f64 (random elliptic nets agree with the exact build only to about 1e-9, other sheets to about 2e-9, and an enveloped sphere's f64 contact certificate can fail: open findings, docs/plans/float.md)",
+    },
+    FloatOp {
+        name: "cyclographic_plane_image",
+        build: ops::sphere_family::build_plane_image::<f64>,
+        note: "the type of the 2-plane is decided on the exact input (an f64 build whose tolerance decides another type is refused); the image planes are f64 values (real square roots)",
+    },
+    // --- end of session 16, floatsph ---
     FloatOp {
         name: "ph_curve",
         build: ops::ph::build_ph_curve::<f64>,
@@ -284,7 +300,7 @@ pub const NO_FLOAT_PATH: &[(&str, &str)] = &[
     ("pn_ruled_cyclographic", "exact-only algebra: ⟨g, g⟩ = p₁² + p₂² (a sum of two squares over Q) is decided inside the library's construction, which takes no exact splitting; in f64 it would be decided on the rounded coefficients"),
     ("pn_quadric", "the library's construction is exact (the double cover of the rulings and the splitting are decided over Q) and only converts the finished surface to the scalar: an f64 build would be the exact construction with f64 offsets, not a float path"),
     ("hypercyclide", "as pn_quadric: the library builds the hypercyclide exactly (sums of two squares over Q) and only converts the finished surface to the scalar"),
-    ("line_congruence_parametrized", "not yet written: order and class are exact eliminations (queries on the exact input) and the focal sheets of a square discriminant are found over Q; the strips themselves have an f64 instantiation"),
+
     // --- end of the PN and line-congruence ops ---
     // --- session 16, floatrest: ops without a float path, and why ---
     ("quadric_interpolate", "not yet written: the exact op decides exact-only questions on the input — the lowest preimage degree (the linear system of degree n − 1 has no admissible solution), the kernel basis of the interpolation system (RREF over Q: in f64 a rounding residue becomes a pivot, the session-15 cyclide finding) and which kernel member is admissible (exact tests); a float path must record the degree, the pivot columns and the member on the exact input and replay them (the `cyclide::route` way), which rcagd::quadric::interpolation does not take yet"),
@@ -294,6 +310,17 @@ pub const NO_FLOAT_PATH: &[(&str, &str)] = &[
     ("anticaustic_nd", "tried and withdrawn (session 16; the generic builder build_anticaustic::<f64> runs): the random draw dimension = 4, mirror x₄ = u₃ + u₁²u₂²u₃²/5 − 6u₁u₂u₃² + u₁²u₂² (terms [4, 1, 0, 0, 1], [4, 1/5, 2, 2, 2], [4, -6, 1, 1, 2], [4, 1, 2, 2, 0]), c = 0, slice = [0, 0, 1/4], domain = [0, 1/4, 0, 1/4], distances = [1] differs from the exact build by 1.26e-12 relative in its offset's picture (the 1e-12 of issue 20 not met); cause not analyzed (candidates: the f64 division by |m|² and Q₀ in cancel_common, which accepts a remainder, and the degree-6 offset slice's power-to-Bernstein conversion)"),
     ("ruled_manifold_offset", "exact-only algebra: the unit normal of Theorem 5.2 comes from square tests of |v_a|², |v_b|² over Q(t) and a polynomial point of the conic X² + ΔY² − αZ² = 0 over Q(t) (rcagd_algebra::conic_point, Prop. 5.1), decided inside RuledManifold::offset on the coefficients converted to Q: in f64 they would be decided on rounded coefficients (a square over Q is no square after rounding); a float path needs the exact (λ_a, λ_b, w) passed to the f64 construction, which the library does not take yet"),
     // --- end of session 16, floatrest ---
+    // --- session 16, floatsph: sphere families, conic surfaces, line congruences ---
+    ("sphere_family_recognize", "not yet written (session 16): the recognition (the linear congruence of the normal lines, its axes over Q, the support functions) is exact-only algebra on the input; the plan is to recognize exactly and build the envelope in f64 along the exact build's reductions, as sphere_family_envelope does (rcagd::envelope::Reductions); the `at` contacts need rational contact points (exact)"),
+    ("sphere_family_cyclographic", "not yet written (session 16): its certificates decide the contact points by exact equality over Q (SphereFamilyEnvelope::certified_contacts is Rational-only: |f − m|² = r² and \"one point is Ψ₂(s, t)\" compared with =); an f64 version needs tolerance forms of both; the contact points themselves (cyclographic_contacts) are generic"),
+    ("conic_surface", "exact-only library (rcagd::conic_surface is over Q only, Poly<Q>/MPoly<Q>): the rational curve on the surface is a polynomial point of the conic family over Q[t] found by the exact conic-point engine (factorization, square residues, or the proof that none exists over Q), and the parametrization is built from it by exact polynomial algebra; an f64 build would be the exact construction converted at the end, not a float path"),
+    ("cone_envelope", "exact-only library (rcagd::conic_surface::cones is over Q only): the generator of the envelope is a polynomial point of a conic family over Q[t] from the exact conic-point engine"),
+    ("canal_via_cones", "exact-only library (rcagd::conic_surface::cones is over Q only): the circumscribed cones' envelope takes its generator from the exact conic-point engine over Q[t]"),
+    ("type_c_envelope", "exact-only library (rcagd::conic_surface::cones is over Q only): the vertex is the rank-2 member of the pencil λC + μĊ (an exact rank decision) and the generator a polynomial point from the exact conic-point engine"),
+    ("quadric_family", "exact-only library (rcagd::conic_surface::quadric_family is over Q only): the polynomial point f(t) on every quadric comes from a plane section solved by the exact conic-point engine over Q[t] (or its named obstruction)"),
+    ("canal_hypersurface", "exact-only library (rcagd::conic_surface::mobius is over Q only): the characteristic spheres are parametrized by §5.1 from a polynomial point found by the exact conic-point engine over Q[t]"),
+    ("line_congruence_parametrized", "not yet written: order and class are exact eliminations (queries on the exact input) and the focal sheets of a square discriminant are found over Q (Q(√d) decided exactly); the strips themselves have an f64 instantiation (line_congruence_strips); open question: whether its exact order/class certificates may sit on an f64 object (the float tests require every certificate of a float object to be inexact)"),
+    // --- end of session 16, floatsph ---
     ("ph_dph_septic", "exact-only algebra: exact real roots of the z-polynomial"),
     ("ph_spatial_hermite", "exact-only algebra: the branches live in quadratic fields"),
     ("pipe", "exact-only algebra: the op searches the splittings of |m′|² as sums of two squares over Q (Gaussian factorizations, every frame and method) and keeps the smallest with positive weights; an f64 pipe (`rcagd::canal::pipe_around_ph::<f64>`) would be a different parametrization, so it is not offered as the same construction"),

@@ -95,6 +95,7 @@ pub fn check(file_name: &str, text: &str, exact: &[Object]) -> Option<String> {
             if m.contains(super::WORK_LIMIT)
                 || m.contains("the float path does not")
                 || m.contains(crate::float::DISPLAY_OBJECTS_REFUSED)
+                || m.contains(crate::float::UNVERIFIED_REFUSED)
                 || !small_magnitude(&recipe)
             {
                 None

@@ -7,15 +7,17 @@
 //! its line net and support functions (`rcagd::envelope::SphereFamily::recognize`) and
 //! builds the same envelope, or names why the family has none of this kind.
 
+use super::arith::{self, OpScalar};
 use super::{poly_io, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::Geometry;
 use crate::model::Object;
 use rcagd_geom::BezierPatch;
 use crate::value::ParamKind;
-use rcagd::envelope::{SphereFamily, SphereFamilyEnvelope};
+use rcagd::envelope::{Reductions, SphereFamily, SphereFamilyEnvelope};
 use rcagd::lines::NetKind;
 use rcagd::Certified;
-use rcagd_algebra::{Certificate, Rational};
+use rcagd::lines::SqrtScalar;
+use rcagd_algebra::{Certificate, QuadExt, Rational, Scalar};
 
 /// The ops of this topic.
 pub const OPS: &[OpSpec] = &[
@@ -53,39 +55,88 @@ a = [[0], [0], [1]]
 b = [[0, 0, 1]]
 domain = ["1/4", 1, "1/4", 1]
 "#,
-    build: build_envelope,
+    build: build_envelope::<Rational>,
 };
 
-/// The envelope of the recipe's net and support functions.
-fn net_envelope(args: &OpArgs) -> Result<SphereFamilyEnvelope<Rational>, OpError> {
-    let kind = match args.string("net")? {
-        "elliptic" => NetKind::Elliptic,
-        "parabolic" => NetKind::Parabolic,
-        _ => NetKind::Hyperbolic,
-    };
-    let points = args.points("points")?;
-    let a = args
-        .opt_grid("a")?
-        .ok_or_else(|| OpError::param("a", "the support function a is required"))?;
-    let a_im = args.opt_grid("a_imaginary")?;
-    let b = args.opt_grid("b")?;
-    let a_den = args.opt_grid("a_denominator")?;
-    let b_den = args.opt_grid("b_denominator")?;
-    if b.is_none() && b_den.is_some() {
-        return Err(OpError::param(
-            "b_denominator",
-            "b_denominator without b: an elliptic net's default b = ā(v) takes a's denominator",
-        ));
+/// The recipe's net and support functions, as data in `T`.
+struct NetData<T> {
+    kind: NetKind,
+    points: Vec<Vec<T>>,
+    a: Vec<Vec<T>>,
+    a_im: Option<Vec<Vec<T>>>,
+    b: Option<Vec<Vec<T>>>,
+    a_den: Option<Vec<Vec<T>>>,
+    b_den: Option<Vec<Vec<T>>>,
+}
+
+impl<T: OpScalar> NetData<T> {
+    fn read(args: &OpArgs) -> Result<Self, OpError> {
+        let kind = match args.string("net")? {
+            "elliptic" => NetKind::Elliptic,
+            "parabolic" => NetKind::Parabolic,
+            _ => NetKind::Hyperbolic,
+        };
+        let grid = |g: Vec<Vec<Rational>>| -> Vec<Vec<T>> {
+            g.iter().map(|r| arith::all_of::<T>(r)).collect()
+        };
+        let data = NetData {
+            kind,
+            points: grid(args.points("points")?),
+            a: grid(
+                args.opt_grid("a")?
+                    .ok_or_else(|| OpError::param("a", "the support function a is required"))?,
+            ),
+            a_im: args.opt_grid("a_imaginary")?.map(grid),
+            b: args.opt_grid("b")?.map(grid),
+            a_den: args.opt_grid("a_denominator")?.map(grid),
+            b_den: args.opt_grid("b_denominator")?.map(grid),
+        };
+        if data.b.is_none() && data.b_den.is_some() {
+            return Err(OpError::param(
+                "b_denominator",
+                "b_denominator without b: an elliptic net's default b = ā(v) takes a's denominator",
+            ));
+        }
+        Ok(data)
     }
-    SphereFamilyEnvelope::<Rational>::from_data(
-        kind,
-        &points,
-        &a,
-        a_im.as_deref(),
-        b.as_deref(),
-        [a_den.as_deref(), b_den.as_deref()],
-    )
-    .map_err(|e| OpError::param(e.input(), e.to_string()))
+
+    fn envelope(
+        &self,
+        replay: Option<&Reductions<T>>,
+    ) -> Result<SphereFamilyEnvelope<T>, OpError> {
+        SphereFamilyEnvelope::<T>::from_data_along(
+            self.kind,
+            &self.points,
+            &self.a,
+            self.a_im.as_deref(),
+            self.b.as_deref(),
+            [self.a_den.as_deref(), self.b_den.as_deref()],
+            replay,
+        )
+        .map_err(|e| OpError::param(e.input(), e.to_string()))
+    }
+}
+
+/// The envelope of the recipe's net and support functions, built in `T`. An inexact
+/// build replays the common factors the exact construction divides out (decided over Q on
+/// the exact input, [`rcagd::envelope::Reductions`]); `other_sheet`: including the other
+/// sheet's.
+fn net_envelope<T: OpScalar>(
+    args: &OpArgs,
+    other_sheet: bool,
+) -> Result<SphereFamilyEnvelope<T>, OpError> {
+    let data = NetData::<T>::read(args)?;
+    if T::EXACT {
+        return data.envelope(None);
+    }
+    let exact = NetData::<Rational>::read(args)?.envelope(None)?;
+    let exact = if other_sheet {
+        exact.with_other_sheet_divisor()
+    } else {
+        exact
+    };
+    let replay = exact.reductions().map(|x| T::from_rational(x));
+    data.envelope(Some(&replay))
 }
 
 const SPHERE_FAMILY_CYCLOGRAPHIC: OpSpec = OpSpec {
@@ -119,7 +170,7 @@ at = [["1/2", "1/2"], ["3/4", "1/3"], ["1/3", "3/4"]]
 };
 
 fn build_cyclographic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let env = net_envelope(args)?;
+    let env = net_envelope::<Rational>(args, true)?;
     let at = args.points("at")?;
     let mut curves = Vec::new();
     let mut certs = Vec::new();
@@ -148,21 +199,48 @@ fn build_cyclographic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     Ok(vec![args.object(Geometry::Curves(curves), certs)])
 }
 
-fn build_envelope(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let env = net_envelope(args)?;
+/// `sphere_family_envelope`, in `T` (exact registry: `Rational`; float path: `f64`).
+pub(crate) fn build_envelope<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    if !T::EXACT {
+        refuse_unverified_f64(args)?;
+    }
+    let env = net_envelope::<T>(args, args.bool("other_sheet")? || args.int("spheres")? > 0)?;
     let certs = env.certify();
     envelope_object(args, &env, certs)
 }
 
+/// The inputs whose f64 build is not shown to agree with the exact one to 1e-12 (random
+/// elliptic nets agree only to about 1e-9, other sheets to about 2e-9, and an enveloped
+/// sphere's f64 contact certificate can fail: docs/plans/float.md, "Session 16,
+/// floatsph"): refused by the float path, so that what it builds keeps its promise.
+fn refuse_unverified_f64(args: &OpArgs) -> Result<(), OpError> {
+    let exact_only = |param: &'static str, what: &str| {
+        Err(OpError::param(
+            param,
+            format!("{what} {}", crate::float::UNVERIFIED_REFUSED),
+        ))
+    };
+    if args.string("net")? == "elliptic" {
+        return exact_only("net", "the envelope of an elliptic net");
+    }
+    if args.bool("other_sheet")? {
+        return exact_only("other_sheet", "the other sheet");
+    }
+    if args.int("spheres")? > 0 {
+        return exact_only("spheres", "drawing enveloped spheres");
+    }
+    Ok(())
+}
+
 /// The envelope's positive-weight patches on the `domain` rectangle, with `certs` and the
 /// weight certificate.
-fn envelope_object(
+fn envelope_object<T: OpScalar>(
     args: &OpArgs,
-    env: &SphereFamilyEnvelope<Rational>,
+    env: &SphereFamilyEnvelope<T>,
     mut certs: Vec<Certificate>,
 ) -> Result<Vec<Object>, OpError> {
     let dom = args.opt_numbers("domain")?.unwrap_or_default();
-    let [s0, s1, t0, t1] = <[Rational; 4]>::try_from(dom.clone()).map_err(|_| {
+    let [s0, s1, t0, t1] = <[T; 4]>::try_from(arith::all_of::<T>(&dom)).map_err(|_| {
         OpError::param(
             "domain",
             format!(
@@ -176,13 +254,17 @@ fn envelope_object(
         .map_err(|e| OpError::param("domain", e.to_string()))?;
     certs.push(weight_cert);
     let main = (patches, certs);
-    let mut extra: Vec<Extra> = Vec::new();
+    let mut extra: Vec<Extra<T>> = Vec::new();
     let mut out = Vec::new();
     if args.bool("centres")? {
         let (pieces, cert) = env
             .centre_patches((s0.clone(), s1.clone()), (t0.clone(), t1.clone()))
             .map_err(|e| OpError::param("centres", e.to_string()))?;
-        let mut o = args.object(Geometry::Patches(pieces), vec![cert]);
+        let mut o = arith::object::<T>(
+            args,
+            Geometry::Patches(arith::exact_patches(pieces)?),
+            vec![cert],
+        );
         o.name = format!("{}_centres", args.name());
         out.push(o);
     }
@@ -223,9 +305,12 @@ fn envelope_object(
             certs.extend(c);
         }
     }
-    out.insert(0, args.object(Geometry::Patches(patches), certs));
+    out.insert(
+        0,
+        arith::object::<T>(args, Geometry::Patches(arith::exact_patches(patches)?), certs),
+    );
     for (suffix, p, c) in extra {
-        let mut o = args.object(Geometry::Patches(p), c);
+        let mut o = arith::object::<T>(args, Geometry::Patches(arith::exact_patches(p)?), c);
         o.name = format!("{}_{suffix}", args.name());
         out.push(o);
     }
@@ -233,7 +318,7 @@ fn envelope_object(
 }
 
 /// An extra object of the envelope ops: name suffix, patches, certificates.
-type Extra = (&'static str, Vec<BezierPatch<Rational>>, Vec<Certificate>);
+type Extra<T> = (&'static str, Vec<BezierPatch<T>>, Vec<Certificate>);
 
 /// The most enveloped spheres one object draws.
 const MAX_SPHERES: i64 = 16;
@@ -467,59 +552,122 @@ point = [0, 0, 0, 1]
 directions = [[1, 0, 0, "1/2"], [0, 1, 0, 0]]
 cycles = [[0, 0], [2, 0], [-1, 1]]
 "#,
-    build: build_plane_image,
+    build: build_plane_image::<Rational>,
 };
 
-fn build_plane_image(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `cyclographic_plane_image`, in `T`. The type of the 2-plane (lightlike: `1 − |n₀|² = 0`)
+/// is an exact-only decision: an inexact build decides it on the exact input and refuses
+/// the input if its own (tolerance) decision differs.
+pub(crate) fn build_plane_image<T>(args: &OpArgs) -> Result<Vec<Object>, OpError>
+where
+    T: OpScalar + SqrtScalar,
+    T::Ext: 'static,
+{
     use rcagd_io::quantity::{NamedQuantity, Quantity};
-    let four = |param: &'static str, p: &[Rational]| -> Result<[Rational; 4], OpError> {
-        <[Rational; 4]>::try_from(p.to_vec()).map_err(|_| {
-            OpError::param(param, format!("a point of R^{{3,1}} has four coordinates [x, y, z, r], got {}", p.len()))
-        })
+    let four = |param: &'static str, p: &[Rational]| -> Result<[T; 4], OpError> {
+        arith::array::<T, 4>(
+            p,
+            param,
+            &format!(
+                "a point of R^{{3,1}} has four coordinates [x, y, z, r], got {}",
+                p.len()
+            ),
+        )
     };
-    let a = four("point", &args.point("point")?)?;
+    let a_q = args.point("point")?;
+    let a = four("point", &a_q)?;
     let dirs = args.points("directions")?;
-    let [g, h] = <[Vec<Rational>; 2]>::try_from(dirs.clone())
-        .map_err(|_| OpError::param("directions", format!("a 2-plane has two directions g, h, got {}", dirs.len())))?;
-    let (g, h) = (four("directions", &g)?, four("directions", &h)?);
-    let img = rcagd::cyclographic::plane_image(&a, &g, &h).map_err(|e| OpError::param("directions", e.to_string()))?;
+    let [g_q, h_q] = <[Vec<Rational>; 2]>::try_from(dirs.clone()).map_err(|_| {
+        OpError::param(
+            "directions",
+            format!("a 2-plane has two directions g, h, got {}", dirs.len()),
+        )
+    })?;
+    let (g, h) = (four("directions", &g_q)?, four("directions", &h_q)?);
+    let img = rcagd::cyclographic::plane_image(&a, &g, &h)
+        .map_err(|e| OpError::param("directions", e.to_string()))?;
+    if !T::EXACT {
+        let q4 = |v: &[Rational]| <[Rational; 4]>::try_from(v.to_vec()).ok();
+        if let (Some(aq), Some(gq), Some(hq)) = (q4(&a_q), q4(&g_q), q4(&h_q)) {
+            let exact = rcagd::cyclographic::plane_image(&aq, &gq, &hq)
+                .map_err(|e| OpError::param("directions", e.to_string()))?;
+            if exact.kind != img.kind {
+                return Err(OpError::param(
+                    "directions",
+                    format!(
+                        "the float path does not decide the 2-plane as the exact build does: it finds {:?} where the exact type is {:?} (1 − |n₀|² within rounding of 0): build it without --float",
+                        img.kind, exact.kind
+                    ),
+                ));
+            }
+        }
+    }
     let mut certs = img.certify();
     let cycles = args.points("cycles")?;
     if cycles.len() > 8 {
-        return Err(OpError::param("cycles", format!("at most 8 cycles, got {}", cycles.len())));
+        return Err(OpError::param(
+            "cycles",
+            format!("at most 8 cycles, got {}", cycles.len()),
+        ));
     }
-    let mut patches: Vec<BezierPatch<Rational>> = Vec::new();
+    let mut patches: Vec<BezierPatch<T>> = Vec::new();
     for uv in &cycles {
-        let [u, v] = <[Rational; 2]>::try_from(uv.clone())
-            .map_err(|_| OpError::param("cycles", format!("a parameter point is [u, v], got {} numbers", uv.len())))?;
-        let c: [Rational; 4] = core::array::from_fn(|i| &a[i] + &(&u * &g[i]) + &(&v * &h[i]));
-        let r = if c[3] < Rational::from(0) { -c[3].clone() } else { c[3].clone() };
-        let cover = rcagd::quadric::sphere_cover([c[0].clone(), c[1].clone(), c[2].clone()], [r.clone(), r.clone(), r])
-            .map_err(|e| OpError::param("cycles", format!("the cycle at ({u}, {v}): {e}")))?;
+        let [u, v] = <[Rational; 2]>::try_from(uv.clone()).map_err(|_| {
+            OpError::param(
+                "cycles",
+                format!("a parameter point is [u, v], got {} numbers", uv.len()),
+            )
+        })?;
+        let (ut, vt) = (arith::of::<T>(&u), arith::of::<T>(&v));
+        let c: [T; 4] = core::array::from_fn(|i| {
+            a[i].clone() + ut.clone() * g[i].clone() + vt.clone() * h[i].clone()
+        });
+        let r = c[3].abs();
+        let cover = rcagd::quadric::sphere_cover(
+            [c[0].clone(), c[1].clone(), c[2].clone()],
+            [r.clone(), r.clone(), r],
+        )
+        .map_err(|e| OpError::param("cycles", format!("the cycle at ({u}, {v}): {e}")))?;
         certs.extend(cover.certify());
         patches.extend(cover.into_patches());
     }
-    let mut o = args.object(Geometry::Patches(patches), certs);
     let kind = match img.kind {
         rcagd::cyclographic::PlaneImageKind::Horizontal => "horizontal",
         rcagd::cyclographic::PlaneImageKind::Spacelike => "spacelike",
         rcagd::cyclographic::PlaneImageKind::Lightlike => "lightlike",
         rcagd::cyclographic::PlaneImageKind::Timelike => "timelike",
     };
-    o.values.push(NamedQuantity::new("kind", "the type of the 2-plane and of its image (Gruber §1.2.2)", Quantity::Text(kind.into())));
-    o.values.push(NamedQuantity::new(
-        "planes",
-        "the image planes [e0, n1, n2, n3]: e0 + n·x = 0, |n| = 1, touching every cycle (over Q(√d))",
-        Quantity::Vector(
-            img.planes
-                .iter()
-                .map(|p| {
-                    let mut v = vec![Quantity::Quadratic(p.offset.clone())];
-                    v.extend(p.normal.iter().cloned().map(Quantity::Quadratic));
-                    Quantity::Vector(v)
-                })
-                .collect(),
+    // an exact coordinate lives in Q(√d), an inexact one is a number
+    let ext = |x: &T::Ext| match arith::same_ref::<T::Ext, QuadExt>(x) {
+        Some(q) => Quantity::Quadratic(q.clone()),
+        None => Quantity::Approx(x.to_f64()),
+    };
+    let values = vec![
+        NamedQuantity::new(
+            "kind",
+            "the type of the 2-plane and of its image (Gruber §1.2.2)",
+            Quantity::Text(kind.into()),
         ),
-    ));
+        NamedQuantity::new(
+            "planes",
+            "the image planes [e0, n1, n2, n3]: e0 + n·x = 0, |n| = 1, touching every cycle (over Q(√d))",
+            Quantity::Vector(
+                img.planes
+                    .iter()
+                    .map(|p| {
+                        let mut v = vec![ext(&p.offset)];
+                        v.extend(p.normal.iter().map(ext));
+                        Quantity::Vector(v)
+                    })
+                    .collect(),
+            ),
+        ),
+    ];
+    let mut o = arith::object::<T>(
+        args,
+        Geometry::Patches(arith::exact_patches(patches)?),
+        certs,
+    );
+    o.values.extend(values);
     Ok(vec![o])
 }

@@ -15,6 +15,7 @@ mod float;
 mod float_geo;
 mod float_pn;
 mod float_rest;
+mod float_sph;
 mod fuzz;
 mod fuzz_corpus;
 mod library_first;

@@ -21,6 +21,6 @@ pub mod sphere_family;
 pub use quadratic_class::peters_reif_class;
 pub use recognition::{FamilyContacts, Recognition, RecognitionError, SphereFamily};
 pub use sphere_family::{
-    CyclographicEnvelope, DirectEnvelope, EnvelopedSphere, SphereFamilyEnvelope, SphereFamilyError,
-    Subcase, Support,
+    CyclographicEnvelope, DirectEnvelope, EnvelopedSphere, Reductions, SphereFamilyEnvelope,
+    SphereFamilyError, Subcase, Support,
 };

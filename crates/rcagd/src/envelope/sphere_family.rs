@@ -356,6 +356,226 @@ pub struct SphereFamilyEnvelope<F> {
     phi_st_den: MPoly<F>,
     /// Homogeneous `(W, X, Y, Z)` of `Ψ(s, t)`.
     psi: [MPoly<F>; 4],
+    /// The common factors divided out by the construction ([`Reductions`]): recorded by
+    /// an exact build, replayed by an inexact one built along them.
+    reductions: Reductions<F>,
+}
+
+/// The common polynomial factors the construction of a [`SphereFamilyEnvelope`] divides
+/// out, in order: the gcd of `Φ`'s numerators and denominator, the gcds of the two net
+/// parameter fractions, the factors cancelled from `Φ(s, t)` and from `Ψ(s, t)`, and (when
+/// the other sheet was asked for) from `Ψ₂(s, t)`.
+///
+/// Whether a polynomial divides another is a decision of exact algebra: over `Q` the gcd
+/// and the trial divisions decide it; in `f64` a rounded coefficient makes every
+/// candidate fail or a near-factor pass. So an exact build records the divisors
+/// ([`SphereFamilyEnvelope::reductions`]) and an `f64` build of the same input divides by
+/// the same (converted) polynomials ([`SphereFamilyEnvelope::new_along`]), each division
+/// accepted only if its remainder is rounding (`div_exact`'s tolerance): the same
+/// construction, the same degrees, the same control points up to rounding.
+#[derive(Debug, Clone)]
+pub struct Reductions<F> {
+    /// The factors divided out by each step of the construction, in order (a gcd, or the
+    /// candidate factors of a trial division with their multiplicity; empty where nothing
+    /// was divided).
+    pub divisors: Vec<Vec<MPoly<F>>>,
+    /// The factors divided out of the other sheet `Ψ₂(s, t)`, if recorded
+    /// ([`SphereFamilyEnvelope::with_other_sheet_divisor`]).
+    pub other_sheet: Option<Vec<MPoly<F>>>,
+    /// The monomials of each polynomial after each step (of the exact build): a term an
+    /// inexact build has beyond them is a rounding residue of an exact 0 (e.g. a
+    /// coefficient of Cramer's rule that cancels over Q) and is dropped.
+    pub supports: Vec<Vec<Vec<Vec<u32>>>>,
+    /// The monomials of the other sheet's coordinates, if recorded.
+    pub other_sheet_support: Option<Vec<Vec<Vec<u32>>>>,
+}
+
+impl<F: Scalar> Reductions<F> {
+    /// The divisors converted to another scalar type.
+    pub fn map<G: Scalar>(&self, f: impl Fn(&F) -> G + Copy) -> Reductions<G> {
+        Reductions {
+            divisors: self
+                .divisors
+                .iter()
+                .map(|v| v.iter().map(|p| p.map(f)).collect())
+                .collect(),
+            other_sheet: self
+                .other_sheet
+                .as_ref()
+                .map(|v| v.iter().map(|p| p.map(f)).collect()),
+            supports: self.supports.clone(),
+            other_sheet_support: self.other_sheet_support.clone(),
+        }
+    }
+}
+
+/// The number of reduction steps of [`SphereFamilyEnvelope::new`].
+const REDUCTION_STEPS: usize = 5;
+
+/// The monomials of each polynomial of a step.
+type Monomials = Vec<Vec<Vec<u32>>>;
+
+/// The replay of one step: its factors and, if recorded, its monomials.
+type Replay<'a, F> = Option<(&'a Vec<MPoly<F>>, Option<&'a Monomials>)>;
+
+/// One reduction step: with `replay`, divides every polynomial by each recorded factor in
+/// turn (an error if one does not divide up to rounding); else runs `reduce` (the exact
+/// construction's own gcd or trial division) and records the factors it divided by.
+fn reduction_step<F: Scalar>(
+    polys: &mut [MPoly<F>],
+    replay: Replay<'_, F>,
+    record: &mut Vec<Vec<MPoly<F>>>,
+    reduce: impl FnOnce(&mut [MPoly<F>]) -> Vec<MPoly<F>>,
+) -> Result<(), SphereFamilyError> {
+    let factors = match replay {
+        Some((fs, support)) => {
+            for d in fs {
+                if d.total_degree().unwrap_or(0) == 0 {
+                    continue;
+                }
+                // scaled to largest coefficient 1: `div_exact`'s inexact tolerance is
+                // relative to |p|·|d|, which a divisor with large coefficients inflates
+                let big = d
+                    .terms()
+                    .map(|(_, c)| c.clone())
+                    .max_by(|x, y| x.to_f64().abs().total_cmp(&y.to_f64().abs()));
+                let unit = match big {
+                    Some(c) if !F::EXACT && !c.is_zero() => d.scale(&(F::one() / c)),
+                    _ => d.clone(),
+                };
+                let qs = polys
+                    .iter()
+                    .map(|p| replayed_quotient(p, &unit))
+                    .collect::<Option<Vec<_>>>()
+                    .ok_or_else(|| {
+                        SphereFamilyError::Undefined(format!(
+                            "the replayed exact common factor (step {}, degree {}) does not divide in this arithmetic",
+                            record.len() + 1,
+                            d.total_degree().unwrap_or(0)
+                        ))
+                    })?;
+                polys.clone_from_slice(&qs);
+            }
+            if let Some(sup) = support {
+                prune(polys, sup);
+            }
+            fs.clone()
+        }
+        None => reduce(polys),
+    };
+    record.push(factors);
+    Ok(())
+}
+
+/// The monomials of each polynomial.
+fn support_of<F: Scalar>(polys: &[MPoly<F>]) -> Vec<Vec<Vec<u32>>> {
+    polys
+        .iter()
+        .map(|p| p.terms().map(|(e, _)| e.to_vec()).collect())
+        .collect()
+}
+
+/// Drops the terms of each polynomial outside the exact build's monomials `support` (the
+/// same number of polynomials, else nothing is dropped).
+fn prune<F: Scalar>(polys: &mut [MPoly<F>], support: &[Vec<Vec<u32>>]) {
+    if support.len() != polys.len() {
+        return;
+    }
+    for (p, sup) in polys.iter_mut().zip(support) {
+        let kept: Vec<(Vec<u32>, F)> = p
+            .terms()
+            .filter(|(e, _)| sup.iter().any(|x| x.as_slice() == *e))
+            .map(|(e, c)| (e.to_vec(), c.clone()))
+            .collect();
+        if let Ok(q) = MPoly::from_terms(p.nvars(), kept) {
+            *p = q;
+        }
+    }
+}
+
+/// The quotient `p / d` of a division that the exact build proved exact (a replayed
+/// factor): exact scalars divide exactly (`div_exact`); inexact ones run the division
+/// algorithm to the end, moving leading terms not divisible by `d`'s leading monomial to
+/// a remainder, and accept the quotient if the remainder is rounding (at most `10⁻⁶` of
+/// `p`'s largest coefficient: the decision that `d` divides was taken over Q, so the
+/// remainder only tells a replay of another input; the quotient's accuracy is what the
+/// float tests measure).
+fn replayed_quotient<F: Scalar>(p: &MPoly<F>, d: &MPoly<F>) -> Option<MPoly<F>> {
+    if F::EXACT {
+        return crate::pn::poly::div_exact(p, d);
+    }
+    let nv = p.nvars().max(d.nvars()).max(2);
+    let pad = |e: &[u32]| -> Vec<u32> {
+        let mut v = e.to_vec();
+        v.resize(nv.max(e.len()), 0);
+        v
+    };
+    let (lde, ldc) = d.terms().last().map(|(e, c)| (pad(e), c.clone()))?;
+    if ldc.is_zero() {
+        return None;
+    }
+    let mut r = p.clone();
+    let mut q = MPoly::zero(nv);
+    let mut rem = 0.0f64;
+    let mut guard = 0usize;
+    while let Some((le, lc)) = r.terms().last().map(|(e, c)| (pad(e), c.clone())) {
+        guard += 1;
+        if guard > 1_000_000 {
+            return None;
+        }
+        let t = MPoly::monomial(nv, &le, lc.clone());
+        if le.iter().zip(&lde).any(|(a, b)| a < b) {
+            rem = rem.max(lc.to_f64().abs());
+            r = &r - &t;
+            continue;
+        }
+        let e: Vec<u32> = le.iter().zip(&lde).map(|(a, b)| a - b).collect();
+        let qt = MPoly::monomial(nv, &e, lc / ldc.clone());
+        r = &r - &(&qt * d);
+        // the leading term cancels up to rounding: drop what is left of it
+        let left = r
+            .terms()
+            .find(|(e2, _)| pad(e2) == le)
+            .map(|(_, c)| c.clone());
+        if let Some(c) = left {
+            r = &r - &MPoly::monomial(nv, &le, c);
+        }
+        q = &q + &qt;
+    }
+    (rem <= 1e-6 * mag(p)).then_some(q)
+}
+
+/// [`cancel_common`] returning the factors it divided out, with multiplicity (exact
+/// scalars; for inexact ones [`cancel_common_checked`], recording none).
+fn cancel_common_factors<F: Scalar>(
+    polys: &mut [MPoly<F>],
+    candidates: &[MPoly<F>],
+) -> Vec<MPoly<F>> {
+    if !F::EXACT {
+        cancel_common_checked(polys, candidates);
+        return Vec::new();
+    }
+    let mut out = Vec::new();
+    for c in candidates {
+        if c.total_degree().unwrap_or(0) == 0 {
+            continue;
+        }
+        for _ in 0..cancel_common(polys, core::slice::from_ref(c)) {
+            out.push(c.clone());
+        }
+    }
+    out
+}
+
+/// [`cancel_gcd`] as a reduction step (exact scalars; a no-op recording nothing for
+/// inexact ones).
+fn cancel_gcd_step<F: Scalar>(polys: &mut [MPoly<F>]) -> Vec<MPoly<F>> {
+    let g = cancel_gcd(polys);
+    if F::EXACT && g.total_degree().unwrap_or(0) > 0 {
+        vec![g]
+    } else {
+        Vec::new()
+    }
 }
 
 fn grid_poly<F: Scalar>(grid: &[Vec<F>]) -> MPoly<F> {
@@ -447,6 +667,34 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
     /// if (3.7) has no unique solution; [`SphereFamilyError::DegenerateFamily`] if `Φ` is a
     /// point or a curve; [`SphereFamilyError::Net`] if the net is no fibration of Ω.
     pub fn new(net: &LineNet<F>, a: Support<F>, b: Support<F>) -> Result<Self, SphereFamilyError> {
+        Self::new_along(net, a, b, None)
+    }
+
+    /// [`Self::new`] replaying the common factors an exact build of the same input divided
+    /// out ([`Reductions`], from [`Self::reductions`] of the exact envelope converted to
+    /// `F`); `None`: decide them here (the exact construction).
+    ///
+    /// # Errors
+    /// As [`Self::new`]; [`SphereFamilyError::Undefined`] if a replayed divisor does not
+    /// divide up to rounding (the replay is not of this input).
+    pub fn new_along(
+        net: &LineNet<F>,
+        a: Support<F>,
+        b: Support<F>,
+        replay: Option<&Reductions<F>>,
+    ) -> Result<Self, SphereFamilyError> {
+        if let Some(r) = replay {
+            if r.divisors.len() != REDUCTION_STEPS {
+                return Err(SphereFamilyError::Undefined(format!(
+                    "a replay has {REDUCTION_STEPS} reduction steps, got {}",
+                    r.divisors.len()
+                )));
+            }
+        }
+        let step =
+            |k: usize| replay.and_then(|r| r.divisors.get(k).map(|f| (f, r.supports.get(k))));
+        let mut supports: Vec<Vec<Vec<Vec<u32>>>> = Vec::with_capacity(REDUCTION_STEPS);
+        let mut record: Vec<Vec<MPoly<F>>> = Vec::with_capacity(REDUCTION_STEPS);
         check_support(net, &a, &b)?;
         let eqs = equations(net, &a, &b);
         let (rows, rhs) = real_system(net, &eqs);
@@ -467,7 +715,8 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
         });
         let mut all: Vec<MPoly<F>> = phi.to_vec();
         all.push(det);
-        cancel_gcd(&mut all);
+        reduction_step(&mut all, step(0), &mut record, cancel_gcd_step)?;
+        supports.push(support_of(&all));
         normalize_content(&mut all);
         let phi: [MPoly<F>; 4] = core::array::from_fn(|k| all[k].clone());
         let phi_den = all[4].clone();
@@ -496,7 +745,8 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
             } else {
                 vec![params.second.clone(), params.second_den.clone()]
             };
-            cancel_gcd(&mut pair);
+            reduction_step(&mut pair, step(1 + n / 2), &mut record, cancel_gcd_step)?;
+            supports.push(support_of(&pair));
             normalize_content(&mut pair);
             let _ = d;
             if n == 0 {
@@ -510,7 +760,10 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
         let d = NetParameters::degree_bounds(all.iter());
         let mut st: Vec<MPoly<F>> = all.iter().map(|p| params.substitute(p, d)).collect();
         let candidates = factor_candidates(&params, &w);
-        cancel_common_checked(&mut st, &candidates);
+        reduction_step(&mut st, step(3), &mut record, |p| {
+            cancel_common_factors(p, &candidates)
+        })?;
+        supports.push(support_of(&st));
         normalize_content(&mut st);
         let phi_st: [MPoly<F>; 4] = core::array::from_fn(|k| st[k].clone());
         let phi_st_den = st[4].clone();
@@ -519,7 +772,10 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
         for i in 0..3 {
             psi.push(&(&phi_st[i] * &w[3]) - &(&phi_st[3] * &w[i]));
         }
-        cancel_common_checked(&mut psi, &candidates);
+        reduction_step(&mut psi, step(4), &mut record, |p| {
+            cancel_common_factors(p, &candidates)
+        })?;
+        supports.push(support_of(&psi));
         normalize_content(&mut psi);
         Ok(SphereFamilyEnvelope {
             net: net.clone(),
@@ -531,7 +787,29 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
             phi_st,
             phi_st_den,
             psi: core::array::from_fn(|k| psi[k].clone()),
+            reductions: Reductions {
+                divisors: record,
+                other_sheet: replay.and_then(|r| r.other_sheet.clone()),
+                supports,
+                other_sheet_support: replay.and_then(|r| r.other_sheet_support.clone()),
+            },
         })
+    }
+
+    /// The common factors this construction divided out ([`Reductions`]; meaningful for
+    /// exact scalars, which decide them; the other sheet's only after
+    /// [`Self::with_other_sheet_divisor`]).
+    pub fn reductions(&self) -> &Reductions<F> {
+        &self.reductions
+    }
+
+    /// The envelope with the other sheet's divisor recorded in [`Self::reductions`] (for a
+    /// replay that builds the other sheet).
+    pub fn with_other_sheet_divisor(mut self) -> Self {
+        let (psi2, d, _) = self.other_sheet_and_divisor();
+        self.reductions.other_sheet = Some(d);
+        self.reductions.other_sheet_support = Some(support_of(&psi2));
+        self
     }
 
     /// The envelope from plain data (a recipe): the net type, its point rows
@@ -551,6 +829,22 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
         a_im: Option<&[Vec<F>]>,
         b: Option<&[Vec<F>]>,
         dens: [Option<&[Vec<F>]>; 2],
+    ) -> Result<Self, SphereFamilyError> {
+        Self::from_data_along(kind, rows, a, a_im, b, dens, None)
+    }
+
+    /// [`Self::from_data`] along the reductions of an exact build ([`Self::new_along`]).
+    ///
+    /// # Errors
+    /// As [`Self::from_data`] and [`Self::new_along`].
+    pub fn from_data_along(
+        kind: NetKind,
+        rows: &[Vec<F>],
+        a: &[Vec<F>],
+        a_im: Option<&[Vec<F>]>,
+        b: Option<&[Vec<F>]>,
+        dens: [Option<&[Vec<F>]>; 2],
+        replay: Option<&Reductions<F>>,
     ) -> Result<Self, SphereFamilyError> {
         let bad = |m: String| SphereFamilyError::InconsistentSupport(m);
         let rows4: Vec<[F; 4]> = rows
@@ -592,7 +886,7 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
                 ))
             }
         };
-        Self::new(&net, a, b)
+        Self::new_along(&net, a, b, replay)
     }
 
     /// The net.
@@ -1595,7 +1889,13 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
                         let dk = x[k].clone() - c[k].clone();
                         acc + dk.clone() * dk
                     }) - r.clone() * r.clone();
-                    let scale = 1.0 + r.to_f64() * r.to_f64();
+                    // the size of the terms that cancel: Σ (|xₖ| + |mₖ|)² + r² (an f64
+                    // residual is rounding of these, not of the cancelled result)
+                    let scale = 1.0
+                        + (0..3)
+                            .map(|k| (x[k].to_f64().abs() + c[k].to_f64().abs()).powi(2))
+                            .sum::<f64>()
+                        + r.to_f64() * r.to_f64();
                     let ok = if F::EXACT {
                         d.is_zero()
                     } else {
@@ -1618,6 +1918,14 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
     /// `Ψ₂(s, t)` is the second contact point of the same sphere `Φ(s, t)` that touches `Ψ`
     /// in `Ψ(s, t)`: [`Self::other_sheet`] as a rational map. Homogeneous `(W, X, Y, Z)`.
     pub fn other_sheet_homogeneous(&self) -> [MPoly<F>; 4] {
+        self.other_sheet_and_divisor().0
+    }
+
+    /// [`Self::other_sheet_homogeneous`] and the common factor divided out (replayed from
+    /// [`Reductions::other_sheet`] if recorded and the scalar is inexact).
+    /// The third value: `true` if a replayed factor did not divide (the factors are then
+    /// kept, and [`Self::other_sheet_patches`] refuses).
+    fn other_sheet_and_divisor(&self) -> ([MPoly<F>; 4], Vec<MPoly<F>>, bool) {
         let w = omega_parametrization::<F>();
         let (a, b) = self.net.line_points();
         let subst = |x: &[MPoly<F>; 4]| -> [MPoly<F>; 4] {
@@ -1641,9 +1949,23 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
         let mut candidates = factor_candidates(&self.params, &w);
         candidates.push(w2[3].clone());
         candidates.sort_by_key(|p| std::cmp::Reverse(p.total_degree().unwrap_or(0)));
-        cancel_common_checked(&mut psi, &candidates);
+        let replay = self
+            .reductions
+            .other_sheet
+            .as_ref()
+            .filter(|_| !F::EXACT)
+            .map(|f| (f, self.reductions.other_sheet_support.as_ref()));
+        let mut record = Vec::new();
+        let failed = reduction_step(&mut psi, replay, &mut record, |p| {
+            cancel_common_factors(p, &candidates)
+        })
+        .is_err();
+        if failed {
+            record = vec![Vec::new()];
+        }
         normalize_content(&mut psi);
-        core::array::from_fn(|k| psi[k].clone())
+        let d = record.pop().unwrap_or_default();
+        (core::array::from_fn(|k| psi[k].clone()), d, failed)
     }
 
     /// The other sheet [`Self::other_sheet_homogeneous`] on `[s₀, s₁] × [t₀, t₁]` as
@@ -1659,7 +1981,12 @@ impl<F: Scalar> SphereFamilyEnvelope<F> {
         s: (F, F),
         t: (F, F),
     ) -> Result<(Vec<BezierPatch<F>>, Vec<Certificate>), SphereFamilyError> {
-        let psi2 = self.other_sheet_homogeneous();
+        let (psi2, _, failed) = self.other_sheet_and_divisor();
+        if failed {
+            return Err(SphereFamilyError::Undefined(
+                "the float path does not build this other sheet: a common factor the exact build divides out does not divide the f64 numerators up to rounding (10⁻⁶); build it without --float".into(),
+            ));
+        }
         let mut certs = self.other_sheet_certificates_of(&psi2);
         let (pieces, weight) = export_pieces(&psi2, s, t)?;
         certs.push(weight);
