@@ -1097,6 +1097,16 @@ mod tests {
         }
     }
 
+    /// The PH quintic starting at the origin with the preimage coefficients `a` (integer
+    /// quaternions), if it is one (not all zero).
+    fn ph_of_preimage(a: &[[i64; 4]]) -> Option<PhCurve<Rational>> {
+        let quats: Vec<Quaternion<Rational>> = a
+            .iter()
+            .map(|c| Quaternion::new(q(c[0]), q(c[1]), q(c[2]), q(c[3])))
+            .collect();
+        PhCurve::new(quats, [q(0), q(0), q(0)]).ok()
+    }
+
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(16))]
 
@@ -1109,11 +1119,7 @@ mod tests {
             r in 1i64..20,
             planar in proptest::prelude::any::<bool>(),
         ) {
-            let quats: Vec<Quaternion<Rational>> = a
-                .iter()
-                .map(|c| Quaternion::new(q(c[0]), q(c[1]), q(c[2]), q(c[3])))
-                .collect();
-            if let Ok(c) = PhCurve::new(quats, [q(0), q(0), q(0)]) {
+            if let Some(c) = ph_of_preimage(&a) {
                 let s = CanalSpine::polynomial(
                     c.position().clone(),
                     Poly::constant(Rational::from_ratio(r, 40)),
@@ -1192,12 +1198,8 @@ mod tests {
             cubic in proptest::collection::vec(-4i64..5, 12),
             r in 1i64..20,
         ) {
-            let quats: Vec<Quaternion<Rational>> = a
-                .iter()
-                .map(|c| Quaternion::new(q(c[0]), q(c[1]), q(c[2]), q(c[3])))
-                .collect();
             let radius = Poly::constant(Rational::from_ratio(r, 40));
-            if let Ok(c) = PhCurve::new(quats, [q(0), q(0), q(0)]) {
+            if let Some(c) = ph_of_preimage(&a) {
                 weight_estimate_agrees(&CanalSpine::polynomial(c.position().clone(), radius.clone()));
             }
             let m: [Poly<Rational>; 3] =

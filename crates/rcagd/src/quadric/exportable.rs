@@ -83,19 +83,11 @@ pub fn exportable_patch<F: Scalar>(
     match split_patch_uniform(&patch, MAX_SPLIT.min(3))? {
         Some(pieces) if pieces.len() > 1 => {
             let k = (1..=8).find(|k| k * k >= pieces.len()).unwrap_or(1);
-            let on = pieces
-                .iter()
-                .all(|p| certify_patch_on_quadric(p, q, "").holds);
-            let cert = Certificate::decide(
-                format!("split into {k}×{k} sub-patches with weights of one sign (export); every sub-patch lies on the quadric: Xᵀ Q X ≡ 0"),
-                on,
-                F::EXACT,
-                || "a sub-patch is off the quadric".to_string(),
-            );
-            Ok(Exportable {
+            Ok(split_on_quadric(
                 pieces,
-                certificates: vec![cert],
-            })
+                q,
+                &format!("split into {k}×{k} sub-patches with weights of one sign (export)"),
+            ))
         }
         _ => Ok(Exportable {
             pieces: vec![patch],
@@ -136,19 +128,33 @@ pub fn exportable_patch_at<F: Scalar>(
             pieces.push(patch.restrict(&at(i), &at(i + 1), &at(j), &at(j + 1))?);
         }
     }
+    Ok(split_on_quadric(
+        pieces,
+        q,
+        &format!("split into {k}×{k} sub-patches (the exact build's split, export)"),
+    ))
+}
+
+/// The sub-patches `pieces` of a patch on the quadric `q` with the certificate that each
+/// lies on it (`what`: how they were split).
+fn split_on_quadric<F: Scalar>(
+    pieces: Vec<BezierPatch<F>>,
+    q: &Mat4<F>,
+    what: &str,
+) -> Exportable<BezierPatch<F>> {
     let on = pieces
         .iter()
         .all(|p| certify_patch_on_quadric(p, q, "").holds);
     let cert = Certificate::decide(
-        format!("split into {k}×{k} sub-patches (the exact build's split, export); every sub-patch lies on the quadric: Xᵀ Q X ≡ 0"),
+        format!("{what}; every sub-patch lies on the quadric: Xᵀ Q X ≡ 0"),
         on,
         F::EXACT,
         || "a sub-patch is off the quadric".to_string(),
     );
-    Ok(Exportable {
+    Exportable {
         pieces,
         certificates: vec![cert],
-    })
+    }
 }
 
 #[cfg(test)]
