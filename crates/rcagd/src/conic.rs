@@ -396,9 +396,15 @@ impl<F: Scalar> CircleArcs<F> {
         let oriented = if clockwise { -turn } else { turn };
         let cosine = dot(&d0, &d1);
         let zero = F::zero();
-        let n: usize = if oriented > zero {
+        // In f64 the end points of a half circle are rounded, so d₀ × d₁ is a residue ±ε
+        // instead of 0; one piece through it would have σ = turn/(r² + d₀·d₁) ≈ ±1/0.
+        // Within rounding of 0 (relative to r²) it is taken as 0, as exactly.
+        let r2 = (radius.clone() * radius.clone()).to_f64();
+        let straight =
+            oriented == zero || (!F::EXACT && oriented.to_f64().abs() <= 64.0 * f64::EPSILON * r2);
+        let n: usize = if oriented > zero && !straight {
             1
-        } else if oriented == zero {
+        } else if straight {
             if cosine < zero {
                 2
             } else {
@@ -638,6 +644,25 @@ mod tests {
 
     fn q(p: i64, d: i64) -> Rational {
         Rational::from_ratio(p, d)
+    }
+
+    /// A half circle between rational antipodal points, centre (0, 8), radius 9, from
+    /// `c + 9·(45, −108)/117` to `c − 9·(45, −108)/117`: exactly `d₀ × d₁ = 0` (two pieces);
+    /// in f64 the rounded end points leave a residue, which must not become one piece with
+    /// `σ ≈ 1/0` (a random draw of the float tests overflowed to inf).
+    #[test]
+    fn half_circle_in_f64_is_two_pieces_as_exactly() {
+        let from = [q(9 * 45, 117), q(8 * 117 - 9 * 108, 117)];
+        let to = [q(-9 * 45, 117), q(8 * 117 + 9 * 108, 117)];
+        let exact = CircleArcs::new([q(0, 1), q(8, 1)], q(9, 1), from.clone(), to.clone(), false)
+            .expect("exact");
+        assert_eq!(exact.pieces().len(), 2);
+        let f = |p: &[Rational; 2]| [Scalar::to_f64(&p[0]), Scalar::to_f64(&p[1])];
+        let float = CircleArcs::new([0.0, 8.0], 9.0, f(&from), f(&to), false).expect("f64");
+        assert_eq!(float.pieces().len(), 2);
+        for c in float.curves() {
+            assert!(c.coords().iter().all(|x| x.is_finite()), "{c:?}");
+        }
     }
 
     fn hom(c: &BezierCurve<Rational>) -> Vec<Vec<Rational>> {
