@@ -229,7 +229,7 @@ pub const FLOAT_OPS: &[FloatOp] = &[
     FloatOp {
         name: "ph_hermite",
         build: ops::ph::build_ph_hermite_f64,
-        note: "roots by Sturm sequences in f64, interpolants ranked by their f64 bending energy, f64 certificates (the exact op encloses every interpolant from its exact root over Q(|d_s||d_f|))",
+        note: "the elimination quartic formed exactly over Q(|d_s||d_f|) from the data and rounded once (formed in f64 it loses up to 8 digits to cancellation), roots by Sturm sequences in f64, interpolants ranked by their f64 bending energy, f64 certificates (the exact op encloses every interpolant from its exact root over Q(|d_s||d_f|))",
     },
     FloatOp {
         name: "ph_planar_curve",
