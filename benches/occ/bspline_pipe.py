@@ -61,12 +61,12 @@ POLES = [
 ]
 
 
-def spine_curve():
-    """The B-spline spine, read back from its STEP file (``SPINE``)."""
-    shape = read_step(SPINE)
-    exp = TopExp_Explorer(shape, TopAbs_EDGE)
+def spine_curve(path: str | None = None):
+    """The first edge's curve of a STEP file (default: the B-spline spine ``SPINE``)."""
+    path = path or SPINE
+    exp = TopExp_Explorer(read_step(path), TopAbs_EDGE)
     if not exp.More():
-        raise SystemExit(f"{SPINE}: no edge")
+        raise SystemExit(f"{path}: no edge")
     edge = TopoDS.Edge(exp.Current())
     return BRep_Tool.Curve_s(edge, 0.0, 1.0)
 
@@ -103,8 +103,9 @@ def write_spine(path: str, pieces: list[str]) -> None:
     print(f"wrote {path}")
 
 
-def occ_pipe(radius: float):
-    curve = spine_curve()
+def pipe_along(curve, radius: float):
+    """OpenCascade's pipe: the circle of ``radius`` in the normal plane at the start of
+    ``curve``, swept along it by ``BRepOffsetAPI_MakePipe``."""
     wire = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(curve).Edge()).Wire()
     p, v = gp_Pnt(), gp_Vec()
     curve.D1(curve.FirstParameter(), p, v)
@@ -112,7 +113,14 @@ def occ_pipe(radius: float):
     profile = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(circ).Edge()).Wire()
     mk = BRepOffsetAPI_MakePipe(wire, profile)
     mk.Build()
+    if not mk.IsDone():
+        raise SystemExit("OpenCascade's pipe failed")
     return mk.Shape()
+
+
+def occ_pipe(radius: float):
+    """The pipe around the spine read from its STEP file (the read is part of the timing)."""
+    return pipe_along(spine_curve(), radius)
 
 
 def faces(shape):

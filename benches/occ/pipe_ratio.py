@@ -35,45 +35,11 @@ import subprocess
 import sys
 import time
 
-from OCP.BRep import BRep_Tool
-from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeWire
-from OCP.BRepOffsetAPI import BRepOffsetAPI_MakePipe
-from OCP.gp import gp_Ax2, gp_Circ, gp_Dir, gp_Pnt, gp_Vec
-from OCP.IFSelect import IFSelect_RetDone
-from OCP.STEPControl import STEPControl_Reader
-from OCP.TopAbs import TopAbs_EDGE
-from OCP.TopExp import TopExp_Explorer
-from OCP.TopoDS import TopoDS
+from bspline_pipe import pipe_along, spine_curve  # benches/occ, beside this script
 
 # (spine name, pipe_profile argument, radius)
 SPINES = [("gallery quintic, r = 1/10", "x", "gallery.step", 0.1),
           ("issue 17's quintic, r = 1/8", "issue", "issue.step", 0.125)]
-
-
-def spine_curve(path: str):
-    r = STEPControl_Reader()
-    if r.ReadFile(path) != IFSelect_RetDone:
-        raise SystemExit(f"cannot read {path}")
-    r.TransferRoots()
-    exp = TopExp_Explorer(r.OneShape(), TopAbs_EDGE)
-    if not exp.More():
-        raise SystemExit(f"{path}: no edge")
-    edge = TopoDS.Edge(exp.Current())
-    return BRep_Tool.Curve_s(edge, 0.0, 1.0)
-
-
-def occ_pipe(curve, radius: float):
-    """OpenCascade's pipe as in benches/occ/bspline_pipe.py (without reading the file)."""
-    wire = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(curve).Edge()).Wire()
-    p, v = gp_Pnt(), gp_Vec()
-    curve.D1(curve.FirstParameter(), p, v)
-    circ = gp_Circ(gp_Ax2(p, gp_Dir(v)), radius)
-    profile = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(circ).Edge()).Wire()
-    mk = BRepOffsetAPI_MakePipe(wire, profile)
-    mk.Build()
-    if not mk.IsDone():
-        raise SystemExit("OpenCascade's pipe failed")
-    return mk.Shape()
 
 
 def occ_round(curve, radius: float, n: int, path: str | None = None) -> tuple[list[float], list[float]]:
@@ -82,7 +48,7 @@ def occ_round(curve, radius: float, n: int, path: str | None = None) -> tuple[li
     cpu, wall = [], []
     for _ in range(n + 1):
         c, w = time.process_time_ns(), time.perf_counter_ns()
-        occ_pipe(spine_curve(path) if path else curve, radius)
+        pipe_along(spine_curve(path) if path else curve, radius)
         cpu.append((time.process_time_ns() - c) / 1e6)
         wall.append((time.perf_counter_ns() - w) / 1e6)
     return cpu[1:], wall[1:]
