@@ -345,6 +345,18 @@ fn chebyshev_fit(f: &dyn Fn(f64) -> f64, k: usize) -> Vec<f64> {
     coef
 }
 
+/// The degree-10 Chebyshev interpolant (power form in `u`) of the integrand `N/σ⁵` with
+/// the `f64` coefficients `nf`, `sf` (midpoints of the enclosures), or `None` if it is not
+/// finite. Any polynomial serves (it only sets the enclosure's width, never its validity).
+fn integrand_fit(nf: &[f64], sf: &[f64]) -> Option<Vec<f64>> {
+    let f = |u: f64| {
+        let s = eval_f64(sf, u);
+        eval_f64(nf, u) / (s * s * s * s * s)
+    };
+    let pc = chebyshev_fit(&f, 10);
+    pc.iter().all(|c| c.is_finite()).then_some(pc)
+}
+
 /// The integrand data on `[a, b]` (in `u ∈ [0, 1]`, `t = a + (b − a)u`).
 struct Piece {
     a: Rational,
@@ -369,15 +381,7 @@ fn enclose_piece(
         let s2 = &su * &su;
         &(&s2 * &s2) * &su
     };
-    let (nf, sf) = (poly_mid_f64(&nu), poly_mid_f64(&su));
-    let f = |u: f64| {
-        let s = eval_f64(&sf, u);
-        eval_f64(&nf, u) / (s * s * s * s * s)
-    };
-    let pc = chebyshev_fit(&f, 10);
-    if pc.iter().any(|c| !c.is_finite()) {
-        return None;
-    }
+    let pc = integrand_fit(&poly_mid_f64(&nu), &poly_mid_f64(&su))?;
     let p = Poly::new(
         pc.iter()
             .map(|c| Rational::try_from(*c).map(|q| iv(&q)))
@@ -495,16 +499,8 @@ fn enclose_piece_f64(
         let s2 = mul_f64(&su, &su);
         mul_f64(&mul_f64(&s2, &s2), &su)
     };
-    let nf: Vec<f64> = nu.iter().map(F64Interval::mid).collect();
-    let sf: Vec<f64> = su.iter().map(F64Interval::mid).collect();
-    let f = |u: f64| {
-        let s = eval_f64(&sf, u);
-        eval_f64(&nf, u) / (s * s * s * s * s)
-    };
-    let pc = chebyshev_fit(&f, 10);
-    if pc.iter().any(|c| !c.is_finite()) {
-        return None;
-    }
+    let mids = |p: &[F64Interval]| p.iter().map(F64Interval::mid).collect::<Vec<f64>>();
+    let pc = integrand_fit(&mids(&nu), &mids(&su))?;
     let p: Vec<F64Interval> = pc.iter().map(|c| F64Interval::point(*c)).collect();
     let ps5 = mul_f64(&p, &s5);
     let rem: Vec<F64Interval> = (0..nu.len().max(ps5.len()))
