@@ -6,21 +6,11 @@
 //! rounding, every `f64` certificate holding and inexact), and every float object says
 //! `arithmetic = "f64"`.
 
+use crate::float::{build, marked, obj, pt, q, REL};
 use proptest::prelude::*;
-use rcagd_cli::build::{build_recipe_with, Arithmetic};
+use rcagd_cli::build::Arithmetic;
 use rcagd_cli::float;
 use rcagd_cli::float_agreement;
-use rcagd_cli::model::Object;
-use rcagd_cli::recipe::Recipe;
-use rcagd_io::quantity::Quantity;
-
-/// The agreement demanded of float and exact control points (issue 20).
-const REL: f64 = 1e-12;
-
-fn build(src: &str, arithmetic: Arithmetic) -> Result<Vec<Object>, String> {
-    let r = Recipe::parse("r.toml", src, None).map_err(|d| d[0].to_string())?;
-    build_recipe_with(&r, arithmetic, |_| {}).map_err(|d| d[0].to_string())
-}
 
 /// Builds `src` exactly; if the exact op accepts it, the float path must build it too
 /// and agree (the exact op's refusals are its exceptional sets, not compared). Returns
@@ -33,32 +23,8 @@ fn check(src: &str) -> Result<bool, TestCaseError> {
         build(src, Arithmetic::Float).map_err(|m| TestCaseError::fail(format!("{src}\n{m}")))?;
     float_agreement::agree(&exact, &f, REL)
         .map_err(|m| TestCaseError::fail(format!("{src}\n{m}")))?;
-    for o in &f {
-        let marked = o
-            .values
-            .iter()
-            .any(|v| v.name == float::ARITHMETIC && v.value == Quantity::Text("f64".into()));
-        if !marked || o.certificates.is_empty() {
-            return Err(TestCaseError::fail(format!(
-                "{src}\n{}: not marked f64 or no certificates",
-                o.name
-            )));
-        }
-    }
+    marked(src, &f).map_err(|m| TestCaseError::fail(format!("{src}\n{m}")))?;
     Ok(true)
-}
-
-/// A small rational `p/q` as recipe text.
-fn q() -> impl Strategy<Value = String> {
-    (-40i64..=40, 1i64..=12).prop_map(|(p, d)| format!("\"{p}/{d}\""))
-}
-
-fn pt(dim: usize) -> impl Strategy<Value = String> {
-    proptest::collection::vec(q(), dim).prop_map(|v| format!("[{}]", v.join(", ")))
-}
-
-fn obj(op: &str, body: &str) -> String {
-    format!("[[object]]\nname = \"o\"\nop = \"{op}\"\n{body}")
 }
 
 /// Each op of this file has a float path (its property test is below).

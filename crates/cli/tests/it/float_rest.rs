@@ -5,22 +5,13 @@
 //! says `arithmetic = "f64"`. The generators draw inputs the exact op builds (stated per
 //! property), so whose draws the exact op always refuses cannot pass vacuously.
 
+use crate::float::{build, marked, obj, REL};
 use proptest::prelude::*;
 use rcagd_algebra::Scalar;
-use rcagd_cli::build::{build_recipe_with, Arithmetic};
+use rcagd_cli::build::Arithmetic;
 use rcagd_cli::float;
 use rcagd_cli::float_agreement;
 use rcagd_cli::model::Object;
-use rcagd_cli::recipe::Recipe;
-use rcagd_io::quantity::Quantity;
-
-/// The agreement demanded of float and exact control points (issue 20).
-const REL: f64 = 1e-12;
-
-fn build(src: &str, arithmetic: Arithmetic) -> Result<Vec<Object>, String> {
-    let r = Recipe::parse("r.toml", src, None).map_err(|d| d[0].to_string())?;
-    build_recipe_with(&r, arithmetic, |_| {}).map_err(|d| d[0].to_string())
-}
 
 /// The extra relative rounding of an object whose patches are assembled in the power
 /// basis along their second parameter and converted to Bernstein form (`sweep_rrmf`:
@@ -94,18 +85,7 @@ fn check_with(src: &str, split: bool, extra: fn(&[Object]) -> f64) -> Result<boo
         float_agreement::agree(&exact, &f, rel)
     };
     r.map_err(|m| TestCaseError::fail(format!("{src}\n{m}")))?;
-    for o in &f {
-        let marked = o
-            .values
-            .iter()
-            .any(|v| v.name == float::ARITHMETIC && v.value == Quantity::Text("f64".into()));
-        if !marked || o.certificates.is_empty() {
-            return Err(TestCaseError::fail(format!(
-                "{src}\n{}: not marked f64 or no certificates",
-                o.name
-            )));
-        }
-    }
+    marked(src, &f).map_err(|m| TestCaseError::fail(format!("{src}\n{m}")))?;
     Ok(true)
 }
 
@@ -121,10 +101,6 @@ fn qn(n: i64) -> impl Strategy<Value = String> {
 
 fn ptn(dim: usize, n: i64) -> impl Strategy<Value = String> {
     proptest::collection::vec(qn(n), dim).prop_map(|v| format!("[{}]", v.join(", ")))
-}
-
-fn obj(op: &str, body: &str) -> String {
-    format!("[[object]]\nname = \"o\"\nop = \"{op}\"\n{body}")
 }
 
 /// Each op of this file has a float path (its property test is below).
