@@ -185,7 +185,7 @@ impl<F: Scalar> CircleArc<F> {
         } else {
             turn.clone()
         };
-        if oriented <= F::zero() {
+        if oriented <= F::zero() || half_turn_within_rounding(&oriented, &dot(&d0, &d1), &radius) {
             return Err(ConstructionError::ArcTooLarge(format!(
                 "the {} arc from {} to {} turns by ≥ 180° (oriented d₀ × d₁ = {})",
                 if clockwise {
@@ -396,12 +396,7 @@ impl<F: Scalar> CircleArcs<F> {
         let oriented = if clockwise { -turn } else { turn };
         let cosine = dot(&d0, &d1);
         let zero = F::zero();
-        // In f64 the end points of a half circle are rounded, so d₀ × d₁ is a residue ±ε
-        // instead of 0; one piece through it would have σ = turn/(r² + d₀·d₁) ≈ ±1/0.
-        // Within rounding of 0 (relative to r²) it is taken as 0, as exactly.
-        let r2 = (radius.clone() * radius.clone()).to_f64();
-        let straight =
-            oriented == zero || (!F::EXACT && oriented.to_f64().abs() <= 64.0 * f64::EPSILON * r2);
+        let straight = oriented == zero || half_turn_within_rounding(&oriented, &cosine, &radius);
         let n: usize = if oriented > zero && !straight {
             1
         } else if straight {
@@ -470,6 +465,16 @@ impl<F: Scalar> Certified for CircleArcs<F> {
     fn certify(&self) -> Vec<Certificate> {
         certify_chain(&self.pieces, false)
     }
+}
+
+/// Whether an `f64` arc with `oriented = ±d₀ × d₁` and `cosine = d₀·d₁` is a half circle
+/// up to rounding: the rounded end points of a half circle leave a residue `±ε` instead of
+/// `d₀ × d₁ = 0`, and one piece through it would have `σ = turn/(r² + d₀·d₁) ≈ ±1/0`.
+/// Within `64ε·r²` of 0 it is taken as the half circle it is exactly (never for exact
+/// scalars).
+fn half_turn_within_rounding<F: Scalar>(oriented: &F, cosine: &F, radius: &F) -> bool {
+    let r2 = (radius.clone() * radius.clone()).to_f64();
+    !F::EXACT && *cosine < F::zero() && oriented.to_f64().abs() <= 64.0 * f64::EPSILON * r2
 }
 
 /// The best rational approximation `p/q` of `x` with `q ≤ max_den` among the
@@ -662,6 +667,17 @@ mod tests {
         assert_eq!(float.pieces().len(), 2);
         for c in float.curves() {
             assert!(c.coords().iter().all(|x| x.is_finite()), "{c:?}");
+        }
+        // one piece is refused as exactly (≥ 180°), not built with σ ≈ 1/0
+        assert!(matches!(
+            CircleArc::new([q(0, 1), q(8, 1)], q(9, 1), from.clone(), to.clone(), false),
+            Err(ConstructionError::ArcTooLarge(_))
+        ));
+        for clockwise in [false, true] {
+            assert!(matches!(
+                CircleArc::new([0.0, 8.0], 9.0, f(&from), f(&to), clockwise),
+                Err(ConstructionError::ArcTooLarge(_))
+            ));
         }
     }
 
