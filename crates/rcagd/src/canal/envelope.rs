@@ -192,7 +192,7 @@ pub struct CharacteristicCircle<F> {
 }
 
 /// A rational canal surface `x(t, u)` in homogeneous coordinates with its defining data.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Clone, PartialEq)]
 pub struct CanalSurface<F> {
     spine: CanalSpine<F>,
     numerators: [Poly<F>; 4],
@@ -202,6 +202,39 @@ pub struct CanalSurface<F> {
     reparametrized: Option<(Rational, Rational)>,
     domain: Option<(Rational, Rational)>,
     construction: Construction,
+    /// The homogeneous unit normal the surface was built from (how it was built, not part
+    /// of the value: equality and `Debug` ignore it).
+    normals: BuiltNormals<F>,
+}
+
+/// The data of the surface (the normals it was built from are not part of it).
+impl<F: std::fmt::Debug> std::fmt::Debug for CanalSurface<F> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("CanalSurface")
+            .field("spine", &self.spine)
+            .field("numerators", &self.numerators)
+            .field("split", &self.split)
+            .field("axis", &self.axis)
+            .field("x", &self.x)
+            .field("reparametrized", &self.reparametrized)
+            .field("domain", &self.domain)
+            .field("construction", &self.construction)
+            .finish()
+    }
+}
+
+/// The homogeneous unit normal `(q₀, q)` of the characteristic circles from which the
+/// envelope `X = (W q₀, M q₀ + R q)` of a [`CanalSurface`] was built, before the common
+/// factors of `X` were removed ([`envelope_from_normals`]); `None` for a surface that was
+/// mapped or converted after its construction. Shared by clones; two surfaces are equal
+/// whether or not they carry it.
+#[derive(Clone)]
+struct BuiltNormals<F>(Option<std::sync::Arc<[BiPoly<F>; 4]>>);
+
+impl<F> PartialEq for BuiltNormals<F> {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
 }
 
 /// Which construction produced a [`CanalSurface`].
@@ -240,7 +273,28 @@ impl<F: Scalar> CanalSurface<F> {
             reparametrized: None,
             domain: None,
             construction,
+            normals: BuiltNormals(None),
         }
+    }
+
+    /// [`Self::from_parts`] of the envelope of the normal `(q₀, q)` (common factors removed
+    /// for exact scalars), remembering the normal ([`Self::mirrored`]).
+    fn from_normals(
+        spine: &CanalSpine<F>,
+        numerators: &[Poly<F>; 4],
+        split: &[Poly<F>; 2],
+        axis: AxisChoice,
+        normals: [BiPoly<F>; 4],
+        construction: Construction,
+    ) -> Result<Self, CanalError> {
+        let [q0, q1, q2, q3] = &normals;
+        let mut x = envelope_from_normals(spine, q0, &[q1.clone(), q2.clone(), q3.clone()]);
+        if F::EXACT {
+            reduce(&mut x)?;
+        }
+        let mut s = Self::from_parts(spine, numerators, split, axis, x, construction);
+        s.normals = BuiltNormals(Some(std::sync::Arc::new(normals)));
+        Ok(s)
     }
 }
 
@@ -296,19 +350,15 @@ fn build<F: Scalar>(
     let qa = k1.mul(&k0).scale(&two).div_u2_plus_1()?;
     let qb = k2.mul(&k0).scale(&two).div_u2_plus_1()?;
     let qj = k11.add(&k22).sub(&k00).div_u2_plus_1()?;
-    let q = axis.place(qa, qb, qj);
-    let mut x = envelope_from_normals(spine, &q0, &q);
-    if F::EXACT {
-        reduce(&mut x)?;
-    }
-    Ok(CanalSurface::from_parts(
+    let [q1, q2, q3] = axis.place(qa, qb, qj);
+    CanalSurface::from_normals(
         spine,
         numerators,
         g,
         axis,
-        x,
+        [q0, q1, q2, q3],
         Construction::PeternellPottmann,
-    ))
+    )
 }
 
 /// `X = (W q₀, M q₀ + R q)`: the envelope `x = m + r q/q₀` (2.17) in homogeneous
@@ -439,25 +489,26 @@ pub(crate) fn build_krasauskas_with<F: krasauskas::RealRoots>(
             "the reduced Krasauskas pencil collapses a characteristic circle (det(a, b) has a real root where D ≠ 0)".into(),
         ));
     }
-    let mut x = krasauskas::envelope_of_pencil(spine, &pencil, axis);
-    reduce(&mut x)?;
-    if x.iter().all(BiPoly::is_zero) {
-        return Err(CanalError::DegenerateSpine(
-            "the Krasauskas pencil gives the zero point".into(),
-        ));
-    }
-    Ok(CanalSurface::from_parts(
+    let [q0, xr, xi, xd] = pencil.sphere_image();
+    let [q1, q2, q3] = axis.place(xr, xi, xd);
+    let s = CanalSurface::from_normals(
         spine,
         numerators,
         g,
         axis,
-        x,
+        [q0, q1, q2, q3],
         Construction::Krasauskas {
             initial_degree: pencil.initial_degree,
             reduced_degree: pencil.degree(),
             steps: pencil.steps,
         },
-    ))
+    )?;
+    if s.x.iter().all(BiPoly::is_zero) {
+        return Err(CanalError::DegenerateSpine(
+            "the Krasauskas pencil gives the zero point".into(),
+        ));
+    }
+    Ok(s)
 }
 
 /// [`build_best`] over an exact field (`Q` or `Q(√d)`), also trying Krasauskas' reduced
@@ -969,6 +1020,7 @@ impl<F: Scalar> CanalSurface<F> {
             reparametrized: self.reparametrized.clone(),
             domain: self.domain.clone(),
             construction: self.construction,
+            normals: BuiltNormals(None),
         }
     }
 
@@ -1000,14 +1052,68 @@ impl<F: Scalar> CanalSurface<F> {
             reparametrized: self.reparametrized.clone(),
             domain: self.domain.clone(),
             construction: self.construction,
+            normals: BuiltNormals(None),
         })
+    }
+
+    /// The surface the same construction gives in the opposite frame `(j, −σ)` of this
+    /// surface's frame `(j, σ)`, derived from the normal it was built from, for a family
+    /// with `ṙ ≡ 0` (a pipe: `P₄ ≡ 0`); `None` when this surface does not carry its normal
+    /// or `P₄ ≢ 0`.
+    ///
+    /// With `P₄ ≡ 0` the pole polynomial of the opposite frame is `α' = P₄ − σPⱼ = −α` and
+    /// `P_a`, `P_b` (hence `β`) are the same. Peternell–Pottmann ((2.13)–(2.17), [`build`]):
+    /// `k₀ ↦ −k₀`, `k₁`, `k₂` unchanged, so `q₀` and `q_j` are unchanged and `q_a`, `q_b`
+    /// change sign; placed with the sign `−σ` on axis `j`, the normal is `(q₀, −q)`.
+    /// Krasauskas ([`super::krasauskas`]): the first pencil of `−α` is `Δ(a, b)` with
+    /// `Δ = diag(1, −1)`, and every step of the reduction is `Δ`-equivariant (the leading
+    /// coefficients, the monic `gcd`s and contents, `det(Δa, Δb) = −det(a, b)` has the same
+    /// monic factors, the linear system of step 3 has the rows of its second entry negated
+    /// together with their right-hand sides, so the same reduced echelon form and the same
+    /// `ρ`; the balancing uses `|a|²` and `Re⟨a, b⟩` only), so the reduced pencil is `Δ`
+    /// of this one; `f_s(U₀, −U₁)` negates the middle two components of (2.29), which,
+    /// placed with `−σ`, again gives `(q₀, −q)`. Either way the surface of the opposite frame
+    /// is the envelope of `(q₀, −q)` with its common factors removed, the construction
+    /// record unchanged.
+    ///
+    /// # Errors
+    /// As the removal of common factors ([`envelope_from_normals`]).
+    pub(crate) fn mirrored(&self) -> Option<Result<Self, CanalError>> {
+        let normals = self.normals.0.as_ref()?;
+        if !self.numerators[3].is_zero() {
+            return None;
+        }
+        let [q0, q1, q2, q3] = &**normals;
+        let axis = AxisChoice {
+            axis: self.axis.axis,
+            positive: !self.axis.positive,
+        };
+        Some(
+            CanalSurface::from_normals(
+                &self.spine,
+                &self.numerators,
+                &self.split,
+                axis,
+                [q0.clone(), q1.neg(), q2.neg(), q3.neg()],
+                self.construction,
+            )
+            .map(|mut s| {
+                s.reparametrized = self.reparametrized.clone();
+                s.domain = self.domain.clone();
+                s
+            }),
+        )
     }
 
     /// The same family and split with the homogeneous coordinates `x` instead: a
     /// reparametrization of this surface (the seam of a closed pipe,
     /// [`super::seam`]); [`Certified::certify`] decides the canal identities for `x`.
     pub(crate) fn with_homogeneous(&self, x: [BiPoly<F>; 4]) -> Self {
-        CanalSurface { x, ..self.clone() }
+        CanalSurface {
+            x,
+            normals: BuiltNormals(None),
+            ..self.clone()
+        }
     }
 
     /// The parameter domain `[a, b]` requested at construction (`None`: all of `R`).

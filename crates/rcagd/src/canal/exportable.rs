@@ -437,58 +437,45 @@ fn candidates_on(
     };
     let mut frames: Vec<Frame> = AxisChoice::all().into_iter().map(Frame::Axis).collect();
     frames.extend(tilted.into_iter().map(Frame::Direction));
-    let mid = (a.clone() + b.clone()) / Rational::from(2);
+    let search = Search {
+        spine,
+        split,
+        options,
+        methods: &methods,
+        global,
+        domain: (a, b),
+        mid: (a.clone() + b.clone()) / Rational::from(2),
+        memo,
+    };
     type Built = ((usize, usize), usize, CanalSurface<Rational>, Frame);
     let mut built_ok: Vec<Built> = Vec::new();
     let mut order = 0usize;
+    // the candidates of the last `+` coordinate frame: for a pipe those of the `−` frame of
+    // the same axis follow from them (`CanalSurface::mirrored`)
+    let mut last_plus: Option<(usize, Candidates)> = None;
     for frame in frames {
-        let (fam, h) = match &frame {
-            Frame::Axis(_) => (spine.clone(), None),
-            Frame::Direction(e) => {
-                let h = householder(e);
-                (transform_spine(spine, &h), Some(h))
+        let mirror = match (&frame, last_plus.take()) {
+            (Frame::Axis(ax), Some((j, list))) if !ax.positive && ax.axis == j => {
+                mirrored_candidates(&list)
             }
+            _ => None,
         };
-        let axis = match &frame {
-            Frame::Axis(ax) => *ax,
-            Frame::Direction(_) => AxisChoice {
-                axis: 2,
-                positive: true,
-            },
-        };
-        let mut built: Vec<Result<CanalSurface<Rational>, CanalError>> = Vec::new();
-        let fo = oriented(&fam, options.orientation);
-        for &method in &methods {
-            let opts = CanalOptions {
-                orientation: options.orientation,
-                choice: options.choice,
-                axis: Some(axis),
-                domain: Some((a.clone(), b.clone())),
-                method,
-            };
-            let general = match canal_surface_memo(&fam, &opts, memo) {
-                Ok(CanalBuild::Rational(s)) => Some(Ok(s)),
-                Ok(CanalBuild::Extension { radicand, .. }) => {
-                    res.radicand.get_or_insert(radicand);
-                    None
+        let built = match mirror {
+            Some(built) => built,
+            None => {
+                let built = search.frame_candidates(&frame, &mut res);
+                if let (Frame::Axis(ax), true) = (&frame, memo.derives()) {
+                    if ax.positive {
+                        last_plus = Some((ax.axis, built.clone()));
+                    }
                 }
-                Err(e) => Some(Err(e)),
-            };
-            // the caller's split, unless the general builder used it already
-            let same = |s: &CanalSurface<Rational>| {
-                split.is_some_and(|g| {
-                    let (g1, g2) = s.split();
-                    let sq = |p: &Poly<Rational>| p * p;
-                    (sq(g1) == sq(&g[0]) && sq(g2) == sq(&g[1]))
-                        || (sq(g1) == sq(&g[1]) && sq(g2) == sq(&g[0]))
-                })
-            };
-            let used = matches!(&general, Some(Ok(s)) if same(s));
-            built.extend(general);
-            if let (Some(g), true, false) = (split, global, used) {
-                built.push(with_split(&fo, g, axis, method, &mid, memo).map(|s| s.on_domain(a, b)));
+                built
             }
-        }
+        };
+        let h = match &frame {
+            Frame::Axis(_) => None,
+            Frame::Direction(e) => Some(householder(e)),
+        };
         for s in built {
             let s = match s {
                 Ok(s) => s,
@@ -541,6 +528,94 @@ fn candidates_on(
         }
     }
     Ok(res)
+}
+
+/// The candidates of one frame: the built surfaces and the failed builds, in order.
+type Candidates = Vec<Result<CanalSurface<Rational>, CanalError>>;
+
+/// The data of the candidate search on one interval.
+struct Search<'a> {
+    spine: &'a CanalSpine<Rational>,
+    split: Option<&'a [Poly<Rational>; 2]>,
+    options: &'a CanalOptions,
+    methods: &'a [Method],
+    /// Whether the family has a real envelope on all of `R` (the caller's split is tried).
+    global: bool,
+    domain: (&'a Rational, &'a Rational),
+    /// The middle of the domain (where the Krasauskas pencil is balanced).
+    mid: Rational,
+    memo: &'a FactorMemo,
+}
+
+impl Search<'_> {
+    /// The candidates of one frame, in the frame's coordinates (a tilted frame's are mapped
+    /// back by the caller): per method the general builder's and the caller's split's.
+    fn frame_candidates(&self, frame: &Frame, res: &mut IntervalResult) -> Candidates {
+        let (a, b) = self.domain;
+        let fam = match frame {
+            Frame::Axis(_) => self.spine.clone(),
+            Frame::Direction(e) => transform_spine(self.spine, &householder(e)),
+        };
+        let axis = match frame {
+            Frame::Axis(ax) => *ax,
+            Frame::Direction(_) => AxisChoice {
+                axis: 2,
+                positive: true,
+            },
+        };
+        let mut built: Candidates = Vec::new();
+        let fo = oriented(&fam, self.options.orientation);
+        for &method in self.methods {
+            let opts = CanalOptions {
+                orientation: self.options.orientation,
+                choice: self.options.choice,
+                axis: Some(axis),
+                domain: Some((a.clone(), b.clone())),
+                method,
+            };
+            let general = match canal_surface_memo(&fam, &opts, self.memo) {
+                Ok(CanalBuild::Rational(s)) => Some(Ok(s)),
+                Ok(CanalBuild::Extension { radicand, .. }) => {
+                    res.radicand.get_or_insert(radicand);
+                    None
+                }
+                Err(e) => Some(Err(e)),
+            };
+            // the caller's split, unless the general builder used it already
+            let same = |s: &CanalSurface<Rational>| {
+                self.split.is_some_and(|g| {
+                    let (g1, g2) = s.split();
+                    let sq = |p: &Poly<Rational>| p * p;
+                    (sq(g1) == sq(&g[0]) && sq(g2) == sq(&g[1]))
+                        || (sq(g1) == sq(&g[1]) && sq(g2) == sq(&g[0]))
+                })
+            };
+            let used = matches!(&general, Some(Ok(s)) if same(s));
+            built.extend(general);
+            if let (Some(g), true, false) = (self.split, self.global, used) {
+                built.push(
+                    with_split(&fo, g, axis, method, &self.mid, self.memo)
+                        .map(|s| s.on_domain(a, b)),
+                );
+            }
+        }
+        built
+    }
+}
+
+/// The candidates of the frame `(j, −σ)` from those of `(j, σ)` (same methods and splits,
+/// in the same order), for a pipe ([`CanalSurface::mirrored`]: the construction in the
+/// opposite frame gives the envelope of the opposite normal); `None` if one of them cannot
+/// be derived. A construction that failed in `(j, σ)` fails in `(j, −σ)` too (every step
+/// is the same up to the signs of `mirrored`), and an extension field it needed is needed
+/// there too (already recorded).
+fn mirrored_candidates(list: &[Result<CanalSurface<Rational>, CanalError>]) -> Option<Candidates> {
+    list.iter()
+        .map(|s| match s {
+            Ok(s) => s.mirrored(),
+            Err(e) => Some(Err(e.clone())),
+        })
+        .collect()
 }
 
 /// The surface of the oriented family `fo` from a known split, in the frame `axis`.
@@ -1137,6 +1212,125 @@ mod tests {
             });
             let radius = Poly::constant(Rational::from_ratio(r, 40));
             memo_agrees(&CanalSpine::polynomial(m, radius), None);
+        }
+    }
+
+    /// Every candidate of the frame `(j, −)` built (general splits and the caller's split,
+    /// both methods, on `[0, 1]` and `[0, 1/2]`) against [`CanalSurface::mirrored`] of the
+    /// candidate of `(j, +)`: the same surface (compared with its `Debug` text too), or
+    /// both fail. Returns the number of surfaces compared.
+    fn mirror_agrees(s: &CanalSpine<Rational>, split: Option<&[Poly<Rational>; 2]>) -> usize {
+        let memo = FactorMemo::default();
+        let mut compared = 0;
+        for (a, b) in [(q(0), q(1)), (q(0), Rational::from_ratio(1, 2))] {
+            let mid = (a.clone() + b.clone()) / q(2);
+            for j in 0..3 {
+                let plus = AxisChoice {
+                    axis: j,
+                    positive: true,
+                };
+                let minus = AxisChoice {
+                    axis: j,
+                    positive: false,
+                };
+                for method in [Method::Krasauskas, Method::PeternellPottmann] {
+                    let general = |axis| {
+                        let opts = CanalOptions {
+                            axis: Some(axis),
+                            domain: Some((a.clone(), b.clone())),
+                            method,
+                            ..CanalOptions::default()
+                        };
+                        match canal_surface_memo(s, &opts, &memo) {
+                            Ok(CanalBuild::Rational(x)) => Some(Ok(x)),
+                            Ok(CanalBuild::Extension { .. }) => None,
+                            Err(e) => Some(Err(e)),
+                        }
+                    };
+                    let mut pairs = vec![(general(plus), general(minus))];
+                    if let Some(g) = split {
+                        let given = |axis| Some(with_split(s, g, axis, method, &mid, &memo));
+                        pairs.push((given(plus), given(minus)));
+                    }
+                    for pair in pairs {
+                        match pair {
+                            (Some(Ok(p)), Some(Ok(m))) => {
+                                let derived = p.mirrored().expect("a pipe").expect("mirrored");
+                                assert_eq!(derived, m, "{j} {method:?}");
+                                assert_eq!(format!("{derived:?}"), format!("{m:?}"));
+                                assert_eq!(derived.axis(), minus);
+                                compared += 1;
+                            }
+                            (Some(Err(_)), Some(Err(_))) | (None, None) => {}
+                            (p, m) => panic!("{j} {method:?}: {p:?} against {m:?}"),
+                        }
+                    }
+                }
+            }
+        }
+        compared
+    }
+
+    #[test]
+    fn mirrored_frame_is_the_built_frame_on_the_seed_pipes() {
+        for a in [
+            [[1, 0, 0, 0], [0, 1, 0, 1], [1, 0, 1, 0]],
+            [[1, 0, 0, 0], [1, 1, 0, 1], [0, 0, 1, 1]],
+        ] {
+            let c = ph_of_preimage(&a).expect("ph");
+            let s = CanalSpine::polynomial(
+                c.position().clone(),
+                Poly::constant(Rational::from_ratio(1, 10)),
+            );
+            let split = known_pipe_split(&s).expect("split");
+            assert!(split.is_some());
+            assert!(mirror_agrees(&s, split.as_ref()) >= 12);
+            assert!(mirror_agrees(&s, None) >= 12);
+        }
+    }
+
+    #[test]
+    fn mirrored_needs_a_constant_radius() {
+        // the cone r = 3t/5 around the x axis (D = 1 − 9/25 = (4/5)²): P₄ ≢ 0, no
+        // mirrored candidate
+        let m = [Poly::from_ints(&[0, 1]), Poly::zero(), Poly::zero()];
+        let s = CanalSpine::polynomial(m, Poly::new(vec![q(0), Rational::from_ratio(3, 5)]));
+        let opts = CanalOptions {
+            axis: Some(AxisChoice::all()[0]),
+            domain: Some((q(1), q(2))),
+            method: Method::PeternellPottmann,
+            ..CanalOptions::default()
+        };
+        let built = canal_surface_memo(&s, &opts, &FactorMemo::default());
+        let Ok(CanalBuild::Rational(x)) = built else {
+            panic!("the cone builds over Q: {built:?}");
+        };
+        assert!(x.mirrored().is_none());
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(12))]
+
+        /// Pipes around random PH quintics (with and without their split `(σ, 0)`) and
+        /// random cubics: the candidates of the frames `(j, −)` are the mirrored ones of
+        /// `(j, +)`.
+        #[test]
+        fn mirrored_frame_is_the_built_frame_on_random_spines(
+            a in proptest::collection::vec(proptest::array::uniform4(-3i64..4), 3),
+            cubic in proptest::collection::vec(-4i64..5, 12),
+            r in 1i64..20,
+        ) {
+            let radius = Poly::constant(Rational::from_ratio(r, 40));
+            if let Some(c) = ph_of_preimage(&a) {
+                let s = CanalSpine::polynomial(c.position().clone(), radius.clone());
+                if let Ok(split) = known_pipe_split(&s) {
+                    mirror_agrees(&s, split.as_ref());
+                }
+                mirror_agrees(&s, None);
+            }
+            let m: [Poly<Rational>; 3] =
+                core::array::from_fn(|k| Poly::from_ints(&cubic[4 * k..4 * k + 4]));
+            mirror_agrees(&CanalSpine::polynomial(m, radius), None);
         }
     }
 

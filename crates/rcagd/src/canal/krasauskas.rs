@@ -597,17 +597,6 @@ pub(crate) fn reduced_pencil<F: Scalar>(
     Ok(pencil)
 }
 
-/// The homogeneous envelope `X = (W x₀, M x₀ + R (x₁, x₂, x₃))` of a pencil for an axis
-/// choice: the unit normal `q = (x_a, x_b, σ x_j)/x₀` in the frame `(a, b, j)`.
-pub(crate) fn envelope_of_pencil<F: Scalar>(
-    spine: &CanalSpine<F>,
-    pencil: &Pencil<F>,
-    axis: super::AxisChoice,
-) -> [BiPoly<F>; 4] {
-    let [x0, xr, xi, xd] = pencil.sphere_image();
-    super::envelope::envelope_from_normals(spine, &x0, &axis.place(xr, xi, xd))
-}
-
 /// Irreducible factors over `Q(i)` of a Gaussian polynomial `l` (through the norm `l l̄`),
 /// those that divide `l`; empty if the factorization gives up. (The builders use the memoized
 /// [`FactorMemo::gaussian_factors`]; this is its reference in the tests.)
@@ -706,6 +695,13 @@ impl FactorMemo {
             off: true,
             ..FactorMemo::default()
         }
+    }
+
+    /// Whether the search may derive a candidate from another one instead of building it
+    /// (the mirrored frames of a pipe, [`super::envelope::CanalSurface::mirrored`]); the
+    /// memo without memory (the tests' reference) builds every candidate.
+    pub(crate) fn derives(&self) -> bool {
+        !self.off
     }
 
     fn get<K: PartialEq, V: Clone>(&self, table: &Table<K, V>, key: &K) -> Option<V> {
