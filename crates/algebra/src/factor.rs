@@ -25,7 +25,7 @@
 
 use crate::complex::{norm_sq_poly, Complex};
 use crate::roots::square_free_decomposition;
-use crate::{Poly, Rational};
+use crate::{Poly, Rational, Scalar};
 use num_traits::One;
 
 /// The largest number of modular factors the recombination accepts (`2^(r−1)` subsets).
@@ -254,6 +254,95 @@ fn mp_gcd(a: &Mp, b: &Mp, p: u64) -> Mp {
         y = r;
     }
     mp_monic(&x, p)
+}
+
+// ----------------------------------------------------------------------------------------
+// coprimality proved modulo a prime
+// ----------------------------------------------------------------------------------------
+
+/// The prime of the coprimality tests: `p = 998244353 = 119·2²³ + 1 ≡ 1 (mod 4)`, so `−1`
+/// has the square root `ι = 3^((p−1)/4)` mod `p` (`3` is a primitive root).
+const COPRIME_P: u64 = 998_244_353;
+
+/// `x mod p` for a rational whose denominator is prime to `p` (`None` otherwise).
+fn rational_mod(x: &Rational, p: u64) -> Option<u64> {
+    let d: u64 = x.denominator() % p;
+    if d == 0 {
+        return None;
+    }
+    let pi = i64::try_from(p).ok()?;
+    let n: i64 = x.numerator() % pi;
+    let n = u64::try_from(n.rem_euclid(pi)).ok()?;
+    Some(n * inv_mod(d, p) % p)
+}
+
+/// The image mod `p` of a polynomial with coefficients `cs` (each mapped by `f`), or `None`
+/// if a denominator is divisible by `p`.
+fn poly_mod<T>(cs: &[T], f: impl Fn(&T) -> Option<u64>) -> Option<Mp> {
+    cs.iter().map(f).collect::<Option<Vec<u64>>>().map(trim)
+}
+
+/// Whether the images mod `p` prove `gcd(a, b) = 1`: `a` keeps its degree (`p ∤ lc a`)
+/// and the images are coprime over `F_p`.
+fn images_coprime(a: &Mp, deg_a: usize, b: &Mp, p: u64) -> bool {
+    a.len() == deg_a + 1 && mp_gcd(a, b, p).len() == 1
+}
+
+/// `x mod p` for a scalar with a rational value whose denominator is prime to `p`.
+fn scalar_mod<F: Scalar>(x: &F, p: u64) -> Option<u64> {
+    if x.is_zero() {
+        return Some(0);
+    }
+    rational_mod(&x.to_rational()?, p)
+}
+
+/// `true` only if the polynomials `a, b` with rational coefficients are coprime (`false`:
+/// not decided here — they may or may not be; also for coefficients that are not rational),
+/// proved modulo the prime `p = 998244353`. Let `R = Z_(p)` (the rationals with
+/// denominators prime to `p`, a principal ideal domain) and `φ: R[t] → F_p[t]` the
+/// reduction. If every coefficient of `a` and `b` lies in `R` and `p ∤ lc(a)`, a common
+/// factor `g` of degree `≥ 1` can be taken primitive in `R[t]`, then `a = g·h`, `b = g·k`
+/// with `h, k ∈ R[t]` (Gauss' lemma), so `φ(g)` divides `φ(a)` and `φ(b)`, and
+/// `deg φ(g) = deg g ≥ 1` because `φ(lc g)·φ(lc h) = φ(lc a) ≠ 0`. Hence
+/// `gcd(φ(a), φ(b)) = 1` proves `gcd(a, b) = 1` over `Q` (and over every extension field:
+/// the `gcd` does not depend on the field). The argument of the modular `gcd` algorithms,
+/// J. von zur Gathen, J. Gerhard, "Modern Computer Algebra", 3rd ed., 2013, chapter 6.
+pub fn coprime_mod_p<F: Scalar>(a: &Poly<F>, b: &Poly<F>) -> bool {
+    let (Some(da), Some(_)) = (a.degree(), b.degree()) else {
+        return false;
+    };
+    let p = COPRIME_P;
+    let (Some(ma), Some(mb)) = (
+        poly_mod(a.coeffs(), |c| scalar_mod(c, p)),
+        poly_mod(b.coeffs(), |c| scalar_mod(c, p)),
+    ) else {
+        return false;
+    };
+    images_coprime(&ma, da, &mb, p)
+}
+
+/// The images mod `p` (`i ↦ ι`) of a polynomial over `F(i)` with rational coefficients.
+fn gaussian_mod<F: Scalar>(a: &Poly<Complex<F>>, p: u64, iota: u64) -> Option<Mp> {
+    poly_mod(a.coeffs(), |c| {
+        Some((scalar_mod(&c.re, p)? + iota * scalar_mod(&c.im, p)? % p) % p)
+    })
+}
+
+/// [`coprime_mod_p`] over `Q(i)`: `true` only if `a, b` with coefficients in `Q(i)` are
+/// coprime. The same proof with `R = Z_(p)[i]` (a localization of the principal ideal
+/// domain `Z[i]`) and `φ: R[t] → F_p[t]`, `x + iy ↦ x + ιy` with `ι = 3^((p−1)/4)`,
+/// `ι² ≡ −1 (mod p)` (a ring homomorphism: the reduction modulo one of the two Gaussian
+/// primes over `p ≡ 1 mod 4`).
+pub fn gaussian_coprime_mod_p<F: Scalar>(a: &Poly<Complex<F>>, b: &Poly<Complex<F>>) -> bool {
+    let (Some(da), Some(_)) = (a.degree(), b.degree()) else {
+        return false;
+    };
+    let p = COPRIME_P;
+    let iota = pow_mod(3, (p - 1) / 4, p);
+    let (Some(ma), Some(mb)) = (gaussian_mod(a, p, iota), gaussian_mod(b, p, iota)) else {
+        return false;
+    };
+    images_coprime(&ma, da, &mb, p)
 }
 
 /// `(g, s, t)` with `s a + t b = g = gcd(a, b)` (monic).
@@ -811,7 +900,95 @@ pub fn factor_gaussian_irreducible(f: &Poly<Rational>) -> Result<Vec<GaussPoly>,
         }
         return Ok(vec![to_gauss(&m)]);
     }
+    if let Some(v) = stays_irreducible(f, n) {
+        return Ok(v);
+    }
     trager(f)
+}
+
+/// The primes `p ≡ 3 (mod 4)` of [`stays_irreducible`] (inert in `Z[i]`).
+const INERT_PRIMES: [u64; 12] = [3, 7, 11, 19, 23, 31, 43, 47, 59, 67, 71, 79];
+
+/// `a^e mod m` over `F_p` (`m` non-constant).
+fn mp_powmod(a: &Mp, mut e: u64, m: &Mp, p: u64) -> Mp {
+    let mut base = mp_divrem(a, m, p).1;
+    let mut acc: Mp = vec![1];
+    while e > 0 {
+        if e & 1 == 1 {
+            acc = mp_divrem(&mp_mul(&acc, &base, p), m, p).1;
+        }
+        base = mp_divrem(&mp_mul(&base, &base, p), m, p).1;
+        e >>= 1;
+    }
+    acc
+}
+
+/// Whether the monic square-free `f ∈ F_p[t]` has an irreducible factor of odd degree
+/// (distinct-degree factorization: `gcd(f, t^(p^d) − t)` is the product of the
+/// irreducible factors whose degree divides `d`).
+fn has_odd_degree_factor(f: &Mp, p: u64) -> bool {
+    let t: Mp = vec![0, 1];
+    let mut rest = f.clone();
+    let mut h = t.clone();
+    let mut d = 1;
+    while rest.len() > 2 * d {
+        h = mp_powmod(&h, p, &rest, p);
+        let g = mp_gcd(&rest, &mp_sub(&h, &t, p), p);
+        if g.len() > 1 {
+            if d % 2 == 1 {
+                return true;
+            }
+            rest = mp_divrem(&rest, &g, p).0;
+            h = mp_divrem(&h, &rest, p).1;
+        }
+        d += 1;
+    }
+    // what is left is irreducible (or 1)
+    rest.len() > 1 && (rest.len() - 1) % 2 == 1
+}
+
+/// [`trager`]'s answer `[f]` (monic) for a `Q`-irreducible `f` of even degree
+/// `4 ≤ n ≤ 8` that stays irreducible over `Q(i)`, found without factoring the norm, when
+/// that is proved and Trager's method would give the same answer; `None` otherwise.
+///
+/// * **Irreducible over `Q(i)`.** Over the quadratic extension a `Q`-irreducible `f` is
+///   irreducible or `f = c·h·h̄` with `h` irreducible. Take a prime `p ≡ 3 (mod 4)` that
+///   divides no denominator nor `lc f`, with `f mod p` square-free. The monic `h` has
+///   coefficients in `Z_(p)[i]` (they are integral over `Z_(p)`: symmetric functions of
+///   roots of the monic `f/lc f`), and `Z_(p)[i]/(p) = F_{p²}` with conjugation acting as
+///   the Frobenius `σ` (`p` is inert), so `f ≡ lc f · h̃·σ(h̃)`. An irreducible factor `g` of
+///   `f mod p` over `F_p` of odd degree stays irreducible over `F_{p²}` and `σ(g) = g`; if
+///   `g | h̃` then `g = σ(g) | σ(h̃)` as well, so `g² | f mod p`, which is square-free: a
+///   contradiction. So an odd-degree factor modulo such a prime proves `f` irreducible over
+///   `Q(i)`.
+/// * **Trager's answer.** Trager's method with the first shift `k = 1` whose norm
+///   `N = f(t − i)·f(t + i)` is square-free: `N` is then irreducible over `Q` (the norm of the
+///   irreducible `f(t − i)`, square-free), its factorization ([`factor_squarefree_int`]) is
+///   `[N]` unless it fails — it cannot when a prime of its list is good for `N`
+///   ([`has_good_prime`]) and `deg N = 2n ≤` [`MAX_MODULAR_FACTORS`] — and
+///   `gcd(f(t − i), N)` shifted back is `f`, monic. `N` square-free is proved by
+///   [`coprime_mod_p`] of `N` and `N′`.
+fn stays_irreducible(f: &Poly<Rational>, n: usize) -> Option<Vec<GaussPoly>> {
+    if n % 2 == 1 || !(4..=MAX_MODULAR_FACTORS / 2).contains(&n) {
+        return None;
+    }
+    let odd = INERT_PRIMES.iter().any(|&p| {
+        let Some(fp) = poly_mod(f.coeffs(), |c| rational_mod(c, p)) else {
+            return false;
+        };
+        fp.len() == n + 1
+            && mp_gcd(&fp, &mp_derivative(&fp, p), p).len() == 1
+            && has_odd_degree_factor(&mp_monic(&fp, p), p)
+    });
+    if !odd {
+        return None;
+    }
+    let g = shift_gauss(&to_gauss(f), &Complex::new(Rational::ZERO, int(-1)));
+    let norm = norm_sq_poly(&g);
+    if !coprime_mod_p(&norm, &norm.derivative()) || !has_good_prime(&norm) {
+        return None;
+    }
+    Some(vec![to_gauss(&f.monic())])
 }
 
 /// Trager's norm method over `Q(i)` for a square-free `f ∈ Q[t]` (module docs).
@@ -973,6 +1150,114 @@ mod tests {
             p(&[-3, 1]),
             p(&[1, 0, -10, 0, 1]),
         ]));
+    }
+
+    #[test]
+    fn stays_irreducible_is_tragers_answer() {
+        // t⁴ − 2 (irreducible over Q(i)): proved, Trager's answer; t⁴ + 1 = (t² − i)(t² + i)
+        // and (t² + 1)² + 1 = (t² + 1 − i)(t² + 1 + i): never claimed
+        let f = p(&[-2, 0, 0, 0, 1]);
+        let fast = stays_irreducible(&f, 4).expect("an odd factor mod an inert prime");
+        assert_eq!(Ok(fast), trager(&f));
+        for g in [p(&[1, 0, 0, 0, 1]), p(&[2, 0, 2, 0, 1])] {
+            assert_eq!(stays_irreducible(&g, 4), None);
+            assert_eq!(trager(&g).map(|v| v.len()), Ok(2));
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(32))]
+
+        /// Random quartics, sextics and octics: for every irreducible factor over `Q` of even
+        /// degree ≥ 4 (also of `f(t)·f(t)`-like norms, which split over `Q(i)`) the shortcut
+        /// answers only with Trager's answer.
+        #[test]
+        fn stays_irreducible_agrees_with_trager(
+            c in proptest::collection::vec(-6i64..7, 5..10),
+            d in proptest::collection::vec(-3i64..4, 3),
+        ) {
+            let f = Poly::from_ints(&c);
+            let h = to_gauss(&Poly::from_ints(&d));
+            let i = Complex::new(Rational::ZERO, Rational::ONE);
+            // a polynomial that splits over Q(i): |h + i·t²|² (degree 4 when deg h ≤ 2)
+            let z = Complex::new(Rational::ZERO, Rational::ZERO);
+            let w = &h + &Poly::new(vec![z.clone(), z, i]);
+            for poly in [f, norm_sq_poly(&w)] {
+                if poly.degree().is_none_or(|n| n < 4) {
+                    continue;
+                }
+                let Ok((_, fs)) = factor_rational(&poly) else { continue };
+                for (g, _) in fs {
+                    let n = g.degree().unwrap_or(0);
+                    if let Some(v) = stays_irreducible(&g, n) {
+                        proptest::prop_assert_eq!(Ok(v), trager(&g));
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn coprime_mod_p_decides_only_coprime_pairs() {
+        let (a, b) = (p(&[1, 0, 1]), p(&[-2, 0, 1]));
+        assert!(coprime_mod_p(&a, &b));
+        let h = p(&[3, 1]);
+        assert!(!coprime_mod_p(&(&a * &h), &(&b * &h)));
+        // t² + 1 and t − i share the factor t − i over Q(i), not over Q
+        let i = Complex::new(Rational::ZERO, Rational::ONE);
+        let ga = to_gauss(&a);
+        let gl = Poly::new(vec![-i.clone(), Complex::one()]);
+        assert!(!gaussian_coprime_mod_p(&ga, &gl));
+        assert!(gaussian_coprime_mod_p(&ga, &to_gauss(&b)));
+        assert!(gaussian_coprime_mod_p(
+            &gl,
+            &Poly::new(vec![i, Complex::one()])
+        ));
+        // a denominator or a leading coefficient divisible by p: not decided here
+        let big = Rational::from(COPRIME_P as i64);
+        let den = Poly::new(vec![Rational::ONE / big.clone(), Rational::ONE]);
+        assert!(!coprime_mod_p(&den, &b));
+        let lead = Poly::new(vec![Rational::ONE, big]);
+        assert!(!coprime_mod_p(&lead, &b));
+        assert!(coprime_mod_p(&b, &lead));
+        // zero and constants
+        assert!(!coprime_mod_p(&Poly::zero(), &b));
+        assert!(coprime_mod_p(&Poly::constant(Rational::from(2)), &b));
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+
+        /// Random Gaussian-rational polynomials, with and without a planted common factor:
+        /// whenever the modular test says coprime, Euclid's `gcd` is `1`; a planted factor
+        /// is never missed; over `Q` likewise for the real parts.
+        #[test]
+        fn coprime_mod_p_agrees_with_euclid(
+            a in proptest::collection::vec((-9i64..10, -9i64..10, 1i64..7), 1..6),
+            b in proptest::collection::vec((-9i64..10, -9i64..10, 1i64..7), 1..6),
+            h in proptest::collection::vec((-5i64..6, -5i64..6, 1i64..4), 2..4),
+            plant in proptest::bool::ANY,
+        ) {
+            let cp = |v: &[(i64, i64, i64)]| -> GaussPoly {
+                Poly::new(v.iter().map(|&(x, y, d)| Complex::new(
+                    Rational::from_ratio(x, d), Rational::from_ratio(y, d))).collect())
+            };
+            let (mut pa, mut pb) = (cp(&a), cp(&b));
+            let ph = cp(&h);
+            if plant && ph.degree().is_some_and(|d| d > 0) {
+                pa = &pa * &ph;
+                pb = &pb * &ph;
+            }
+            proptest::prop_assume!(!pa.is_zero() && !pb.is_zero());
+            let one = pa.gcd_euclid(&pb).degree() == Some(0);
+            if gaussian_coprime_mod_p(&pa, &pb) {
+                proptest::prop_assert!(one);
+            }
+            let (ra, rb) = (pa.map(|c| c.re.clone()), pb.map(|c| c.re.clone()));
+            if !ra.is_zero() && !rb.is_zero() && coprime_mod_p(&ra, &rb) {
+                proptest::prop_assert_eq!(ra.gcd_euclid(&rb).degree(), Some(0));
+            }
+        }
     }
 
     proptest::proptest! {

@@ -780,7 +780,96 @@ fn bareiss_det_int(mut m: Vec<Vec<IBig>>) -> IBig {
     }
 }
 
+/// Rows of rationals multiplied each by the lcm of its denominators (the row space and so
+/// the reduced row echelon form are unchanged).
+fn integral_rows<'a>(rows: impl Iterator<Item = &'a [Rational]>) -> Vec<Vec<IBig>> {
+    rows.map(|r| {
+        let l = r.iter().fold(UBig::ONE, |l, q| lcm(&l, q.denominator()));
+        let li = IBig::from(l);
+        r.iter()
+            .map(|q| q.numerator() * &li / IBig::from(q.denominator().clone()))
+            .collect()
+    })
+    .collect()
+}
+
 impl Matrix<Rational> {
+    /// The particular solution of [`Matrix::solve`] (free variables zero), `None` for an
+    /// inconsistent system, by fraction-free elimination on integers: row `i` of `[A | b]`
+    /// is multiplied by the lcm of its denominators, Bareiss' elimination (module
+    /// documentation) brings it to a row echelon form with the pivot columns of
+    /// `rref([A | b])` (a row echelon form of the same row space has the same pivot
+    /// columns), and back substitution over `Q` on the pivot columns gives the unique
+    /// solution with the free variables zero — the particular solution of
+    /// [`Matrix::solve`], which is read off the reduced row echelon form.
+    ///
+    /// # Errors
+    /// [`LinalgError::DimensionMismatch`] unless `b.len() = A.rows`.
+    pub fn particular_solution_integral(
+        &self,
+        b: &[Rational],
+    ) -> Result<Option<Vec<Rational>>, LinalgError> {
+        if b.len() != self.rows {
+            return Err(LinalgError::DimensionMismatch {
+                op: "particular_solution_integral",
+                expected: format!("a right-hand side of length {}", self.rows),
+                found: format!("length {}", b.len()),
+            });
+        }
+        let n = self.cols;
+        let aug: Vec<Vec<Rational>> = self
+            .row_iter()
+            .zip(b)
+            .map(|(r, bi)| {
+                let mut v = r.to_vec();
+                v.push(bi.clone());
+                v
+            })
+            .collect();
+        let mut m = integral_rows(aug.iter().map(Vec::as_slice));
+        // Bareiss to a row echelon form on all n + 1 columns
+        let rows = m.len();
+        let mut prev = IBig::ONE;
+        let mut pivots: Vec<usize> = Vec::new();
+        let mut r = 0;
+        for c in 0..=n {
+            if r >= rows {
+                break;
+            }
+            let Some(p) = (r..rows).find(|&i| m[i][c] != IBig::ZERO) else {
+                continue;
+            };
+            m.swap(p, r);
+            let (top, bottom) = m.split_at_mut(r + 1);
+            let prow = &top[r];
+            let pivot = &prow[c];
+            for row in bottom.iter_mut() {
+                crate::budget::checkpoint();
+                for j in c + 1..=n {
+                    row[j] = (pivot * &row[j] - &row[c] * &prow[j]) / &prev;
+                }
+                row[c] = IBig::ZERO;
+            }
+            prev = prow[c].clone();
+            pivots.push(c);
+            r += 1;
+        }
+        if pivots.last() == Some(&n) {
+            return Ok(None);
+        }
+        // back substitution, free variables zero
+        let mut x = vec![Rational::ZERO; n];
+        for (i, &p) in pivots.iter().enumerate().rev() {
+            let row = &m[i];
+            let mut acc = Rational::from(row[n].clone());
+            for &q in pivots.iter().skip(i + 1) {
+                acc -= Rational::from(row[q].clone()) * &x[q];
+            }
+            x[p] = acc / Rational::from(row[p].clone());
+        }
+        Ok(Some(x))
+    }
+
     /// The determinant with the elimination on integers: row `i` is multiplied by the
     /// lcm `Lᵢ` of its denominators, Bareiss runs on the integer matrix (every division
     /// exact), and `det A = det(diag(L)·A) / ∏ Lᵢ`. Equal to [`Matrix::determinant`];
@@ -1145,5 +1234,65 @@ mod tests {
         let _ = null_space_f64(&big, 1e-12);
         let _ = solve_least_squares_f64(&big, &[1e308, 0.0], 1e-12);
         let _ = solve_f64(&big, &[1e308, 0.0]);
+    }
+
+    #[test]
+    fn integral_particular_solution_examples() {
+        // unique, underdetermined, inconsistent, with fractions and a zero column
+        let a = Matrix::from_rows(vec![
+            vec![q(1, 2), q(1, 3), q(0, 1)],
+            vec![q(1, 4), q(1, 5), q(0, 1)],
+        ])
+        .expect("2×3");
+        let b = [q(1, 1), q(2, 7)];
+        let x = a.particular_solution_integral(&b).expect("shape");
+        assert_eq!(x.as_deref(), a.solve(&b).expect("shape").particular());
+        let x = x.expect("consistent");
+        assert_eq!(x[2], q(0, 1));
+        let s = m(&[&[1, 2], &[2, 4]]);
+        assert_eq!(
+            s.particular_solution_integral(&[q(1, 1), q(3, 1)]),
+            Ok(None)
+        );
+        assert_eq!(
+            s.particular_solution_integral(&[q(1, 1), q(2, 1)]),
+            Ok(Some(vec![q(1, 1), q(0, 1)]))
+        );
+        assert!(s.particular_solution_integral(&[q(1, 1)]).is_err());
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+        /// Random rational systems (1–6 rows, 1–5 columns, often rank-deficient: entries
+        /// from a small range, some rows repeated as multiples): the fraction-free particular
+        /// solution is the one of Gauss–Jordan (`solve`), or both are inconsistent.
+        #[test]
+        fn integral_particular_solution_is_gauss_jordans(
+            rows in 1usize..7,
+            cols in 1usize..6,
+            entries in proptest::collection::vec((-3i64..4, 1i64..5), 42),
+            copy in proptest::option::of((0usize..6, 1usize..6, -2i64..3)),
+        ) {
+            let mut it = entries.iter().cycle();
+            let mut data: Vec<Vec<Rational>> = (0..rows)
+                .map(|_| (0..=cols).map(|_| {
+                    let (n, d) = it.next().copied().unwrap_or((0, 1));
+                    q(n, d)
+                }).collect())
+                .collect();
+            if let Some((from, to, k)) = copy {
+                if from < rows && to < rows {
+                    let r: Vec<Rational> = data[from].iter().map(|x| x * q(k, 1)).collect();
+                    data[to] = r;
+                }
+            }
+            let b: Vec<Rational> = data.iter().map(|r| r[cols].clone()).collect();
+            let a = Matrix::from_rows(data.iter().map(|r| r[..cols].to_vec()).collect())
+                .expect("rectangular");
+            let fast = a.particular_solution_integral(&b).expect("shape");
+            let slow = a.solve(&b).expect("shape");
+            proptest::prop_assert_eq!(fast.as_deref(), slow.particular());
+        }
     }
 }

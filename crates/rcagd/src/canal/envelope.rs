@@ -52,6 +52,7 @@ use super::sum_of_squares::{sum_of_two_squares_approx, SumOfSquares};
 use super::{CanalError, CanalSpine};
 use crate::error::format_scalar;
 use crate::Certified;
+use rcagd_algebra::factor::coprime_mod_p;
 use rcagd_algebra::roots::{isolate_real_roots, square_free_decomposition};
 use rcagd_algebra::{Certificate, Poly, QuadExt, Rational, Scalar};
 use rcagd_geom::certify::polynomial_is_zero_scaled;
@@ -385,6 +386,15 @@ pub(crate) fn envelope_from_normals<F: Scalar>(
 fn common_factor<'a, F: Scalar + 'a>(polys: impl Iterator<Item = &'a Poly<F>>) -> Poly<F> {
     let mut ps: Vec<&Poly<F>> = polys.filter(|p| !p.is_zero()).collect();
     ps.sort_by_key(|p| p.degree());
+    // the usual case, no common factor: two of the lowest degree coprime, proved modulo a
+    // prime (exact scalars)
+    if F::EXACT {
+        if let (Some(p), Some(q)) = (ps.first(), ps.get(1)) {
+            if coprime_mod_p(p, q) {
+                return Poly::constant(F::one());
+            }
+        }
+    }
     let mut acc = Poly::zero();
     for p in ps {
         acc = acc.gcd(p);

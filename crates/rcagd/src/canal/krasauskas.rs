@@ -77,6 +77,7 @@ use super::bipoly::BiPoly;
 use super::{CanalError, CanalSpine};
 use num_traits::{One, Zero};
 use rcagd_algebra::complex::{conj_poly, re_im_polys};
+use rcagd_algebra::factor::gaussian_coprime_mod_p;
 use rcagd_algebra::linalg::{solve, Matrix};
 use rcagd_algebra::roots::isolate_real_roots;
 use rcagd_algebra::sum_of_squares::GaussianSplit;
@@ -129,6 +130,29 @@ impl<F: Scalar> FactorSource<F> for FnFactors<'_, F> {
     fn factors(&self, l: &CPoly<F>) -> Vec<CPoly<F>> {
         (self.0)(l)
     }
+}
+
+/// The particular solution (free variables zero) of the linear system `rows · x = rhs`
+/// ([`rcagd_algebra::Solution::particular`]), `None` if it is inconsistent: for rational
+/// entries by the fraction-free elimination on integers
+/// ([`Matrix::particular_solution_integral`], the same solution), otherwise by
+/// Gauss–Jordan elimination over `F`.
+fn particular_solution<F: Scalar>(rows: Vec<Vec<F>>, rhs: &[F]) -> Option<Vec<F>> {
+    if F::EXACT {
+        let q: Option<Vec<Vec<Rational>>> = rows
+            .iter()
+            .map(|r| r.iter().map(Scalar::to_rational).collect())
+            .collect();
+        let b: Option<Vec<Rational>> = rhs.iter().map(Scalar::to_rational).collect();
+        if let (Some(q), Some(b)) = (q, b) {
+            let m = Matrix::from_rows(q).ok()?;
+            let x = m.particular_solution_integral(&b).ok()??;
+            return Some(x.iter().map(F::from_rational).collect());
+        }
+    }
+    let m = Matrix::from_rows(rows).ok()?;
+    let sol = solve(&m, rhs).ok()?;
+    sol.particular().map(<[F]>::to_vec)
 }
 
 /// A real pencil `a + u b` in `C²` (module docs) and its reduction history.
@@ -209,7 +233,13 @@ impl<F: Scalar> Pencil<F> {
 
     /// Divides all four entries by their common factor (exact scalars).
     fn remove_content(&mut self) {
-        // the gcd stops at a constant (the usual case: no common factor)
+        // the usual case, no common factor: two coprime entries, proved modulo a prime
+        let [a0, a1] = &self.a;
+        let [b0, b1] = &self.b;
+        if gaussian_coprime_mod_p(a0, a1) || gaussian_coprime_mod_p(b0, b1) {
+            return;
+        }
+        // the gcd stops at a constant
         let mut g = CPoly::<F>::zero();
         for p in self.a.iter().chain(self.b.iter()) {
             g = g.gcd(p);
@@ -263,6 +293,9 @@ impl<F: Scalar> Pencil<F> {
 
     /// Step 2: divide `a` by its real content or by a complex factor of it.
     fn divide_a(&mut self) -> bool {
+        if gaussian_coprime_mod_p(&self.a[0], &self.a[1]) {
+            return false;
+        }
         let g = self.a[0].gcd(&self.a[1]);
         if g.degree().is_none_or(|d| d == 0) {
             return false;
@@ -352,16 +385,10 @@ impl<F: Scalar> Pencil<F> {
                 rhs.push(-z.im);
             }
         }
-        let Ok(m) = Matrix::from_rows(rows) else {
+        let Some(rho) = particular_solution(rows, &rhs) else {
             return false;
         };
-        let Ok(sol) = solve(&m, &rhs) else {
-            return false;
-        };
-        let Some(rho) = sol.particular() else {
-            return false;
-        };
-        let rho = Poly::new(rho.iter().map(|x| Complex::from_real(x.clone())).collect());
+        let rho = Poly::new(rho.into_iter().map(Complex::from_real).collect());
         let Some(a) = self.quotient(sigma, Some(&rho)) else {
             return false;
         };
