@@ -346,6 +346,24 @@ pub fn canal_chain_rational(
             source: Box::new(e),
         }
     };
+    for k in 0..chain.len() - 1 {
+        let ((first, (_, end)), (second, (start, _))) = (&chain[k], &chain[k + 1]);
+        if let Some(d) = canal_joint_defect(first, end, second, start) {
+            let text = format!(
+                "joint {k}/{} (the end t = {} of spine piece {k} and the start t = {} of piece {}): {d}",
+                k + 1,
+                format_scalar(end),
+                format_scalar(start),
+                k + 1
+            );
+            return Err(match d {
+                JointDefect::RadiusJump | JointDefect::SlopeJump => {
+                    CanalError::InvalidArgument(text)
+                }
+                _ => CanalError::DegenerateSpine(text),
+            });
+        }
+    }
     let mut pieces = Vec::with_capacity(chain.len());
     let mut regular = Vec::with_capacity(chain.len() + 1);
     for (k, (spine, (a, b))) in chain.iter().enumerate() {
@@ -367,24 +385,6 @@ pub fn canal_chain_rational(
             property: format!("spine piece {k}: {}", local.property),
             ..local
         });
-    }
-    for k in 0..chain.len() - 1 {
-        let ((first, (_, end)), (second, (start, _))) = (&chain[k], &chain[k + 1]);
-        if let Some(d) = canal_joint_defect(first, end, second, start) {
-            let text = format!(
-                "joint {k}/{} (the end t = {} of spine piece {k} and the start t = {} of piece {}): {d}",
-                k + 1,
-                format_scalar(end),
-                format_scalar(start),
-                k + 1
-            );
-            return Err(match d {
-                JointDefect::RadiusJump | JointDefect::SlopeJump => {
-                    CanalError::InvalidArgument(text)
-                }
-                _ => CanalError::DegenerateSpine(text),
-            });
-        }
     }
     let (last, first) = (&chain[chain.len() - 1], &chain[0]);
     let closed = canal_joint_defect(&last.0, &last.1 .1, &first.0, &first.1 .0).is_none();
