@@ -261,6 +261,8 @@ struct Tile {
     q: Option<Iv>,
     g2: Option<Iv>,
     speed2: Option<Iv>,
+    /// `A`, `|A|²`, `E/W`, `c`, `ρ²` in `f64` with outward rounding (the pair tests' filter).
+    f: FTile,
 }
 
 impl Tile {
@@ -288,8 +290,10 @@ impl Tile {
             q: ratio(I_NQ, I_DQ),
             g2: ratio(I_NG, I_DRHO).map(|x| x.pos()),
             speed2: ratio(I_AA, I_W4).map(|x| x.pos()),
+            f: FTile::default(),
             coeffs,
         }
+        .with_f64()
     }
 }
 
@@ -679,6 +683,187 @@ fn lemma_a(tiles: &[Rc<Tile>]) -> bool {
     bend.clone() + q.hi < Rational::ONE || q.lo - bend > Rational::ONE
 }
 
+/// An interval `[lo, hi]` of `f64` that contains the exact one: every operation is rounded
+/// to nearest and its ends moved one step outward (round to nearest is within half a unit in
+/// the last place; N. J. Higham, "Accuracy and Stability of Numerical Algorithms", 2nd ed.,
+/// 2002, §2.2); a `NaN` (from `∞ − ∞` or `0·∞`) widens to `[−∞, ∞]`.
+#[derive(Debug, Clone, Copy)]
+struct FIv {
+    lo: f64,
+    hi: f64,
+}
+
+const FIV_ALL: FIv = FIv {
+    lo: f64::NEG_INFINITY,
+    hi: f64::INFINITY,
+};
+
+/// A rational `≤ x` as `f64`.
+fn f64_below(x: &Rational) -> f64 {
+    let mut f = Scalar::to_f64(x);
+    if f == f64::INFINITY {
+        return f64::MAX;
+    }
+    while Rational::try_from(f).is_ok_and(|q| q > *x) {
+        f = f.next_down();
+    }
+    f
+}
+
+/// A rational `≥ x` as `f64`.
+fn f64_above(x: &Rational) -> f64 {
+    let mut f = Scalar::to_f64(x);
+    if f == f64::NEG_INFINITY {
+        return -f64::MAX;
+    }
+    while Rational::try_from(f).is_ok_and(|q| q < *x) {
+        f = f.next_up();
+    }
+    f
+}
+
+impl FIv {
+    fn of(x: &Iv) -> FIv {
+        FIv {
+            lo: f64_below(&x.lo),
+            hi: f64_above(&x.hi),
+        }
+    }
+
+    fn out(lo: f64, hi: f64) -> FIv {
+        if lo.is_nan() || hi.is_nan() {
+            FIV_ALL
+        } else {
+            FIv {
+                lo: lo.next_down(),
+                hi: hi.next_up(),
+            }
+        }
+    }
+
+    fn add(self, o: FIv) -> FIv {
+        FIv::out(self.lo + o.lo, self.hi + o.hi)
+    }
+
+    fn sub(self, o: FIv) -> FIv {
+        FIv::out(self.lo - o.hi, self.hi - o.lo)
+    }
+
+    fn mul(self, o: FIv) -> FIv {
+        let p = [
+            self.lo * o.lo,
+            self.lo * o.hi,
+            self.hi * o.lo,
+            self.hi * o.hi,
+        ];
+        if p.iter().any(|x| x.is_nan()) {
+            return FIV_ALL;
+        }
+        FIv::out(
+            p.iter().fold(f64::INFINITY, |m, x| m.min(*x)),
+            p.iter().fold(f64::NEG_INFINITY, |m, x| m.max(*x)),
+        )
+    }
+
+    fn sq(self) -> FIv {
+        let (a, b) = (self.lo * self.lo, self.hi * self.hi);
+        if self.lo <= 0.0 && self.hi >= 0.0 {
+            FIv::out(0.0, a.max(b)).pos()
+        } else {
+            FIv::out(a.min(b), a.max(b)).pos()
+        }
+    }
+
+    fn pos(self) -> FIv {
+        FIv {
+            lo: self.lo.max(0.0),
+            hi: self.hi.max(0.0),
+        }
+    }
+}
+
+fn fiv_dot(a: &[FIv; 3], b: &[FIv; 3]) -> FIv {
+    a[0].mul(b[0]).add(a[1].mul(b[1])).add(a[2].mul(b[2]))
+}
+
+fn fiv_cross(a: &[FIv; 3], b: &[FIv; 3]) -> [FIv; 3] {
+    [
+        a[1].mul(b[2]).sub(a[2].mul(b[1])),
+        a[2].mul(b[0]).sub(a[0].mul(b[2])),
+        a[0].mul(b[1]).sub(a[1].mul(b[0])),
+    ]
+}
+
+fn fiv_norm_sq(a: &[FIv; 3]) -> FIv {
+    a[0].sq().add(a[1].sq()).add(a[2].sq())
+}
+
+/// The enclosures of a [`Tile`] that the pair tests use, in `f64` (outward).
+#[derive(Debug, Default)]
+struct FTile {
+    a: Option<[FIv; 3]>,
+    aa: Option<FIv>,
+    e: Option<FIv>,
+    c: Option<[FIv; 3]>,
+    rho2: Option<FIv>,
+}
+
+impl Tile {
+    fn with_f64(mut self) -> Tile {
+        let v3 = |x: &[Iv; 3]| [FIv::of(&x[0]), FIv::of(&x[1]), FIv::of(&x[2])];
+        self.f = FTile {
+            a: Some(v3(&self.a)),
+            aa: Some(FIv::of(&self.aa)),
+            e: self.e.as_ref().map(FIv::of),
+            c: self.c.as_ref().map(v3),
+            rho2: self.rho2.as_ref().map(FIv::of),
+        };
+        self
+    }
+}
+
+/// `√x` rounded up in `f64` (`x ≥ 0`; `sqrt` is correctly rounded).
+fn f64_root_up(x: f64) -> f64 {
+    if x <= 0.0 {
+        0.0
+    } else {
+        x.sqrt().next_up()
+    }
+}
+
+/// [`pair_tests`] in `f64` interval arithmetic with outward rounding: a test that holds here
+/// holds for the exact enclosures as well (they lie inside), so a box settled here is
+/// settled by the same statement; `None` leaves the box to the exact tests.
+fn pair_tests_f64(ti: &Tile, tj: &Tile) -> Option<Settled> {
+    let (fi, fj) = (&ti.f, &tj.f);
+    let (ci, cj) = (fi.c.as_ref()?, fj.c.as_ref()?);
+    let (ri, rj) = (fi.rho2?, fj.rho2?);
+    let (ei, ej) = (fi.e?, fj.e?);
+    let (ai, aj) = (fi.a.as_ref()?, fj.a.as_ref()?);
+    let (aai, aaj) = (fi.aa?, fj.aa?);
+    let diff: [FIv; 3] = core::array::from_fn(|k| ci[k].sub(cj[k]));
+    let reach = (f64_root_up(ri.hi) + f64_root_up(rj.hi)).next_up();
+    if fiv_norm_sq(&diff).lo > (reach * reach).next_up() {
+        return Some(Settled::Far);
+    }
+    let u = fiv_cross(ai, aj);
+    let uu = fiv_norm_sq(&u);
+    let pij2 = fiv_dot(ci, aj).sub(ej).sq();
+    let pji2 = fiv_dot(cj, ai).sub(ei).sq();
+    let down = |x: f64, y: f64| (x * y).next_down();
+    let up = |x: f64, y: f64| (x * y).next_up();
+    if down(pij2.lo, aai.lo) > up(ri.hi, uu.hi) || down(pji2.lo, aaj.lo) > up(rj.hi, uu.hi) {
+        return Some(Settled::Plane);
+    }
+    let ht = ri.mul(uu).sub(pij2.mul(aai)).pos().hi;
+    let hs = rj.mul(uu).sub(pji2.mul(aaj)).pos().hi;
+    let x = ((fiv_dot(&diff, &u).sq().lo - ht).next_down() - hs).next_down();
+    if x > 0.0 && down(x, x) > up(up(4.0, ht), hs) {
+        return Some(Settled::Chords);
+    }
+    None
+}
+
 /// The per-pair tests (far, plane, chords) on `I × J` (module docs).
 fn pair_tests(ti: &Tile, tj: &Tile) -> Option<Settled> {
     let (ci, cj) = (ti.c.as_ref()?, tj.c.as_ref()?);
@@ -936,7 +1121,7 @@ impl Search {
                 self.pieces[x.0].tile(level, x.1),
                 self.pieces[y.0].tile(level, y.1),
             );
-            if let Some(s) = pair_tests(&tx, &ty) {
+            if let Some(s) = pair_tests_f64(&tx, &ty).or_else(|| pair_tests(&tx, &ty)) {
                 return Some(s);
             }
         }
@@ -1849,5 +2034,52 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The `f64` intervals contain the exact rational results of the same operations.
+    #[test]
+    fn f64_intervals_enclose_the_exact_ones() {
+        let ten = |k: usize| (0..k).fold(Rational::ONE, |a, _| a * Rational::from(10));
+        let ivs = [
+            Iv {
+                lo: q(-1, 3),
+                hi: q(2, 7),
+            },
+            Iv {
+                lo: q(1, 10),
+                hi: q(3, 10),
+            },
+            Iv {
+                lo: q(-7, 3),
+                hi: q(-1, 1_000_000_007),
+            },
+            Iv {
+                lo: ten(300) / q(3, 1),
+                hi: ten(301),
+            },
+        ];
+        let inside = |f: FIv, x: &Iv| {
+            let lo_ok =
+                f.lo == f64::NEG_INFINITY || Rational::try_from(f.lo).is_ok_and(|l| l <= x.lo);
+            let hi_ok = f.hi == f64::INFINITY || Rational::try_from(f.hi).is_ok_and(|h| h >= x.hi);
+            lo_ok && hi_ok
+        };
+        for x in &ivs {
+            assert!(inside(FIv::of(x), x));
+            assert!(inside(FIv::of(x).sq(), &x.sq()));
+            for y in &ivs {
+                let (fx, fy) = (FIv::of(x), FIv::of(y));
+                assert!(inside(fx.add(fy), &x.add(y)));
+                assert!(inside(fx.sub(fy), &x.sub(y)));
+                assert!(inside(fx.mul(fy), &x.mul(y)), "{x:?} {y:?}");
+            }
+        }
+        // ∞ − ∞ is no bound: the whole line
+        let big = FIv {
+            lo: f64::INFINITY,
+            hi: f64::INFINITY,
+        };
+        let w = big.sub(big);
+        assert!(w.lo == f64::NEG_INFINITY && w.hi == f64::INFINITY);
     }
 }
