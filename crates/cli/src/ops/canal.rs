@@ -16,7 +16,7 @@ use num_traits::{One, Zero};
 use rcagd::canal::blend::PlaneEnd;
 use rcagd::canal::{
     pipe_along_spine, ApproximationPolicy,
-    blend_sphere_plane, blend_spheres, canal_surface_rational,
+    blend_sphere_plane, blend_spheres, canal_chain_rational, canal_surface_rational,
     pipe_around_ph_exportable, BlendEnd, BlendSpine, CanalBuild, CanalError, CanalOptions, CanalSpine,
     CanalSurface, Method, Orientation, RationalCanal,
 };
@@ -37,6 +37,7 @@ pub const OPS: &[OpSpec] = &[
     COMMON_TRANSVERSALS,
     REGULUS,
     CANAL_SURFACE,
+    CANAL_CHAIN,
     CANAL_NORMAL_FIELD,
     PIPE_PH,
     PIPE,
@@ -493,12 +494,7 @@ const CANAL_SURFACE: OpSpec = OpSpec {
         ParamSpec::optional("weights", ParamKind::Numbers, "spine weights (default all 1)"),
         ParamSpec::required("radius", ParamKind::Numbers, "Bernstein control values of the radius r(t) (any degree)").degree(),
         ORIENTATION,
-        ParamSpec::with_default(
-            "method",
-            ParamKind::Choice(&["lowest", "peternell-pottmann", "krasauskas"]),
-            "\"lowest\"",
-            "the construction: \"lowest\" builds both and keeps the one with fewer control points once split into pieces with positive weights (on a tie the lower bidegree), or exactly the one named (Krasauskas' pencil is built over Q only)",
-        ),
+        METHOD,
         ParamSpec::optional(
             "cyclographic_domain",
             ParamKind::Numbers,
@@ -613,6 +609,150 @@ fn build_canal_surface(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             c.certify(),
         )]),
     }
+}
+
+const METHOD: ParamSpec = ParamSpec::with_default(
+    "method",
+    ParamKind::Choice(&["lowest", "peternell-pottmann", "krasauskas"]),
+    "\"lowest\"",
+    "the construction: \"lowest\" builds both and keeps the one with fewer control points once split into pieces with positive weights (on a tie the lower bidegree), or exactly the one named (Krasauskas' pencil is built over Q only)",
+);
+
+const CANAL_CHAIN: OpSpec = OpSpec {
+    name: "canal_chain",
+    summary: "the rational canal surface along a chain of spine pieces, each a rational Bézier curve with its own polynomial radius on t ∈ [0, 1], joined end to start with the same sphere, tangent direction and r·dr/dσ (checked exactly; a corner or a jump is refused naming the joint), exact over Q piece by piece; per piece no local self-intersection, and that no two characteristic discs anywhere on the chain meet (across the joints and, when the last end joins the first start so, through the seam) are certified exactly",
+    params: &[
+        ParamSpec::required("pieces", ParamKind::Net, "one row per spine piece: its control points [x, y, z] (every piece of one degree; the last point of a row is the first of the next)").degree(),
+        ParamSpec::optional("weights", ParamKind::Grid, "one row of spine weights per piece (default all 1)"),
+        ParamSpec::required("radius", ParamKind::Grid, "one row per piece: the Bernstein control values of its radius r(t) (every row of one length)").degree(),
+        ORIENTATION,
+        METHOD,
+    ],
+    example: r#"[[object]]
+name = "canal_chain_cubic"
+op = "canal_chain"
+pieces = [[["403/600", 4, "1/4"], ["-1193/1800", "20/9", "7/36"], ["-877/1080", "28/27", "5/36"], ["-9173/16200", "4/9", "1/12"]], [["-9173/16200", "4/9", "1/12"], ["-5191/16200", "-4/27", "1/36"], ["5191/16200", "-4/27", "-1/36"], ["9173/16200", "4/9", "-1/12"]], [["9173/16200", "4/9", "-1/12"], ["877/1080", "28/27", "-5/36"], ["1193/1800", "20/9", "-7/36"], ["-403/600", 4, "-1/4"]]]
+radius = [["7/20", "1/4"], ["1/4", "3/20"], ["3/20", "1/20"]]
+"#,
+    build: build_canal_chain,
+};
+
+/// The canal family of one piece of `canal_chain`: the spine of control points `pts` with
+/// `weights` and the polynomial radius of Bernstein values `radius`.
+fn chain_piece(
+    k: usize,
+    pts: &[Vec<Rational>],
+    weights: Option<&Vec<Rational>>,
+    radius: &[Rational],
+) -> Result<CanalSpine<Rational>, OpError> {
+    let at = |param: &'static str, msg: String| OpError::param(param, format!("spine piece {k} (counted from 0): {msg}"));
+    if pts.iter().any(|p| p.len() != 3) {
+        return Err(at("pieces", "spine control points must be [x, y, z]".into()));
+    }
+    let ones = vec![Rational::one(); pts.len()];
+    let w = weights.unwrap_or(&ones);
+    if w.len() != pts.len() {
+        return Err(at("weights", format!("{} control points but {} weights", pts.len(), w.len())));
+    }
+    if let Some(i) = w.iter().position(|w| *w <= Rational::zero()) {
+        return Err(at("weights", format!("weight {i} is not positive: the spine would have a pole on [0, 1]")));
+    }
+    if radius.is_empty() {
+        return Err(at("radius", "give at least one radius control value".into()));
+    }
+    let hom: Vec<Vec<Rational>> = pts
+        .iter()
+        .zip(w)
+        .map(|(p, w)| {
+            let mut h = vec![w.clone()];
+            h.extend(p.iter().map(|x| x * w));
+            h
+        })
+        .collect();
+    let spine = BezierCurve::from_homogeneous(hom).map_err(|e| at("pieces", e.to_string()))?;
+    let rc = BezierCurve::from_homogeneous(
+        radius.iter().map(|r| vec![Rational::one(), r.clone()]).collect(),
+    )
+    .map_err(|e| at("radius", e.to_string()))?;
+    CanalSpine::from_spine_and_radius(&spine, &rc).map_err(|e| {
+        let o = canal_err(e, "pieces", "radius");
+        OpError {
+            message: format!("spine piece {k} (counted from 0): {}", o.message),
+            ..o
+        }
+    })
+}
+
+/// Blames an error of [`canal_chain_rational`] on the parameter that controls it.
+fn chain_err(e: CanalError) -> OpError {
+    match e {
+        CanalError::SpinePiece { index, source } => {
+            let inner = chain_err(*source);
+            OpError {
+                message: format!("spine piece {index} (counted from 0): {}", inner.message),
+                ..inner
+            }
+        }
+        // a joint where the radius or its slope jumps (the library names the joint)
+        CanalError::InvalidArgument(_) => OpError::param("radius", e.to_string()),
+        CanalError::IrrationalSplit { .. } => OpError::param("radius", e.to_string()),
+        e => canal_err(e, "pieces", "radius"),
+    }
+}
+
+fn build_canal_chain(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+    let net = args.net("pieces")?;
+    let radius = args.opt_grid("radius")?.unwrap_or_default();
+    if radius.len() != net.len() {
+        return Err(OpError::param(
+            "radius",
+            format!("{} spine pieces but {} rows of radius values", net.len(), radius.len()),
+        ));
+    }
+    let weights = args.opt_grid("weights")?;
+    if let Some(w) = &weights {
+        if w.len() != net.len() {
+            return Err(OpError::param(
+                "weights",
+                format!("{} spine pieces but {} rows of weights", net.len(), w.len()),
+            ));
+        }
+    }
+    let (zero, one) = (Rational::zero(), Rational::one());
+    let chain = net
+        .iter()
+        .enumerate()
+        .map(|(k, pts)| {
+            let w = weights.as_ref().and_then(|w| w.get(k));
+            Ok((chain_piece(k, pts, w, &radius[k])?, (zero.clone(), one.clone())))
+        })
+        .collect::<Result<Vec<_>, OpError>>()?;
+    let method = match args.string("method")? {
+        "peternell-pottmann" => Method::PeternellPottmann,
+        "krasauskas" => Method::Krasauskas,
+        _ => Method::Lowest,
+    };
+    let options = CanalOptions {
+        orientation: orientation(args)?,
+        method,
+        ..CanalOptions::default()
+    };
+    let built = canal_chain_rational(&chain, &options).map_err(chain_err)?;
+    let mut patches = Vec::new();
+    let mut certs = Vec::new();
+    for (k, s) in built.pieces.iter().enumerate() {
+        let (p, wcert) = positive_pieces(s.domain_patches().map_err(canal_err_plain)?, None)?;
+        patches.extend(p);
+        certs.extend(prefixed(&format!("spine piece {k}: "), vec![degree_cert(s), wcert]));
+    }
+    certs.extend(built.certify());
+    Ok(vec![args
+        .object(Geometry::Patches(patches), certs)
+        .with_values(vec![rcagd_io::quantity::NamedQuantity::new(
+            SPINE_CLOSED,
+            "the chain's last end joins its first start with the same sphere, tangent direction and r·dr/dσ: the canal surface is a closed tube",
+            rcagd_io::quantity::Quantity::Bool(built.closed),
+        )])])
 }
 
 const PIPE_PH: OpSpec = OpSpec {

@@ -496,3 +496,64 @@ fn self_intersecting_pipe_is_refused_at_the_radius() {
         "{certs:#?}"
     );
 }
+
+/// The `canal_chain` op (issue 17, item 6): a closed chain of four quarter circles with
+/// radius 1/4 (a torus; the joints and the seam run on smoothly) builds, every certificate
+/// holds and its value says that the tube is closed; the op's open example (a lifted PH
+/// cubic in three pieces with a shrinking radius) is certified and not closed; and with
+/// the third piece reversed (a joint where the tangent turns back) it is refused, naming
+/// the joint.
+#[test]
+fn canal_chain_op_certifies_closed_and_open_chains() {
+    let closed = |o: &Object| {
+        o.values
+            .iter()
+            .find(|v| v.name == rcagd_cli::ops::canal::SPINE_CLOSED)
+            .map(|v| v.value == rcagd_io::quantity::Quantity::Bool(true))
+            .expect("spine_closed")
+    };
+    let torus = build(
+        r#"[[object]]
+name = "canal_chain_torus"
+op = "canal_chain"
+pieces = [[[1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 0], [-1, 1, 0], [-1, 0, 0]], [[-1, 0, 0], [-1, -1, 0], [0, -1, 0]], [[0, -1, 0], [1, -1, 0], [1, 0, 0]]]
+weights = [[1, 1, 2], [1, 1, 2], [1, 1, 2], [1, 1, 2]]
+radius = [["1/4"], ["1/4"], ["1/4"], ["1/4"]]
+"#,
+    );
+    let o = &torus[0];
+    assert!(
+        o.certificates.iter().all(|c| c.holds && c.exact),
+        "{:?}",
+        o.certificates
+    );
+    assert!(closed(o));
+    assert!(
+        o.certificates
+            .iter()
+            .any(|c| c.property.contains("4 spine pieces, closed")),
+        "{:?}",
+        o.certificates
+    );
+    assert!(o
+        .certificates
+        .iter()
+        .any(|c| c.property.starts_with("spine piece 3: ")));
+    let example = rcagd_cli::ops::find("canal_chain").expect("op").example;
+    let open = build(example);
+    assert!(
+        open[0].certificates.iter().all(|c| c.holds),
+        "{:?}",
+        open[0].certificates
+    );
+    assert!(!closed(&open[0]));
+    let reversed = example.replace(
+        r#"[["9173/16200", "4/9", "-1/12"], ["877/1080", "28/27", "-5/36"], ["1193/1800", "20/9", "-7/36"], ["-403/600", 4, "-1/4"]]"#,
+        r#"[["9173/16200", "4/9", "-1/12"], ["1193/1800", "20/9", "-7/36"], ["877/1080", "28/27", "-5/36"], ["-403/600", 4, "-1/4"]]"#,
+    );
+    assert_ne!(reversed, example);
+    let recipe = Recipe::parse("t.toml", &reversed, None).expect("recipe parses");
+    let err = build_recipe(&recipe, |_| {}).expect_err("a corner is refused");
+    let text = format!("{err:?}");
+    assert!(text.contains("joint 1/2"), "{text}");
+}

@@ -27,7 +27,13 @@
 //!   `φ_s(y) = y·A(s) − E(s)/W(s)` (or with `t` and `s` exchanged);
 //! * **disjoint chords** on the line `Π(t) ∩ Π(s)` (direction `u = A(t) × A(s)`): with
 //!   `δ = (c(t) − c(s))·u`, `H_t = ρ(t)²|u|² − φ_s(c(t))²|A(t)|²` (`|u|²` times the squared
-//!   half chord), `H_s` likewise and `X = δ² − H_t⁺ − H_s⁺`: `X > 0` and `X² > 4H_t⁺H_s⁺`.
+//!   half chord), `H_s` likewise and `X = δ² − H_t⁺ − H_s⁺`: `X > 0` and `X² > 4H_t⁺H_s⁺`;
+//! * **the plane test as one polynomial** `G(t, s) > 0` ([`plane_poly`]; on one piece
+//!   divided by `(s − t)²`, which leaves the local condition on the diagonal, so boxes
+//!   touching it settle wherever the local check passed), decided by the signs of its
+//!   tensor Bernstein coefficients: exact once per pair of pieces, then `f64` halvings with
+//!   a proven error bound, the exact corner values and the exact tensor where `f64` does
+//!   not decide.
 //!
 //! Each test is evaluated in exact rational interval arithmetic: every quantity is a ratio
 //! of polynomials in one parameter, enclosed on a dyadic interval by the hull of the exact
@@ -255,6 +261,8 @@ struct Tile {
     q: Option<Iv>,
     g2: Option<Iv>,
     speed2: Option<Iv>,
+    /// `A`, `|A|²`, `E/W`, `c`, `ρ²` in `f64` with outward rounding (the pair tests' filter).
+    f: FTile,
 }
 
 impl Tile {
@@ -282,8 +290,10 @@ impl Tile {
             q: ratio(I_NQ, I_DQ),
             g2: ratio(I_NG, I_DRHO).map(|x| x.pos()),
             speed2: ratio(I_AA, I_W4).map(|x| x.pos()),
+            f: FTile::default(),
             coeffs,
         }
+        .with_f64()
     }
 }
 
@@ -377,6 +387,245 @@ pub fn discs_meet(
     Ok(discs_meet_at(&point(&p, t)?, &point(&p, s)?))
 }
 
+// ---------------------------------------------------------------------------------------
+// The plane test as one bivariate polynomial, divided by `(s − t)²` on one piece
+// (docs/math/pipes.md#canal-global).
+
+/// `p(t, s)/(s − t)` exactly (`None` if `s − t` does not divide `p`): with `p = Σ cⱼ(t) sʲ`,
+/// synthetic division `q_{n−1} = c_n`, `q_{j−1} = c_j + t·q_j`, remainder `c₀ + t·q₀`.
+fn div_s_minus_t(p: &BiPoly<Rational>) -> Option<BiPoly<Rational>> {
+    let c = p.coeffs();
+    let Some(n) = c.len().checked_sub(1) else {
+        return Some(BiPoly::zero());
+    };
+    let t = P::x();
+    let mut q: Vec<P> = vec![P::zero(); n];
+    let mut carry = c[n].clone();
+    for j in (1..=n).rev() {
+        q[j - 1] = carry.clone();
+        carry = &c[j - 1] + &(&t * &carry);
+    }
+    carry.is_zero().then(|| BiPoly::new(q))
+}
+
+/// `G(t, s)` of the plane test for `t` on the piece of `p` and `s` on the piece of `q`
+/// (polynomials in the order of [`polys`]): `Δ(t) ∩ Π(s) = ∅` wherever `G > 0`
+/// (docs/math/pipes.md#canal-global). With `A`, `B`, `R`, `W` as in the module docs,
+///
+/// ```text
+/// N(t, s) = |A(t)|²[(W(s)M(t) − W(t)M(s))·A(s) + W(t)R(s)B(s)] − R(t)B(t)W(s) A(t)·A(s),
+/// G(t, s) = N² − R(t)²(|A(t)|² − B(t)²)·W(s)²·|A(t) × A(s)|²
+/// ```
+///
+/// (`φ_s(c(t))²|A(t)|² − ρ(t)²|A(t) × A(s)|²` times `W(t)²|A(t)|²W(s)² > 0`). For a constant
+/// radius (`B ≡ 0`) the common factor `|A(t)|²` is removed:
+/// `G = |A(t)|²((W(s)M(t) − W(t)M(s))·A(s))² − R(t)²W(s)²|A(t) × A(s)|²`. On one piece
+/// (`same`) `N` and `A(t) × A(s)` vanish at `s = t` and `G/(s − t)²` is returned: it is
+/// positive at `s = t` exactly where the local condition holds (the disc misses the line
+/// `Π₁ ∩ Π₂`), so boxes touching the diagonal are settled too.
+fn plane_poly(p: &PlaneParts, q: &PlaneParts, same: bool) -> Option<BiPoly<Rational>> {
+    let t = |x: &P| BiPoly::from_t(x.clone());
+    let s = |x: &P| BiPoly::from_u(x);
+    let dot_ts = |x: &[P; 3], y: &[P; 3]| -> BiPoly<Rational> {
+        (0..3).fold(BiPoly::zero(), |acc, i| acc.add(&t(&x[i]).mul(&s(&y[i]))))
+    };
+    // (W(s)M(t) − W(t)M(s))·A(s)
+    let mdiff = dot_ts(&p.m, &q.a)
+        .mul(&s(&q.w))
+        .sub(&t(&p.w).mul(&s(&dot(&q.m, &q.a))));
+    let pipe = p.rb.is_zero() && q.rb.is_zero();
+    let mut n = if pipe {
+        mdiff
+    } else {
+        t(&p.aa)
+            .mul(&mdiff.add(&t(&p.w).mul(&s(&q.rb))))
+            .sub(&t(&p.rb).mul(&s(&q.w)).mul(&dot_ts(&p.a, &q.a)))
+    };
+    let mut u: [BiPoly<Rational>; 3] = core::array::from_fn(|i| {
+        let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+        t(&p.a[j])
+            .mul(&s(&q.a[k]))
+            .sub(&t(&p.a[k]).mul(&s(&q.a[j])))
+    });
+    if same {
+        n = div_s_minus_t(&n)?;
+        for x in &mut u {
+            *x = div_s_minus_t(x)?;
+        }
+    }
+    let uu = u.iter().fold(BiPoly::zero(), |acc, x| acc.add(&x.mul(x)));
+    let ws2 = s(&(&q.w * &q.w));
+    let lhs = n.mul(&n);
+    Some(if pipe {
+        t(&p.aa).mul(&lhs).sub(&t(&p.r2).mul(&ws2).mul(&uu))
+    } else {
+        lhs.sub(&t(&p.nrho).mul(&ws2).mul(&uu))
+    })
+}
+
+/// The polynomials of one piece that [`plane_poly`] needs.
+struct PlaneParts {
+    w: P,
+    m: [P; 3],
+    a: [P; 3],
+    /// `|A|²`, `R·B`, `R²`, `R²(|A|² − B²)`.
+    aa: P,
+    rb: P,
+    r2: P,
+    nrho: P,
+}
+
+impl PlaneParts {
+    fn of(spine: &CanalSpine<Rational>) -> PlaneParts {
+        let w = spine.weight().clone();
+        let wd = w.derivative();
+        let m = spine.center_polys().clone();
+        let r = spine.radius_poly();
+        let a: [P; 3] = core::array::from_fn(|i| &(&w * &m[i].derivative()) - &(&wd * &m[i]));
+        let b = &(&w * &r.derivative()) - &(&wd * r);
+        let aa = dot(&a, &a);
+        let r2 = r * r;
+        PlaneParts {
+            nrho: &r2 * &(&aa - &(&b * &b)),
+            rb: r * &b,
+            w,
+            m,
+            a,
+            aa,
+            r2,
+        }
+    }
+}
+
+/// The unit roundoff of `f64` (`2⁻⁵³`).
+const UNIT_ROUNDOFF: f64 = f64::EPSILON / 2.0;
+
+/// Tensor Bernstein coefficients (`(m + 1) × (n + 1)`, row-major in `t`) in `f64` with a
+/// proven bound `err ≥ |c̃ − c|` on every coefficient's distance to the exact one (`err`
+/// not finite: unusable). Halving at `1/2` by de Casteljau is a convex average per level:
+/// it adds at most `u·M′ + 2⁻¹⁰⁷⁴` per level (`u = 2⁻⁵³`, `M′ ≥` every intermediate
+/// magnitude; N. J. Higham, "Accuracy and Stability of Numerical Algorithms", 2nd ed.,
+/// 2002, §2.2; docs/math/pipes.md, "Global check: `f64` filters that keep the proof").
+#[derive(Clone, Debug)]
+struct FTensor {
+    m: usize,
+    n: usize,
+    c: Vec<f64>,
+    err: f64,
+}
+
+impl FTensor {
+    fn of(exact: &[Rational], m: usize, n: usize) -> FTensor {
+        let mut err = 0.0f64;
+        let c = exact
+            .iter()
+            .map(|x| {
+                let f = Scalar::to_f64(x);
+                let e = match Rational::try_from(f) {
+                    // |x − f| exactly, then rounded up (to_f64 is within one ulp)
+                    Ok(q) => {
+                        let d = q - x.clone();
+                        let d = if d < Rational::ZERO { -d } else { d };
+                        Scalar::to_f64(&d).next_up().next_up()
+                    }
+                    Err(_) => f64::INFINITY,
+                };
+                if e.is_nan() || e > err {
+                    err = e;
+                }
+                f
+            })
+            .collect();
+        FTensor { m, n, c, err }.checked()
+    }
+
+    fn checked(mut self) -> FTensor {
+        if !self.err.is_finite() || self.c.iter().any(|x| !x.is_finite()) {
+            self.err = f64::INFINITY;
+        }
+        self
+    }
+
+    /// The bound after `levels` de Casteljau levels (`(1 + u)^levels ≤ 1 + 10⁻⁹`; the
+    /// outer factor covers the rounding of this sum).
+    fn grown(&self, levels: usize) -> f64 {
+        let mag = self.c.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let per = UNIT_ROUNDOFF * mag * (1.0 + 1e-9) + 1e-323;
+        ((self.err + levels as f64 * per) * (1.0 + 1e-12)).next_up()
+    }
+
+    /// The four quarters `(t₁, s₁), (t₁, s₂), (t₂, s₁), (t₂, s₂)`.
+    fn quarters(&self) -> [FTensor; 4] {
+        let (m, n) = (self.m, self.n);
+        let w = n + 1;
+        let split = |b: &[f64]| -> (Vec<f64>, Vec<f64>) {
+            let k = b.len();
+            let mut work = b.to_vec();
+            let (mut l, mut r) = (Vec::with_capacity(k), Vec::with_capacity(k));
+            for level in 0..k {
+                l.push(work[0]);
+                r.push(work[k - 1 - level]);
+                for i in 0..k - 1 - level {
+                    work[i] = (work[i] + work[i + 1]) * 0.5;
+                }
+            }
+            r.reverse();
+            (l, r)
+        };
+        // halves in t (columns), then each in s (rows)
+        let (mut lo, mut hi) = (vec![0.0; self.c.len()], vec![0.0; self.c.len()]);
+        for j in 0..w {
+            let col: Vec<f64> = (0..=m).map(|i| self.c[i * w + j]).collect();
+            let (l, r) = split(&col);
+            for i in 0..=m {
+                lo[i * w + j] = l[i];
+                hi[i * w + j] = r[i];
+            }
+        }
+        let err_t = self.grown(m);
+        let halves_s = |c: Vec<f64>| -> [FTensor; 2] {
+            let half = FTensor {
+                m,
+                n,
+                c,
+                err: err_t,
+            }
+            .checked();
+            let err = half.grown(n);
+            let (mut a, mut b) = (
+                Vec::with_capacity(half.c.len()),
+                Vec::with_capacity(half.c.len()),
+            );
+            for i in 0..=m {
+                let (l, r) = split(&half.c[i * w..(i + 1) * w]);
+                a.extend(l);
+                b.extend(r);
+            }
+            [
+                FTensor { m, n, c: a, err }.checked(),
+                FTensor { m, n, c: b, err }.checked(),
+            ]
+        };
+        let [a, b] = halves_s(lo);
+        let [c, d] = halves_s(hi);
+        [a, b, c, d]
+    }
+
+    /// Every exact coefficient `> 0`: `Some(true)` proved, `Some(false)` disproved, `None`
+    /// not decided in `f64`.
+    fn all_pos(&self) -> Option<bool> {
+        if !self.err.is_finite() {
+            None
+        } else if self.c.iter().all(|x| *x > self.err) {
+            Some(true)
+        } else if self.c.iter().any(|x| *x <= -self.err) {
+            Some(false)
+        } else {
+            None
+        }
+    }
+}
+
 /// How a box was settled.
 #[derive(Clone, Copy)]
 enum Settled {
@@ -384,7 +633,13 @@ enum Settled {
     Far,
     Plane,
     Chords,
+    /// By the plane test's bivariate polynomial ([`plane_poly`]).
+    PlanePoly,
 }
+
+/// Boxes settled by each [`Settled`] kind, then (last) the bivariate plane tests redone
+/// exactly because `f64` did not decide them.
+type Counts = [usize; 6];
 
 /// `√x` rounded up (`x ≥ 0`).
 fn root_up(x: &Rational) -> Rational {
@@ -428,6 +683,187 @@ fn lemma_a(tiles: &[Rc<Tile>]) -> bool {
     bend.clone() + q.hi < Rational::ONE || q.lo - bend > Rational::ONE
 }
 
+/// An interval `[lo, hi]` of `f64` that contains the exact one: every operation is rounded
+/// to nearest and its ends moved one step outward (round to nearest is within half a unit in
+/// the last place; N. J. Higham, "Accuracy and Stability of Numerical Algorithms", 2nd ed.,
+/// 2002, §2.2); a `NaN` (from `∞ − ∞` or `0·∞`) widens to `[−∞, ∞]`.
+#[derive(Debug, Clone, Copy)]
+struct FIv {
+    lo: f64,
+    hi: f64,
+}
+
+const FIV_ALL: FIv = FIv {
+    lo: f64::NEG_INFINITY,
+    hi: f64::INFINITY,
+};
+
+/// A rational `≤ x` as `f64`.
+fn f64_below(x: &Rational) -> f64 {
+    let mut f = Scalar::to_f64(x);
+    if f == f64::INFINITY {
+        return f64::MAX;
+    }
+    while Rational::try_from(f).is_ok_and(|q| q > *x) {
+        f = f.next_down();
+    }
+    f
+}
+
+/// A rational `≥ x` as `f64`.
+fn f64_above(x: &Rational) -> f64 {
+    let mut f = Scalar::to_f64(x);
+    if f == f64::NEG_INFINITY {
+        return -f64::MAX;
+    }
+    while Rational::try_from(f).is_ok_and(|q| q < *x) {
+        f = f.next_up();
+    }
+    f
+}
+
+impl FIv {
+    fn of(x: &Iv) -> FIv {
+        FIv {
+            lo: f64_below(&x.lo),
+            hi: f64_above(&x.hi),
+        }
+    }
+
+    fn out(lo: f64, hi: f64) -> FIv {
+        if lo.is_nan() || hi.is_nan() {
+            FIV_ALL
+        } else {
+            FIv {
+                lo: lo.next_down(),
+                hi: hi.next_up(),
+            }
+        }
+    }
+
+    fn add(self, o: FIv) -> FIv {
+        FIv::out(self.lo + o.lo, self.hi + o.hi)
+    }
+
+    fn sub(self, o: FIv) -> FIv {
+        FIv::out(self.lo - o.hi, self.hi - o.lo)
+    }
+
+    fn mul(self, o: FIv) -> FIv {
+        let p = [
+            self.lo * o.lo,
+            self.lo * o.hi,
+            self.hi * o.lo,
+            self.hi * o.hi,
+        ];
+        if p.iter().any(|x| x.is_nan()) {
+            return FIV_ALL;
+        }
+        FIv::out(
+            p.iter().fold(f64::INFINITY, |m, x| m.min(*x)),
+            p.iter().fold(f64::NEG_INFINITY, |m, x| m.max(*x)),
+        )
+    }
+
+    fn sq(self) -> FIv {
+        let (a, b) = (self.lo * self.lo, self.hi * self.hi);
+        if self.lo <= 0.0 && self.hi >= 0.0 {
+            FIv::out(0.0, a.max(b)).pos()
+        } else {
+            FIv::out(a.min(b), a.max(b)).pos()
+        }
+    }
+
+    fn pos(self) -> FIv {
+        FIv {
+            lo: self.lo.max(0.0),
+            hi: self.hi.max(0.0),
+        }
+    }
+}
+
+fn fiv_dot(a: &[FIv; 3], b: &[FIv; 3]) -> FIv {
+    a[0].mul(b[0]).add(a[1].mul(b[1])).add(a[2].mul(b[2]))
+}
+
+fn fiv_cross(a: &[FIv; 3], b: &[FIv; 3]) -> [FIv; 3] {
+    [
+        a[1].mul(b[2]).sub(a[2].mul(b[1])),
+        a[2].mul(b[0]).sub(a[0].mul(b[2])),
+        a[0].mul(b[1]).sub(a[1].mul(b[0])),
+    ]
+}
+
+fn fiv_norm_sq(a: &[FIv; 3]) -> FIv {
+    a[0].sq().add(a[1].sq()).add(a[2].sq())
+}
+
+/// The enclosures of a [`Tile`] that the pair tests use, in `f64` (outward).
+#[derive(Debug, Default)]
+struct FTile {
+    a: Option<[FIv; 3]>,
+    aa: Option<FIv>,
+    e: Option<FIv>,
+    c: Option<[FIv; 3]>,
+    rho2: Option<FIv>,
+}
+
+impl Tile {
+    fn with_f64(mut self) -> Tile {
+        let v3 = |x: &[Iv; 3]| [FIv::of(&x[0]), FIv::of(&x[1]), FIv::of(&x[2])];
+        self.f = FTile {
+            a: Some(v3(&self.a)),
+            aa: Some(FIv::of(&self.aa)),
+            e: self.e.as_ref().map(FIv::of),
+            c: self.c.as_ref().map(v3),
+            rho2: self.rho2.as_ref().map(FIv::of),
+        };
+        self
+    }
+}
+
+/// `√x` rounded up in `f64` (`x ≥ 0`; `sqrt` is correctly rounded).
+fn f64_root_up(x: f64) -> f64 {
+    if x <= 0.0 {
+        0.0
+    } else {
+        x.sqrt().next_up()
+    }
+}
+
+/// [`pair_tests`] in `f64` interval arithmetic with outward rounding: a test that holds here
+/// holds for the exact enclosures as well (they lie inside), so a box settled here is
+/// settled by the same statement; `None` leaves the box to the exact tests.
+fn pair_tests_f64(ti: &Tile, tj: &Tile) -> Option<Settled> {
+    let (fi, fj) = (&ti.f, &tj.f);
+    let (ci, cj) = (fi.c.as_ref()?, fj.c.as_ref()?);
+    let (ri, rj) = (fi.rho2?, fj.rho2?);
+    let (ei, ej) = (fi.e?, fj.e?);
+    let (ai, aj) = (fi.a.as_ref()?, fj.a.as_ref()?);
+    let (aai, aaj) = (fi.aa?, fj.aa?);
+    let diff: [FIv; 3] = core::array::from_fn(|k| ci[k].sub(cj[k]));
+    let reach = (f64_root_up(ri.hi) + f64_root_up(rj.hi)).next_up();
+    if fiv_norm_sq(&diff).lo > (reach * reach).next_up() {
+        return Some(Settled::Far);
+    }
+    let u = fiv_cross(ai, aj);
+    let uu = fiv_norm_sq(&u);
+    let pij2 = fiv_dot(ci, aj).sub(ej).sq();
+    let pji2 = fiv_dot(cj, ai).sub(ei).sq();
+    let down = |x: f64, y: f64| (x * y).next_down();
+    let up = |x: f64, y: f64| (x * y).next_up();
+    if down(pij2.lo, aai.lo) > up(ri.hi, uu.hi) || down(pji2.lo, aaj.lo) > up(rj.hi, uu.hi) {
+        return Some(Settled::Plane);
+    }
+    let ht = ri.mul(uu).sub(pij2.mul(aai)).pos().hi;
+    let hs = rj.mul(uu).sub(pji2.mul(aaj)).pos().hi;
+    let x = ((fiv_dot(&diff, &u).sq().lo - ht).next_down() - hs).next_down();
+    if x > 0.0 && down(x, x) > up(up(4.0, ht), hs) {
+        return Some(Settled::Chords);
+    }
+    None
+}
+
 /// The per-pair tests (far, plane, chords) on `I × J` (module docs).
 fn pair_tests(ti: &Tile, tj: &Tile) -> Option<Settled> {
     let (ci, cj) = (ti.c.as_ref()?, tj.c.as_ref()?);
@@ -468,6 +904,8 @@ struct PieceSearch {
     a: Rational,
     width: Rational,
     polys: Vec<P>,
+    /// What [`plane_poly`] needs.
+    parts: PlaneParts,
     tiles: HashMap<(u32, u64), Rc<Tile>>,
 }
 
@@ -478,6 +916,7 @@ impl PieceSearch {
             a: a.clone(),
             width: b.clone() - a.clone(),
             polys: polys(spine),
+            parts: PlaneParts::of(spine),
             tiles: HashMap::new(),
         }
     }
@@ -523,6 +962,10 @@ impl PieceSearch {
     }
 }
 
+/// [`plane_poly`] of a pair of pieces with its `f64` tensor on their whole box (`None`:
+/// not available).
+type PlanePoly = Option<(BiPoly<Rational>, FTensor)>;
+
 /// A dyadic interval of one piece at the current level: `(piece, index)`.
 type Key = (usize, u64);
 
@@ -539,6 +982,13 @@ struct Search {
     closed: bool,
     /// Name the piece in intervals (a chain of more than one piece).
     named: bool,
+    /// [`plane_poly`] of each ordered pair of pieces (`None`: not available) with its
+    /// exact Bernstein coefficients on the pair's whole box, in `f64` with an error bound.
+    planes: HashMap<(usize, usize), PlanePoly>,
+    /// The `f64` tensors of boxes `(level, t-interval, s-interval)`, by halving.
+    boxes: HashMap<(u32, Key, Key), FTensor>,
+    /// Boxes whose bivariate plane test was not decided in `f64` and was redone exactly.
+    exact_boxes: usize,
 }
 
 impl Search {
@@ -588,6 +1038,82 @@ impl Search {
         Some(out)
     }
 
+    /// [`plane_poly`] of the pieces `(k, l)` and its tensor on their whole box.
+    fn plane(&mut self, k: usize, l: usize) -> PlanePoly {
+        if let Some(p) = self.planes.get(&(k, l)) {
+            return p.clone();
+        }
+        let (pk, pl) = (&self.pieces[k], &self.pieces[l]);
+        let out = plane_poly(&pk.parts, &pl.parts, k == l).and_then(|g| {
+            let (m, n) = (g.degree_t()?, g.degree_u()?);
+            let (tb, sb) = (
+                pk.a.clone() + pk.width.clone(),
+                pl.a.clone() + pl.width.clone(),
+            );
+            let c = g.bernstein_on((&pk.a, &tb), (&pl.a, &sb), m, n).ok()?;
+            Some((g, FTensor::of(&c, m, n)))
+        });
+        self.planes.insert((k, l), out.clone());
+        out
+    }
+
+    /// The `f64` tensor of [`plane_poly`] on the box `t ∈ x`, `s ∈ y` at `level`.
+    fn plane_tensor(&mut self, level: u32, x: Key, y: Key) -> Option<FTensor> {
+        if level == 0 {
+            return self.plane(x.0, y.0).map(|p| p.1);
+        }
+        if let Some(f) = self.boxes.get(&(level, x, y)) {
+            return Some(f.clone());
+        }
+        let (px, py) = ((x.0, x.1 / 2), (y.0, y.1 / 2));
+        let quarters = self.plane_tensor(level - 1, px, py)?.quarters();
+        let mut out = None;
+        for (q, f) in quarters.into_iter().enumerate() {
+            let key = (x.0, 2 * px.1 + (q as u64 >> 1));
+            let kez = (y.0, 2 * py.1 + (q as u64 & 1));
+            if (key, kez) == (x, y) {
+                out = Some(f.clone());
+            }
+            self.boxes.insert((level, key, kez), f);
+        }
+        out
+    }
+
+    /// `Δ(t) ∩ Π(s) = ∅` for all `t ∈ x`, `s ∈ y` (`s ≠ t`) by the signs of the Bernstein
+    /// coefficients of [`plane_poly`]: in `f64` with a proven error bound, exactly where
+    /// that does not decide.
+    fn plane_box(&mut self, level: u32, x: Key, y: Key) -> bool {
+        match self.plane_tensor(level, x, y).and_then(|f| f.all_pos()) {
+            Some(b) => b,
+            None => {
+                let Some((g, f)) = self.plane(x.0, y.0) else {
+                    return false;
+                };
+                let (px, py) = (&self.pieces[x.0], &self.pieces[y.0]);
+                let (t0, t1) = (px.param(level, x.1), px.param(level, x.1 + 1));
+                let (s0, s1) = (py.param(level, y.1), py.param(level, y.1 + 1));
+                // a corner coefficient is the value there: one ≤ 0 (e.g. G = 0 at a joint)
+                // disproves the test without the whole tensor
+                let corners = [(&t0, &s0), (&t0, &s1), (&t1, &s0), (&t1, &s1)];
+                if corners
+                    .iter()
+                    .any(|(t, s)| g.sign_at(t, s) != Some(core::cmp::Ordering::Greater))
+                {
+                    return false;
+                }
+                self.exact_boxes += 1;
+                g.bernstein_on((&t0, &t1), (&s0, &s1), f.m, f.n)
+                    .is_ok_and(|c| c.iter().all(|v| *v > Rational::ZERO))
+            }
+        }
+    }
+
+    /// Forgets the `f64` tensors of levels below `level − 1` (no longer needed breadth
+    /// first).
+    fn forget_below(&mut self, level: u32) {
+        self.boxes.retain(|k, _| k.0 + 1 >= level);
+    }
+
     /// Tests the box `x × y`, `x ≤ y` (lexicographic).
     fn settle(&mut self, level: u32, x: Key, y: Key) -> Option<Settled> {
         if x != y {
@@ -595,7 +1121,7 @@ impl Search {
                 self.pieces[x.0].tile(level, x.1),
                 self.pieces[y.0].tile(level, y.1),
             );
-            if let Some(s) = pair_tests(&tx, &ty) {
+            if let Some(s) = pair_tests_f64(&tx, &ty).or_else(|| pair_tests(&tx, &ty)) {
                 return Some(s);
             }
         }
@@ -612,6 +1138,10 @@ impl Search {
                     return Some(Settled::LemmaA);
                 }
             }
+        }
+        // a disc misses the other's plane, by one bivariate polynomial (either way round)
+        if self.plane_box(level, x, y) || (x != y && self.plane_box(level, y, x)) {
+            return Some(Settled::PlanePoly);
         }
         None
     }
@@ -639,33 +1169,87 @@ fn end_values(
     Some((m, r.clone() * r, a, rr * b / w))
 }
 
-/// Whether the characteristic discs run on smoothly from `first` at `t` to `second` at `s`:
-/// the same sphere (`m`, `r²`), tangents in the same direction (`A(t) = λA(s)`, `λ > 0`)
-/// and the same `g = r dr/dσ` (`RB/W` at `t` equal to `λ·RB/W` at `s`) — what Lemma A needs
-/// to run across the joint (docs/math/pipes.md#canal-global, "Chains and closed spines").
+/// Why the characteristic discs of a chain do not run on smoothly across a joint
+/// ([`canal_joint_defect`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum JointDefect {
+    /// A weight vanishes at an end (a point at infinity) or a tangent is zero.
+    Degenerate,
+    /// The spine points differ (a gap).
+    Gap,
+    /// The spheres have different radii (`r²` jumps).
+    RadiusJump,
+    /// The tangent directions differ (a corner, or a reversal).
+    Corner,
+    /// `g = r dr/dσ` (the radius's slope along arc length, times `r`) jumps.
+    SlopeJump,
+}
+
+impl core::fmt::Display for JointDefect {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(match self {
+            JointDefect::Degenerate => "a weight or a tangent vanishes at an end",
+            JointDefect::Gap => "the spine ends do not meet (a gap)",
+            JointDefect::RadiusJump => "the spheres there have different radii (r² jumps)",
+            JointDefect::Corner => {
+                "the spine's tangent directions differ (a corner: the surfaces would overlap on its inner side)"
+            }
+            JointDefect::SlopeJump => {
+                "the radius changes at different rates along the spine on the two sides (r dr/dσ jumps)"
+            }
+        })
+    }
+}
+
+/// Whether the characteristic discs run on smoothly from `first` at `t` to `second` at `s`
+/// (`None`) or why not: the same sphere (`m`, `r²`), tangents in the same direction
+/// (`A(t) = λA(s)`, `λ > 0`) and the same `g = r dr/dσ` (`RB/W` at `t` equal to `λ·RB/W`
+/// at `s`) — what Lemma A needs to run across the joint, decided exactly
+/// (docs/math/pipes.md#canal-global, "Chains and closed spines").
+pub fn canal_joint_defect(
+    first: &CanalSpine<Rational>,
+    t: &Rational,
+    second: &CanalSpine<Rational>,
+    s: &Rational,
+) -> Option<JointDefect> {
+    let (Some((m1, r1, a1, g1)), Some((m2, r2, a2, g2))) =
+        (end_values(first, t), end_values(second, s))
+    else {
+        return Some(JointDefect::Degenerate);
+    };
+    let aa2 = rdot(&a2, &a2);
+    if m1 != m2 {
+        return Some(JointDefect::Gap);
+    }
+    if r1 != r2 {
+        return Some(JointDefect::RadiusJump);
+    }
+    if aa2.is_zero() || rdot(&a1, &a1).is_zero() {
+        return Some(JointDefect::Degenerate);
+    }
+    if rcross(&a1, &a2).iter().any(|x| !x.is_zero()) {
+        return Some(JointDefect::Corner);
+    }
+    let lambda = rdot(&a1, &a2) / aa2;
+    if lambda <= Rational::ZERO {
+        return Some(JointDefect::Corner);
+    }
+    (g1 != lambda * g2).then_some(JointDefect::SlopeJump)
+}
+
 fn joins_smoothly(
     first: &CanalSpine<Rational>,
     t: &Rational,
     second: &CanalSpine<Rational>,
     s: &Rational,
 ) -> bool {
-    let (Some((m1, r1, a1, g1)), Some((m2, r2, a2, g2))) =
-        (end_values(first, t), end_values(second, s))
-    else {
-        return false;
-    };
-    let aa2 = rdot(&a2, &a2);
-    if m1 != m2 || r1 != r2 || aa2.is_zero() || rcross(&a1, &a2).iter().any(|x| !x.is_zero()) {
-        return false;
-    }
-    let lambda = rdot(&a1, &a2) / aa2;
-    lambda > Rational::ZERO && g1 == lambda * g2
+    canal_joint_defect(first, t, second, s).is_none()
 }
 
 /// The result of one subdivision run.
 enum Outcome {
     /// Every box settled: the number of boxes and how (by [`Settled`]).
-    Certified(usize, [usize; 4]),
+    Certified(usize, Counts),
     /// The discs at the exact centre pair `(t, s)` of the box `first × second` meet.
     Meet {
         first: String,
@@ -691,11 +1275,16 @@ fn subdivide(search: &mut Search, limits: (u32, usize)) -> Result<Outcome, Canal
             queue.push_back((0, (p, 0), (q, 0)));
         }
     }
-    let mut counts = [0usize; 4];
+    let mut counts: Counts = [0; 6];
     let mut boxes = 0usize;
+    let mut current = 0u32;
     while let Some((level, x, y)) = queue.pop_front() {
         rcagd_algebra::budget::checkpoint();
         boxes += 1;
+        if level > current {
+            current = level;
+            search.forget_below(level);
+        }
         if let Some(how) = search.settle(level, x, y) {
             counts[how as usize] += 1;
             continue;
@@ -730,12 +1319,13 @@ fn subdivide(search: &mut Search, limits: (u32, usize)) -> Result<Outcome, Canal
             queue.extend([(l, x0, y0), (l, x0, y1), (l, x1, y0), (l, x1, y1)]);
         }
     }
+    counts[5] = search.exact_boxes;
     Ok(Outcome::Certified(boxes, counts))
 }
 
-fn settled_text(boxes: usize, counts: [usize; 4]) -> String {
-    let [lemma, far, plane, chords] = counts;
-    format!("{boxes} boxes of parameter pairs examined, {lemma} settled by Lemma A with varying radius (κ_max(ρ_max + κ_max L(g_max + L/2)) + Q_max < 1 or Q_min − … > 1 over the stretch), {far} by |c(t) − c(s)| > ρ(t) + ρ(s), {plane} because a disc misses the other's plane, {chords} by disjoint chords on the line of the two planes; exact rational interval bounds from Bernstein coefficients (docs/math/pipes.md#canal-global)")
+fn settled_text(boxes: usize, counts: Counts) -> String {
+    let [lemma, far, plane, chords, poly, exact] = counts;
+    format!("{boxes} boxes of parameter pairs examined, {lemma} settled by Lemma A with varying radius (κ_max(ρ_max + κ_max L(g_max + L/2)) + Q_max < 1 or Q_min − … > 1 over the stretch), {far} by |c(t) − c(s)| > ρ(t) + ρ(s), {plane} because a disc misses the other's plane, {chords} by disjoint chords on the line of the two planes; exact rational interval bounds from Bernstein coefficients; {poly} because a disc misses the other's plane by the signs of the tensor Bernstein coefficients of one bivariate polynomial (divided by (s − t)² on one piece; in f64 with a proven error bound, {exact} redone exactly) (docs/math/pipes.md#canal-global)")
 }
 
 /// Decides exactly that the closed discs bounded by the characteristic circles of the canal
@@ -867,7 +1457,7 @@ pub fn check_canal_chain_embedded_within(
         }
     }
     let mut total = 0usize;
-    let mut counts = [0usize; 4];
+    let mut counts: Counts = [0; 6];
     for &(first, last) in &runs {
         let mut search = Search {
             pieces: chain[first..=last]
@@ -878,6 +1468,9 @@ pub fn check_canal_chain_embedded_within(
             smooth: smooth[first..last].to_vec(),
             closed: closed && runs.len() == 1,
             named: n > 1,
+            planes: HashMap::new(),
+            boxes: HashMap::new(),
+            exact_boxes: 0,
         };
         match subdivide(&mut search, limits)? {
             Outcome::Certified(b, c) => {
@@ -1173,6 +1766,9 @@ pub fn check_cyclographic_embedded_within(
         smooth: Vec::new(),
         closed: false,
         named: false,
+        planes: HashMap::new(),
+        boxes: HashMap::new(),
+        exact_boxes: 0,
     };
     let inside = |x: &Rational| ilo <= x && x <= ihi;
     match subdivide(&mut search, limits)? {
@@ -1329,5 +1925,161 @@ mod tests {
             Poly::new(vec![q(5, 4), q(1, 2)]),
         );
         assert!(joins_smoothly(&first, &one, &fast, &zero));
+    }
+
+    /// A canal family of varying radius (`B ≠ 0`) and a pipe (`B ≡ 0`).
+    fn families() -> [CanalSpine<Rational>; 2] {
+        let lifted = CanalSpine::polynomial(
+            [
+                Poly::from_ints(&[-1, 0, 1]),
+                Poly::from_ints(&[0, -1, 0, 1]),
+                Poly::new(vec![q(0, 1), q(1, 5)]),
+            ],
+            Poly::new(vec![q(1, 10), q(0, 1), q(1, 40)]),
+        );
+        let w = Poly::from_ints(&[1, 0, 1]);
+        let arc = CanalSpine::new(
+            w.clone(),
+            [
+                Poly::from_ints(&[1, 0, -1]),
+                Poly::from_ints(&[0, 2]),
+                Poly::zero(),
+            ],
+            w.scale(&q(3, 4)),
+        )
+        .expect("arc");
+        [lifted, arc]
+    }
+
+    /// `G` of [`plane_poly`] is the plane test `φ_s(c(t))²|A(t)|² − ρ(t)²|A(t) × A(s)|²`
+    /// (exact values at the two parameters) times `W(t)²|A(t)|²W(s)²` (divided by `|A(t)|²`
+    /// more for a pipe, and by `(s − t)²` on one piece): an exact identity at sample pairs.
+    #[test]
+    fn plane_polynomial_is_the_plane_test_times_positive_factors() {
+        let [lifted, arc] = families();
+        let ts = [q(-3, 2), q(-1, 3), q(0, 1), q(2, 7), q(5, 4)];
+        for (first, second, pipe) in [
+            (&lifted, &lifted, false),
+            (&lifted, &arc, false),
+            (&arc, &arc, true),
+            (&arc, &lifted, false),
+        ] {
+            let (pf, ps) = (polys(first), polys(second));
+            let same = core::ptr::eq(first, second);
+            let g = plane_poly(&PlaneParts::of(first), &PlaneParts::of(second), same)
+                .expect("divisible");
+            for t in &ts {
+                for s in &ts {
+                    if same && t == s {
+                        continue;
+                    }
+                    let (p, r) = (point(&pf, t).expect("t"), point(&ps, s).expect("s"));
+                    let phi = rdot(&p.c, &r.a) - r.e.clone();
+                    let u = rcross(&p.a, &r.a);
+                    let direct = phi.clone() * phi * p.aa.clone() - p.rho2.clone() * rdot(&u, &u);
+                    let (wt, ws) = (pf[I_W].eval(t), ps[I_W].eval(s));
+                    let mut factor = wt.clone() * wt * ws.clone() * ws;
+                    if !pipe {
+                        factor *= p.aa.clone();
+                    }
+                    if same {
+                        let d = s.clone() - t.clone();
+                        factor /= d.clone() * d;
+                    }
+                    assert_eq!(g.eval(t, s), direct * factor, "t = {t}, s = {s}");
+                }
+            }
+        }
+    }
+
+    /// The `f64` quarters stay within their error bound of the exact tensor coefficients
+    /// of the same boxes, over three levels.
+    #[test]
+    fn float_quarters_stay_within_their_bound() {
+        let [lifted, _] = families();
+        let parts = PlaneParts::of(&lifted);
+        let g = plane_poly(&parts, &parts, true).expect("divisible");
+        let (m, n) = (g.degree_t().expect("m"), g.degree_u().expect("n"));
+        let (a, b) = (q(-3, 2), q(3, 2));
+        let root = FTensor::of(
+            &g.bernstein_on((&a, &b), (&a, &b), m, n).expect("root"),
+            m,
+            n,
+        );
+        assert!(
+            root.err.is_finite()
+                && root.err < 1e-12 * root.c.iter().fold(0.0f64, |x, y| x.max(y.abs()))
+        );
+        // the box (t-index, s-index) of each quarter, at three levels
+        let mut boxes = vec![(0u64, 0u64, root)];
+        for level in 1..=3u32 {
+            boxes = boxes
+                .into_iter()
+                .flat_map(|(i, j, f)| {
+                    f.quarters()
+                        .into_iter()
+                        .enumerate()
+                        .map(move |(k, f)| (2 * i + (k as u64 >> 1), 2 * j + (k as u64 & 1), f))
+                })
+                .collect();
+            let h = (b.clone() - a.clone()) / Rational::from(1u64 << level);
+            for (i, j, f) in boxes.iter().step_by(7) {
+                let end = |k: u64| a.clone() + h.clone() * Rational::from(k);
+                let exact = g
+                    .bernstein_on((&end(*i), &end(i + 1)), (&end(*j), &end(j + 1)), m, n)
+                    .expect("exact");
+                for (x, y) in exact.iter().zip(&f.c) {
+                    let d = Scalar::to_f64(&(x.clone() - Rational::try_from(*y).expect("finite")));
+                    assert!(d.abs() <= f.err, "level {level}: {d} > {}", f.err);
+                }
+            }
+        }
+    }
+
+    /// The `f64` intervals contain the exact rational results of the same operations.
+    #[test]
+    fn f64_intervals_enclose_the_exact_ones() {
+        let ten = |k: usize| (0..k).fold(Rational::ONE, |a, _| a * Rational::from(10));
+        let ivs = [
+            Iv {
+                lo: q(-1, 3),
+                hi: q(2, 7),
+            },
+            Iv {
+                lo: q(1, 10),
+                hi: q(3, 10),
+            },
+            Iv {
+                lo: q(-7, 3),
+                hi: q(-1, 1_000_000_007),
+            },
+            Iv {
+                lo: ten(300) / q(3, 1),
+                hi: ten(301),
+            },
+        ];
+        let inside = |f: FIv, x: &Iv| {
+            let lo_ok =
+                f.lo == f64::NEG_INFINITY || Rational::try_from(f.lo).is_ok_and(|l| l <= x.lo);
+            let hi_ok = f.hi == f64::INFINITY || Rational::try_from(f.hi).is_ok_and(|h| h >= x.hi);
+            lo_ok && hi_ok
+        };
+        for x in &ivs {
+            assert!(inside(FIv::of(x), x));
+            assert!(inside(FIv::of(x).sq(), &x.sq()));
+            for y in &ivs {
+                let (fx, fy) = (FIv::of(x), FIv::of(y));
+                assert!(inside(fx.add(fy), &x.add(y)));
+                assert!(inside(fx.sub(fy), &x.sub(y)));
+                assert!(inside(fx.mul(fy), &x.mul(y)), "{x:?} {y:?}");
+            }
+        }
+        // ∞ − ∞ is no bound: the whole line
+        let big = FIv {
+            lo: f64::INFINITY,
+            hi: f64::INFINITY,
+        };
+        let w = big.sub(big);
+        assert!(w.lo == f64::NEG_INFINITY && w.hi == f64::INFINITY);
     }
 }

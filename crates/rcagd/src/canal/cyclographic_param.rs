@@ -280,3 +280,118 @@ pub fn canal_surface_rational(
         embedded,
     })))
 }
+
+/// A canal surface along a chain of spine pieces ([`canal_chain_rational`]): one surface
+/// over `Q` in the spine parameter per piece, with the certificates of every piece and the
+/// chain's global one.
+#[derive(Debug, Clone)]
+pub struct CanalChain {
+    /// The surface of each piece (its domain the piece's interval).
+    pub pieces: Vec<CanalSurface<Rational>>,
+    /// The last end joins the first start smoothly (a closed tube).
+    pub closed: bool,
+    /// Per piece: no local self-intersection ([`super::check_canal_regularity`]); then the
+    /// chain: no two characteristic discs at distinct points meet
+    /// ([`super::check_canal_chain_embedded`]).
+    regular: Vec<Certificate>,
+}
+
+impl Certified for CanalChain {
+    /// Every piece's own certificates (prefixed `spine piece k:`), its local regularity,
+    /// and the global check of the whole chain.
+    fn certify(&self) -> Vec<Certificate> {
+        let mut out: Vec<Certificate> = Vec::new();
+        for (k, s) in self.pieces.iter().enumerate() {
+            out.extend(s.certify().into_iter().map(|c| Certificate {
+                property: format!("spine piece {k}: {}", c.property),
+                ..c
+            }));
+        }
+        out.extend(self.regular.iter().cloned());
+        out
+    }
+}
+
+/// The canal surface along a chain of spine pieces `(m_k, r_k)` on `[a_k, b_k]`, joined end
+/// to start, exact over `Q`: each piece by [`canal_surface_pole_free`] on its interval
+/// (the options' domain is replaced by it), no local self-intersection certified per piece
+/// ([`super::check_canal_regularity`]), every joint checked to run on smoothly (the same
+/// sphere, tangent direction and `r dr/dσ`, decided exactly,
+/// [`super::canal_joint_defect`]; a corner would make the surfaces overlap on its inner
+/// side), and no two characteristic discs at distinct points of the whole chain meeting
+/// ([`super::check_canal_chain_embedded`]; across the joints and, when the last end joins
+/// the first start smoothly, through the seam) — docs/math/pipes.md#canal-global, "Chains
+/// and closed spines".
+///
+/// # Errors
+/// [`CanalError::InvalidArgument`] for an empty chain; [`CanalError::SpinePiece`] around
+/// the errors of one piece (its construction needs `Q(√d)`: `IrrationalSplit`; it is
+/// locally singular: `SingularCanal`, …); [`CanalError::DegenerateSpine`] naming a joint
+/// whose spine ends do not meet or form a corner (or where a weight or tangent vanishes),
+/// [`CanalError::InvalidArgument`] naming a joint where the radius or its slope
+/// `r dr/dσ` jumps; [`CanalError::CanalSelfIntersects`] naming the two intervals (and
+/// pieces) whose discs meet, with an exact witness pair; [`CanalError::CanalPartsNotApart`]
+/// where that stays undecided.
+pub fn canal_chain_rational(
+    chain: &[(CanalSpine<Rational>, (Rational, Rational))],
+    options: &CanalOptions,
+) -> Result<CanalChain, CanalError> {
+    use super::canal_global::{canal_joint_defect, JointDefect};
+    if chain.is_empty() {
+        return Err(CanalError::InvalidArgument("no spine piece".into()));
+    }
+    let piece_err = |k: usize| {
+        move |e: CanalError| CanalError::SpinePiece {
+            index: k,
+            source: Box::new(e),
+        }
+    };
+    for k in 0..chain.len() - 1 {
+        let ((first, (_, end)), (second, (start, _))) = (&chain[k], &chain[k + 1]);
+        if let Some(d) = canal_joint_defect(first, end, second, start) {
+            let text = format!(
+                "joint {k}/{} (the end t = {} of spine piece {k} and the start t = {} of piece {}): {d}",
+                k + 1,
+                format_scalar(end),
+                format_scalar(start),
+                k + 1
+            );
+            return Err(match d {
+                JointDefect::RadiusJump | JointDefect::SlopeJump => {
+                    CanalError::InvalidArgument(text)
+                }
+                _ => CanalError::DegenerateSpine(text),
+            });
+        }
+    }
+    let mut pieces = Vec::with_capacity(chain.len());
+    let mut regular = Vec::with_capacity(chain.len() + 1);
+    for (k, (spine, (a, b))) in chain.iter().enumerate() {
+        let opts = CanalOptions {
+            domain: Some((a.clone(), b.clone())),
+            ..options.clone()
+        };
+        match canal_surface_pole_free(spine, &opts).map_err(piece_err(k))? {
+            CanalBuild::Rational(s) => pieces.push(s),
+            CanalBuild::Extension { radicand, .. } => {
+                return Err(piece_err(k)(CanalError::IrrationalSplit {
+                    radicand: format_scalar(&radicand),
+                }))
+            }
+        }
+        let local =
+            super::regularity::check_canal_regularity(spine, (a, b)).map_err(piece_err(k))?;
+        regular.push(Certificate {
+            property: format!("spine piece {k}: {}", local.property),
+            ..local
+        });
+    }
+    let (last, first) = (&chain[chain.len() - 1], &chain[0]);
+    let closed = canal_joint_defect(&last.0, &last.1 .1, &first.0, &first.1 .0).is_none();
+    regular.push(super::canal_global::check_canal_chain_embedded(chain)?);
+    Ok(CanalChain {
+        pieces,
+        closed,
+        regular,
+    })
+}

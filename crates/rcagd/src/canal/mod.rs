@@ -78,11 +78,14 @@ pub use blend::{
     BlendSpine, PlaneEnd, SphereBlend, SpherePlaneBlend,
 };
 pub use canal_global::{
-    check_canal_chain_embedded, check_canal_chain_embedded_within, check_canal_embedded,
-    check_canal_embedded_within, check_cyclographic_embedded, check_cyclographic_embedded_within,
-    discs_meet, CANAL_GLOBAL_BOXES, CANAL_GLOBAL_DEPTH,
+    canal_joint_defect, check_canal_chain_embedded, check_canal_chain_embedded_within,
+    check_canal_embedded, check_canal_embedded_within, check_cyclographic_embedded,
+    check_cyclographic_embedded_within, discs_meet, JointDefect, CANAL_GLOBAL_BOXES,
+    CANAL_GLOBAL_DEPTH,
 };
-pub use cyclographic_param::{canal_surface_rational, CyclographicCanal, RationalCanal};
+pub use cyclographic_param::{
+    canal_chain_rational, canal_surface_rational, CanalChain, CyclographicCanal, RationalCanal,
+};
 pub use envelope::{
     canal_surface, canal_surface_approx, canal_surface_f64, canal_surface_with_split,
     krasauskas_bound, AxisChoice, CanalBuild, CanalOptions, CanalSurface, CharacteristicCircle,
