@@ -160,7 +160,7 @@ pub const FLOAT_OPS: &[FloatOp] = &[
     FloatOp {
         name: "dupin_cyclide_spheres",
         build: ops::cyclide::build_spheres::<f64>,
-        note: "the construction's exact-only decisions (the type of the pe conic through the three cycles, whether norm ratios are squares over Q, the rational point of a conic, which Gram entries are 0) are taken on the exact input (rcagd::cyclide::three_spheres_route); the construction runs in f64 with them",
+        note: "the pe conic through the three cycles and its two families of spheres are built exactly from the exact input (with its exact-only decisions: the type of the conic, whether norm ratios are squares over Q, the rational point of a conic) and rounded once to f64 (formed in f64 the conjugate conic loses the digits its Gram matrix cancels, up to 6 of them); the surface, its patches and every certificate are computed in f64",
     },
     FloatOp {
         name: "cyclide_blend",
@@ -257,6 +257,13 @@ pub const FLOAT_OPS: &[FloatOp] = &[
         build: ops::ndim::build_hypersurface::<f64>,
         note: "the 3-D picture's pole-freeness (X₀ on the domain) is decided by f64 Bernstein signs; the `homogeneous_map` value holds the exact binary values of the f64 coefficients",
     },
+    // --- session 17, floatfix ---
+    FloatOp {
+        name: "anticaustic_nd",
+        build: ops::ndim::build_anticaustic::<f64>,
+        note: "the 3-D picture's pole-freeness (X₀ on the domain) is decided by f64 Bernstein signs; the `homogeneous_map` value holds the exact binary values of the f64 coefficients",
+    },
+    // --- end of session 17, floatfix ---
     // --- session 16, floatrest: quadric, canal-blend, n-dim and RRMF ops ---
     FloatOp {
         name: "ph_rrmf",
@@ -307,7 +314,6 @@ pub const NO_FLOAT_PATH: &[(&str, &str)] = &[
     ("canal_blend_spheres", "exact-only algebra: the blend surface is rcagd::canal::canal_surface_pole_free over Q, a search over the Gaussian factorizations of |ṁ|² − ṙ² (its splittings as sums of two squares over Q), frames and methods that keeps the first pole-free and smallest build — the search of `canal_surface` (no float path); the library's CanalSurface takes no recorded splitting, frame and method to replay in f64 (canal/envelope.rs, canal/frame.rs), and blend_spheres_f64 splits from f64 complex roots: another parametrization"),
     ("canal_blend_sphere_plane", "exact-only algebra: a Möbius inversion of a sphere–sphere blend whose |ṁ|² − ṙ² must split as a sum of two squares over Q (the same search as `canal_blend_spheres`, refused when it needs Q(√d)); blend_sphere_plane_f64 splits from f64 complex roots, another parametrization"),
     ("common_transversals", "not yet written: the pencil of lines meeting the four is the kernel of a 4 × 6 system, and in f64 `Matrix::null_space` may take a rounding residue as a pivot (another basis, hence another order of the two transversals); the discriminant's sign (one, two or a complex pair), whether the transversals are rational (the exact op refuses Q(√d)) and the farthest pair of meeting points (an exact comparison with ties) are exact decisions to be recorded on the exact input and replayed (rcagd::lines::regulus takes no route yet)"),
-    ("anticaustic_nd", "tried and withdrawn (session 16; the generic builder build_anticaustic::<f64> runs): the random draw dimension = 4, mirror x₄ = u₃ + u₁²u₂²u₃²/5 − 6u₁u₂u₃² + u₁²u₂² (terms [4, 1, 0, 0, 1], [4, 1/5, 2, 2, 2], [4, -6, 1, 1, 2], [4, 1, 2, 2, 0]), c = 0, slice = [0, 0, 1/4], domain = [0, 1/4, 0, 1/4], distances = [1] differs from the exact build by 1.26e-12 relative in its offset's picture (the 1e-12 of issue 20 not met); cause not analyzed (candidates: the f64 division by |m|² and Q₀ in cancel_common, which accepts a remainder, and the degree-6 offset slice's power-to-Bernstein conversion)"),
     ("ruled_manifold_offset", "exact-only algebra: the unit normal of Theorem 5.2 comes from square tests of |v_a|², |v_b|² over Q(t) and a polynomial point of the conic X² + ΔY² − αZ² = 0 over Q(t) (rcagd_algebra::conic_point, Prop. 5.1), decided inside RuledManifold::offset on the coefficients converted to Q: in f64 they would be decided on rounded coefficients (a square over Q is no square after rounding); a float path needs the exact (λ_a, λ_b, w) passed to the f64 construction, which the library does not take yet"),
     // --- end of session 16, floatrest ---
     // --- session 16, floatsph: sphere families, conic surfaces, line congruences ---

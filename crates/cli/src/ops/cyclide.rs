@@ -10,8 +10,7 @@ use crate::model::{Geometry, Object};
 use crate::value::{ParamKind, Value};
 use rcagd::cyclide::spheres::certify_three_spheres;
 use rcagd::cyclide::{
-    blend_cones, fitting_contact_sphere, from_three_spheres, from_three_spheres_along, three_spheres_route, DualPencil,
-    DupinCyclide,
+    blend_cones, fitting_contact_sphere, from_three_spheres, DualPencil, DupinCyclide,
 };
 use rcagd::cyclographic::OrientedSphere;
 use rcagd::Certified;
@@ -111,10 +110,12 @@ radii = [1, 1, 1]
 };
 
 /// `dupin_cyclide_spheres` in `T` (one builder for the exact op and the float path).
-/// The construction's exact-only decisions (is a norm ratio a square over ℚ, the rational
-/// point of a conic, which entries are 0: `rcagd::cyclide::Route`) are taken on the exact
-/// input; in `f64` the same construction then runs with those decisions, so it builds the
-/// exact parametrization up to rounding.
+/// The pe conic through the three cycles and its two families of spheres (a few dozen
+/// operations, with the exact-only decisions: is a norm ratio a square over ℚ, the
+/// rational point of a conic, which entries are 0) are built exactly from the exact input
+/// and, in `f64`, rounded once ([`DupinCyclide::rounded`]: formed in `f64` the conjugate
+/// conic loses the digits its Gram matrix cancels); the surface, its patches and every
+/// certificate are then computed in `T`.
 pub(crate) fn build_spheres<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let centers = args.points("centers")?;
     let radii = args.opt_numbers("radii")?.unwrap_or_default();
@@ -131,11 +132,10 @@ pub(crate) fn build_spheres<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, O
         OrientedSphere::new(core::array::from_fn(|k| arith::of(&centers[i][k])), arith::of(&radii[i]))
     });
     let blame = |e: rcagd::cyclide::CyclideError| OpError::param("radii", e.to_string());
-    let cy = if arith::same_ref::<_, [OrientedSphere<Rational>; 3]>(&spheres).is_some() {
-        from_three_spheres(&spheres).map_err(blame)?
-    } else {
-        let route = three_spheres_route(&exact).map_err(blame)?;
-        from_three_spheres_along(&spheres, &mut route.replay()).map_err(blame)?
+    let exact_cy = from_three_spheres(&exact).map_err(blame)?;
+    let cy = match arith::same_ref::<_, DupinCyclide<T>>(&exact_cy) {
+        Some(cy) => cy.clone(),
+        None => DupinCyclide::<T>::rounded(&exact_cy),
     };
     let patches = if cy.conic().is_parabola() {
         let (t0, t1) = range::<T>(args, "t")?;

@@ -559,6 +559,35 @@ fn cyclides_of_the_fuzzers_three_spheres_agree() {
     }
 }
 
+/// Random draws of the float tests that failed before session 17 (docs/plans/float.md,
+/// "Session 17, floatfix"; their regression lines are in
+/// `proptest-regressions/float.txt`): point spheres whose conjugate conic, formed in
+/// `f64`, was off by 3.5e-12 and 3.0e-13 relative (now the exact families rounded once,
+/// `rcagd::cyclide::DupinCyclide::rounded`), and a draw whose `f64` contact certificate
+/// failed by its tolerance's scale (now the magnitude of its terms).
+#[test]
+fn cyclides_of_the_open_draws_agree() {
+    for (centers, radii) in [
+        (
+            "[[\"-19/7\", -1, -16], [2, 3, \"-11/2\"], [\"-32/11\", \"-7/6\", \"33/2\"]]",
+            "[\"-11/10\", -2, 0]",
+        ),
+        (
+            "[[\"33/8\", -2, 10], [\"-4/3\", \"17/3\", \"23/10\"], [13, \"-35/2\", \"-31/6\"]]",
+            "[\"34/7\", \"10/3\", \"-10/3\"]",
+        ),
+        ("[[2, 3, 2], [1, -3, 1], [2, 2, -1]]", "[-3, -1, 0]"),
+    ] {
+        let src = obj(
+            "dupin_cyclide_spheres",
+            &format!("centers = {centers}\nradii = {radii}\n"),
+        );
+        let exact = build(&src, Arithmetic::Exact).unwrap_or_else(|e| panic!("{src}: {e}"));
+        let float = build(&src, Arithmetic::Float).unwrap_or_else(|e| panic!("{src}: {e}"));
+        agree(&src, &exact, &float).unwrap();
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(32))]
 

@@ -7,7 +7,7 @@ use super::pe::{add, negligible, pe, pe_row, power_of_two_near_sqrt, scale, size
 use super::route::Route;
 use super::CyclideError;
 use rcagd_algebra::conic_point::{rational_conic_point, TernaryOutcome};
-use rcagd_algebra::{format_scalar, format_vector, Matrix, Poly, Scalar};
+use rcagd_algebra::{format_scalar, format_vector, Matrix, Poly, Rational, Scalar};
 
 /// A pe conic whose cyclographic image is a Dupin cyclide.
 #[derive(Debug, Clone, PartialEq)]
@@ -57,6 +57,15 @@ pub struct CycleCurve<F> {
 }
 
 impl<F: Scalar> CycleCurve<F> {
+    /// The exact curve with every coefficient rounded once to `F` (the nearest `f64`).
+    pub fn rounded(exact: &CycleCurve<Rational>) -> Self {
+        let r = |p: &Poly<Rational>| p.map(F::from_rational);
+        CycleCurve {
+            w: r(&exact.w),
+            p: core::array::from_fn(|i| r(&exact.p[i])),
+        }
+    }
+
     /// The cycle at the parameter `t` as a point of `R^{3,1}`, or `None` where `W(t) = 0`
     /// (a point at infinity of the conic).
     pub fn eval(&self, t: &F) -> Option<[F; 4]> {
@@ -99,6 +108,32 @@ fn quad<F: Scalar>(c0: F, c1: F, c2: F) -> Poly<F> {
 }
 
 impl<F: Scalar> PeConic<F> {
+    /// The exact conic with every entry rounded once to `F` (no validation: the exact
+    /// conic was validated).
+    pub fn rounded(exact: &PeConic<Rational>) -> Self {
+        let v = |a: &[Rational; 4]| -> [F; 4] { core::array::from_fn(|i| F::from_rational(&a[i])) };
+        match exact {
+            PeConic::Circle {
+                center,
+                u,
+                v: w,
+                rho,
+                ratio,
+            } => PeConic::Circle {
+                center: v(center),
+                u: v(u),
+                v: v(w),
+                rho: F::from_rational(rho),
+                ratio: F::from_rational(ratio),
+            },
+            PeConic::Parabola { vertex, u, n } => PeConic::Parabola {
+                vertex: v(vertex),
+                u: v(u),
+                n: v(n),
+            },
+        }
+    }
+
     /// The pe circle `C₀ + ρ (cos θ U + sin θ V)`, validated.
     ///
     /// # Errors

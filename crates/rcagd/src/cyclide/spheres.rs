@@ -26,7 +26,7 @@ use super::CyclideError;
 use crate::cyclographic::OrientedSphere;
 use rcagd_algebra::conic_point::{rational_conic_point, TernaryOutcome};
 use rcagd_algebra::{format_scalar, Certificate, Poly, Rational, Scalar};
-use rcagd_geom::certify::polynomial_is_zero_scaled;
+use rcagd_geom::certify::{polynomial_is_zero_scaled, F64_RELATIVE_TOLERANCE};
 
 /// The cyclide enveloping the spheres in oriented contact with the three oriented
 /// spheres (signed radii: reversing one sphere gives another of the four cyclides).
@@ -342,11 +342,48 @@ fn parabola_through<F: Scalar>(
 }
 
 /// `⟨W X − W A, W X − W A⟩` for the cycle curve `X = P/W` and a fixed cycle `A`: zero iff
-/// every cycle of the curve is in oriented contact with `A`.
-fn touching<F: Scalar>(c: &CycleCurve<F>, ai: &[F; 4]) -> Poly<F> {
+/// every cycle of the curve is in oriented contact with `A`; with the magnitude of the
+/// terms that make up each of its (power) coefficients, `Σₖ (|Pₖ| + |W||Aₖ|)²` on the
+/// absolute values of the coefficients (the scale of the `f64` tolerance: the identity
+/// cancels these terms to 0).
+fn touching<F: Scalar>(c: &CycleCurve<F>, ai: &[F; 4]) -> (Poly<F>, Vec<f64>) {
     let diff: [Poly<F>; 4] = core::array::from_fn(|k| &c.p[k] - &c.w.scale(&ai[k]));
-    &(&(&(&diff[0] * &diff[0]) + &(&diff[1] * &diff[1])) + &(&diff[2] * &diff[2]))
-        - &(&diff[3] * &diff[3])
+    let q = &(&(&(&diff[0] * &diff[0]) + &(&diff[1] * &diff[1])) + &(&diff[2] * &diff[2]))
+        - &(&diff[3] * &diff[3]);
+    let abs = |p: &Poly<F>| p.map(|x| x.to_f64().abs());
+    let mut magnitude: Poly<f64> = Poly::zero();
+    for (pk, ak) in c.p.iter().zip(ai) {
+        let m = &abs(pk) + &abs(&c.w).scale(&ak.to_f64().abs());
+        magnitude = &magnitude + &(&m * &m);
+    }
+    (q, magnitude.coeffs().to_vec())
+}
+
+/// `coeffs ≡ 0`: exactly, or in `f64` each coefficient within `10⁻⁹` of the magnitude
+/// of the terms that cancel in it (`magnitude[k]`), the rule of the other `f64`
+/// certificates whose identity cancels large terms to 0.
+fn zero_within<F: Scalar>(property: &str, coeffs: &[F], magnitude: &[f64]) -> Certificate {
+    if F::EXACT {
+        return polynomial_is_zero_scaled(property, coeffs, 1.0);
+    }
+    let worst = coeffs
+        .iter()
+        .enumerate()
+        .map(|(k, c)| {
+            let m = magnitude.get(k).copied().unwrap_or(0.0).max(1.0);
+            (k, c.to_f64().abs(), m)
+        })
+        .fold(None, |best: Option<(usize, f64, f64)>, x| match best {
+            Some(b) if !(x.1 / x.2 > b.1 / b.2 || x.1.is_nan()) => Some(b),
+            _ => Some(x),
+        });
+    let ok = worst.is_none_or(|(_, v, m)| v <= F64_RELATIVE_TOLERANCE * m);
+    Certificate::decide(property, ok, false, || match worst {
+        Some((k, v, m)) => {
+            format!("|coefficient {k}| = {v:e} exceeds 10⁻⁹ · {m:e} (the magnitude of its terms)")
+        }
+        None => String::new(),
+    })
 }
 
 /// Certificates that the cyclide envelops the spheres tangent to the three: each given
@@ -376,17 +413,11 @@ pub fn certify_three_spheres<F: Scalar>(
     };
     for (i, s) in spheres.iter().enumerate() {
         let ai = s.to_point();
-        let q = touching(touch_fam, &ai);
-        let sc = q
-            .coeffs()
-            .iter()
-            .map(|x| x.to_f64().abs())
-            .fold(1.0, f64::max)
-            .max(size(&ai).powi(2));
-        out.push(polynomial_is_zero_scaled(
+        let (q, magnitude) = touching(touch_fam, &ai);
+        out.push(zero_within(
             &format!("⟨{touch_name} − A{}, {touch_name} − A{}⟩ ≡ 0 (every sphere of the other family touches sphere {} in oriented contact)", i + 1, i + 1, i + 1),
             q.coeffs(),
-            sc,
+            &magnitude,
         ));
         let (label, rest): (String, Vec<F>) = match cyclide.conic() {
             PeConic::Circle {
@@ -441,4 +472,98 @@ pub fn certify_three_spheres<F: Scalar>(
         out.push(polynomial_is_zero_scaled(&label, &rest, size(&ai).max(1.0)));
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(s: &str) -> Rational {
+        s.parse().unwrap()
+    }
+
+    fn spheres<F: Scalar>(c: [[&str; 3]; 3], r: [&str; 3]) -> [OrientedSphere<F>; 3] {
+        core::array::from_fn(|i| {
+            OrientedSphere::new(
+                core::array::from_fn(|k| F::from_rational(&q(c[i][k]))),
+                F::from_rational(&q(r[i])),
+            )
+        })
+    }
+
+    /// The largest coefficient difference of two families, relative to the exact one's
+    /// largest coefficient.
+    fn family_error(exact: &CycleCurve<Rational>, f: &CycleCurve<f64>) -> f64 {
+        let all = |c: &CycleCurve<Rational>| -> Vec<f64> {
+            core::iter::once(&c.w)
+                .chain(c.p.iter())
+                .flat_map(|p| (0..3).map(|k| p.coeffs().get(k).map_or(0.0, Scalar::to_f64)))
+                .collect()
+        };
+        let e = all(exact);
+        let g: Vec<f64> = core::iter::once(&f.w)
+            .chain(f.p.iter())
+            .flat_map(|p| (0..3).map(|k| p.coeffs().get(k).copied().unwrap_or(0.0)))
+            .collect();
+        let scale = e.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        e.iter()
+            .zip(&g)
+            .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()))
+            / scale
+    }
+
+    /// A float-test draw (docs/plans/float.md, session 16): integer spheres, one a point.
+    /// The conjugate conic formed in `f64` cancels `g₁₂² − g₁₁g₂₂ = 25` against
+    /// `g₁₂² = 78961`, and its family is off by 3e-13; the exact families rounded once are
+    /// off by rounding only.
+    #[test]
+    fn rounded_families_are_accurate_where_f64_cancels() {
+        let c = [["2", "3", "2"], ["1", "-3", "1"], ["2", "2", "-1"]];
+        let r = ["-3", "-1", "0"];
+        let exact = from_three_spheres(&spheres::<Rational>(c, r)).unwrap();
+        let route = three_spheres_route(&spheres::<Rational>(c, r)).unwrap();
+        let along = from_three_spheres_along(&spheres::<f64>(c, r), &mut route.replay()).unwrap();
+        let cancelled = family_error(exact.second_family(), along.second_family());
+        assert!(cancelled > 1e-13, "the f64 conjugate lost {cancelled:e}");
+        let rounded = DupinCyclide::<f64>::rounded(&exact);
+        for (e, f) in [
+            (exact.first_family(), rounded.first_family()),
+            (exact.second_family(), rounded.second_family()),
+        ] {
+            let err = family_error(e, f);
+            assert!(err <= 2.0 * f64::EPSILON, "{err:e}");
+        }
+        assert!(certify_three_spheres(&rounded, &spheres::<f64>(c, r))
+            .iter()
+            .all(|c| c.holds && !c.exact));
+    }
+
+    /// A float-test draw (docs/plans/float.md, session 16, floatrest): the `f64`
+    /// certificate "every sphere of the other family touches sphere 1" compared its
+    /// residual with 10⁻⁹ of the larger of its own coefficients and |A₁|² (1.043e-7
+    /// against 1.0e-7), though the terms that cancel in it are far larger; it now uses
+    /// their magnitude.
+    #[test]
+    fn f64_touching_certificate_is_scaled_by_its_terms() {
+        let c = [
+            ["33/8", "-2", "10"],
+            ["-4/3", "17/3", "23/10"],
+            ["13", "-35/2", "-31/6"],
+        ];
+        let r = ["34/7", "10/3", "-10/3"];
+        let route = three_spheres_route(&spheres::<Rational>(c, r)).unwrap();
+        let s = spheres::<f64>(c, r);
+        let cy = from_three_spheres_along(&s, &mut route.replay()).unwrap();
+        // the former rule: largest |coefficient| ≤ 10⁻⁹ · max(1, its largest, |A₁|²)
+        let (q1, magnitude) = touching(cy.second_family(), &s[0].to_point());
+        let largest = q1.coeffs().iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let old_scale = largest.max(1.0).max(size(&s[0].to_point()).powi(2));
+        assert!(
+            largest > F64_RELATIVE_TOLERANCE * old_scale,
+            "{largest:e} vs {old_scale:e}"
+        );
+        assert!(magnitude.iter().fold(0.0f64, |m, x| m.max(*x)) > 1e3 * old_scale);
+        let certs = certify_three_spheres(&cy, &s);
+        assert!(certs.iter().all(|c| c.holds && !c.exact), "{certs:?}");
+    }
 }

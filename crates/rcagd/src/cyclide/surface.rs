@@ -8,7 +8,7 @@ use super::pe::{negligible, pe, size};
 use super::CyclideError;
 use crate::canal::bipoly::{patch_of, BiPoly};
 use crate::Certified;
-use rcagd_algebra::{format_scalar, Certificate, Poly, Scalar};
+use rcagd_algebra::{format_scalar, Certificate, Poly, Rational, Scalar};
 use rcagd_geom::certify::polynomial_is_zero_scaled;
 use rcagd_geom::BezierPatch;
 
@@ -148,6 +148,27 @@ impl<F: Scalar> DupinCyclide<F> {
         let first = conic.curve();
         let second = conic.conjugate_along(route)?;
         Ok(Self::from_families(conic, first, second))
+    }
+
+    /// The cyclide of an exact cyclide's pe conic and two families of spheres, each
+    /// coefficient rounded once to `F`; the surface `x`, its normal and everything built
+    /// on them (patches, certificates) are then computed in `F`.
+    ///
+    /// Why (for `F = f64`): the conjugate conic's parametrization is ill-conditioned when
+    /// the Gram matrix of `span(U, V)^⊥` in its kernel basis nearly cancels
+    /// (`g₁₂² − g₁₁g₂₂ ≪ g₁₂²`, docs/math/cyclides.md#two-families): formed in `f64` it
+    /// loses the digits of that ratio (measured: `g₁₂²/(g₁₂² − g₁₁g₂₂) = 3158` and a second
+    /// family off by 3.0e-13 relative for the integer spheres of centres (2, 3, 2),
+    /// (1, −3, 1), (2, 2, −1) and radii −3, −1, 0), and formed exactly from the rounded
+    /// input its square roots need not exist (a square over `ℚ` is no square after
+    /// rounding). Rounding the exact families once leaves an error of a few units of the
+    /// last place in each coefficient.
+    pub fn rounded(exact: &DupinCyclide<Rational>) -> Self {
+        Self::from_families(
+            PeConic::rounded(&exact.conic),
+            CycleCurve::rounded(&exact.first),
+            CycleCurve::rounded(&exact.second),
+        )
     }
 
     fn from_families(conic: PeConic<F>, first: CycleCurve<F>, second: CycleCurve<F>) -> Self {

@@ -18,7 +18,7 @@
 use super::poly::{clean, compose, cross, dot, dot_scale, mag, relabel};
 use super::NdimError;
 use crate::error::format_scalar;
-use crate::pn::poly::{cancel_common, patch_of, zero_cert};
+use crate::pn::poly::{cancel_common, div_exact, patch_of, zero_cert};
 use crate::pn::{Domain, RatFn};
 use crate::Certified;
 use rcagd_algebra::mpoly::MPoly;
@@ -322,11 +322,34 @@ impl<F: Scalar> PnHypersurface<F> {
         let mut plane = self.plane.clone();
         plane[0] = &plane[0] - &self.norm.scale(d);
         let (x0, l) = (&self.point[0], &self.norm);
-        let mut point = vec![x0 * l];
-        point.extend(
-            (1..=self.dim())
-                .map(|i| clean(&(&(&self.point[i] * l) + &(x0 * &self.plane[i]).scale(d)))),
-        );
+        // L | X₀ (X₀ = K L, e.g. an anticaustic): the first division of
+        // (X₀L, XᵢL + dX₀Eᵢ) by L is (X₀, Xᵢ + dKEᵢ), formed without dividing the offset's
+        // numerators (the same quotient over Q; in f64 a long division by an L of positive
+        // degree loses digits: 3.2e-13 relative for an anticaustic of R⁴ with deg L = 10,
+        // docs/plans/float.md, session 17); then further factors L as before
+        let cofactor = if l.total_degree().unwrap_or(0) > 0 {
+            div_exact(x0, l).filter(|k| !k.is_zero())
+        } else {
+            None
+        };
+        let mut point = match &cofactor {
+            Some(k) => {
+                let mut p = vec![x0.clone()];
+                p.extend(
+                    (1..=self.dim())
+                        .map(|i| clean(&(&self.point[i] + &(k * &self.plane[i]).scale(d)))),
+                );
+                p
+            }
+            None => {
+                let mut p = vec![x0 * l];
+                p.extend(
+                    (1..=self.dim())
+                        .map(|i| clean(&(&(&self.point[i] * l) + &(x0 * &self.plane[i]).scale(d)))),
+                );
+                p
+            }
+        };
         cancel_common(&mut point, std::slice::from_ref(l));
         let surface = PnHypersurface {
             name: format!("offset of {} at distance {}", self.name, format_scalar(d)),
