@@ -293,7 +293,7 @@ pub const FLOAT_OPS: &[FloatOp] = &[
     FloatOp {
         name: "quadric_interpolate",
         build: ops::quadric::build_interpolate::<f64>,
-        note: "the exact-only decisions are taken on the exact data and replayed (rcagd::quadric::interpolate_hermite_along): the quadric's rational point, the lowest preimage degree, the pivot columns of the interpolation system (its kernel basis) and the admissible member of the solution space; the linear system, its kernel, the member's image and the certificates are computed in f64 (the lowest-degree certificate by the f64 solve of degree n − 1; `tangent_senses` by f64 signs)",
+        note: "the exact-only decisions are taken on the exact data and replayed (rcagd::quadric::interpolate_hermite_along): the quadric's rational point, the lowest preimage degree, the fibre bases of the data points (δ chooses its formula by an exact zero test; a tangent datum's fibre position refers to that basis), the pivot columns of the interpolation system (its kernel basis), the admissible member of the solution space and the export split into pieces with weights of one sign; the linear system, its kernel, the member's image and the certificates are computed in f64 (the lowest-degree certificate by the f64 solve of degree n − 1; `tangent_senses` by f64 signs)",
     },
     // --- end of session 17, floatnew ---
 ];

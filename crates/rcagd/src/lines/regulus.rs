@@ -570,6 +570,43 @@ mod tests {
         }
     }
 
+    /// The decisions recorded on exact lines and replayed in `f64` give the exact
+    /// transversals in the same order, to rounding: four lines through points of the
+    /// x-axis and of the line `(0, s, 1)` with non-binary coordinates (tenths).
+    #[test]
+    fn replayed_transversals_are_the_exact_ones() {
+        let tenth = |n: i64| q(n) / q(10);
+        let ends = [(1, 3), (-7, 2), (4, -9), (11, 5)];
+        let lines: Vec<Line<Rational>> = ends
+            .iter()
+            .map(|&(a, b)| {
+                Line::from_affine_points(&[tenth(a), q(0), q(0)], &[q(0), tenth(b), q(1)])
+                    .expect("line")
+            })
+            .collect();
+        let (exact, route) =
+            common_transversals_recorded([&lines[0], &lines[1], &lines[2], &lines[3]])
+                .expect("exact");
+        assert_eq!(route.count(), TransversalCount::Two);
+        let CommonTransversals::Two(exact) = exact else {
+            panic!("two transversals expected")
+        };
+        let float: Vec<Line<f64>> = lines.iter().map(|l| l.map_scalar(Scalar::to_f64)).collect();
+        let replayed =
+            common_transversals_along([&float[0], &float[1], &float[2], &float[3]], &route)
+                .expect("f64");
+        let CommonTransversals::Two(replayed) = replayed else {
+            panic!("two transversals expected in f64")
+        };
+        for (e, f) in exact.iter().zip(&replayed) {
+            let e: Vec<f64> = e.coords().iter().map(Scalar::to_f64).collect();
+            let size = e.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            for (a, b) in e.iter().zip(f.coords()) {
+                assert!((a - b).abs() <= 1e-13 * size, "{e:?} vs {:?}", f.coords());
+            }
+        }
+    }
+
     #[test]
     fn perpendicular() {
         let g = aff([0, 0, 0], [1, 0, 0]);

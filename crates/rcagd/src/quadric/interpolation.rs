@@ -657,3 +657,67 @@ pub fn sample_points<F: Scalar>(curve: &BezierCurve<F>, params: &[F]) -> Vec<Hom
         .map(|t| to_hom(&helpers::eval_curve(curve, t)))
         .collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::Delta;
+    use super::*;
+
+    fn q(p: i64, d: i64) -> Rational {
+        Rational::from(p) / Rational::from(d)
+    }
+
+    /// The finding of the float path's property test: two points with tangents on the unit
+    /// sphere, one of them the south pole (where δ's fibre formula is chosen by the exact
+    /// test `k₀ − k₃ ≠ 0`, in `f64` by magnitude). Replaying the exact route (fibres,
+    /// pivots, member) gives the exact curve to rounding; the plain `f64` solve gives
+    /// another interpolant (another fibre basis, so the fibre position `(1, 1)` is another
+    /// point of the fibre).
+    #[test]
+    fn the_replayed_route_gives_the_exact_interpolant() {
+        let zero = Rational::from(0);
+        let one = Rational::from(1);
+        let data: Vec<HermiteDatum<Rational>> = vec![
+            HermiteDatum::with_tangent(
+                zero.clone(),
+                [one.clone(), zero.clone(), zero.clone(), -one.clone()],
+                [zero.clone(), -one.clone(), zero.clone(), zero.clone()],
+            ),
+            HermiteDatum::with_tangent(
+                one.clone(),
+                [one.clone(), q(-2, 3), q(-2, 3), q(1, 3)],
+                [zero.clone(), q(-1, 3), zero.clone(), q(-2, 3)],
+            ),
+        ];
+        let exact = interpolate_lowest_degree(&Delta, &data).expect("exact");
+        let route = interpolation_route(&Delta, &data, exact.preimage_degree()).expect("route");
+        let g = |x: Rational| Scalar::to_f64(&x);
+        let f = |d: &HermiteDatum<Rational>| HermiteDatum {
+            t: Scalar::to_f64(&d.t),
+            point: d.point.clone().map(g),
+            tangent: d.tangent.clone().map(|v| v.map(g)),
+            fibre_position: d.fibre_position.clone().map(g),
+        };
+        let fdata: Vec<HermiteDatum<f64>> = data.iter().map(f).collect();
+        let replayed = interpolate_hermite_along(&Delta, &fdata, &route).expect("f64");
+        let plain =
+            interpolate_hermite(&Delta, &fdata, exact.preimage_degree()).expect("plain f64");
+        // compare up to a common factor: divide by the coordinate of the exact curve's
+        // largest |entry|
+        let close = |c: &BezierCurve<f64>| {
+            let e: Vec<f64> = exact.curve().coords().iter().map(Scalar::to_f64).collect();
+            let k = (0..e.len())
+                .max_by(|&a, &b| e[a].abs().total_cmp(&e[b].abs()))
+                .expect("coordinates");
+            let (se, sf) = (e[k], c.coords()[k]);
+            e.iter()
+                .zip(c.coords())
+                .all(|(a, b)| (a / se - b / sf).abs() <= 1e-13)
+        };
+        assert!(close(replayed.curve()), "{:?}", replayed.curve());
+        assert!(
+            !close(plain.curve()),
+            "the plain f64 solve took the exact route too"
+        );
+    }
+}
