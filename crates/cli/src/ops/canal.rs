@@ -21,7 +21,10 @@ use rcagd::canal::{
     CanalSurface, Method, Orientation, RationalCanal,
 };
 use rcagd::lines::regulus_patch::RegulusPatchError;
-use rcagd::lines::{common_transversals, CommonTransversals, Line, Regulus};
+use rcagd::lines::{
+    common_transversals_along, common_transversals_recorded, CommonTransversals, Line, Regulus,
+    SqrtScalar,
+};
 use rcagd::ph::{PhCurve, PhError};
 use rcagd::Certified;
 use rcagd_algebra::quaternion::Quaternion;
@@ -108,17 +111,6 @@ fn line_certs<T: Scalar>(name: &str, l: &Line<T>) -> Vec<Certificate> {
     let parts: Vec<String> = l.coords().iter().map(format_scalar).collect();
     let coords = format!("({})", parts.join(", "));
     prefixed(&format!("{name} l = {coords}: "), l.certify())
-}
-
-/// `Ω(g, h) = 0` for every pair (transversal, given line), exactly.
-fn meets_cert(name: &str, g: &Line<Rational>, h: &Line<Rational>, hname: &str) -> Certificate {
-    let w = g.reciprocal_product(h);
-    Certificate::decide(
-        format!("{name} meets {hname}: Ω(g, h) = 0 (Gruber (1.10))"),
-        w.is_zero(),
-        true,
-        || format_rational(&w),
-    )
 }
 
 /// Blames a canal error on the parameter that controls it.
@@ -321,38 +313,65 @@ lines = [
   [[1, 0, 3], [1, 1, 3]],
 ]
 "#,
-    build: build_common_transversals,
+    build: build_common_transversals::<Rational>,
 };
 
-/// The segment of `t` between the two farthest of its meeting points with `lines`.
-fn transversal_segment(
-    t: &Line<Rational>,
-    lines: &[Line<Rational>],
-) -> Result<BezierCurve<Rational>, OpError> {
-    let mut pts: Vec<[Rational; 3]> = Vec::new();
-    for l in lines {
+/// The affine meeting points of `t` with `lines` (by the index of the line; a line met at
+/// infinity or not met is left out).
+fn meeting_points<T: Scalar>(t: &Line<T>, lines: &[Line<T>]) -> Vec<(usize, [T; 3])> {
+    let mut pts = Vec::new();
+    for (i, l) in lines.iter().enumerate() {
         if let Ok(x) = t.intersection(l) {
             if !x[0].is_zero() {
                 let w = x[0].clone();
-                pts.push([x[1].clone() / w.clone(), x[2].clone() / w.clone(), x[3].clone() / w]);
+                pts.push((
+                    i,
+                    [x[1].clone() / w.clone(), x[2].clone() / w.clone(), x[3].clone() / w],
+                ));
             }
         }
     }
+    pts
+}
+
+/// The indices of the two given lines whose meeting points with `t` are farthest apart
+/// (an exact comparison: the first pair of the largest distance), `None` if all meeting
+/// points coincide or lie at infinity.
+fn farthest_pair(t: &Line<Rational>, lines: &[Line<Rational>]) -> Option<(usize, usize)> {
+    let pts = meeting_points(t, lines);
     let mut best: Option<(Rational, usize, usize)> = None;
     for i in 0..pts.len() {
         for j in i + 1..pts.len() {
             let d2 = (0..3).fold(Rational::zero(), |a, k| {
-                let d = pts[i][k].clone() - pts[j][k].clone();
+                let d = pts[i].1[k].clone() - pts[j].1[k].clone();
                 a + d.clone() * d
             });
             if best.as_ref().is_none_or(|b| d2 > b.0) {
-                best = Some((d2, i, j));
+                best = Some((d2, pts[i].0, pts[j].0));
             }
         }
     }
-    match best {
-        Some((d2, i, j)) if !d2.is_zero() => segment(&affine(&pts[i]), &affine(&pts[j])),
-        _ => {
+    best.filter(|b| !b.0.is_zero()).map(|(_, i, j)| (i, j))
+}
+
+/// The segment of `t` between its meeting points with the lines of `pair` (the exact
+/// farthest pair, [`farthest_pair`]); without a pair a unit piece along `t`.
+fn transversal_segment<T: Scalar>(
+    t: &Line<T>,
+    lines: &[Line<T>],
+    pair: Option<(usize, usize)>,
+) -> Result<BezierCurve<T>, OpError> {
+    let pts = meeting_points(t, lines);
+    let at = |i: usize| pts.iter().find(|(k, _)| *k == i).map(|(_, p)| affine(p));
+    match pair {
+        Some((i, j)) => match (at(i), at(j)) {
+            (Some(p), Some(q)) => segment(&p, &q),
+            _ => Err(OpError::param(
+                "lines",
+                format!("the transversal meets line {i} or {j} at infinity in this arithmetic but not exactly (an ill-conditioned input): build it without --float"),
+            )),
+        },
+        None => {
             // all meeting points coincide or lie at infinity: a unit piece along the direction
             let (p, q) = t.points();
             segment(&p, &q)
@@ -360,12 +379,34 @@ fn transversal_segment(
     }
 }
 
-fn build_common_transversals(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let lines = lines_param::<Rational>(args, "lines", 4)?;
-    let res = common_transversals([&lines[0], &lines[1], &lines[2], &lines[3]])
-        .map_err(|e| OpError::param("lines", e.to_string()))?;
-    let found: Vec<Line<Rational>> = match res {
-        CommonTransversals::One(l) => vec![l],
+/// `Ω(g, h) = 0` for a pair (transversal, given line): exactly, or in `f64` to the
+/// relative tolerance of `|g|·|h|` (largest coordinates, the scale of
+/// [`Line::meets`]: a transversal's coordinates carry the rounding of the kernel and the
+/// root, relative to the whole vector, so a sum of terms whose coordinates are 0 over Q
+/// is no scale).
+fn meets_cert<T: Scalar>(name: &str, g: &Line<T>, h: &Line<T>, hname: &str) -> Certificate {
+    let w = g.reciprocal_product(h);
+    let holds = if T::EXACT {
+        w.is_zero()
+    } else {
+        let size = |l: &Line<T>| l.coords().iter().map(|x| x.to_f64().abs()).fold(0.0, f64::max);
+        w.to_f64().abs() <= rcagd_geom::certify::F64_RELATIVE_TOLERANCE * size(g) * size(h)
+    };
+    Certificate::decide(
+        format!("{name} meets {hname}: Ω(g, h) = 0 (Gruber (1.10))"),
+        holds,
+        T::EXACT,
+        || format_scalar(&w),
+    )
+}
+
+/// The exact transversals of the four lines as rational lines, or the exact op's refusal
+/// (irrational, complex, infinitely many).
+fn rational_transversals(
+    res: CommonTransversals<Rational, QuadExt>,
+) -> Result<Vec<Line<Rational>>, OpError> {
+    match res {
+        CommonTransversals::One(l) => Ok(vec![l]),
         CommonTransversals::Two(ls) => {
             let mut out = Vec::new();
             for l in &ls {
@@ -392,37 +433,88 @@ fn build_common_transversals(args: &OpArgs) -> Result<Vec<Object>, OpError> {
                 let arr: [Rational; 6] = core::array::from_fn(|k| c[k].clone());
                 out.push(Line::from_coords(arr).map_err(|e| OpError::new(e.to_string()))?);
             }
-            out
+            Ok(out)
         }
-        CommonTransversals::ComplexPair { .. } => {
-            return Err(OpError::param(
-                "lines",
-                "the four lines have no real common transversal (a conjugate complex pair)",
-            ))
-        }
-        CommonTransversals::Infinitely(_) => {
-            return Err(OpError::param(
-                "lines",
-                "the four lines have infinitely many common transversals (they lie in one regulus or a special position)",
-            ))
-        }
-    };
+        CommonTransversals::ComplexPair { .. } => Err(OpError::param(
+            "lines",
+            "the four lines have no real common transversal (a conjugate complex pair)",
+        )),
+        CommonTransversals::Infinitely(_) => Err(OpError::param(
+            "lines",
+            "the four lines have infinitely many common transversals (they lie in one regulus or a special position)",
+        )),
+    }
+}
+
+/// `common_transversals` in `T`. The exact op decides everything on the exact lines;
+/// `f64` takes the same decisions from the exact input — the kernel's pivot columns, the
+/// number of transversals and the root formula ([`rcagd::lines::TransversalRoute`]),
+/// rationality (the exact op's refusal of Q(√d)) and the farthest pair of meeting points —
+/// and computes the transversals and their segments in `f64`.
+pub(crate) fn build_common_transversals<T>(args: &OpArgs) -> Result<Vec<Object>, OpError>
+where
+    T: OpScalar + SqrtScalar,
+    T::Ext: 'static,
+{
+    let exact_lines = lines_param::<Rational>(args, "lines", 4)?;
+    let (res, route) = common_transversals_recorded([
+        &exact_lines[0],
+        &exact_lines[1],
+        &exact_lines[2],
+        &exact_lines[3],
+    ])
+        .map_err(|e| OpError::param("lines", e.to_string()))?;
+    let exact = rational_transversals(res)?;
+    let pairs: Vec<Option<(usize, usize)>> =
+        exact.iter().map(|t| farthest_pair(t, &exact_lines)).collect();
+    let (found, lines): (Vec<Line<T>>, Vec<Line<T>>) =
+        match arith::same::<_, Vec<Line<T>>>(exact) {
+            Ok(found) => (
+                found,
+                arith::same::<_, Vec<Line<T>>>(exact_lines)
+                    .map_err(|_| OpError::new("the exact lines are exact"))?,
+            ),
+            Err(_) => {
+                let lines = lines_param::<T>(args, "lines", 4)?;
+                let res = common_transversals_along([&lines[0], &lines[1], &lines[2], &lines[3]], &route)
+                    .map_err(|e| OpError::param("lines", e.to_string()))?;
+                let back = |l: &Line<T::Ext>| -> Option<Line<T>> {
+                    let c: Vec<T> = l
+                        .coords()
+                        .iter()
+                        .map(|x| Scalar::to_rational(x).map(|q| T::from_rational(&q)))
+                        .collect::<Option<_>>()?;
+                    Line::from_coords(core::array::from_fn(|k| c[k].clone())).ok()
+                };
+                let found = match res {
+                    CommonTransversals::One(l) => vec![l],
+                    CommonTransversals::Two(ls) => ls
+                        .iter()
+                        .map(back)
+                        .collect::<Option<Vec<_>>>()
+                        .ok_or_else(|| {
+                            OpError::param("lines", "the f64 construction produced a non-finite transversal (an ill-conditioned input): build it without --float")
+                        })?,
+                    _ => {
+                        return Err(OpError::new(
+                            "the replayed exact decisions gave no real transversal (not the exact input)",
+                        ))
+                    }
+                };
+                (found, lines)
+            }
+        };
     let mut certs = Vec::new();
     let mut curves = Vec::new();
-    for (k, t) in found.iter().enumerate() {
+    for (k, (t, pair)) in found.iter().zip(pairs).enumerate() {
         let name = format!("transversal {k}");
         certs.extend(line_certs(&name, t));
         for (i, l) in lines.iter().enumerate() {
             certs.push(meets_cert(&name, t, l, &format!("line {i}")));
         }
-        curves.push(transversal_segment(t, &lines)?);
+        curves.push(transversal_segment(t, &lines, pair)?);
     }
-    let geometry = if curves.len() == 1 {
-        Geometry::Curve(curves.remove(0))
-    } else {
-        Geometry::Curves(curves)
-    };
-    Ok(vec![args.object(geometry, certs)])
+    Ok(vec![arith::object::<T>(args, arith::curves(curves)?, certs)])
 }
 
 const REGULUS: OpSpec = OpSpec {

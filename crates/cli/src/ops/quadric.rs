@@ -14,9 +14,10 @@ use super::{prefixed, OpArgs, OpError, OpSpec, ParamSpec};
 use crate::model::{Geometry, Object};
 use crate::value::ParamKind;
 use num_traits::{One, Zero};
-use rcagd::quadric::interpolation::HermiteDatum;
+use rcagd::quadric::interpolation::{HermiteDatum, Interpolant};
 use rcagd::quadric::{
-    curve_image, interpolate_hermite, interpolate_lowest_degree, patch_image, sphere_cover,
+    curve_image, interpolate_hermite, interpolate_hermite_along, interpolate_lowest_degree,
+    interpolation_route, patch_image, sphere_cover,
     BiquadraticPatch, Delta, GeneralizedProjection, Hom, Psi, Quadric, QuadricError,
 };
 use rcagd::Certified;
@@ -108,7 +109,7 @@ name = "spherical_quartic"
 op = "quadric_interpolate"
 points = [[1, 0, 0], [0, 1, 0], [0, 0, 1], ["3/5", 0, "-4/5"], ["2/3", "-2/3", "1/3"]]
 "#,
-    build: build_interpolate,
+    build: build_interpolate::<Rational>,
 };
 
 const CURVE_DOC: &str =
@@ -391,7 +392,12 @@ pub(super) fn located(e: QuadricError, point_param: &'static str) -> OpError {
 /// The most interpolation points (the linear system has `4(n+1)` unknowns for degree `2n`).
 const MAX_POINTS: usize = 64;
 
-fn build_interpolate(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `quadric_interpolate` in `T`. The exact op decides everything on the exact data; `f64`
+/// takes the exact build's decisions ([`rcagd::quadric::InterpolationRoute`]: the lowest
+/// degree, the kernel's pivot columns, the admissible member) and solves the same linear
+/// problem, builds the image and checks the certificates in `f64` (the lowest-degree
+/// certificate by the `f64` solve of degree `n − 1`).
+pub(crate) fn build_interpolate<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     let t = target(args)?;
     let raw = args.points("points")?;
     let pts = raw
@@ -461,7 +467,7 @@ fn build_interpolate(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         .collect();
     let proj = t.proj.as_ref();
     let degree = args.get("degree").map(|_| args.int("degree")).transpose()?;
-    let interpolant = match degree {
+    let exact = match degree {
         Some(d) => {
             let n = usize::try_from(d)
                 .ok()
@@ -474,12 +480,37 @@ fn build_interpolate(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         }
         None => interpolate_lowest_degree(proj, &data).map_err(|e| located(e, "points"))?,
     };
+    let (t, data, interpolant, level) = match arith::same::<_, Interpolant<T>>(exact) {
+        Ok(i) => (
+            arith::same::<_, TargetIn<T>>(t).map_err(|_| OpError::new("an exact target is exact"))?,
+            arith::same::<_, Vec<HermiteDatum<T>>>(data)
+                .map_err(|_| OpError::new("exact data are exact"))?,
+            i,
+            None,
+        ),
+        Err(exact) => {
+            let route = interpolation_route(proj, &data, exact.preimage_degree())
+                .map_err(|e| located(e, "points"))?;
+            // the exact build's export split (a weight that is 0 over Q is ±ε in f64)
+            let pieces = rcagd::quadric::exportable::exportable_curve(exact.curve().clone(), &proj.quadric())
+                .map_err(|e| OpError::new(e.to_string()))?
+                .pieces
+                .len();
+            let level = pieces.trailing_zeros();
+            let tt = target_in::<T>(args)?;
+            let data_t: Vec<HermiteDatum<T>> = data.iter().map(datum_in).collect();
+            let i = interpolate_hermite_along(tt.proj.as_ref(), &data_t, &route)
+                .map_err(|e| located(e, "points"))?;
+            (tt, data_t, i, Some(level))
+        }
+    };
+    let proj = t.proj.as_ref();
     let mut certs = t.certs;
     certs.extend(interpolant.certify());
     let n = interpolant.preimage_degree();
     if degree.is_none() && n > 0 {
         // the lowest degree: the linear problem of preimage degree n − 1 has no admissible
-        // solution (decided exactly)
+        // solution (decided exactly; in f64 by the f64 solve)
         let lower = interpolate_hermite(proj, &data, n - 1);
         certs.push(Certificate::decide(
             format!(
@@ -488,12 +519,19 @@ fn build_interpolate(args: &OpArgs) -> Result<Vec<Object>, OpError> {
                 n - 1
             ),
             matches!(lower, Err(QuadricError::NoInterpolant { .. })),
-            true,
+            T::EXACT,
             || "an interpolant of lower degree exists".to_string(),
         ));
     }
     let senses = interpolant.tangent_senses().map_err(|e| located(e, "tangents"))?;
-    let (geometry, extra) = exportable_curve(interpolant.curve().clone(), &proj.quadric())?;
+    let (geometry, extra) = match level {
+        None => exportable_curve(interpolant.curve().clone(), &proj.quadric())?,
+        Some(level) => {
+            let e = rcagd::quadric::exportable::exportable_curve_at(interpolant.curve().clone(), &proj.quadric(), level)
+                .map_err(|e| OpError::new(e.to_string()))?;
+            (arith::curves(e.pieces)?, e.certificates)
+        }
+    };
     certs.extend(extra);
     let mut object = args.object(geometry, certs);
     if senses.iter().any(Option::is_some) {
@@ -513,7 +551,18 @@ fn build_interpolate(args: &OpArgs) -> Result<Vec<Object>, OpError> {
             Quantity::Vector(items),
         )]);
     }
-    Ok(vec![object])
+    Ok(vec![T::finish(object)])
+}
+
+/// An exact interpolation datum in `T`.
+fn datum_in<T: OpScalar>(d: &HermiteDatum<Rational>) -> HermiteDatum<T> {
+    let h = |p: &Hom<Rational>| -> Hom<T> { core::array::from_fn(|k| arith::of(&p[k])) };
+    HermiteDatum {
+        t: arith::of(&d.t),
+        point: h(&d.point),
+        tangent: d.tangent.as_ref().map(h),
+        fibre_position: core::array::from_fn(|k| arith::of(&d.fibre_position[k])),
+    }
 }
 
 /// Homogeneous control points in 3-space from points / weights / homogeneous.

@@ -13,7 +13,7 @@ use crate::model::Geometry;
 use crate::model::Object;
 use rcagd_geom::BezierPatch;
 use crate::value::ParamKind;
-use rcagd::envelope::{Reductions, SphereFamily, SphereFamilyEnvelope};
+use rcagd::envelope::{Recognition, Reductions, SphereFamily, SphereFamilyEnvelope};
 use rcagd::lines::NetKind;
 use rcagd::Certified;
 use rcagd::lines::SqrtScalar;
@@ -441,11 +441,16 @@ centre = [[[0, 0, 0], [0, 0, 2]], [[0, 2, 0], [0, 0, 0]], [[-1, 0, 0], [0, 0, 0]
 radius = [[0, 0, 1], [4, 0, 0]]
 domain = [1, 2, "1/4", 1]
 "#,
-    build: build_recognized,
+    build: build_recognized::<Rational>,
 };
 
 
-fn build_recognized(args: &OpArgs) -> Result<Vec<Object>, OpError> {
+/// `sphere_family_recognize` in `T`: the recognition exact, the envelope built in `T`
+/// along the exact build's reductions ([`Recognition::in_scalar`]).
+pub(crate) fn build_recognized<T>(args: &OpArgs) -> Result<Vec<Object>, OpError>
+where
+    T: OpScalar + SqrtScalar,
+{
     let centre = args.net("centre")?;
     let mut xyz: [Vec<Vec<Rational>>; 3] = Default::default();
     for (i, row) in centre.iter().enumerate() {
@@ -483,15 +488,108 @@ fn build_recognized(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         poly_io::grid_mpoly(&den)?,
     )
     .map_err(|e| OpError::param("denominator", e.to_string()))?;
+    // the recognition is a query of the exact input (ranks, the pencil's discriminant,
+    // squares in Q, kernels): decided exactly for both arithmetics
     let rec = fam
         .recognize()
         .map_err(|e| OpError::param("centre", e.to_string()))?;
+    // the `at` contacts: exactly (the exact op's object, and its decision that the contact
+    // points are rational)
+    let contacts = if args.get("at").is_some() {
+        Some(family_contacts(args, &rec)?)
+    } else {
+        None
+    };
+    let (rec, contacts) = match arith::same::<_, Recognition<T>>(rec) {
+        Ok(r) => (r, contacts),
+        Err(exact) => {
+            refuse_unverified_recognized(args, &exact)?;
+            let r = exact
+                .in_scalar::<T>(false)
+                .map_err(|e| OpError::param("centre", e.to_string()))?;
+            let c = match contacts {
+                Some(_) => Some(family_contacts_in(args, &r)?),
+                None => None,
+            };
+            (r, c)
+        }
+    };
     let certs = rec.certify();
     let mut out = envelope_object(args, rec.envelope(), certs)?;
-    if args.get("at").is_some() {
-        out.push(family_contacts(args, &rec)?);
-    }
+    out.extend(contacts);
     Ok(out)
+}
+
+/// The object `NAME_contacts` of `sphere_family_recognize` in `T` (the float path; the
+/// exact op's [`family_contacts`] has decided that the contact points are rational): the
+/// cyclographic construction at the spheres `Φ(u, v)` of the recognition in `T`
+/// ([`Recognition::cyclographic_at`]), its certificates checked in `T`.
+fn family_contacts_in<T>(args: &OpArgs, rec: &Recognition<T>) -> Result<Object, OpError>
+where
+    T: OpScalar + SqrtScalar,
+{
+    let mut curves = Vec::new();
+    let mut certs = Vec::new();
+    for uv in &args.points("at")? {
+        let [u, v] = arith::array::<T, 2>(uv, "at", "a parameter point is [u, v]")?;
+        let fc = rec
+            .cyclographic_at(&u, &v)
+            .map_err(|e| OpError::param("at", e.to_string()))?;
+        certs.extend(fc.certify());
+        let (m, _) = &fc.sphere;
+        let mut hom_m = vec![T::one()];
+        hom_m.extend(m.iter().cloned());
+        for p in &fc.points {
+            let mut h = vec![T::one()];
+            for x in p {
+                let q = Scalar::to_rational(x).ok_or_else(|| {
+                    OpError::param("at", "the f64 construction produced a non-finite contact point: build it without --float")
+                })?;
+                h.push(T::from_rational(&q));
+            }
+            curves.push(
+                rcagd_geom::BezierCurve::from_homogeneous(vec![hom_m.clone(), h])
+                    .map_err(|e| OpError::param("at", e.to_string()))?,
+            );
+        }
+    }
+    let mut o = arith::object::<T>(
+        args,
+        Geometry::Curves(arith::exact_curves(curves)?),
+        certs,
+    );
+    o.name = format!("{}_contacts", args.name());
+    Ok(o)
+}
+
+/// The recognized families whose f64 envelope is refused, as for `sphere_family_envelope`
+/// ([`refuse_unverified_f64`]): an elliptic net, the other sheet, enveloped spheres.
+fn refuse_unverified_recognized(
+    args: &OpArgs,
+    rec: &Recognition<Rational>,
+) -> Result<(), OpError> {
+    if rec.net().kind() == NetKind::Elliptic {
+        return Err(OpError::param(
+            "centre",
+            format!(
+                "the envelope of a family recognized as an elliptic net {}",
+                crate::float::UNVERIFIED_REFUSED
+            ),
+        ));
+    }
+    if args.bool("other_sheet")? {
+        return Err(OpError::param(
+            "other_sheet",
+            format!("the other sheet {}", crate::float::UNVERIFIED_REFUSED),
+        ));
+    }
+    if args.int("spheres")? > 0 {
+        return Err(OpError::param(
+            "spheres",
+            format!("drawing enveloped spheres {}", crate::float::UNVERIFIED_REFUSED),
+        ));
+    }
+    Ok(())
 }
 
 /// The object `NAME_contacts` of `sphere_family_recognize`: the cyclographic construction

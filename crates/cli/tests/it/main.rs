@@ -13,6 +13,7 @@ mod docs;
 mod exchange_weights;
 mod float;
 mod float_geo;
+mod float_new;
 mod float_pn;
 mod float_rest;
 mod float_sph;

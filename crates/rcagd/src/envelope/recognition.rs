@@ -41,7 +41,10 @@ use crate::lines::plucker::{
     coordinate_plane_points, klein_form, reciprocal_product, swap, wedge, POINT_PAIRS,
 };
 use crate::lines::{ComplexPointRow, LineNet, PointRow, SqrtScalar};
-use crate::pn::poly::{cancel_gcd, div_exact, gcd2, identity_cert, mag, normalize_content};
+use crate::pn::poly::{
+    abs_mpoly, cancel_gcd, div_exact, gcd2, identity_cert, identity_cert_within, mag,
+    normalize_content,
+};
 use crate::Certified;
 use rcagd_algebra::mpoly::MPoly;
 use rcagd_algebra::plane_positivity::{plane_positivity, PlanePositivity};
@@ -402,15 +405,86 @@ impl<F: SqrtScalar> Recognition<F> {
     }
 }
 
+impl Recognition<Rational> {
+    /// This exact recognition with its envelope built in the scalar `G` (`f64`): the
+    /// recognition's decisions — the rank of the normal lines' span, the pencil of
+    /// complexes and its discriminant (zero, a square in Q), the recovered net and support
+    /// functions — are those of this exact recognition of the input; the envelope is
+    /// constructed in `G` from the net and support functions ([`SphereFamilyEnvelope::new_along`])
+    /// replaying the common factors the exact construction divided out
+    /// ([`SphereFamilyEnvelope::reductions`]; with `other_sheet` also the other sheet's),
+    /// and the normal lines `h = E(Φ_u ∧ Φ_v)` are formed in `G` from the family's
+    /// coefficients in `G`, so that [`Certified::certify`] of the result checks, in `G`,
+    /// that they lie in both (exact) complexes and that the `G` envelope's family is the
+    /// given one.
+    ///
+    /// # Errors
+    /// [`RecognitionError::Envelope`] if a replayed factor does not divide in `G` up to
+    /// rounding.
+    pub fn in_scalar<G: Scalar>(
+        &self,
+        other_sheet: bool,
+    ) -> Result<Recognition<G>, RecognitionError> {
+        let f = |x: &Rational| G::from_rational(x);
+        let exact = if other_sheet {
+            self.envelope.clone().with_other_sheet_divisor()
+        } else {
+            self.envelope.clone()
+        };
+        let replay = exact.reductions().map(f);
+        let (a, b) = self.envelope.supports();
+        let envelope = SphereFamilyEnvelope::new_along(
+            &self.envelope.net().map_scalar(f),
+            a.map(f),
+            b.map(f),
+            Some(&replay),
+        )?;
+        let family = SphereFamily {
+            num: core::array::from_fn(|k| self.family.num[k].map(f)),
+            den: self.family.den.map(f),
+        };
+        let (pu, pv) = tangents(&family);
+        let normals = polar_omega(&wedge(&pu, &pv));
+        let p = &self.params;
+        Ok(Recognition {
+            family,
+            complexes: core::array::from_fn(|i| core::array::from_fn(|k| f(&self.complexes[i][k]))),
+            normals,
+            params: NetParameters {
+                first: p.first.map(f),
+                first_den: p.first_den.map(f),
+                second: p.second.map(f),
+                second_den: p.second_den.map(f),
+            },
+            envelope,
+            discriminant: f(&self.discriminant),
+        })
+    }
+}
+
+/// The tangent directions `Φ_u`, `Φ_v` of the family as ideal points (numerators of the
+/// quotient rule: `N_i D − N D_i`).
+fn tangents<F: Scalar>(fam: &SphereFamily<F>) -> ([MPoly<F>; 4], [MPoly<F>; 4]) {
+    let (n, d) = (&fam.num, &fam.den);
+    let tangent = |i: usize| -> [MPoly<F>; 4] {
+        core::array::from_fn(|k| &(&n[k].partial(i) * d) - &(&n[k] * &d.partial(i)))
+    };
+    (tangent(0), tangent(1))
+}
+
 impl<F: Scalar> Certified for Recognition<F> {
     /// Every normal line `h(u, v)` lies in both complexes; the recovered family equals the
     /// given one, `Φ_net(u(u, v), v(u, v)) ≡ Φ(u, v)`; and every certificate of the envelope.
+    /// For `f64` the residual of `Ω(C, h) ≡ 0` is compared with the size of its terms
+    /// (`Σ |Cᵢ||h_j|` per monomial), not with its own cancelled coefficients.
     fn certify(&self) -> Vec<Certificate> {
         let mut out = Vec::new();
+        let abs_normals: [MPoly<f64>; 6] = core::array::from_fn(|i| abs_mpoly(&self.normals[i]));
         for (k, c) in self.complexes.iter().enumerate() {
             let cp: [MPoly<F>; 6] = core::array::from_fn(|i| MPoly::constant(2, c[i].clone()));
             let v = reciprocal_product(&cp, &self.normals);
-            out.push(identity_cert(
+            let abs_c: [MPoly<f64>; 6] = core::array::from_fn(|i| abs_mpoly(&cp[i]));
+            out.push(identity_cert_within(
                 &format!(
                     "the normal lines h = E(Φ_u ∧ Φ_v) lie in the complex C{}: Ω(C{}, h(u, v)) ≡ 0 (a line net, Gruber §1.1.4)",
                     k + 1,
@@ -418,6 +492,7 @@ impl<F: Scalar> Certified for Recognition<F> {
                 ),
                 &v,
                 &MPoly::zero(2),
+                &reciprocal_product(&abs_c, &abs_normals),
             ));
         }
         out.extend(same_family_certificates(
@@ -802,12 +877,9 @@ impl<F: Scalar> Axes<F> {
 }
 
 fn recognize<F: Scalar>(fam: &SphereFamily<F>) -> Result<Recognition<F>, RecognitionError> {
-    let (n, d) = (&fam.num, &fam.den);
+    let d = &fam.den;
     // tangent directions (ideal points) by the quotient rule
-    let tangent = |i: usize| -> [MPoly<F>; 4] {
-        core::array::from_fn(|k| &(&n[k].partial(i) * d) - &(&n[k] * &d.partial(i)))
-    };
-    let (pu, pv) = (tangent(0), tangent(1));
+    let (pu, pv) = tangents(fam);
     let g = wedge(&pu, &pv);
     if g.iter().all(negligible) {
         return Err(RecognitionError::NotTwoParametric);

@@ -61,7 +61,10 @@ pub use order_one::{
 };
 pub use parametrized::ParametrizedCongruence;
 pub use plucker::{reciprocal_product, Line, LineOrigin};
-pub use regulus::{common_transversals, CommonTransversals, Regulus};
+pub use regulus::{
+    common_transversals, common_transversals_along, common_transversals_recorded,
+    CommonTransversals, Regulus, TransversalCount, TransversalRoute,
+};
 
 use crate::error::format_scalar;
 use rcagd_algebra::quadratic::sqrt_in_extension;

@@ -404,15 +404,28 @@ impl<F: Scalar> Line<F> {
     pub fn intersection(&self, other: &Line<F>) -> Result<[F; 4], LineError> {
         self.check_meeting(other)?;
         let m = other.incidence_matrix();
+        // exactly, every plane through `other` that does not contain `self` gives the
+        // point (the first is taken); in f64 the plane most transverse to `self` (the
+        // largest |p| / |u|), so that a plane nearly containing `self` does not amplify
+        // the rounding of the coordinates
+        let mut best: Option<([F; 4], f64)> = None;
         for i in 0..4 {
             let u = mat_vec(&m, &unit4(i));
+            if all_zero(&u) {
+                continue;
+            }
             if let Ok(p) = self.meet_plane(&u) {
-                if !all_zero(&u) {
+                if F::EXACT {
                     return Ok(p);
+                }
+                let q = scale_of(&p) / scale_of(&u);
+                if best.as_ref().is_none_or(|b| q > b.1) {
+                    best = Some((p, q));
                 }
             }
         }
-        Err(LineError::SameLine(fmt_vec(&self.coords)))
+        best.map(|b| b.0)
+            .ok_or_else(|| LineError::SameLine(fmt_vec(&self.coords)))
     }
 
     /// The common plane of two distinct meeting lines: `M(g)p` for a point `p ∈ h`, `p ∉ g`.

@@ -294,6 +294,42 @@ pub enum CommonTransversals<F, E> {
     Infinitely(Vec<[F; 6]>),
 }
 
+/// How many common transversals four lines have (the case [`common_transversals`]
+/// decides), without the lines.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TransversalCount {
+    /// Infinitely many (a regulus or a special position).
+    Infinitely,
+    /// One double transversal.
+    One,
+    /// Two real ones.
+    Two,
+    /// A conjugate complex pair.
+    ComplexPair,
+}
+
+/// The decisions [`common_transversals`] takes on its input, recorded on exact lines
+/// ([`common_transversals_recorded`]) and replayed in another scalar
+/// ([`common_transversals_along`]), so that an `f64` build computes the same transversals
+/// in the same order: the pivot columns of the 4 × 6 system `Ω(lᵢ, x) = 0` (the kernel
+/// basis `y, z` of the pencil; an `f64` rounding residue of an exact 0 taken as a pivot
+/// gives another basis, [`crate::cyclide::route::Route::null_space`]), the number of
+/// transversals (the discriminant `β² − q(y)q(z)` zero, positive or negative, or all of
+/// `q(y), q(z), β` zero) and which of `q(y)`, `q(z)` is non-zero (the root formula used).
+#[derive(Debug, Clone)]
+pub struct TransversalRoute {
+    kernel: crate::cyclide::route::Route,
+    count: TransversalCount,
+    branch: usize,
+}
+
+impl TransversalRoute {
+    /// The number of transversals decided.
+    pub fn count(&self) -> TransversalCount {
+        self.count
+    }
+}
+
 /// The common transversals of four lines (module docs).
 ///
 /// # Errors
@@ -301,24 +337,88 @@ pub enum CommonTransversals<F, E> {
 pub fn common_transversals<F: SqrtScalar>(
     lines: [&Line<F>; 4],
 ) -> Result<CommonTransversals<F, F::Ext>, LineError> {
+    transversals_in(lines, None).map(|(t, _)| t)
+}
+
+/// [`common_transversals`] of exact lines with its decisions ([`TransversalRoute`]).
+///
+/// # Errors
+/// As [`common_transversals`].
+pub fn common_transversals_recorded<F: SqrtScalar>(
+    lines: [&Line<F>; 4],
+) -> Result<(CommonTransversals<F, F::Ext>, TransversalRoute), LineError> {
+    transversals_in(lines, None)
+}
+
+/// [`common_transversals`] taking the decisions recorded on the exact input (`route`)
+/// instead of deciding them in `F`: every number is computed in `F`, no test is.
+///
+/// # Errors
+/// As [`common_transversals`]; [`LineError::Algebra`] if the route does not fit these lines
+/// (another number of lines in the kernel, a negative discriminant where the exact one is
+/// positive).
+pub fn common_transversals_along<F: SqrtScalar>(
+    lines: [&Line<F>; 4],
+    route: &TransversalRoute,
+) -> Result<CommonTransversals<F, F::Ext>, LineError> {
+    transversals_in(lines, Some(route)).map(|(t, _)| t)
+}
+
+fn route_error(e: crate::cyclide::CyclideError) -> LineError {
+    LineError::Algebra(rcagd_algebra::AlgebraError::NotRepresentable(e.to_string()))
+}
+
+fn transversals_in<F: SqrtScalar>(
+    lines: [&Line<F>; 4],
+    replay: Option<&TransversalRoute>,
+) -> Result<(CommonTransversals<F, F::Ext>, TransversalRoute), LineError> {
     let rows: Vec<Vec<F>> = lines.iter().map(|l| l.axis_coords().to_vec()).collect();
-    let m = Matrix::from_rows(rows).map_err(rcagd_algebra::AlgebraError::from)?;
-    let ns: Vec<[F; 6]> = m
-        .null_space()
+    let mut kernel =
+        replay.map_or_else(crate::cyclide::route::Route::record, |r| r.kernel.replay());
+    let ns: Vec<[F; 6]> = kernel
+        .null_space(&rows)
+        .map_err(route_error)?
         .into_iter()
-        .map(|v| core::array::from_fn(|k| v[k].clone()))
+        .map(|v| core::array::from_fn(|k| v.get(k).cloned().unwrap_or_else(F::zero)))
         .collect();
+    let recorded = |count: TransversalCount, branch: usize| TransversalRoute {
+        kernel: kernel.clone(),
+        count,
+        branch,
+    };
+    let count_is = |c: TransversalCount| replay.map(|r| r.count == c);
     if ns.len() != 2 {
-        return Ok(CommonTransversals::Infinitely(ns));
+        if replay.is_some_and(|r| r.count != TransversalCount::Infinitely) {
+            return Err(route_error(crate::cyclide::CyclideError::InvalidArgument(
+                "the replayed kernel of the four conditions is not a pencil".into(),
+            )));
+        }
+        let r = recorded(TransversalCount::Infinitely, 2);
+        return Ok((CommonTransversals::Infinitely(ns), r));
     }
     let (y, z) = (&ns[0], &ns[1]);
     let qy = klein_form(y);
     let qz = klein_form(z);
     let b = reciprocal_product(y, z) / F::from_i64(2);
     let s = scale_of(y).max(scale_of(z)).powi(2);
-    if [&qy, &qz, &b].iter().all(|x| is_small(*x, s)) {
-        return Ok(CommonTransversals::Infinitely(ns));
+    if count_is(TransversalCount::Infinitely)
+        .unwrap_or_else(|| [&qy, &qz, &b].iter().all(|x| is_small(*x, s)))
+    {
+        let r = recorded(TransversalCount::Infinitely, 2);
+        return Ok((CommonTransversals::Infinitely(ns), r));
     }
+    let branch = replay.map_or_else(
+        || {
+            if !is_small(&qy, s) {
+                0
+            } else if !is_small(&qz, s) {
+                1
+            } else {
+                2
+            }
+        },
+        |r| r.branch,
+    );
     let disc = b.clone() * b.clone() - qy.clone() * qz.clone();
     let e = |v: &[F; 6]| -> [F::Ext; 6] { core::array::from_fn(|k| v[k].embed()) };
     let combo = |sig: &F::Ext, v: &[F::Ext; 6], tau: &F::Ext, w: &[F::Ext; 6]| -> [F::Ext; 6] {
@@ -326,43 +426,52 @@ pub fn common_transversals<F: SqrtScalar>(
     };
     let one = F::Ext::one();
     let zero = F::Ext::zero();
-    if is_small(&disc, s * s) {
+    if count_is(TransversalCount::One).unwrap_or_else(|| is_small(&disc, s * s)) {
         // double root
-        let x: [F; 6] = if !is_small(&qy, s) {
-            let sig = -b / qy;
-            core::array::from_fn(|k| sig.clone() * y[k].clone() + z[k].clone())
-        } else if !is_small(&qz, s) {
-            let tau = -b / qz;
-            core::array::from_fn(|k| y[k].clone() + tau.clone() * z[k].clone())
-        } else {
-            y.clone()
+        let x: [F; 6] = match branch {
+            0 => {
+                let sig = -b / qy;
+                core::array::from_fn(|k| sig.clone() * y[k].clone() + z[k].clone())
+            }
+            1 => {
+                let tau = -b / qz;
+                core::array::from_fn(|k| y[k].clone() + tau.clone() * z[k].clone())
+            }
+            _ => y.clone(),
         };
-        return Ok(CommonTransversals::One(Line::from_coords_unchecked(x)));
+        let r = recorded(TransversalCount::One, branch);
+        return Ok((CommonTransversals::One(Line::from_coords_unchecked(x)), r));
     }
     let (ye, ze) = (e(y), e(z));
-    if disc > F::zero() {
+    if count_is(TransversalCount::Two).unwrap_or_else(|| disc > F::zero()) {
         let r = disc.sqrt_ext().ok_or_else(|| {
             LineError::Algebra(rcagd_algebra::AlgebraError::NotRepresentable(
                 "square root of the discriminant".into(),
             ))
         })?;
-        let (x1, x2) = if !is_small(&qy, s) {
-            let (qe, be) = (qy.embed(), b.embed());
-            let s1 = (-be.clone() + r.clone()) / qe.clone();
-            let s2 = (-be - r) / qe;
-            (combo(&s1, &ye, &one, &ze), combo(&s2, &ye, &one, &ze))
-        } else if !is_small(&qz, s) {
-            let (qe, be) = (qz.embed(), b.embed());
-            let t1 = (-be.clone() + r.clone()) / qe.clone();
-            let t2 = (-be - r) / qe;
-            (combo(&one, &ye, &t1, &ze), combo(&one, &ye, &t2, &ze))
-        } else {
-            (ye, ze)
+        let (x1, x2) = match branch {
+            0 => {
+                let (qe, be) = (qy.embed(), b.embed());
+                let s1 = (-be.clone() + r.clone()) / qe.clone();
+                let s2 = (-be - r) / qe;
+                (combo(&s1, &ye, &one, &ze), combo(&s2, &ye, &one, &ze))
+            }
+            1 => {
+                let (qe, be) = (qz.embed(), b.embed());
+                let t1 = (-be.clone() + r.clone()) / qe.clone();
+                let t2 = (-be - r) / qe;
+                (combo(&one, &ye, &t1, &ze), combo(&one, &ye, &t2, &ze))
+            }
+            _ => (ye, ze),
         };
-        return Ok(CommonTransversals::Two([
-            Line::from_coords_unchecked(x1),
-            Line::from_coords_unchecked(x2),
-        ]));
+        let rec = recorded(TransversalCount::Two, branch);
+        return Ok((
+            CommonTransversals::Two([
+                Line::from_coords_unchecked(x1),
+                Line::from_coords_unchecked(x2),
+            ]),
+            rec,
+        ));
     }
     // conjugate complex pair: qy ≠ 0 here (otherwise disc = b² ≥ 0)
     let r = (-disc).sqrt_ext().ok_or_else(|| {
@@ -373,7 +482,8 @@ pub fn common_transversals<F: SqrtScalar>(
     let qe = qy.embed();
     let re = combo(&(-b.embed() / qe.clone()), &ye, &one, &ze);
     let im = combo(&(r / qe), &ye, &zero, &ze);
-    Ok(CommonTransversals::ComplexPair { re, im })
+    let rec = recorded(TransversalCount::ComplexPair, branch);
+    Ok((CommonTransversals::ComplexPair { re, im }, rec))
 }
 
 /// The common perpendicular of two skew affine lines: the intersection of the planes
@@ -457,6 +567,43 @@ mod tests {
                 }
             }
             other => panic!("expected two transversals, got {other:?}"),
+        }
+    }
+
+    /// The decisions recorded on exact lines and replayed in `f64` give the exact
+    /// transversals in the same order, to rounding: four lines through points of the
+    /// x-axis and of the line `(0, s, 1)` with non-binary coordinates (tenths).
+    #[test]
+    fn replayed_transversals_are_the_exact_ones() {
+        let tenth = |n: i64| q(n) / q(10);
+        let ends = [(1, 3), (-7, 2), (4, -9), (11, 5)];
+        let lines: Vec<Line<Rational>> = ends
+            .iter()
+            .map(|&(a, b)| {
+                Line::from_affine_points(&[tenth(a), q(0), q(0)], &[q(0), tenth(b), q(1)])
+                    .expect("line")
+            })
+            .collect();
+        let (exact, route) =
+            common_transversals_recorded([&lines[0], &lines[1], &lines[2], &lines[3]])
+                .expect("exact");
+        assert_eq!(route.count(), TransversalCount::Two);
+        let CommonTransversals::Two(exact) = exact else {
+            panic!("two transversals expected")
+        };
+        let float: Vec<Line<f64>> = lines.iter().map(|l| l.map_scalar(Scalar::to_f64)).collect();
+        let replayed =
+            common_transversals_along([&float[0], &float[1], &float[2], &float[3]], &route)
+                .expect("f64");
+        let CommonTransversals::Two(replayed) = replayed else {
+            panic!("two transversals expected in f64")
+        };
+        for (e, f) in exact.iter().zip(&replayed) {
+            let e: Vec<f64> = e.coords().iter().map(Scalar::to_f64).collect();
+            let size = e.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            for (a, b) in e.iter().zip(f.coords()) {
+                assert!((a - b).abs() <= 1e-13 * size, "{e:?} vs {:?}", f.coords());
+            }
         }
     }
 

@@ -41,33 +41,100 @@ pub fn exportable_curve<F: Scalar>(
     q: &Mat4<F>,
 ) -> Result<Exportable<BezierCurve<F>>, GeomError> {
     match split_curve_uniform(&curve, MAX_SPLIT)? {
-        Some(pieces) if pieces.len() > 1 => {
-            let k = pieces.len();
-            let mut certs = vec![Certificate::decide(
-                format!("split into {k} pieces [i/{k}, (i+1)/{k}] with weights of one sign (export); every piece lies on the quadric: Xᵀ Q X ≡ 0"),
-                pieces.iter().all(|p| certify_curve_on_quadric(p, q, "").holds),
-                F::EXACT,
-                || "a piece is off the quadric".to_string(),
-            )];
-            let joined = pieces.windows(2).all(|w| match w {
-                [a, b] => a.control_points().last() == b.control_points().next(),
-                _ => true,
-            });
-            certs.push(Certificate::decide(
-                "consecutive pieces join exactly (equal homogeneous end points)",
-                joined,
-                F::EXACT,
-                || "two pieces do not join".to_string(),
-            ));
-            Ok(Exportable {
-                pieces,
-                certificates: certs,
-            })
-        }
+        Some(pieces) if pieces.len() > 1 => Ok(curve_split_on_quadric(
+            pieces,
+            q,
+            "with weights of one sign (export)",
+        )),
         _ => Ok(Exportable {
             pieces: vec![curve],
             certificates: Vec::new(),
         }),
+    }
+}
+
+/// As [`exportable_curve`] with the number of halvings `level` given instead of searched:
+/// the `2^level` uniform pieces. For a float build, `level` is the exact build's (`log₂`
+/// of its piece count; a Bernstein weight that is `0` over Q is a residue `±ε` in `f64`,
+/// so the search could stop at another level), as [`exportable_patch_at`].
+///
+/// # Errors
+/// [`GeomError::Parameter`] for `level > MAX_SPLIT`; errors of [`BezierCurve::restrict`].
+pub fn exportable_curve_at<F: Scalar>(
+    curve: BezierCurve<F>,
+    q: &Mat4<F>,
+    level: u32,
+) -> Result<Exportable<BezierCurve<F>>, GeomError> {
+    if level > MAX_SPLIT {
+        return Err(GeomError::Parameter(format!(
+            "exportable_curve_at: level {level} > {MAX_SPLIT}"
+        )));
+    }
+    if level == 0 {
+        return Ok(Exportable {
+            pieces: vec![curve],
+            certificates: Vec::new(),
+        });
+    }
+    let k = 1i64 << level;
+    let pieces = (0..k)
+        .map(|i| curve.restrict(&F::from_ratio(i, k), &F::from_ratio(i + 1, k)))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(curve_split_on_quadric(
+        pieces,
+        q,
+        "(the exact build's split, export)",
+    ))
+}
+
+/// The pieces of a curve on the quadric `q` with the certificates that each lies on it
+/// and that consecutive pieces join (exactly: equal homogeneous end points; `f64`: equal
+/// to `10⁻⁹` of their size, the pieces being restricted separately).
+fn curve_split_on_quadric<F: Scalar>(
+    pieces: Vec<BezierCurve<F>>,
+    q: &Mat4<F>,
+    how: &str,
+) -> Exportable<BezierCurve<F>> {
+    let k = pieces.len();
+    let mut certs = vec![Certificate::decide(
+        format!("split into {k} pieces [i/{k}, (i+1)/{k}] {how}; every piece lies on the quadric: Xᵀ Q X ≡ 0"),
+        pieces.iter().all(|p| certify_curve_on_quadric(p, q, "").holds),
+        F::EXACT,
+        || "a piece is off the quadric".to_string(),
+    )];
+    let same = |a: &[F], b: &[F]| {
+        if F::EXACT {
+            return a == b;
+        }
+        let size = a
+            .iter()
+            .chain(b)
+            .map(|x| x.to_f64().abs())
+            .fold(0.0, f64::max);
+        a.iter().zip(b).all(|(x, y)| {
+            (x.to_f64() - y.to_f64()).abs() <= rcagd_geom::certify::F64_RELATIVE_TOLERANCE * size
+        })
+    };
+    let joined = pieces.windows(2).all(|w| match w {
+        [a, b] => match (a.control_points().last(), b.control_points().next()) {
+            (Some(x), Some(y)) => same(x, y),
+            _ => true,
+        },
+        _ => true,
+    });
+    certs.push(Certificate::decide(
+        if F::EXACT {
+            "consecutive pieces join exactly (equal homogeneous end points)"
+        } else {
+            "consecutive pieces join (equal homogeneous end points to 10⁻⁹ of their size)"
+        },
+        joined,
+        F::EXACT,
+        || "two pieces do not join".to_string(),
+    ));
+    Exportable {
+        pieces,
+        certificates: certs,
     }
 }
 

@@ -450,38 +450,59 @@ fn ratio_check<F: Scalar>(image: &[Vec<F>], given: &[Vec<F>]) -> Result<F, Strin
 pub(crate) fn pick_member<F: Scalar>(
     basis: &[Vec<F>],
     deg: usize,
-    mut accept: impl FnMut(&[F]) -> bool,
+    accept: impl FnMut(&[F]) -> bool,
 ) -> Option<Vec<F>> {
+    pick_member_indexed(basis, deg, accept).map(|(_, v)| v)
+}
+
+/// [`pick_member`] with the index of the candidate taken ([`member_candidate`]).
+pub(crate) fn pick_member_indexed<F: Scalar>(
+    basis: &[Vec<F>],
+    deg: usize,
+    mut accept: impl FnMut(&[F]) -> bool,
+) -> Option<(usize, Vec<F>)> {
     let d = basis.len();
     if d == 0 {
         return None;
     }
     let tries = deg.max(1) * d.saturating_sub(1) + 2 + d;
-    for s in 0..tries {
-        let s = F::from_i64(s as i64);
-        let mut w = F::one();
-        let mut v = vec![F::zero(); basis[0].len()];
-        for b in basis {
-            for (o, x) in v.iter_mut().zip(b) {
-                *o += w.clone() * x.clone();
-            }
-            w *= s.clone();
+    (0..tries + d)
+        .find_map(|k| member_candidate(basis, deg, k).and_then(|v| accept(&v).then_some((k, v))))
+}
+
+/// The candidate number `k` of [`pick_member`]: `Σ sʲ basisⱼ` with `s = k` for the first
+/// `deg·(d − 1) + 2 + d` candidates (an `f64` one scaled to unit size), then the basis
+/// vectors one by one; `None` past the last.
+pub(crate) fn member_candidate<F: Scalar>(
+    basis: &[Vec<F>],
+    deg: usize,
+    k: usize,
+) -> Option<Vec<F>> {
+    let d = basis.len();
+    let first = basis.first()?;
+    let tries = deg.max(1) * d.saturating_sub(1) + 2 + d;
+    if k >= tries {
+        return basis.get(k - tries).cloned();
+    }
+    let s = F::from_i64(k as i64);
+    let mut w = F::one();
+    let mut v = vec![F::zero(); first.len()];
+    for b in basis {
+        for (o, x) in v.iter_mut().zip(b) {
+            *o += w.clone() * x.clone();
         }
-        if !F::EXACT {
-            // keep f64 members of unit size so that the tolerances stay meaningful
-            let n = rcagd_algebra::Rational::try_from(helpers::magnitude(&v))
-                .unwrap_or_else(|_| rcagd_algebra::Rational::from(1));
-            let inv = F::one() / F::from_rational(&n);
-            for x in v.iter_mut() {
-                *x *= inv.clone();
-            }
-        }
-        if accept(&v) {
-            return Some(v);
+        w *= s.clone();
+    }
+    if !F::EXACT {
+        // keep f64 members of unit size so that the tolerances stay meaningful
+        let n = rcagd_algebra::Rational::try_from(helpers::magnitude(&v))
+            .unwrap_or_else(|_| rcagd_algebra::Rational::from(1));
+        let inv = F::one() / F::from_rational(&n);
+        for x in v.iter_mut() {
+            *x *= inv.clone();
         }
     }
-    // also try the basis vectors one by one
-    basis.iter().find(|b| accept(b)).cloned()
+    Some(v)
 }
 
 /// The rows `ν · Σ_j wⱼ x_j = 0` (unknowns `x_j ∈ F⁴` flattened) for covectors `ν`.

@@ -22,10 +22,12 @@
 //! extension that keeps it linear.)
 
 use super::helpers::{self, fmt_scalar, fmt_vec, to_hom};
-use super::image::{curve_image, pick_member, rows_for, ImageCurve};
+use super::image::{
+    curve_image, member_candidate, pick_member, pick_member_indexed, rows_for, ImageCurve,
+};
 use super::{check_on_quadric, GeneralizedProjection, Hom, Mat4, QuadricError};
 use crate::Certified;
-use rcagd_algebra::{Certificate, Scalar};
+use rcagd_algebra::{Certificate, Rational, Scalar};
 use rcagd_geom::BezierCurve;
 
 /// One interpolation condition: the curve passes through `point` at parameter `t`, and,
@@ -314,10 +316,24 @@ fn system<F: Scalar, P: GeneralizedProjection<F> + ?Sized>(
     data: &[HermiteDatum<F>],
     n: usize,
     planes: &[Hom<F>],
+    fibres: Option<&[[Hom<Rational>; 2]]>,
 ) -> Result<Vec<Vec<F>>, QuadricError> {
     let mut rows = Vec::new();
     for (i, d) in data.iter().enumerate() {
-        let [a, b] = proj.fibre(&d.point)?;
+        let [a, b] = match fibres {
+            None => proj.fibre(&d.point)?,
+            Some(f) => {
+                let [a, b] = f.get(i).ok_or_else(|| {
+                    QuadricError::InvalidArgument(
+                        "the recorded fibres do not fit the interpolation data".into(),
+                    )
+                })?;
+                let h = |v: &Hom<Rational>| -> Hom<F> {
+                    core::array::from_fn(|k| F::from_rational(&v[k]))
+                };
+                [h(a), h(b)]
+            }
+        };
         let w = helpers::bernstein(n, &d.t);
         match &d.tangent {
             None => rows.extend(rows_for(&w, &helpers::annihilator(&[a, b]))),
@@ -369,9 +385,114 @@ fn solve_with<F: Scalar, P: GeneralizedProjection<F> + ?Sized>(
     n: usize,
     planes: &[Hom<F>],
 ) -> Result<Interpolant<F>, QuadricError> {
+    solve_along(proj, data, n, planes, None)
+}
+
+/// The decisions of an interpolation of exact data, recorded by [`interpolation_route`]
+/// and replayed in another scalar by [`interpolate_hermite_along`], so that an `f64` build
+/// solves the same linear problem and takes the same member: the preimage degree `n` (the
+/// lowest one is decided exactly: a linear problem without admissible solution), the pivot
+/// columns of the interpolation system (its reduced-row-echelon kernel basis: an `f64`
+/// rounding residue of an exact 0 is not a pivot, [`crate::cyclide::route::Route::null_space`])
+/// and the member of the solution space (the first candidate of the exact admissibility
+/// tests, `F(x(tᵢ)) ≠ 0` and regular tangents); and the fibre bases `[a, b]` of the data
+/// points (δ chooses between two formulas by an exact zero test, `f64` by magnitude,
+/// [`super::stereographic::delta_fibre`]; the fibre position `(λ, μ)` of a tangent datum
+/// refers to this basis).
+#[derive(Debug, Clone)]
+pub struct InterpolationRoute {
+    degree: usize,
+    fibres: Vec<[Hom<Rational>; 2]>,
+    kernel: crate::cyclide::route::Route,
+    member: usize,
+}
+
+impl InterpolationRoute {
+    /// The preimage degree decided.
+    pub fn degree(&self) -> usize {
+        self.degree
+    }
+}
+
+fn route_error(e: crate::cyclide::CyclideError) -> QuadricError {
+    QuadricError::InvalidArgument(e.to_string())
+}
+
+/// The decisions of [`interpolate_hermite`] of exact data at preimage degree `n`
+/// ([`InterpolationRoute`]).
+///
+/// # Errors
+/// As [`interpolate_hermite`].
+pub fn interpolation_route<P: GeneralizedProjection<Rational> + ?Sized>(
+    proj: &P,
+    data: &[HermiteDatum<Rational>],
+    n: usize,
+) -> Result<InterpolationRoute, QuadricError> {
     validate(proj, data)?;
-    let rows = system(proj, data, n, planes)?;
-    let basis = helpers::null_space(&rows, 4 * (n + 1));
+    let fibres = data
+        .iter()
+        .map(|d| proj.fibre(&d.point))
+        .collect::<Result<Vec<_>, _>>()?;
+    let rows = system(proj, data, n, &[], Some(&fibres))?;
+    let mut kernel = crate::cyclide::route::Route::record();
+    let basis = kernel
+        .null_space(&pad(rows, 4 * (n + 1)))
+        .map_err(route_error)?;
+    let (member, _) = pick_member_indexed(&basis, 4, |v| admissible(proj, data, n, v).is_ok())
+        .ok_or_else(|| QuadricError::NoInterpolant {
+            degree: n,
+            reason: "no admissible member".into(),
+        })?;
+    Ok(InterpolationRoute {
+        degree: n,
+        fibres,
+        kernel,
+        member,
+    })
+}
+
+/// [`interpolate_hermite`] taking the decisions of the exact build (`route`): the degree,
+/// the kernel's pivot columns and the member are replayed, every number is computed in `F`,
+/// and the member must be admissible in `F` too.
+///
+/// # Errors
+/// As [`interpolate_hermite`]; [`QuadricError::NoInterpolant`] if the replayed member is not
+/// admissible in `F`, [`QuadricError::InvalidArgument`] if the route does not fit the data.
+pub fn interpolate_hermite_along<F: Scalar, P: GeneralizedProjection<F> + ?Sized>(
+    proj: &P,
+    data: &[HermiteDatum<F>],
+    route: &InterpolationRoute,
+) -> Result<Interpolant<F>, QuadricError> {
+    solve_along(proj, data, route.degree, &[], Some(route))
+}
+
+/// Rows padded with zeros to `ncols` entries.
+fn pad<F: Scalar>(rows: Vec<Vec<F>>, ncols: usize) -> Vec<Vec<F>> {
+    rows.into_iter()
+        .map(|mut r| {
+            r.resize(ncols, F::zero());
+            r
+        })
+        .collect()
+}
+
+fn solve_along<F: Scalar, P: GeneralizedProjection<F> + ?Sized>(
+    proj: &P,
+    data: &[HermiteDatum<F>],
+    n: usize,
+    planes: &[Hom<F>],
+    route: Option<&InterpolationRoute>,
+) -> Result<Interpolant<F>, QuadricError> {
+    validate(proj, data)?;
+    let rows = system(proj, data, n, planes, route.map(|r| r.fibres.as_slice()))?;
+    let basis = match route {
+        None => helpers::null_space(&rows, 4 * (n + 1)),
+        Some(r) => r
+            .kernel
+            .replay()
+            .null_space(&pad(rows.clone(), 4 * (n + 1)))
+            .map_err(route_error)?,
+    };
     if basis.is_empty() {
         return Err(QuadricError::NoInterpolant {
             degree: n,
@@ -383,13 +504,31 @@ fn solve_with<F: Scalar, P: GeneralizedProjection<F> + ?Sized>(
         });
     }
     let mut last_reason = String::new();
-    let v = pick_member(&basis, 4, |v| match admissible(proj, data, n, v) {
-        Ok(()) => true,
-        Err(r) => {
-            last_reason = r;
-            false
+    let v = match route {
+        None => pick_member(&basis, 4, |v| match admissible(proj, data, n, v) {
+            Ok(()) => true,
+            Err(r) => {
+                last_reason = r;
+                false
+            }
+        }),
+        Some(r) => {
+            let v = member_candidate(&basis, 4, r.member).ok_or_else(|| {
+                QuadricError::InvalidArgument(
+                    "the recorded member is not a candidate of this solution space".into(),
+                )
+            })?;
+            match admissible(proj, data, n, &v) {
+                Ok(()) => Some(v),
+                Err(why) => {
+                    last_reason = format!(
+                        "the exact build's member is not admissible in this arithmetic: {why}"
+                    );
+                    None
+                }
+            }
         }
-    });
+    };
     let Some(v) = v else {
         return Err(QuadricError::NoInterpolant {
             degree: n,
@@ -517,4 +656,68 @@ pub fn sample_points<F: Scalar>(curve: &BezierCurve<F>, params: &[F]) -> Vec<Hom
         .iter()
         .map(|t| to_hom(&helpers::eval_curve(curve, t)))
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::Delta;
+    use super::*;
+
+    fn q(p: i64, d: i64) -> Rational {
+        Rational::from(p) / Rational::from(d)
+    }
+
+    /// The finding of the float path's property test: two points with tangents on the unit
+    /// sphere, one of them the south pole (where δ's fibre formula is chosen by the exact
+    /// test `k₀ − k₃ ≠ 0`, in `f64` by magnitude). Replaying the exact route (fibres,
+    /// pivots, member) gives the exact curve to rounding; the plain `f64` solve gives
+    /// another interpolant (another fibre basis, so the fibre position `(1, 1)` is another
+    /// point of the fibre).
+    #[test]
+    fn the_replayed_route_gives_the_exact_interpolant() {
+        let zero = Rational::from(0);
+        let one = Rational::from(1);
+        let data: Vec<HermiteDatum<Rational>> = vec![
+            HermiteDatum::with_tangent(
+                zero.clone(),
+                [one.clone(), zero.clone(), zero.clone(), -one.clone()],
+                [zero.clone(), -one.clone(), zero.clone(), zero.clone()],
+            ),
+            HermiteDatum::with_tangent(
+                one.clone(),
+                [one.clone(), q(-2, 3), q(-2, 3), q(1, 3)],
+                [zero.clone(), q(-1, 3), zero.clone(), q(-2, 3)],
+            ),
+        ];
+        let exact = interpolate_lowest_degree(&Delta, &data).expect("exact");
+        let route = interpolation_route(&Delta, &data, exact.preimage_degree()).expect("route");
+        let g = |x: Rational| Scalar::to_f64(&x);
+        let f = |d: &HermiteDatum<Rational>| HermiteDatum {
+            t: Scalar::to_f64(&d.t),
+            point: d.point.clone().map(g),
+            tangent: d.tangent.clone().map(|v| v.map(g)),
+            fibre_position: d.fibre_position.clone().map(g),
+        };
+        let fdata: Vec<HermiteDatum<f64>> = data.iter().map(f).collect();
+        let replayed = interpolate_hermite_along(&Delta, &fdata, &route).expect("f64");
+        let plain =
+            interpolate_hermite(&Delta, &fdata, exact.preimage_degree()).expect("plain f64");
+        // compare up to a common factor: divide by the coordinate of the exact curve's
+        // largest |entry|
+        let close = |c: &BezierCurve<f64>| {
+            let e: Vec<f64> = exact.curve().coords().iter().map(Scalar::to_f64).collect();
+            let k = (0..e.len())
+                .max_by(|&a, &b| e[a].abs().total_cmp(&e[b].abs()))
+                .expect("coordinates");
+            let (se, sf) = (e[k], c.coords()[k]);
+            e.iter()
+                .zip(c.coords())
+                .all(|(a, b)| (a / se - b / sf).abs() <= 1e-13)
+        };
+        assert!(close(replayed.curve()), "{:?}", replayed.curve());
+        assert!(
+            !close(plain.curve()),
+            "the plain f64 solve took the exact route too"
+        );
+    }
 }

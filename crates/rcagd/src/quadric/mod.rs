@@ -54,7 +54,8 @@ pub use image::{
     curve_image, curve_preimage, patch_image, patch_preimage, ImageCurve, ImagePatch, Preimage,
 };
 pub use interpolation::{
-    interpolate, interpolate_hermite, interpolate_lowest_degree, HermiteDatum, Interpolant,
+    interpolate, interpolate_hermite, interpolate_hermite_along, interpolate_lowest_degree,
+    interpolation_route, HermiteDatum, Interpolant, InterpolationRoute,
 };
 pub use paraboloid::Psi;
 pub use quadratic_map::QuadraticMap;
