@@ -376,7 +376,8 @@ pub(crate) fn sqrt_upper_decimal(b: &Rational) -> Rational {
 }
 
 /// `x` rounded to the grid `2⁻ᵏ`.
-fn dyadic(x: f64, k: u32) -> Option<Rational> {
+/// `x` rounded to a multiple of `2⁻ᵏ` (`None` if not finite or `k` too large).
+pub(crate) fn dyadic(x: f64, k: u32) -> Option<Rational> {
     let scale = 2f64.powi(i32::try_from(k).ok()?);
     let n = Rational::try_from((x * scale).round()).ok()?;
     // 2ᵏ is exact in f64 for k ≤ 1023
