@@ -40,7 +40,11 @@ fn small_odd_primes() -> Vec<u64> {
     let mut ps: Vec<u64> = Vec::new();
     let mut k = 3u64;
     while k < SIEVE_BOUND {
-        if ps.iter().take_while(|p| *p * *p <= k).all(|p| k % p != 0) {
+        if ps
+            .iter()
+            .take_while(|p| *p * *p <= k)
+            .all(|p| !k.is_multiple_of(*p))
+        {
             ps.push(k);
         }
         k += 2;
@@ -138,7 +142,7 @@ pub fn four_squares(n: &UBig, seed: u64) -> Option<[UBig; 4]> {
             return four_squares_small(small).map(|v| scale(v.map(UBig::from)));
         }
     }
-    let (px, py) = match u8::try_from(&m % 4u8).unwrap_or(0) {
+    let (px, py) = match &m % 4u8 {
         1 => (0u8, 0u8),
         2 => (1, 0),
         _ => (1, 1),

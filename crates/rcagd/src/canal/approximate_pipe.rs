@@ -187,10 +187,15 @@ pub fn pipe_along_spine(
             "the pipe radius must be non-zero".into(),
         ));
     }
-    let options = match tolerance {
+    let mut options = match tolerance {
         Some(t) => PhApproximationOptions::new(t.clone()),
         None => PhApproximationOptions::relative(spine),
     };
+    // the spline of a closed spine is not closed here: its two closing pieces carry
+    // coefficients of a few hundred bits, around which the exact pipe's candidate search
+    // takes minutes (docs/plans/pipes.md, "Closing the PH spline, session 17"); the pipe
+    // stays as before, exact around an open spline whose ends meet within rounding
+    options.close = false;
     let spline = approximate_by_ph_quintics(spine, &options)?;
     let (zero, one) = (Rational::ZERO, Rational::ONE);
     // the pipes around the pieces are independent: built in parallel, kept in order (the
