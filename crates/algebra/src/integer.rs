@@ -558,7 +558,19 @@ pub fn factor(n: &UBig) -> Result<Vec<(UBig, u32)>, IntegerError> {
 /// # Errors
 /// As [`factor`].
 pub fn square_free_part(n: &IBig) -> Result<(IBig, UBig, Vec<UBig>), IntegerError> {
-    let fs = factor(&n.clone().unsigned_abs())?;
+    let abs = n.clone().unsigned_abs();
+    // a perfect square (up to sign) needs no factorization: s = ±1, f = √|n|, the same
+    // answer as below (every exponent even); its factorization can be far out of reach
+    let root = abs.sqrt();
+    if &root * &root == abs && abs != UBig::ZERO {
+        let s = if *n < IBig::ZERO {
+            -IBig::ONE
+        } else {
+            IBig::ONE
+        };
+        return Ok((s, root, Vec::new()));
+    }
+    let fs = factor(&abs)?;
     let mut s = UBig::ONE;
     let mut f = UBig::ONE;
     let mut primes = Vec::new();

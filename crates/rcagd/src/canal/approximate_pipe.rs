@@ -187,15 +187,10 @@ pub fn pipe_along_spine(
             "the pipe radius must be non-zero".into(),
         ));
     }
-    let mut options = match tolerance {
+    let options = match tolerance {
         Some(t) => PhApproximationOptions::new(t.clone()),
         None => PhApproximationOptions::relative(spine),
     };
-    // the spline of a closed spine is not closed here: its two closing pieces carry
-    // coefficients of a few hundred bits, around which the exact pipe's candidate search
-    // takes minutes (docs/plans/pipes.md, "Closing the PH spline, session 17"); the pipe
-    // stays as before, exact around an open spline whose ends meet within rounding
-    options.close = false;
     let spline = approximate_by_ph_quintics(spine, &options)?;
     let (zero, one) = (Rational::ZERO, Rational::ONE);
     // the pipes around the pieces are independent: built in parallel, kept in order (the
@@ -226,9 +221,27 @@ pub fn pipe_along_spine(
     // the global check of the whole PH spline (after the pieces' local regularity)
     let curves: Vec<_> = spline.pieces().iter().map(|p| &p.curve).collect();
     let global = check_ph_chain_embedded(&curves, radius)?;
+    let mut pieces = pieces;
+    let mut seam = Vec::new();
+    if spline.is_closed() {
+        // a closed spline (the spine is G¹-closed): the rings are matched around the seam,
+        // as for an exact closed spine (`pipe_along_chain`); a seam that cannot be tiled
+        // with positive weights within the limits stays open, exact and certified
+        let mut closing = pieces.clone();
+        match super::seam::close_rings(&mut closing) {
+            Ok(certs) => {
+                pieces = closing;
+                seam = certs;
+            }
+            Err(CanalError::InvalidArgument(_)) => {}
+            Err(e) => return Err(e),
+        }
+    }
+    let mut pipe = PipeChain::from_pieces(pieces, "pipe around PH piece", global);
+    pipe.add_joins(seam);
     Ok(SpinePipe::Approximate(ApproximatePipe {
         spline,
-        pipe: PipeChain::from_pieces(pieces, "pipe around PH piece", global),
+        pipe,
         radius: radius.clone(),
     }))
 }

@@ -305,6 +305,41 @@ fn closed_spine_gives_a_closed_spline() {
     assert!(!open.is_closed());
 }
 
+/// The pipe around the closed spline is a closed tube: the seam's rings are matched, the
+/// patches form one closed shell (certified), the global check runs through the seam, and
+/// every certificate holds.
+#[test]
+fn pipe_around_a_closed_approximated_spine() {
+    let spine = closed_loop();
+    let tol = Rational::from_ratio(1, 100);
+    let r = Rational::from_ratio(1, 4);
+    let p = pipe_along_spine(
+        &spine,
+        &r,
+        Orientation::Positive,
+        ApproximationPolicy::Always,
+        Some(&tol),
+    )
+    .expect("pipe");
+    let SpinePipe::Approximate(a) = &p else {
+        panic!("expected the approximation");
+    };
+    assert!(a.spline().is_closed());
+    let certs = p.certify();
+    assert!(
+        Certificate::all_hold(&certs),
+        "{:#?}",
+        certs.iter().filter(|c| !c.holds).collect::<Vec<_>>()
+    );
+    assert!(
+        certs
+            .iter()
+            .any(|c| c.property.starts_with("the pipe is closed")),
+        "{:#?}",
+        certs.iter().map(|c| &c.property).collect::<Vec<_>>()
+    );
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(12))]
 
