@@ -704,6 +704,22 @@ mod tests {
         (UBig::ONE << p) - UBig::ONE
     }
 
+    /// A perfect square whose root is a product of two large primes (out of reach of ρ and
+    /// the ECM schedule) is answered without factoring, as the factorization would.
+    #[test]
+    fn square_free_part_of_a_hard_square() {
+        let root = mersenne(127) * mersenne(89);
+        let n = IBig::from(&root * &root);
+        let (s, f, primes) = square_free_part(&n).expect("a square");
+        assert_eq!((s, &f), (IBig::ONE, &root));
+        assert!(primes.is_empty());
+        let (s, f, _) = square_free_part(&-n).expect("minus a square");
+        assert_eq!((s, f), (-IBig::ONE, root));
+        // the general path agrees on a square it can factor
+        let (s, f, _) = square_free_part(&IBig::from(4 * 9 * 49)).expect("small");
+        assert_eq!((s, f), (IBig::ONE, UBig::from(42u8)));
+    }
+
     fn check_factorization(n: &UBig, f: &[(UBig, u32)]) {
         let back = f
             .iter()
