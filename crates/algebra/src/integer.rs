@@ -558,7 +558,19 @@ pub fn factor(n: &UBig) -> Result<Vec<(UBig, u32)>, IntegerError> {
 /// # Errors
 /// As [`factor`].
 pub fn square_free_part(n: &IBig) -> Result<(IBig, UBig, Vec<UBig>), IntegerError> {
-    let fs = factor(&n.clone().unsigned_abs())?;
+    let abs = n.clone().unsigned_abs();
+    // a perfect square (up to sign) needs no factorization: s = ±1, f = √|n|, the same
+    // answer as below (every exponent even); its factorization can be far out of reach
+    let root = abs.sqrt();
+    if &root * &root == abs && abs != UBig::ZERO {
+        let s = if *n < IBig::ZERO {
+            -IBig::ONE
+        } else {
+            IBig::ONE
+        };
+        return Ok((s, root, Vec::new()));
+    }
+    let fs = factor(&abs)?;
     let mut s = UBig::ONE;
     let mut f = UBig::ONE;
     let mut primes = Vec::new();
@@ -690,6 +702,22 @@ mod tests {
 
     fn mersenne(p: usize) -> UBig {
         (UBig::ONE << p) - UBig::ONE
+    }
+
+    /// A perfect square whose root is a product of two large primes (out of reach of ρ and
+    /// the ECM schedule) is answered without factoring, as the factorization would.
+    #[test]
+    fn square_free_part_of_a_hard_square() {
+        let root = mersenne(127) * mersenne(89);
+        let n = IBig::from(&root * &root);
+        let (s, f, primes) = square_free_part(&n).expect("a square");
+        assert_eq!((s, &f), (IBig::ONE, &root));
+        assert!(primes.is_empty());
+        let (s, f, _) = square_free_part(&-n).expect("minus a square");
+        assert_eq!((s, f), (-IBig::ONE, root));
+        // the general path agrees on a square it can factor
+        let (s, f, _) = square_free_part(&IBig::from(4 * 9 * 49)).expect("small");
+        assert_eq!((s, f), (IBig::ONE, UBig::from(42u8)));
     }
 
     fn check_factorization(n: &UBig, f: &[(UBig, u32)]) {

@@ -18,6 +18,7 @@ pub mod error;
 pub mod factor;
 pub mod factor_ext;
 pub mod integer;
+pub mod integer_squares;
 pub mod interval;
 pub mod linalg;
 pub mod mpoly;

@@ -221,9 +221,27 @@ pub fn pipe_along_spine(
     // the global check of the whole PH spline (after the pieces' local regularity)
     let curves: Vec<_> = spline.pieces().iter().map(|p| &p.curve).collect();
     let global = check_ph_chain_embedded(&curves, radius)?;
+    let mut pieces = pieces;
+    let mut seam = Vec::new();
+    if spline.is_closed() {
+        // a closed spline (the spine is G¹-closed): the rings are matched around the seam,
+        // as for an exact closed spine (`pipe_along_chain`); a seam that cannot be tiled
+        // with positive weights within the limits stays open, exact and certified
+        let mut closing = pieces.clone();
+        match super::seam::close_rings(&mut closing) {
+            Ok(certs) => {
+                pieces = closing;
+                seam = certs;
+            }
+            Err(CanalError::InvalidArgument(_)) => {}
+            Err(e) => return Err(e),
+        }
+    }
+    let mut pipe = PipeChain::from_pieces(pieces, "pipe around PH piece", global);
+    pipe.add_joins(seam);
     Ok(SpinePipe::Approximate(ApproximatePipe {
         spline,
-        pipe: PipeChain::from_pieces(pieces, "pipe around PH piece", global),
+        pipe,
         radius: radius.clone(),
     }))
 }

@@ -941,6 +941,11 @@ impl PipeChain {
         }
     }
 
+    /// More join certificates (the seam of a closed chain built elsewhere).
+    pub(crate) fn add_joins(&mut self, certs: Vec<Certificate>) {
+        self.joins.extend(certs);
+    }
+
     /// The pipe of each spine piece.
     pub fn pieces(&self) -> &[ExportableCanal] {
         &self.pieces

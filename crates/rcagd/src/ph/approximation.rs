@@ -32,6 +32,14 @@
 //! `max_j N_j / (min_j W̃_j)²` (subdividing `N` and `W̃` at `½` where that is not tight
 //! enough). As `φ` is a bijection of `[0, 1]`, the bound `ε` bounds the Fréchet distance of
 //! the two curves, hence their Hausdorff distance. All of it is exact rational arithmetic.
+//!
+//! **Closed spines.** When the spine ends where it starts with the same tangent direction
+//! (`G¹`-closed), the spline is fitted a little below the tolerance and its last two pieces
+//! are re-solved with [`super::closure::close_two_pieces`] so that it ends exactly at its
+//! start with its start tangent direction; their bounds are re-derived, and the certificates
+//! include the seam joint. If that fails within three margins (`3/4`, `1/2`, `1/8` of the
+//! tolerance) the open spline is returned ([`PhSplineApproximation::is_closed`] says which;
+//! [`PhApproximationOptions::close`] turns the closing off).
 
 use super::hodograph::{solve_qiq, PhCurve};
 use super::spatial_hermite::{golden_min, middle_coefficient};
@@ -55,6 +63,9 @@ pub struct PhApproximationOptions {
     pub tolerance: Rational,
     /// The most pieces allowed.
     pub max_pieces: usize,
+    /// Close the spline exactly when the spine is `G¹`-closed (default `true`; module docs,
+    /// "Closed spines").
+    pub close: bool,
 }
 
 impl PhApproximationOptions {
@@ -63,6 +74,7 @@ impl PhApproximationOptions {
         PhApproximationOptions {
             tolerance,
             max_pieces: DEFAULT_MAX_PIECES,
+            close: true,
         }
     }
 
@@ -136,6 +148,8 @@ pub struct PhSplineApproximation {
     spine: Vec<BezierCurve<Rational>>,
     pieces: Vec<ApproximationPiece>,
     tolerance: Rational,
+    /// The spline ends exactly where it starts, with its start tangent direction.
+    closed: bool,
 }
 
 impl PhSplineApproximation {
@@ -147,6 +161,13 @@ impl PhSplineApproximation {
     /// The PH quintics, in order.
     pub fn curves(&self) -> Vec<PhCurve<Rational>> {
         self.pieces.iter().map(|p| p.curve.clone()).collect()
+    }
+
+    /// `true` if the spline is closed: its last piece ends exactly at the first piece's start
+    /// with the first piece's start tangent direction (`G¹`). A `G¹`-closed spine gives a
+    /// closed spline (module docs, "Closed spines").
+    pub fn is_closed(&self) -> bool {
+        self.closed
     }
 
     /// The tolerance asked for.
@@ -197,6 +218,16 @@ impl PhSplineApproximation {
         }
         for (k, w) in self.pieces.windows(2).enumerate() {
             out.extend(joint_certificates(k, &w[0].curve, &w[1].curve));
+        }
+        if self.closed {
+            if let (Some(last), Some(first)) = (self.pieces.last(), self.pieces.first()) {
+                out.extend(joint_certificates_to(
+                    self.pieces.len() - 1,
+                    0,
+                    &last.curve,
+                    &first.curve,
+                ));
+            }
         }
         out.push(Certificate::decide(
             format!(
@@ -261,14 +292,21 @@ impl crate::Certified for PhSplineApproximation {
 /// `G⁰` (the next piece starts at the end point) and `G¹` (the end and start hodographs are
 /// positive multiples) between two consecutive PH pieces.
 fn joint_certificates(k: usize, a: &PhCurve<Rational>, b: &PhCurve<Rational>) -> Vec<Certificate> {
+    joint_certificates_to(k, k + 1, a, b)
+}
+
+/// [`joint_certificates`] between piece `k` and piece `next` (the seam of a closed spline:
+/// `next = 0`).
+fn joint_certificates_to(
+    k: usize,
+    next: usize,
+    a: &PhCurve<Rational>,
+    b: &PhCurve<Rational>,
+) -> Vec<Certificate> {
     let end = a.eval(&Rational::ONE);
     let start = b.start();
     let g0 = Certificate::decide(
-        format!(
-            "PH pieces {k} and {} meet (G⁰: r_{k}(1) = r_{}(0))",
-            k + 1,
-            k + 1
-        ),
+        format!("PH pieces {k} and {next} meet (G⁰: r_{k}(1) = r_{next}(0))"),
         end == *start,
         true,
         || "the end point differs from the next start point".into(),
@@ -280,10 +318,7 @@ fn joint_certificates(k: usize, a: &PhCurve<Rational>, b: &PhCurve<Rational>) ->
     let (cross, dot) = cross_dot(te, ts);
     let g1 = Certificate::decide(
         format!(
-            "PH pieces {k} and {} have the same tangent direction at the joint (G¹: r_{k}′(1) × r_{}′(0) = 0, r_{k}′(1)·r_{}′(0) > 0)",
-            k + 1,
-            k + 1,
-            k + 1
+            "PH pieces {k} and {next} have the same tangent direction at the joint (G¹: r_{k}′(1) × r_{next}′(0) = 0, r_{k}′(1)·r_{next}′(0) > 0)"
         ),
         cross.iter().all(Rational::is_zero) && dot > Rational::ZERO,
         true,
@@ -376,7 +411,8 @@ pub(crate) fn sqrt_upper_decimal(b: &Rational) -> Rational {
 }
 
 /// `x` rounded to the grid `2⁻ᵏ`.
-fn dyadic(x: f64, k: u32) -> Option<Rational> {
+/// `x` rounded to a multiple of `2⁻ᵏ` (`None` if not finite or `k` too large).
+pub(crate) fn dyadic(x: f64, k: u32) -> Option<Rational> {
     let scale = 2f64.powi(i32::try_from(k).ok()?);
     let n = Rational::try_from((x * scale).round()).ok()?;
     // 2ᵏ is exact in f64 for k ≤ 1023
@@ -733,6 +769,91 @@ pub fn approximate_by_ph_quintics(
             )));
         }
     }
+    let closed = spine
+        .last()
+        .is_some_and(|last| same_tangent_direction(last, first));
+    if !closed || !options.close {
+        return fit_open(spine, options);
+    }
+    // a G¹-closed spine: fit with a margin below the tolerance, then re-solve the last two
+    // pieces so that the spline closes exactly (module docs, "Closed spines"); a tighter
+    // fit leaves a smaller gap to close
+    for margin in [(3, 4), (1, 2), (1, 8)] {
+        let fit = PhApproximationOptions {
+            tolerance: tolerance * Rational::from_ratio(margin.0, margin.1),
+            ..options.clone()
+        };
+        let Ok(open) = fit_open(spine, &fit) else {
+            break;
+        };
+        if let Some(closed) = close_spline(open, tolerance) {
+            return Ok(closed);
+        }
+    }
+    // not closed within the limits: the open spline, as for an open spine (its seam is
+    // reported open by `is_closed` and the certificates carry no seam joint)
+    fit_open(spine, options)
+}
+
+/// The spline `open` (fitted below `tolerance`) with its last two pieces re-solved so that
+/// it ends at its start with its start tangent direction ([`super::closure`]), every piece
+/// still within `tolerance` of the spine; `None` if that fails.
+fn close_spline(
+    open: PhSplineApproximation,
+    tolerance: &Rational,
+) -> Option<PhSplineApproximation> {
+    let n = open.pieces.len();
+    if n < 2 {
+        return None;
+    }
+    let (first, pen, last) = (
+        open.pieces.first()?,
+        open.pieces.get(n - 2)?,
+        open.pieces.get(n - 1)?,
+    );
+    // the rounding grid as in `fit_piece`: a change δ of A moves r by at most ≈ 2|A|δ
+    let amax = [&pen.curve, &last.curve]
+        .iter()
+        .flat_map(|c| c.coefficients().iter())
+        .map(|a| a.to_f64().norm_sq().sqrt())
+        .fold(1e-300, f64::max);
+    let tol = Scalar::to_f64(tolerance);
+    let bits = ((512.0 * amax / tol).log2().ceil().max(8.0) as u32).min(200);
+    let (pen_curve, last_curve) =
+        super::closure::close_two_pieces(&first.curve, &pen.curve, &last.curve, bits)?;
+    let tol2 = tolerance * tolerance;
+    let redo = |p: &ApproximationPiece, curve: PhCurve<Rational>| -> Option<ApproximationPiece> {
+        let c = open.spine.get(p.spine_piece)?;
+        let b = distance_bound_squared(&curve, c, &p.interval, &p.start_slope, &tol2).ok()?;
+        let eps = sqrt_upper_decimal(&b);
+        (eps <= *tolerance).then(|| ApproximationPiece {
+            curve,
+            deviation: eps,
+            ..p.clone()
+        })
+    };
+    let (new_pen, new_last) = (redo(pen, pen_curve)?, redo(last, last_curve)?);
+    let mut pieces = open.pieces.clone();
+    pieces.truncate(n - 2);
+    pieces.push(new_pen);
+    pieces.push(new_last);
+    Some(PhSplineApproximation {
+        spine: open.spine,
+        pieces,
+        tolerance: tolerance.clone(),
+        closed: true,
+    })
+}
+
+/// The spline of [`approximate_by_ph_quintics`] without closing it (the spine is checked).
+fn fit_open(
+    spine: &[BezierCurve<Rational>],
+    options: &PhApproximationOptions,
+) -> Result<PhSplineApproximation, PhError> {
+    let tolerance = &options.tolerance;
+    let Some(first) = spine.first() else {
+        return Err(PhError::OutOfRange("no spine curve to approximate".into()));
+    };
     let start = first.eval(&Rational::ZERO)?;
     let mut carry = Carry {
         point: core::array::from_fn(|k| start.get(k).cloned().unwrap_or(Rational::ZERO)),
@@ -788,6 +909,7 @@ pub fn approximate_by_ph_quintics(
         spine: spine.to_vec(),
         pieces,
         tolerance: tolerance.clone(),
+        closed: false,
     })
 }
 

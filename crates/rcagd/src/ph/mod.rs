@@ -39,6 +39,7 @@
 
 pub mod analysis;
 pub mod approximation;
+pub mod closure;
 pub mod dph;
 pub mod dph_criteria;
 pub mod dph_forms;
