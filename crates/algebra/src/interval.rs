@@ -16,7 +16,7 @@ use crate::rational::Rational;
 use crate::scalar::Ring;
 use core::cmp::Ordering;
 use core::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
-use dashu_base::{Abs, SquareRoot, UnsignedAbs};
+use dashu_base::{Abs, Approximation, BitTest, Sign, SquareRoot, UnsignedAbs};
 use dashu_int::{IBig, UBig};
 use num_traits::{One, Zero};
 
@@ -89,6 +89,23 @@ fn shr_down(n: &IBig) -> IBig {
 /// `⌈n·2^−B⌉`.
 fn shr_up(n: &IBig) -> IBig {
     -((-n) >> GRID_BITS)
+}
+
+/// `n·2^−B` rounded to the nearest `f64` (ties to even), with the sign of the rounding
+/// error (`Positive`: the `f64` is above); `None` for more than 960 bits. The integer's
+/// correctly rounded image ([`IBig::to_f64`]) times `2^−B` is exact: the image is 0 or at
+/// least 1 in magnitude and below `2^960`, so the product is a normal `f64` and rounding
+/// commutes with the power-of-two scaling.
+fn fixed_to_f64(n: &IBig) -> Option<Approximation<f64, Sign>> {
+    if n.unsigned_abs().bit_len() > 960 {
+        return None;
+    }
+    // 2^−B, exact (B = 256 ≪ 1022)
+    let scale = f64::from_bits(((1023 - GRID_BITS) as u64) << 52);
+    Some(match n.to_f64() {
+        Approximation::Exact(x) => Approximation::Exact(x * scale),
+        Approximation::Inexact(x, s) => Approximation::Inexact(x * scale, s),
+    })
 }
 
 /// `⌊√m⌋` for `m ≥ 0`.
@@ -238,8 +255,31 @@ impl Interval {
         self.mid().to_f64().value()
     }
 
-    /// `[lo, hi]` as the two nearest `f64`s outward (for display).
+    /// `[lo, hi]` as the two nearest `f64`s outward (for display): each end point rounded
+    /// to the nearest `f64` (ties to even), then moved one `f64` outward if that rounding
+    /// went inward. Converted straight from the fixed-point integer `n` of `n·2^−B`: its
+    /// correctly rounded `f64` image and the direction of the rounding come from the
+    /// integer ([`IBig::to_f64`]), and the scaling by `2^−B` is exact (every non-zero grid
+    /// point is at least `2^−B`, far above the subnormal range), so this is the same pair
+    /// as rounding the rational end points; end points of more than 960 bits (values
+    /// above `2^704`) take the rational path.
     pub fn to_f64_bounds(&self) -> (f64, f64) {
+        if let (Some(lo), Some(hi)) = (fixed_to_f64(&self.lo), fixed_to_f64(&self.hi)) {
+            let lo = match lo {
+                Approximation::Inexact(x, Sign::Positive) => x.next_down(),
+                a => a.value(),
+            };
+            let hi = match hi {
+                Approximation::Inexact(x, Sign::Negative) => x.next_up(),
+                a => a.value(),
+            };
+            return (lo, hi);
+        }
+        self.to_f64_bounds_by_rationals()
+    }
+
+    /// [`Interval::to_f64_bounds`] through the reduced rational end points.
+    fn to_f64_bounds_by_rationals(&self) -> (f64, f64) {
         let (lq, hq) = (self.lo(), self.hi());
         let lo = lq.to_f64().value();
         let hi = hq.to_f64().value();
@@ -741,6 +781,46 @@ mod tests {
                 }
                 let dv = c.abs().max(1e-300);
                 proptest::prop_assert!(f64_contains(&x.div_positive(dv), &(u / q64(dv))));
+            }
+        }
+    }
+
+    /// A grid integer of varied size (a few bits up to 1100, beyond the 960-bit fast path),
+    /// sign and shape: 64 random bits, or an exact tie between two `f64`s (54 significant
+    /// bits ending in 1), shifted left.
+    fn any_grid_integer() -> impl proptest::strategy::Strategy<Value = IBig> {
+        use proptest::prelude::*;
+        (any::<u64>(), 0u32..3, 0usize..1040, any::<bool>()).prop_map(|(m, kind, shift, neg)| {
+            let base = match kind {
+                0 => IBig::from(m),
+                1 => IBig::from((1u64 << 53) | (m & ((1 << 53) - 1)) | 1),
+                _ => IBig::from(m >> 40),
+            };
+            let n = base << shift;
+            if neg {
+                -n
+            } else {
+                n
+            }
+        })
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+        /// The end points converted straight from the fixed-point integers are the same
+        /// `f64`s as through the reduced rationals (nearest, then one step outward if the
+        /// rounding went inward), and they enclose the exact end points.
+        #[test]
+        fn f64_bounds_from_the_integers_equal_those_from_the_rationals(
+            a in any_grid_integer(),
+            b in any_grid_integer(),
+        ) {
+            let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
+            let x = Interval { lo, hi };
+            let fast = x.to_f64_bounds();
+            proptest::prop_assert_eq!(fast, x.to_f64_bounds_by_rationals());
+            if let (Ok(l), Ok(h)) = (Rational::try_from(fast.0), Rational::try_from(fast.1)) {
+                proptest::prop_assert!(l <= x.lo() && x.hi() <= h);
             }
         }
     }

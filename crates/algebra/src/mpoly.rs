@@ -1124,6 +1124,261 @@ pub fn compose_fan_rational(
     Some(MPoly::from_sorted_terms(2, terms))
 }
 
+/// The content of a list of rationals: the positive generator `g` of the `ℤ`-module
+/// `c₁ℤ + … + c_kℤ`, i.e. `gcd(numerators)/lcm(denominators)` of the reduced fractions (so
+/// every `cᵢ/g` is an integer and these integers have no common factor); `0` for an empty
+/// or all-zero list. The same number as Euclid's algorithm on the rationals themselves,
+/// computed with one integer gcd per numerator and one per denominator.
+pub fn content_rational<'a>(cs: impl Iterator<Item = &'a Rational>) -> Rational {
+    use dashu_int::UBig;
+    let (mut g, mut l) = (UBig::ZERO, UBig::ONE);
+    for c in cs {
+        let n = dashu_base::UnsignedAbs::unsigned_abs(c.numerator());
+        if n == UBig::ZERO {
+            continue;
+        }
+        if g != UBig::ONE {
+            g = dashu_base::Gcd::gcd(&g, &n);
+        }
+        let d = c.denominator();
+        if d != &UBig::ONE && d != &l {
+            let h = dashu_base::Gcd::gcd(&l, d);
+            l = &l / &h * d;
+        }
+    }
+    Rational::from_parts(dashu_int::IBig::from(g), l)
+}
+
+/// Decides `Σₖ ±∏ⱼ f_{kj} ≡ 0` for polynomials over `ℚ` (their coefficients converted by
+/// `to_q`), **fraction-free** in one dense integer array: each factor over the common
+/// denominator of its coefficients (`f = F/L_f`), each product `∏ F_{kj}` in integers over
+/// the degree box of the sum (in each variable the largest over the products of the sum
+/// of the factors' degrees; indices add like exponents, [`DenseLayout`]) and scaled by
+/// `D/∏ L_{kj}` with `D` the least common multiple of the products' denominators, so the
+/// integer sum is `D·Σₖ ±∏ⱼ f_{kj}`: zero exactly when the polynomial identity holds.
+/// Integer products and sums only, no rational arithmetic. `Some(true)` if the identity
+/// holds, `Some(false)` if not, `None` if a coefficient does not convert or the box has
+/// more than `2¹⁸` entries (then decide it over `ℚ`).
+pub fn sum_of_products_is_zero<R: Ring>(
+    terms: &[(bool, &[&MPoly<R>])],
+    to_q: impl Fn(&R) -> Option<Rational>,
+) -> Option<bool> {
+    use dashu_int::{IBig, UBig};
+    let n = terms
+        .iter()
+        .flat_map(|(_, fs)| fs.iter())
+        .map(|p| p.nvars)
+        .max()
+        .unwrap_or(0);
+    let mut dims = vec![1usize; n];
+    for (_, fs) in terms {
+        if fs.iter().any(|p| p.is_zero()) {
+            continue;
+        }
+        for (i, d) in dims.iter_mut().enumerate() {
+            let s = fs.iter().try_fold(1usize, |s, p| {
+                s.checked_add(usize::try_from(p.degree_in(i).unwrap_or(0)).ok()?)
+            })?;
+            *d = (*d).max(s);
+        }
+    }
+    let size = dims.iter().try_fold(1usize, |s, &d| s.checked_mul(d))?;
+    if size > 1 << 18 {
+        return None;
+    }
+    let mut strides = vec![1usize; n];
+    for i in (0..n.saturating_sub(1)).rev() {
+        strides[i] = strides[i + 1] * dims[i + 1];
+    }
+    let layout = DenseLayout {
+        dims,
+        strides,
+        size,
+    };
+    type Sparse = Vec<(usize, IBig)>;
+    // the integer factors and each product's denominator
+    let mut products: Vec<(bool, Vec<Sparse>, UBig)> = Vec::with_capacity(terms.len());
+    for (negate, fs) in terms {
+        if fs.iter().any(|p| p.is_zero()) {
+            continue;
+        }
+        let mut den = UBig::ONE;
+        let mut factors = Vec::with_capacity(fs.len());
+        for p in fs.iter() {
+            let qs: Vec<Rational> = p.terms.values().map(&to_q).collect::<Option<_>>()?;
+            let (ints, l) = integers_over_common_denominator(qs.iter());
+            den *= l;
+            factors.push(
+                p.terms
+                    .keys()
+                    .map(|e| layout.index(e))
+                    .zip(ints)
+                    .collect::<Sparse>(),
+            );
+        }
+        products.push((*negate, factors, den));
+    }
+    let mut lcm = UBig::ONE;
+    for (_, _, d) in &products {
+        if d != &lcm && d != &UBig::ONE {
+            let g = dashu_base::Gcd::gcd(&lcm, d);
+            lcm = &lcm / &g * d;
+        }
+    }
+    let mut sum = vec![IBig::ZERO; size];
+    let mut tmp = vec![IBig::ZERO; size];
+    for (negate, factors, den) in products {
+        let cofactor = IBig::from(&lcm / &den);
+        let cofactor = if negate { -cofactor } else { cofactor };
+        let mut it = factors.into_iter();
+        let Some(first) = it.next() else { continue };
+        let mut cur: Sparse = first.into_iter().map(|(k, c)| (k, c * &cofactor)).collect();
+        for f in it {
+            for (i, x) in &cur {
+                crate::budget::checkpoint();
+                for (j, y) in &f {
+                    tmp[i + j] += x * y;
+                }
+            }
+            cur = tmp
+                .iter_mut()
+                .enumerate()
+                .filter(|(_, c)| **c != IBig::ZERO)
+                .map(|(k, c)| (k, core::mem::replace(c, IBig::ZERO)))
+                .collect();
+        }
+        for (k, c) in cur {
+            sum[k] += c;
+        }
+    }
+    Some(sum.iter().all(|c| c == &IBig::ZERO))
+}
+
+/// The determinant of a 4×4 matrix of polynomials over `ℚ` (given by rows, its entries'
+/// coefficients converted by `to_q`), **fraction-free** in one dense integer array: each
+/// row `r` over one common denominator `L_r` of its four entries (`det` is linear in each
+/// row, so `det(M) = det(M̃)/(L₀L₁L₂L₃)` with the integer rows `M̃_r = L_r M_r`), Laplace's
+/// expansion along the first two rows, `det M̃ = Σ_{k<l} (−1)^{k+l+1} A_{kl} B_{k'l'}`
+/// with the 2×2 minors `A_{kl}` of rows 0, 1 and `B_{k'l'}` of rows 2, 3 on the
+/// complementary columns (Laplace's theorem, e.g. Gantmacher, *The Theory of Matrices*,
+/// vol. 1, 1959, ch. I §3), every product and sum in integers over the degree box of the
+/// result (in each variable the sum over the rows of the row's largest degree; indices
+/// add like exponents, [`DenseLayout`]), and one reduction per result coefficient. The
+/// same polynomial as the expansion over `ℚ`. `None` if a coefficient does not convert or
+/// the box has more than `2¹⁸` entries (then expand over `ℚ`).
+pub fn det4_rational<R: Ring>(
+    m: [[&MPoly<R>; 4]; 4],
+    to_q: impl Fn(&R) -> Option<Rational>,
+) -> Option<MPoly<Rational>> {
+    use dashu_int::IBig;
+    let n = m.iter().flatten().map(|p| p.nvars).max().unwrap_or(0);
+    let mut dims = vec![1usize; n];
+    for row in &m {
+        for (i, d) in dims.iter_mut().enumerate() {
+            let r = row.iter().filter_map(|p| p.degree_in(i)).max().unwrap_or(0);
+            *d = d.checked_add(usize::try_from(r).ok()?)?;
+        }
+    }
+    let size = dims.iter().try_fold(1usize, |s, &d| s.checked_mul(d))?;
+    if size > 1 << 18 {
+        return None;
+    }
+    let mut strides = vec![1usize; n];
+    for i in (0..n.saturating_sub(1)).rev() {
+        strides[i] = strides[i + 1] * dims[i + 1];
+    }
+    let layout = DenseLayout {
+        dims,
+        strides,
+        size,
+    };
+    // the integer rows: sparse (index, coefficient) lists over the row's denominator
+    type Sparse = Vec<(usize, IBig)>;
+    let mut den = dashu_int::UBig::ONE;
+    let mut rows: Vec<[Sparse; 4]> = Vec::with_capacity(4);
+    for row in &m {
+        let qs: Vec<Rational> = row
+            .iter()
+            .flat_map(|p| p.terms.values().map(&to_q))
+            .collect::<Option<_>>()?;
+        let (ints, l) = integers_over_common_denominator(qs.iter());
+        den *= l;
+        let mut it = ints.into_iter();
+        let entries: [Sparse; 4] = core::array::from_fn(|k| {
+            row[k]
+                .terms
+                .keys()
+                .map(|e| (layout.index(e), it.next().unwrap_or(IBig::ZERO)))
+                .collect()
+        });
+        rows.push(entries);
+    }
+    let mut acc = vec![IBig::ZERO; size];
+    let add_product = |acc: &mut [IBig], a: &Sparse, b: &Sparse, negate: bool| {
+        for (i, x) in a {
+            crate::budget::checkpoint();
+            for (j, y) in b {
+                let t = x * y;
+                if negate {
+                    acc[i + j] -= t;
+                } else {
+                    acc[i + j] += t;
+                }
+            }
+        }
+    };
+    let drain = |acc: &mut [IBig]| -> Sparse {
+        acc.iter_mut()
+            .enumerate()
+            .filter(|(_, c)| **c != IBig::ZERO)
+            .map(|(k, c)| (k, core::mem::replace(c, IBig::ZERO)))
+            .collect()
+    };
+    // column pairs (k, l), their complements (k', l') and the signs (−1)^{k+l+1} > 0
+    const PAIRS: [[usize; 4]; 6] = [
+        [0, 1, 2, 3],
+        [0, 2, 1, 3],
+        [0, 3, 1, 2],
+        [1, 2, 0, 3],
+        [1, 3, 0, 2],
+        [2, 3, 0, 1],
+    ];
+    const PLUS: [bool; 6] = [true, false, true, true, false, true];
+    let mut minors: Vec<(Sparse, Sparse, bool)> = Vec::with_capacity(6);
+    for ([k, l, kk, ll], plus) in PAIRS.into_iter().zip(PLUS) {
+        add_product(&mut acc, &rows[0][k], &rows[1][l], false);
+        add_product(&mut acc, &rows[0][l], &rows[1][k], true);
+        let a = drain(&mut acc);
+        if a.is_empty() {
+            continue;
+        }
+        add_product(&mut acc, &rows[2][kk], &rows[3][ll], false);
+        add_product(&mut acc, &rows[2][ll], &rows[3][kk], true);
+        let b = drain(&mut acc);
+        if b.is_empty() {
+            continue;
+        }
+        minors.push((a, b, plus));
+    }
+    for (a, b, plus) in &minors {
+        add_product(&mut acc, a, b, !plus);
+    }
+    let one = den == dashu_int::UBig::ONE;
+    let terms = acc
+        .into_iter()
+        .enumerate()
+        .filter(|(_, c)| *c != IBig::ZERO)
+        .map(|(k, c)| {
+            let q = if one {
+                Rational::from(c)
+            } else {
+                Rational::from_parts(c, den.clone())
+            };
+            (layout.exponents(k), q)
+        });
+    Some(MPoly::from_sorted_terms(n, terms.collect::<Vec<_>>()))
+}
+
 /// Exact signs of a bivariate polynomial `p = Σ cᵢⱼ uⁱvʲ` over `ℚ` at rational points,
 /// fraction-free: `p = (Σ Cᵢⱼ uⁱvʲ)/L` with integers `Cᵢⱼ` (one common denominator
 /// `L > 0`), and at `u = a/b`, `v = c/e` (`b, e > 0`) the sign of `p` is the sign of the
@@ -1966,6 +2221,84 @@ mod tests {
             }
             let p2 = &p + &r;
             proptest::prop_assert_eq!(div_exact_rational(&p2, &d, 2), naive_div_exact(&p2, &d, 2));
+        }
+    }
+
+    /// `Σ ±∏` expanded term by term over `ℚ` (the definition).
+    fn sum_of_products(terms: &[(bool, Vec<&M>)], n: usize) -> M {
+        let mut acc = M::zero(n);
+        for (neg, fs) in terms {
+            let p = fs.iter().fold(M::constant(n, q(1)), |a, f| &a * *f);
+            acc = if *neg { &acc - &p } else { &acc + &p };
+        }
+        acc
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+        /// The fraction-free decision of `Σ ±∏ fᵢ ≡ 0` agrees with the expansion over `ℚ`:
+        /// on true identities (`fg + gh − g(f + h) + k² − k·k`, with a zero factor) and on the
+        /// same with a planted extra term `r` (false unless `r` is zero), in up to three
+        /// variables and with sparse high exponents.
+        #[test]
+        fn fraction_free_sum_of_products_decides_the_identity(
+            tf in proptest::collection::vec((proptest::collection::vec(0u32..4, 3), -9i64..10, 1i64..13), 0..5),
+            tg in proptest::collection::vec((proptest::collection::vec(0u32..4, 3), -9i64..10, 1i64..13), 0..5),
+            th in proptest::collection::vec((proptest::collection::vec(0u32..4, 3), -9i64..10, 1i64..13), 0..5),
+            tr in proptest::collection::vec((proptest::collection::vec(0u32..4, 3), -9i64..10, 1i64..13), 0..3),
+            n in 1usize..4,
+            spread in proptest::bool::ANY,
+        ) {
+            let stretch = |t: &Vec<(Vec<u32>, i64, i64)>| -> Vec<(Vec<u32>, i64, i64)> {
+                t.iter().map(|(e, p, d)| (e.iter().map(|k| if spread { k * 5 } else { *k }).collect(), *p, *d)).collect()
+            };
+            let (f, g, h, r) = (from_list(n, &stretch(&tf)), from_list(n, &stretch(&tg)), from_list(n, &stretch(&th)), from_list(n, &stretch(&tr)));
+            let fh = &f + &h;
+            let zero = M::zero(n);
+            let mut terms: Vec<(bool, Vec<&M>)> = vec![
+                (false, vec![&f, &g]),
+                (false, vec![&g, &h]),
+                (true, vec![&g, &fh]),
+                (false, vec![&h, &h, &f]),
+                (true, vec![&f, &h, &h]),
+                (false, vec![&r, &zero]),
+            ];
+            let decide = |t: &[(bool, Vec<&M>)]| {
+                let refs: Vec<(bool, &[&M])> = t.iter().map(|(s, fs)| (*s, fs.as_slice())).collect();
+                sum_of_products_is_zero(&refs, |c| Some(c.clone()))
+            };
+            proptest::prop_assert_eq!(decide(&terms), Some(true));
+            terms.push((false, vec![&r]));
+            let expanded = sum_of_products(&terms, n);
+            proptest::prop_assert_eq!(decide(&terms), Some(expanded.is_zero()));
+            proptest::prop_assert_eq!(expanded.is_zero(), r.is_zero());
+        }
+
+        /// The fraction-free 4×4 determinant equals the expansion along the first row over
+        /// `ℚ` (rows with different denominators, zero entries, up to three variables).
+        #[test]
+        fn fraction_free_det4_equals_the_expansion(
+            entries in proptest::collection::vec(
+                proptest::collection::vec((proptest::collection::vec(0u32..3, 3), -5i64..6, 1i64..7), 0..4), 16),
+            n in 1usize..4,
+        ) {
+            let e: Vec<M> = entries.iter().map(|t| from_list(n, t)).collect();
+            let m: [[&M; 4]; 4] = core::array::from_fn(|r| core::array::from_fn(|c| &e[4 * r + c]));
+            let minor3 = |skip: usize| -> M {
+                // rows 1..4, columns ≠ skip: the 3×3 determinant by its definition
+                let cols: Vec<usize> = (0..4).filter(|&c| c != skip).collect();
+                let a = |r: usize, k: usize| m[r][cols[k]];
+                let t = |x: &M, y: &M, z: &M| &(x * y) * z;
+                let plus = &(&t(a(1, 0), a(2, 1), a(3, 2)) + &t(a(1, 1), a(2, 2), a(3, 0))) + &t(a(1, 2), a(2, 0), a(3, 1));
+                let minus = &(&t(a(1, 2), a(2, 1), a(3, 0)) + &t(a(1, 0), a(2, 2), a(3, 1))) + &t(a(1, 1), a(2, 0), a(3, 2));
+                &plus - &minus
+            };
+            let mut det = M::zero(n);
+            for (c, entry) in m[0].iter().enumerate() {
+                let t = *entry * &minor3(c);
+                det = if c % 2 == 0 { &det + &t } else { &det - &t };
+            }
+            proptest::prop_assert_eq!(det4_rational(m, |c| Some(c.clone())), Some(det));
         }
     }
 }

@@ -8,7 +8,7 @@
 //! quadratic polynomial in `d` at every parameter point whose roots are the two principal
 //! radii there ([`PnOffset::principal_radii_at`]).
 
-use super::poly::{abs_mpoly, identity_cert_within, Domain};
+use super::poly::{abs_mpoly, identity_cert_within, proved, Domain};
 use super::surface::{check_nonzero, PnSurface};
 use super::PnError;
 use crate::error::{format_point, format_scalar};
@@ -152,7 +152,22 @@ impl<F: Scalar> Certified for PnOffset<F> {
             )
         });
         let dabs = self.distance.to_f64().abs();
+        let d = MPoly::constant(2, self.distance.clone());
         for (i, name) in [(1usize, "x"), (2, "y"), (3, "z")] {
+            let property = format!(
+                "offset point at distance {} along the unit normal ({name}): (x_d − x) ≡ d·n",
+                format_scalar(&self.distance)
+            );
+            // exact: O_i B₀ N₀ − B_i O₀ N₀ − d B₀ O₀ N_i ≡ 0 decided in integers
+            let terms: [(bool, &[&MPoly<F>]); 3] = [
+                (false, &[&o[i], &b[0], &n[0]]),
+                (true, &[&b[i], &o[0], &n[0]]),
+                (true, &[&d, &b[0], &o[0], &n[i]]),
+            ];
+            if let Some(c) = proved(&property, &terms) {
+                out.push(c);
+                continue;
+            }
             let lhs = &(&(&o[i] * &b[0]) - &(&b[i] * &o[0])) * &n[0];
             let rhs = (&(&b[0] * &o[0]) * &n[i]).scale(&self.distance);
             // the terms' magnitudes: (|O_i||B₀| + |B_i||O₀|)|N₀| + |d||B₀||O₀||N_i|
@@ -163,15 +178,7 @@ impl<F: Scalar> Certified for PnOffset<F> {
                 }
                 None => MPoly::zero(o[i].nvars()),
             };
-            out.push(identity_cert_within(
-                &format!(
-                    "offset point at distance {} along the unit normal ({name}): (x_d − x) ≡ d·n",
-                    format_scalar(&self.distance)
-                ),
-                &lhs,
-                &rhs,
-                &mag,
-            ));
+            out.push(identity_cert_within(&property, &lhs, &rhs, &mag));
         }
         let sn = self.surface.normal_polys();
         out.push(Certificate::decide(

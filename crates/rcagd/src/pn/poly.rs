@@ -161,9 +161,19 @@ pub(crate) fn det3<F: Scalar>(m: [&[MPoly<F>; 3]; 3]) -> MPoly<F> {
 /// expansion along the first two rows, `det = Σ_{k<l} (−1)^{k+l+1} A_{kl} B_{k'l'}` with
 /// the 2×2 minors `A_{kl}` of rows 0, 1 and `B_{k'l'}` of rows 2, 3 on the complementary
 /// columns (27 products at most instead of 40, fewer with zero entries; the same
-/// polynomial); for `f64` (whose rounding depends on the order) along the first row.
+/// polynomial), fraction-free in integers when the entries are rational polynomials in
+/// `(u, v)` ([`rcagd_algebra::mpoly::det4_rational`]: one common denominator per row, one
+/// reduction per result coefficient); for `f64` (whose rounding depends on the order)
+/// along the first row.
 pub(crate) fn det4<F: Scalar>(m: [&[MPoly<F>; 4]; 4]) -> MPoly<F> {
     if F::EXACT {
+        if m.iter().flat_map(|r| r.iter()).all(|p| p.nvars() == 2) {
+            let rows: [[&MPoly<F>; 4]; 4] =
+                std::array::from_fn(|r| std::array::from_fn(|k| &m[r][k]));
+            if let Some(d) = rcagd_algebra::mpoly::det4_rational(rows, F::to_rational) {
+                return d.map(F::from_rational);
+            }
+        }
         return det4_by_two_rows(m);
     }
     det4_by_first_row(m)
@@ -416,15 +426,31 @@ pub(crate) fn normalize_content<F: Scalar>(polys: &mut [MPoly<F>]) {
     if !F::EXACT {
         return;
     }
-    let mut g: Option<F> = None;
-    for p in polys.iter() {
-        for (_, c) in p.terms() {
-            g = Some(match g {
-                None => c.abs(),
-                Some(g) => rational_gcd(&g, c),
-            });
+    // rational coefficients: gcd of the numerators over the lcm of the denominators
+    // (`rcagd_algebra::mpoly::content_rational`, the number Euclid's algorithm on the
+    // rationals gives)
+    let exact: Option<Vec<Rational>> = polys
+        .iter()
+        .flat_map(|p| p.terms().map(|(_, c)| c.to_rational()))
+        .collect();
+    let g: Option<F> = match exact {
+        Some(qs) if !qs.is_empty() => Some(F::from_rational(
+            &rcagd_algebra::mpoly::content_rational(qs.iter()),
+        )),
+        Some(_) => None,
+        None => {
+            let mut g: Option<F> = None;
+            for p in polys.iter() {
+                for (_, c) in p.terms() {
+                    g = Some(match g {
+                        None => c.abs(),
+                        Some(g) => rational_gcd(&g, c),
+                    });
+                }
+            }
+            g
         }
-    }
+    };
     let Some(g) = g else { return };
     if g.is_zero() {
         return;
@@ -724,16 +750,22 @@ pub(crate) fn patch_of<F: Scalar>(
     coords: &[MPoly<F>],
     domain: &Domain<F>,
 ) -> Result<BezierPatch<F>, PnError> {
-    let local: Vec<MPoly<F>> = coords.iter().map(|p| to_local(p, domain)).collect();
-    let (m, n) = local
-        .iter()
-        .map(bidegree)
-        .fold((0, 0), |(a, b), (c, d)| (a.max(c), b.max(d)));
-    let bern: Vec<Vec<F>> = local
-        .iter()
-        .map(|p| tensor_bernstein(p, m, n))
-        .collect::<Result<_, _>>()?;
-    let dim = coords.len() - 1;
+    let (m, n, bern) = match exact_bernstein_on(coords, domain) {
+        Some(b) => b,
+        None => {
+            let local: Vec<MPoly<F>> = coords.iter().map(|p| to_local(p, domain)).collect();
+            let (m, n) = local
+                .iter()
+                .map(bidegree)
+                .fold((0, 0), |(a, b), (c, d)| (a.max(c), b.max(d)));
+            let bern: Vec<Vec<F>> = local
+                .iter()
+                .map(|p| tensor_bernstein(p, m, n))
+                .collect::<Result<_, _>>()?;
+            (m, n, bern)
+        }
+    };
+    let dim = coords.len().saturating_sub(1);
     let mut flat = Vec::with_capacity((m + 1) * (n + 1) * (dim + 1));
     for k in 0..(m + 1) * (n + 1) {
         for b in &bern {
@@ -741,6 +773,50 @@ pub(crate) fn patch_of<F: Scalar>(
         }
     }
     Ok(BezierPatch::from_flat(dim, m, n, flat)?)
+}
+
+/// For exact scalars and polynomials in `(u, v)`: the tensor Bernstein coefficients of
+/// bidegree `(m, n)` (the largest bidegree of the coordinates) of every coordinate on the
+/// rectangle, computed fraction-free from the power coefficients and the rectangle's
+/// shifts ([`bernstein::tensor_bernstein_exact`]: integer Taylor shifts and conversions,
+/// one reduction per coefficient) — the same coefficients as [`to_local`] followed by
+/// [`tensor_bernstein`] (an affine substitution with `Δu, Δv ≠ 0` keeps the bidegree).
+/// `None` for `f64`, a degenerate rectangle or a polynomial in other variables.
+fn exact_bernstein_on<F: Scalar>(
+    coords: &[MPoly<F>],
+    domain: &Domain<F>,
+) -> Option<(usize, usize, Vec<Vec<F>>)> {
+    if !F::EXACT {
+        return None;
+    }
+    let (u0, v0) = (domain.u.0.to_rational()?, domain.v.0.to_rational()?);
+    let du = domain.u.1.to_rational()? - u0.clone();
+    let dv = domain.v.1.to_rational()? - v0.clone();
+    if du == Rational::ZERO || dv == Rational::ZERO {
+        return None;
+    }
+    let (m, n) = coords
+        .iter()
+        .map(bidegree)
+        .fold((0, 0), |(a, b), (c, d)| (a.max(c), b.max(d)));
+    let bern = coords
+        .iter()
+        .map(|p| {
+            let mut power = vec![Rational::ZERO; (m + 1) * (n + 1)];
+            for (e, c) in p.terms() {
+                if e.iter().skip(2).any(|&k| k != 0) {
+                    return None;
+                }
+                let i = e.first().copied().unwrap_or(0) as usize;
+                let j = e.get(1).copied().unwrap_or(0) as usize;
+                *power.get_mut(i * (n + 1) + j)? = c.to_rational()?;
+            }
+            let b =
+                bernstein::tensor_bernstein_exact(&power, (m, n), (&u0, &du), (&v0, &dv)).ok()?;
+            Some(b.iter().map(F::from_rational).collect())
+        })
+        .collect::<Option<Vec<Vec<F>>>>()?;
+    Some((m, n, bern))
 }
 
 /// The verdict of [`sign_on_domain`].
@@ -920,6 +996,26 @@ pub(crate) fn identity_cert_within<F: Scalar>(
     })
 }
 
+/// For exact scalars: whether `Σₖ ±∏ⱼ f_{kj} ≡ 0` holds, decided fraction-free in
+/// integers ([`rcagd_algebra::mpoly::sum_of_products_is_zero`]; the same decision as
+/// expanding the products over `ℚ`). `None` for `f64` or when the integer form does not
+/// apply; callers then expand over the scalars (which also formats the residual).
+pub(crate) fn exact_identity_holds<F: Scalar>(terms: &[(bool, &[&MPoly<F>])]) -> Option<bool> {
+    if !F::EXACT {
+        return None;
+    }
+    rcagd_algebra::mpoly::sum_of_products_is_zero(terms, F::to_rational)
+}
+
+/// The certificate of an exact identity that [`exact_identity_holds`] proved (`None`
+/// unless proved: a failing identity is expanded by the caller for its residual).
+pub(crate) fn proved<F: Scalar>(
+    property: &str,
+    terms: &[(bool, &[&MPoly<F>])],
+) -> Option<Certificate> {
+    (exact_identity_holds(terms) == Some(true)).then(|| Certificate::holds(property, true))
+}
+
 /// The certificate `lhs ≡ rhs`.
 pub(crate) fn identity_cert<F: Scalar>(
     property: &str,
@@ -1007,12 +1103,13 @@ mod tests {
 
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(32))]
-        /// The determinant by 2×2 minors equals the expansion along the first row, for
-        /// random 4×4 matrices of polynomials (zero entries included).
+        /// The determinant by 2×2 minors, over `ℚ` and fraction-free in integers, equals
+        /// the expansion along the first row, for random 4×4 matrices of polynomials
+        /// (zero entries and different denominators per row included).
         #[test]
         fn det4_by_minors_equals_the_first_row_expansion(
             entries in proptest::collection::vec(
-                proptest::collection::vec((0u32..3, 0u32..3, -4i64..5, 1i64..4), 0..4), 16),
+                proptest::collection::vec((0u32..4, 0u32..3, -4i64..5, 1i64..6), 0..4), 16),
         ) {
             let e: Vec<MPoly<Q>> = entries
                 .iter()
@@ -1021,10 +1118,51 @@ mod tests {
                 .collect();
             let row = |r: usize| -> [MPoly<Q>; 4] { std::array::from_fn(|c| e[4 * r + c].clone()) };
             let (r0, r1, r2, r3) = (row(0), row(1), row(2), row(3));
-            proptest::prop_assert_eq!(
-                det4_by_two_rows([&r0, &r1, &r2, &r3]),
-                det4_by_first_row([&r0, &r1, &r2, &r3])
-            );
+            let by_first_row = det4_by_first_row([&r0, &r1, &r2, &r3]);
+            proptest::prop_assert_eq!(det4_by_two_rows([&r0, &r1, &r2, &r3]), by_first_row.clone());
+            // the fraction-free integer expansion (`det4` for exact scalars)
+            proptest::prop_assert_eq!(det4([&r0, &r1, &r2, &r3]), by_first_row);
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(32))]
+        /// The fraction-free Bernstein coefficients of the export patches equal those of
+        /// the local polynomial (`to_local`, then `tensor_bernstein` over `ℚ`), on random
+        /// coordinates and rectangles.
+        #[test]
+        fn exact_bernstein_on_a_rectangle_equals_the_local_conversion(
+            coords in proptest::collection::vec(
+                proptest::collection::vec((0u32..4, 0u32..3, -6i64..7, 1i64..5), 0..6), 1..4),
+            (a, b, c, d) in (-5i64..5, 1i64..6, -5i64..5, 1i64..6),
+        ) {
+            let ps: Vec<MPoly<Q>> = coords
+                .iter()
+                .map(|t| MPoly::from_terms(2, t.iter().map(|(i, j, n, d)| (vec![*i, *j], q(*n, *d))).collect())
+                    .expect("two exponents"))
+                .collect();
+            let dom = Domain { u: (q(a, 3), q(a + b, 3)), v: (q(c, 4), q(c + d, 7)) };
+            let (m, n, bern) = exact_bernstein_on(&ps, &dom).expect("exact");
+            let local: Vec<MPoly<Q>> = ps.iter().map(|p| to_local(p, &dom)).collect();
+            let (lm, ln) = local.iter().map(bidegree).fold((0, 0), |(x, y), (z, w)| (x.max(z), y.max(w)));
+            proptest::prop_assert_eq!((m, n), (lm, ln));
+            for (p, b) in local.iter().zip(&bern) {
+                proptest::prop_assert_eq!(&tensor_bernstein(p, m, n).expect("bidegree"), b);
+            }
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+        /// The content by integer gcds of numerators and denominators equals Euclid's
+        /// algorithm on the rationals (zeros and a single entry included).
+        #[test]
+        fn content_of_rationals_equals_euclid_on_the_rationals(
+            cs in proptest::collection::vec((-40i64..41, 1i64..30), 1..7),
+        ) {
+            let qs: Vec<Q> = cs.iter().map(|(n, d)| q(*n, *d)).collect();
+            let euclid = qs[1..].iter().fold(qs[0].abs(), |g, c| rational_gcd(&g, c));
+            proptest::prop_assert_eq!(rcagd_algebra::mpoly::content_rational(qs.iter()), euclid);
         }
     }
 

@@ -5,7 +5,7 @@
 use super::offset::PnOffset;
 use super::poly::{
     self, cancel_common, cancel_gcd, det4, div_exact, dot3, gcd2, identity_cert, mag,
-    normalize_content, pad_eval, patch_of, sign_on_domain, zero_cert, Domain, RatFn, Sign,
+    normalize_content, pad_eval, patch_of, proved, sign_on_domain, zero_cert, Domain, RatFn, Sign,
 };
 use super::PnError;
 use crate::error::{format_point, format_scalar};
@@ -487,13 +487,22 @@ pub(crate) fn check_nonzero<F: Scalar>(
 
 /// `N₁² + N₂² + N₃² − N₀² ≡ 0`.
 pub(crate) fn unit_normal_cert<F: Scalar>(normal: &[MPoly<F>; 4]) -> Certificate {
+    const PROPERTY: &str = "rational unit normal: N₁² + N₂² + N₃² ≡ N₀² (n·n ≡ 1)";
+    let [n0, n1, n2, n3] = normal;
+    if let Some(c) = proved(
+        PROPERTY,
+        &[
+            (false, &[n1, n1]),
+            (false, &[n2, n2]),
+            (false, &[n3, n3]),
+            (true, &[n0, n0]),
+        ],
+    ) {
+        return c;
+    }
     let lhs = dot3(&normal[1..], &normal[1..]);
     let rhs = &normal[0] * &normal[0];
-    identity_cert(
-        "rational unit normal: N₁² + N₂² + N₃² ≡ N₀² (n·n ≡ 1)",
-        &lhs,
-        &rhs,
-    )
+    identity_cert(PROPERTY, &lhs, &rhs)
 }
 
 impl<F: Scalar> PnSurface<F> {
@@ -504,17 +513,30 @@ impl<F: Scalar> PnSurface<F> {
         let nvec = &self.normal[1..];
         let mut out = vec![unit_normal_cert(&self.normal)];
         if let Some(k) = &self.cofactor {
-            let mut c = identity_cert(
-                "W ≡ N₀·K (common denominator of point and offsets)",
-                w,
-                &(&self.normal[0] * k),
-            );
+            const PROPERTY: &str = "W ≡ N₀·K (common denominator of point and offsets)";
+            let mut c = proved(PROPERTY, &[(false, &[w]), (true, &[&self.normal[0], k])])
+                .unwrap_or_else(|| identity_cert(PROPERTY, w, &(&self.normal[0] * k)));
             c.property = format!("{}: {}", self.name, c.property);
             out.push(c);
         }
         for (k, var) in [(0usize, "u"), (1, "v")] {
             // x_s ∝ X_s W − X W_s
             let ws = w.partial(k);
+            let property = format!("{}: n ⟂ x_{var}: N·(X_{var}W − X W_{var}) ≡ 0", self.name);
+            let xis: Vec<MPoly<F>> = x.iter().map(|xi| xi.partial(k)).collect();
+            let sum: Vec<(bool, [&MPoly<F>; 3])> = (0..3)
+                .flat_map(|i| {
+                    [
+                        (false, [&nvec[i], &xis[i], w]),
+                        (true, [&nvec[i], &x[i], &ws]),
+                    ]
+                })
+                .collect();
+            let sum: Vec<(bool, &[&MPoly<F>])> = sum.iter().map(|(s, f)| (*s, &f[..])).collect();
+            if let Some(c) = proved(&property, &sum) {
+                out.push(c);
+                continue;
+            }
             let xs: Vec<MPoly<F>> = x
                 .iter()
                 .map(|xi| &(&xi.partial(k) * w) - &(xi * &ws))
@@ -526,20 +548,25 @@ impl<F: Scalar> PnSurface<F> {
                 * nvec.iter().map(mag).fold(1.0, f64::max)
                 * (1 + dotp.num_terms()) as f64
                 * x.iter().map(mag).fold(1.0, f64::max);
-            out.push(zero_cert(
-                &format!("{}: n ⟂ x_{var}: N·(X_{var}W − X W_{var}) ≡ 0", self.name),
-                &dotp,
-                scale,
-            ));
+            out.push(zero_cert(&property, &dotp, scale));
         }
         // h + n·x = 0  ⇔  h_num N₀ W + h_den N·X ≡ 0
-        let lhs = &(&self.support.num * &self.normal[0]) * w;
-        let rhs = -(&self.support.den * &dot3(nvec, &x));
-        out.push(identity_cert(
-            &format!("{}: x on its tangent plane: h + n·x ≡ 0", self.name),
-            &lhs,
-            &rhs,
-        ));
+        let property = format!("{}: x on its tangent plane: h + n·x ≡ 0", self.name);
+        let (hn, hd) = (&self.support.num, &self.support.den);
+        let tangent = proved(
+            &property,
+            &[
+                (false, &[hn, &self.normal[0], w]),
+                (false, &[hd, &nvec[0], &x[0]]),
+                (false, &[hd, &nvec[1], &x[1]]),
+                (false, &[hd, &nvec[2], &x[2]]),
+            ],
+        );
+        out.push(tangent.unwrap_or_else(|| {
+            let lhs = &(&self.support.num * &self.normal[0]) * w;
+            let rhs = -(&self.support.den * &dot3(nvec, &x));
+            identity_cert(&property, &lhs, &rhs)
+        }));
         if let Some(first) = out.first_mut() {
             first.property = format!("{}: {}", self.name, first.property);
         }
