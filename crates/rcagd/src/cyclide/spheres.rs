@@ -33,7 +33,8 @@ use rcagd_geom::certify::{polynomial_is_zero_scaled, F64_RELATIVE_TOLERANCE};
 ///
 /// # Errors
 /// [`CyclideError::DegenerateSpheres`] if the three cycles are collinear in `R^{3,1}`
-/// (e.g. collinear centres with equal radii) or coincide, if two of them in a γ-plane are
+/// (e.g. collinear centres with equal radii) or coincide, if all three are points (radius
+/// 0), if two of them in a γ-plane are
 /// in oriented contact, or if they lie on a pe hyperbola of spacelike radius (no real sphere
 /// touches all three); [`CyclideError::NotRational`] if the cyclide needs a quadratic field
 /// (the conic of the tangent cycles, or in the Euclidean case the conjugate pe hyperbola,
@@ -87,6 +88,12 @@ pub fn from_three_spheres_along<F: Scalar>(
     if collinear {
         return Err(CyclideError::DegenerateSpheres(
             "the three cycles (centre, signed radius) are collinear in R^{3,1} (e.g. collinear centres with equal radii, or two equal spheres): the spheres tangent to all three form a one-parameter family whose envelope is not determined by them".into(),
+        ));
+    }
+    if a.iter().all(|p| p[3] == F::zero()) {
+        // every cycle of the plane of three point cycles is a point (r ≡ 0 there)
+        return Err(CyclideError::DegenerateSpheres(
+            "the three spheres are points (radius 0): every cycle through them is a point, so the spheres tangent to all three are points on their circle and envelope no surface".into(),
         ));
     }
     if route.flag(|| negligible(&det, sc.powi(4)))? {

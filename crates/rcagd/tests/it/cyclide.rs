@@ -1051,6 +1051,19 @@ proptest! {
     }
 }
 
+/// Three point spheres (radius 0): every cycle through them is a point, no cyclide; refused
+/// as degenerate spheres with the reason (a random draw of `random_three_spheres` once got
+/// an undocumented error kind from deeper down).
+#[test]
+fn three_point_spheres_are_degenerate() {
+    let spheres: [OrientedSphere<Q>; 3] =
+        [[0, 0, 0], [0, 0, 1], [0, 1, 0]].map(|c| OrientedSphere::new(c.map(|x| q(x, 1)), q(0, 1)));
+    match from_three_spheres(&spheres) {
+        Err(CyclideError::DegenerateSpheres(why)) => assert!(why.contains("points"), "{why}"),
+        other => panic!("expected DegenerateSpheres, got {other:?}"),
+    }
+}
+
 /// `DualPencil::certify` in `f64` far from the origin (the float helper's finding: a centre
 /// at distance 27 with `ρ = 27` made the residue of the degree-4/5 coefficients of
 /// `det(λC + Ω)` exceed 10⁻⁹ of its own largest coefficient): the determinant is now

@@ -340,6 +340,25 @@ fn pipe_around_a_closed_approximated_spine() {
     );
 }
 
+/// What every approximation of the property tests must show: all certificates hold, the
+/// bound is within the tolerance and above every sampled corresponding distance.
+fn approximation_holds(
+    spine: &[BezierCurve<Rational>],
+    a: &rcagd::ph::approximation::PhSplineApproximation,
+    tol: &Rational,
+) -> Result<(), TestCaseError> {
+    let certs = a.certify();
+    prop_assert!(
+        Certificate::all_hold(&certs),
+        "{:#?}",
+        certs.iter().filter(|c| !c.holds).collect::<Vec<_>>()
+    );
+    prop_assert!(a.deviation() <= *tol);
+    let (corr, _) = sampled_distances(spine, a);
+    prop_assert!(corr <= f(&a.deviation()) * (1.0 + 1e-9) + 1e-300);
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(12))]
 
@@ -354,11 +373,7 @@ proptest! {
         let tol = Rational::from_ratio(1, 10i64.pow(k));
         match approximate_by_ph_quintics(&spine, &PhApproximationOptions::new(tol.clone())) {
             Ok(a) => {
-                let certs = a.certify();
-                prop_assert!(Certificate::all_hold(&certs), "{:#?}", certs.iter().filter(|c| !c.holds).collect::<Vec<_>>());
-                prop_assert!(a.deviation() <= tol);
-                let (corr, _) = sampled_distances(&spine, &a);
-                prop_assert!(corr <= f(&a.deviation()) * (1.0 + 1e-9) + 1e-300);
+                approximation_holds(&spine, &a, &tol)?;
             }
             // a cusp or a zero tangent (degenerate control polygons) is refused by name
             Err(PhError::ZeroTangent(_) | PhError::ToleranceNotMet(_)) => {}
@@ -386,11 +401,7 @@ proptest! {
         match approximate_by_ph_quintics(&spine, &PhApproximationOptions::new(tol.clone())) {
             Ok(a) => {
                 prop_assert!(a.is_closed());
-                let certs = a.certify();
-                prop_assert!(Certificate::all_hold(&certs), "{:#?}", certs.iter().filter(|c| !c.holds).collect::<Vec<_>>());
-                prop_assert!(a.deviation() <= tol);
-                let (corr, _) = sampled_distances(&spine, &a);
-                prop_assert!(corr <= f(&a.deviation()) * (1.0 + 1e-9) + 1e-300);
+                approximation_holds(&spine, &a, &tol)?;
             }
             Err(PhError::ZeroTangent(_) | PhError::ToleranceNotMet(_)) => {}
             Err(e) => prop_assert!(false, "unexpected error {e}"),
