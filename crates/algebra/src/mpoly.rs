@@ -1254,6 +1254,19 @@ pub fn sum_of_products_is_zero<R: Ring>(
     Some(sum.iter().all(|c| c == &IBig::ZERO))
 }
 
+/// Laplace's expansion of a 4×4 determinant along rows 0 and 1: each column pair `(k, l)`
+/// of the 2×2 minor, its complement `(k′, l′)` and whether its sign `(−1)^{k+l+1}` is `+`
+/// (`det = Σ ± minor₀₁(k, l)·minor₂₃(k′, l′)`; used by [`det4_rational`] and by the `pn`
+/// determinants).
+pub const LAPLACE_PAIRS_4: [([usize; 4], bool); 6] = [
+    ([0, 1, 2, 3], true),
+    ([0, 2, 1, 3], false),
+    ([0, 3, 1, 2], true),
+    ([1, 2, 0, 3], true),
+    ([1, 3, 0, 2], false),
+    ([2, 3, 0, 1], true),
+];
+
 /// The determinant of a 4×4 matrix of polynomials over `ℚ` (given by rows, its entries'
 /// coefficients converted by `to_q`), **fraction-free** in one dense integer array: each
 /// row `r` over one common denominator `L_r` of its four entries (`det` is linear in each
@@ -1334,18 +1347,8 @@ pub fn det4_rational<R: Ring>(
             .map(|(k, c)| (k, core::mem::replace(c, IBig::ZERO)))
             .collect()
     };
-    // column pairs (k, l), their complements (k', l') and the signs (−1)^{k+l+1} > 0
-    const PAIRS: [[usize; 4]; 6] = [
-        [0, 1, 2, 3],
-        [0, 2, 1, 3],
-        [0, 3, 1, 2],
-        [1, 2, 0, 3],
-        [1, 3, 0, 2],
-        [2, 3, 0, 1],
-    ];
-    const PLUS: [bool; 6] = [true, false, true, true, false, true];
     let mut minors: Vec<(Sparse, Sparse, bool)> = Vec::with_capacity(6);
-    for ([k, l, kk, ll], plus) in PAIRS.into_iter().zip(PLUS) {
+    for ([k, l, kk, ll], plus) in LAPLACE_PAIRS_4 {
         add_product(&mut acc, &rows[0][k], &rows[1][l], false);
         add_product(&mut acc, &rows[0][l], &rows[1][k], true);
         let a = drain(&mut acc);

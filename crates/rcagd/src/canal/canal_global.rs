@@ -55,6 +55,7 @@
 
 use super::bipoly::BiPoly;
 use super::regularity::{cross, dot};
+use super::self_intersection::{f64_above, f64_below};
 use super::{CanalError, CanalSpine};
 use crate::error::format_scalar;
 use rcagd_algebra::bernstein::{subdivide_blocks, to_bernstein_blocks};
@@ -697,30 +698,6 @@ const FIV_ALL: FIv = FIv {
     lo: f64::NEG_INFINITY,
     hi: f64::INFINITY,
 };
-
-/// A rational `≤ x` as `f64`.
-fn f64_below(x: &Rational) -> f64 {
-    let mut f = Scalar::to_f64(x);
-    if f == f64::INFINITY {
-        return f64::MAX;
-    }
-    while Rational::try_from(f).is_ok_and(|q| q > *x) {
-        f = f.next_down();
-    }
-    f
-}
-
-/// A rational `≥ x` as `f64`.
-fn f64_above(x: &Rational) -> f64 {
-    let mut f = Scalar::to_f64(x);
-    if f == f64::NEG_INFINITY {
-        return -f64::MAX;
-    }
-    while Rational::try_from(f).is_ok_and(|q| q < *x) {
-        f = f.next_up();
-    }
-    f
-}
 
 impl FIv {
     fn of(x: &Iv) -> FIv {

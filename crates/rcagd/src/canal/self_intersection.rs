@@ -115,18 +115,24 @@ fn conversion_error(x: &Rational, f: f64) -> f64 {
     }
 }
 
-/// A rational `≤ x` as `f64`.
-fn f64_below(x: &Rational) -> f64 {
+/// A rational `≤ x` as `f64` (`f64::MAX` above its range; also used by the canal check).
+pub(crate) fn f64_below(x: &Rational) -> f64 {
     let mut f = Scalar::to_f64(x);
+    if f == f64::INFINITY {
+        return f64::MAX;
+    }
     while Rational::try_from(f).is_ok_and(|q| q > *x) {
         f = f.next_down();
     }
     f
 }
 
-/// A rational `≥ x` as `f64`.
-fn f64_above(x: &Rational) -> f64 {
+/// A rational `≥ x` as `f64` (`−f64::MAX` below its range; also used by the canal check).
+pub(crate) fn f64_above(x: &Rational) -> f64 {
     let mut f = Scalar::to_f64(x);
+    if f == f64::NEG_INFINITY {
+        return -f64::MAX;
+    }
     while Rational::try_from(f).is_ok_and(|q| q < *x) {
         f = f.next_up();
     }

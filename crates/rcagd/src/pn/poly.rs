@@ -194,18 +194,8 @@ fn minor2<F: Scalar>(a: &MPoly<F>, b: &MPoly<F>, c: &MPoly<F>, d: &MPoly<F>) -> 
 
 /// [`det4`] by Laplace's expansion along rows 0 and 1 (2×2 minors).
 fn det4_by_two_rows<F: Scalar>(m: [&[MPoly<F>; 4]; 4]) -> MPoly<F> {
-    // column pairs (k, l), their complements (k', l') and the signs (−1)^{k+l+1} > 0
-    const PAIRS: [[usize; 4]; 6] = [
-        [0, 1, 2, 3],
-        [0, 2, 1, 3],
-        [0, 3, 1, 2],
-        [1, 2, 0, 3],
-        [1, 3, 0, 2],
-        [2, 3, 0, 1],
-    ];
-    const PLUS: [bool; 6] = [true, false, true, true, false, true];
     let mut acc = MPoly::zero(2);
-    for ([k, l, kk, ll], plus) in PAIRS.into_iter().zip(PLUS) {
+    for ([k, l, kk, ll], plus) in rcagd_algebra::mpoly::LAPLACE_PAIRS_4 {
         let a = minor2(&m[0][k], &m[0][l], &m[1][k], &m[1][l]);
         if a.is_zero() {
             continue;
