@@ -411,6 +411,14 @@ pub(crate) fn sqrt_upper_decimal(b: &Rational) -> Rational {
 }
 
 /// `x` rounded to the grid `2⁻ᵏ`.
+/// The bits `k` of the grid `2⁻ᵏ` the quaternion coefficients (of size `≤ amax`) are rounded
+/// to for a tolerance `tol`: a change `δ` of `A` moves `r` by at most `≈ 2|A|δ`, so
+/// `2⁻ᵏ ≤ tol/(512·amax)` (at least 8, at most 200 bits).
+fn rounding_bits(amax: f64, tol: f64) -> u32 {
+    let amax = amax.max(1e-300);
+    ((512.0 * amax / tol).log2().ceil().max(8.0) as u32).min(200)
+}
+
 /// `x` rounded to a multiple of `2⁻ᵏ` (`None` if not finite or `k` too large).
 pub(crate) fn dyadic(x: f64, k: u32) -> Option<Rational> {
     let scale = 2f64.powi(i32::try_from(k).ok()?);
@@ -633,10 +641,7 @@ fn fit_piece(
     }
     let p0: [f64; 3] = core::array::from_fn(|k| Scalar::to_f64(&carry.point[k]));
     let tol = Scalar::to_f64(tolerance);
-    // the grid of the rounded coefficients: a change δ of A moves r by at most ≈ 2|A|δ
-    let amax = n0.max(n1).sqrt().max(1e-300);
-    let grid = ((512.0 * amax / tol).log2().ceil().max(8.0)) as u32;
-    let grid = grid.min(200);
+    let grid = rounding_bits(n0.max(n1).sqrt(), tol);
     // A₀: λA₂ of the previous piece where the spine turns smoothly, else new
     let continued = carry
         .quaternion
@@ -811,14 +816,12 @@ fn close_spline(
         open.pieces.get(n - 2)?,
         open.pieces.get(n - 1)?,
     );
-    // the rounding grid as in `fit_piece`: a change δ of A moves r by at most ≈ 2|A|δ
     let amax = [&pen.curve, &last.curve]
         .iter()
         .flat_map(|c| c.coefficients().iter())
         .map(|a| a.to_f64().norm_sq().sqrt())
-        .fold(1e-300, f64::max);
-    let tol = Scalar::to_f64(tolerance);
-    let bits = ((512.0 * amax / tol).log2().ceil().max(8.0) as u32).min(200);
+        .fold(0.0, f64::max);
+    let bits = rounding_bits(amax, Scalar::to_f64(tolerance));
     let (pen_curve, last_curve) =
         super::closure::close_two_pieces(&first.curve, &pen.curve, &last.curve, bits)?;
     let tol2 = tolerance * tolerance;

@@ -32,6 +32,7 @@
 
 use super::approximation::dyadic;
 use super::hodograph::PhCurve;
+use super::spatial_hermite::middle_rhs;
 use super::util::aib;
 use rcagd_algebra::integer_squares::rational_four_squares;
 use rcagd_algebra::quaternion::Quaternion;
@@ -221,19 +222,13 @@ pub fn close_two_pieces(
         z: Rational::ZERO,
     };
     let a2 = a0f.clone() * z;
-    // W = 120(p⁽¹⁾ − P) − 15Σd + 5Σ(cross terms)
-    let sym = |a: &Quaternion<Rational>, b: &Quaternion<Rational>| {
-        let (u, v) = (vector(&aib(a, b)), vector(&aib(b, a)));
-        [&u[0] + &v[0], &u[1] + &v[1], &u[2] + &v[2]]
-    };
+    // W = c′ + c″, the two middle equations' right-hand sides with the joint between the
+    // pieces taken at P (it cancels from the sum): 120(p⁽¹⁾ − P) − 15Σd + 5Σ(cross terms)
     let (d1, d2, d3, d4) = (phi(&pa0), phi(&pc), phi(&la0), phi(&a2));
-    let (c1, c2) = (sym(&pa0, &pc), sym(&la0, &a2));
     let (p_end, p_start) = (first.start(), penultimate.start());
-    let w: [Rational; 3] = core::array::from_fn(|k| {
-        Rational::from(120) * (&p_end[k] - &p_start[k])
-            - Rational::from(15) * (&d1[k] + &d2[k] + &d3[k] + &d4[k])
-            + Rational::from(5) * (&c1[k] + &c2[k])
-    });
+    let c1 = middle_rhs((p_start, &d1), (p_start, &d2), &pa0, &pc);
+    let c2 = middle_rhs((p_start, &d3), (p_end, &d4), &la0, &a2);
+    let w: [Rational; 3] = core::array::from_fn(|k| &c1[k] + &c2[k]);
     let three = Rational::from(3);
     let four = Rational::from(4);
     let middle =

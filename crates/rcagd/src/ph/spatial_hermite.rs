@@ -102,6 +102,23 @@ pub fn rotation_from_half_tangent<F: Scalar>(tau: &F) -> (F, F) {
     )
 }
 
+/// `c = 120(p_1 − p_0) − 15(d_0 + d_1) + 5(A_0 i A_2* + A_2 i A_0*)`, the right-hand side of
+/// the quintic's middle equation `B i B* = c`, `B = 4A_1 + 3(A_0 + A_2)` (module doc).
+pub(crate) fn middle_rhs<F: Scalar>(
+    (p0, d0): (&[F; 3], &[F; 3]),
+    (p1, d1): (&[F; 3], &[F; 3]),
+    a0: &Quaternion<F>,
+    a2: &Quaternion<F>,
+) -> [F; 3] {
+    let x = aib(a0, a2) + aib(a2, a0);
+    let f = |n: i64| F::from_i64(n);
+    let xv = [x.x, x.y, x.z];
+    core::array::from_fn(|k| {
+        (p1[k].clone() - p0[k].clone()) * f(120) - (d0[k].clone() + d1[k].clone()) * f(15)
+            + xv[k].clone() * f(5)
+    })
+}
+
 /// The middle coefficient `A_1 = (Q̂(c)e^{iφ_1} − 3(A_0 + A_2))/4` of the quintic
 /// interpolant with end coefficients `A_0`, `A_2`, where
 /// `c = 120(p_1 − p_0) − 15(d_0 + d_1) + 5(A_0 i A_2* + A_2 i A_0*)` (module doc);
@@ -117,14 +134,8 @@ pub(crate) fn middle_coefficient<F: Scalar>(
     a2: &Quaternion<F>,
     rotation1: Option<(F, F)>,
 ) -> Result<Quaternion<F>, PhError> {
-    let x = aib(a0, a2) + aib(a2, a0);
     let f = |n: i64| F::from_i64(n);
-    let mut c = [F::zero(), F::zero(), F::zero()];
-    let xv = [x.x.clone(), x.y.clone(), x.z.clone()];
-    for k in 0..3 {
-        c[k] = (p1[k].clone() - p0[k].clone()) * f(120) - (d0[k].clone() + d1[k].clone()) * f(15)
-            + xv[k].clone() * f(5);
-    }
+    let c = middle_rhs((p0, d0), (p1, d1), a0, a2);
     let cnorm = c.iter().map(|v| v.to_f64().abs()).fold(0.0, f64::max);
     let scale = d0
         .iter()
