@@ -208,6 +208,94 @@ pub fn rational_four_squares(q: &Rational, seed: u64) -> Option<[Rational; 4]> {
     Some(ys.map(|y| Rational::from_parts(IBig::from(y), den.clone())))
 }
 
+/// `n` as `x² + y²` when trial division decides it (a sum of two squares is a product of
+/// sums of two squares: `(a² + b²)(c² + d²) = (ac − bd)² + (ad + bc)²`, the product of the
+/// Gaussian integers `a + bi`, `c + di`; Fermat–Euler: `n` is one iff every prime
+/// `≡ 3 (mod 4)` divides it to an even power, Cohen 1993, §1.5.2). `n` is divided by `2` and
+/// the odd primes below `2000`; each prime `p ≡ 1 (mod 4)` is split by [`prime_two_squares`],
+/// each `p ≡ 3 (mod 4)` must come squared, and the cofactor must be `1`, a square or a
+/// (probable) prime `≡ 1 (mod 4)`. `None` otherwise — `n` may still be a sum of two squares,
+/// but deciding that needs a factorization (callers draw another `n`). The result is checked
+/// exactly.
+pub fn two_squares_by_trial_division(n: &UBig) -> Option<(UBig, UBig)> {
+    if *n == UBig::ZERO {
+        return Some((UBig::ZERO, UBig::ZERO));
+    }
+    type Gauss = (IBig, IBig);
+    let mul =
+        |a: &Gauss, b: &Gauss| -> Gauss { (&a.0 * &b.0 - &a.1 * &b.1, &a.0 * &b.1 + &a.1 * &b.0) };
+    let mut m = n.clone();
+    let mut g: Gauss = (IBig::ONE, IBig::ZERO);
+    let mut scale = UBig::ONE;
+    // 2 = (1 + i)(1 − i)
+    let one_plus_i: Gauss = (IBig::ONE, IBig::ONE);
+    while (&m % 2u8) == 0 {
+        m >>= 1;
+        g = mul(&g, &one_plus_i);
+    }
+    for p in small_odd_primes() {
+        if m == UBig::ONE {
+            break;
+        }
+        let mut e = 0u32;
+        while (&m % p) == 0 {
+            m /= p;
+            e += 1;
+        }
+        if e == 0 {
+            continue;
+        }
+        if p % 4 == 3 {
+            if e % 2 == 1 {
+                return None;
+            }
+            scale *= UBig::from(p).pow(e as usize / 2);
+        } else {
+            let (x, y) = prime_two_squares(&UBig::from(p))?;
+            let f: Gauss = (IBig::from(x), IBig::from(y));
+            for _ in 0..e {
+                g = mul(&g, &f);
+            }
+        }
+    }
+    if m != UBig::ONE {
+        let root = m.sqrt();
+        if &root * &root == m {
+            scale *= root;
+        } else if (&m % 4u8) == 1 && is_probable_prime(&m) {
+            let (x, y) = prime_two_squares(&m)?;
+            g = mul(&g, &(IBig::from(x), IBig::from(y)));
+        } else {
+            return None;
+        }
+    }
+    let (x, y) = (g.0.unsigned_abs() * &scale, g.1.unsigned_abs() * &scale);
+    (&x * &x + &y * &y == *n).then_some((x, y))
+}
+
+/// A rational `q ≥ 0` as `x² + y²` with rational `x`, `y`, when
+/// [`two_squares_by_trial_division`] decides it: `q = a/b` with `b = e²` a square gives
+/// `a = u² + v²`, `(x, y) = (u, v)/e`; otherwise `ab = u² + v²`, `(x, y) = (u, v)/b`. `None`
+/// for `q < 0` or when that is not decided.
+pub fn rational_two_squares(q: &Rational) -> Option<(Rational, Rational)> {
+    if *q < Rational::ZERO {
+        return None;
+    }
+    let (num, den) = (
+        q.numerator().clone().unsigned_abs(),
+        q.denominator().clone(),
+    );
+    let e = den.sqrt();
+    let (n, d) = if &e * &e == den {
+        (num, e)
+    } else {
+        (&num * &den, den)
+    };
+    let (x, y) = two_squares_by_trial_division(&n)?;
+    let f = |v: UBig| Rational::from_parts(IBig::from(v), d.clone());
+    Some((f(x), f(y)))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -239,6 +327,59 @@ mod tests {
             let s: UBig = v.iter().map(|a| a * a).sum();
             assert_eq!(s, UBig::from(n));
         }
+    }
+
+    #[test]
+    fn sums_of_two_squares_by_trial_division() {
+        // every n < 5000 that trial division decides is split exactly, and it decides all
+        // of them (their prime factors are small or the cofactor is a prime)
+        let is_sum = |n: u64| {
+            (0..=n).take_while(|x| x * x <= n).any(|x| {
+                let r = n - x * x;
+                let y = (r as f64).sqrt() as u64;
+                (y.saturating_sub(1)..=y + 1).any(|y| y * y == r)
+            })
+        };
+        for n in 0u64..5000 {
+            let got = two_squares_by_trial_division(&UBig::from(n));
+            assert_eq!(got.is_some(), is_sum(n), "{n}");
+            if let Some((x, y)) = got {
+                assert_eq!(&x * &x + &y * &y, UBig::from(n));
+            }
+        }
+        // a large prime ≡ 1 (mod 4) times small factors; a large prime ≡ 3 (mod 4) squared
+        let p = UBig::from(1_000_000_009u64); // ≡ 1 (mod 4)
+        let n = &p * UBig::from(2u8 * 5 * 9);
+        let (x, y) = two_squares_by_trial_division(&n).expect("decided");
+        assert_eq!(&x * &x + &y * &y, n);
+        let big = (UBig::ONE << 127) - UBig::ONE; // prime, ≡ 3 mod 4
+        let sq = &big * &big * UBig::from(13u8);
+        let (x, y) = two_squares_by_trial_division(&sq).expect("a square times 13");
+        assert_eq!(&x * &x + &y * &y, sq);
+        assert!(two_squares_by_trial_division(&big).is_none());
+        // two large primes ≡ 1 (mod 4): a sum of two squares, not decided without factoring
+        let q = UBig::from(1_000_000_021u64); // prime, ≡ 1 (mod 4)
+        assert!(two_squares_by_trial_division(&(&p * &q)).is_none());
+    }
+
+    #[test]
+    fn rationals_as_two_squares() {
+        for (n, d) in [
+            (5i64, 9i64),
+            (5, 2),
+            (25, 8),
+            (0, 1),
+            (1, 2),
+            (13, 1_000_000_009),
+        ] {
+            let q = Rational::from_ratio(n, d);
+            let (x, y) = rational_two_squares(&q).expect("decided");
+            assert_eq!(&x * &x + &y * &y, q, "{n}/{d}");
+        }
+        // 3/4 and 5/3 (15 = 3·5) are not sums of two rational squares
+        assert!(rational_two_squares(&Rational::from_ratio(3, 4)).is_none());
+        assert!(rational_two_squares(&Rational::from_ratio(5, 3)).is_none());
+        assert!(rational_two_squares(&Rational::from(-1)).is_none());
     }
 
     proptest! {

@@ -408,3 +408,35 @@ proptest! {
         }
     }
 }
+
+/// The two closing pieces of the closed loop have coefficients of about the height of the
+/// fitted ones (their printed size within 3× of the largest fitted piece's; the hyperbola and
+/// four-squares construction alone gave ≈ 5.5×, and pipes 30× slower), so the pipe around
+/// them costs about what the fitted pieces' do.
+#[test]
+fn closing_pieces_are_small() {
+    let size = |c: &rcagd::ph::PhCurve<Rational>| -> usize {
+        c.coefficients()
+            .iter()
+            .flat_map(|q| [&q.w, &q.x, &q.y, &q.z])
+            .map(|v| format!("{v}").len())
+            .sum()
+    };
+    let a = approximate_by_ph_quintics(
+        &closed_loop(),
+        &PhApproximationOptions::new(Rational::from_ratio(1, 100)),
+    )
+    .expect("approximation");
+    assert!(a.is_closed());
+    let curves = a.curves();
+    let n = curves.len();
+    assert!(n >= 3, "{n} pieces");
+    let fitted = curves[..n - 2].iter().map(size).max().expect("pieces");
+    for (k, c) in curves[n - 2..].iter().enumerate() {
+        let s = size(c);
+        assert!(
+            s <= 3 * fitted,
+            "closing piece {k}: {s} characters against {fitted} for a fitted piece"
+        );
+    }
+}
