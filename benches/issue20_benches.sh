@@ -37,7 +37,8 @@ run_one() {
     out="$("$1" --bench --exact "$2" --warm-up-time 0.5 --measurement-time "$measure" \
         --noplot 2>/dev/null | tr '\n' ' ')" || { echo "-"; return; }
     local est unit
-    read -r est unit < <(echo "$out" | sed -n 's/.*time: *\[[^]]*[0-9.]* [^ ]* \([0-9.]*\) \([a-zµ]*s\) .*/\1 \2/p')
+    # "time:   [1.2345 ms 1.2400 ms 1.2500 ms]": the middle value and its unit
+    read -r est unit < <(echo "$out" | sed -n 's/.*time: *\[\([^]]*\)\].*/\1/p' | awk '{ print $3, $4 }')
     if [ -z "${est:-}" ]; then echo "-"; return; fi
     [ "$unit" = "µs" ] && unit=us
     to_us "$est" "$unit"
