@@ -33,12 +33,15 @@ to_us() {
 
 run_one() {
     # run_one BIN ID -> the point estimate in microseconds, or "-" if the run failed
-    local out
-    out="$("$1" --bench --exact "$2" --warm-up-time 0.5 --measurement-time "$measure" \
-        --noplot 2>/dev/null | tr '\n' ' ')" || { echo "-"; return; }
+    # a fresh criterion folder per run: no saved baseline, so no "change: time: [...]" line
+    local out home
+    home="$(mktemp -d)"
+    out="$(CRITERION_HOME="$home" "$1" --bench --exact "$2" --warm-up-time 0.5 \
+        --measurement-time "$measure" --noplot 2>/dev/null)" || { rm -rf "$home"; echo "-"; return; }
+    rm -rf "$home"
     local est unit
-    # "time:   [1.2345 ms 1.2400 ms 1.2500 ms]": the middle value and its unit
-    read -r est unit < <(echo "$out" | sed -n 's/.*time: *\[\([^]]*\)\].*/\1/p' | awk '{ print $3, $4 }')
+    # the first "time:   [1.2345 ms 1.2400 ms 1.2500 ms]": the middle value and its unit
+    read -r est unit < <(echo "$out" | grep -m1 -o 'time: *\[[^]]*\]' | tr -d '[]' | awk '{ print $4, $5 }')
     if [ -z "${est:-}" ]; then echo "-"; return; fi
     [ "$unit" = "µs" ] && unit=us
     to_us "$est" "$unit"
