@@ -63,6 +63,19 @@ impl<F: Scalar> BiPoly<F> {
         self.c.len().checked_sub(1)
     }
 
+    /// The least power of `u` with a non-zero coefficient (`None` for zero).
+    pub fn low_degree_u(&self) -> Option<usize> {
+        self.c.iter().position(|p| !p.is_zero())
+    }
+
+    /// The least power of `t` with a non-zero coefficient (`None` for zero).
+    pub fn low_degree_t(&self) -> Option<usize> {
+        self.c
+            .iter()
+            .filter_map(|p| p.coeffs().iter().position(|x| !x.is_zero()))
+            .min()
+    }
+
     /// The degree in `t` (`None` for zero).
     pub fn degree_t(&self) -> Option<usize> {
         self.c.iter().filter_map(Poly::degree).max()

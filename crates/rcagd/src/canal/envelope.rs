@@ -1168,7 +1168,7 @@ impl<F: Scalar> CanalSurface<F> {
     /// # Errors
     /// [`CanalError::InvalidArgument`] without a domain; geometry failures.
     pub fn domain_patches(&self) -> Result<Vec<BezierPatch<F>>, CanalError> {
-        self.domain_patches_by(&self.x, &patch_of)
+        self.domain_patches_by(&self.charts(&self.x), &|_, ch, t, u| patch_of(ch, t, u))
     }
 
     /// The weights of [`Self::domain_patches`] in `f64`: the same patches (same charts,
@@ -1180,14 +1180,16 @@ impl<F: Scalar> CanalSurface<F> {
     /// # Errors
     /// As [`Self::domain_patches`].
     pub(crate) fn domain_weight_patches_f64(&self) -> Result<Vec<BezierPatch<f64>>, CanalError> {
-        let x: Vec<BiPoly<f64>> = self
-            .x
-            .iter()
-            .map(|c| c.map_scalar(Scalar::to_f64))
-            .collect();
-        self.domain_patches_by(&x, &|ch: &[BiPoly<f64>], t, u| {
+        // the weight's charts only (the same coefficients as the weight row of the charts of
+        // the whole surface in f64), with the bidegrees of the whole charts
+        let w = self.x[0].map_scalar(Scalar::to_f64);
+        let degrees = self.chart_bidegrees();
+        self.domain_patches_by(&self.charts(&[w]), &|k, ch: &[BiPoly<f64>], t, u| {
             // the bidegree of the whole chart, as `patch_of`
-            let (m, n) = bidegree(ch);
+            let (m, n) = degrees
+                .get(k)
+                .copied()
+                .ok_or_else(|| rcagd_geom::GeomError::Dimension("no chart".into()))?;
             let w = ch
                 .first()
                 .ok_or_else(|| rcagd_geom::GeomError::Dimension("no weight".into()))?
@@ -1197,57 +1199,123 @@ impl<F: Scalar> CanalSurface<F> {
         })
     }
 
-    /// The patches of [`Self::domain_patches`] from the homogeneous coordinates `x` (`self.x`
-    /// or a conversion of it), each chart made into a patch by `patch`.
+    /// The patches of [`Self::domain_patches`] from the charts ([`Self::charts`] of `self.x`,
+    /// or of a part or conversion of it), chart `k` made into a patch by `patch(k, …)`.
     fn domain_patches_by<G: Scalar>(
         &self,
-        x: &[BiPoly<G>],
+        charts: &[Vec<BiPoly<G>>],
         patch: &ChartPatch<'_, G>,
     ) -> Result<Vec<BezierPatch<G>>, CanalError> {
         let (a, b) = self.domain.clone().ok_or_else(|| {
             CanalError::InvalidArgument("the surface has no parameter domain".into())
         })?;
         let (zero, one, m1) = (G::zero(), G::one(), -G::one());
-        let nu = self.degree().1;
-        let charts = |x: &[BiPoly<G>]| -> Vec<Vec<BiPoly<G>>> {
-            vec![x.to_vec(), x.iter().map(|c| c.reverse_u(nu)).collect()]
-        };
         // Krasauskas builds: u ∈ [−1, 0] and [0, 1] per chart (the weight |a + u b|² is
         // balanced at u = 0, see `krasauskas::Pencil::balance_at`)
         let u_ranges: Vec<(&G, &G)> = match self.construction {
             Construction::Krasauskas { .. } => vec![(&m1, &zero), (&zero, &one)],
             Construction::PeternellPottmann => vec![(&m1, &one)],
         };
-        let mut out = Vec::new();
-        if self.reparametrized.is_some() {
-            let nt = self.degree().0;
-            let rev: Vec<BiPoly<G>> = x
-                .iter()
-                .map(|c| c.transpose().reverse_u(nt).transpose())
-                .collect();
-            for base in [x.to_vec(), rev] {
-                for ch in charts(&base) {
-                    for u in &u_ranges {
-                        out.push(patch(&ch, (&zero, &one), *u)?);
-                    }
-                }
-            }
+        let t_range = if self.reparametrized.is_some() {
+            (zero.clone(), one.clone())
         } else {
-            let (fa, fb) = (G::from_rational(&a), G::from_rational(&b));
-            for ch in charts(x) {
-                for u in &u_ranges {
-                    out.push(patch(&ch, (&fa, &fb), *u)?);
-                }
+            (G::from_rational(&a), G::from_rational(&b))
+        };
+        let mut out = Vec::new();
+        for (k, ch) in charts.iter().enumerate() {
+            for u in &u_ranges {
+                out.push(patch(k, ch, (&t_range.0, &t_range.1), *u)?);
             }
         }
         Ok(out)
     }
+
+    /// The charts of [`Self::domain_patches_by`] from the homogeneous coordinates `x`: `x`
+    /// and `x` with `u ↦ 1/u`, and for a reparametrized surface (`t ∈ [0, 1]` then stands for
+    /// half of the domain) both again with `t ↦ 1/t`.
+    pub(super) fn charts<G: Scalar>(&self, x: &[BiPoly<G>]) -> Vec<Vec<BiPoly<G>>> {
+        let (nt, nu) = self.degree();
+        let with_reversed_u = |x: Vec<BiPoly<G>>| -> [Vec<BiPoly<G>>; 2] {
+            let r = x.iter().map(|c| c.reverse_u(nu)).collect();
+            [x, r]
+        };
+        if self.reparametrized.is_some() {
+            let rev: Vec<BiPoly<G>> = x
+                .iter()
+                .map(|c| c.transpose().reverse_u(nt).transpose())
+                .collect();
+            let [c0, c1] = with_reversed_u(x.to_vec());
+            let [c2, c3] = with_reversed_u(rev);
+            vec![c0, c1, c2, c3]
+        } else {
+            with_reversed_u(x.to_vec()).into()
+        }
+    }
+
+    /// The bidegrees of [`Self::charts`] of `self.x`, from the supports of the coordinates
+    /// (`u ↦ 1/u` turns `deg_u` into `n_u − ` the least power of `u`, `t ↦ 1/t` likewise in
+    /// `t`), without building the charts.
+    pub(crate) fn chart_bidegrees(&self) -> Vec<(usize, usize)> {
+        let (nt, nu) = self.degree();
+        let of = |rev_t: bool, rev_u: bool| -> (usize, usize) {
+            let degs = self.x.iter().filter_map(|c| {
+                let dt = if rev_t {
+                    nt - c.low_degree_t()?
+                } else {
+                    c.degree_t()?
+                };
+                let du = if rev_u {
+                    nu - c.low_degree_u()?
+                } else {
+                    c.degree_u()?
+                };
+                Some((dt, du))
+            });
+            degs.fold((0, 0), |(a, b), (dt, du)| (a.max(dt), b.max(du)))
+        };
+        if self.reparametrized.is_some() {
+            vec![
+                of(false, false),
+                of(false, true),
+                of(true, false),
+                of(true, true),
+            ]
+        } else {
+            vec![of(false, false), of(false, true)]
+        }
+    }
+
+    /// Everything [`Self::domain_weight_patches_f64`] reads: the weight `x₀`, the bidegree
+    /// of every chart ([`Self::charts`], in order), the kind of construction (its `u`
+    /// ranges), the reparametrization and the domain. Two surfaces with equal keys have the
+    /// same weight patches, hence the same export estimate — the candidate search computes
+    /// it once per key (a mirrored frame's candidate has the weight of the one it was
+    /// derived from, [`Self::mirrored`]).
+    pub(crate) fn weight_patch_key(&self) -> WeightPatchKey<F> {
+        WeightPatchKey {
+            weight: self.x[0].clone(),
+            charts: self.chart_bidegrees(),
+            krasauskas: matches!(self.construction, Construction::Krasauskas { .. }),
+            reparametrized: self.reparametrized.clone(),
+            domain: self.domain.clone(),
+        }
+    }
+}
+
+/// The data of [`CanalSurface::domain_weight_patches_f64`] ([`CanalSurface::weight_patch_key`]).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct WeightPatchKey<F> {
+    weight: BiPoly<F>,
+    charts: Vec<(usize, usize)>,
+    krasauskas: bool,
+    reparametrized: Option<(Rational, Rational)>,
+    domain: Option<(Rational, Rational)>,
 }
 
 /// The patch of one chart's homogeneous coordinates on `[t₀, t₁] × [u₀, u₁]`
 /// ([`patch_of`], or the weight alone).
-type ChartPatch<'a, G> =
-    dyn Fn(&[BiPoly<G>], (&G, &G), (&G, &G)) -> Result<BezierPatch<G>, rcagd_geom::GeomError> + 'a;
+type ChartPatch<'a, G> = dyn Fn(usize, &[BiPoly<G>], (&G, &G), (&G, &G)) -> Result<BezierPatch<G>, rcagd_geom::GeomError>
+    + 'a;
 
 fn bi_cert<F: Scalar>(property: &str, b: &BiPoly<F>, scale: f64) -> Certificate {
     polynomial_is_zero_scaled(property, &b.all_coeffs(), scale)

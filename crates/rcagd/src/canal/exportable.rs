@@ -32,7 +32,7 @@
 use super::envelope::{
     build_krasauskas, canal_surface_memo, CanalBuild, CanalOptions, CanalSurface,
 };
-use super::envelope::{AxisChoice, Construction, Method, Orientation};
+use super::envelope::{AxisChoice, Construction, Method, Orientation, WeightPatchKey};
 use super::frame::{
     coordinate_axis, householder, oriented, pole_free_directions, transform_spine, EXPORT_SPLITS,
 };
@@ -449,6 +449,9 @@ fn candidates_on(
     };
     type Built = ((usize, usize), usize, CanalSurface<Rational>, Frame);
     let mut built_ok: Vec<Built> = Vec::new();
+    // the estimates computed so far, by what they depend on (none for the memo without
+    // memory, the tests' reference: it estimates every candidate)
+    let mut estimates: Vec<(WeightPatchKey<Rational>, Option<usize>)> = Vec::new();
     let mut order = 0usize;
     // the candidates of the last `+` coordinate frame: for a pipe those of the `−` frame of
     // the same axis follow from them (`CanalSurface::mirrored`)
@@ -501,8 +504,24 @@ fn candidates_on(
             {
                 continue;
             }
-            // the size after the positive-weight split, estimated in f64 (exact below)
-            let Some(est) = exported_size_f64(&s) else {
+            // the size after the positive-weight split, estimated in f64 (exact below), once
+            // per weight-patch key (the estimate is a function of the key)
+            let key = memo.derives().then(|| s.weight_patch_key());
+            let known = key
+                .as_ref()
+                .and_then(|k| estimates.iter().find(|(old, _)| old == k))
+                .map(|(_, est)| *est);
+            let est = match known {
+                Some(est) => est,
+                None => {
+                    let est = exported_size_f64(&s);
+                    if let Some(k) = key {
+                        estimates.push((k, est));
+                    }
+                    est
+                }
+            };
+            let Some(est) = est else {
                 continue;
             };
             let (dt, du) = s.degree();
@@ -1276,6 +1295,81 @@ mod tests {
         compared
     }
 
+    /// Every candidate of the six coordinate frames (general splits and the caller's split,
+    /// both methods, on `[0, 1]` and `[0, 1/2]`): the bidegrees of its charts from the
+    /// supports are those of the charts built, and candidates with equal
+    /// [`CanalSurface::weight_patch_key`]s have equal export estimates (the key holds all
+    /// the estimate reads). Returns how many `(j, −)` candidates share the key of their
+    /// `(j, +)` candidate (the estimates the search saves).
+    fn estimate_follows_the_key(
+        s: &CanalSpine<Rational>,
+        split: Option<&[Poly<Rational>; 2]>,
+    ) -> usize {
+        use crate::canal::bipoly::bidegree;
+        let memo = FactorMemo::default();
+        let mut shared = 0;
+        for (a, b) in [(q(0), q(1)), (q(0), Rational::from_ratio(1, 2))] {
+            let mid = (a.clone() + b.clone()) / q(2);
+            let mut seen: Vec<(super::WeightPatchKey<Rational>, Option<usize>)> = Vec::new();
+            for axis in AxisChoice::all() {
+                for method in [Method::Krasauskas, Method::PeternellPottmann] {
+                    let opts = CanalOptions {
+                        axis: Some(axis),
+                        domain: Some((a.clone(), b.clone())),
+                        method,
+                        ..CanalOptions::default()
+                    };
+                    let mut built = Vec::new();
+                    if let Ok(CanalBuild::Rational(x)) = canal_surface_memo(s, &opts, &memo) {
+                        built.push(x);
+                    }
+                    if let Some(g) = split {
+                        if let Ok(x) = with_split(s, g, axis, method, &mid, &memo) {
+                            built.push(x.on_domain(&a, &b));
+                        }
+                    }
+                    for x in built {
+                        let charts: Vec<(usize, usize)> = x
+                            .charts(x.homogeneous())
+                            .iter()
+                            .map(|c| bidegree(c))
+                            .collect();
+                        assert_eq!(x.chart_bidegrees(), charts);
+                        let key = x.weight_patch_key();
+                        let est = exported_size_f64(&x);
+                        if let Some((_, old)) = seen.iter().find(|(k, _)| *k == key) {
+                            assert_eq!(*old, est, "{axis:?} {method:?}");
+                            if !axis.positive {
+                                shared += 1;
+                            }
+                        }
+                        seen.push((key, est));
+                    }
+                }
+            }
+        }
+        shared
+    }
+
+    #[test]
+    fn equal_weight_keys_give_equal_estimates_on_the_seed_pipes() {
+        for a in [
+            [[1, 0, 0, 0], [0, 1, 0, 1], [1, 0, 1, 0]],
+            [[1, 0, 0, 0], [1, 1, 0, 1], [0, 0, 1, 1]],
+        ] {
+            let c = ph_of_preimage(&a).expect("ph");
+            let s = CanalSpine::polynomial(
+                c.position().clone(),
+                Poly::constant(Rational::from_ratio(1, 10)),
+            );
+            let split = known_pipe_split(&s).expect("split");
+            // the mirrored candidates share their weight with the candidates they come
+            // from: at least the Krasauskas ones of the three axes on both intervals
+            assert!(estimate_follows_the_key(&s, split.as_ref()) >= 6);
+            estimate_follows_the_key(&s, None);
+        }
+    }
+
     #[test]
     fn mirrored_frame_is_the_built_frame_on_the_seed_pipes() {
         for a in [
@@ -1315,6 +1409,26 @@ mod tests {
 
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(12))]
+
+        /// Pipes around random PH quintics with their split `(σ, 0)` and random cubics:
+        /// candidates with equal weight-patch keys have equal export estimates.
+        #[test]
+        fn equal_weight_keys_give_equal_estimates_on_random_spines(
+            a in proptest::collection::vec(proptest::array::uniform4(-3i64..4), 3),
+            cubic in proptest::collection::vec(-4i64..5, 12),
+            r in 1i64..20,
+        ) {
+            let radius = Poly::constant(Rational::from_ratio(r, 40));
+            if let Some(c) = ph_of_preimage(&a) {
+                let s = CanalSpine::polynomial(c.position().clone(), radius.clone());
+                if let Ok(split) = known_pipe_split(&s) {
+                    estimate_follows_the_key(&s, split.as_ref());
+                }
+            }
+            let m: [Poly<Rational>; 3] =
+                core::array::from_fn(|i| Poly::from_ints(&cubic[4 * i..4 * i + 4]));
+            estimate_follows_the_key(&CanalSpine::polynomial(m, radius), None);
+        }
 
         /// Pipes around random PH quintics (with and without their split `(σ, 0)`) and
         /// random cubics: the candidates of the frames `(j, −)` are the mirrored ones of

@@ -682,8 +682,11 @@ pub(crate) struct FactorMemo {
     off: bool,
 }
 
-/// A family and a domain (`None`: all of `R`) on which its envelope was found real.
-type RealKey = (CanalSpine<Rational>, Option<(Rational, Rational)>);
+/// The discriminant `D = |ṁ|² − ṙ²` of a family and a domain (`None`: all of `R`) on which
+/// its envelope was found real (the reality check reads the family only through `D`, so
+/// the families of the tilted frames, orthogonal images of one family with the same `D`,
+/// share the entry).
+type RealKey = (Poly<Rational>, Option<(Rational, Rational)>);
 
 /// The most entries per table of a [`FactorMemo`] (then it starts over).
 const MEMO_ENTRIES: usize = 256;
@@ -776,7 +779,9 @@ impl FactorMemo {
         v
     }
 
-    /// [`CanalSpine::check_real_envelope`], memoized (errors are not).
+    /// [`CanalSpine::check_real_envelope`], memoized by the discriminant and the domain
+    /// (the check is a function of those two: the sign of `D` on the domain); errors are not
+    /// memoized.
     ///
     /// # Errors
     /// As [`CanalSpine::check_real_envelope`].
@@ -785,7 +790,10 @@ impl FactorMemo {
         spine: &CanalSpine<Rational>,
         domain: Option<(&Rational, &Rational)>,
     ) -> Result<(), CanalError> {
-        let key = (spine.clone(), domain.map(|(a, b)| (a.clone(), b.clone())));
+        let key = (
+            spine.discriminant()?,
+            domain.map(|(a, b)| (a.clone(), b.clone())),
+        );
         if self.get(&self.real, &key).is_some() {
             return Ok(());
         }
