@@ -1047,9 +1047,57 @@ impl Check<'_> {
         }
     }
 
+    /// [`Self::witness_at`] in `f64`: `false` only where it clearly fails there (squared
+    /// distances above `ρ²` or `4ρ²` by a relative `10⁻⁶`, the midpoint clearly off a
+    /// plane, the planes not nearly parallel), so the exact search is skipped. The search
+    /// only looks for a refusal; a certificate never rests on it.
+    fn may_meet_f64(&self, i: usize, t: &Rational, j: usize, s: &Rational) -> bool {
+        let (a, b) = (&self.pieces[i], &self.pieces[j]);
+        let (tf, sf) = (Scalar::to_f64(t), Scalar::to_f64(s));
+        let (mt, ms, pt, ps) = (
+            a.point_f(tf),
+            b.point_f(sf),
+            a.tangent_f(tf),
+            b.tangent_f(sf),
+        );
+        let d3 = |x: [f64; 3], y: [f64; 3]| x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+        let sub = |x: [f64; 3], y: [f64; 3]| [x[0] - y[0], x[1] - y[1], x[2] - y[2]];
+        let rho2 = Scalar::to_f64(&self.rho2) * (1.0 + 1e-6);
+        let d = sub(mt, ms);
+        let dist2 = d3(d, d);
+        if !dist2.is_finite() {
+            return true;
+        }
+        if dist2 > 4.0 * rho2 {
+            return false;
+        }
+        // the midpoint, if it may lie on both planes, is a witness (distance ≤ 2ρ)
+        let c: [f64; 3] = core::array::from_fn(|k| 0.5 * (mt[k] + ms[k]));
+        let off = |m: [f64; 3], p: [f64; 3]| {
+            let u = sub(c, m);
+            d3(u, p).abs() > 1e-9 * (d3(u, u) * d3(p, p)).sqrt()
+        };
+        if !(off(mt, pt) || off(ms, ps)) {
+            return true;
+        }
+        let (a11, a12, a22) = (d3(pt, pt), d3(pt, ps), d3(ps, ps));
+        let det = a11 * a22 - a12 * a12;
+        if det.is_nan() || det <= 1e-8 * a11 * a22 {
+            return true;
+        }
+        let r1 = d3(sub(mt, c), pt);
+        let r2 = d3(sub(ms, c), ps);
+        let alpha = (r1 * a22 - r2 * a12) / det;
+        let beta = (a11 * r2 - a12 * r1) / det;
+        let x: [f64; 3] = core::array::from_fn(|k| c[k] + alpha * pt[k] + beta * ps[k]);
+        let (u, v) = (sub(x, mt), sub(x, ms));
+        let (uu, vv) = (d3(u, u), d3(v, v));
+        !(uu.is_finite() && vv.is_finite()) || (uu <= rho2 && vv <= rho2)
+    }
+
     /// An exact witness that the discs at `(i, t)` and `(j, s)` meet.
     fn witness_at(&self, i: usize, t: &Rational, j: usize, s: &Rational) -> Option<Witness> {
-        if self.global(i, t) == self.global(j, s) {
+        if self.global(i, t) == self.global(j, s) || !self.may_meet_f64(i, t, j, s) {
             return None;
         }
         let (a, b) = (&self.pieces[i], &self.pieces[j]);
@@ -1151,20 +1199,10 @@ impl Check<'_> {
             }
             s = next;
         }
-        // a witness needs |m(e) − m(s)| ≤ 2ρ (a point within ρ of both centres): the exact
-        // test only where the f64 distance is not clearly above (the margin of
-        // `witness_critical`); it only looks for a refusal, a certificate never rests on it
-        let four_rho2 = 4.0 * Scalar::to_f64(&self.rho2) * (1.0 + 1e-6);
-        let near = |s: f64| {
-            let x = b.point_f(s);
-            let d2: f64 = (0..3).map(|i| (me[i] - x[i]).powi(2)).sum();
-            d2.is_nan() || d2 <= four_rho2
-        };
         let sq = Scalar::to_rational(&s)?;
         [Some(sq), Some(iv.0.clone()), Some(iv.1.clone())]
             .into_iter()
             .flatten()
-            .filter(|x| near(Scalar::to_f64(x)))
             .find_map(|x| self.witness_at(k, e, j, &x))
     }
 
