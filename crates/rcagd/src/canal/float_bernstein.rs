@@ -138,18 +138,24 @@ pub(crate) fn all_neg_f(c: &[f64], err: f64) -> Tri {
 /// `f64` de Casteljau at `1/2`: the coefficients of the two halves.
 pub(crate) fn split_row_f(b: &[f64]) -> (Vec<f64>, Vec<f64>) {
     let k = b.len();
-    let mut work = b.to_vec();
-    let mut left = Vec::with_capacity(k);
-    let mut right = Vec::with_capacity(k);
+    let (mut left, mut right) = (vec![0.0; k], vec![0.0; k]);
+    split_row_into(b, &mut left, &mut right, &mut Vec::with_capacity(k));
+    (left, right)
+}
+
+/// [`split_row_f`] into `left` and `right` (each as long as `b`), `work` a scratch buffer:
+/// the same operations in the same order, without allocating.
+fn split_row_into(b: &[f64], left: &mut [f64], right: &mut [f64], work: &mut Vec<f64>) {
+    let k = b.len();
+    work.clear();
+    work.extend_from_slice(b);
     for level in 0..k {
-        left.push(work[0]);
-        right.push(work[k - 1 - level]);
+        left[level] = work[0];
+        right[k - 1 - level] = work[k - 1 - level];
         for i in 0..k - 1 - level {
             work[i] = (work[i] + work[i + 1]) * 0.5;
         }
     }
-    right.reverse();
-    (left, right)
 }
 
 /// Univariate `f64` Bernstein coefficients `c̃` with a proven bound `err ≥ |c̃ᵢ − cᵢ|` on
@@ -268,11 +274,16 @@ impl FTensor {
         let w = n + 1;
         let mut a = vec![0.0; self.c.len()];
         let mut b = a.clone();
-        let mut col = Vec::with_capacity(m + 1);
+        let (mut col, mut l, mut r, mut work) = (
+            Vec::with_capacity(m + 1),
+            vec![0.0; m + 1],
+            vec![0.0; m + 1],
+            Vec::with_capacity(m + 1),
+        );
         for j in 0..w {
             col.clear();
             col.extend((0..=m).map(|i| self.c[i * w + j]));
-            let (l, r) = split_row_f(&col);
+            split_row_into(&col, &mut l, &mut r, &mut work);
             for i in 0..=m {
                 a[i * w + j] = l[i];
                 b[i * w + j] = r[i];
@@ -289,12 +300,17 @@ impl FTensor {
     pub(crate) fn split_s(&self) -> (FTensor, FTensor) {
         let (m, n) = (self.m, self.n);
         let w = n + 1;
-        let mut a = Vec::with_capacity(self.c.len());
-        let mut b = Vec::with_capacity(self.c.len());
+        let mut a = vec![0.0; self.c.len()];
+        let mut b = a.clone();
+        let mut work = Vec::with_capacity(w);
         for i in 0..=m {
-            let (l, r) = split_row_f(&self.c[i * w..(i + 1) * w]);
-            a.extend(l);
-            b.extend(r);
+            let row = i * w..(i + 1) * w;
+            split_row_into(
+                &self.c[row.clone()],
+                &mut a[row.clone()],
+                &mut b[row],
+                &mut work,
+            );
         }
         let err = grown_error(self.err, self.mag(), n);
         (
