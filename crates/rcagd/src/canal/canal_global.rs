@@ -54,8 +54,8 @@
 //! "Chains and closed spines" and "On a rectangle of the cyclographic parametrization").
 
 use super::bipoly::BiPoly;
+use super::float_bernstein::{f64_above, f64_below, FTensor, Tri};
 use super::regularity::{cross, dot};
-use super::self_intersection::{f64_above, f64_below};
 use super::{CanalError, CanalSpine};
 use crate::error::format_scalar;
 use rcagd_algebra::bernstein::{subdivide_blocks, to_bernstein_blocks};
@@ -498,135 +498,6 @@ impl PlaneParts {
     }
 }
 
-/// The unit roundoff of `f64` (`2⁻⁵³`).
-const UNIT_ROUNDOFF: f64 = f64::EPSILON / 2.0;
-
-/// Tensor Bernstein coefficients (`(m + 1) × (n + 1)`, row-major in `t`) in `f64` with a
-/// proven bound `err ≥ |c̃ − c|` on every coefficient's distance to the exact one (`err`
-/// not finite: unusable). Halving at `1/2` by de Casteljau is a convex average per level:
-/// it adds at most `u·M′ + 2⁻¹⁰⁷⁴` per level (`u = 2⁻⁵³`, `M′ ≥` every intermediate
-/// magnitude; N. J. Higham, "Accuracy and Stability of Numerical Algorithms", 2nd ed.,
-/// 2002, §2.2; docs/math/pipes.md, "Global check: `f64` filters that keep the proof").
-#[derive(Clone, Debug)]
-struct FTensor {
-    m: usize,
-    n: usize,
-    c: Vec<f64>,
-    err: f64,
-}
-
-impl FTensor {
-    fn of(exact: &[Rational], m: usize, n: usize) -> FTensor {
-        let mut err = 0.0f64;
-        let c = exact
-            .iter()
-            .map(|x| {
-                let f = Scalar::to_f64(x);
-                let e = match Rational::try_from(f) {
-                    // |x − f| exactly, then rounded up (to_f64 is within one ulp)
-                    Ok(q) => {
-                        let d = q - x.clone();
-                        let d = if d < Rational::ZERO { -d } else { d };
-                        Scalar::to_f64(&d).next_up().next_up()
-                    }
-                    Err(_) => f64::INFINITY,
-                };
-                if e.is_nan() || e > err {
-                    err = e;
-                }
-                f
-            })
-            .collect();
-        FTensor { m, n, c, err }.checked()
-    }
-
-    fn checked(mut self) -> FTensor {
-        if !self.err.is_finite() || self.c.iter().any(|x| !x.is_finite()) {
-            self.err = f64::INFINITY;
-        }
-        self
-    }
-
-    /// The bound after `levels` de Casteljau levels (`(1 + u)^levels ≤ 1 + 10⁻⁹`; the
-    /// outer factor covers the rounding of this sum).
-    fn grown(&self, levels: usize) -> f64 {
-        let mag = self.c.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        let per = UNIT_ROUNDOFF * mag * (1.0 + 1e-9) + 1e-323;
-        ((self.err + levels as f64 * per) * (1.0 + 1e-12)).next_up()
-    }
-
-    /// The four quarters `(t₁, s₁), (t₁, s₂), (t₂, s₁), (t₂, s₂)`.
-    fn quarters(&self) -> [FTensor; 4] {
-        let (m, n) = (self.m, self.n);
-        let w = n + 1;
-        let split = |b: &[f64]| -> (Vec<f64>, Vec<f64>) {
-            let k = b.len();
-            let mut work = b.to_vec();
-            let (mut l, mut r) = (Vec::with_capacity(k), Vec::with_capacity(k));
-            for level in 0..k {
-                l.push(work[0]);
-                r.push(work[k - 1 - level]);
-                for i in 0..k - 1 - level {
-                    work[i] = (work[i] + work[i + 1]) * 0.5;
-                }
-            }
-            r.reverse();
-            (l, r)
-        };
-        // halves in t (columns), then each in s (rows)
-        let (mut lo, mut hi) = (vec![0.0; self.c.len()], vec![0.0; self.c.len()]);
-        for j in 0..w {
-            let col: Vec<f64> = (0..=m).map(|i| self.c[i * w + j]).collect();
-            let (l, r) = split(&col);
-            for i in 0..=m {
-                lo[i * w + j] = l[i];
-                hi[i * w + j] = r[i];
-            }
-        }
-        let err_t = self.grown(m);
-        let halves_s = |c: Vec<f64>| -> [FTensor; 2] {
-            let half = FTensor {
-                m,
-                n,
-                c,
-                err: err_t,
-            }
-            .checked();
-            let err = half.grown(n);
-            let (mut a, mut b) = (
-                Vec::with_capacity(half.c.len()),
-                Vec::with_capacity(half.c.len()),
-            );
-            for i in 0..=m {
-                let (l, r) = split(&half.c[i * w..(i + 1) * w]);
-                a.extend(l);
-                b.extend(r);
-            }
-            [
-                FTensor { m, n, c: a, err }.checked(),
-                FTensor { m, n, c: b, err }.checked(),
-            ]
-        };
-        let [a, b] = halves_s(lo);
-        let [c, d] = halves_s(hi);
-        [a, b, c, d]
-    }
-
-    /// Every exact coefficient `> 0`: `Some(true)` proved, `Some(false)` disproved, `None`
-    /// not decided in `f64`.
-    fn all_pos(&self) -> Option<bool> {
-        if !self.err.is_finite() {
-            None
-        } else if self.c.iter().all(|x| *x > self.err) {
-            Some(true)
-        } else if self.c.iter().any(|x| *x <= -self.err) {
-            Some(false)
-        } else {
-            None
-        }
-    }
-}
-
 /// How a box was settled.
 #[derive(Clone, Copy)]
 enum Settled {
@@ -1060,9 +931,13 @@ impl Search {
     /// coefficients of [`plane_poly`]: in `f64` with a proven error bound, exactly where
     /// that does not decide.
     fn plane_box(&mut self, level: u32, x: Key, y: Key) -> bool {
-        match self.plane_tensor(level, x, y).and_then(|f| f.all_pos()) {
-            Some(b) => b,
-            None => {
+        match self
+            .plane_tensor(level, x, y)
+            .map_or(Tri::Unsure, |f| f.all_pos())
+        {
+            Tri::Yes => true,
+            Tri::No => false,
+            Tri::Unsure => {
                 let Some((g, f)) = self.plane(x.0, y.0) else {
                     return false;
                 };

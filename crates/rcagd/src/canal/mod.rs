@@ -62,6 +62,7 @@ pub mod cyclographic_param;
 pub mod envelope;
 pub mod exportable;
 pub mod factor;
+mod float_bernstein;
 pub mod frame;
 pub mod krasauskas;
 pub mod normal_field;

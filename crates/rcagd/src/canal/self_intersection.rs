@@ -33,6 +33,7 @@
 //! the statement proved is the same as with exact arithmetic throughout.
 
 use super::bipoly::BiPoly;
+use super::float_bernstein::{f64_above, f64_below, FCoeffs, FTensor, Tri};
 use super::regularity::{pipe_regularity_polynomials, sqrt_upper};
 use super::{CanalError, CanalSpine};
 use crate::error::format_scalar;
@@ -80,198 +81,6 @@ fn sub_q(a: &[Rational; 3], b: &[Rational; 3]) -> [Rational; 3] {
 
 fn half() -> Rational {
     Rational::from_ratio(1, 2)
-}
-
-/// The unit roundoff of `f64` (`2⁻⁵³`).
-const UNIT_ROUNDOFF: f64 = f64::EPSILON / 2.0;
-
-/// A three-valued test result: proved, disproved (exactly), or not decided in `f64`.
-#[derive(Clone, Copy, PartialEq, Eq, Debug)]
-enum Tri {
-    Yes,
-    No,
-    Unsure,
-}
-
-/// `f64` Bernstein coefficients `c̃` with a proven bound `err ≥ |c̃ᵢ − cᵢ|` on their distance
-/// to the exact ones (`err` not finite: unusable, every test [`Tri::Unsure`]).
-#[derive(Clone, Debug)]
-struct FCoeffs {
-    c: Vec<f64>,
-    err: f64,
-}
-
-/// The exact `|x − f|` rounded up (`∞` if `f` is not finite).
-fn conversion_error(x: &Rational, f: f64) -> f64 {
-    match Rational::try_from(f) {
-        Ok(q) => {
-            let d = q - x.clone();
-            let d = if d < Rational::ZERO { -d } else { d };
-            let e = Scalar::to_f64(&d);
-            // to_f64 is within one unit in the last place: two steps up are above
-            e.next_up().next_up()
-        }
-        Err(_) => f64::INFINITY,
-    }
-}
-
-/// A rational `≤ x` as `f64` (`f64::MAX` above its range; also used by the canal check).
-pub(crate) fn f64_below(x: &Rational) -> f64 {
-    let mut f = Scalar::to_f64(x);
-    if f == f64::INFINITY {
-        return f64::MAX;
-    }
-    while Rational::try_from(f).is_ok_and(|q| q > *x) {
-        f = f.next_down();
-    }
-    f
-}
-
-/// A rational `≥ x` as `f64` (`−f64::MAX` below its range; also used by the canal check).
-pub(crate) fn f64_above(x: &Rational) -> f64 {
-    let mut f = Scalar::to_f64(x);
-    if f == f64::NEG_INFINITY {
-        return -f64::MAX;
-    }
-    while Rational::try_from(f).is_ok_and(|q| q < *x) {
-        f = f.next_up();
-    }
-    f
-}
-
-/// The error bound after `levels` de Casteljau levels at `1/2` of coefficients of magnitude
-/// `≤ mag` (module docs): each level adds `u·M′ + 2⁻¹⁰⁷⁴` with `M′ = mag·(1 + 10⁻⁹)` bounding
-/// every intermediate (`(1 + u)^levels ≤ 1 + 10⁻⁹`); the outer factor covers the rounding
-/// of this sum.
-fn grown_error(err: f64, mag: f64, levels: usize) -> f64 {
-    let per = UNIT_ROUNDOFF * mag * (1.0 + 1e-9) + 1e-323;
-    ((err + levels as f64 * per) * (1.0 + 1e-12)).next_up()
-}
-
-impl FCoeffs {
-    fn of(exact: &[Rational]) -> Self {
-        let mut err = 0.0f64;
-        let c: Vec<f64> = exact
-            .iter()
-            .map(|x| {
-                let f = Scalar::to_f64(x);
-                let e = conversion_error(x, f);
-                if e.is_nan() || e > err {
-                    err = e; // NaN-safe: a NaN or larger bound replaces
-                }
-                f
-            })
-            .collect();
-        FCoeffs { c, err }.checked()
-    }
-
-    /// Marks the bound unusable if a coefficient is not finite.
-    fn checked(mut self) -> Self {
-        if !self.err.is_finite() || self.c.iter().any(|x| !x.is_finite()) {
-            self.err = f64::INFINITY;
-        }
-        self
-    }
-
-    fn usable(&self) -> bool {
-        self.err.is_finite()
-    }
-
-    fn mag(&self) -> f64 {
-        self.c.iter().fold(0.0f64, |m, x| m.max(x.abs()))
-    }
-
-    /// de Casteljau at `1/2`.
-    fn halves(&self) -> (FCoeffs, FCoeffs) {
-        let (l, r) = split_row_f(&self.c);
-        let err = grown_error(self.err, self.mag(), self.c.len().saturating_sub(1));
-        (
-            FCoeffs { c: l, err }.checked(),
-            FCoeffs { c: r, err }.checked(),
-        )
-    }
-
-    /// Every exact coefficient `> 0`?
-    fn all_pos(&self) -> Tri {
-        all_pos_f(&self.c, self.err)
-    }
-
-    /// A lower bound of the least exact coefficient (`−∞` if unusable).
-    fn min_lower(&self) -> f64 {
-        if !self.usable() {
-            return f64::NEG_INFINITY;
-        }
-        let m = self.c.iter().fold(f64::INFINITY, |m, x| m.min(*x));
-        (m - self.err).next_down()
-    }
-
-    /// An upper bound of the least exact coefficient.
-    fn min_upper(&self) -> f64 {
-        if !self.usable() {
-            return f64::INFINITY;
-        }
-        let m = self.c.iter().fold(f64::INFINITY, |m, x| m.min(*x));
-        (m + self.err).next_up()
-    }
-
-    /// An upper bound of the largest exact coefficient (`∞` if unusable).
-    fn max_upper(&self) -> f64 {
-        if !self.usable() {
-            return f64::INFINITY;
-        }
-        let m = self.c.iter().fold(f64::NEG_INFINITY, |m, x| m.max(*x));
-        (m + self.err).next_up()
-    }
-
-    /// A lower bound of the largest exact coefficient.
-    fn max_lower(&self) -> f64 {
-        if !self.usable() {
-            return f64::NEG_INFINITY;
-        }
-        let m = self.c.iter().fold(f64::NEG_INFINITY, |m, x| m.max(*x));
-        (m - self.err).next_down()
-    }
-}
-
-fn all_pos_f(c: &[f64], err: f64) -> Tri {
-    if !err.is_finite() {
-        Tri::Unsure
-    } else if c.iter().all(|x| *x > err) {
-        Tri::Yes
-    } else if c.iter().any(|x| *x <= -err) {
-        Tri::No
-    } else {
-        Tri::Unsure
-    }
-}
-
-fn all_neg_f(c: &[f64], err: f64) -> Tri {
-    if !err.is_finite() {
-        Tri::Unsure
-    } else if c.iter().all(|x| *x < -err) {
-        Tri::Yes
-    } else if c.iter().any(|x| *x >= err) {
-        Tri::No
-    } else {
-        Tri::Unsure
-    }
-}
-
-/// `f64` de Casteljau at `1/2` ([`split_row`]).
-fn split_row_f(b: &[f64]) -> (Vec<f64>, Vec<f64>) {
-    let k = b.len();
-    let mut work = b.to_vec();
-    let mut left = Vec::with_capacity(k);
-    let mut right = Vec::with_capacity(k);
-    for level in 0..k {
-        left.push(work[0]);
-        right.push(work[k - 1 - level]);
-        for i in 0..k - 1 - level {
-            work[i] = (work[i] + work[i + 1]) * 0.5;
-        }
-    }
-    right.reverse();
-    (left, right)
 }
 
 /// The Bernstein coefficients of `p` on the aligned dyadic subintervals of `[lo, hi]`
@@ -564,101 +373,6 @@ impl Tensor {
     }
 }
 
-/// A [`Tensor`] in `f64` with a proven bound `err` on every coefficient's distance to the
-/// exact one ([`FCoeffs`]).
-#[derive(Clone)]
-struct FTensor {
-    m: usize,
-    n: usize,
-    c: Vec<f64>,
-    err: f64,
-}
-
-impl FTensor {
-    fn of(t: &Tensor) -> Self {
-        let f = FCoeffs::of(&t.c);
-        FTensor {
-            m: t.m,
-            n: t.n,
-            c: f.c,
-            err: f.err,
-        }
-    }
-
-    fn checked(mut self) -> Self {
-        if !self.err.is_finite() || self.c.iter().any(|x| !x.is_finite()) {
-            self.err = f64::INFINITY;
-        }
-        self
-    }
-
-    fn mag(&self) -> f64 {
-        self.c.iter().fold(0.0f64, |m, x| m.max(x.abs()))
-    }
-
-    /// The halves in `t` ([`Tensor::split_t`]).
-    fn split_t(&self) -> (FTensor, FTensor) {
-        let (m, n) = (self.m, self.n);
-        let mut a = vec![0.0; self.c.len()];
-        let mut b = a.clone();
-        let mut col = Vec::with_capacity(m + 1);
-        for j in 0..=n {
-            col.clear();
-            col.extend((0..=m).map(|i| self.c[i * (n + 1) + j]));
-            let (l, r) = split_row_f(&col);
-            for i in 0..=m {
-                a[i * (n + 1) + j] = l[i];
-                b[i * (n + 1) + j] = r[i];
-            }
-        }
-        let err = grown_error(self.err, self.mag(), m);
-        (
-            FTensor { m, n, c: a, err }.checked(),
-            FTensor { m, n, c: b, err }.checked(),
-        )
-    }
-
-    /// The halves in `s` ([`Tensor::split_s`]).
-    fn split_s(&self) -> (FTensor, FTensor) {
-        let (m, n) = (self.m, self.n);
-        let mut a = Vec::with_capacity(self.c.len());
-        let mut b = Vec::with_capacity(self.c.len());
-        for i in 0..=m {
-            let (l, r) = split_row_f(&self.c[i * (n + 1)..(i + 1) * (n + 1)]);
-            a.extend(l);
-            b.extend(r);
-        }
-        let err = grown_error(self.err, self.mag(), n);
-        (
-            FTensor { m, n, c: a, err }.checked(),
-            FTensor { m, n, c: b, err }.checked(),
-        )
-    }
-
-    /// Every exact coefficient `> 0`?
-    fn all_pos(&self) -> Tri {
-        all_pos_f(&self.c, self.err)
-    }
-
-    /// Every exact coefficient `> 0`, or every one `< 0`?
-    fn strict_sign(&self) -> Tri {
-        match (all_pos_f(&self.c, self.err), all_neg_f(&self.c, self.err)) {
-            (Tri::Yes, _) | (_, Tri::Yes) => Tri::Yes,
-            (Tri::No, Tri::No) => Tri::No,
-            _ => Tri::Unsure,
-        }
-    }
-
-    /// A lower bound of the least exact coefficient.
-    fn min_lower(&self) -> f64 {
-        if !self.err.is_finite() {
-            return f64::NEG_INFINITY;
-        }
-        let m = self.c.iter().fold(f64::INFINITY, |m, x| m.min(*x));
-        (m - self.err).next_down()
-    }
-}
-
 /// `[g₁, g₂, N]` of a pair of pieces on a box.
 type Tensors = [Tensor; 3];
 
@@ -691,17 +405,27 @@ impl Halving for FTensor {
 
 /// The three tensors of a box on its four quarters, in the order
 /// (t₁, s₁), (t₁, s₂), (t₂, s₁), (t₂, s₂).
-fn quarter<T: Halving>(t: &[T; 3]) -> [[T; 3]; 4] {
-    let parts: Vec<[T; 4]> = t
-        .iter()
-        .map(|x| {
-            let (l, r) = x.split_t();
-            let (ll, lr) = l.split_s();
+/// On a diagonal box (`diag`) the quarter `(t₂, s₁)` (below the diagonal) is not needed
+/// and is left as `None`.
+fn quarter<T: Halving>(t: &[T; 3], diag: bool) -> [Option<[T; 3]>; 4] {
+    let [a, b, c] = t.each_ref().map(|x| {
+        let (l, r) = x.split_t();
+        let (ll, lr) = l.split_s();
+        let (rl, rr) = if diag {
+            (None, Some(r.split_s().1))
+        } else {
             let (rl, rr) = r.split_s();
-            [ll, lr, rl, rr]
-        })
-        .collect();
-    core::array::from_fn(|q| core::array::from_fn(|k| parts[k][q].clone()))
+            (Some(rl), Some(rr))
+        };
+        [Some(ll), Some(lr), rl, rr]
+    });
+    let mut out: [Option<[T; 3]>; 4] = [None, None, None, None];
+    for (q, ((x, y), z)) in a.into_iter().zip(b).zip(c).enumerate() {
+        if let (Some(x), Some(y), Some(z)) = (x, y, z) {
+            out[q] = Some([x, y, z]);
+        }
+    }
+    out
 }
 
 /// A box `I × J` of parameter pairs, `t ∈ I` on piece `i`, `s ∈ J` on piece `j`, with
@@ -788,6 +512,9 @@ struct Check<'a> {
     pair_polys: HashMap<(usize, usize), [BiPoly<Rational>; 3]>,
     /// The end polynomials per `(start, piece, which)` on aligned intervals in `f64`.
     end_trees: HashMap<(bool, usize, usize), UTree>,
+    /// Exact signs of `[g₁, g₂, N][which]` at grid points `(i, j, which, level, t, s)`
+    /// ([`Self::corner_sign`]).
+    corners: HashMap<(usize, usize, usize, u32, u64, u64), Ordering>,
     /// `4ρ²`, rounded down.
     four_rho2_low: f64,
     /// `ρ`, rounded up and down.
@@ -1106,36 +833,85 @@ impl Check<'_> {
         v
     }
 
-    /// The signs of the exact values of `[g₁, g₂, N][which]` at the four corners of the box
-    /// (the corner Bernstein coefficients).
-    fn corner_signs(&mut self, c: &Cell, which: usize) -> [Ordering; 4] {
+    /// The sign of the exact value of `[g₁, g₂, N][which]` at the grid point `(ta, sa)` of
+    /// `2^depth` cells of the pieces `(i, j)`, kept per point (neighbouring boxes share
+    /// corners): fraction-free, the same sign as the rational value.
+    fn corner_sign(&mut self, c: &Cell, which: usize, (ta, sa): (u64, u64)) -> Ordering {
+        // the grid point at its coarsest level (one key per point)
+        let (mut depth, mut ta, mut sa) = (c.depth, ta, sa);
+        while depth > 0 && ta.is_multiple_of(2) && sa.is_multiple_of(2) {
+            (depth, ta, sa) = (depth - 1, ta / 2, sa / 2);
+        }
+        let key = (c.i, c.j, which, depth, ta, sa);
+        if let Some(o) = self.corners.get(&key) {
+            return *o;
+        }
+        if c.i == c.j && ta == sa && which < 2 {
+            // on the diagonal `D(t, t) = M(t)W(t) − M(t)W(t) = 0`, so `g₁ = g₂ = 0`
+            self.corners.insert(key, Ordering::Equal);
+            return Ordering::Equal;
+        }
         if !self.pair_polys.contains_key(&(c.i, c.j)) {
             self.pair_polys(c.i, c.j);
         }
-        let Some(p) = self.pair_polys.get(&(c.i, c.j)).map(|v| &v[which]) else {
-            return [Ordering::Equal; 4];
-        };
-        let corners = [
-            (&c.t.0, &c.s.0),
-            (&c.t.0, &c.s.1),
-            (&c.t.1, &c.s.0),
-            (&c.t.1, &c.s.1),
+        let (a, b) = (&self.pieces[c.i], &self.pieces[c.j]);
+        let t = dyadic_interval(&a.lo, &a.hi, depth, ta).0;
+        let s = dyadic_interval(&b.lo, &b.hi, depth, sa).0;
+        let o = self
+            .pair_polys
+            .get(&(c.i, c.j))
+            .map(|v| &v[which])
+            .and_then(|p| {
+                p.sign_at(&t, &s)
+                    .or_else(|| p.eval(&t, &s).partial_cmp(&Rational::ZERO))
+            })
+            .unwrap_or(Ordering::Equal);
+        self.corners.insert(key, o);
+        o
+    }
+
+    /// The signs of the exact values of `[g₁, g₂, N][which]` at the four corners of the box
+    /// (the corner Bernstein coefficients), in the order `(t₀, s₀), (t₀, s₁), (t₁, s₀),
+    /// (t₁, s₁)`. A corner coefficient of the `f64` tensor `f` (within `f.err` of the exact
+    /// one) decides its sign when `|c̃| > err`; only the others are evaluated exactly.
+    fn corner_signs(&mut self, c: &Cell, which: usize, f: Option<&FTensor>) -> [Ordering; 4] {
+        let points = [
+            (c.ta, c.sa),
+            (c.ta, c.sa + 1),
+            (c.ta + 1, c.sa),
+            (c.ta + 1, c.sa + 1),
         ];
-        // the signs only: fraction-free (the same signs as the rational values)
-        corners.map(|(t, s)| {
-            p.sign_at(t, s)
-                .or_else(|| p.eval(t, s).partial_cmp(&Rational::ZERO))
-                .unwrap_or(Ordering::Equal)
-        })
+        let mut out = [Ordering::Equal; 4];
+        for (k, point) in points.into_iter().enumerate() {
+            let from_f64 = f.and_then(|f| {
+                let w = f.n + 1;
+                let x = *f.c.get([0, f.n, f.m * w, f.m * w + f.n][k])?;
+                if !f.err.is_finite() {
+                    None
+                } else if x > f.err {
+                    Some(Ordering::Greater)
+                } else if x < -f.err {
+                    Some(Ordering::Less)
+                } else {
+                    None
+                }
+            });
+            out[k] = match from_f64 {
+                Some(o) => o,
+                None => self.corner_sign(c, which, point),
+            };
+        }
+        out
     }
 
     /// An undecided strict-sign test, disproved where an exact corner value is zero or two
     /// corners differ in sign (a box touching the diagonal, where `D = 0`).
-    fn sign_or_corners(&mut self, c: &Cell, which: usize, tri: Tri) -> Tri {
+    fn sign_or_corners(&mut self, c: &Cell, which: usize, f: &FTensor) -> Tri {
+        let tri = f.strict_sign();
         if tri != Tri::Unsure {
             return tri;
         }
-        let k = self.corner_signs(c, which);
+        let k = self.corner_signs(c, which, Some(f));
         if k.contains(&Ordering::Equal) || k.iter().any(|x| *x != k[0]) {
             Tri::No
         } else {
@@ -1271,9 +1047,57 @@ impl Check<'_> {
         }
     }
 
+    /// [`Self::witness_at`] in `f64`: `false` only where it clearly fails there (squared
+    /// distances above `ρ²` or `4ρ²` by a relative `10⁻⁶`, the midpoint clearly off a
+    /// plane, the planes not nearly parallel), so the exact search is skipped. The search
+    /// only looks for a refusal; a certificate never rests on it.
+    fn may_meet_f64(&self, i: usize, t: &Rational, j: usize, s: &Rational) -> bool {
+        let (a, b) = (&self.pieces[i], &self.pieces[j]);
+        let (tf, sf) = (Scalar::to_f64(t), Scalar::to_f64(s));
+        let (mt, ms, pt, ps) = (
+            a.point_f(tf),
+            b.point_f(sf),
+            a.tangent_f(tf),
+            b.tangent_f(sf),
+        );
+        let d3 = |x: [f64; 3], y: [f64; 3]| x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+        let sub = |x: [f64; 3], y: [f64; 3]| [x[0] - y[0], x[1] - y[1], x[2] - y[2]];
+        let rho2 = Scalar::to_f64(&self.rho2) * (1.0 + 1e-6);
+        let d = sub(mt, ms);
+        let dist2 = d3(d, d);
+        if !dist2.is_finite() {
+            return true;
+        }
+        if dist2 > 4.0 * rho2 {
+            return false;
+        }
+        // the midpoint, if it may lie on both planes, is a witness (distance ≤ 2ρ)
+        let c: [f64; 3] = core::array::from_fn(|k| 0.5 * (mt[k] + ms[k]));
+        let off = |m: [f64; 3], p: [f64; 3]| {
+            let u = sub(c, m);
+            d3(u, p).abs() > 1e-9 * (d3(u, u) * d3(p, p)).sqrt()
+        };
+        if !(off(mt, pt) || off(ms, ps)) {
+            return true;
+        }
+        let (a11, a12, a22) = (d3(pt, pt), d3(pt, ps), d3(ps, ps));
+        let det = a11 * a22 - a12 * a12;
+        if det.is_nan() || det <= 1e-8 * a11 * a22 {
+            return true;
+        }
+        let r1 = d3(sub(mt, c), pt);
+        let r2 = d3(sub(ms, c), ps);
+        let alpha = (r1 * a22 - r2 * a12) / det;
+        let beta = (a11 * r2 - a12 * r1) / det;
+        let x: [f64; 3] = core::array::from_fn(|k| c[k] + alpha * pt[k] + beta * ps[k]);
+        let (u, v) = (sub(x, mt), sub(x, ms));
+        let (uu, vv) = (d3(u, u), d3(v, v));
+        !(uu.is_finite() && vv.is_finite()) || (uu <= rho2 && vv <= rho2)
+    }
+
     /// An exact witness that the discs at `(i, t)` and `(j, s)` meet.
     fn witness_at(&self, i: usize, t: &Rational, j: usize, s: &Rational) -> Option<Witness> {
-        if self.global(i, t) == self.global(j, s) {
+        if self.global(i, t) == self.global(j, s) || !self.may_meet_f64(i, t, j, s) {
             return None;
         }
         let (a, b) = (&self.pieces[i], &self.pieces[j]);
@@ -1376,9 +1200,10 @@ impl Check<'_> {
             s = next;
         }
         let sq = Scalar::to_rational(&s)?;
-        self.witness_at(k, e, j, &sq)
-            .or_else(|| self.witness_at(k, e, j, &iv.0))
-            .or_else(|| self.witness_at(k, e, j, &iv.1))
+        [Some(sq), Some(iv.0.clone()), Some(iv.1.clone())]
+            .into_iter()
+            .flatten()
+            .find_map(|x| self.witness_at(k, e, j, &x))
     }
 
     fn witness_critical(&self, c: &Cell) -> Option<Witness> {
@@ -1697,6 +1522,7 @@ fn run_check(
         node_exact: HashMap::new(),
         pair_polys: HashMap::new(),
         end_trees: HashMap::new(),
+        corners: HashMap::new(),
         four_rho2_low: f64_below(&four_rho2),
         rho_up: f64_above(&sqrt_upper(&(rho_abs.clone() * rho_abs.clone()))),
         rho_low: f64_below(&rho_abs),
@@ -1738,7 +1564,11 @@ fn run_check(
                 Some(t) => t,
                 None => {
                     let [a, b, d] = check.tensors(&c)?;
-                    [FTensor::of(&a), FTensor::of(&b), FTensor::of(&d)]
+                    [
+                        FTensor::of(&a.c, a.m, a.n),
+                        FTensor::of(&b.c, b.m, b.n),
+                        FTensor::of(&d.c, d.m, d.n),
+                    ]
                 }
             });
         }
@@ -1750,7 +1580,7 @@ fn run_check(
                     Tri::No => false,
                     Tri::Unsure => {
                         // an exact corner value (a corner coefficient) ≤ 0 decides it
-                        let k = check.corner_signs(&c, 2);
+                        let k = check.corner_signs(&c, 2, Some(&f[2]));
                         if k.iter().any(|x| *x != Ordering::Greater) {
                             false
                         } else {
@@ -1804,8 +1634,8 @@ fn run_check(
             }
             let critical = match &ft {
                 Some(f) => match (
-                    check.sign_or_corners(&c, 0, f[0].strict_sign()),
-                    check.sign_or_corners(&c, 1, f[1].strict_sign()),
+                    check.sign_or_corners(&c, 0, &f[0]),
+                    check.sign_or_corners(&c, 1, &f[1]),
                 ) {
                     (Tri::Yes, _) | (_, Tri::Yes) => true,
                     (Tri::No, Tri::No) => false,
@@ -1887,9 +1717,9 @@ fn run_check(
         let mut eq: Vec<Option<Tensors>> = vec![None, None, None, None];
         let mut fq: Vec<Option<FTensors>> = vec![None, None, None, None];
         if let Some(f) = &ft {
-            fq = quarter(f).into_iter().map(Some).collect();
+            fq = quarter(f, c.diag).into_iter().collect();
         } else if let Some(t) = &exact_t {
-            eq = quarter(t).into_iter().map(Some).collect();
+            eq = quarter(t, c.diag).into_iter().collect();
         }
         let ts = [(c.t.0.clone(), tm.clone()), (tm, c.t.1.clone())];
         let ss = [(c.s.0.clone(), sm.clone()), (sm, c.s.1.clone())];
@@ -2063,47 +1893,6 @@ mod tests {
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(32))]
-
-        /// The `f64` de Casteljau halves stay within their proven bound of the exact halves
-        /// (random exact coefficients of mixed sizes, eight levels deep, both tensor
-        /// directions).
-        #[test]
-        fn float_halving_stays_within_its_bound(
-            nums in proptest::collection::vec(-1_000_000i64..1_000_000, 4..24),
-            dens in proptest::collection::vec(1i64..100_000, 24),
-            path in proptest::collection::vec(any::<bool>(), 8),
-        ) {
-            let exact: Vec<Rational> = nums
-                .iter()
-                .zip(&dens)
-                .map(|(n, d)| q(*n, *d))
-                .collect();
-            let mut e = exact.clone();
-            let mut f = FCoeffs::of(&exact);
-            for right in &path {
-                let (l, r) = split_row(&e);
-                let (fl, fr) = f.halves();
-                (e, f) = if *right { (r, fr) } else { (l, fl) };
-                for (x, y) in e.iter().zip(&f.c) {
-                    let d = Scalar::to_f64(&(x.clone() - Rational::try_from(*y).unwrap()));
-                    prop_assert!(d.abs() <= f.err, "{d} > {}", f.err);
-                }
-                prop_assert!(f.err <= 1e-9 * (1.0 + f.mag()));
-            }
-            // tensors: a (2, k) tensor split both ways
-            let m = 1;
-            let n = exact.len() / 2 - 1;
-            let t = Tensor { m, n, c: exact[..2 * (n + 1)].to_vec() };
-            let ft = FTensor::of(&t);
-            let (a, _) = t.split_t();
-            let (fa, _) = ft.split_t();
-            let (_, b) = a.split_s();
-            let (_, fb) = fa.split_s();
-            for (x, y) in b.c.iter().zip(&fb.c) {
-                let d = Scalar::to_f64(&(x.clone() - Rational::try_from(*y).unwrap()));
-                prop_assert!(d.abs() <= fb.err);
-            }
-        }
 
         /// The filtered check decides as the exact reference does on random PH quintics
         /// (radii from 0.1 to 0.9 of the least sampled radius of curvature): the same
