@@ -199,37 +199,14 @@ fn build_cyclographic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
     Ok(vec![args.object(Geometry::Curves(curves), certs)])
 }
 
-/// `sphere_family_envelope`, in `T` (exact registry: `Rational`; float path: `f64`).
+/// `sphere_family_envelope`, in `T` (exact registry: `Rational`; float path:
+/// [`rcagd_algebra::DoubleDouble`], whose digits cover the cancellations of elliptic nets,
+/// other sheets and enveloped spheres that `f64` lost: docs/plans/float.md, "Session 18,
+/// ddfloat").
 pub(crate) fn build_envelope<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    if !T::EXACT {
-        refuse_unverified_f64(args)?;
-    }
     let env = net_envelope::<T>(args, args.bool("other_sheet")? || args.int("spheres")? > 0)?;
     let certs = env.certify();
     envelope_object(args, &env, certs)
-}
-
-/// The inputs whose f64 build is not shown to agree with the exact one to 1e-12 (random
-/// elliptic nets agree only to about 1e-9, other sheets to about 2e-9, and an enveloped
-/// sphere's f64 contact certificate can fail: docs/plans/float.md, "Session 16,
-/// floatsph"): refused by the float path, so that what it builds keeps its promise.
-fn refuse_unverified_f64(args: &OpArgs) -> Result<(), OpError> {
-    let exact_only = |param: &'static str, what: &str| {
-        Err(OpError::param(
-            param,
-            format!("{what} {}", crate::float::UNVERIFIED_REFUSED),
-        ))
-    };
-    if args.string("net")? == "elliptic" {
-        return exact_only("net", "the envelope of an elliptic net");
-    }
-    if args.bool("other_sheet")? {
-        return exact_only("other_sheet", "the other sheet");
-    }
-    if args.int("spheres")? > 0 {
-        return exact_only("spheres", "drawing enveloped spheres");
-    }
-    Ok(())
 }
 
 /// The envelope's positive-weight patches on the `domain` rectangle, with `certs` and the
@@ -503,9 +480,9 @@ where
     let (rec, contacts) = match arith::same::<_, Recognition<T>>(rec) {
         Ok(r) => (r, contacts),
         Err(exact) => {
-            refuse_unverified_recognized(args, &exact)?;
+            let other = args.bool("other_sheet")? || args.int("spheres")? > 0;
             let r = exact
-                .in_scalar::<T>(false)
+                .in_scalar::<T>(other)
                 .map_err(|e| OpError::param("centre", e.to_string()))?;
             let c = match contacts {
                 Some(_) => Some(family_contacts_in(args, &r)?),
@@ -560,36 +537,6 @@ where
     );
     o.name = format!("{}_contacts", args.name());
     Ok(o)
-}
-
-/// The recognized families whose f64 envelope is refused, as for `sphere_family_envelope`
-/// ([`refuse_unverified_f64`]): an elliptic net, the other sheet, enveloped spheres.
-fn refuse_unverified_recognized(
-    args: &OpArgs,
-    rec: &Recognition<Rational>,
-) -> Result<(), OpError> {
-    if rec.net().kind() == NetKind::Elliptic {
-        return Err(OpError::param(
-            "centre",
-            format!(
-                "the envelope of a family recognized as an elliptic net {}",
-                crate::float::UNVERIFIED_REFUSED
-            ),
-        ));
-    }
-    if args.bool("other_sheet")? {
-        return Err(OpError::param(
-            "other_sheet",
-            format!("the other sheet {}", crate::float::UNVERIFIED_REFUSED),
-        ));
-    }
-    if args.int("spheres")? > 0 {
-        return Err(OpError::param(
-            "spheres",
-            format!("drawing enveloped spheres {}", crate::float::UNVERIFIED_REFUSED),
-        ));
-    }
-    Ok(())
 }
 
 /// The object `NAME_contacts` of `sphere_family_recognize`: the cyclographic construction
