@@ -188,8 +188,9 @@ fn gallery_objects_with_a_float_path_agree() {
                 objects: vec![obj.clone()],
             };
             // a type the float path refuses by design (`line_congruence_strips`' reguli,
-            // `float::REGULI_REFUSED`) or for an open finding (`float::UNVERIFIED_REFUSED`:
-            // `sphere_family_envelope`'s elliptic nets, other sheets, spheres): skipped
+            // `float::REGULI_REFUSED`) or for an open finding (`float::UNVERIFIED_REFUSED`;
+            // none since session 18: `sphere_family_envelope`'s elliptic nets, other sheets
+            // and spheres build in double-double and are compared): skipped
             if let Err(d) = build_recipe_with(&one, Arithmetic::Float, |_| {}) {
                 if d[0].message.contains(float::REGULI_REFUSED)
                     || d[0].message.contains(float::UNVERIFIED_REFUSED)

@@ -21,6 +21,14 @@ fn check(src: &str) -> Result<bool, TestCaseError> {
     let Ok(exact) = build(src, Arithmetic::Exact) else {
         return Ok(false);
     };
+    // the exact build's own certificate fails (a weight that its exact bisection cannot
+    // show positive on the rectangle: a pole or a zero touching it; the CLI exits 1): the
+    // op's exceptional set, which the float path refuses as a pole (found by this test:
+    // `points = [[0, 0, 0, 1], [0, 0, -1, -1], [1, -1, 2, -1], [-1, -2, -1, -2]]`,
+    // `a = −5/4 − u/2 − u² + i(−3 − 2u/3 + 5u²)`, `domain = [−1, 1/2, 1, 3]`)
+    if exact.iter().flat_map(|o| &o.certificates).any(|c| !c.holds) {
+        return Ok(false);
+    }
     let f = match build(src, Arithmetic::Float) {
         Ok(f) => f,
         // the documented refusal of an other sheet whose replayed factor does not divide
