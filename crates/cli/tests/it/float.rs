@@ -655,12 +655,24 @@ fn double_double_timings() {
         .map(|e| e.unwrap().path())
         .collect();
     paths.sort();
+    // the gallery recipes, then each op's example (`common_transversals` has no gallery
+    // object)
+    let mut sources: Vec<(String, String)> = paths
+        .iter()
+        .map(|p| {
+            let name = p.file_stem().unwrap().to_string_lossy().to_string();
+            (name, std::fs::read_to_string(p).unwrap())
+        })
+        .collect();
+    for f in float::F64_INSTANCES {
+        let spec = rcagd_cli::ops::find(f.name).unwrap();
+        sources.push((format!("example of {}", f.name), spec.example.to_string()));
+    }
     println!("| recipe | objects | exact (ms) | f64 (ms) | double-double (ms) | dd / f64 |");
     println!("|---|---|---|---|---|---|");
     let (mut te, mut tf, mut td) = (0.0, 0.0, 0.0);
-    for path in paths {
-        let text = std::fs::read_to_string(&path).unwrap();
-        let r = Recipe::parse(&path.display().to_string(), &text, None).unwrap();
+    for (name, text) in sources {
+        let r = Recipe::parse("r.toml", &text, None).unwrap();
         let objs: Vec<_> = r
             .objects
             .iter()
@@ -702,7 +714,6 @@ fn double_double_timings() {
         te += e;
         tf += f;
         td += d;
-        let name = path.file_stem().unwrap().to_string_lossy().to_string();
         println!(
             "| {name} | {} | {e:.2} | {f:.2} | {d:.2} | {:.1}× |",
             objs.len(),
