@@ -14,6 +14,7 @@ pub mod budget;
 pub mod certificate;
 pub mod complex;
 pub mod conic_point;
+pub mod double_double;
 pub mod error;
 pub mod factor;
 pub mod factor_ext;
@@ -34,6 +35,7 @@ pub mod sum_of_squares;
 
 pub use certificate::Certificate;
 pub use complex::Complex;
+pub use double_double::DoubleDouble;
 pub use error::AlgebraError;
 pub use linalg::{Matrix, Solution};
 pub use poly::Poly;

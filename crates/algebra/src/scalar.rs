@@ -119,6 +119,13 @@ pub trait Scalar: Field + PartialOrd {
     fn from_ratio(p: i64, q: i64) -> Self {
         Self::from_i64(p) / Self::from_i64(q)
     }
+    /// `√self` for an inexact scalar and `self ≥ 0` (the square root of
+    /// [`sqrt_in_field`]'s inexact branch): by default the `f64` root of the nearest
+    /// `f64`; a wider type ([`crate::double_double::DoubleDouble`]) keeps its precision.
+    fn sqrt_inexact(&self) -> Option<Self> {
+        let r = Rational::try_from(self.to_f64().sqrt()).ok()?;
+        Some(Self::from_rational(&r))
+    }
 }
 
 impl Ring for f64 {
@@ -209,8 +216,7 @@ pub fn sqrt_in_field<F: Scalar>(x: &F) -> Option<F> {
         let q = x.to_rational()?;
         crate::rational::rational_sqrt(&q).map(|r| F::from_rational(&r))
     } else {
-        let r = Rational::try_from(x.to_f64().sqrt()).ok()?;
-        Some(F::from_rational(&r))
+        x.sqrt_inexact()
     }
 }
 

@@ -17,6 +17,11 @@
 //!   `arithmetic = "f64"` ([`ARITHMETIC`]) in its JSON `values`, so a float result cannot
 //!   be mistaken for an exact one.
 //!
+//! The ops whose `f64` construction cancels digits (`common_transversals`,
+//! `sphere_family_envelope`, `sphere_family_recognize`) run in double-double
+//! ([`DoubleDouble`], about 106 bits) and round their curves and patches once to `f64` at
+//! the end ([`crate::ops::arith::OpScalar`]): the objects are `f64` numbers as the others.
+//!
 //! Ops without a float builder are refused by `rcagd build --float` (see
 //! [`NO_FLOAT_PATH`] for why each topic has none). Where the exact op first solves an
 //! exact-only sub-problem on its *input* (a rational point on a quadric), the builder
@@ -26,9 +31,9 @@
 use crate::model::Object;
 use crate::ops::{self, OpArgs, OpError};
 use num_traits::Zero;
-use rcagd_algebra::Rational;
 #[cfg(doc)]
 use rcagd_algebra::Scalar;
+use rcagd_algebra::{DoubleDouble, Rational};
 use rcagd_geom::{BezierCurve, BezierPatch};
 use rcagd_io::quantity::{NamedQuantity, Quantity};
 
@@ -207,8 +212,8 @@ pub const FLOAT_OPS: &[FloatOp] = &[
     // --- session 16, floatsph: sphere families, conic surfaces, line congruences ---
     FloatOp {
         name: "sphere_family_envelope",
-        build: ops::sphere_family::build_envelope::<f64>,
-        note: "the common polynomial factors the construction divides out (gcds and trial divisions over Q) and its exact zero coefficients are decided on the exact input and replayed in f64 (rcagd::envelope::Reductions); elliptic nets, `other_sheet` and `spheres` are refused in f64 (random elliptic nets agree with the exact build only to about 1e-9, other sheets to about 2e-9, and an enveloped sphere's f64 contact certificate can fail: open findings, docs/plans/float.md)",
+        build: ops::sphere_family::build_envelope::<DoubleDouble>,
+        note: "built in double-double (about 106 bits; the result rounded once to f64): the common polynomial factors the construction divides out (gcds and trial divisions over Q) and its exact zero coefficients are decided on the exact input and replayed (rcagd::envelope::Reductions); the certificates are checked in double-double",
     },
     FloatOp {
         name: "cyclographic_plane_image",
@@ -289,13 +294,13 @@ pub const FLOAT_OPS: &[FloatOp] = &[
     // --- session 17, floatnew: the last five ops "not yet written" ---
     FloatOp {
         name: "sphere_family_recognize",
-        build: ops::sphere_family::build_recognized::<f64>,
-        note: "the recognition is a query of the exact input (the span of the normal lines, the pencil of complexes, its discriminant zero or a square over Q, the support functions) and is decided exactly; the envelope of the recovered net is built in f64 along the exact build's reductions (rcagd::envelope::Recognition::in_scalar), and its certificates (the normal lines in both complexes, the family is the given one, the envelope's own) are checked in f64; as for sphere_family_envelope, a family recognized as an elliptic net, `other_sheet` and `spheres` are refused; the `at` contacts: their rationality (the exact op refuses Q(√d)) is decided exactly, the points and their certificates are computed in f64",
+        build: ops::sphere_family::build_recognized::<DoubleDouble>,
+        note: "built in double-double (about 106 bits; the result rounded once to f64): the recognition is a query of the exact input (the span of the normal lines, the pencil of complexes, its discriminant zero or a square over Q, the support functions) and is decided exactly; the envelope of the recovered net is built along the exact build's reductions (rcagd::envelope::Recognition::in_scalar), and its certificates (the normal lines in both complexes, the family is the given one, the envelope's own) are checked in double-double; the `at` contacts: their rationality (the exact op refuses Q(√d)) is decided exactly, the points and their certificates are computed in double-double",
     },
     FloatOp {
         name: "common_transversals",
-        build: ops::canal::build_common_transversals::<f64>,
-        note: "the decisions are taken on the exact lines and replayed (rcagd::lines::common_transversals_along): the pivot columns of the 4 × 6 system (its kernel basis), the number of transversals (the discriminant's sign), the root formula, their rationality (the exact op's refusal of Q(√d)) and the farthest pair of meeting points; the transversals, segments and certificates are computed in f64",
+        build: ops::canal::build_common_transversals::<DoubleDouble>,
+        note: "built in double-double (about 106 bits; the result rounded once to f64): the decisions are taken on the exact lines and replayed (rcagd::lines::common_transversals_along): the pivot columns of the 4 × 6 system (its kernel basis), the number of transversals (the discriminant's sign), the root formula, their rationality (the exact op's refusal of Q(√d)) and the farthest pair of meeting points; the transversals, segments and certificates are computed in double-double",
     },
     FloatOp {
         name: "quadric_interpolate",
@@ -340,8 +345,8 @@ pub const NO_FLOAT_PATH: &[(&str, &str)] = &[
     ("canal_hypersurface", "exact-only library (rcagd::conic_surface::mobius is over Q only): the characteristic spheres are parametrized by §5.1 from a polynomial point found by the exact conic-point engine over Q[t]"),
     // --- end of session 16, floatsph ---
     // --- session 17, floatnew: the two of the last five ops without a float path ---
-    ("sphere_family_cyclographic", "not written (session 17): every object of the op is certified against the other sheet Ψ₂ (\"one contact point is Ψ₂(s, t)\"), so an f64 build needs the other sheet in f64 — which the float path of sphere_family_envelope refuses because random other sheets agree with the exact ones only to about 2e-9 (docs/plans/float.md, session 16, floatsph, findings 2, 4, 5; not analyzed) —, and the contact certificates (SphereFamilyEnvelope::certified_contacts) are Rational-only with exact equality tests (|f − m|² = r², Ψ₂(s, t) = f) that need tolerance forms; the contact points themselves (cyclographic_contacts) are generic"),
     ("line_congruence_parametrized", "not written (session 17): the library's ParametrizedCongruence is built from polynomial maps over Q only (the op reads MPoly<Q>, the normal congruence of a surface and its strips are formed exactly) and its order and class are exact eliminations with a counted-roots certificate (OrderClass::certificate: proved lower bounds reaching the Bézout bound); a float path needs the congruence instantiated in f64 with those exact values and their certificate as decisions on the exact input (an exact certificate on an f64 object, which the float tests do not allow: every certificate of a float object is inexact), and the focal sheets' rationality (a square discriminant over Q) replayed; line_congruence_strips has a float path for the other congruence types"),
+    ("sphere_family_cyclographic", "tried and withdrawn (session 18): with the other sheet and the contact certificates in double-double (generic SphereFamilyEnvelope::certified_contacts), random draws agree to 1e-16, but at the draw points = [[0, 0, 1, 0], [-2, 0, 0, 1], [1, 0, -2, 0], [0, 1, 0, 0]], a = u², b = v², at = [[1, 0]] one contact point is wrong (its certificate |f − m|² = r² fails): SphereFamilyEnvelope::cyclographic_envelope tests ⟨b, b⟩ = 0 exactly and, for a rounding residue of an exact 0, forms the second isotropic point as (⟨a,b⟩ − √disc)·b − ⟨b,b⟩·a, which cancels; fix: the cancellation-free second root ⟨a,a⟩·b − c₁·a with c₁ = ⟨a,b⟩ + sign(⟨a,b⟩)√disc (docs/plans/float.md, session 18)"),
     // --- end of session 17, floatnew ---
     ("ph_dph_septic", "exact-only algebra: exact real roots of the z-polynomial"),
     ("ph_spatial_hermite", "exact-only algebra: the branches live in quadratic fields"),
@@ -358,6 +363,29 @@ pub const NO_FLOAT_PATH: &[(&str, &str)] = &[
     ("analysis", "exact analysis of a PH curve (factorization, exact roots): queries, not constructions"),
     ("quadric_query", "queries of exact algebra (rational points, fibres, collineations over Q)"),
     ("laguerre_query", "queries of exact algebra (Laguerre models over Q)"),
+];
+
+/// The plain `f64` instantiations of the ops whose float path runs in double-double
+/// ([`DoubleDouble`]; docs/plans/float.md, "Session 18, ddfloat"): not offered by `rcagd
+/// build --float` (their results are off by up to 1.8e-9 on random inputs, the
+/// cancellations double-double covers); kept so that tests and timings can show what
+/// double-double buys and costs.
+pub const F64_INSTANCES: &[FloatOp] = &[
+    FloatOp {
+        name: "sphere_family_envelope",
+        build: ops::sphere_family::build_envelope::<f64>,
+        note: "",
+    },
+    FloatOp {
+        name: "sphere_family_recognize",
+        build: ops::sphere_family::build_recognized::<f64>,
+        note: "",
+    },
+    FloatOp {
+        name: "common_transversals",
+        build: ops::canal::build_common_transversals::<f64>,
+        note: "",
+    },
 ];
 
 /// The float path of the op called `name`.

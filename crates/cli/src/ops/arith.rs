@@ -6,7 +6,9 @@
 //! them with [`Scalar::from_rational`] (the identity for `Rational`, the nearest `f64`
 //! otherwise), runs the construction in `T`, and hands its geometry back through this
 //! trait: the exact registry ([`super::OpSpec::build`]) instantiates it with
-//! `T = Rational`, the float registry ([`crate::float::FLOAT_OPS`]) with `T = f64`.
+//! `T = Rational`, the float registry ([`crate::float::FLOAT_OPS`]) with `T = f64`, or
+//! with `T = DoubleDouble` for the ops whose `f64` construction cancels digits (its
+//! results rounded once to `f64`).
 //!
 //! What differs between the two arithmetics is said here, once:
 //! * the geometry of an object is exact; an `f64` result is stored as the *exact binary
@@ -17,7 +19,7 @@
 
 use super::{OpArgs, OpError};
 use crate::model::{Geometry, Object};
-use rcagd_algebra::{Certificate, Rational, Scalar};
+use rcagd_algebra::{Certificate, DoubleDouble, Rational, Scalar};
 use rcagd_geom::weight_sign::{curve_has_one_sign, patch_has_one_sign, WeightZero};
 use rcagd_geom::{BezierCurve, BezierPatch};
 use rcagd_io::quantity::Quantity;
@@ -76,6 +78,46 @@ impl OpScalar for f64 {
     }
     fn quantity(x: Self) -> Quantity {
         Quantity::Approx(x)
+    }
+    fn curve_pole_free(c: &BezierCurve<Self>) -> Result<Certificate, Option<WeightZero>> {
+        if curve_has_one_sign(c) {
+            Ok(Certificate::holds(
+                "the weights wᵢ all have one sign (Σ wᵢ Bᵢ ≠ 0 on [0, 1]: no pole)",
+                false,
+            ))
+        } else {
+            Err(None)
+        }
+    }
+    fn patch_pole_free(p: &BezierPatch<Self>) -> Option<Certificate> {
+        patch_has_one_sign(p).then(|| {
+            Certificate::holds(
+                "the weights wᵢⱼ all have one sign (Σ wᵢⱼ Bᵢ Bⱼ ≠ 0 on [0, 1]²: no pole)",
+                false,
+            )
+        })
+    }
+}
+
+/// Double-double (`hi + lo`, about 106 bits; [`DoubleDouble`]): the float path of the ops
+/// whose `f64` constructions lose digits to cancellation (docs/plans/float.md, "Session 18,
+/// ddfloat"). The construction, its decisions by tolerance and its certificates (inexact,
+/// checked in double-double) run in `DoubleDouble`; the curves and patches are rounded once
+/// to `f64` at the end (each control point to its leading part) and stored as the exact
+/// binary values of those `f64`s, as for `f64`; the object is marked `arithmetic = "f64"`
+/// (its geometry is `f64` numbers).
+impl OpScalar for DoubleDouble {
+    fn exact_curve(c: BezierCurve<Self>) -> Result<BezierCurve<Rational>, OpError> {
+        crate::float::exact_curve(&c.map_scalar(|x| x.to_f64()))
+    }
+    fn exact_patch(p: BezierPatch<Self>) -> Result<BezierPatch<Rational>, OpError> {
+        crate::float::exact_patch(&p.map_scalar(|x| x.to_f64()))
+    }
+    fn finish(o: Object) -> Object {
+        crate::float::mark(o)
+    }
+    fn quantity(x: Self) -> Quantity {
+        Quantity::Approx(x.to_f64())
     }
     fn curve_pole_free(c: &BezierCurve<Self>) -> Result<Certificate, Option<WeightZero>> {
         if curve_has_one_sign(c) {

@@ -166,26 +166,63 @@ a = [[0], [0], [1]]
 b = [[0, 0, 1]]
 at = [["1/2", "1/2"], ["3/4", "1/3"], ["1/3", "3/4"]]
 "#,
-    build: build_cyclographic,
+    build: build_cyclographic::<Rational>,
 };
 
-fn build_cyclographic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    let env = net_envelope::<Rational>(args, true)?;
+/// `sphere_family_cyclographic` in `T` (exact registry: `Rational`; float path:
+/// double-double). An inexact build first runs the exact op (its decisions: the contact
+/// points are rational, the other sheet's factors), then the construction, the other
+/// sheet `Ψ₂` (along the exact reductions) and the certificates in `T`.
+pub(crate) fn build_cyclographic<T>(args: &OpArgs) -> Result<Vec<Object>, OpError>
+where
+    T: OpScalar + SqrtScalar,
+{
+    // the exact build's contact points, in its order (the end of each radius): the float
+    // path draws the two points of a sphere in the same order (which of the two roots of
+    // h ∩ Ω comes first is a decision of the exact square root)
+    let exact_order: Option<Vec<[f64; 3]>> = if T::EXACT {
+        None
+    } else {
+        let objs = build_cyclographic::<Rational>(args)?;
+        Some(match objs.first().map(|o| &o.geometry) {
+            Some(Geometry::Curves(cs)) => cs
+                .iter()
+                .map(|c| {
+                    let p = c.control_point(c.degree());
+                    let w = Scalar::to_f64(&p[0]);
+                    core::array::from_fn(|i| Scalar::to_f64(&p[i + 1]) / w)
+                })
+                .collect(),
+            _ => Vec::new(),
+        })
+    };
+    let env = net_envelope::<T>(args, true)?;
     let at = args.points("at")?;
     let mut curves = Vec::new();
     let mut certs = Vec::new();
     let psi2 = env.other_sheet_homogeneous();
-    for st in &at {
-        let [s, t] = <[Rational; 2]>::try_from(st.clone()).map_err(|_| {
+    for (k, st) in at.iter().enumerate() {
+        let [s, t] = <[T; 2]>::try_from(arith::all_of::<T>(st)).map_err(|_| {
             OpError::param("at", format!("a parameter point is [s, t], got {} numbers", st.len()))
         })?;
-        let c = env
+        let mut c = env
             .certified_contacts(&s, &t, &psi2)
             .map_err(|e| OpError::param("at", e.to_string()))?;
+        if let Some([e0, e1]) = exact_order.as_ref().and_then(|v| v.get(2 * k..2 * k + 2)) {
+            let d = |p: &[T; 3], q: &[f64; 3]| -> f64 {
+                (0..3).map(|i| (p[i].to_f64() - q[i]).powi(2)).sum()
+            };
+            let [p0, p1] = &c.points;
+            if d(p0, e1) + d(p1, e0) < d(p0, e0) + d(p1, e1) {
+                // (the certificates "contact point 1/2 lies on its sphere" keep the
+                // construction's numbering)
+                c.points.swap(0, 1);
+            }
+        }
         let m = &c.sphere.0;
         for pt in &c.points {
-            let hom = |p: &[Rational; 3]| -> Vec<Rational> {
-                let mut h = vec![Rational::from(1)];
+            let hom = |p: &[T; 3]| -> Vec<T> {
+                let mut h = vec![T::one()];
                 h.extend(p.iter().cloned());
                 h
             };
@@ -196,40 +233,17 @@ fn build_cyclographic(args: &OpArgs) -> Result<Vec<Object>, OpError> {
         }
         certs.extend(c.certificates);
     }
-    Ok(vec![args.object(Geometry::Curves(curves), certs)])
+    Ok(vec![arith::object::<T>(args, arith::curves(curves)?, certs)])
 }
 
-/// `sphere_family_envelope`, in `T` (exact registry: `Rational`; float path: `f64`).
+/// `sphere_family_envelope`, in `T` (exact registry: `Rational`; float path:
+/// [`rcagd_algebra::DoubleDouble`], whose digits cover the cancellations of elliptic nets,
+/// other sheets and enveloped spheres that `f64` lost: docs/plans/float.md, "Session 18,
+/// ddfloat").
 pub(crate) fn build_envelope<T: OpScalar>(args: &OpArgs) -> Result<Vec<Object>, OpError> {
-    if !T::EXACT {
-        refuse_unverified_f64(args)?;
-    }
     let env = net_envelope::<T>(args, args.bool("other_sheet")? || args.int("spheres")? > 0)?;
     let certs = env.certify();
     envelope_object(args, &env, certs)
-}
-
-/// The inputs whose f64 build is not shown to agree with the exact one to 1e-12 (random
-/// elliptic nets agree only to about 1e-9, other sheets to about 2e-9, and an enveloped
-/// sphere's f64 contact certificate can fail: docs/plans/float.md, "Session 16,
-/// floatsph"): refused by the float path, so that what it builds keeps its promise.
-fn refuse_unverified_f64(args: &OpArgs) -> Result<(), OpError> {
-    let exact_only = |param: &'static str, what: &str| {
-        Err(OpError::param(
-            param,
-            format!("{what} {}", crate::float::UNVERIFIED_REFUSED),
-        ))
-    };
-    if args.string("net")? == "elliptic" {
-        return exact_only("net", "the envelope of an elliptic net");
-    }
-    if args.bool("other_sheet")? {
-        return exact_only("other_sheet", "the other sheet");
-    }
-    if args.int("spheres")? > 0 {
-        return exact_only("spheres", "drawing enveloped spheres");
-    }
-    Ok(())
 }
 
 /// The envelope's positive-weight patches on the `domain` rectangle, with `certs` and the
@@ -503,9 +517,9 @@ where
     let (rec, contacts) = match arith::same::<_, Recognition<T>>(rec) {
         Ok(r) => (r, contacts),
         Err(exact) => {
-            refuse_unverified_recognized(args, &exact)?;
+            let other = args.bool("other_sheet")? || args.int("spheres")? > 0;
             let r = exact
-                .in_scalar::<T>(false)
+                .in_scalar::<T>(other)
                 .map_err(|e| OpError::param("centre", e.to_string()))?;
             let c = match contacts {
                 Some(_) => Some(family_contacts_in(args, &r)?),
@@ -560,36 +574,6 @@ where
     );
     o.name = format!("{}_contacts", args.name());
     Ok(o)
-}
-
-/// The recognized families whose f64 envelope is refused, as for `sphere_family_envelope`
-/// ([`refuse_unverified_f64`]): an elliptic net, the other sheet, enveloped spheres.
-fn refuse_unverified_recognized(
-    args: &OpArgs,
-    rec: &Recognition<Rational>,
-) -> Result<(), OpError> {
-    if rec.net().kind() == NetKind::Elliptic {
-        return Err(OpError::param(
-            "centre",
-            format!(
-                "the envelope of a family recognized as an elliptic net {}",
-                crate::float::UNVERIFIED_REFUSED
-            ),
-        ));
-    }
-    if args.bool("other_sheet")? {
-        return Err(OpError::param(
-            "other_sheet",
-            format!("the other sheet {}", crate::float::UNVERIFIED_REFUSED),
-        ));
-    }
-    if args.int("spheres")? > 0 {
-        return Err(OpError::param(
-            "spheres",
-            format!("drawing enveloped spheres {}", crate::float::UNVERIFIED_REFUSED),
-        ));
-    }
-    Ok(())
 }
 
 /// The object `NAME_contacts` of `sphere_family_recognize`: the cyclographic construction

@@ -4,69 +4,94 @@
 //! the two points of the cyclographic construction (Gruber, *Canal surfaces and
 //! sphere families*, §3.1.2; [`SphereFamilyEnvelope::cyclographic_contacts`]): `Ψ(s, t)`
 //! and the point `Ψ₂(s, t)` of the other sheet ([`SphereFamilyEnvelope::other_sheet_homogeneous`]).
-//! The certificates decide, exactly, that each contact point lies on its sphere
-//! (`|f − m|² = r²`) and that one of them is `Ψ₂(s, t)`.
+//! The certificates decide, exactly for exact scalars (by a tolerance scaled by the terms
+//! for an inexact one), that each contact point lies on its sphere (`|f − m|² = r²`) and
+//! that one of them is `Ψ₂(s, t)`.
 
 use super::sphere_family::{SphereFamilyEnvelope, SphereFamilyError};
+use crate::error::format_scalar;
+use crate::lines::SqrtScalar;
 use rcagd_algebra::mpoly::MPoly;
 use rcagd_algebra::{Certificate, Rational};
 
 /// The contacts of one sphere ([`SphereFamilyEnvelope::certified_contacts`]).
 #[derive(Debug, Clone, PartialEq)]
-pub struct CertifiedContacts {
+pub struct CertifiedContacts<F = Rational> {
     /// The sphere `(m, r)` at the parameter.
-    pub sphere: ([Rational; 3], Rational),
+    pub sphere: ([F; 3], F),
     /// The two contact points.
-    pub points: [[Rational; 3]; 2],
+    pub points: [[F; 3]; 2],
     /// The cyclographic certificate, `|f − m|² = r²` for each point, and "one point is
     /// `Ψ₂(s, t)`", in this order.
     pub certificates: Vec<Certificate>,
 }
 
-impl SphereFamilyEnvelope<Rational> {
+impl<F: SqrtScalar> SphereFamilyEnvelope<F> {
     /// The two contact points of the sphere at `(s, t)` with their certificates (module
     /// docs); `psi2` is [`Self::other_sheet_homogeneous`] (computed once by the caller for
-    /// many parameters).
+    /// many parameters). Exact scalars decide the identities exactly; an inexact scalar
+    /// compares `|f − m|² − r²` with `10⁻⁹` of the size of the terms that cancel,
+    /// `1 + Σ(|fᵢ| + |mᵢ|)² + r²`, and `W·fᵢ − Xᵢ` (`Ψ₂ = (W, X₁, X₂, X₃)`) with `10⁻⁹` of
+    /// `|W||fᵢ| + |Xᵢ|` (at least 1).
     ///
     /// # Errors
     /// As [`Self::cyclographic_contacts`].
     pub fn certified_contacts(
         &self,
-        s: &Rational,
-        t: &Rational,
-        psi2: &[MPoly<Rational>; 4],
-    ) -> Result<CertifiedContacts, SphereFamilyError> {
-        let zero = Rational::from(0);
+        s: &F,
+        t: &F,
+        psi2: &[MPoly<F>; 4],
+    ) -> Result<CertifiedContacts<F>, SphereFamilyError> {
+        let zero = F::zero();
         let ((m, r), pts) = self.cyclographic_contacts(s, t)?;
         let mut certs = vec![self.cyclographic_certificate(s, t)];
         let x = [s.clone(), t.clone()];
-        let v: Vec<Rational> = psi2
+        let v: Vec<F> = psi2
             .iter()
             .map(|p| p.eval(&x).unwrap_or_else(|_| zero.clone()))
             .collect();
+        let (ss, ts) = (format_scalar(s), format_scalar(t));
+        let mag = |a: &F| a.to_f64().abs();
         for (k, pt) in pts.iter().enumerate() {
             let d = (0..3).fold(zero.clone(), |acc, i| {
-                let di = &pt[i] - &m[i];
-                acc + &di * &di
-            }) - &r * &r;
+                let di = pt[i].clone() - m[i].clone();
+                acc + di.clone() * di
+            }) - r.clone() * r.clone();
+            let ok = if F::EXACT {
+                d.is_zero()
+            } else {
+                let scale = 1.0
+                    + (0..3)
+                        .map(|i| (mag(&pt[i]) + mag(&m[i])).powi(2))
+                        .sum::<f64>()
+                    + mag(&r) * mag(&r);
+                mag(&d) <= 1e-9 * scale
+            };
             certs.push(Certificate::decide(
                 format!(
-                    "contact point {} at ({s}, {t}) lies on its sphere: |f − m|² = r²",
+                    "contact point {} at ({ss}, {ts}) lies on its sphere: |f − m|² = r²",
                     k + 1
                 ),
-                d == zero,
-                true,
-                || format!("|f − m|² − r² = {d}"),
+                ok,
+                F::EXACT,
+                || format!("|f − m|² − r² = {}", format_scalar(&d)),
             ));
         }
-        let other_is_psi2 = v[0] != zero
-            && pts
-                .iter()
-                .any(|pt| (0..3).all(|i| pt[i] == &v[i + 1] / &v[0]));
+        let is_psi2 = |pt: &[F; 3]| {
+            (0..3).all(|i| {
+                let d = v[0].clone() * pt[i].clone() - v[i + 1].clone();
+                if F::EXACT {
+                    d.is_zero()
+                } else {
+                    mag(&d) <= 1e-9 * (mag(&v[0]) * mag(&pt[i]) + mag(&v[i + 1])).max(1.0)
+                }
+            })
+        };
+        let other_is_psi2 = !v[0].is_zero() && pts.iter().any(is_psi2);
         certs.push(Certificate::decide(
-            format!("a contact point at ({s}, {t}) is the other sheet's Ψ₂(s, t)"),
+            format!("a contact point at ({ss}, {ts}) is the other sheet's Ψ₂(s, t)"),
             other_is_psi2,
-            true,
+            F::EXACT,
             || "neither contact point is Ψ₂(s, t)".into(),
         ));
         Ok(CertifiedContacts {

@@ -120,9 +120,9 @@ pub enum LineError {
 }
 
 /// A scalar whose square roots live in a known extension: exact rationals use the real
-/// quadratic field [`QuadExt`] (`√q ∈ Q(√s)`, `s` the square-free part of `q`), `f64` uses
-/// itself. Focal lines of hyperbolic congruences and common transversals of four lines
-/// are defined over `Ext`.
+/// quadratic field [`QuadExt`] (`√q ∈ Q(√s)`, `s` the square-free part of `q`), `f64` and
+/// [`rcagd_algebra::DoubleDouble`] use themselves. Focal lines of hyperbolic congruences
+/// and common transversals of four lines are defined over `Ext`.
 pub trait SqrtScalar: Scalar {
     /// The scalar type of the square roots.
     type Ext: Scalar;
@@ -139,6 +139,16 @@ impl SqrtScalar for f64 {
     }
     fn sqrt_ext(&self) -> Option<f64> {
         (*self >= 0.0).then(|| self.sqrt())
+    }
+}
+
+impl SqrtScalar for rcagd_algebra::DoubleDouble {
+    type Ext = rcagd_algebra::DoubleDouble;
+    fn embed(&self) -> Self {
+        *self
+    }
+    fn sqrt_ext(&self) -> Option<Self> {
+        self.sqrt()
     }
 }
 
