@@ -174,3 +174,40 @@ pub fn obj_mesh(text: &str) -> rcagd_geom::tessellate::TriMesh {
     }
     m
 }
+
+/// One op's example recipe, parsed and built once (exact arithmetic, as `rcagd build`).
+pub struct BuiltExample {
+    /// The op whose example this is.
+    pub op: &'static str,
+    /// The ops of the recipe's objects, or the first parse error.
+    pub recipe_ops: Result<Vec<String>, String>,
+    /// The built objects, or the first build error (`None` when the recipe did not parse).
+    pub built: Option<Result<Vec<rcagd_cli::model::Object>, String>>,
+}
+
+/// Every op's example, built once per test binary and shared by the tests that check
+/// them (`docs::every_op_example_builds`, `unit::build::every_example_builds_and_holds`):
+/// both checked the same `build_recipe` of the same text, and building every example
+/// takes seconds of the CLI tests' time.
+pub fn op_examples() -> &'static [BuiltExample] {
+    static EXAMPLES: std::sync::OnceLock<Vec<BuiltExample>> = std::sync::OnceLock::new();
+    EXAMPLES.get_or_init(|| {
+        rcagd_cli::ops::all()
+            .map(|op| {
+                let recipe = rcagd_cli::recipe::Recipe::parse("example.toml", op.example, None);
+                let recipe_ops = match &recipe {
+                    Ok(r) => Ok(r.objects.iter().map(|o| o.op.clone()).collect()),
+                    Err(e) => Err(e[0].to_string()),
+                };
+                let built = recipe.ok().map(|r| {
+                    rcagd_cli::build::build_recipe(&r, |_| {}).map_err(|e| e[0].to_string())
+                });
+                BuiltExample {
+                    op: op.name,
+                    recipe_ops,
+                    built,
+                }
+            })
+            .collect()
+    })
+}

@@ -148,14 +148,31 @@ fn every_example_recipe_is_in_the_gallery() {
     }
 }
 
+/// The examples are built once for this test and `unit::build::every_example_builds_and_holds`
+/// (`common::op_examples`).
 #[test]
 fn every_op_example_builds() {
-    for op in ops::all() {
-        let used = assert_builds_and_holds(&format!("example of {}", op.name), op.example);
+    let examples = crate::common::op_examples();
+    assert_eq!(examples.len(), ops::all().count());
+    for ex in examples {
+        let label = format!("example of {}", ex.op);
+        if let Err(e) = &ex.recipe_ops {
+            panic!("{label}: {e}");
+        }
+        let objects = match &ex.built {
+            Some(Ok(objects)) => objects,
+            Some(Err(e)) => panic!("{label}: {e}"),
+            None => panic!("{label}: not built"),
+        };
+        for o in objects {
+            for c in &o.certificates {
+                assert!(c.holds, "{label}: {}: {c}", o.name);
+            }
+        }
         assert!(
-            used.iter().any(|o| o == op.name),
+            objects.iter().any(|o| o.op == ex.op),
             "the example of {} does not use it",
-            op.name
+            ex.op
         );
     }
 }

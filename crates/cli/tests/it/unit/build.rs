@@ -35,22 +35,35 @@ fn op_names_are_unique() {
     }
 }
 
+/// The examples are built once for this test and `docs::every_op_example_builds`
+/// (`common::op_examples`).
 #[test]
 fn every_example_builds_and_holds() {
-    for op in ops::all() {
-        let r = Recipe::parse("example.toml", op.example, None)
-            .unwrap_or_else(|e| panic!("{}: {}", op.name, e[0]));
+    let examples = crate::common::op_examples();
+    assert_eq!(
+        examples.iter().map(|ex| ex.op).collect::<Vec<_>>(),
+        ops::all().map(|op| op.name).collect::<Vec<_>>()
+    );
+    for ex in examples {
+        let recipe_ops = ex
+            .recipe_ops
+            .as_ref()
+            .unwrap_or_else(|e| panic!("{}: {e}", ex.op));
         assert!(
-            r.objects.iter().any(|o| o.op == op.name),
+            recipe_ops.iter().any(|o| o == ex.op),
             "{} example does not use it",
-            op.name
+            ex.op
         );
-        let objs = build_recipe(&r, |_| {}).unwrap_or_else(|e| panic!("{}: {}", op.name, e[0]));
+        let objs = match &ex.built {
+            Some(Ok(objs)) => objs,
+            Some(Err(e)) => panic!("{}: {e}", ex.op),
+            None => panic!("{}: not built", ex.op),
+        };
         for o in objs {
             assert!(
                 o.certificates.iter().all(|c| c.holds),
                 "{}: {:?}",
-                op.name,
+                ex.op,
                 o.certificates
             );
         }
