@@ -250,6 +250,9 @@ impl Field for DoubleDouble {
 
 impl Scalar for DoubleDouble {
     const EXACT: bool = false;
+    /// `u² = 2⁻¹⁰⁶` (Joldes, Muller, Popescu 2017: the relative error bounds of the
+    /// operations are small multiples of it).
+    const UNIT_ROUNDOFF: f64 = (f64::EPSILON / 2.0) * (f64::EPSILON / 2.0);
     /// `hi = RN(q)`, `lo = RN(q − hi)` (the difference exact over Q): the value is within
     /// `u²·|q|` of `q` (for `q` in the normal range of `f64`).
     fn from_rational(q: &Rational) -> Self {

@@ -757,6 +757,7 @@ impl Field for QuadExt {
 
 impl Scalar for QuadExt {
     const EXACT: bool = true;
+    const UNIT_ROUNDOFF: f64 = 0.0;
     fn from_rational(q: &Rational) -> Self {
         QuadExt::rational(q.clone())
     }

@@ -100,6 +100,11 @@ pub trait Field: Ring + Div<Output = Self> + DivAssign {
 pub trait Scalar: Field + PartialOrd {
     /// `true` for exact types: equality is decided exactly and certificates are proofs.
     const EXACT: bool;
+    /// The unit roundoff of the arithmetic: `2⁻⁵³` for `f64` (the default),
+    /// `2⁻¹⁰⁶` for [`crate::double_double::DoubleDouble`], `0` for exact types. Tolerances
+    /// of inexact decisions written for `f64` scale by `UNIT_ROUNDOFF / 2⁻⁵³`
+    /// ([`precision_ratio`]), so that a wider type decides more of them as the exact signs do.
+    const UNIT_ROUNDOFF: f64 = f64::EPSILON / 2.0;
     /// The (correctly rounded, for `f64`) image of an exact rational.
     fn from_rational(q: &Rational) -> Self;
     /// Nearest `f64` (correctly rounded for [`Rational`]).
@@ -175,6 +180,7 @@ impl Field for Rational {
 }
 impl Scalar for Rational {
     const EXACT: bool = true;
+    const UNIT_ROUNDOFF: f64 = 0.0;
     fn from_rational(q: &Rational) -> Self {
         q.clone()
     }
@@ -184,6 +190,12 @@ impl Scalar for Rational {
     fn to_rational(&self) -> Option<Rational> {
         Some(self.clone())
     }
+}
+
+/// `UNIT_ROUNDOFF / 2⁻⁵³`: `1` for `f64`, `2⁻⁵³` for double-double, `0` for exact
+/// types — the factor by which a tolerance calibrated for `f64` shrinks in `F`.
+pub fn precision_ratio<F: Scalar>() -> f64 {
+    F::UNIT_ROUNDOFF / (f64::EPSILON / 2.0)
 }
 
 /// A scalar as text for messages and certificates: the exact fraction `"p/q"` for exact

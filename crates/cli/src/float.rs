@@ -216,6 +216,11 @@ pub const FLOAT_OPS: &[FloatOp] = &[
         note: "built in double-double (about 106 bits; the result rounded once to f64): the common polynomial factors the construction divides out (gcds and trial divisions over Q) and its exact zero coefficients are decided on the exact input and replayed (rcagd::envelope::Reductions); the certificates are checked in double-double",
     },
     FloatOp {
+        name: "sphere_family_cyclographic",
+        build: ops::sphere_family::build_cyclographic::<DoubleDouble>,
+        note: "built in double-double (about 106 bits; the result rounded once to f64) after the exact op, whose decisions it replays: the contact points are rational, the other sheet's common factors, and the order of the two contact points of a sphere; the second point of h ∩ Ω is formed without cancellation (c₁ = ⟨a,b⟩ + sign(⟨a,b⟩)√disc and ⟨a,a⟩·b − c₁·a); the contact certificates are checked in double-double",
+    },
+    FloatOp {
         name: "cyclographic_plane_image",
         build: ops::sphere_family::build_plane_image::<f64>,
         note: "the type of the 2-plane is decided on the exact input (an f64 build whose tolerance decides another type is refused); the image planes are f64 values (real square roots)",
@@ -346,7 +351,6 @@ pub const NO_FLOAT_PATH: &[(&str, &str)] = &[
     // --- end of session 16, floatsph ---
     // --- session 17, floatnew: the two of the last five ops without a float path ---
     ("line_congruence_parametrized", "not written (session 17): the library's ParametrizedCongruence is built from polynomial maps over Q only (the op reads MPoly<Q>, the normal congruence of a surface and its strips are formed exactly) and its order and class are exact eliminations with a counted-roots certificate (OrderClass::certificate: proved lower bounds reaching the Bézout bound); a float path needs the congruence instantiated in f64 with those exact values and their certificate as decisions on the exact input (an exact certificate on an f64 object, which the float tests do not allow: every certificate of a float object is inexact), and the focal sheets' rationality (a square discriminant over Q) replayed; line_congruence_strips has a float path for the other congruence types"),
-    ("sphere_family_cyclographic", "tried and withdrawn (session 18): with the other sheet and the contact certificates in double-double (generic SphereFamilyEnvelope::certified_contacts), random draws agree to 1e-16, but at the draw points = [[0, 0, 1, 0], [-2, 0, 0, 1], [1, 0, -2, 0], [0, 1, 0, 0]], a = u², b = v², at = [[1, 0]] one contact point is wrong (its certificate |f − m|² = r² fails): SphereFamilyEnvelope::cyclographic_envelope tests ⟨b, b⟩ = 0 exactly and, for a rounding residue of an exact 0, forms the second isotropic point as (⟨a,b⟩ − √disc)·b − ⟨b,b⟩·a, which cancels; fix: the cancellation-free second root ⟨a,a⟩·b − c₁·a with c₁ = ⟨a,b⟩ + sign(⟨a,b⟩)√disc (docs/plans/float.md, session 18)"),
     // --- end of session 17, floatnew ---
     ("ph_dph_septic", "exact-only algebra: exact real roots of the z-polynomial"),
     ("ph_spatial_hermite", "exact-only algebra: the branches live in quadratic fields"),
@@ -434,6 +438,21 @@ pub fn exact_curve(c: &BezierCurve<f64>) -> Result<BezierCurve<Rational>, OpErro
 pub fn exact_patch(p: &BezierPatch<f64>) -> Result<BezierPatch<Rational>, OpError> {
     check_finite(p.coords())?;
     Ok(p.map_scalar(|x| Rational::try_from(*x).unwrap_or_else(|_| Rational::zero())))
+}
+
+/// A curve of an inexact scalar (double-double) rounded once to `f64`, with the exact
+/// binary values of those `f64`s as control points.
+pub fn rounded_curve<T: rcagd_algebra::Scalar>(
+    c: &BezierCurve<T>,
+) -> Result<BezierCurve<Rational>, OpError> {
+    exact_curve(&c.map_scalar(|x| x.to_f64()))
+}
+
+/// A patch of an inexact scalar rounded once to `f64` (as [`rounded_curve`]).
+pub fn rounded_patch<T: rcagd_algebra::Scalar>(
+    p: &BezierPatch<T>,
+) -> Result<BezierPatch<Rational>, OpError> {
+    exact_patch(&p.map_scalar(|x| x.to_f64()))
 }
 
 /// Marks an object as built in `f64` (the value [`ARITHMETIC`]).

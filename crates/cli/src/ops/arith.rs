@@ -108,10 +108,10 @@ impl OpScalar for f64 {
 /// (its geometry is `f64` numbers).
 impl OpScalar for DoubleDouble {
     fn exact_curve(c: BezierCurve<Self>) -> Result<BezierCurve<Rational>, OpError> {
-        crate::float::exact_curve(&c.map_scalar(|x| x.to_f64()))
+        crate::float::rounded_curve(&c)
     }
     fn exact_patch(p: BezierPatch<Self>) -> Result<BezierPatch<Rational>, OpError> {
-        crate::float::exact_patch(&p.map_scalar(|x| x.to_f64()))
+        crate::float::rounded_patch(&p)
     }
     fn finish(o: Object) -> Object {
         crate::float::mark(o)

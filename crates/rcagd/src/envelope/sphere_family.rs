@@ -1298,8 +1298,32 @@ impl<F: SqrtScalar> SphereFamilyEnvelope<F> {
         );
         // H = (⟨a,b⟩ ∓ √disc)·b − ⟨b,b⟩·a is a root of the quadratic in projective form
         // (μ = (−⟨a,b⟩ ± √disc)/⟨b,b⟩, scaled by −⟨b,b⟩); if ⟨b,b⟩ = 0, b itself and
-        // ⟨a,a⟩b − 2⟨a,b⟩a are the two points
-        let hs: [[F::Ext; 4]; 2] = if bb.is_zero() {
+        // ⟨a,a⟩b − 2⟨a,b⟩a are the two points.
+        // Inexact scalars: an exact ⟨b,b⟩ = 0 may be a rounding residue, and then
+        // ⟨a,b⟩ ∓ √disc cancels in one of the two roots. With c₁ = ⟨a,b⟩ + sign(⟨a,b⟩)√disc
+        // (no cancellation) the other coefficient is c₂ = ⟨a,a⟩⟨b,b⟩/c₁ (Vieta), and
+        // c₂·b − ⟨b,b⟩·a = (⟨b,b⟩/c₁)(⟨a,a⟩·b − c₁·a): the same projective point as
+        // ⟨a,a⟩·b − c₁·a, which needs no division and tends to the exact branch's second
+        // point as ⟨b,b⟩ → 0 (Higham, "Accuracy and Stability of Numerical Algorithms",
+        // §1.8, the quadratic formula). Same order as the exact branches (the root with
+        // ⟨a,b⟩ − √disc first); the contact points below are projective in H.
+        let hs: [[F::Ext; 4]; 2] = if !F::EXACT {
+            let negative = ab < F::zero();
+            let c1 = if negative {
+                ab.embed() - root.clone()
+            } else {
+                ab.embed() + root.clone()
+            };
+            let far: [F::Ext; 4] =
+                core::array::from_fn(|k| c1.clone() * be[k].clone() - bb.embed() * ae[k].clone());
+            let near: [F::Ext; 4] =
+                core::array::from_fn(|k| aa.embed() * be[k].clone() - c1.clone() * ae[k].clone());
+            if negative {
+                [far, near]
+            } else {
+                [near, far]
+            }
+        } else if bb.is_zero() {
             [
                 be.clone(),
                 core::array::from_fn(|k| {

@@ -827,14 +827,20 @@ pub(crate) enum Sign<F> {
 
 /// Decides whether `p` vanishes on the closed rectangle, by Bernstein coefficients and
 /// subdivision (at most `budget` pieces): exact for exact scalars, with the relative
-/// tolerance `10⁻⁹` for `f64`.
+/// tolerance `10⁻⁹` for `f64` and `10⁻⁹` times the precision ratio for wider inexact
+/// scalars (`rcagd_algebra::scalar::precision_ratio`: about `10⁻²⁵` in double-double,
+/// which then decides a weight of `10⁻¹⁰` of its size as the exact signs do).
 pub(crate) fn sign_on_domain<F: Scalar>(
     p: &MPoly<F>,
     domain: &Domain<F>,
     budget: usize,
 ) -> Sign<F> {
     let scale = mag(p);
-    let tol = if F::EXACT { 0.0 } else { 1e-9 * scale };
+    let tol = if F::EXACT {
+        0.0
+    } else {
+        1e-9 * rcagd_algebra::scalar::precision_ratio::<F>() * scale
+    };
     let is_pos = |x: &F| x.to_f64() > tol && (!F::EXACT || *x > F::zero());
     let is_neg = |x: &F| x.to_f64() < -tol && (!F::EXACT || *x < F::zero());
     // exact scalars in `u, v` only: the power coefficients in `ℚ` (row-major in `u`) and
