@@ -80,22 +80,10 @@ impl OpScalar for f64 {
         Quantity::Approx(x)
     }
     fn curve_pole_free(c: &BezierCurve<Self>) -> Result<Certificate, Option<WeightZero>> {
-        if curve_has_one_sign(c) {
-            Ok(Certificate::holds(
-                "the weights wᵢ all have one sign (Σ wᵢ Bᵢ ≠ 0 on [0, 1]: no pole)",
-                false,
-            ))
-        } else {
-            Err(None)
-        }
+        inexact_curve_pole_free(c)
     }
     fn patch_pole_free(p: &BezierPatch<Self>) -> Option<Certificate> {
-        patch_has_one_sign(p).then(|| {
-            Certificate::holds(
-                "the weights wᵢⱼ all have one sign (Σ wᵢⱼ Bᵢ Bⱼ ≠ 0 on [0, 1]²: no pole)",
-                false,
-            )
-        })
+        inexact_patch_pole_free(p)
     }
 }
 
@@ -120,23 +108,36 @@ impl OpScalar for DoubleDouble {
         Quantity::Approx(x.to_f64())
     }
     fn curve_pole_free(c: &BezierCurve<Self>) -> Result<Certificate, Option<WeightZero>> {
-        if curve_has_one_sign(c) {
-            Ok(Certificate::holds(
-                "the weights wᵢ all have one sign (Σ wᵢ Bᵢ ≠ 0 on [0, 1]: no pole)",
-                false,
-            ))
-        } else {
-            Err(None)
-        }
+        inexact_curve_pole_free(c)
     }
     fn patch_pole_free(p: &BezierPatch<Self>) -> Option<Certificate> {
-        patch_has_one_sign(p).then(|| {
-            Certificate::holds(
-                "the weights wᵢⱼ all have one sign (Σ wᵢⱼ Bᵢ Bⱼ ≠ 0 on [0, 1]²: no pole)",
-                false,
-            )
-        })
+        inexact_patch_pole_free(p)
     }
+}
+
+/// The pole certificate of an inexact arithmetic (`f64`, double-double): weights of one
+/// sign only; `Err(None)` for mixed signs (not decided).
+fn inexact_curve_pole_free<T: Scalar>(
+    c: &BezierCurve<T>,
+) -> Result<Certificate, Option<WeightZero>> {
+    if curve_has_one_sign(c) {
+        Ok(Certificate::holds(
+            "the weights wᵢ all have one sign (Σ wᵢ Bᵢ ≠ 0 on [0, 1]: no pole)",
+            false,
+        ))
+    } else {
+        Err(None)
+    }
+}
+
+/// [`inexact_curve_pole_free`] for a patch (`None`: mixed signs, not decided).
+fn inexact_patch_pole_free<T: Scalar>(p: &BezierPatch<T>) -> Option<Certificate> {
+    patch_has_one_sign(p).then(|| {
+        Certificate::holds(
+            "the weights wᵢⱼ all have one sign (Σ wᵢⱼ Bᵢ Bⱼ ≠ 0 on [0, 1]²: no pole)",
+            false,
+        )
+    })
 }
 
 /// The message for a user's weights of mixed sign that `f64` does not decide.
