@@ -1206,6 +1206,31 @@ mod tests {
         PhCurve::new(quats, [q(0), q(0), q(0)]).ok()
     }
 
+    /// Pipes of radius 1/10 around the two seed PH quintics (the gallery quintic, preimage
+    /// `1`, `i + k`, `1 + j`, and issue 17's, `1`, `1 + i + k`, `j + k`).
+    fn seed_pipe_spines() -> Vec<CanalSpine<Rational>> {
+        [
+            [[1, 0, 0, 0], [0, 1, 0, 1], [1, 0, 1, 0]],
+            [[1, 0, 0, 0], [1, 1, 0, 1], [0, 0, 1, 1]],
+        ]
+        .iter()
+        .map(|a| {
+            let c = ph_of_preimage(a).expect("ph");
+            CanalSpine::polynomial(
+                c.position().clone(),
+                Poly::constant(Rational::from_ratio(1, 10)),
+            )
+        })
+        .collect()
+    }
+
+    /// The spine whose coordinate `k` has the power coefficients `cubic[4k..4k + 4]`.
+    fn cubic_spine(cubic: &[i64], radius: Poly<Rational>) -> CanalSpine<Rational> {
+        let m: [Poly<Rational>; 3] =
+            core::array::from_fn(|k| Poly::from_ints(&cubic[4 * k..4 * k + 4]));
+        CanalSpine::polynomial(m, radius)
+    }
+
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(16))]
 
@@ -1353,15 +1378,7 @@ mod tests {
 
     #[test]
     fn equal_weight_keys_give_equal_estimates_on_the_seed_pipes() {
-        for a in [
-            [[1, 0, 0, 0], [0, 1, 0, 1], [1, 0, 1, 0]],
-            [[1, 0, 0, 0], [1, 1, 0, 1], [0, 0, 1, 1]],
-        ] {
-            let c = ph_of_preimage(&a).expect("ph");
-            let s = CanalSpine::polynomial(
-                c.position().clone(),
-                Poly::constant(Rational::from_ratio(1, 10)),
-            );
+        for s in seed_pipe_spines() {
             let split = known_pipe_split(&s).expect("split");
             // the mirrored candidates share their weight with the candidates they come
             // from: at least the Krasauskas ones of the three axes on both intervals
@@ -1372,15 +1389,7 @@ mod tests {
 
     #[test]
     fn mirrored_frame_is_the_built_frame_on_the_seed_pipes() {
-        for a in [
-            [[1, 0, 0, 0], [0, 1, 0, 1], [1, 0, 1, 0]],
-            [[1, 0, 0, 0], [1, 1, 0, 1], [0, 0, 1, 1]],
-        ] {
-            let c = ph_of_preimage(&a).expect("ph");
-            let s = CanalSpine::polynomial(
-                c.position().clone(),
-                Poly::constant(Rational::from_ratio(1, 10)),
-            );
+        for s in seed_pipe_spines() {
             let split = known_pipe_split(&s).expect("split");
             assert!(split.is_some());
             assert!(mirror_agrees(&s, split.as_ref()) >= 12);
@@ -1425,9 +1434,7 @@ mod tests {
                     estimate_follows_the_key(&s, split.as_ref());
                 }
             }
-            let m: [Poly<Rational>; 3] =
-                core::array::from_fn(|i| Poly::from_ints(&cubic[4 * i..4 * i + 4]));
-            estimate_follows_the_key(&CanalSpine::polynomial(m, radius), None);
+            estimate_follows_the_key(&cubic_spine(&cubic, radius), None);
         }
 
         /// Pipes around random PH quintics (with and without their split `(σ, 0)`) and
@@ -1447,9 +1454,7 @@ mod tests {
                 }
                 mirror_agrees(&s, None);
             }
-            let m: [Poly<Rational>; 3] =
-                core::array::from_fn(|k| Poly::from_ints(&cubic[4 * k..4 * k + 4]));
-            mirror_agrees(&CanalSpine::polynomial(m, radius), None);
+            mirror_agrees(&cubic_spine(&cubic, radius), None);
         }
     }
 
@@ -1483,19 +1488,7 @@ mod tests {
 
     #[test]
     fn weight_estimate_is_the_full_estimate_on_the_seed_pipes() {
-        for a in [
-            [[1, 0, 0, 0], [0, 1, 0, 1], [1, 0, 1, 0]],
-            [[1, 0, 0, 0], [1, 1, 0, 1], [0, 0, 1, 1]],
-        ] {
-            let a: Vec<Quaternion<Rational>> = a
-                .iter()
-                .map(|c| Quaternion::new(q(c[0]), q(c[1]), q(c[2]), q(c[3])))
-                .collect();
-            let c = PhCurve::new(a, [q(0), q(0), q(0)]).expect("ph");
-            let s = CanalSpine::polynomial(
-                c.position().clone(),
-                Poly::constant(Rational::from_ratio(1, 10)),
-            );
+        for s in seed_pipe_spines() {
             assert!(weight_estimate_agrees(&s) >= 8);
         }
     }
@@ -1515,9 +1508,7 @@ mod tests {
             if let Some(c) = ph_of_preimage(&a) {
                 weight_estimate_agrees(&CanalSpine::polynomial(c.position().clone(), radius.clone()));
             }
-            let m: [Poly<Rational>; 3] =
-                core::array::from_fn(|k| Poly::from_ints(&cubic[4 * k..4 * k + 4]));
-            weight_estimate_agrees(&CanalSpine::polynomial(m, radius));
+            weight_estimate_agrees(&cubic_spine(&cubic, radius));
         }
     }
 
