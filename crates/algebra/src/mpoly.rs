@@ -1974,6 +1974,25 @@ mod tests {
         out
     }
 
+    /// Random terms `(exponents, p, d)` (coefficient `p/d`) for [`from_list`], three
+    /// exponents in `exps` each (unused ones are cut off by `from_list`).
+    fn term_list(
+        exps: core::ops::Range<u32>,
+        len: core::ops::Range<usize>,
+    ) -> impl proptest::strategy::Strategy<Value = Vec<(Vec<u32>, i64, i64)>> {
+        proptest::collection::vec(
+            (proptest::collection::vec(exps, 3), -9i64..10, 1i64..13),
+            len,
+        )
+    }
+
+    /// The terms with every exponent multiplied by `by` (sparse polynomials for `by > 1`).
+    fn stretched(t: &[(Vec<u32>, i64, i64)], by: u32) -> Vec<(Vec<u32>, i64, i64)> {
+        t.iter()
+            .map(|(e, p, d)| (e.iter().map(|k| k * by).collect(), *p, *d))
+            .collect()
+    }
+
     fn from_list(nvars: usize, terms: &[(Vec<u32>, i64, i64)]) -> M {
         M::from_terms(
             nvars,
@@ -2124,15 +2143,13 @@ mod tests {
         /// term-by-term definitions on random polynomials in up to three variables.
         #[test]
         fn random_products_and_sums_agree_with_the_definition(
-            ta in proptest::collection::vec((proptest::collection::vec(0u32..5, 3), -9i64..10, 1i64..13), 0..9),
-            tb in proptest::collection::vec((proptest::collection::vec(0u32..5, 3), -9i64..10, 1i64..13), 0..9),
+            ta in term_list(0..5, 0..9),
+            tb in term_list(0..5, 0..9),
             na in 1usize..4,
             nb in 1usize..4,
             spread in proptest::bool::ANY,
         ) {
-            let stretch = |t: &Vec<(Vec<u32>, i64, i64)>| -> Vec<(Vec<u32>, i64, i64)> {
-                t.iter().map(|(e, p, d)| (e.iter().map(|k| if spread { k * 97 } else { *k }).collect(), *p, *d)).collect()
-            };
+            let stretch = |t: &Vec<(Vec<u32>, i64, i64)>| stretched(t, if spread { 97 } else { 1 });
             let a = from_list(na, &stretch(&ta));
             let b = from_list(nb, &stretch(&tb));
             proptest::prop_assert!(same_terms(&(&a * &b), &naive_mul(&a, &b)));
@@ -2204,15 +2221,13 @@ mod tests {
         /// `r`, usually not divisible: then both return `None`), in up to three variables.
         #[test]
         fn fraction_free_exact_division_agrees_with_the_definition(
-            td in proptest::collection::vec((proptest::collection::vec(0u32..4, 3), -9i64..10, 1i64..13), 1..6),
-            tq in proptest::collection::vec((proptest::collection::vec(0u32..4, 3), -9i64..10, 1i64..13), 0..6),
-            tr in proptest::collection::vec((proptest::collection::vec(0u32..4, 3), -9i64..10, 1i64..13), 0..3),
+            td in term_list(0..4, 1..6),
+            tq in term_list(0..4, 0..6),
+            tr in term_list(0..4, 0..3),
             n in 1usize..4,
             spread in proptest::bool::ANY,
         ) {
-            let stretch = |t: &Vec<(Vec<u32>, i64, i64)>| -> Vec<(Vec<u32>, i64, i64)> {
-                t.iter().map(|(e, p, d)| (e.iter().map(|k| if spread { k * 97 } else { *k }).collect(), *p, *d)).collect()
-            };
+            let stretch = |t: &Vec<(Vec<u32>, i64, i64)>| stretched(t, if spread { 97 } else { 1 });
             let d = from_list(n, &stretch(&td));
             let quo = from_list(n, &stretch(&tq));
             let r = from_list(n, &stretch(&tr));
@@ -2245,16 +2260,14 @@ mod tests {
         /// variables and with sparse high exponents.
         #[test]
         fn fraction_free_sum_of_products_decides_the_identity(
-            tf in proptest::collection::vec((proptest::collection::vec(0u32..4, 3), -9i64..10, 1i64..13), 0..5),
-            tg in proptest::collection::vec((proptest::collection::vec(0u32..4, 3), -9i64..10, 1i64..13), 0..5),
-            th in proptest::collection::vec((proptest::collection::vec(0u32..4, 3), -9i64..10, 1i64..13), 0..5),
-            tr in proptest::collection::vec((proptest::collection::vec(0u32..4, 3), -9i64..10, 1i64..13), 0..3),
+            tf in term_list(0..4, 0..5),
+            tg in term_list(0..4, 0..5),
+            th in term_list(0..4, 0..5),
+            tr in term_list(0..4, 0..3),
             n in 1usize..4,
             spread in proptest::bool::ANY,
         ) {
-            let stretch = |t: &Vec<(Vec<u32>, i64, i64)>| -> Vec<(Vec<u32>, i64, i64)> {
-                t.iter().map(|(e, p, d)| (e.iter().map(|k| if spread { k * 5 } else { *k }).collect(), *p, *d)).collect()
-            };
+            let stretch = |t: &Vec<(Vec<u32>, i64, i64)>| stretched(t, if spread { 5 } else { 1 });
             let (f, g, h, r) = (from_list(n, &stretch(&tf)), from_list(n, &stretch(&tg)), from_list(n, &stretch(&th)), from_list(n, &stretch(&tr)));
             let fh = &f + &h;
             let zero = M::zero(n);
