@@ -240,23 +240,9 @@ fn finish_split(
     omega: &Cx,
     tau: Cx,
 ) -> Option<[Quaternion<Rational>; 2]> {
-    let [b1, b2] = near;
-    let [aw1, ax1, aw2, ax2] = a;
-    let (al1, al2): (Cx, Cx) = ((aw1, ax1), (aw2, ax2));
     let inv_r = Rational::ONE / r;
-    let b01 = cscale(&cmul(omega, &cconj(&al1)), &inv_r);
-    let b02 = cscale(&cmul(omega, &cconj(&al2)), &inv_r);
-    // the wanted t·r: ⟨b* − b₀, (α″, −α′)⟩ (as a complex number)
+    let (al, b0, ts) = base_and_wanted_phase(a, &inv_r, omega, near);
     let c = |z: &Cx| (Scalar::to_f64(&z.0), Scalar::to_f64(&z.1));
-    let (d1, d2) = (
-        (b1.y - c(&b01).0, b1.z - c(&b01).1),
-        (b2.y - c(&b02).0, b2.z - c(&b02).1),
-    );
-    let (g2, g1) = (c(&al2), c(&al1));
-    let ts = (
-        d1.0 * g2.0 + d1.1 * g2.1 - d2.0 * g1.0 - d2.1 * g1.1,
-        d1.1 * g2.0 - d1.0 * g2.1 - d2.1 * g1.0 + d2.0 * g1.1,
-    );
     // the associate of τ nearest in phase
     let (tx, ty) = tau;
     let assoc: [Cx; 8] = [
@@ -291,8 +277,47 @@ fn finish_split(
         Rational::from(2) * &s / &one_s2,
     );
     let t = cscale(&cmul(&v, &u), &inv_r);
-    let ta2 = cmul(&t, &al2);
-    let ta1 = cmul(&t, &al1);
+    checked_pair(w, al, b0, &t)
+}
+
+/// For the point `a = (α′, α″)` of the 3-sphere `|a|² = r` (`inv_r = 1/r`): `(α′, α″)`,
+/// `b₀ = (ω ᾱ′/r, ω ᾱ″/r)`, and the direction of the wanted `t·r`,
+/// `⟨b* − b₀, (α″, −α′)⟩ = (b*′ − b₀′)·conj(α″) − (b*″ − b₀″)·conj(α′)` in `f64`, where
+/// `b* = (near₀.y + i near₀.z, near₁.y + i near₁.z)` is the `f64` solution being rounded.
+fn base_and_wanted_phase(
+    a: [Rational; 4],
+    inv_r: &Rational,
+    omega: &Cx,
+    near: [&Quaternion<f64>; 2],
+) -> ([Cx; 2], [Cx; 2], (f64, f64)) {
+    let [b1, b2] = near;
+    let [aw1, ax1, aw2, ax2] = a;
+    let (al1, al2): (Cx, Cx) = ((aw1, ax1), (aw2, ax2));
+    let b01 = cscale(&cmul(omega, &cconj(&al1)), inv_r);
+    let b02 = cscale(&cmul(omega, &cconj(&al2)), inv_r);
+    let c = |z: &Cx| (Scalar::to_f64(&z.0), Scalar::to_f64(&z.1));
+    let (d1, d2) = (
+        (b1.y - c(&b01).0, b1.z - c(&b01).1),
+        (b2.y - c(&b02).0, b2.z - c(&b02).1),
+    );
+    let (g2, g1) = (c(&al2), c(&al1));
+    let ts = (
+        d1.0 * g2.0 + d1.1 * g2.1 - d2.0 * g1.0 - d2.1 * g1.1,
+        d1.1 * g2.0 - d1.0 * g2.1 - d2.1 * g1.0 + d2.0 * g1.1,
+    );
+    ([al1, al2], [b01, b02], ts)
+}
+
+/// The pair `B′ = α′ + (b₀′ + tα″)j`, `B″ = α″ + (b₀″ − tα′)j` (module docs), if
+/// `Φ(B′) + Φ(B″) = w` holds exactly.
+fn checked_pair(
+    w: &[Rational; 3],
+    [al1, al2]: [Cx; 2],
+    [b01, b02]: [Cx; 2],
+    t: &Cx,
+) -> Option<[Quaternion<Rational>; 2]> {
+    let ta2 = cmul(t, &al2);
+    let ta1 = cmul(t, &al1);
     let q1 = Quaternion {
         w: al1.0,
         x: al1.1,
@@ -381,24 +406,10 @@ fn split_by_four_squares(
         }
     }
     let (_, a) = best?;
-    let [aw1, ax1, aw2, ax2] = a;
-    let (al1, al2): (Cx, Cx) = ((aw1, ax1), (aw2, ax2));
     // ω = i(Y + iZ)/2 = (−Z + iY)/2; b₀ = ω ā / r
     let omega: Cx = (-zw.clone() / &two, yw.clone() / &two);
-    let b01 = cscale(&cmul(&omega, &cconj(&al1)), &(Rational::ONE / &r));
-    let b02 = cscale(&cmul(&omega, &cconj(&al2)), &(Rational::ONE / &r));
     // the phase of t nearest the f64 solution: t* = ⟨b* − b₀, (α″, −α′)⟩ / r
-    let c = |z: &Cx| (Scalar::to_f64(&z.0), Scalar::to_f64(&z.1));
-    let (d1, d2) = (
-        (b1.y - c(&b01).0, b1.z - c(&b01).1),
-        (b2.y - c(&b02).0, b2.z - c(&b02).1),
-    );
-    let (g2, g1) = (c(&al2), c(&al1));
-    // d1·conj(α″) + d2·conj(−α′)
-    let ts = (
-        d1.0 * g2.0 + d1.1 * g2.1 - d2.0 * g1.0 - d2.1 * g1.1,
-        d1.1 * g2.0 - d1.0 * g2.1 - d2.1 * g1.0 + d2.0 * g1.1,
-    );
+    let (al, b0, ts) = base_and_wanted_phase(a, &(Rational::ONE / &r), &omega, near);
     let theta = if ts.0 == 0.0 && ts.1 == 0.0 {
         0.0
     } else {
@@ -416,25 +427,7 @@ fn split_by_four_squares(
         u = (-u.0, -u.1);
     }
     let t = cscale(&u, &(&p_cap / &r));
-    let ta2 = cmul(&t, &al2);
-    let ta1 = cmul(&t, &al1);
-    let be1: Cx = (&b01.0 + &ta2.0, &b01.1 + &ta2.1);
-    let be2: Cx = (&b02.0 - &ta1.0, &b02.1 - &ta1.1);
-    let q1 = Quaternion {
-        w: al1.0,
-        x: al1.1,
-        y: be1.0,
-        z: be1.1,
-    };
-    let q2 = Quaternion {
-        w: al2.0,
-        x: al2.1,
-        y: be2.0,
-        z: be2.1,
-    };
-    let (p1, p2) = (phi(&q1), phi(&q2));
-    let ok = (0..3).all(|k| &p1[k] + &p2[k] == w[k]);
-    ok.then_some([q1, q2])
+    checked_pair(w, al, b0, &t)
 }
 
 /// The last two pieces of a spline re-solved so that it ends at `first`'s start point with
