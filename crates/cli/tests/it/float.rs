@@ -165,13 +165,22 @@ fn every_op_without_a_float_path_says_why() {
     }
 }
 
+/// The gallery's recipe files (`examples/recipes/*.toml`), sorted.
+pub(crate) fn gallery_recipe_paths() -> Vec<std::path::PathBuf> {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/recipes");
+    let mut paths: Vec<_> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    paths.sort();
+    paths
+}
+
 /// The gallery's objects whose op has a float path, one recipe at a time.
 #[test]
 fn gallery_objects_with_a_float_path_agree() {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/recipes");
     let mut n = 0;
-    for entry in std::fs::read_dir(dir).unwrap() {
-        let path = entry.unwrap().path();
+    for path in gallery_recipe_paths() {
         let text = std::fs::read_to_string(&path).unwrap();
         let r = Recipe::parse(&path.display().to_string(), &text, None).unwrap();
         for obj in &r.objects {
@@ -645,12 +654,7 @@ proptest! {
 fn double_double_timings() {
     use rcagd_cli::build::{build_object_with, check_object};
     use std::time::Instant;
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/recipes");
-    let mut paths: Vec<_> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .collect();
-    paths.sort();
+    let paths = gallery_recipe_paths();
     // the gallery recipes, then each op's example (`common_transversals` has no gallery
     // object)
     let mut sources: Vec<(String, String)> = paths
@@ -728,12 +732,7 @@ fn double_double_timings() {
 fn timings() {
     use rcagd_cli::build::build_object_with;
     use std::time::Instant;
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/recipes");
-    let mut paths: Vec<_> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .collect();
-    paths.sort();
+    let paths = gallery_recipe_paths();
     println!("| recipe | objects with a float path | exact (ms) | f64 (ms) | ratio |");
     println!("|---|---|---|---|---|");
     let (mut te, mut tf) = (0.0, 0.0);

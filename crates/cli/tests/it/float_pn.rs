@@ -147,9 +147,7 @@ fn survey() {
         let r = Recipe::parse("example.toml", op.example, None).unwrap();
         cases.push((format!("{name} (example)"), r));
     }
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/recipes");
-    for entry in std::fs::read_dir(dir).unwrap() {
-        let path = entry.unwrap().path();
+    for path in crate::float::gallery_recipe_paths() {
         let text = std::fs::read_to_string(&path).unwrap();
         let r = Recipe::parse(&path.display().to_string(), &text, None).unwrap();
         for o in r.objects.iter().filter(|o| OPS.contains(&o.op.as_str())) {
