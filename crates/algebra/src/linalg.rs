@@ -249,6 +249,29 @@ impl<F> Matrix<F> {
 }
 
 impl<F: Clone> Matrix<F> {
+    /// The rows of `[A | b]` for solving `A x = b` (`op` names the caller in the error).
+    ///
+    /// # Errors
+    /// [`LinalgError::DimensionMismatch`] unless `b.len() = A.rows`.
+    fn augmented(&self, b: &[F], op: &'static str) -> Result<Vec<Vec<F>>, LinalgError> {
+        if b.len() != self.rows {
+            return Err(LinalgError::DimensionMismatch {
+                op,
+                expected: format!("a right-hand side of length {}", self.rows),
+                found: format!("length {}", b.len()),
+            });
+        }
+        Ok(self
+            .row_iter()
+            .zip(b)
+            .map(|(r, bi)| {
+                let mut v = r.to_vec();
+                v.push(bi.clone());
+                v
+            })
+            .collect())
+    }
+
     /// From row-major entries.
     ///
     /// # Errors
@@ -666,23 +689,8 @@ impl<F: Field> Matrix<F> {
     /// # Errors
     /// [`LinalgError::DimensionMismatch`] unless `b.len() = A.rows`.
     pub fn solve(&self, b: &[F]) -> Result<Solution<F>, LinalgError> {
-        if b.len() != self.rows {
-            return Err(LinalgError::DimensionMismatch {
-                op: "solve",
-                expected: format!("a right-hand side of length {}", self.rows),
-                found: format!("length {}", b.len()),
-            });
-        }
         let n = self.cols;
-        let mut m: Vec<Vec<F>> = self
-            .row_iter()
-            .zip(b)
-            .map(|(r, bi)| {
-                let mut v = r.to_vec();
-                v.push(bi.clone());
-                v
-            })
-            .collect();
+        let mut m = self.augmented(b, "solve")?;
         let pivots = gauss_jordan(&mut m, n + 1);
         if pivots.last() == Some(&n) {
             return Ok(Solution::Inconsistent);
@@ -809,23 +817,8 @@ impl Matrix<Rational> {
         &self,
         b: &[Rational],
     ) -> Result<Option<Vec<Rational>>, LinalgError> {
-        if b.len() != self.rows {
-            return Err(LinalgError::DimensionMismatch {
-                op: "particular_solution_integral",
-                expected: format!("a right-hand side of length {}", self.rows),
-                found: format!("length {}", b.len()),
-            });
-        }
         let n = self.cols;
-        let aug: Vec<Vec<Rational>> = self
-            .row_iter()
-            .zip(b)
-            .map(|(r, bi)| {
-                let mut v = r.to_vec();
-                v.push(bi.clone());
-                v
-            })
-            .collect();
+        let aug = self.augmented(b, "particular_solution_integral")?;
         let mut m = integral_rows(aug.iter().map(Vec::as_slice));
         // Bareiss to a row echelon form on all n + 1 columns
         let rows = m.len();
