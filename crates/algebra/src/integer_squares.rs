@@ -276,8 +276,10 @@ pub fn two_squares_by_trial_division(n: &UBig) -> Option<(UBig, UBig)> {
 /// A rational `q ≥ 0` as `x² + y²` with rational `x`, `y`, when
 /// [`two_squares_by_trial_division`] decides it: `q = a/b` with `b = e²` a square gives
 /// `a = u² + v²`, `(x, y) = (u, v)/e`; otherwise `ab = u² + v²`, `(x, y) = (u, v)/b`. `None`
-/// for `q < 0` or when that is not decided.
-pub fn rational_two_squares(q: &Rational) -> Option<(Rational, Rational)> {
+/// for `q < 0` or when that is not decided. The complete decision, which factors as far as
+/// needed, is [`crate::sum_of_squares::rational_two_squares`]; this one is for callers that
+/// would rather draw another `q` than factor.
+pub fn rational_two_squares_by_trial_division(q: &Rational) -> Option<(Rational, Rational)> {
     if *q < Rational::ZERO {
         return None;
     }
@@ -373,13 +375,13 @@ mod tests {
             (13, 1_000_000_009),
         ] {
             let q = Rational::from_ratio(n, d);
-            let (x, y) = rational_two_squares(&q).expect("decided");
+            let (x, y) = rational_two_squares_by_trial_division(&q).expect("decided");
             assert_eq!(&x * &x + &y * &y, q, "{n}/{d}");
         }
         // 3/4 and 5/3 (15 = 3·5) are not sums of two rational squares
-        assert!(rational_two_squares(&Rational::from_ratio(3, 4)).is_none());
-        assert!(rational_two_squares(&Rational::from_ratio(5, 3)).is_none());
-        assert!(rational_two_squares(&Rational::from(-1)).is_none());
+        assert!(rational_two_squares_by_trial_division(&Rational::from_ratio(3, 4)).is_none());
+        assert!(rational_two_squares_by_trial_division(&Rational::from_ratio(5, 3)).is_none());
+        assert!(rational_two_squares_by_trial_division(&Rational::from(-1)).is_none());
     }
 
     proptest! {

@@ -41,7 +41,9 @@ use super::approximation::dyadic;
 use super::hodograph::PhCurve;
 use super::spatial_hermite::middle_rhs;
 use super::util::aib;
-use rcagd_algebra::integer_squares::{rational_four_squares, rational_two_squares};
+use rcagd_algebra::integer_squares::{
+    rational_four_squares, rational_two_squares_by_trial_division,
+};
 use rcagd_algebra::quaternion::Quaternion;
 use rcagd_algebra::{Rational, Scalar};
 
@@ -78,7 +80,7 @@ fn phi(b: &Quaternion<Rational>) -> [Rational; 3] {
 /// dyadic rounding of the wanted one (moved by a few units of `2⁻ᵇⁱᵗˢ` until it works), so
 /// `r = |a|²` is dyadic, and `|t|²r² = N = (r − X/2)² − c²` is solved by a sum of two
 /// squares `N = |τ|²` found by trial division
-/// ([`rcagd_algebra::integer_squares::rational_two_squares`]); `t = τu/r` with a rational
+/// ([`rcagd_algebra::integer_squares::rational_two_squares_by_trial_division`]); `t = τu/r` with a rational
 /// unit complex `u` of small height matching the wanted phase. Only if no draw succeeds,
 /// the construction by the hyperbola and four squares ([`split_by_four_squares`]).
 pub fn split_hodograph_sum(
@@ -209,7 +211,7 @@ fn split_small(
         }
         let big_r = &r - &half_x;
         let n = &big_r * &big_r - &c2;
-        let Some(tau) = rational_two_squares(&n) else {
+        let Some(tau) = rational_two_squares_by_trial_division(&n) else {
             continue;
         };
         let Some(pair) = finish_split(w, near, bits, a, &r, &omega, tau) else {
