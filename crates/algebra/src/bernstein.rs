@@ -227,6 +227,17 @@ pub fn eval<R: Ring>(b: &[R], t: &R) -> R {
 /// Block form of [`eval`]: the vector-valued `p(t)` (`width` entries; empty if there
 /// are no coefficients).
 pub fn eval_blocks<R: Ring>(b: &[R], width: usize, t: &R) -> Vec<R> {
+    // at the end points de Casteljau returns the end blocks (`1·bᵢ + 0·bᵢ₊₁`): take them
+    // without its `n²/2` products (the exporters' boundary curves of large exact patches)
+    let points = count(b, width);
+    if points > 0 {
+        if t.is_zero() {
+            return b[..width].to_vec();
+        }
+        if *t == R::one() {
+            return b[(points - 1) * width..points * width].to_vec();
+        }
+    }
     let s = R::one() - t.clone();
     eval_homogeneous_blocks(b, width, &s, t)
 }
@@ -1071,6 +1082,24 @@ mod fraction_free_tests {
                     }
                 }
             }
+        }
+
+        /// At `t = 0` and `t = 1` the evaluation takes the end blocks; they are what the
+        /// full de Casteljau scheme computes (in `Q` and in `f64`).
+        #[test]
+        fn end_points_are_the_end_blocks(
+            width in 1usize..4,
+            raw in proptest::collection::vec((-9i64..10, 1i64..6), 1..13),
+        ) {
+            let points = raw.len() / width;
+            proptest::prop_assume!(points > 0);
+            let b: Vec<Rational> = raw[..points * width].iter().map(|&(p, d)| q(p, d)).collect();
+            let (zero, one) = (Rational::ZERO, Rational::ONE);
+            proptest::prop_assert_eq!(eval_blocks(&b, width, &zero), eval_homogeneous_blocks(&b, width, &one, &zero));
+            proptest::prop_assert_eq!(eval_blocks(&b, width, &one), eval_homogeneous_blocks(&b, width, &zero, &one));
+            let f: Vec<f64> = b.iter().map(Scalar::to_f64).collect();
+            proptest::prop_assert_eq!(eval_blocks(&f, width, &0.0), eval_homogeneous_blocks(&f, width, &1.0, &0.0));
+            proptest::prop_assert_eq!(eval_blocks(&f, width, &1.0), eval_homogeneous_blocks(&f, width, &0.0, &1.0));
         }
 
         /// The fraction-free sign at a point is the sign of the rational value.

@@ -289,20 +289,33 @@ fn render_all(
 ) -> Result<(Files, Vec<String>), String> {
     // Rendering (tessellation, rasterisation, exact export) is the expensive part: one
     // object per task, in parallel, under the caller's budget; the files are collected in
-    // order.
-    let rendered: Vec<Vec<_>> = objects
+    // order; each object's exact exchange form is computed once, for its STEP, IGES and
+    // sidecar files and for the combined files.
+    let rendered: Vec<(Vec<_>, _)> = objects
         .par_iter()
         .map(rcagd_algebra::budget::inherit(|o: &Object| {
-            let r: Vec<_> = FORMATS.iter().map(|&f| (f, output::render(o, f))).collect();
+            let mut ex = output::Exchange::new(o);
+            let r: Vec<_> = FORMATS
+                .iter()
+                .map(|&f| (f, output::render_with(&mut ex, f)))
+                .collect();
             tick(&o.name);
-            r
+            (r, ex.into_form())
         }))
         .collect();
     let mut export_errors = Vec::new();
     let mut entries = Vec::with_capacity(objects.len());
     let mut files: Vec<(String, Vec<u8>)> = Vec::new();
-    for (o, renders) in objects.iter().zip(rendered) {
+    let mut exchanged = Vec::new();
+    for (o, (renders, form)) in objects.iter().zip(rendered) {
         let mut entry = ReportEntry::new(o.clone());
+        // the combined files hold the objects whose exact sidecar could be written
+        let sidecar_ok = renders
+            .iter()
+            .any(|(f, r)| *f == OutFormat::Exact && r.is_ok());
+        if let (true, Some(x)) = (sidecar_ok, form) {
+            exchanged.push(x);
+        }
         for (f, text) in renders {
             let file = format!("{}.{}", o.name, f.extension());
             let text = match text {
@@ -331,7 +344,7 @@ fn render_all(
         }
         entries.push(entry);
     }
-    let links = combined_files(objects, &mut export_errors, &mut files)?;
+    let links = combined_files(&exchanged, &mut export_errors, &mut files)?;
     let mut json = rcagd_io::report::report_json(&entries);
     if let serde_json::Value::Object(map) = &mut json {
         if !links.is_empty() {
@@ -358,26 +371,28 @@ fn json_bytes(v: &serde_json::Value) -> Result<Vec<u8>, String> {
     Ok((serde_json::to_string_pretty(v).map_err(|e| e.to_string())? + "\n").into_bytes())
 }
 
-/// Renders every object that STEP can hold into one STEP and one IGES file (one
-/// product / group per object, named after it) with their exact sidecar, appending
-/// them to `files`; returns the links for the report's header.
+/// Renders the exchange forms of the objects whose exact sidecar could be written (every
+/// object STEP can hold) into one STEP and one IGES file (one product / group per object,
+/// named after it) with their exact sidecar, appending them to `files`; returns the links
+/// for the report's header.
 fn combined_files(
-    objects: &[Object],
+    ok: &[rcagd_io::step::ExchangeObject],
     export_errors: &mut Vec<String>,
     files: &mut Vec<(String, Vec<u8>)>,
 ) -> Result<Vec<FileLink>, String> {
-    let ok: Vec<Object> = objects
-        .iter()
-        .filter(|o| rcagd_io::step::exact_sidecar(std::slice::from_ref(*o)).is_ok())
-        .cloned()
-        .collect();
     let mut links = Vec::new();
     if ok.is_empty() {
         return Ok(links);
     }
     let rendered = [
-        (OutFormat::Step, rcagd_io::step::write_step(&ok)),
-        (OutFormat::Iges, rcagd_io::iges::write_iges(&ok)),
+        (
+            OutFormat::Step,
+            rcagd_io::step::write_step_exchanged(ok, &rcagd_io::step::StepOptions::default()),
+        ),
+        (
+            OutFormat::Iges,
+            rcagd_io::iges::write_iges_exchanged(ok, &rcagd_io::iges::IgesOptions::default()),
+        ),
     ];
     for (f, r) in rendered {
         let ext = f.extension();
@@ -393,7 +408,7 @@ fn combined_files(
             Err(e) => export_errors.push(format!("cannot export the whole gallery as {ext}: {e}")),
         }
     }
-    match rcagd_io::step::exact_sidecar(&ok) {
+    match rcagd_io::step::exact_sidecar_exchanged(ok) {
         Ok(side) => {
             let file = format!("{ALL_STEM}.exact.json");
             files.push((file.clone(), json_bytes(&side)?));

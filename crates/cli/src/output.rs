@@ -87,7 +87,50 @@ pub fn objects_json_text(objects: &[Object]) -> Result<String, String> {
 /// # Errors
 /// The exporter's message (e.g. STEP needs positive weights, STL needs patches).
 pub fn render(o: &Object, format: OutFormat) -> Result<Vec<u8>, String> {
+    render_with(&mut Exchange::new(o), format)
+}
+
+/// An object and its exact exchange form ([`rcagd_io::step::exchange_object`]: the
+/// positive-weight pieces, their orientation and topology), computed on first use: STEP,
+/// IGES and the exact sidecar of one object share it.
+pub struct Exchange<'a> {
+    object: &'a Object,
+    form: Option<Result<rcagd_io::step::ExchangeObject, String>>,
+}
+
+impl<'a> Exchange<'a> {
+    /// The object, its exchange form not computed yet.
+    pub fn new(object: &'a Object) -> Self {
+        Exchange { object, form: None }
+    }
+
+    /// The exchange form, computed once.
+    ///
+    /// # Errors
+    /// The exporter's message (zero weights, geometry beyond E3, …).
+    pub fn form(&mut self) -> Result<&rcagd_io::step::ExchangeObject, String> {
+        let object = self.object;
+        self.form
+            .get_or_insert_with(|| {
+                rcagd_io::step::exchange_object(object).map_err(|e| e.to_string())
+            })
+            .as_ref()
+            .map_err(Clone::clone)
+    }
+
+    /// The exchange form if it was computed and exists.
+    pub fn into_form(self) -> Option<rcagd_io::step::ExchangeObject> {
+        self.form.and_then(Result::ok)
+    }
+}
+
+/// [`render`] of the object of `ex`, its exchange form computed at most once over calls.
+///
+/// # Errors
+/// As [`render`].
+pub fn render_with(ex: &mut Exchange<'_>, format: OutFormat) -> Result<Vec<u8>, String> {
     use rcagd_io::stl::{object_mesh, MeshOptions};
+    let o = ex.object;
     let one = std::slice::from_ref(o);
     let text =
         |r: Result<String, rcagd_io::IoError>| r.map(String::into_bytes).map_err(|e| e.to_string());
@@ -95,8 +138,20 @@ pub fn render(o: &Object, format: OutFormat) -> Result<Vec<u8>, String> {
         OutFormat::Json => serde_json::to_string_pretty(&object_json(o))
             .map(|s| (s + "\n").into_bytes())
             .map_err(|e| e.to_string()),
-        OutFormat::Step => text(rcagd_io::step::write_step(one)),
-        OutFormat::Iges => text(rcagd_io::iges::write_iges(one)),
+        OutFormat::Step => {
+            let x = ex.form()?;
+            text(rcagd_io::step::write_step_exchanged(
+                std::slice::from_ref(x),
+                &rcagd_io::step::StepOptions::default(),
+            ))
+        }
+        OutFormat::Iges => {
+            let x = ex.form()?;
+            text(rcagd_io::iges::write_iges_exchanged(
+                std::slice::from_ref(x),
+                &rcagd_io::iges::IgesOptions::default(),
+            ))
+        }
         OutFormat::Obj => text(rcagd_io::obj::object_to_obj(o)),
         OutFormat::Stl => object_mesh(o, &MeshOptions::default())
             .and_then(|m| rcagd_io::stl::write_stl_binary(&o.name, &m))
@@ -108,10 +163,13 @@ pub fn render(o: &Object, format: OutFormat) -> Result<Vec<u8>, String> {
             rcagd_io::gltf::objects_to_glb(one, &MeshOptions::default()).map_err(|e| e.to_string())
         }
         OutFormat::Svg => object_svg(o).map(String::into_bytes),
-        OutFormat::Exact => rcagd_io::step::exact_sidecar(one)
-            .and_then(|v| Ok(serde_json::to_string_pretty(&v)? + "\n"))
-            .map(String::into_bytes)
-            .map_err(|e| e.to_string()),
+        OutFormat::Exact => {
+            let x = ex.form()?;
+            rcagd_io::step::exact_sidecar_exchanged(std::slice::from_ref(x))
+                .and_then(|v| Ok(serde_json::to_string_pretty(&v)? + "\n"))
+                .map(String::into_bytes)
+                .map_err(|e| e.to_string())
+        }
         OutFormat::Png => {
             rcagd_io::raster::render_png(o, &rcagd_io::raster::RenderOptions::default())
                 .map_err(|e| e.to_string())

@@ -144,6 +144,8 @@ pub fn eval_curve_derivative_f64(curve: &BezierCurve<f64>, t: f64) -> (Vec<f64>,
 
 /// The homogeneous point `P(u, v)` of a patch (length `dim + 1`, weight first).
 pub fn eval_patch_homogeneous_f64(patch: &BezierPatch<f64>, u: f64, v: f64) -> Vec<f64> {
+    // the exporters' tessellations run under the caller's work budget
+    rcagd_algebra::budget::checkpoint();
     let (m, n) = patch.degree();
     let s = patch.dim() + 1;
     let bu = bernstein_values(m, u);
@@ -180,6 +182,8 @@ pub struct PatchDerivatives {
 /// The point and first partials of a patch at `(u, v)`:
 /// `∂ᵤx = (∂ᵤP₁..d − ∂ᵤP₀ x) / P₀`, likewise for `v` (NURBS Book (4.20)).
 pub fn eval_patch_derivatives_f64(patch: &BezierPatch<f64>, u: f64, v: f64) -> PatchDerivatives {
+    // the exporters' tessellations run under the caller's work budget
+    rcagd_algebra::budget::checkpoint();
     let (m, n) = patch.degree();
     let s = patch.dim() + 1;
     let (mut bu, mut dbu) = (vec![0.0; m + 1], vec![0.0; m + 1]);
@@ -274,6 +278,7 @@ fn grid3_fixed<const NV: usize>(
         .collect();
     let mut bu = vec![0.0; m + 1];
     for &u in us {
+        rcagd_algebra::budget::checkpoint();
         bernstein_into(m, u, &mut bu);
         // Qⱼ(u) = Σᵢ Bᵢᵐ(u) Pᵢⱼ
         let mut q = [[0.0f64; 4]; NV];
@@ -314,6 +319,7 @@ fn grid3_dyn(
     let mut bu = vec![0.0; m + 1];
     let mut q = vec![[0.0f64; 4]; nv];
     for &u in us {
+        rcagd_algebra::budget::checkpoint();
         bernstein_into(m, u, &mut bu);
         q.iter_mut().for_each(|x| *x = [0.0; 4]);
         for (row, &bi) in net.chunks_exact(nv).zip(&bu) {
@@ -391,6 +397,7 @@ pub fn eval_patch_grid_flat(
     let mut q = vec![0.0; nv * s];
     let mut h = vec![0.0; s];
     for &u in us {
+        rcagd_algebra::budget::checkpoint();
         bernstein_into(m, u, &mut bu);
         q.iter_mut().for_each(|x| *x = 0.0);
         for (row, &bi) in patch.coords().chunks_exact(nv * s).zip(&bu) {
@@ -448,6 +455,7 @@ pub fn eval_patch_grid_derivatives(
     let mut q = vec![[0.0f64; 4]; nv];
     let mut dq = vec![[0.0f64; 4]; nv];
     for &u in us {
+        rcagd_algebra::budget::checkpoint();
         bernstein_with_derivative_into(m, u, &mut bu, &mut dbu);
         q.iter_mut().for_each(|x| *x = [0.0; 4]);
         dq.iter_mut().for_each(|x| *x = [0.0; 4]);

@@ -88,18 +88,10 @@ fn log2_abs(q: &Rational) -> f64 {
     e + Scalar::to_f64(&x).log2()
 }
 
-/// `2^e` as a rational.
+/// `2^e` as a rational (a shift, not `|e|` products).
 fn pow2(e: i64) -> Rational {
-    let base = if e >= 0 {
-        Rational::from(2)
-    } else {
-        Rational::from_ratio(1, 2)
-    };
-    let mut out = Rational::from(1);
-    for _ in 0..e.unsigned_abs() {
-        out *= base.clone();
-    }
-    out
+    // |e| stays far below isize::MAX (exponents of weights and MAX_EXPONENT)
+    rcagd_algebra::interval::pow2(e as isize)
 }
 
 /// The largest |exponent| searched (a weight range of `2¹⁰²⁴` needs no more).

@@ -437,11 +437,27 @@ pub fn write_iges_with(objects: &[Object], opts: &IgesOptions) -> Result<String,
         .iter()
         .map(exchange_object)
         .collect::<Result<Vec<_>, _>>()?;
-    for o in &exch {
+    write_iges_exchanged(&exch, opts)
+}
+
+/// [`write_iges_with`] of objects already in their exchange form
+/// ([`crate::step::exchange_object`]): a caller writing one object in several formats
+/// computes that form once.
+///
+/// # Errors
+/// As [`write_iges_with`].
+pub fn write_iges_exchanged(
+    exch: &[ExchangeObject],
+    opts: &IgesOptions,
+) -> Result<String, IoError> {
+    if exch.is_empty() {
+        return Err(IoError::Invalid("no objects to write to IGES".into()));
+    }
+    for o in exch {
         o.check_f64_range("IGES")?;
     }
     let mut entities: Vec<Entity> = Vec::new();
-    for o in &exch {
+    for o in exch {
         if o.curves.is_empty() && o.patches.is_empty() {
             return Err(IoError::Invalid(format!(
                 "object {:?} has no curves or patches to write",
@@ -562,7 +578,7 @@ pub fn write_iges_with(objects: &[Object], opts: &IgesOptions) -> Result<String,
         "0.01".into(),
         hollerith(&date),
         "1.E-07".into(),
-        format_real(max_coordinate(&exch))?,
+        format_real(max_coordinate(exch))?,
         hollerith(&ascii_name(&opts.author)),
         hollerith(&ascii_name(&opts.organization)),
         "11".into(),

@@ -560,6 +560,8 @@ pub fn render(o: &Object, opts: &RenderOptions) -> Result<Image, IoError> {
     for (mi, (m, vm)) in meshes.iter().zip(&vmeshes).enumerate() {
         let sp: Vec<V3> = vm.iter().map(|&p| to_screen(p)).collect();
         for t in &m.mesh.triangles {
+            // the picture runs under the caller's work budget
+            rcagd_algebra::budget::checkpoint();
             let [a, b, c] = t.map(|i| i as usize);
             let (pa, pb, pc) = (sp[a], sp[b], sp[c]);
             let area = (pb[0] - pa[0]) * (pc[1] - pa[1]) - (pb[1] - pa[1]) * (pc[0] - pa[0]);

@@ -1314,7 +1314,22 @@ pub fn write_step_with(objects: &[Object], opts: &StepOptions) -> Result<String,
         .iter()
         .map(exchange_object)
         .collect::<Result<Vec<_>, _>>()?;
-    for o in &exch {
+    write_step_exchanged(&exch, opts)
+}
+
+/// [`write_step_with`] of objects already in their exchange form ([`exchange_object`]):
+/// a caller writing one object in several formats computes that form once.
+///
+/// # Errors
+/// As [`write_step_with`].
+pub fn write_step_exchanged(
+    exch: &[ExchangeObject],
+    opts: &StepOptions,
+) -> Result<String, IoError> {
+    if exch.is_empty() {
+        return Err(IoError::Invalid("no objects to write to STEP".into()));
+    }
+    for o in exch {
         o.check_f64_range("STEP")?;
     }
     if let Some(o) = exch
@@ -1365,7 +1380,7 @@ pub fn write_step_with(objects: &[Object], opts: &StepOptions) -> Result<String,
     let ez = data.add("DIRECTION('',(0.,0.,1.))".into());
     let ex = data.add("DIRECTION('',(1.,0.,0.))".into());
     let axis = data.add(format!("AXIS2_PLACEMENT_3D('',#{origin},#{ez},#{ex})"));
-    let ids = unique_ids(&exch);
+    let ids = unique_ids(exch);
     let mut products = Vec::with_capacity(exch.len());
     for (o, id) in exch.iter().zip(&ids) {
         let product = data.add(format!(
@@ -1483,9 +1498,20 @@ pub fn nurbs_surface_json(s: &NurbsSurface<Rational>) -> Value {
 /// # Errors
 /// As [`write_step`].
 pub fn exact_sidecar(objects: &[Object]) -> Result<Value, IoError> {
-    let mut out = Vec::with_capacity(objects.len());
-    for o in objects {
-        let x = exchange_object(o)?;
+    let exch = objects
+        .iter()
+        .map(exchange_object)
+        .collect::<Result<Vec<_>, _>>()?;
+    exact_sidecar_exchanged(&exch)
+}
+
+/// [`exact_sidecar`] of objects already in their exchange form ([`exchange_object`]).
+///
+/// # Errors
+/// As [`exact_sidecar`].
+pub fn exact_sidecar_exchanged(exch: &[ExchangeObject]) -> Result<Value, IoError> {
+    let mut out = Vec::with_capacity(exch.len());
+    for x in exch {
         let surfaces = x.surfaces()?;
         let edges = if x.patches.is_empty() {
             Vec::new()

@@ -140,6 +140,8 @@ fn curve_point(c: &BezierCurve<f64>, t: f64) -> Option<P3> {
 }
 
 fn patch_point(p: &BezierPatch<f64>, u: f64, v: f64) -> Option<P3> {
+    // the pictures run under the caller's work budget
+    rcagd_algebra::budget::checkpoint();
     let (m, n) = p.degree();
     let rows: Vec<Vec<f64>> = (0..=m)
         .map(|i| {
