@@ -27,7 +27,10 @@
 //! the weight has no zero: no pole, no base point). Among the candidates that export the
 //! one with the fewest control points after that split wins; ties go to the lower bidegree,
 //! then to the earlier candidate (coordinate axes before tilted frames, Krasauskas before
-//! Peternell–Pottmann, general splits before the caller's split).
+//! Peternell–Pottmann, general splits before the caller's split). For a pipe around a
+//! polynomial spine with a proven lower bound of the degree of its unit normal fields
+//! (docs/math/pipes.md, "The degree of a unit normal field"), the builds of a method that
+//! can at best tie with a candidate already built are skipped; the choice stays the same.
 
 use super::envelope::{
     build_krasauskas, canal_surface_memo, CanalBuild, CanalOptions, CanalSurface,
@@ -493,8 +496,8 @@ fn candidates_on(
     // the candidates of the last `+` coordinate frame: for a pipe those of the `−` frame of
     // the same axis follow from them (`CanalSurface::mirrored`)
     let mut last_plus: Option<(usize, Candidates)> = None;
-    // the least size key so far; the order of the first candidate after the first skip and
-    // the least of the skipped methods' least keys
+    // the least size key so far; the build order at the first skip and the least of the
+    // skipped methods' least keys
     let mut best_key: Option<(usize, usize)> = None;
     let mut first_skip: Option<usize> = None;
     let mut skip_floor: Option<(usize, usize)> = None;
