@@ -3,7 +3,9 @@
 //! (docs/plans/pipes.md, "Speed"): the seed quintics with and without their split, random PH
 //! quintics and pipes around random planar cubics (a fixed pseudo-random sequence).
 //!
-//! Run: `cargo bench -p rcagd-benches --bench pipe_choice` (release).
+//! Run: `cargo bench -p rcagd-benches --bench pipe_choice` (release). Each line: the hash of
+//! the whole result, `chosen` and the hash of the chosen pipe alone (its pieces and
+//! certificates, without the counts of candidates), the summary.
 
 use rcagd::canal::pipe_around_ph_exportable;
 use rcagd::canal::{canal_surface_exportable, CanalOptions, CanalSpine, Orientation};
@@ -32,7 +34,18 @@ fn report<E: std::fmt::Debug>(name: &str, r: Result<rcagd::canal::ExportableCana
             let mut h = DefaultHasher::new();
             format!("{e:?}").hash(&mut h);
             format!("{:?}", e.certify()).hash(&mut h);
-            println!("{name}: {:016x} {}", h.finish(), e.summary());
+            // the chosen pipe alone (pieces: interval, frame, surface, patches; and the
+            // certificates), without the counts of candidates tried and exporting, which
+            // pruning the search changes
+            let mut c = DefaultHasher::new();
+            format!("{:?}", e.pieces()).hash(&mut c);
+            format!("{:?}", e.certify()).hash(&mut c);
+            println!(
+                "{name}: {:016x} chosen {:016x} {}",
+                h.finish(),
+                c.finish(),
+                e.summary()
+            );
         }
         Err(e) => println!("{name}: error {e:?}"),
     }

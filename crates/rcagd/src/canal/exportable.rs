@@ -27,7 +27,10 @@
 //! the weight has no zero: no pole, no base point). Among the candidates that export the
 //! one with the fewest control points after that split wins; ties go to the lower bidegree,
 //! then to the earlier candidate (coordinate axes before tilted frames, Krasauskas before
-//! Peternell–Pottmann, general splits before the caller's split).
+//! Peternell–Pottmann, general splits before the caller's split). For a pipe around a
+//! polynomial spine with a proven lower bound of the degree of its unit normal fields
+//! (docs/math/pipes.md, "The degree of a unit normal field"), the builds of a method that
+//! can at best tie with a candidate already built are skipped; the choice stays the same.
 
 use super::envelope::{
     build_krasauskas, canal_surface_memo, CanalBuild, CanalOptions, CanalSurface,
@@ -37,6 +40,7 @@ use super::frame::{
     coordinate_axis, householder, oriented, pole_free_directions, transform_spine, EXPORT_SPLITS,
 };
 use super::krasauskas::FactorMemo;
+use super::normal_degree::{candidate_size_bound, unit_normal_degree_bound};
 use super::regularity::check_pipe_regularity;
 use super::self_intersection::{check_chain_embedded, check_pipe_embedded};
 use super::{CanalError, CanalSpine};
@@ -399,14 +403,54 @@ struct IntervalResult {
     radicand: Option<Rational>,
 }
 
+/// The number of patches [`CanalSurface::domain_patches`] gives for a construction by
+/// `method` without reparametrization (two charts × the `u` ranges): every export of such a
+/// candidate has at least that many pieces.
+fn least_patches(method: Method) -> usize {
+    match method {
+        Method::Krasauskas => 4,
+        _ => 2,
+    }
+}
+
+/// For a pipe of constant radius `r ≠ 0` around a polynomial spine of degree `k ≥ 1` (the
+/// oriented family `so`, without reparametrization: `global`), `(δ, k)` with `δ > 0` a lower
+/// bound of the degree of every unit normal field of the spine
+/// ([`unit_normal_degree_bound`]); then every candidate by `method` has a size key
+/// `≥ candidate_size_bound(δ, k, least_patches(method))` (docs/math/pipes.md, "The degree
+/// of a unit normal field"). `None` otherwise.
+fn pipe_size_floor(so: &CanalSpine<Rational>, global: bool) -> Option<(usize, usize)> {
+    let constant = |p: &Poly<Rational>| p.degree() == Some(0);
+    if !global || !constant(so.weight()) || !constant(so.radius_poly()) {
+        return None;
+    }
+    let m = so.center_polys();
+    let k = m.iter().filter_map(Poly::degree).max()?;
+    if k == 0 {
+        return None;
+    }
+    let h: [Poly<Rational>; 3] = core::array::from_fn(|i| m[i].derivative());
+    let delta = unit_normal_degree_bound(&h);
+    (delta > 0).then_some((delta, k))
+}
+
 /// Every candidate on `[a, b]` (module docs); keeps the smallest export.
+///
+/// With `prune`, a method is no longer built in the frames that follow once a candidate
+/// has a size key (control points, `deg_t + deg_u`) at most the proven least key of every
+/// candidate of that method ([`pipe_size_floor`]): a skipped candidate could only tie with
+/// it and come later, and ties keep the earlier candidate. The choice is the one of the
+/// search without pruning; if the winner could depend on a skipped candidate (the winner
+/// was built after the first skip, or its key exceeds a skipped method's least key, or
+/// nothing exported exactly) the interval is searched again without pruning. Only the
+/// counts of candidates tried and exporting are smaller.
 fn candidates_on(
     spine: &CanalSpine<Rational>,
     split: Option<&[Poly<Rational>; 2]>,
     options: &CanalOptions,
-    a: &Rational,
-    b: &Rational,
+    (a, b): (&Rational, &Rational),
     memo: &FactorMemo,
+    prune: bool,
 ) -> Result<IntervalResult, CanalError> {
     let so = oriented(spine, options.orientation);
     // the reality of the envelope on the interval is a property of the data, not of a
@@ -423,20 +467,16 @@ fn candidates_on(
         Method::Lowest => vec![Method::Krasauskas, Method::PeternellPottmann],
         m => vec![m],
     };
-    // a family without reparametrization and with W ≠ 0 on [a, b] may be built in a tilted
-    // frame (the built surface is mapped back by an orthogonal map)
     let global = memo.check_real_envelope(&so, None).is_ok();
-    let tilted = if global && count_real_roots_in(so.weight(), a, b)? == 0 {
-        pole_free_directions(&so, a, b, TILTED_FRAMES + 6)?
-            .into_iter()
-            .filter(|e| coordinate_axis(e).is_none())
-            .take(TILTED_FRAMES)
-            .collect()
+    let floor = if prune {
+        pipe_size_floor(&so, global)
     } else {
-        Vec::new()
+        None
     };
-    let mut frames: Vec<Frame> = AxisChoice::all().into_iter().map(Frame::Axis).collect();
-    frames.extend(tilted.into_iter().map(Frame::Direction));
+    let bound = |method: Method| {
+        floor.map(|(delta, k)| candidate_size_bound(delta, k, least_patches(method)))
+    };
+    let frames = frames_on(&so, (a, b), global)?;
     let search = Search {
         spine,
         split,
@@ -456,6 +496,11 @@ fn candidates_on(
     // the candidates of the last `+` coordinate frame: for a pipe those of the `−` frame of
     // the same axis follow from them (`CanalSurface::mirrored`)
     let mut last_plus: Option<(usize, Candidates)> = None;
+    // the least size key so far; the build order at the first skip and the least of the
+    // skipped methods' least keys
+    let mut best_key: Option<(usize, usize)> = None;
+    let mut first_skip: Option<usize> = None;
+    let mut skip_floor: Option<(usize, usize)> = None;
     for frame in frames {
         let mirror = match (&frame, last_plus.take()) {
             (Frame::Axis(ax), Some((j, list))) if !ax.positive && ax.axis == j => {
@@ -466,7 +511,18 @@ fn candidates_on(
         let built = match mirror {
             Some(built) => built,
             None => {
-                let built = search.frame_candidates(&frame, &mut res);
+                let skip: Vec<Method> = methods
+                    .iter()
+                    .copied()
+                    .filter(|&m| matches!((best_key, bound(m)), (Some(k), Some(f)) if k <= f))
+                    .collect();
+                for &m in &skip {
+                    first_skip.get_or_insert(order);
+                    if let Some(f) = bound(m) {
+                        skip_floor = Some(skip_floor.map_or(f, |g: (usize, usize)| g.min(f)));
+                    }
+                }
+                let built = search.frame_candidates(&frame, &mut res, &skip);
                 if let (Frame::Axis(ax), true) = (&frame, memo.derives()) {
                     if ax.positive {
                         last_plus = Some((ax.axis, built.clone()));
@@ -526,6 +582,7 @@ fn candidates_on(
             };
             let (dt, du) = s.degree();
             let key = (est, dt + du);
+            best_key = Some(best_key.map_or(key, |k| k.min(key)));
             built_ok.push((key, order, s, frame.clone()));
             order += 1;
         }
@@ -534,8 +591,15 @@ fn candidates_on(
     built_ok.sort_by_key(|x| (x.0, x.1));
     // the best estimate that exports exactly wins (the exact split of a candidate whose f64
     // estimate succeeded fails only for weights within rounding of zero)
-    for (_, _, s, frame) in built_ok {
+    for (key, order, s, frame) in built_ok {
         if let Some(patches) = exported_patches(&s) {
+            if let Some(first) = first_skip {
+                // a skipped candidate sorts after this one only if it was skipped after this
+                // one was built and its least key is at least this key
+                if order >= first || skip_floor.is_some_and(|f| key > f) {
+                    return candidates_on(spine, split, options, (a, b), memo, false);
+                }
+            }
             res.best = Some(ExportPiece {
                 interval: (a.clone(), b.clone()),
                 surface: s,
@@ -546,7 +610,33 @@ fn candidates_on(
             break;
         }
     }
+    if res.best.is_none() && first_skip.is_some() {
+        return candidates_on(spine, split, options, (a, b), memo, false);
+    }
     Ok(res)
+}
+
+/// The frames tried on `[a, b]` for the oriented family `so`: the six coordinate axes, then
+/// up to [`TILTED_FRAMES`] tilted directions — a family without reparametrization
+/// (`global`) and with `W ≠ 0` on `[a, b]` may be built in a tilted frame (the built
+/// surface is mapped back by an orthogonal map).
+fn frames_on(
+    so: &CanalSpine<Rational>,
+    (a, b): (&Rational, &Rational),
+    global: bool,
+) -> Result<Vec<Frame>, CanalError> {
+    let tilted = if global && count_real_roots_in(so.weight(), a, b)? == 0 {
+        pole_free_directions(so, a, b, TILTED_FRAMES + 6)?
+            .into_iter()
+            .filter(|e| coordinate_axis(e).is_none())
+            .take(TILTED_FRAMES)
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let mut frames: Vec<Frame> = AxisChoice::all().into_iter().map(Frame::Axis).collect();
+    frames.extend(tilted.into_iter().map(Frame::Direction));
+    Ok(frames)
 }
 
 /// The candidates of one frame: the built surfaces and the failed builds, in order.
@@ -569,7 +659,13 @@ struct Search<'a> {
 impl Search<'_> {
     /// The candidates of one frame, in the frame's coordinates (a tilted frame's are mapped
     /// back by the caller): per method the general builder's and the caller's split's.
-    fn frame_candidates(&self, frame: &Frame, res: &mut IntervalResult) -> Candidates {
+    /// The methods in `skip` are not built.
+    fn frame_candidates(
+        &self,
+        frame: &Frame,
+        res: &mut IntervalResult,
+        skip: &[Method],
+    ) -> Candidates {
         let (a, b) = self.domain;
         let fam = match frame {
             Frame::Axis(_) => self.spine.clone(),
@@ -584,7 +680,7 @@ impl Search<'_> {
         };
         let mut built: Candidates = Vec::new();
         let fo = oriented(&fam, self.options.orientation);
-        for &method in self.methods {
+        for &method in self.methods.iter().filter(|m| !skip.contains(m)) {
             let opts = CanalOptions {
                 orientation: self.options.orientation,
                 choice: self.options.choice,
@@ -676,10 +772,10 @@ fn pieces_on(
     interval: (&Rational, &Rational),
     depth: usize,
     acc: &mut ExportableCanal,
-    memo: &FactorMemo,
+    (memo, prune): (&FactorMemo, bool),
 ) -> Result<(), CanalError> {
     let (a, b) = interval;
-    let res = candidates_on(spine, split, options, a, b, memo)?;
+    let res = candidates_on(spine, split, options, (a, b), memo, prune)?;
     acc.tried += res.tried;
     acc.exporting += res.exporting;
     if let Some(p) = res.best {
@@ -705,8 +801,24 @@ fn pieces_on(
         });
     }
     let m = (a.clone() + b.clone()) / Rational::from(2);
-    pieces_on(spine, split, options, (a, &m), depth + 1, acc, memo)?;
-    pieces_on(spine, split, options, (&m, b), depth + 1, acc, memo)
+    pieces_on(
+        spine,
+        split,
+        options,
+        (a, &m),
+        depth + 1,
+        acc,
+        (memo, prune),
+    )?;
+    pieces_on(
+        spine,
+        split,
+        options,
+        (&m, b),
+        depth + 1,
+        acc,
+        (memo, prune),
+    )
 }
 
 /// The canal surface of `spine` on the domain of `options` (required) as exact pieces that
@@ -738,6 +850,17 @@ fn canal_surface_exportable_memo(
     options: &CanalOptions,
     memo: &FactorMemo,
 ) -> Result<ExportableCanal, CanalError> {
+    canal_surface_exportable_search(spine, split, options, memo, true)
+}
+
+/// [`canal_surface_exportable_memo`], with or without pruning ([`candidates_on`]).
+fn canal_surface_exportable_search(
+    spine: &CanalSpine<Rational>,
+    split: Option<&[Poly<Rational>; 2]>,
+    options: &CanalOptions,
+    memo: &FactorMemo,
+    prune: bool,
+) -> Result<ExportableCanal, CanalError> {
     let (a, b) = options.domain.clone().ok_or_else(|| {
         CanalError::InvalidArgument("an exported canal surface needs a parameter domain".into())
     })?;
@@ -754,7 +877,7 @@ fn canal_surface_exportable_memo(
         exporting: 0,
         regularity: Vec::new(),
     };
-    pieces_on(spine, split, options, (&a, &b), 0, &mut acc, memo)?;
+    pieces_on(spine, split, options, (&a, &b), 0, &mut acc, (memo, prune))?;
     Ok(acc)
 }
 
@@ -1147,6 +1270,7 @@ pub fn pipe_along_chain(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::canal::BiPoly;
     use rcagd_algebra::quaternion::Quaternion;
 
     fn q(n: i64) -> Rational {
@@ -1162,8 +1286,11 @@ mod tests {
             domain: Some((q(0), q(1))),
             ..CanalOptions::default()
         };
-        let with = canal_surface_exportable_memo(s, split, &options, &FactorMemo::default());
-        let without = canal_surface_exportable_memo(s, split, &options, &FactorMemo::off());
+        // without pruning: a memo without memory builds the frames `(j, −)` a memo derives,
+        // and pruning skips different builds in them (pruning is compared on its own by
+        // `pruning_agrees`)
+        let search = |memo| canal_surface_exportable_search(s, split, &options, memo, false);
+        let (with, without) = (search(&FactorMemo::default()), search(&FactorMemo::off()));
         match (&with, &without) {
             (Ok(x), Ok(y)) => {
                 assert_eq!(x, y, "{} against {}", x.summary(), y.summary());
@@ -1193,6 +1320,171 @@ mod tests {
             let split = known_pipe_split(&s).expect("split");
             memo_agrees(&s, split.as_ref());
             memo_agrees(&s, None);
+        }
+    }
+
+    /// The search with pruning against the search without it on `[0, 1]`: the same pieces
+    /// (interval, frame, surface, patches) and certificates, or the same error. Returns the
+    /// candidates tried with and without pruning.
+    fn pruning_agrees(
+        s: &CanalSpine<Rational>,
+        split: Option<&[Poly<Rational>; 2]>,
+    ) -> Option<(usize, usize)> {
+        let options = CanalOptions {
+            domain: Some((q(0), q(1))),
+            ..CanalOptions::default()
+        };
+        let search = |prune| {
+            canal_surface_exportable_search(s, split, &options, &FactorMemo::default(), prune)
+        };
+        let (pruned, full) = (search(true), search(false));
+        match (&pruned, &full) {
+            (Ok(x), Ok(y)) => {
+                assert_eq!(
+                    x.pieces(),
+                    y.pieces(),
+                    "{} against {}",
+                    x.summary(),
+                    y.summary()
+                );
+                assert_eq!(x.certify(), y.certify());
+                assert!(x.tried <= y.tried && x.exporting <= y.exporting);
+                Some((x.tried, y.tried))
+            }
+            (Err(x), Err(y)) => {
+                assert_eq!(format!("{x:?}"), format!("{y:?}"));
+                None
+            }
+            _ => panic!("{pruned:?} against {full:?}"),
+        }
+    }
+
+    /// The polynomial `x(t, u₀)` in `t`.
+    fn at_u(x: &BiPoly<Rational>, u: &Rational) -> Poly<Rational> {
+        x.coeffs()
+            .iter()
+            .rev()
+            .fold(Poly::zero(), |acc, c| &acc.scale(u) + c)
+    }
+
+    /// Every candidate of every frame of the search on `[a, b]` (both methods, general
+    /// splits and `split`, nothing skipped) of a pipe whose spine has a size floor
+    /// `(δ, k)` ([`pipe_size_floor`]): the unit normals `N(t, u₀) = (W x − x₀ m)/(R x₀)` at
+    /// `u₀ ∈ {0, 1/3, −2}` have reduced denominators of degree `≥ δ`,
+    /// `deg_t x = deg_t x₀ + k`, every chart has a bidegree `≥ (δ + k, 2)` and the size key
+    /// of the estimate is at least the floor of the candidate's method. Returns the number
+    /// of candidates checked (0 without a floor).
+    fn floor_holds(
+        s: &CanalSpine<Rational>,
+        split: Option<&[Poly<Rational>; 2]>,
+        (a, b): (Rational, Rational),
+    ) -> usize {
+        let memo = FactorMemo::default();
+        let options = CanalOptions {
+            domain: Some((a.clone(), b.clone())),
+            ..CanalOptions::default()
+        };
+        let so = oriented(s, options.orientation);
+        let global = memo.check_real_envelope(&so, None).is_ok();
+        let Some((delta, k)) = pipe_size_floor(&so, global) else {
+            return 0;
+        };
+        let methods = [Method::Krasauskas, Method::PeternellPottmann];
+        let search = Search {
+            spine: s,
+            split,
+            options: &options,
+            methods: &methods,
+            global,
+            domain: (&a, &b),
+            mid: (a.clone() + b.clone()) / q(2),
+            memo: &memo,
+        };
+        let mut res = IntervalResult {
+            best: None,
+            tried: 0,
+            exporting: 0,
+            error: None,
+            radicand: None,
+        };
+        let w = so.weight().clone();
+        let m = so.center_polys();
+        let mut checked = 0;
+        for frame in frames_on(&so, (&a, &b), global).expect("frames") {
+            for c in search.frame_candidates(&frame, &mut res, &[]) {
+                let Ok(c) = c else { continue };
+                let c = match &frame {
+                    Frame::Axis(_) => c,
+                    Frame::Direction(e) => c.transformed(&householder(e), &so).expect("mapped"),
+                };
+                let x = c.homogeneous();
+                let dt0 = x[0].degree_t().expect("a weight");
+                let (dt, du) = c.degree();
+                assert!(
+                    dt0 >= delta && dt == dt0 + k && du >= 2,
+                    "{frame}: {dt0} {dt} {du}"
+                );
+                for (ct, cu) in c.chart_bidegrees() {
+                    assert!(ct >= delta + k && cu >= 2, "{frame}: chart ({ct}, {cu})");
+                }
+                for u0 in [q(0), Rational::from_ratio(1, 3), q(-2)] {
+                    let x0 = at_u(&x[0], &u0);
+                    if x0.is_zero() {
+                        continue;
+                    }
+                    let g = (0..3).fold(x0.clone(), |g, i| {
+                        let d = &at_u(&x[i + 1], &u0).scale(&w.coeff(0)) - &(&x0 * &m[i]);
+                        g.gcd(&d)
+                    });
+                    let den = x0.div_exact(&g).expect("a divisor");
+                    assert!(den.degree().is_some_and(|d| d >= delta), "{frame}: {den:?}");
+                }
+                let method = match c.construction() {
+                    Construction::Krasauskas { .. } => Method::Krasauskas,
+                    Construction::PeternellPottmann => Method::PeternellPottmann,
+                };
+                if let Some(est) = exported_size_f64(&c) {
+                    let floor = candidate_size_bound(delta, k, least_patches(method));
+                    assert!((est, dt + du) >= floor, "{frame}: {est} < {floor:?}");
+                }
+                checked += 1;
+            }
+        }
+        checked
+    }
+
+    #[test]
+    fn pruning_keeps_the_choice_of_the_seed_pipes() {
+        for s in seed_pipe_spines() {
+            let split = known_pipe_split(&s).expect("split");
+            for split in [split.as_ref(), None] {
+                let (pruned, full) = pruning_agrees(&s, split).expect("builds");
+                // the floor is reached by the first candidate: later Krasauskas builds skipped
+                assert!(pruned < full, "{pruned} {full}");
+            }
+        }
+    }
+
+    #[test]
+    fn size_floor_holds_for_every_candidate_of_the_seed_pipes() {
+        for s in seed_pipe_spines() {
+            let split = known_pipe_split(&s).expect("split");
+            // every candidate the search without pruning tries on [0, 1] (one piece)
+            let options = CanalOptions {
+                domain: Some((q(0), q(1))),
+                ..CanalOptions::default()
+            };
+            let full = canal_surface_exportable_search(
+                &s,
+                split.as_ref(),
+                &options,
+                &FactorMemo::default(),
+                false,
+            )
+            .expect("builds");
+            assert_eq!(full.pieces().len(), 1);
+            assert_eq!(floor_holds(&s, split.as_ref(), (q(0), q(1))), full.tried);
+            assert!(floor_holds(&s, split.as_ref(), (q(0), Rational::from_ratio(1, 2))) > 0);
         }
     }
 
@@ -1233,6 +1525,26 @@ mod tests {
 
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(16))]
+
+        /// Random PH quintics with and without their split `(σ, 0)`: every candidate
+        /// built respects the size floor, and pruning changes no choice.
+        #[test]
+        fn pruning_keeps_the_choice_on_random_spines(
+            a in proptest::collection::vec(proptest::array::uniform4(-3i64..4), 3),
+            r in 1i64..20,
+        ) {
+            if let Some(c) = ph_of_preimage(&a) {
+                let s = CanalSpine::polynomial(
+                    c.position().clone(),
+                    Poly::constant(Rational::from_ratio(r, 40)),
+                );
+                if let Ok(split) = known_pipe_split(&s) {
+                    floor_holds(&s, split.as_ref(), (q(0), q(1)));
+                    pruning_agrees(&s, split.as_ref());
+                    pruning_agrees(&s, None);
+                }
+            }
+        }
 
         /// Random PH quintics (with their split `(σ, 0)`) and pipes around random planar
         /// cubics (the general splits of `D`): the memo changes nothing.

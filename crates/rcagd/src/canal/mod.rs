@@ -65,6 +65,7 @@ pub mod factor;
 mod float_bernstein;
 pub mod frame;
 pub mod krasauskas;
+pub(crate) mod normal_degree;
 pub mod normal_field;
 pub mod pipe;
 pub mod regularity;
