@@ -40,7 +40,7 @@
 use crate::curve::BezierCurve;
 use crate::error::GeomError;
 use crate::grid::{
-    control_net_scale, cross, eval_curve_f64, eval_patch_derivatives_f64, eval_patch_grid,
+    control_net_scale, cross, eval_curve3_f64, eval_patch_derivatives_f64, eval_patch_grid,
     eval_patch_grid_with_normals, linspace, norm, sub, unit_normal, DEGENERATE_NORMAL_RELATIVE,
 };
 use crate::patch::BezierPatch;
@@ -132,8 +132,8 @@ fn patch3<F: Scalar>(patch: &BezierPatch<F>) -> Result<BezierPatch<f64>, GeomErr
 }
 
 fn point3(curve: &BezierCurve<f64>, t: f64) -> Result<[f64; 3], GeomError> {
-    let x = eval_curve_f64(curve, t);
-    let p = [x[0], x[1], x[2]];
+    // the value of eval_curve_f64, without its allocations
+    let p = eval_curve3_f64(curve, t);
     if p.iter().all(|c| c.is_finite()) {
         Ok(p)
     } else {

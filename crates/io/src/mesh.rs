@@ -28,18 +28,17 @@
 //! wound 2-manifold mesh (each edge in exactly two triangles, traversed in opposite
 //! directions), wound outward.
 
-use crate::step::{build_topology, embed_e3, mobius_ratio, Topology};
+use crate::step::{build_topology, embed_e3, Topology};
 use crate::IoError;
 use rcagd_algebra::{Rational, Scalar};
 use rcagd_geom::grid::{
-    cross, eval_curve_f64, eval_patch_derivatives_f64, eval_patch_f64, norm, sub,
-    DEGENERATE_NORMAL_RELATIVE,
+    cross, eval_curve3_f64, norm, sub, PatchEvaluator3, SurfacePoint3, DEGENERATE_NORMAL_RELATIVE,
 };
 use rcagd_geom::tessellate::{
     adaptive_curve_params, adaptive_patch_params, tessellate_patch_adaptive, TriMesh,
     MAX_CURVE_DEPTH, MAX_TESSELLATION_POINTS,
 };
-use rcagd_geom::{BezierCurve, BezierPatch};
+use rcagd_geom::BezierPatch;
 use std::collections::HashMap;
 
 /// The adaptive depth used for edges (as for curves in OBJ export).
@@ -99,29 +98,36 @@ impl Builder {
             normal_count,
             triangles,
         } = self;
-        // area-weighted triangle normals for vertices without a surface normal
-        let mut fallback = vec![[0.0; 3]; positions.len()];
-        for t in &triangles {
-            let [a, b, c] = t.map(|i| positions[i as usize]);
-            let f = cross(sub(b, a), sub(c, a));
-            for &i in t {
-                for k in 0..3 {
-                    fallback[i as usize][k] += f[k];
+        // area-weighted triangle normals for vertices without a surface normal (formed
+        // only if some vertex needs them)
+        let mut fallback_sums: Option<Vec<[f64; 3]>> = None;
+        let mut fallback = |i: usize| {
+            fallback_sums.get_or_insert_with(|| {
+                let mut f = vec![[0.0; 3]; positions.len()];
+                for t in &triangles {
+                    let [a, b, c] = t.map(|i| positions[i as usize]);
+                    let n = cross(sub(b, a), sub(c, a));
+                    for &i in t {
+                        for k in 0..3 {
+                            f[i as usize][k] += n[k];
+                        }
+                    }
                 }
-            }
-        }
+                f
+            })[i]
+        };
         let normals = (0..positions.len())
             .map(|i| {
                 let s = if normal_count[i] > 0 {
                     normal_sum[i]
                 } else {
-                    fallback[i]
+                    fallback(i)
                 };
                 let l = norm(s);
                 if l > 0.0 && l.is_finite() {
                     [s[0] / l, s[1] / l, s[2] / l]
                 } else {
-                    let f = fallback[i];
+                    let f = fallback(i);
                     let lf = norm(f);
                     if lf > 0.0 && lf.is_finite() {
                         [f[0] / lf, f[1] / lf, f[2] / lf]
@@ -152,10 +158,10 @@ fn rational_point(p: &[Rational]) -> [f64; 3] {
     to3(&v)
 }
 
-/// The unit normal `∂ᵤx × ∂ᵥx / |…|` of a patch, `None` where it degenerates.
-fn surface_normal(p: &BezierPatch<f64>, u: f64, v: f64, flipped: bool) -> Option<[f64; 3]> {
-    let d = eval_patch_derivatives_f64(p, u, v);
-    let (du, dv) = (to3(&d.du), to3(&d.dv));
+/// The unit normal `∂ᵤx × ∂ᵥx / |…|` of a patch from its partials at a point, `None`
+/// where it degenerates.
+fn surface_normal(d: &SurfacePoint3, flipped: bool) -> Option<[f64; 3]> {
+    let (du, dv) = (d.du, d.dv);
     let n = cross(du, dv);
     let l = norm(n);
     let scale = norm(du).max(norm(dv));
@@ -292,10 +298,10 @@ fn mesh_topology(
     }
     // edges: parameters and vertex ids (ends are the topological vertices)
     let mut edge_samples: Vec<Vec<(f64, u32)>> = Vec::with_capacity(topo.edges.len());
-    let mut edge_curves: Vec<BezierCurve<f64>> = Vec::with_capacity(topo.edges.len());
     for e in &topo.edges {
-        let params = adaptive_curve_params(&e.curve, tol, EDGE_DEPTH.min(MAX_CURVE_DEPTH))?;
+        // the f64 curve once (adaptive_curve_params rounds the exact curve the same way)
         let c = e.curve.to_f64();
+        let params = adaptive_curve_params(&c, tol, EDGE_DEPTH.min(MAX_CURVE_DEPTH))?;
         let mut samples = Vec::with_capacity(params.len());
         let last = params.len().saturating_sub(1);
         for (i, &s) in params.iter().enumerate() {
@@ -304,26 +310,29 @@ fn mesh_topology(
             } else if i == last {
                 topo_vertex[e.end]
             } else {
-                b.vertex(to3(&eval_curve_f64(&c, s)))?
+                b.vertex(eval_curve3_f64(&c, s))?
             };
             samples.push((s, id));
         }
         edge_samples.push(samples);
-        edge_curves.push(c);
     }
     let mut extra_vertices: HashMap<Vec<Rational>, u32> = HashMap::new();
+    let mut ders: Vec<SurfacePoint3> = Vec::new();
     for face in &topo.faces {
         let patch = &patches[face.patch];
         let pf = patch.to_f64();
-        let boundary = patch.boundary_curves();
+        let mut eval = PatchEvaluator3::new(&pf)?;
+        let (m, n) = patch.degree();
         // the four sides
         let mut sides: Vec<Side> = Vec::with_capacity(4);
-        for (side, c) in boundary.iter().enumerate() {
+        for side in 0..4 {
             if let Some(k) = face.sides.iter().position(|&s| s == side) {
                 let (e, fwd) = face.edges[k];
-                let edge = &topo.edges[e];
-                let oriented = if fwd { c.clone() } else { c.reverse() };
-                let rho = mobius_ratio(&oriented, &edge.curve).map_or(1.0, |r| Scalar::to_f64(&r));
+                let rho = face
+                    .ratios
+                    .get(k)
+                    .and_then(Option::as_ref)
+                    .map_or(1.0, Scalar::to_f64);
                 let mut pts: Vec<(f64, u32)> = edge_samples[e]
                     .iter()
                     .map(|&(s, id)| {
@@ -336,8 +345,10 @@ fn mesh_topology(
                 }
                 sides.push(Side::Polyline(pts));
             } else {
-                // collapsed: one vertex at the exact point
-                let h = c.control_point(0);
+                // collapsed: one vertex at the exact point (the side's first corner in
+                // loop order, BezierPatch::boundary_curves)
+                let (i, j) = [(0, 0), (m, 0), (m, n), (0, n)][side];
+                let h = patch.control_point(i, j);
                 let p: Vec<Rational> = h[1..].iter().map(|x| x.clone() / h[0].clone()).collect();
                 let id = match vertex_of.get(p.as_slice()) {
                     Some(&id) => id,
@@ -353,16 +364,21 @@ fn mesh_topology(
                 sides.push(Side::Point(id));
             }
         }
-        // the interior grid
-        let (us, vs) = adaptive_patch_params(patch, tol)?;
+        // the interior grid (adaptive_patch_params rounds the exact patch as to_f64 does)
+        let (us, vs) = adaptive_patch_params(&pf, tol)?;
         let (us, vs) = (at_least_two(us), at_least_two(vs));
         let (nu, nv) = (us.len() - 1, vs.len() - 1);
         let mut grid = vec![0u32; (nu + 1) * (nv + 1)];
         let at = |i: usize, j: usize| i * (nv + 1) + j;
+        eval.grid_derivatives(&us[1..nu], &vs[1..nv], &mut ders)?;
+        let mut inner = ders.iter();
         for i in 1..nu {
             for j in 1..nv {
-                let id = b.vertex(to3(&eval_patch_f64(&pf, us[i], vs[j])))?;
-                b.add_normal(id, surface_normal(&pf, us[i], vs[j], face.flipped));
+                let d = inner.next().ok_or_else(|| {
+                    IoError::Invalid("the interior grid has fewer points than parameters".into())
+                })?;
+                let id = b.vertex(d.point)?;
+                b.add_normal(id, surface_normal(d, face.flipped));
                 grid[at(i, j)] = id;
             }
         }
@@ -423,7 +439,7 @@ fn mesh_topology(
             if let Side::Polyline(pts) = bound {
                 for &(s, id) in &pts[..pts.len().saturating_sub(1)] {
                     let [u, v] = side_uv(side, s);
-                    b.add_normal(id, surface_normal(&pf, u, v, face.flipped));
+                    b.add_normal(id, surface_normal(&eval.derivatives(u, v), face.flipped));
                 }
             }
         }
