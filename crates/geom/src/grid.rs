@@ -725,6 +725,72 @@ impl PatchEvaluator3 {
     }
 }
 
+/// The rows `u ↦ (x(u, vs[0]), …, x(u, vs[k]))` of a grid over fixed `vs`, one `u` at a
+/// time (a strip-wise error check needs a few rows at once, never the whole grid): the
+/// Bernstein values of `vs` are formed once. Each point is computed with the operations
+/// of [`eval_patch_grid`] in the same order, so the values are equal bit for bit.
+#[derive(Debug, Clone)]
+pub struct PatchGridRows3 {
+    m: usize,
+    n: usize,
+    net: Vec<[f64; 4]>,
+    /// `Bⱼⁿ(vs[k])` at `k · (n + 1) + j`.
+    bv: Vec<f64>,
+    bu: Vec<f64>,
+    q: Vec<[f64; 4]>,
+}
+
+impl PatchGridRows3 {
+    /// Prepares the rows of a 3-D patch over `vs`.
+    ///
+    /// # Errors
+    /// [`GeomError::Dimension`] if the patch is not in E3.
+    pub fn new(patch: &BezierPatch<f64>, vs: &[f64]) -> Result<Self, GeomError> {
+        require_dim3(patch.dim(), "PatchGridRows3")?;
+        let (m, n) = patch.degree();
+        let nv = n + 1;
+        let mut bv = vec![0.0; vs.len() * nv];
+        for (b, &v) in bv.chunks_exact_mut(nv).zip(vs) {
+            bernstein_into(n, v, b);
+        }
+        Ok(PatchGridRows3 {
+            m,
+            n,
+            net: net4(patch),
+            bv,
+            bu: vec![0.0; m + 1],
+            q: vec![[0.0; 4]; nv],
+        })
+    }
+
+    /// The points `x(u, vs[k])` into `out` (cleared first).
+    pub fn row(&mut self, u: f64, out: &mut Vec<[f64; 3]>) {
+        out.clear();
+        let nv = self.n + 1;
+        bernstein_into(self.m, u, &mut self.bu);
+        // Qⱼ(u) = Σᵢ Bᵢᵐ(u) Pᵢⱼ
+        self.q.iter_mut().for_each(|x| *x = [0.0; 4]);
+        for (row, &bi) in self.net.chunks_exact(nv).zip(&self.bu) {
+            for (qj, p) in self.q.iter_mut().zip(row) {
+                for c in 0..4 {
+                    qj[c] += bi * p[c];
+                }
+            }
+        }
+        let q = &self.q;
+        out.extend(self.bv.chunks_exact(nv).map(|b| {
+            let mut h = [0.0f64; 4];
+            for (bj, qj) in b.iter().zip(q) {
+                for c in 0..4 {
+                    h[c] += bj * qj[c];
+                }
+            }
+            let r = 1.0 / h[0];
+            [h[1] * r, h[2] * r, h[3] * r]
+        }));
+    }
+}
+
 /// The Euclidean point and partials from the homogeneous `P`, `∂ᵤP`, `∂ᵥP` (quotient
 /// rule; the operations of [`eval_patch_derivatives_f64`]).
 #[inline]
@@ -1016,11 +1082,44 @@ mod tests {
         }
     }
 
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+        /// The rows are the points of `eval_patch_grid` bit for bit (fixed-size kernels
+        /// for `v`-degrees 1 to 7, the general one above).
+        #[test]
+        fn grid_rows_are_bit_identical(
+            m in 0usize..4,
+            n in 0usize..10,
+            seed in proptest::collection::vec(-4.0f64..4.0, 4 * 44),
+            us in proptest::collection::vec(-0.25f64..1.25, 1..4),
+            vs in proptest::collection::vec(-0.25f64..1.25, 1..6),
+        ) {
+            let coords = seed[..4 * (m + 1) * (n + 1)].to_vec();
+            let p = BezierPatch::from_flat(3, m, n, coords).expect("valid");
+            let mut want = Vec::new();
+            eval_patch_grid(&p, &us, &vs, &mut want).expect("3-D");
+            let mut rows = PatchGridRows3::new(&p, &vs).expect("3-D");
+            let mut row = Vec::new();
+            for (i, &u) in us.iter().enumerate() {
+                rows.row(u, &mut row);
+                let got: Vec<[u64; 3]> = row.iter().map(|x| bits(*x)).collect();
+                let exp: Vec<[u64; 3]> =
+                    want[i * vs.len()..(i + 1) * vs.len()].iter().map(|x| bits(*x)).collect();
+                proptest::prop_assert_eq!(got, exp);
+            }
+        }
+    }
+
     #[test]
     fn patch_evaluator_needs_e3() {
         let p = BezierPatch::from_flat(2, 1, 1, vec![1.0; 12]).expect("valid");
         assert!(matches!(
             PatchEvaluator3::new(&p),
+            Err(GeomError::Dimension(_))
+        ));
+        assert!(matches!(
+            PatchGridRows3::new(&p, &[0.5]),
             Err(GeomError::Dimension(_))
         ));
     }

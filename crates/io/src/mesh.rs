@@ -28,7 +28,7 @@
 //! wound 2-manifold mesh (each edge in exactly two triangles, traversed in opposite
 //! directions), wound outward.
 
-use crate::step::{build_topology, embed_e3, Topology};
+use crate::step::{build_topology_with, embed_e3, Topology};
 use crate::IoError;
 use rcagd_algebra::{Rational, Scalar};
 use rcagd_geom::grid::{
@@ -79,6 +79,14 @@ impl Builder {
         self.normal_count.push(0);
         u32::try_from(self.positions.len() - 1)
             .map_err(|_| IoError::Invalid("the mesh has more vertices than u32 indices".into()))
+    }
+
+    /// Room for `vertices` more vertices and `triangles` more triangles.
+    fn reserve(&mut self, vertices: usize, triangles: usize) {
+        self.positions.reserve(vertices);
+        self.normal_sum.reserve(vertices);
+        self.normal_count.reserve(vertices);
+        self.triangles.reserve(triangles);
     }
 
     fn add_normal(&mut self, v: u32, n: Option<[f64; 3]>) {
@@ -256,8 +264,9 @@ pub fn shared_edge_mesh(patches: &[BezierPatch<Rational>], tol: f64) -> Result<T
         .enumerate()
         .map(|(k, p)| embed_e3(p, &format!("patch {k}")))
         .collect::<Result<Vec<_>, _>>()?;
-    let topo = build_topology(&e3)?;
-    mesh_topology(&e3, &topo, tol)
+    let e3_f64: Vec<BezierPatch<f64>> = e3.iter().map(BezierPatch::to_f64).collect();
+    let topo = build_topology_with(&e3, Some(&e3_f64))?;
+    mesh_topology(&e3, &e3_f64, &topo, tol)
 }
 
 /// The mesh of drawable patches (pieces whose weight function has one sign): the
@@ -283,12 +292,36 @@ pub fn patches_mesh(patches: &[BezierPatch<Rational>], tol: f64) -> Result<TriMe
     }
 }
 
+/// The `u` and `v` parameters of a face's tensor grid.
+type GridParams = (Vec<f64>, Vec<f64>);
+
 fn mesh_topology(
     patches: &[BezierPatch<Rational>],
+    patches_f64: &[BezierPatch<f64>],
     topo: &Topology,
     tol: f64,
 ) -> Result<TriMesh, IoError> {
     let mut b = Builder::default();
+    // each face's grid parameters first (their errors are reported where the face is
+    // meshed, as before), so that the mesh is allocated once
+    let mut face_params: Vec<Option<Result<GridParams, IoError>>> = topo
+        .faces
+        .iter()
+        .map(|face| {
+            let pf = patches_f64
+                .get(face.patch)
+                .ok_or_else(|| IoError::Invalid(format!("face of missing patch {}", face.patch)))?;
+            let (us, vs) = adaptive_patch_params(pf, tol)?;
+            Ok((at_least_two(us), at_least_two(vs)))
+        })
+        .map(Some)
+        .collect();
+    let (mut verts, mut tris) = (topo.vertices.len(), 0usize);
+    for (us, vs) in face_params.iter().flatten().flatten() {
+        verts += us.len() * vs.len();
+        tris += 2 * (us.len() + 1) * (vs.len() + 1);
+    }
+    b.reserve(verts, tris);
     let mut vertex_of: HashMap<&[Rational], u32> = HashMap::new();
     let mut topo_vertex = Vec::with_capacity(topo.vertices.len());
     for v in &topo.vertices {
@@ -318,10 +351,10 @@ fn mesh_topology(
     }
     let mut extra_vertices: HashMap<Vec<Rational>, u32> = HashMap::new();
     let mut ders: Vec<SurfacePoint3> = Vec::new();
-    for face in &topo.faces {
+    for (fi, face) in topo.faces.iter().enumerate() {
         let patch = &patches[face.patch];
-        let pf = patch.to_f64();
-        let mut eval = PatchEvaluator3::new(&pf)?;
+        let pf = &patches_f64[face.patch];
+        let mut eval = PatchEvaluator3::new(pf)?;
         let (m, n) = patch.degree();
         // the four sides
         let mut sides: Vec<Side> = Vec::with_capacity(4);
@@ -365,8 +398,10 @@ fn mesh_topology(
             }
         }
         // the interior grid (adaptive_patch_params rounds the exact patch as to_f64 does)
-        let (us, vs) = adaptive_patch_params(&pf, tol)?;
-        let (us, vs) = (at_least_two(us), at_least_two(vs));
+        let (us, vs) = face_params
+            .get_mut(fi)
+            .and_then(Option::take)
+            .ok_or_else(|| IoError::Invalid("a face without grid parameters".into()))??;
         let (nu, nv) = (us.len() - 1, vs.len() - 1);
         let mut grid = vec![0u32; (nu + 1) * (nv + 1)];
         let at = |i: usize, j: usize| i * (nv + 1) + j;
@@ -382,20 +417,22 @@ fn mesh_topology(
                 grid[at(i, j)] = id;
             }
         }
-        let mut tris: Vec<([u32; 3], [[f64; 2]; 3])> = Vec::new();
+        // the interior cells: counter-clockwise in the parameter plane (both parameter
+        // lists increase), so reversed exactly on a flipped face
         for i in 1..nu.saturating_sub(1) {
             for j in 1..nv.saturating_sub(1) {
-                let uv = |i: usize, j: usize| [us[i], vs[j]];
-                tris.push((
+                for mut t in [
                     [grid[at(i, j)], grid[at(i + 1, j)], grid[at(i + 1, j + 1)]],
-                    [uv(i, j), uv(i + 1, j), uv(i + 1, j + 1)],
-                ));
-                tris.push((
                     [grid[at(i, j)], grid[at(i + 1, j + 1)], grid[at(i, j + 1)]],
-                    [uv(i, j), uv(i + 1, j + 1), uv(i, j + 1)],
-                ));
+                ] {
+                    if face.flipped {
+                        t.swap(1, 2);
+                    }
+                    b.triangles.push(t);
+                }
             }
         }
+        let mut tris: Vec<([u32; 3], [[f64; 2]; 3])> = Vec::new();
         // the inner ring, side by side in loop direction
         let poles: Vec<u32> = sides
             .iter()

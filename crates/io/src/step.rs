@@ -579,6 +579,12 @@ pub(crate) fn mobius_ratio(
         return None;
     }
     let zero = Rational::from(0);
+    if p.coords() == q.coords() {
+        // Qᵢ = 1·Pᵢ: the general computation below gives ρ = 1 unless a control point
+        // is all zero or there is only one
+        let nonzero = p.control_points().all(|a| a.iter().any(|x| *x != zero));
+        return (p.degree() >= 1 && nonzero).then(|| Rational::from(1));
+    }
     // rᵢ with Qᵢ = rᵢ Pᵢ
     let mut ratios = Vec::with_capacity(p.degree() + 1);
     for (a, b) in p.control_points().zip(q.control_points()) {
@@ -667,6 +673,15 @@ fn signed_volume(patches: &[BezierPatch<f64>], faces: &[TopoFace], which: &[usiz
 /// # Errors
 /// [`IoError::Invalid`] for a patch outside E3 or with a zero weight at a corner.
 pub fn build_topology(patches: &[BezierPatch<Rational>]) -> Result<Topology, IoError> {
+    build_topology_with(patches, None)
+}
+
+/// [`build_topology`] with the `f64` images of the patches (`BezierPatch::to_f64`, for
+/// the orientation of closed shells) when the caller has them already.
+pub(crate) fn build_topology_with(
+    patches: &[BezierPatch<Rational>],
+    patches_f64: Option<&[BezierPatch<f64>]>,
+) -> Result<Topology, IoError> {
     let mut vertices: Vec<Vec<Rational>> = Vec::new();
     let mut vertex_index: HashMap<Vec<Rational>, usize> = HashMap::new();
     let mut edges: Vec<TopoEdge> = Vec::new();
@@ -688,17 +703,22 @@ pub fn build_topology(patches: &[BezierPatch<Rational>]) -> Result<Topology, IoE
         let mut loop_edges = Vec::new();
         let mut sides = Vec::new();
         let mut ratios = Vec::new();
+        // side s runs from corner s to corner s + 1 (loop order): each corner's
+        // Euclidean point once
+        let (m, n) = patch.degree();
+        let corners = [(0, 0), (m, 0), (m, n), (0, n)].map(|(i, j)| patch.control_point(i, j));
+        if corners.iter().any(|h| h[0] == zero) {
+            return Err(IoError::Invalid(format!(
+                "patch {k} has a corner at infinity (weight 0)"
+            )));
+        }
+        let corner_points = corners.map(euclid);
         for (side, c) in boundary_curves(patch)?.into_iter().enumerate() {
-            let (h0, h1) = (c.control_point(0), c.control_point(c.degree()));
-            if h0[0] == zero || h1[0] == zero {
-                return Err(IoError::Invalid(format!(
-                    "patch {k} has a corner at infinity (weight 0)"
-                )));
-            }
-            let (e0, e1) = (euclid(h0), euclid(h1));
-            if collapsed_with_ends(&c, &e0, &e1) {
+            let (e0, e1) = (&corner_points[side], &corner_points[(side + 1) % 4]);
+            if collapsed_with_ends(&c, e0, e1) {
                 continue;
             }
+            let (e0, e1) = (e0.clone(), e1.clone());
             let mut vid = |p: Vec<Rational>| {
                 let n = vertices.len();
                 *vertex_index.entry(p.clone()).or_insert_with(|| {
@@ -731,8 +751,10 @@ pub fn build_topology(patches: &[BezierPatch<Rational>]) -> Result<Topology, IoE
             let (use_, ratio) = match found {
                 Some(u) => u,
                 None => {
-                    // the loop runs along the new edge's own curve: ρ = 1
-                    let ratio = mobius_ratio(&c, &c);
+                    // the loop runs along the new edge's own curve: mobius_ratio(c, c),
+                    // which is 1 (every weight is non-zero, checked above; a collapsed
+                    // side of degree 0 never gets here)
+                    let ratio = (c.degree() >= 1).then(|| Rational::from(1));
                     edges.push(TopoEdge {
                         curve: c,
                         start: a,
@@ -764,7 +786,7 @@ pub fn build_topology(patches: &[BezierPatch<Rational>]) -> Result<Topology, IoE
     // connected components with consistent orientation
     let mut comp = vec![usize::MAX; faces.len()];
     let mut shells = Vec::new();
-    let patches_f64: Vec<BezierPatch<f64>> = patches.iter().map(BezierPatch::to_f64).collect();
+    let mut converted: Option<Vec<BezierPatch<f64>>> = None;
     for start in 0..faces.len() {
         if comp[start] != usize::MAX {
             continue;
@@ -809,7 +831,14 @@ pub fn build_topology(patches: &[BezierPatch<Rational>]) -> Result<Topology, IoE
             }
         }
         let closed = orientable && manifold_closed;
-        if closed && signed_volume(&patches_f64, &faces, &members) < 0.0 {
+        if closed && {
+            let pf: &[BezierPatch<f64>] = match patches_f64 {
+                Some(pf) => pf,
+                None => converted
+                    .get_or_insert_with(|| patches.iter().map(BezierPatch::to_f64).collect()),
+            };
+            signed_volume(pf, &faces, &members) < 0.0
+        } {
             for &f in &members {
                 faces[f].flipped = !faces[f].flipped;
             }
