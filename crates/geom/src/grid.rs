@@ -595,6 +595,251 @@ pub(crate) fn unit_normal(a: [f64; 3], b: [f64; 3], thresh: f64) -> [f64; 3] {
     }
 }
 
+/// A 3-D patch prepared for many single-point evaluations (a mesher's scattered
+/// boundary parameters, interior grids): the control net as `[w, wx, wy, wz]` and
+/// reusable Bernstein buffers, so no evaluation allocates.
+///
+/// Every value is computed with the same operations in the same order as
+/// [`eval_patch_f64`] and [`eval_patch_derivatives_f64`] (collapse each row in `v`,
+/// `Qᵢ(v) = Σⱼ Bⱼⁿ(v) Pᵢⱼ`, then `P = Σᵢ Bᵢᵐ(u) Qᵢ(v)`; quotient rule, NURBS Book
+/// (4.20)), so the results are equal to theirs bit for bit; only the allocations and,
+/// on grids, the repeated row collapses are saved.
+#[derive(Debug, Clone)]
+pub struct PatchEvaluator3 {
+    m: usize,
+    n: usize,
+    net: Vec<[f64; 4]>,
+    bu: Vec<f64>,
+    dbu: Vec<f64>,
+    bv: Vec<f64>,
+    dbv: Vec<f64>,
+}
+
+impl PatchEvaluator3 {
+    /// Prepares a 3-D patch.
+    ///
+    /// # Errors
+    /// [`GeomError::Dimension`] if the patch is not in E3.
+    pub fn new(patch: &BezierPatch<f64>) -> Result<Self, GeomError> {
+        require_dim3(patch.dim(), "PatchEvaluator3")?;
+        let (m, n) = patch.degree();
+        Ok(PatchEvaluator3 {
+            m,
+            n,
+            net: net4(patch),
+            bu: vec![0.0; m + 1],
+            dbu: vec![0.0; m + 1],
+            bv: vec![0.0; n + 1],
+            dbv: vec![0.0; n + 1],
+        })
+    }
+
+    /// `Qᵢ = Σⱼ bⱼ Pᵢⱼ` of row `i` (the order of `combine`).
+    #[inline]
+    fn collapse(&self, i: usize, b: &[f64]) -> [f64; 4] {
+        let nv = self.n + 1;
+        let mut q = [0.0f64; 4];
+        for (p, &bj) in self.net[i * nv..(i + 1) * nv].iter().zip(b) {
+            for c in 0..4 {
+                q[c] += bj * p[c];
+            }
+        }
+        q
+    }
+
+    /// The Euclidean point `x(u, v)`, equal to [`eval_patch_f64`] bit for bit.
+    pub fn point(&mut self, u: f64, v: f64) -> [f64; 3] {
+        bernstein_into(self.m, u, &mut self.bu);
+        bernstein_into(self.n, v, &mut self.bv);
+        let mut h = [0.0f64; 4];
+        for i in 0..=self.m {
+            let q = self.collapse(i, &self.bv);
+            let bi = self.bu[i];
+            for c in 0..4 {
+                h[c] += bi * q[c];
+            }
+        }
+        let r = 1.0 / h[0];
+        [h[1] * r, h[2] * r, h[3] * r]
+    }
+
+    /// The point and first partials at `(u, v)`, equal to
+    /// [`eval_patch_derivatives_f64`] bit for bit.
+    pub fn derivatives(&mut self, u: f64, v: f64) -> SurfacePoint3 {
+        bernstein_with_derivative_into(self.m, u, &mut self.bu, &mut self.dbu);
+        bernstein_with_derivative_into(self.n, v, &mut self.bv, &mut self.dbv);
+        let mut h = [0.0f64; 4];
+        let mut hu = [0.0f64; 4];
+        let mut hv = [0.0f64; 4];
+        for i in 0..=self.m {
+            let q = self.collapse(i, &self.bv);
+            let qv = self.collapse(i, &self.dbv);
+            let (bi, dbi) = (self.bu[i], self.dbu[i]);
+            for c in 0..4 {
+                h[c] += bi * q[c];
+                hu[c] += dbi * q[c];
+                hv[c] += bi * qv[c];
+            }
+        }
+        quotient(h, hu, hv)
+    }
+
+    /// [`Self::derivatives`] at every `(us[i], vs[j])`, row-major in `u`
+    /// (`out[i · vs.len() + j]`, `out` cleared first), the same values bit for bit; the
+    /// row collapses `Qᵢ(v)`, `∂ᵥQᵢ(v)` are formed once per `v`.
+    ///
+    /// # Errors
+    /// [`GeomError::Parameter`] if the output cannot be allocated.
+    pub fn grid_derivatives(
+        &mut self,
+        us: &[f64],
+        vs: &[f64],
+        out: &mut Vec<SurfacePoint3>,
+    ) -> Result<(), GeomError> {
+        prepare_output(out, us, vs, 1)?;
+        let rows = self.m + 1;
+        // per v: (Qᵢ, ∂ᵥQᵢ) for every row i
+        let mut table: Vec<([f64; 4], [f64; 4])> = Vec::new();
+        if table.try_reserve(vs.len().saturating_mul(rows)).is_err() {
+            return Err(GeomError::Parameter(format!(
+                "a {} × {} grid is too large to allocate",
+                us.len(),
+                vs.len()
+            )));
+        }
+        for &v in vs {
+            bernstein_with_derivative_into(self.n, v, &mut self.bv, &mut self.dbv);
+            for i in 0..rows {
+                table.push((self.collapse(i, &self.bv), self.collapse(i, &self.dbv)));
+            }
+        }
+        for &u in us {
+            bernstein_with_derivative_into(self.m, u, &mut self.bu, &mut self.dbu);
+            for col in table.chunks_exact(rows) {
+                let mut h = [0.0f64; 4];
+                let mut hu = [0.0f64; 4];
+                let mut hv = [0.0f64; 4];
+                for ((q, qv), (&bi, &dbi)) in col.iter().zip(self.bu.iter().zip(&self.dbu)) {
+                    for c in 0..4 {
+                        h[c] += bi * q[c];
+                        hu[c] += dbi * q[c];
+                        hv[c] += bi * qv[c];
+                    }
+                }
+                out.push(quotient(h, hu, hv));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The rows `u ↦ (x(u, vs[0]), …, x(u, vs[k]))` of a grid over fixed `vs`, one `u` at a
+/// time (a strip-wise error check needs a few rows at once, never the whole grid): the
+/// Bernstein values of `vs` are formed once. Each point is computed with the operations
+/// of [`eval_patch_grid`] in the same order, so the values are equal bit for bit.
+#[derive(Debug, Clone)]
+pub struct PatchGridRows3 {
+    m: usize,
+    n: usize,
+    net: Vec<[f64; 4]>,
+    /// `Bⱼⁿ(vs[k])` at `k · (n + 1) + j`.
+    bv: Vec<f64>,
+    bu: Vec<f64>,
+    q: Vec<[f64; 4]>,
+}
+
+impl PatchGridRows3 {
+    /// Prepares the rows of a 3-D patch over `vs`.
+    ///
+    /// # Errors
+    /// [`GeomError::Dimension`] if the patch is not in E3.
+    pub fn new(patch: &BezierPatch<f64>, vs: &[f64]) -> Result<Self, GeomError> {
+        require_dim3(patch.dim(), "PatchGridRows3")?;
+        let (m, n) = patch.degree();
+        let nv = n + 1;
+        let mut bv = vec![0.0; vs.len() * nv];
+        for (b, &v) in bv.chunks_exact_mut(nv).zip(vs) {
+            bernstein_into(n, v, b);
+        }
+        Ok(PatchGridRows3 {
+            m,
+            n,
+            net: net4(patch),
+            bv,
+            bu: vec![0.0; m + 1],
+            q: vec![[0.0; 4]; nv],
+        })
+    }
+
+    /// The points `x(u, vs[k])` into `out` (cleared first).
+    pub fn row(&mut self, u: f64, out: &mut Vec<[f64; 3]>) {
+        out.clear();
+        let nv = self.n + 1;
+        bernstein_into(self.m, u, &mut self.bu);
+        // Qⱼ(u) = Σᵢ Bᵢᵐ(u) Pᵢⱼ
+        self.q.iter_mut().for_each(|x| *x = [0.0; 4]);
+        for (row, &bi) in self.net.chunks_exact(nv).zip(&self.bu) {
+            for (qj, p) in self.q.iter_mut().zip(row) {
+                for c in 0..4 {
+                    qj[c] += bi * p[c];
+                }
+            }
+        }
+        let q = &self.q;
+        out.extend(self.bv.chunks_exact(nv).map(|b| {
+            let mut h = [0.0f64; 4];
+            for (bj, qj) in b.iter().zip(q) {
+                for c in 0..4 {
+                    h[c] += bj * qj[c];
+                }
+            }
+            let r = 1.0 / h[0];
+            [h[1] * r, h[2] * r, h[3] * r]
+        }));
+    }
+}
+
+/// The Euclidean point and partials from the homogeneous `P`, `∂ᵤP`, `∂ᵥP` (quotient
+/// rule; the operations of [`eval_patch_derivatives_f64`]).
+#[inline]
+fn quotient(h: [f64; 4], hu: [f64; 4], hv: [f64; 4]) -> SurfacePoint3 {
+    let r = 1.0 / h[0];
+    let x = [h[1] * r, h[2] * r, h[3] * r];
+    let du = [
+        (hu[1] - hu[0] * x[0]) * r,
+        (hu[2] - hu[0] * x[1]) * r,
+        (hu[3] - hu[0] * x[2]) * r,
+    ];
+    let dv = [
+        (hv[1] - hv[0] * x[0]) * r,
+        (hv[2] - hv[0] * x[1]) * r,
+        (hv[3] - hv[0] * x[2]) * r,
+    ];
+    SurfacePoint3 { point: x, du, dv }
+}
+
+/// Degrees below this are evaluated by [`eval_curve3_f64`] with Bernstein values on
+/// the stack.
+const STACK_BASIS: usize = 32;
+
+/// The Euclidean point of a curve in E3 at `t`, equal to [`eval_curve_f64`] bit for bit
+/// (the same operations in the same order) but without heap allocation for degrees
+/// below 32. A curve of another dimension gives its first three coordinates
+/// (zero-padded).
+pub fn eval_curve3_f64(curve: &BezierCurve<f64>, t: f64) -> [f64; 3] {
+    let n = curve.degree();
+    if curve.dim() != 3 || n >= STACK_BASIS {
+        let x = eval_curve_f64(curve, t);
+        return [0, 1, 2].map(|k| x.get(k).copied().unwrap_or(0.0));
+    }
+    let mut b = [0.0f64; STACK_BASIS];
+    bernstein_into(n, t, &mut b);
+    let mut h = [0.0f64; 4];
+    combine(curve.coords(), 4, &b[..=n], &mut h);
+    let r = 1.0 / h[0];
+    [h[1] * r, h[2] * r, h[3] * r]
+}
+
 /// `k + 1` equally spaced parameters `a + (b − a) i / k`, `i = 0..=k`, with both ends
 /// exact (`k = 0` gives `[a]`).
 pub fn linspace(a: f64, b: f64, k: usize) -> Vec<f64> {
@@ -777,5 +1022,113 @@ mod tests {
         let mut flat = Vec::new();
         eval_patch_grid_flat(&p, &[0.5], &[0.5], &mut flat).expect("small");
         assert_eq!(flat, vec![1.0, 1.0]);
+    }
+
+    /// Bit patterns (so `-0.0 ≠ 0.0` and NaNs compare by payload).
+    fn bits<const N: usize>(x: [f64; N]) -> [u64; N] {
+        x.map(f64::to_bits)
+    }
+
+    fn vec_bits(x: &[f64]) -> Vec<u64> {
+        x.iter().map(|c| c.to_bits()).collect()
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+        /// The evaluator's point, partials and grid are those of `eval_patch_f64` and
+        /// `eval_patch_derivatives_f64`, bit for bit, on random rational patches
+        /// (weights of either sign) and parameters inside and outside `[0, 1]`.
+        #[test]
+        fn patch_evaluator_is_bit_identical(
+            m in 0usize..5,
+            n in 0usize..5,
+            seed in proptest::collection::vec(-4.0f64..4.0, 4 * 25),
+            us in proptest::collection::vec(-0.25f64..1.25, 1..5),
+            vs in proptest::collection::vec(-0.25f64..1.25, 1..5),
+        ) {
+            let coords = seed[..4 * (m + 1) * (n + 1)].to_vec();
+            let p = BezierPatch::from_flat(3, m, n, coords).expect("valid");
+            let mut ev = PatchEvaluator3::new(&p).expect("3-D");
+            let mut grid = Vec::new();
+            ev.grid_derivatives(&us, &vs, &mut grid).expect("small");
+            proptest::prop_assert_eq!(grid.len(), us.len() * vs.len());
+            for (i, &u) in us.iter().enumerate() {
+                for (j, &v) in vs.iter().enumerate() {
+                    let want = eval_patch_derivatives_f64(&p, u, v);
+                    let got = ev.derivatives(u, v);
+                    for d in [got, grid[i * vs.len() + j]] {
+                        proptest::prop_assert_eq!(vec_bits(&d.point), vec_bits(&want.point));
+                        proptest::prop_assert_eq!(vec_bits(&d.du), vec_bits(&want.du));
+                        proptest::prop_assert_eq!(vec_bits(&d.dv), vec_bits(&want.dv));
+                    }
+                    proptest::prop_assert_eq!(
+                        bits(ev.point(u, v)).to_vec(),
+                        vec_bits(&eval_patch_f64(&p, u, v))
+                    );
+                }
+            }
+        }
+
+        /// `eval_curve3_f64` is `eval_curve_f64` bit for bit (3-D curves on the stack,
+        /// other dimensions and high degrees through the general path).
+        #[test]
+        fn curve3_is_bit_identical(
+            deg in 0usize..40,
+            dim in 1usize..5,
+            seed in proptest::collection::vec(-4.0f64..4.0, 5 * 41),
+            t in -0.25f64..1.25,
+        ) {
+            let coords = seed[..(dim + 1) * (deg + 1)].to_vec();
+            let c = BezierCurve::from_flat(dim, coords).expect("valid");
+            let want = eval_curve_f64(&c, t);
+            let got = eval_curve3_f64(&c, t);
+            for (k, g) in got.iter().enumerate() {
+                let w = want.get(k).copied().unwrap_or(0.0);
+                proptest::prop_assert_eq!(g.to_bits(), w.to_bits());
+            }
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+        /// The rows are the points of `eval_patch_grid` bit for bit (fixed-size kernels
+        /// for `v`-degrees 1 to 7, the general one above).
+        #[test]
+        fn grid_rows_are_bit_identical(
+            m in 0usize..4,
+            n in 0usize..10,
+            seed in proptest::collection::vec(-4.0f64..4.0, 4 * 44),
+            us in proptest::collection::vec(-0.25f64..1.25, 1..4),
+            vs in proptest::collection::vec(-0.25f64..1.25, 1..6),
+        ) {
+            let coords = seed[..4 * (m + 1) * (n + 1)].to_vec();
+            let p = BezierPatch::from_flat(3, m, n, coords).expect("valid");
+            let mut want = Vec::new();
+            eval_patch_grid(&p, &us, &vs, &mut want).expect("3-D");
+            let mut rows = PatchGridRows3::new(&p, &vs).expect("3-D");
+            let mut row = Vec::new();
+            for (i, &u) in us.iter().enumerate() {
+                rows.row(u, &mut row);
+                let got: Vec<[u64; 3]> = row.iter().map(|x| bits(*x)).collect();
+                let exp: Vec<[u64; 3]> =
+                    want[i * vs.len()..(i + 1) * vs.len()].iter().map(|x| bits(*x)).collect();
+                proptest::prop_assert_eq!(got, exp);
+            }
+        }
+    }
+
+    #[test]
+    fn patch_evaluator_needs_e3() {
+        let p = BezierPatch::from_flat(2, 1, 1, vec![1.0; 12]).expect("valid");
+        assert!(matches!(
+            PatchEvaluator3::new(&p),
+            Err(GeomError::Dimension(_))
+        ));
+        assert!(matches!(
+            PatchGridRows3::new(&p, &[0.5]),
+            Err(GeomError::Dimension(_))
+        ));
     }
 }

@@ -40,8 +40,9 @@
 use crate::curve::BezierCurve;
 use crate::error::GeomError;
 use crate::grid::{
-    control_net_scale, cross, eval_curve_f64, eval_patch_derivatives_f64, eval_patch_grid,
-    eval_patch_grid_with_normals, linspace, norm, sub, unit_normal, DEGENERATE_NORMAL_RELATIVE,
+    control_net_scale, cross, eval_curve3_f64, eval_patch_derivatives_f64,
+    eval_patch_grid_with_normals, linspace, norm, sub, unit_normal, PatchGridRows3,
+    DEGENERATE_NORMAL_RELATIVE,
 };
 use crate::patch::BezierPatch;
 use rcagd_algebra::Scalar;
@@ -132,8 +133,8 @@ fn patch3<F: Scalar>(patch: &BezierPatch<F>) -> Result<BezierPatch<f64>, GeomErr
 }
 
 fn point3(curve: &BezierCurve<f64>, t: f64) -> Result<[f64; 3], GeomError> {
-    let x = eval_curve_f64(curve, t);
-    let p = [x[0], x[1], x[2]];
+    // the value of eval_curve_f64, without its allocations
+    let p = eval_curve3_f64(curve, t);
     if p.iter().all(|c| c.is_finite()) {
         Ok(p)
     } else {
@@ -562,23 +563,31 @@ fn grid_errors(p: &BezierPatch<f64>, us: &[f64], vs: &[f64]) -> Result<GridChord
     let (nu, nv) = (us.len() - 1, vs.len() - 1);
     let uh = with_midpoints(us);
     let vh = with_midpoints(vs);
-    let cols = vh.len();
-    let mut pts = Vec::new();
     let mut errs = GridChordErrors {
         u_strips: vec![0.0; nu],
         v_strips: vec![0.0; nv],
     };
     let mut edge_u = vec![0.0f64; nv + 1];
-    // one strip of cells at a time: rows u_i, u_{i+½}, u_{i+1}
-    for (i, rows) in uh.windows(3).step_by(2).enumerate() {
-        eval_patch_grid(p, rows, &vh, &mut pts)?;
-        if pts.iter().any(|x| !x.iter().all(|c| c.is_finite())) {
+    // one strip of cells at a time: rows u_i, u_{i+½}, u_{i+1} (the points of
+    // eval_patch_grid; the row u_{i+1} is the next strip's first)
+    let mut grid = PatchGridRows3::new(p, &vh)?;
+    let mut rows: [Vec<[f64; 3]>; 3] = Default::default();
+    let finite = |r: &[[f64; 3]]| r.iter().all(|x| x.iter().all(|c| c.is_finite()));
+    for (i, ts) in uh.windows(3).step_by(2).enumerate() {
+        if i == 0 {
+            grid.row(ts[0], &mut rows[0]);
+        } else {
+            rows.swap(0, 2);
+        }
+        grid.row(ts[1], &mut rows[1]);
+        grid.row(ts[2], &mut rows[2]);
+        if !rows.iter().all(|r| finite(r)) {
             return Err(GeomError::Weight(format!(
                 "the patch has a point at infinity (weight 0) for u in [{}, {}]",
-                rows[0], rows[2]
+                ts[0], ts[2]
             )));
         }
-        let at = |r: usize, j: usize| pts[r * cols + j];
+        let at = |r: usize, j: usize| rows[r][j];
         for (j, e) in edge_u.iter_mut().enumerate() {
             let b = 2 * j;
             *e = dist(at(1, b), lerp(at(0, b), at(2, b), 0.5));

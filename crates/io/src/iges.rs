@@ -50,8 +50,8 @@
 
 use crate::model::Object;
 use crate::step::{
-    civil_time, collapsed, exchange_object, export_time, format_real, pcurve, rational_real,
-    ExchangeObject, Topology,
+    boundary_curves, civil_time, collapsed, exchange_object, export_time, format_real, pcurve,
+    rational_real, ExchangeObject, Topology,
 };
 use crate::IoError;
 use rcagd_algebra::{Rational, Scalar};
@@ -234,7 +234,7 @@ fn brep_entities(
         .map(|(i, v)| (v, i))
         .collect();
     for f in &topo.faces {
-        for (side, c) in o.patches[f.patch].boundary_curves().iter().enumerate() {
+        for (side, c) in boundary_curves(&o.patches[f.patch])?.iter().enumerate() {
             if !f.sides.contains(&side) && collapsed(c) {
                 let p = euclid(c.control_point(0));
                 if !index.contains_key(&p) {
@@ -280,7 +280,7 @@ fn brep_entities(
             surface_params(&surfaces[f.patch])?,
         ));
         let surf = last_de(entities);
-        let boundary = o.patches[f.patch].boundary_curves();
+        let boundary = boundary_curves(&o.patches[f.patch])?;
         // the loop in side order (counter-clockwise in (u, v)); parameter lines follow the
         // model curve's direction (the loop's orientation flag reverses both)
         let mut uses: Vec<[String; 6]> = Vec::with_capacity(4);

@@ -28,18 +28,17 @@
 //! wound 2-manifold mesh (each edge in exactly two triangles, traversed in opposite
 //! directions), wound outward.
 
-use crate::step::{build_topology, embed_e3, mobius_ratio, Topology};
+use crate::step::{build_topology_with, embed_e3, Topology};
 use crate::IoError;
 use rcagd_algebra::{Rational, Scalar};
 use rcagd_geom::grid::{
-    cross, eval_curve_f64, eval_patch_derivatives_f64, eval_patch_f64, norm, sub,
-    DEGENERATE_NORMAL_RELATIVE,
+    cross, eval_curve3_f64, norm, sub, PatchEvaluator3, SurfacePoint3, DEGENERATE_NORMAL_RELATIVE,
 };
 use rcagd_geom::tessellate::{
     adaptive_curve_params, adaptive_patch_params, tessellate_patch_adaptive, TriMesh,
     MAX_CURVE_DEPTH, MAX_TESSELLATION_POINTS,
 };
-use rcagd_geom::{BezierCurve, BezierPatch};
+use rcagd_geom::BezierPatch;
 use std::collections::HashMap;
 
 /// The adaptive depth used for edges (as for curves in OBJ export).
@@ -82,6 +81,14 @@ impl Builder {
             .map_err(|_| IoError::Invalid("the mesh has more vertices than u32 indices".into()))
     }
 
+    /// Room for `vertices` more vertices and `triangles` more triangles.
+    fn reserve(&mut self, vertices: usize, triangles: usize) {
+        self.positions.reserve(vertices);
+        self.normal_sum.reserve(vertices);
+        self.normal_count.reserve(vertices);
+        self.triangles.reserve(triangles);
+    }
+
     fn add_normal(&mut self, v: u32, n: Option<[f64; 3]>) {
         if let Some(n) = n {
             let s = &mut self.normal_sum[v as usize];
@@ -99,29 +106,36 @@ impl Builder {
             normal_count,
             triangles,
         } = self;
-        // area-weighted triangle normals for vertices without a surface normal
-        let mut fallback = vec![[0.0; 3]; positions.len()];
-        for t in &triangles {
-            let [a, b, c] = t.map(|i| positions[i as usize]);
-            let f = cross(sub(b, a), sub(c, a));
-            for &i in t {
-                for k in 0..3 {
-                    fallback[i as usize][k] += f[k];
+        // area-weighted triangle normals for vertices without a surface normal (formed
+        // only if some vertex needs them)
+        let mut fallback_sums: Option<Vec<[f64; 3]>> = None;
+        let mut fallback = |i: usize| {
+            fallback_sums.get_or_insert_with(|| {
+                let mut f = vec![[0.0; 3]; positions.len()];
+                for t in &triangles {
+                    let [a, b, c] = t.map(|i| positions[i as usize]);
+                    let n = cross(sub(b, a), sub(c, a));
+                    for &i in t {
+                        for k in 0..3 {
+                            f[i as usize][k] += n[k];
+                        }
+                    }
                 }
-            }
-        }
+                f
+            })[i]
+        };
         let normals = (0..positions.len())
             .map(|i| {
                 let s = if normal_count[i] > 0 {
                     normal_sum[i]
                 } else {
-                    fallback[i]
+                    fallback(i)
                 };
                 let l = norm(s);
                 if l > 0.0 && l.is_finite() {
                     [s[0] / l, s[1] / l, s[2] / l]
                 } else {
-                    let f = fallback[i];
+                    let f = fallback(i);
                     let lf = norm(f);
                     if lf > 0.0 && lf.is_finite() {
                         [f[0] / lf, f[1] / lf, f[2] / lf]
@@ -152,10 +166,10 @@ fn rational_point(p: &[Rational]) -> [f64; 3] {
     to3(&v)
 }
 
-/// The unit normal `∂ᵤx × ∂ᵥx / |…|` of a patch, `None` where it degenerates.
-fn surface_normal(p: &BezierPatch<f64>, u: f64, v: f64, flipped: bool) -> Option<[f64; 3]> {
-    let d = eval_patch_derivatives_f64(p, u, v);
-    let (du, dv) = (to3(&d.du), to3(&d.dv));
+/// The unit normal `∂ᵤx × ∂ᵥx / |…|` of a patch from its partials at a point, `None`
+/// where it degenerates.
+fn surface_normal(d: &SurfacePoint3, flipped: bool) -> Option<[f64; 3]> {
+    let (du, dv) = (d.du, d.dv);
     let n = cross(du, dv);
     let l = norm(n);
     let scale = norm(du).max(norm(dv));
@@ -250,8 +264,9 @@ pub fn shared_edge_mesh(patches: &[BezierPatch<Rational>], tol: f64) -> Result<T
         .enumerate()
         .map(|(k, p)| embed_e3(p, &format!("patch {k}")))
         .collect::<Result<Vec<_>, _>>()?;
-    let topo = build_topology(&e3)?;
-    mesh_topology(&e3, &topo, tol)
+    let e3_f64: Vec<BezierPatch<f64>> = e3.iter().map(BezierPatch::to_f64).collect();
+    let topo = build_topology_with(&e3, Some(&e3_f64))?;
+    mesh_topology(&e3, &e3_f64, &topo, tol)
 }
 
 /// The mesh of drawable patches (pieces whose weight function has one sign): the
@@ -277,12 +292,36 @@ pub fn patches_mesh(patches: &[BezierPatch<Rational>], tol: f64) -> Result<TriMe
     }
 }
 
+/// The `u` and `v` parameters of a face's tensor grid.
+type GridParams = (Vec<f64>, Vec<f64>);
+
 fn mesh_topology(
     patches: &[BezierPatch<Rational>],
+    patches_f64: &[BezierPatch<f64>],
     topo: &Topology,
     tol: f64,
 ) -> Result<TriMesh, IoError> {
     let mut b = Builder::default();
+    // each face's grid parameters first (their errors are reported where the face is
+    // meshed, as before), so that the mesh is allocated once
+    let mut face_params: Vec<Option<Result<GridParams, IoError>>> = topo
+        .faces
+        .iter()
+        .map(|face| {
+            let pf = patches_f64
+                .get(face.patch)
+                .ok_or_else(|| IoError::Invalid(format!("face of missing patch {}", face.patch)))?;
+            let (us, vs) = adaptive_patch_params(pf, tol)?;
+            Ok((at_least_two(us), at_least_two(vs)))
+        })
+        .map(Some)
+        .collect();
+    let (mut verts, mut tris) = (topo.vertices.len(), 0usize);
+    for (us, vs) in face_params.iter().flatten().flatten() {
+        verts += us.len() * vs.len();
+        tris += 2 * (us.len() + 1) * (vs.len() + 1);
+    }
+    b.reserve(verts, tris);
     let mut vertex_of: HashMap<&[Rational], u32> = HashMap::new();
     let mut topo_vertex = Vec::with_capacity(topo.vertices.len());
     for v in &topo.vertices {
@@ -292,10 +331,10 @@ fn mesh_topology(
     }
     // edges: parameters and vertex ids (ends are the topological vertices)
     let mut edge_samples: Vec<Vec<(f64, u32)>> = Vec::with_capacity(topo.edges.len());
-    let mut edge_curves: Vec<BezierCurve<f64>> = Vec::with_capacity(topo.edges.len());
     for e in &topo.edges {
-        let params = adaptive_curve_params(&e.curve, tol, EDGE_DEPTH.min(MAX_CURVE_DEPTH))?;
+        // the f64 curve once (adaptive_curve_params rounds the exact curve the same way)
         let c = e.curve.to_f64();
+        let params = adaptive_curve_params(&c, tol, EDGE_DEPTH.min(MAX_CURVE_DEPTH))?;
         let mut samples = Vec::with_capacity(params.len());
         let last = params.len().saturating_sub(1);
         for (i, &s) in params.iter().enumerate() {
@@ -304,26 +343,29 @@ fn mesh_topology(
             } else if i == last {
                 topo_vertex[e.end]
             } else {
-                b.vertex(to3(&eval_curve_f64(&c, s)))?
+                b.vertex(eval_curve3_f64(&c, s))?
             };
             samples.push((s, id));
         }
         edge_samples.push(samples);
-        edge_curves.push(c);
     }
     let mut extra_vertices: HashMap<Vec<Rational>, u32> = HashMap::new();
-    for face in &topo.faces {
+    let mut ders: Vec<SurfacePoint3> = Vec::new();
+    for (fi, face) in topo.faces.iter().enumerate() {
         let patch = &patches[face.patch];
-        let pf = patch.to_f64();
-        let boundary = patch.boundary_curves();
+        let pf = &patches_f64[face.patch];
+        let mut eval = PatchEvaluator3::new(pf)?;
+        let (m, n) = patch.degree();
         // the four sides
         let mut sides: Vec<Side> = Vec::with_capacity(4);
-        for (side, c) in boundary.iter().enumerate() {
+        for side in 0..4 {
             if let Some(k) = face.sides.iter().position(|&s| s == side) {
                 let (e, fwd) = face.edges[k];
-                let edge = &topo.edges[e];
-                let oriented = if fwd { c.clone() } else { c.reverse() };
-                let rho = mobius_ratio(&oriented, &edge.curve).map_or(1.0, |r| Scalar::to_f64(&r));
+                let rho = face
+                    .ratios
+                    .get(k)
+                    .and_then(Option::as_ref)
+                    .map_or(1.0, Scalar::to_f64);
                 let mut pts: Vec<(f64, u32)> = edge_samples[e]
                     .iter()
                     .map(|&(s, id)| {
@@ -336,8 +378,10 @@ fn mesh_topology(
                 }
                 sides.push(Side::Polyline(pts));
             } else {
-                // collapsed: one vertex at the exact point
-                let h = c.control_point(0);
+                // collapsed: one vertex at the exact point (the side's first corner in
+                // loop order, BezierPatch::boundary_curves)
+                let (i, j) = [(0, 0), (m, 0), (m, n), (0, n)][side];
+                let h = patch.control_point(i, j);
                 let p: Vec<Rational> = h[1..].iter().map(|x| x.clone() / h[0].clone()).collect();
                 let id = match vertex_of.get(p.as_slice()) {
                     Some(&id) => id,
@@ -353,33 +397,42 @@ fn mesh_topology(
                 sides.push(Side::Point(id));
             }
         }
-        // the interior grid
-        let (us, vs) = adaptive_patch_params(patch, tol)?;
-        let (us, vs) = (at_least_two(us), at_least_two(vs));
+        // the interior grid (adaptive_patch_params rounds the exact patch as to_f64 does)
+        let (us, vs) = face_params
+            .get_mut(fi)
+            .and_then(Option::take)
+            .ok_or_else(|| IoError::Invalid("a face without grid parameters".into()))??;
         let (nu, nv) = (us.len() - 1, vs.len() - 1);
         let mut grid = vec![0u32; (nu + 1) * (nv + 1)];
         let at = |i: usize, j: usize| i * (nv + 1) + j;
+        eval.grid_derivatives(&us[1..nu], &vs[1..nv], &mut ders)?;
+        let mut inner = ders.iter();
         for i in 1..nu {
             for j in 1..nv {
-                let id = b.vertex(to3(&eval_patch_f64(&pf, us[i], vs[j])))?;
-                b.add_normal(id, surface_normal(&pf, us[i], vs[j], face.flipped));
+                let d = inner.next().ok_or_else(|| {
+                    IoError::Invalid("the interior grid has fewer points than parameters".into())
+                })?;
+                let id = b.vertex(d.point)?;
+                b.add_normal(id, surface_normal(d, face.flipped));
                 grid[at(i, j)] = id;
             }
         }
-        let mut tris: Vec<([u32; 3], [[f64; 2]; 3])> = Vec::new();
+        // the interior cells: counter-clockwise in the parameter plane (both parameter
+        // lists increase), so reversed exactly on a flipped face
         for i in 1..nu.saturating_sub(1) {
             for j in 1..nv.saturating_sub(1) {
-                let uv = |i: usize, j: usize| [us[i], vs[j]];
-                tris.push((
+                for mut t in [
                     [grid[at(i, j)], grid[at(i + 1, j)], grid[at(i + 1, j + 1)]],
-                    [uv(i, j), uv(i + 1, j), uv(i + 1, j + 1)],
-                ));
-                tris.push((
                     [grid[at(i, j)], grid[at(i + 1, j + 1)], grid[at(i, j + 1)]],
-                    [uv(i, j), uv(i + 1, j + 1), uv(i, j + 1)],
-                ));
+                ] {
+                    if face.flipped {
+                        t.swap(1, 2);
+                    }
+                    b.triangles.push(t);
+                }
             }
         }
+        let mut tris: Vec<([u32; 3], [[f64; 2]; 3])> = Vec::new();
         // the inner ring, side by side in loop direction
         let poles: Vec<u32> = sides
             .iter()
@@ -423,7 +476,7 @@ fn mesh_topology(
             if let Side::Polyline(pts) = bound {
                 for &(s, id) in &pts[..pts.len().saturating_sub(1)] {
                     let [u, v] = side_uv(side, s);
-                    b.add_normal(id, surface_normal(&pf, u, v, face.flipped));
+                    b.add_normal(id, surface_normal(&eval.derivatives(u, v), face.flipped));
                 }
             }
         }

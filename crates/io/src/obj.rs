@@ -12,12 +12,22 @@ use rcagd_algebra::Scalar;
 use rcagd_geom::tessellate::{tessellate_curve_adaptive, Polyline, TriMesh};
 use std::fmt::Write as _;
 
-fn num(x: f64) -> String {
-    if x == 0.0 {
-        "0".to_string()
-    } else {
-        format!("{x}")
+/// A coordinate as written: `0` for both zeros, else the shortest round-trip decimal
+/// (written straight into the output, no string per number).
+struct Num(f64);
+
+impl std::fmt::Display for Num {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.0 == 0.0 {
+            f.write_str("0")
+        } else {
+            write!(f, "{}", self.0)
+        }
     }
+}
+
+fn num(x: f64) -> Num {
+    Num(x)
 }
 
 fn check_finite(kind: &str, i: usize, p: &[f64; 3]) -> Result<(), IoError> {
@@ -62,7 +72,8 @@ pub fn mesh_to_obj(
             positions.len()
         )));
     }
-    let mut s = String::new();
+    // about 60 bytes per `v`/`vn` line and 30 per face
+    let mut s = String::with_capacity(120 * positions.len() + 30 * triangles.len() + 64);
     let _ = writeln!(
         s,
         "# rcagd OBJ: {} vertices, {} triangles",

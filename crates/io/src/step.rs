@@ -64,7 +64,7 @@ use crate::json::rational_to_json;
 use crate::model::Object;
 use crate::IoError;
 use rcagd_algebra::{Rational, Scalar};
-use rcagd_geom::grid::{eval_patch_f64, linspace};
+use rcagd_geom::grid::{linspace, PatchEvaluator3};
 use rcagd_geom::nurbs::{NurbsCurve, NurbsSurface};
 use rcagd_geom::{BezierCurve, BezierPatch};
 use serde_json::{json, Value};
@@ -498,6 +498,12 @@ pub struct TopoFace {
     /// For each entry of `edges`, the side of the patch it bounds: 0 `v = 0`, 1 `u = 1`,
     /// 2 `v = 1`, 3 `u = 0` (the order of [`BezierPatch::boundary_curves`]).
     pub sides: Vec<usize>,
+    /// For each entry of `edges`, [`mobius_ratio`] of the patch's side (in the loop's
+    /// direction along the edge: reversed where the flag is `false`) against the edge
+    /// curve: `Some(ρ)` if the side is the edge curve Möbius-reparametrized
+    /// (`σ = ρs / ((1 − s) + ρs)`; `ρ = 1` on the face that defined the edge), `None`
+    /// if it is the same curve in another parametrization.
+    pub ratios: Vec<Option<Rational>>,
 }
 
 /// A connected set of faces.
@@ -529,6 +535,39 @@ pub(crate) fn collapsed(c: &BezierCurve<Rational>) -> bool {
     c.control_points().all(|p| euclid(p) == first)
 }
 
+/// [`collapsed`] for a curve whose Euclidean end points are already known: ends that
+/// differ decide it without dividing the inner control points.
+fn collapsed_with_ends(c: &BezierCurve<Rational>, first: &[Rational], last: &[Rational]) -> bool {
+    first == last && c.control_points().all(|p| euclid(p) == first)
+}
+
+/// The four boundary curves of a patch in the loop order of
+/// [`BezierPatch::boundary_curves`] (`v = 0`, `u = 1`, `v = 1` reversed, `u = 0`
+/// reversed), the same curves, taken as the boundary rows and columns of the net
+/// instead of by exact de Casteljau evaluation at `0` and `1` (which returns exactly
+/// these control points, at the cost of a rational product per coordinate and step).
+///
+/// # Errors
+/// [`IoError::Geom`] only for a malformed patch (no control points).
+pub(crate) fn boundary_curves(
+    p: &BezierPatch<Rational>,
+) -> Result<[BezierCurve<Rational>; 4], IoError> {
+    let (m, n) = p.degree();
+    let d = p.dim();
+    let curve = |pts: &mut dyn Iterator<Item = (usize, usize)>| {
+        let coords: Vec<Rational> = pts
+            .flat_map(|(i, j)| p.control_point(i, j).iter().cloned())
+            .collect();
+        BezierCurve::from_flat(d, coords)
+    };
+    Ok([
+        curve(&mut (0..=m).map(|i| (i, 0)))?,
+        curve(&mut (0..=n).map(|j| (m, j)))?,
+        curve(&mut (0..=m).rev().map(|i| (i, n)))?,
+        curve(&mut (0..=n).rev().map(|j| (0, j)))?,
+    ])
+}
+
 /// `ρ` if `q` is `p` reparametrized by an end-point-preserving Möbius map:
 /// `Qᵢ = λ ρⁱ Pᵢ` for some `λ ≠ 0`, `ρ > 0`; then `Q(s) = P(φ_ρ(s))` with
 /// `φ_ρ(s) = ρs / ((1 − s) + ρs)` (projectively).
@@ -540,6 +579,12 @@ pub(crate) fn mobius_ratio(
         return None;
     }
     let zero = Rational::from(0);
+    if p.coords() == q.coords() {
+        // Qᵢ = 1·Pᵢ: the general computation below gives ρ = 1 unless a control point
+        // is all zero or there is only one
+        let nonzero = p.control_points().all(|a| a.iter().any(|x| *x != zero));
+        return (p.degree() >= 1 && nonzero).then(|| Rational::from(1));
+    }
     // rᵢ with Qᵢ = rᵢ Pᵢ
     let mut ratios = Vec::with_capacity(p.degree() + 1);
     for (a, b) in p.control_points().zip(q.control_points()) {
@@ -567,14 +612,18 @@ pub(crate) fn mobius_ratio(
     Some(rho)
 }
 
-/// `true` if `q` is `p` reparametrized by an end-point-preserving Möbius map
-/// ([`mobius_ratio`]).
-fn mobius_equivalent(p: &BezierCurve<Rational>, q: &BezierCurve<Rational>) -> bool {
-    mobius_ratio(p, q).is_some()
-}
-
-fn same_curve(a: &BezierCurve<Rational>, b: &BezierCurve<Rational>) -> bool {
-    mobius_equivalent(a, b) || a.same_parametrization(b)
+/// Whether `a` and `b` are the same edge curve (module docs), with the Möbius ratio:
+/// `Some(Some(ρ))` if `b` is `a` reparametrized ([`mobius_ratio`]), `Some(None)` if
+/// they are the same curve otherwise ([`BezierCurve::same_parametrization`]), `None`
+/// if they differ.
+fn same_curve_ratio(
+    a: &BezierCurve<Rational>,
+    b: &BezierCurve<Rational>,
+) -> Option<Option<Rational>> {
+    match mobius_ratio(a, b) {
+        Some(r) => Some(Some(r)),
+        None => a.same_parametrization(b).then_some(None),
+    }
 }
 
 /// Signed volume `Σ a·(b×c)/6` of a coarse tessellation of the faces (flipped faces
@@ -588,11 +637,14 @@ fn signed_volume(patches: &[BezierPatch<f64>], faces: &[TopoFace], which: &[usiz
         let Some(p) = patches.get(face.patch) else {
             continue;
         };
+        let Ok(mut ev) = PatchEvaluator3::new(p) else {
+            continue;
+        };
+        // the points of eval_patch_f64, without its allocations
         let mut pts = Vec::with_capacity((N + 1) * (N + 1));
         for &u in &ts {
             for &v in &ts {
-                let x = eval_patch_f64(p, u, v);
-                pts.push([x[0], x[1], x[2]]);
+                pts.push(ev.point(u, v));
             }
         }
         let at = |i: usize, j: usize| pts[i * (N + 1) + j];
@@ -621,6 +673,15 @@ fn signed_volume(patches: &[BezierPatch<f64>], faces: &[TopoFace], which: &[usiz
 /// # Errors
 /// [`IoError::Invalid`] for a patch outside E3 or with a zero weight at a corner.
 pub fn build_topology(patches: &[BezierPatch<Rational>]) -> Result<Topology, IoError> {
+    build_topology_with(patches, None)
+}
+
+/// [`build_topology`] with the `f64` images of the patches (`BezierPatch::to_f64`, for
+/// the orientation of closed shells) when the caller has them already.
+pub(crate) fn build_topology_with(
+    patches: &[BezierPatch<Rational>],
+    patches_f64: Option<&[BezierPatch<f64>]>,
+) -> Result<Topology, IoError> {
     let mut vertices: Vec<Vec<Rational>> = Vec::new();
     let mut vertex_index: HashMap<Vec<Rational>, usize> = HashMap::new();
     let mut edges: Vec<TopoEdge> = Vec::new();
@@ -641,16 +702,23 @@ pub fn build_topology(patches: &[BezierPatch<Rational>]) -> Result<Topology, IoE
         }
         let mut loop_edges = Vec::new();
         let mut sides = Vec::new();
-        for (side, c) in patch.boundary_curves().into_iter().enumerate() {
-            let (h0, h1) = (c.control_point(0), c.control_point(c.degree()));
-            if h0[0] == zero || h1[0] == zero {
-                return Err(IoError::Invalid(format!(
-                    "patch {k} has a corner at infinity (weight 0)"
-                )));
-            }
-            if collapsed(&c) {
+        let mut ratios = Vec::new();
+        // side s runs from corner s to corner s + 1 (loop order): each corner's
+        // Euclidean point once
+        let (m, n) = patch.degree();
+        let corners = [(0, 0), (m, 0), (m, n), (0, n)].map(|(i, j)| patch.control_point(i, j));
+        if corners.iter().any(|h| h[0] == zero) {
+            return Err(IoError::Invalid(format!(
+                "patch {k} has a corner at infinity (weight 0)"
+            )));
+        }
+        let corner_points = corners.map(euclid);
+        for (side, c) in boundary_curves(patch)?.into_iter().enumerate() {
+            let (e0, e1) = (&corner_points[side], &corner_points[(side + 1) % 4]);
+            if collapsed_with_ends(&c, e0, e1) {
                 continue;
             }
+            let (e0, e1) = (e0.clone(), e1.clone());
             let mut vid = |p: Vec<Rational>| {
                 let n = vertices.len();
                 *vertex_index.entry(p.clone()).or_insert_with(|| {
@@ -658,43 +726,54 @@ pub fn build_topology(patches: &[BezierPatch<Rational>]) -> Result<Topology, IoE
                     n
                 })
             };
-            let a = vid(euclid(h0));
-            let b = vid(euclid(h1));
+            let a = vid(e0);
+            let b = vid(e1);
             let key = (a.min(b), a.max(b));
             let mut found = None;
             if let Some(cands) = by_ends.get(&key) {
                 for &e in cands {
                     let ed = &edges[e];
-                    if ed.start == a && ed.end == b && same_curve(&c, &ed.curve) {
-                        found = Some((e, true));
-                    } else if ed.start == b && ed.end == a && same_curve(&c.reverse(), &ed.curve) {
-                        found = Some((e, false));
+                    if ed.start == a && ed.end == b {
+                        if let Some(r) = same_curve_ratio(&c, &ed.curve) {
+                            found = Some(((e, true), r));
+                        }
+                    }
+                    if found.is_none() && ed.start == b && ed.end == a {
+                        if let Some(r) = same_curve_ratio(&c.reverse(), &ed.curve) {
+                            found = Some(((e, false), r));
+                        }
                     }
                     if found.is_some() {
                         break;
                     }
                 }
             }
-            let use_ = match found {
+            let (use_, ratio) = match found {
                 Some(u) => u,
                 None => {
+                    // the loop runs along the new edge's own curve: mobius_ratio(c, c),
+                    // which is 1 (every weight is non-zero, checked above; a collapsed
+                    // side of degree 0 never gets here)
+                    let ratio = (c.degree() >= 1).then(|| Rational::from(1));
                     edges.push(TopoEdge {
                         curve: c,
                         start: a,
                         end: b,
                     });
                     by_ends.entry(key).or_default().push(edges.len() - 1);
-                    (edges.len() - 1, true)
+                    ((edges.len() - 1, true), ratio)
                 }
             };
             loop_edges.push(use_);
             sides.push(side);
+            ratios.push(ratio);
         }
         faces.push(TopoFace {
             patch: k,
             edges: loop_edges,
             flipped: false,
             sides,
+            ratios,
         });
     }
     // edge → uses (face, forward)
@@ -707,7 +786,7 @@ pub fn build_topology(patches: &[BezierPatch<Rational>]) -> Result<Topology, IoE
     // connected components with consistent orientation
     let mut comp = vec![usize::MAX; faces.len()];
     let mut shells = Vec::new();
-    let patches_f64: Vec<BezierPatch<f64>> = patches.iter().map(BezierPatch::to_f64).collect();
+    let mut converted: Option<Vec<BezierPatch<f64>>> = None;
     for start in 0..faces.len() {
         if comp[start] != usize::MAX {
             continue;
@@ -752,7 +831,14 @@ pub fn build_topology(patches: &[BezierPatch<Rational>]) -> Result<Topology, IoE
             }
         }
         let closed = orientable && manifold_closed;
-        if closed && signed_volume(&patches_f64, &faces, &members) < 0.0 {
+        if closed && {
+            let pf: &[BezierPatch<f64>] = match patches_f64 {
+                Some(pf) => pf,
+                None => converted
+                    .get_or_insert_with(|| patches.iter().map(BezierPatch::to_f64).collect()),
+            };
+            signed_volume(pf, &faces, &members) < 0.0
+        } {
             for &f in &members {
                 faces[f].flipped = !faces[f].flipped;
             }
@@ -1186,7 +1272,7 @@ fn object_items(
     // the parameter lines of every edge on its faces (module docs)
     let mut pcurves: Vec<Vec<(usize, usize)>> = vec![Vec::new(); topo.edges.len()];
     for (fi, f) in topo.faces.iter().enumerate() {
-        let boundary = o.patches[f.patch].boundary_curves();
+        let boundary = boundary_curves(&o.patches[f.patch])?;
         for (&(e, fwd), &side) in f.edges.iter().zip(&f.sides) {
             let c = &boundary[side];
             let along = if fwd { c.clone() } else { c.reverse() };
@@ -1226,7 +1312,7 @@ fn object_items(
         let surf = surface_ids[fi];
         // the loop in side order: shared edges, and a degenerate edge (a vertex of the
         // surface's pole, with its parameter line) for every collapsed side
-        let boundary = o.patches[f.patch].boundary_curves();
+        let boundary = boundary_curves(&o.patches[f.patch])?;
         let mut loop_uses: Vec<(usize, bool)> = Vec::with_capacity(4);
         for (side, c) in boundary.iter().enumerate() {
             if let Some(i) = f.sides.iter().position(|&x| x == side) {
@@ -1602,10 +1688,94 @@ mod tests {
                 .collect(),
         )
         .expect("valid");
-        assert!(mobius_equivalent(&c, &d));
+        assert!(mobius_ratio(&c, &d).is_some());
         assert!(!c.same_parametrization(&d));
-        assert!(!mobius_equivalent(&c, &d.reverse()));
-        assert!(mobius_equivalent(&c.reverse(), &d.reverse()));
+        assert!(mobius_ratio(&c, &d.reverse()).is_none());
+        assert!(mobius_ratio(&c.reverse(), &d.reverse()).is_some());
+    }
+
+    /// The side curve of face `f`'s `k`-th loop entry, in the loop's direction along
+    /// its edge (by the exact de Casteljau boundary of the geometry crate).
+    fn loop_side(p: &BezierPatch<Rational>, f: &TopoFace, k: usize) -> BezierCurve<Rational> {
+        let c = p.boundary_curves()[f.sides[k]].clone();
+        if f.edges[k].1 {
+            c
+        } else {
+            c.reverse()
+        }
+    }
+
+    #[test]
+    fn topology_records_the_mobius_ratio_of_every_side() {
+        let c = BezierCurve::from_homogeneous(vec![
+            vec![q(1, 1), q(1, 1), q(0, 1), q(0, 1)],
+            vec![q(1, 1), q(1, 1), q(1, 1), q(0, 1)],
+            vec![q(2, 1), q(0, 1), q(2, 1), q(0, 1)],
+        ])
+        .expect("valid");
+        // the same arc with ρ = 3, λ = 2, and both arcs moved along z
+        let scaled = |c: &BezierCurve<Rational>, rho: i64, dz: i64| {
+            BezierCurve::from_homogeneous(
+                c.control_points()
+                    .enumerate()
+                    .map(|(i, p)| {
+                        let f = q(2, 1) * q(rho.pow(i as u32), 1);
+                        let mut h: Vec<Rational> =
+                            p.iter().map(|x| x.clone() * f.clone()).collect();
+                        h[3] = h[3].clone() + h[0].clone() * q(dz, 1);
+                        h
+                    })
+                    .collect(),
+            )
+            .expect("valid")
+        };
+        let a = BezierPatch::from_curves_ruled(&c, &scaled(&c, 1, 1)).expect("ruled");
+        let b =
+            BezierPatch::from_curves_ruled(&scaled(&c, 3, 0), &scaled(&c, 1, -1)).expect("ruled");
+        let patches = [a, b];
+        let topo = build_topology(&patches).expect("topology");
+        let mut uses = vec![0; topo.edges.len()];
+        for f in &topo.faces {
+            assert_eq!(f.ratios.len(), f.edges.len());
+            for k in 0..f.edges.len() {
+                let (e, _) = f.edges[k];
+                uses[e] += 1;
+                let side = loop_side(&patches[f.patch], f, k);
+                assert_eq!(f.ratios[k], mobius_ratio(&side, &topo.edges[e].curve));
+            }
+        }
+        // one edge shared, reached through ρ = 3 (or 1/3 in the other direction)
+        assert_eq!(uses.iter().filter(|&&n| n == 2).count(), 1);
+        let shared: Vec<&Option<Rational>> = topo
+            .faces
+            .iter()
+            .flat_map(|f| f.edges.iter().zip(&f.ratios))
+            .filter(|((e, _), _)| uses[*e] == 2)
+            .map(|(_, r)| r)
+            .collect();
+        assert_eq!(shared.len(), 2);
+        assert!(shared.contains(&&Some(q(1, 1))));
+        assert!(shared.contains(&&Some(q(3, 1))) || shared.contains(&&Some(q(1, 3))));
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+
+        /// The boundary rows and columns are the exact de Casteljau boundary curves.
+        #[test]
+        fn boundary_curves_are_the_geometry_crates(
+            m in 0usize..4,
+            n in 0usize..4,
+            dim in 1usize..4,
+            num in proptest::collection::vec(-50i64..50, 4 * 16),
+            den in proptest::collection::vec(1i64..9, 4 * 16),
+        ) {
+            let len = (dim + 1) * (m + 1) * (n + 1);
+            let coords = num[..len].iter().zip(&den).map(|(&a, &b)| q(a, b)).collect();
+            let p = BezierPatch::from_flat(dim, m, n, coords).expect("valid");
+            let fast = boundary_curves(&p).expect("valid patch");
+            proptest::prop_assert_eq!(&fast, &p.boundary_curves());
+        }
     }
 
     #[test]
