@@ -649,6 +649,8 @@ impl PatchEvaluator3 {
 
     /// The Euclidean point `x(u, v)`, equal to [`eval_patch_f64`] bit for bit.
     pub fn point(&mut self, u: f64, v: f64) -> [f64; 3] {
+        // the exporters' meshes run under the caller's work budget
+        rcagd_algebra::budget::checkpoint();
         bernstein_into(self.m, u, &mut self.bu);
         bernstein_into(self.n, v, &mut self.bv);
         let mut h = [0.0f64; 4];
@@ -666,6 +668,8 @@ impl PatchEvaluator3 {
     /// The point and first partials at `(u, v)`, equal to
     /// [`eval_patch_derivatives_f64`] bit for bit.
     pub fn derivatives(&mut self, u: f64, v: f64) -> SurfacePoint3 {
+        // the exporters' meshes run under the caller's work budget
+        rcagd_algebra::budget::checkpoint();
         bernstein_with_derivative_into(self.m, u, &mut self.bu, &mut self.dbu);
         bernstein_with_derivative_into(self.n, v, &mut self.bv, &mut self.dbv);
         let mut h = [0.0f64; 4];
@@ -714,6 +718,7 @@ impl PatchEvaluator3 {
             }
         }
         for &u in us {
+            rcagd_algebra::budget::checkpoint();
             bernstein_with_derivative_into(self.m, u, &mut self.bu, &mut self.dbu);
             for col in table.chunks_exact(rows) {
                 let mut h = [0.0f64; 4];
@@ -773,6 +778,8 @@ impl PatchGridRows3 {
 
     /// The points `x(u, vs[k])` into `out` (cleared first).
     pub fn row(&mut self, u: f64, out: &mut Vec<[f64; 3]>) {
+        // the exporters' meshes run under the caller's work budget
+        rcagd_algebra::budget::checkpoint();
         out.clear();
         let nv = self.n + 1;
         bernstein_into(self.m, u, &mut self.bu);
