@@ -1,7 +1,6 @@
 //! A lower bound of the degree of the rational unit normal fields of a polynomial space
 //! curve, decided exactly, and what it implies for the size of a pipe's exported patches
-//! (docs/math/pipes.md, "The degree of a unit normal field: a lower bound for the
-//! candidates").
+//! (docs/math/pipes.md, "The degree of a unit normal field").
 //!
 //! A real rational unit normal field `N = P/q` of a curve with hodograph `h` (reduced:
 //! `gcd(P₁, P₂, P₃, q) = 1`) has `|P|² = q²`, `P·h ≡ 0`, a denominator `q` without real
