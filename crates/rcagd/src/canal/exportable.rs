@@ -393,6 +393,7 @@ fn exported_size_f64(s: &CanalSurface<Rational>) -> Option<usize> {
 }
 
 /// What the candidates on one interval gave.
+#[derive(Default)]
 struct IntervalResult {
     best: Option<ExportPiece>,
     tried: usize,
@@ -456,13 +457,7 @@ fn candidates_on(
     // the reality of the envelope on the interval is a property of the data, not of a
     // candidate: report it as it is
     memo.check_real_envelope(&so, Some((a, b)))?;
-    let mut res = IntervalResult {
-        best: None,
-        tried: 0,
-        exporting: 0,
-        error: None,
-        radicand: None,
-    };
+    let mut res = IntervalResult::default();
     let methods: Vec<Method> = match options.method {
         Method::Lowest => vec![Method::Krasauskas, Method::PeternellPottmann],
         m => vec![m],
@@ -1400,13 +1395,7 @@ mod tests {
             mid: (a.clone() + b.clone()) / q(2),
             memo: &memo,
         };
-        let mut res = IntervalResult {
-            best: None,
-            tried: 0,
-            exporting: 0,
-            error: None,
-            radicand: None,
-        };
+        let mut res = IntervalResult::default();
         let w = so.weight().clone();
         let m = so.center_polys();
         let mut checked = 0;
