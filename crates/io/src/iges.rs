@@ -50,8 +50,8 @@
 
 use crate::model::Object;
 use crate::step::{
-    boundary_curves, civil_time, collapsed, exchange_object, export_time, format_real, pcurve,
-    rational_real, ExchangeObject, Topology,
+    civil_time, collapsed, exchange_objects, export_time, format_real, pcurve, rational_real,
+    ExchangeObject, Topology,
 };
 use crate::IoError;
 use rcagd_algebra::{Rational, Scalar};
@@ -234,7 +234,7 @@ fn brep_entities(
         .map(|(i, v)| (v, i))
         .collect();
     for f in &topo.faces {
-        for (side, c) in boundary_curves(&o.patches[f.patch])?.iter().enumerate() {
+        for (side, c) in o.patches[f.patch].boundary_curves().iter().enumerate() {
             if !f.sides.contains(&side) && collapsed(c) {
                 let p = euclid(c.control_point(0));
                 if !index.contains_key(&p) {
@@ -280,7 +280,7 @@ fn brep_entities(
             surface_params(&surfaces[f.patch])?,
         ));
         let surf = last_de(entities);
-        let boundary = boundary_curves(&o.patches[f.patch])?;
+        let boundary = o.patches[f.patch].boundary_curves();
         // the loop in side order (counter-clockwise in (u, v)); parameter lines follow the
         // model curve's direction (the loop's orientation flag reverses both)
         let mut uses: Vec<[String; 6]> = Vec::with_capacity(4);
@@ -430,14 +430,7 @@ pub fn write_iges(objects: &[Object]) -> Result<String, IoError> {
 /// [`IoError::Invalid`] for no objects, an object without geometry, geometry beyond
 /// E3, degree 0, zero or mixed-sign weights, or a coordinate beyond the `f64` range.
 pub fn write_iges_with(objects: &[Object], opts: &IgesOptions) -> Result<String, IoError> {
-    if objects.is_empty() {
-        return Err(IoError::Invalid("no objects to write to IGES".into()));
-    }
-    let exch = objects
-        .iter()
-        .map(exchange_object)
-        .collect::<Result<Vec<_>, _>>()?;
-    write_iges_exchanged(&exch, opts)
+    write_iges_exchanged(&exchange_objects(objects)?, opts)
 }
 
 /// [`write_iges_with`] of objects already in their exchange form

@@ -431,6 +431,15 @@ fn oriented(
     }
 }
 
+/// [`exchange_object`] of each object, in order: what the STEP and IGES writers and the
+/// exact sidecar write.
+///
+/// # Errors
+/// The first object's error, as [`exchange_object`].
+pub fn exchange_objects(objects: &[Object]) -> Result<Vec<ExchangeObject>, IoError> {
+    objects.iter().map(exchange_object).collect()
+}
+
 /// The exchange form of an object (module docs): curves in E3 joined into NURBS,
 /// patches in E3, weights positive, faces oriented consistently (outward in closed shells).
 ///
@@ -539,33 +548,6 @@ pub(crate) fn collapsed(c: &BezierCurve<Rational>) -> bool {
 /// differ decide it without dividing the inner control points.
 fn collapsed_with_ends(c: &BezierCurve<Rational>, first: &[Rational], last: &[Rational]) -> bool {
     first == last && c.control_points().all(|p| euclid(p) == first)
-}
-
-/// The four boundary curves of a patch in the loop order of
-/// [`BezierPatch::boundary_curves`] (`v = 0`, `u = 1`, `v = 1` reversed, `u = 0`
-/// reversed), the same curves, taken as the boundary rows and columns of the net
-/// instead of by exact de Casteljau evaluation at `0` and `1` (which returns exactly
-/// these control points, at the cost of a rational product per coordinate and step).
-///
-/// # Errors
-/// [`IoError::Geom`] only for a malformed patch (no control points).
-pub(crate) fn boundary_curves(
-    p: &BezierPatch<Rational>,
-) -> Result<[BezierCurve<Rational>; 4], IoError> {
-    let (m, n) = p.degree();
-    let d = p.dim();
-    let curve = |pts: &mut dyn Iterator<Item = (usize, usize)>| {
-        let coords: Vec<Rational> = pts
-            .flat_map(|(i, j)| p.control_point(i, j).iter().cloned())
-            .collect();
-        BezierCurve::from_flat(d, coords)
-    };
-    Ok([
-        curve(&mut (0..=m).map(|i| (i, 0)))?,
-        curve(&mut (0..=n).map(|j| (m, j)))?,
-        curve(&mut (0..=m).rev().map(|i| (i, n)))?,
-        curve(&mut (0..=n).rev().map(|j| (0, j)))?,
-    ])
 }
 
 /// `ρ` if `q` is `p` reparametrized by an end-point-preserving Möbius map:
@@ -713,7 +695,7 @@ pub(crate) fn build_topology_with(
             )));
         }
         let corner_points = corners.map(euclid);
-        for (side, c) in boundary_curves(patch)?.into_iter().enumerate() {
+        for (side, c) in patch.boundary_curves().into_iter().enumerate() {
             let (e0, e1) = (&corner_points[side], &corner_points[(side + 1) % 4]);
             if collapsed_with_ends(&c, e0, e1) {
                 continue;
@@ -1272,7 +1254,7 @@ fn object_items(
     // the parameter lines of every edge on its faces (module docs)
     let mut pcurves: Vec<Vec<(usize, usize)>> = vec![Vec::new(); topo.edges.len()];
     for (fi, f) in topo.faces.iter().enumerate() {
-        let boundary = boundary_curves(&o.patches[f.patch])?;
+        let boundary = o.patches[f.patch].boundary_curves();
         for (&(e, fwd), &side) in f.edges.iter().zip(&f.sides) {
             let c = &boundary[side];
             let along = if fwd { c.clone() } else { c.reverse() };
@@ -1312,7 +1294,7 @@ fn object_items(
         let surf = surface_ids[fi];
         // the loop in side order: shared edges, and a degenerate edge (a vertex of the
         // surface's pole, with its parameter line) for every collapsed side
-        let boundary = boundary_curves(&o.patches[f.patch])?;
+        let boundary = o.patches[f.patch].boundary_curves();
         let mut loop_uses: Vec<(usize, bool)> = Vec::with_capacity(4);
         for (side, c) in boundary.iter().enumerate() {
             if let Some(i) = f.sides.iter().position(|&x| x == side) {
@@ -1393,14 +1375,7 @@ pub fn write_step(objects: &[Object]) -> Result<String, IoError> {
 /// [`IoError::Invalid`] for no objects, an object without geometry, geometry beyond
 /// E3, degree 0, zero or mixed-sign weights, or a coordinate beyond the `f64` range.
 pub fn write_step_with(objects: &[Object], opts: &StepOptions) -> Result<String, IoError> {
-    if objects.is_empty() {
-        return Err(IoError::Invalid("no objects to write to STEP".into()));
-    }
-    let exch = objects
-        .iter()
-        .map(exchange_object)
-        .collect::<Result<Vec<_>, _>>()?;
-    write_step_exchanged(&exch, opts)
+    write_step_exchanged(&exchange_objects(objects)?, opts)
 }
 
 /// [`write_step_with`] of objects already in their exchange form ([`exchange_object`]):
@@ -1584,11 +1559,7 @@ pub fn nurbs_surface_json(s: &NurbsSurface<Rational>) -> Value {
 /// # Errors
 /// As [`write_step`].
 pub fn exact_sidecar(objects: &[Object]) -> Result<Value, IoError> {
-    let exch = objects
-        .iter()
-        .map(exchange_object)
-        .collect::<Result<Vec<_>, _>>()?;
-    exact_sidecar_exchanged(&exch)
+    exact_sidecar_exchanged(&exchange_objects(objects)?)
 }
 
 /// [`exact_sidecar`] of objects already in their exchange form ([`exchange_object`]).
@@ -1756,26 +1727,6 @@ mod tests {
         assert_eq!(shared.len(), 2);
         assert!(shared.contains(&&Some(q(1, 1))));
         assert!(shared.contains(&&Some(q(3, 1))) || shared.contains(&&Some(q(1, 3))));
-    }
-
-    proptest::proptest! {
-        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
-
-        /// The boundary rows and columns are the exact de Casteljau boundary curves.
-        #[test]
-        fn boundary_curves_are_the_geometry_crates(
-            m in 0usize..4,
-            n in 0usize..4,
-            dim in 1usize..4,
-            num in proptest::collection::vec(-50i64..50, 4 * 16),
-            den in proptest::collection::vec(1i64..9, 4 * 16),
-        ) {
-            let len = (dim + 1) * (m + 1) * (n + 1);
-            let coords = num[..len].iter().zip(&den).map(|(&a, &b)| q(a, b)).collect();
-            let p = BezierPatch::from_flat(dim, m, n, coords).expect("valid");
-            let fast = boundary_curves(&p).expect("valid patch");
-            proptest::prop_assert_eq!(&fast, &p.boundary_curves());
-        }
     }
 
     #[test]
